@@ -1,0 +1,18 @@
+package org.robopro.app;
+
+import org.robopro.app.cli.RoboproCommand;
+import picocli.CommandLine;
+
+/** Entry point of the {@code robopro} command line and workbench. */
+public final class Main {
+    private Main() { }
+
+    public static void main(String[] args) {
+        System.exit(run(args));
+    }
+
+    /** Runs the command line and returns its exit code (tests call this). */
+    public static int run(String... args) {
+        return RoboproCommand.commandLine().execute(args);
+    }
+}
