@@ -54,4 +54,38 @@ public final class KinematicModel {
 
     /** True when every q is inside its joint limits. */
     public boolean withinLimits(double[] q) { throw new UnsupportedOperationException(); }
+
+    /** Preallocated buffers for allocation-free hot loops (FK, Jacobians); one per thread. */
+    public Workspace newWorkspace() { throw new UnsupportedOperationException(); }
+
+    /** Buffers owned by one thread; made by {@link #newWorkspace()}. Contents are implementation-defined. */
+    public static final class Workspace {
+        private Workspace() { }
+    }
+
+    /**
+     * Allocation-free FK: writes baseTflange at q into {@code out12} as a row-major 3x4 matrix
+     * [R | t] (metres).
+     */
+    public void flange(double[] q, Workspace ws, double[] out12) { throw new UnsupportedOperationException(); }
+
+    /**
+     * Identification Jacobian (analytic) of a point fixed on the flange: writes the point's
+     * position in base coordinates (m) into {@code posOut} (length 3) and d(position)/d(parameter)
+     * into {@code jacOut}, row-major 3 x P with P = parameters().size(). {@code pointInFlange}
+     * is in flange coordinates (m).
+     */
+    public void pointJacobian(double[] q, double[] pointInFlange, Workspace ws, double[] posOut, double[] jacOut) {
+        throw new UnsupportedOperationException();
+    }
+
+    /**
+     * Identification Jacobian of the full pose of a tool frame {@code flangeTtool}: writes the
+     * 3x4 [R | t] of baseTtool into {@code pose12} and a row-major 6 x P Jacobian into
+     * {@code jacOut}: rows 0-2 d(position)/dp (m per unit), rows 3-5 the small rotation
+     * (rad per unit) about base x, y, z.
+     */
+    public void poseJacobian(double[] q, Pose flangeTtool, Workspace ws, double[] pose12, double[] jacOut) {
+        throw new UnsupportedOperationException();
+    }
 }
