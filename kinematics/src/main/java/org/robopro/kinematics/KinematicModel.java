@@ -292,6 +292,9 @@ public final class KinematicModel {
     /** Constant part F_k of transformation k (0 = base), a copy. */
     double[] fixedPart(int k) { return fixed[k].clone(); }
 
+    /** Constant part F_k, the model's own array: callers must not write to it. */
+    double[] fixedRef(int k) { return fixed[k]; }
+
     /** 6 x dof geometric Jacobian of the flange w.r.t. q (rows vx vy vz wx wy wz, base frame). */
     public double[][] geometricJacobian(double[] q) {
         double[] out = new double[6 * n];
