@@ -141,7 +141,8 @@ final class ModelBuilder {
                 }
                 Vec3 footK = f.o.plus(f.z.times(s)), footN = jn1.point().plus(un.times(tt));
                 double a = footN.minus(footK).dot(xn);
-                if (a < -LENGTH_EPS) {
+                // sign of x: a >= 0; for intersecting axes, the one closer to x_k (small offset)
+                if (a < -LENGTH_EPS || (Math.abs(a) <= LENGTH_EPS && xn.dot(f.x) < -1e-12)) {
                     xn = xn.times(-1);
                     a = -a;
                 }
