@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                WorkbenchCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
@@ -30,8 +31,7 @@ public final class RoboproCommand implements Callable<Integer> {
     }
 
     @Override
-    public Integer call() {
-        CommandLine.usage(this, System.out);
-        return 0;
+    public Integer call() throws Exception {
+        return new CommandLine(new WorkbenchCommand()).execute(); // no subcommand: open the workbench
     }
 }
