@@ -63,8 +63,8 @@ public final class ProjectStore {
         ObjectNode tool = root.putObject("tool");
         tool.put("name", p.tool().name());
         tool.set("tcp", pose(p.tool().flangeTtcp()));
-        tool.put("body_radius_mm", Units.mToMm(p.tool().bodyRadius()));
-        tool.put("body_length_mm", Units.mToMm(p.tool().bodyLength()));
+        tool.put("body_radius_mm", round(Units.mToMm(p.tool().bodyRadius()), 1e-6));
+        tool.put("body_length_mm", round(Units.mToMm(p.tool().bodyLength()), 1e-6));
         tool.put("mass_kg", p.tool().massKg());
         ArrayNode objs = root.putArray("objects");
         for (CellObject o : p.objects()) {
@@ -78,7 +78,7 @@ public final class ProjectStore {
                 n.put("mesh_scale", o.size().x());
             } else {
                 ArrayNode s = n.putArray("size_mm");
-                s.add(Units.mToMm(o.size().x())).add(Units.mToMm(o.size().y())).add(Units.mToMm(o.size().z()));
+                s.add(round(Units.mToMm(o.size().x()), 1e-6)).add(round(Units.mToMm(o.size().y()), 1e-6)).add(round(Units.mToMm(o.size().z()), 1e-6));
             }
             n.put("color", String.format(Locale.ROOT, "#%06X", o.rgb()));
         }

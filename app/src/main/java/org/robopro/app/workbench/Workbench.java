@@ -101,7 +101,7 @@ public final class Workbench {
         ctx.setInputSource(panel);
         onEdt(() -> {
             frame = new WorkbenchFrame(this, panel);
-            frame.setSize(o.width(), o.height());
+            frame.sizeTo(o.width(), o.height());
             frame.setLocation(0, 0);
             frame.setVisible(o.visible());
             frame.validate();

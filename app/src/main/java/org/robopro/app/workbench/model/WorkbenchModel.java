@@ -218,13 +218,20 @@ public final class WorkbenchModel {
         fire(Change.TARGETS);
     }
 
+    /** Removes a target and the instructions moving to it (a program never names a missing target). */
     public void removeTarget(String name) {
+        boolean programChanged;
         synchronized (this) {
             List<Target> n = new ArrayList<>(targets);
             n.removeIf(x -> x.name().equals(name));
             targets = List.copyOf(n);
+            List<Instruction> p = new ArrayList<>(program);
+            programChanged = p.removeIf(i -> i.target().equals(name));
+            program = List.copyOf(p);
+            if (("target:" + name).equals(selection)) selection = null;
         }
         fire(Change.TARGETS);
+        if (programChanged) fire(Change.PROGRAM);
     }
 
     public synchronized List<Instruction> program() { return program; }

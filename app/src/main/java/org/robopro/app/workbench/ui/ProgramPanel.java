@@ -162,7 +162,7 @@ public final class ProgramPanel extends JPanel {
 
     /** The model's program changed. */
     public void refresh() {
-        plan = null;
+        if (plan != null && !player.isRunning()) plan = ProgramPlan.of(wb.model()); // keep check results live once checked
         rows.fireTableDataChanged();
     }
 

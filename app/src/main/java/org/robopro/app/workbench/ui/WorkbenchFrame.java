@@ -67,6 +67,8 @@ public final class WorkbenchFrame extends JFrame {
     private final JLabel status = new JLabel(" ");
     private final AtomicBoolean refreshQueued = new AtomicBoolean();
     private volatile boolean robotChanged;
+    private JSplitPane mainSplit;
+    private JSplitPane midSplit;
 
     public WorkbenchFrame(Workbench wb, AwtPanel view) {
         super("robopro workbench");
@@ -100,9 +102,9 @@ public final class WorkbenchFrame extends JFrame {
         JSplitPane mid = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, right);
         mid.setResizeWeight(1);
         JSplitPane main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, treeScroll, mid);
+        mainSplit = main;
+        midSplit = mid;
         main.setResizeWeight(0);
-        main.setDividerLocation(220);
-        mid.setDividerLocation(Math.max(400, 1280 - 220 - 350));
         JPanel content = new JPanel(new BorderLayout());
         content.add(toolbar(), BorderLayout.NORTH);
         content.add(main, BorderLayout.CENTER);
@@ -112,6 +114,15 @@ public final class WorkbenchFrame extends JFrame {
 
         wb.model().addListener(this::modelChanged);
         new Timer(500, e -> updateStatus()).start();
+    }
+
+    /** Sizes the window and places the split panes: tree 17 %, properties/jog 27 % of the width. */
+    public void sizeTo(int width, int height) {
+        setSize(width, height);
+        int tree = Math.max(170, (int) (width * 0.17));
+        mainSplit.setDividerLocation(tree);
+        midSplit.setDividerLocation(Math.max(300, width - tree - Math.max(300, (int) (width * 0.27))));
+        validate();
     }
 
     public Action action(String id) {
