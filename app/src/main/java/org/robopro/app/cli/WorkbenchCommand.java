@@ -94,7 +94,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
             double[] q = q0.clone();
             q[0] += Math.toRadians(30) * Math.sin(t);
             wb.model().setQ(q);
-            Thread.sleep(2);
+            Thread.sleep(16); // a jog or playback update per 60 Hz frame
         }
         long frames = wb.app().frameCount() - f0;
         double secs = (System.nanoTime() - t0) / 1e9;

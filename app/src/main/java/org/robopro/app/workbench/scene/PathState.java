@@ -64,7 +64,7 @@ public final class PathState extends BaseAppState {
             Node tn = new Node("target-" + t.name());
             tn.setUserData("pick", "target:" + t.name());
             Shapes.apply(t.worldTtcp(), tn);
-            Geometry ball = new Geometry("target-" + t.name() + "-ball", new Sphere(12, 16, 0.018f));
+            Geometry ball = new Geometry("target-" + t.name() + "-ball", new Sphere(12, 16, 0.025f));
             ball.setMaterial(shapes.lit(s.ok() ? OK_RGB : BAD_RGB));
             tn.attachChild(ball);
             tn.attachChild(shapes.axes("target-" + t.name() + "-axes", 0.07f));

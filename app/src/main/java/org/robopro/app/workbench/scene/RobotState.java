@@ -38,10 +38,14 @@ public final class RobotState extends BaseAppState {
     private long jointVersion = -1;
     private boolean framesShown;
 
-    public RobotState(WorkbenchModel model, Node parent) {
+    /** {@code robotMeshes} resolves a robot file's mesh path (relative to the robot file), or null when it cannot. */
+    public RobotState(WorkbenchModel model, Node parent, java.util.function.Function<String, java.nio.file.Path> robotMeshes) {
         this.model = model;
         this.parent = parent;
+        this.robotMeshes = robotMeshes;
     }
+
+    private final java.util.function.Function<String, java.nio.file.Path> robotMeshes;
 
     /** The link nodes (0 = base), for tests and picking. */
     public Node[] links() { return links.clone(); }
@@ -104,11 +108,13 @@ public final class RobotState extends BaseAppState {
         // Base: a plinth and a pedestal around axis 1.
         Vector3f a1 = Shapes.v(js.get(0).point());
         float plinthH = (float) Math.min(0.22, 0.25 * Math.max(0.2, js.size() > 1 ? js.get(1).point().z() : 0.5));
-        links[0].attachChild(shapes.box("base-plinth", new Vector3f(a1.x - 2.1f * r1, a1.y - 2.1f * r1, 0),
+        if (!d.meshes().stream().anyMatch(m -> m.link() == 0)) links[0].attachChild(shapes.box("base-plinth", new Vector3f(a1.x - 2.1f * r1, a1.y - 2.1f * r1, 0),
                 new Vector3f(a1.x + 2.1f * r1, a1.y + 2.1f * r1, plinthH * 0.35f), housing));
-        links[0].attachChild(shapes.beam("base-pedestal", new Vector3f(a1.x, a1.y, plinthH * 0.35f),
+        if (!d.meshes().stream().anyMatch(m -> m.link() == 0)) links[0].attachChild(shapes.beam("base-pedestal", new Vector3f(a1.x, a1.y, plinthH * 0.35f),
                 new Vector3f(a1.x, a1.y, plinthH), 1.5f * r1, orange));
+        java.util.Set<Integer> meshed = attachMeshes(d);
         for (int i = 1; i <= n; i++) {
+            if (meshed.contains(i)) continue;
             float r = r1 * (float) Math.max(0.38, 1 - 0.15 * (i - 1));
             Vector3f a = i == 1 ? new Vector3f(a1.x, a1.y, plinthH) : Shapes.v(js.get(i - 1).point());
             Vector3f b = i < n ? Shapes.v(js.get(i).point()) : Shapes.v(flangeZero.position());
@@ -147,6 +153,44 @@ public final class RobotState extends BaseAppState {
         robotRoot.attachChild(framesNode);
         robotRoot.attachChild(shapes.axes("frame-base", r1 * 4f));
         framesShown = !model.showFrames();
+    }
+
+    /**
+     * The robot file's meshes (STL/OBJ/glTF), each on its link; meshes in base coordinates at the
+     * zero position hang directly on the link node (its transform is the link's displacement).
+     * Returns the links that got a mesh (they get no built-in shapes).
+     */
+    private java.util.Set<Integer> attachMeshes(RobotDescription d) {
+        java.util.Set<Integer> done = new java.util.HashSet<>();
+        for (org.robopro.models.MeshRef m : d.meshes()) {
+            if (m.link() < 0 || m.link() >= links.length || m.inLinkFrame()) continue; // link-frame meshes need the module's link frames
+            java.nio.file.Path file = robotMeshes.apply(m.path());
+            if (file == null) continue;
+            try {
+                String name = file.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+                Spatial s;
+                if (name.endsWith(".stl")) {
+                    s = new Geometry("mesh-" + m.path(), StlReader.read(file, (float) m.scale()));
+                } else {
+                    var am = getApplication().getAssetManager();
+                    String dir = file.toAbsolutePath().getParent().toString();
+                    am.registerLocator(dir, com.jme3.asset.plugins.FileLocator.class);
+                    try {
+                        s = am.loadModel(file.getFileName().toString());
+                    } finally {
+                        am.unregisterLocator(dir, com.jme3.asset.plugins.FileLocator.class);
+                    }
+                    s.setLocalScale((float) m.scale());
+                }
+                if (!name.endsWith(".gltf") && !name.endsWith(".glb")) s.setMaterial(shapes.lit(DefaultCell.ABB_ORANGE));
+                links[m.link()].attachChild(s);
+                done.add(m.link());
+            } catch (java.io.IOException | RuntimeException e) {
+                java.util.logging.Logger.getLogger(RobotState.class.getName())
+                        .warning("robot mesh " + m.path() + " not drawn (built-in shape instead): " + e.getMessage());
+            }
+        }
+        return done;
     }
 
     private Node frameAxes(String name, Vector3f origin, Vec3 zAxis, float len) {

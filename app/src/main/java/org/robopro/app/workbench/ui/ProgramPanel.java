@@ -57,6 +57,7 @@ public final class ProgramPanel extends JPanel {
         buttons.add(button("Teach", "teach", e -> wb.teach()));
         buttons.add(button("MoveJ", "add-movej", e -> addMove(Instruction.Type.MOVEJ)));
         buttons.add(button("MoveL", "add-movel", e -> addMove(Instruction.Type.MOVEL)));
+        buttons.add(button("Check", "check", e -> check()));
         buttons.add(new JLabel(" speed mm/s"));
         buttons.add(speed);
         buttons.add(new JLabel("zone mm"));
@@ -65,7 +66,6 @@ public final class ProgramPanel extends JPanel {
         buttons.add(button("Up", "move-up", e -> shift(-1)));
         buttons.add(button("Down", "move-down", e -> shift(1)));
         buttons.add(button("Remove", "remove-instruction", e -> remove()));
-        buttons.add(button("Check", "check", e -> check()));
         add(buttons, BorderLayout.NORTH);
         JPanel tl = new JPanel(new BorderLayout(4, 0));
         play.setName("play");

@@ -67,6 +67,8 @@ public final class WorkbenchFrame extends JFrame {
     private final JLabel status = new JLabel(" ");
     private final AtomicBoolean refreshQueued = new AtomicBoolean();
     private volatile boolean robotChanged;
+    private volatile boolean structureChanged = true;
+    private volatile boolean selectionChanged;
     private JSplitPane mainSplit;
     private JSplitPane midSplit;
 
@@ -144,6 +146,9 @@ public final class WorkbenchFrame extends JFrame {
 
     private void modelChanged(WorkbenchModel.Change c) {
         if (c == WorkbenchModel.Change.ROBOT) robotChanged = true;
+        // Joint changes (jogging, playback) come at frame rate: they only touch the jog panel.
+        if (c == WorkbenchModel.Change.SELECTION || c == WorkbenchModel.Change.VIEW) selectionChanged = true;
+        else if (c != WorkbenchModel.Change.JOINTS) structureChanged = true;
         if (refreshQueued.compareAndSet(false, true)) SwingUtilities.invokeLater(this::refresh);
     }
 
@@ -151,6 +156,19 @@ public final class WorkbenchFrame extends JFrame {
         refreshQueued.set(false);
         if (robotChanged) { robotChanged = false; jog.rebuild(); }
         jog.refresh();
+        String sel = wb.model().selection();
+        if (!structureChanged) {
+            if (selectionChanged) {
+                selectionChanged = false;
+                tree.showSelection();
+                properties.refresh();
+            } else if (sel != null && sel.startsWith("link:")) {
+                properties.refresh();
+            }
+            return;
+        }
+        selectionChanged = false;
+        structureChanged = false;
         var st = new java.util.HashMap<String, org.robopro.app.workbench.model.TargetStatus>();
         for (var t : wb.model().targets()) st.put(t.name(), wb.model().status(t));
         tree.rebuild(st);
