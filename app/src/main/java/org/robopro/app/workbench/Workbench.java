@@ -240,6 +240,7 @@ public final class Workbench {
             case TABLE -> new Vec3(0.8, 0.6, 0.7);
             case FIXTURE -> new Vec3(0.3, 0.1, 0.1);
             case PART, MESH -> new Vec3(0.2, 0.15, 0.05);
+            case CYLINDER -> new Vec3(0.3, 0.3, 0.5);
         };
         int rgb = switch (kind) { case TABLE -> 0x5A6270; case FIXTURE -> 0x2F7D3A; default -> 0xB8C4D0; };
         CellObject o = new CellObject(id, Character.toUpperCase(prefix.charAt(0)) + prefix.substring(1) + " " + id.substring(prefix.length()),

@@ -120,7 +120,7 @@ public final class WorkbenchScenario {
             wb.model().setProgram(p);
             wb.model().removeTarget("p99");
             wb.model().setShowFrames(false);
-            wb.model().select("object:part1");
+            wb.model().select("object:web_plate");
         });
 
         // Export RAPID (refuses to overwrite an existing file unless asked).

@@ -103,7 +103,7 @@ class WorkbenchScenarioTest {
         try (var in = Files.newBufferedReader(out.resolve("results.properties"))) { r.load(in); }
         assertEquals("done", r.getProperty("status"), "scenario failed; see " + out.resolve("scenario.log") + "\n" + log);
 
-        assertEquals("3", r.getProperty("objects"));
+        assertEquals("5", r.getProperty("objects"), "the shipped irb2000-welding cell has five objects");
         assertNotEquals(r.getProperty("q0"), r.getProperty("qJointJog"));
         assertTrue(r.getProperty("qJointJog").startsWith("10.000000 30.000000"), r.getProperty("qJointJog"));
         assertEquals("true", r.getProperty("cartesianJogOk"));
@@ -121,13 +121,13 @@ class WorkbenchScenarioTest {
         String rapid = Files.readString(Path.of(r.getProperty("rapidFile")));
         assertTrue(rapid.startsWith("MODULE Weld"), rapid);
         for (String s : new String[] {"CONST robtarget p10:=[[", "CONST robtarget p20", "CONST robtarget p30",
-                "MoveJ p10, v500, z10, torch\\WObj:=wobj0;", "MoveL p30, v500, z10, torch", "PERS tooldata torch:=[TRUE,[[0.00,0.00,300.00]", "ENDMODULE"})
+                "MoveJ p10, v500, z10, torch\\WObj:=wobj0;", "MoveL p30, v500, z10, torch", "PERS tooldata torch:=[TRUE,[[110.00,0.00,340.00]", "ENDMODULE"})
             assertTrue(rapid.contains(s), "RAPID lacks " + s + ":\n" + rapid);
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
-        assertEquals("4", r.getProperty("objectsAfterAdd"));
+        assertEquals("6", r.getProperty("objectsAfterAdd"));
         assertEquals("3", r.getProperty("reopenedTargets"));
         assertEquals("4", r.getProperty("reopenedProgram"));
-        assertEquals("4", r.getProperty("reopenedObjects"));
+        assertEquals("6", r.getProperty("reopenedObjects"));
         assertTrue(r.getProperty("damaged").contains("damaged.robopro.json"), r.getProperty("damaged"));
         assertTrue(Integer.parseInt(r.getProperty("damagedLine")) > 1, r.getProperty("damaged"));
         assertTrue(r.getProperty("damagedField").endsWith("speed_mm_s"), r.getProperty("damagedField"));

@@ -17,7 +17,7 @@ import org.robopro.models.Vec3;
  * @param rgb          colour, 0xRRGGBB
  */
 public record CellObject(String id, String name, Kind kind, Pose worldTobject, Vec3 size, String meshPath, int rgb) {
-    public enum Kind { TABLE, FIXTURE, PART, MESH }
+    public enum Kind { TABLE, FIXTURE, PART, CYLINDER, MESH }
 
     public CellObject {
         Objects.requireNonNull(id, "id");

@@ -77,6 +77,9 @@ public final class CellState extends BaseAppState {
                 for (int sy = -1; sy <= 1; sy += 2)
                     n.attachChild(shapes.box(o.id() + "-leg", new com.jme3.math.Vector3f(sx * lx - 0.03f, sy * ly - 0.03f, 0),
                             new com.jme3.math.Vector3f(sx * lx + 0.03f, sy * ly + 0.03f, (float) (o.size().z() - t)), legs));
+        } else if (o.kind() == CellObject.Kind.CYLINDER) {
+            n.attachChild(shapes.beam(o.id() + "-cylinder", com.jme3.math.Vector3f.ZERO,
+                    new com.jme3.math.Vector3f(0, 0, (float) o.size().z()), (float) (Math.max(o.size().x(), o.size().y()) / 2), m));
         } else {
             n.attachChild(shapes.standingBox(o.id() + "-box", o.size(), m));
         }
