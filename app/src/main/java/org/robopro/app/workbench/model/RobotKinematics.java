@@ -14,18 +14,17 @@ import org.robopro.models.Vec3;
 /**
  * The workbench's view of a robot's kinematics: link frames for drawing, the flange, IK for
  * Cartesian jogging and teaching, configuration data. Delegates to the kinematics module
- * ({@link KinematicModel}, {@link InverseKinematics}); while that module is still an API stub it
- * falls back to a product-of-exponentials model built directly from the joint axes at the zero
- * position (same inputs as the seed paper's Fig. 7), so the workbench stays usable.
+ * ({@link KinematicModel}, {@link InverseKinematics}). A product-of-exponentials model built
+ * directly from the joint axes at the zero position (the seed paper's Fig. 7 inputs) is kept as
+ * an independent reference the tests compare against, and answers if the module cannot build a
+ * model (it throws UnsupportedOperationException).
  * Immutable and thread-safe.
  */
 public abstract class RobotKinematics {
     protected final RobotDescription description;
-    private final Pose[] zeroFrames;
 
     RobotKinematics(RobotDescription description) {
         this.description = description;
-        this.zeroFrames = null;
     }
 
     /** The best available kinematics for {@code description}. */
