@@ -50,6 +50,8 @@ public final class RapidParser {
     private final IdentityHashMap<Statement, SourcePos> positions = new IdentityHashMap<>();
     /** Declared data by lower-case name: type name, for checking references. */
     private final Map<String, String> declaredTypes = new HashMap<>();
+    /** Declared values by lower-case name, for initialisers that name other data. */
+    private final Map<String, RapidValue> declaredValues = new HashMap<>();
 
     private RapidParser(String text, String file) {
         this.file = file;
@@ -120,6 +122,7 @@ public final class RapidParser {
                 item = d;
                 nameTok = findNameToken(at, d.name());
                 declaredTypes.put(d.name().toLowerCase(Locale.ROOT), d.rapidType());
+                declaredValues.putIfAbsent(d.name().toLowerCase(Locale.ROOT), d.value());
             } else if (t.isWord("PROC") || (t.isWord("LOCAL") && peekAt(1).isWord("PROC"))) {
                 nameTok = peekAt(t.isWord("LOCAL") ? 2 : 1);
                 item = procedure();
@@ -244,7 +247,18 @@ public final class RapidParser {
             throw error(head, proc, "function call statement '" + head.text() + "(...)' is not supported");
         List<Arg> args = arguments(proc);
         expect(";");
-        Statement s = switch (upper) {
+        Statement s;
+        try {
+            s = instruction(upper, head, args, proc);
+        } catch (IllegalArgumentException bad) {
+            throw error(head, proc, bad.getMessage());
+        }
+        positions.put(s, new SourcePos(file, head.line(), head.column()));
+        return s;
+    }
+
+    private Statement instruction(String upper, Token head, List<Arg> args, String proc) {
+        return switch (upper) {
             case "MOVEL" -> move(Move.Kind.MOVE_L, head, args, proc);
             case "MOVEJ" -> move(Move.Kind.MOVE_J, head, args, proc);
             case "MOVEC" -> move(Move.Kind.MOVE_C, head, args, proc);
@@ -256,8 +270,6 @@ public final class RapidParser {
                 yield new ProcCall(head.text());
             }
         };
-        positions.put(s, new SourcePos(file, head.line(), head.column()));
-        return s;
     }
 
     /** One argument: positional (name null) or optional ({@code \Name[:=value]}), and how many positional ones precede it. */
@@ -489,6 +501,24 @@ public final class RapidParser {
 
     private RapidValue convert(String type, Token typeTok, Expr e, String field) {
         checkType(type, typeTok, field);
+        try {
+            return convertChecked(type, e, field);
+        } catch (IllegalArgumentException bad) {
+            // A model constructor refused a value the syntax allowed (e.g. an infinite sum of zones).
+            if (bad instanceof NumberFormatException) throw bad;
+            throw err(e, field, bad.getMessage());
+        }
+    }
+
+    private RapidValue convertChecked(String type, Expr e, String field) {
+        if (e instanceof NameE n && !type.equals("num") && !type.equals("bool") && !type.equals("string")) {
+            // "CONST zonedata zCorner := z10;": the value of predefined or earlier declared data.
+            RapidValue v = declaredValues.get(n.name().toLowerCase(Locale.ROOT));
+            if (v == null) v = predefinedValue(n.name());
+            if (v == null) throw err(e, field, "unknown " + type + " '" + n.name() + "' (only predefined or earlier declared data)");
+            if (!v.rapidType().equals(type)) throw err(e, field, "'" + n.name() + "' is a " + v.rapidType() + ", a " + type + " is needed");
+            return v;
+        }
         return switch (type) {
             case "robtarget" -> robTarget(e, field);
             case "jointtarget" -> jointTarget(e, field);
@@ -554,6 +584,16 @@ public final class RapidParser {
         for (int k = 0; k < b.length(); k++)
             if (b.charAt(k) > 0xFF) throw err(s, field, "string holds a character outside ISO-8859-1");
         return b.toString();
+    }
+
+    private static RapidValue predefinedValue(String name) {
+        String k = name.toLowerCase(Locale.ROOT);
+        if (k.equals("tool0")) return ToolData.TOOL0;
+        if (k.equals("wobj0")) return WObjData.WOBJ0;
+        if (k.equals("load0")) return LoadData.LOAD0;
+        Optional<SpeedData> sp = SpeedData.predefined(k);
+        if (sp.isPresent()) return sp.get();
+        return ZoneData.predefined(k).orElse(null);
     }
 
     private static boolean isHex(char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }

@@ -129,6 +129,16 @@ class RapidParserTest {
     }
 
     @Test
+    void parse_initialiserNamingPredefinedData_copiesItsValue() {
+        RapidModule m = RapidParser.parse("MODULE M\n  LOCAL CONST zonedata zCorner := z10;\n  VAR speeddata vMove := v300;\nENDMODULE\n", "m");
+        assertEquals(ZoneData.predefined("z10").orElseThrow(), m.declaration("zCorner").orElseThrow().value());
+        InputException e = assertThrows(InputException.class,
+                () -> RapidParser.parse("MODULE M\n  CONST zonedata zC := v100;\nENDMODULE\n", "m"));
+        assertEquals(2, e.line());
+        assertEquals(24, e.column());
+    }
+
+    @Test
     void parse_localProc_keptLocalInModelAndExport() {
         RapidModule m = RapidParser.parse("MODULE M\n  LOCAL PROC helper()\n    WaitTime 1;\n  ENDPROC\nENDMODULE\n", "m");
         assertTrue(m.procedure("helper").orElseThrow().local());
