@@ -148,7 +148,7 @@ public final class PathChecker {
         for (int k = 1; k <= n; k++) {
             double s = (double) k / n;
             Vec3 p = circle != null ? circle.at(s) : tcpStart.position().plus(tcpEnd.position().minus(tcpStart.position()).times(s));
-            Pose rot = angle > 0 ? Pose.rotAxis(w, angle * s) : Pose.IDENTITY;
+            Pose rot = angle > 1e-12 ? Pose.rotAxis(w, angle * s) : Pose.IDENTITY;
             Pose ori = tcpStart.times(rot);
             Pose tcp = Pose.of(ori.rotationRowMajor(), p.x(), p.y(), p.z());
             Optional<IkSolution> sol = ik.solveNear(tcp.times(toolInv), prev);
