@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                ProgramCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
