@@ -13,6 +13,9 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                ModelCommand.class,
+                FkCommand.class,
+                IkCommand.class,
                 ProgramCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
