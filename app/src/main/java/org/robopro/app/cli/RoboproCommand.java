@@ -16,6 +16,7 @@ import picocli.CommandLine.Command;
                 ModelCommand.class,
                 FkCommand.class,
                 IkCommand.class,
+                ProgramCommand.class,
                 WorkbenchCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
