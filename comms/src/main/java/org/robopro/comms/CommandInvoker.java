@@ -136,9 +136,10 @@ public final class CommandInvoker implements AutoCloseable {
             try {
                 receiver.setReplyTimeout(replyTimeout);
                 T result = command.execute(receiver);
+                // History first, then the future: a caller that sees the result also sees the record.
+                emit(command, CommandRecord.State.SUCCEEDED, attempt, describeResult(result));
                 if (!future.complete(result))
                     LOG.info("{} finished after its future was cancelled", command.describe());
-                emit(command, CommandRecord.State.SUCCEEDED, attempt, describeResult(result));
                 return;
             } catch (CommsException.Timeout | CommsException.LinkDown | CommsException.Protocol e) {
                 boolean retry = attempt <= options.maxRetries() && command.mayRetry(receiver) && !closed;
@@ -187,8 +188,8 @@ public final class CommandInvoker implements AutoCloseable {
     }
 
     private <T> void fail(ControllerCommand<T> command, CompletableFuture<T> future, int attempt, RuntimeException e) {
-        future.completeExceptionally(e);
         emit(command, CommandRecord.State.FAILED, attempt, e.getMessage() == null ? e.toString() : e.getMessage());
+        future.completeExceptionally(e);
     }
 
     private static String describeResult(Object result) {
