@@ -1,0 +1,235 @@
+package org.robopro.kinematics;
+
+/**
+ * Closed-form inverse kinematics of six-revolute arms with axis 2 perpendicular to axis 1,
+ * axis 3 parallel to axis 2 and a spherical wrist (axes 4, 5, 6 meeting in one point): the
+ * IRB-2000, IRB-2400 and PUMA 560 class. Every constant comes from the model's own joint axes
+ * at the zero position, so calibrated models that still have this geometry are solved exactly;
+ * models close to it (calibrated ones) get approximate solutions that seed the numerical solver.
+ *
+ * <p>Position: the wrist centre W (fixed in the flange) depends on theta1..3 only. theta1 puts W
+ * in the arm plane at the shoulder offset s; in that plane (complex numbers z + i x, where a
+ * rotation about the arm's y axis multiplies by e^(i angle)) D = e^(i theta2) (L2 + e^(i phi3) L3)
+ * gives phi3 by the law of cosines and theta2 by division. Orientation:
+ * R_Z(t4) A R_Z(t5) B R_Z(t6) C = R, with A and B split into Z-X-Z Euler angles.
+ */
+final class ClosedFormIk {
+    private final KinematicModel model;
+    final boolean exact;
+    // arm frame at axis 1: origin o1, axes x0, y0, z0 (z0 = axis 1, y0 = axis 2 direction)
+    private final double[] o1 = new double[3], x0 = new double[3], y0 = new double[3], z0 = new double[3];
+    private final double s, a2z, a2x, l2z, l2x, l3z, l3x, sigma3, rho, psi, l2sq, l3sq;
+    private final double[] wInFlange = new double[3];
+    private final double a1, alpha4, a2b1, alpha5, b2; // wrist Euler constants
+    private final double[] cT = new double[9]; // rotation of F6 transposed
+    final double frontAxis1Sign, frontArmSign;
+
+    private ClosedFormIk(KinematicModel m, boolean exact, double[][] f0) {
+        this.model = m;
+        this.exact = exact;
+        Vec u1 = axis(f0[0]), u2 = axis(f0[1]), u3 = axis(f0[2]);
+        Vec p1 = org(f0[0]), p2 = org(f0[1]), p3 = org(f0[2]);
+        Vec w = closest(org(f0[3]), axis(f0[3]), org(f0[4]), axis(f0[4]));
+        Vec zz = u1;
+        Vec yy = u2.minus(zz.times(u2.dot(zz))).unit();
+        Vec xx = yy.cross(zz);
+        p1.copyTo(o1); xx.copyTo(x0); yy.copyTo(y0); zz.copyTo(z0);
+        sigma3 = Math.signum(u3.dot(yy)) >= 0 ? 1 : -1;
+        s = w.minus(p1).dot(yy);
+        a2z = p2.minus(p1).dot(zz);
+        a2x = p2.minus(p1).dot(xx);
+        double a3z = p3.minus(p1).dot(zz), a3x = p3.minus(p1).dot(xx);
+        double wz = w.minus(p1).dot(zz), wx = w.minus(p1).dot(xx);
+        l2z = a3z - a2z; l2x = a3x - a2x;
+        l3z = wz - a3z; l3x = wx - a3x;
+        l2sq = l2z * l2z + l2x * l2x;
+        l3sq = l3z * l3z + l3x * l3x;
+        // conj(L2) * L3 = rho e^(i psi)
+        double re = l2z * l3z + l2x * l3x, im = l2z * l3x - l2x * l3z;
+        rho = Math.hypot(re, im);
+        psi = Math.atan2(im, re);
+        // wrist centre in flange coordinates
+        double[] fl = f0[6];
+        double dx = w.x - fl[3], dy = w.y - fl[7], dz = w.z - fl[11];
+        wInFlange[0] = fl[0] * dx + fl[4] * dy + fl[8] * dz;
+        wInFlange[1] = fl[1] * dx + fl[5] * dy + fl[9] * dz;
+        wInFlange[2] = fl[2] * dx + fl[6] * dy + fl[10] * dz;
+        double[] fa = m.fixedPart(4), fb = m.fixedPart(5), fc = m.fixedPart(6);
+        alpha4 = Math.acos(ModelBuilder.clamp(fa[10]));
+        a1 = Math.atan2(fa[2], -fa[6]);
+        double aPhi2 = Math.atan2(fa[8], fa[9]);
+        alpha5 = Math.acos(ModelBuilder.clamp(fb[10]));
+        double bPhi1 = Math.atan2(fb[2], -fb[6]);
+        b2 = Math.atan2(fb[8], fb[9]);
+        a2b1 = aPhi2 + bPhi1;
+        for (int i = 0; i < 3; i++) for (int j = 0; j < 3; j++) cT[3 * i + j] = fc[4 * j + i];
+        // which side is "front" (ABB confdata): the side the wrist centre is on at the zero position
+        frontAxis1Sign = wx >= 0 ? 1 : -1;
+        double cross0 = l2z * (wx - a2x) - l2x * (wz - a2z);
+        frontArmSign = cross0 >= 0 ? 1 : -1;
+    }
+
+    /**
+     * The solver for this model: exact when the geometry fits within 1e-9 (m, rad), approximate
+     * within 0.05 rad and 10 mm (calibrated models), else null.
+     */
+    static ClosedFormIk of(KinematicModel m) {
+        if (m.dof() != 6) return null;
+        for (int i = 0; i < 6; i++) if (m.isPrismatic(i)) return null;
+        double[][] f0 = m.jointFramesAtTheta(new double[6]);
+        Vec u1 = axis(f0[0]), u2 = axis(f0[1]), u3 = axis(f0[2]), u4 = axis(f0[3]), u5 = axis(f0[4]), u6 = axis(f0[5]);
+        double dev = Math.abs(u1.dot(u2));
+        dev = Math.max(dev, u2.cross(u3).norm());
+        // wrist axes must be far from parallel for the Z-X-Z split
+        if (u4.cross(u5).norm() < 0.3 || u5.cross(u6).norm() < 0.3) return null;
+        Vec w = closest(org(f0[3]), u4, org(f0[4]), u5);
+        double len = Math.max(distToLine(w, org(f0[3]), u4), distToLine(w, org(f0[4]), u5));
+        len = Math.max(len, distToLine(w, org(f0[5]), u6));
+        if (dev < 1e-9 && len < 1e-9) return new ClosedFormIk(m, true, f0);
+        if (dev < 0.05 && len < 0.01) return new ClosedFormIk(m, false, f0);
+        return null;
+    }
+
+    /**
+     * Writes up to 8 model-angle solutions (rows of 6) reaching baseTflange {@code target12};
+     * returns how many. Angles wrapped to (-pi, pi].
+     */
+    int solve(double[] target12, double[][] out) {
+        double[] t = target12;
+        double wx = t[0] * wInFlange[0] + t[1] * wInFlange[1] + t[2] * wInFlange[2] + t[3] - o1[0];
+        double wy = t[4] * wInFlange[0] + t[5] * wInFlange[1] + t[6] * wInFlange[2] + t[7] - o1[1];
+        double wz = t[8] * wInFlange[0] + t[9] * wInFlange[1] + t[10] * wInFlange[2] + t[11] - o1[2];
+        double cx = wx * x0[0] + wy * x0[1] + wz * x0[2];
+        double cy = wx * y0[0] + wy * y0[1] + wz * y0[2];
+        double cz = wx * z0[0] + wy * z0[1] + wz * z0[2];
+        double r = Math.hypot(cx, cy);
+        if (r < Math.abs(s) - 1e-12) return 0;
+        double phi = Math.atan2(cy, cx);
+        double as = r > 0 ? Math.asin(ModelBuilder.clamp(s / r)) : 0;
+        int count = 0;
+        double[] frame = new double[12];
+        for (int shoulder = 0; shoulder < 2; shoulder++) {
+            double th1 = shoulder == 0 ? phi - as : phi - Math.PI + as;
+            double c1 = Math.cos(th1), s1 = Math.sin(th1);
+            double xp = cx * c1 + cy * s1;
+            double dz = cz - a2z, dx = xp - a2x;
+            double k = (dz * dz + dx * dx - l2sq - l3sq) / 2;
+            double ck = rho > 0 ? k / rho : 2;
+            if (ck > 1 + 1e-9 || ck < -1 - 1e-9) continue;
+            double ac = Math.acos(ModelBuilder.clamp(ck));
+            for (int elbow = 0; elbow < 2; elbow++) {
+                double phi3 = (elbow == 0 ? ac : -ac) - psi;
+                double c3 = Math.cos(phi3), s3 = Math.sin(phi3);
+                // L2 + e^(i phi3) L3 as z + i x
+                double vz = l2z + c3 * l3z - s3 * l3x, vx = l2x + s3 * l3z + c3 * l3x;
+                double th2 = Math.atan2(dx, dz) - Math.atan2(vx, vz);
+                double th3 = sigma3 * phi3;
+                // frame 4 (before joint 4) at theta1..3
+                System.arraycopy(fixedF(0), 0, frame, 0, 12);
+                Mat34.rotate(frame, 2, c1, s1);
+                Mat34.mulInPlace(frame, fixedF(1));
+                Mat34.rotate(frame, 2, Math.cos(th2), Math.sin(th2));
+                Mat34.mulInPlace(frame, fixedF(2));
+                Mat34.rotate(frame, 2, Math.cos(th3), Math.sin(th3));
+                Mat34.mulInPlace(frame, fixedF(3));
+                // M = R4^T Rtarget C^T
+                double[] mm = new double[9];
+                for (int i = 0; i < 3; i++)
+                    for (int j = 0; j < 3; j++) {
+                        double v = 0;
+                        for (int l = 0; l < 3; l++) {
+                            double rt = 0;
+                            for (int q = 0; q < 3; q++) rt += t[4 * l + q] * cT[3 * q + j];
+                            v += frame[4 * l + i] * rt;
+                        }
+                        mm[3 * i + j] = v;
+                    }
+                double ca4 = Math.cos(alpha4), sa4 = Math.sin(alpha4), ca5 = Math.cos(alpha5), sa5 = Math.sin(alpha5);
+                double cT5 = (ca4 * ca5 - mm[8]) / (sa4 * sa5);
+                if (cT5 > 1 + 1e-9 || cT5 < -1 - 1e-9) continue;
+                double t5a = Math.acos(ModelBuilder.clamp(cT5));
+                for (int wrist = 0; wrist < 2; wrist++) {
+                    double T5 = wrist == 0 ? t5a : -t5a;
+                    double p = sa5 * Math.sin(T5), qv = -ca4 * sa5 * Math.cos(T5) - sa4 * ca5;
+                    double T4;
+                    if (Math.hypot(p, qv) < 1e-12 || Math.hypot(mm[2], mm[5]) < 1e-12) T4 = 0; // wrist singular
+                    else T4 = Math.atan2(mm[5], mm[2]) - Math.atan2(qv, p);
+                    // N = (R_Z(T4) R_X(a4) R_Z(T5) R_X(a5))^T M ; T6 = atan2(N10, N00)
+                    double[] g = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+                    Mat34.rotate(g, 2, Math.cos(T4), Math.sin(T4));
+                    Mat34.rotate(g, 0, ca4, sa4);
+                    Mat34.rotate(g, 2, Math.cos(T5), Math.sin(T5));
+                    Mat34.rotate(g, 0, ca5, sa5);
+                    double n00 = g[0] * mm[0] + g[4] * mm[3] + g[8] * mm[6];
+                    double n10 = g[1] * mm[0] + g[5] * mm[3] + g[9] * mm[6];
+                    double T6 = Math.atan2(n10, n00);
+                    double[] o = out[count++];
+                    o[0] = wrap(th1); o[1] = wrap(th2); o[2] = wrap(th3);
+                    o[3] = wrap(T4 - a1); o[4] = wrap(T5 - a2b1); o[5] = wrap(T6 - b2);
+                }
+            }
+        }
+        return count;
+    }
+
+    private double[] fixedF(int k) { return model.fixedRef(k); }
+
+    /** Wrist centre in base coordinates for flange pose m (3x4). */
+    void wristCentre(double[] m, double[] out) {
+        for (int i = 0; i < 3; i++)
+            out[i] = m[4 * i] * wInFlange[0] + m[4 * i + 1] * wInFlange[1] + m[4 * i + 2] * wInFlange[2] + m[4 * i + 3];
+    }
+
+    /** ABB cfx bits: 4 = wrist centre behind axis 1, 2 = behind the lower arm (1 = axis 5 negative, added by the caller). */
+    int cfxArmBits(double[] flange12, double theta1, double theta2) {
+        double[] w = new double[3];
+        wristCentre(flange12, w);
+        double dx = w[0] - o1[0], dy = w[1] - o1[1], dz = w[2] - o1[2];
+        double cx = dx * x0[0] + dy * x0[1] + dz * x0[2], cy = dx * y0[0] + dy * y0[1] + dz * y0[2];
+        double cz = dx * z0[0] + dy * z0[1] + dz * z0[2];
+        double c1 = Math.cos(theta1), s1 = Math.sin(theta1);
+        double xp = cx * c1 + cy * s1;
+        int bits = xp * frontAxis1Sign < 0 ? 4 : 0;
+        // lower arm direction e^(i theta2) L2 in the arm plane; cross with (W - axis 2)
+        double c2 = Math.cos(theta2), s2 = Math.sin(theta2);
+        double lz = c2 * l2z - s2 * l2x, lx = s2 * l2z + c2 * l2x;
+        double cross = lz * (xp - a2x) - lx * (cz - a2z);
+        if (cross * frontArmSign < 0) bits |= 2;
+        return bits;
+    }
+
+    static double wrap(double a) {
+        double r = Math.IEEEremainder(a, 2 * Math.PI);
+        return r <= -Math.PI ? r + 2 * Math.PI : r;
+    }
+
+    // small vector helper for the constructor only
+    private record Vec(double x, double y, double z) {
+        Vec minus(Vec o) { return new Vec(x - o.x, y - o.y, z - o.z); }
+        Vec plus(Vec o) { return new Vec(x + o.x, y + o.y, z + o.z); }
+        Vec times(double k) { return new Vec(x * k, y * k, z * k); }
+        double dot(Vec o) { return x * o.x + y * o.y + z * o.z; }
+        Vec cross(Vec o) { return new Vec(y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x); }
+        double norm() { return Math.sqrt(dot(this)); }
+        Vec unit() { return times(1 / norm()); }
+        void copyTo(double[] a) { a[0] = x; a[1] = y; a[2] = z; }
+    }
+
+    private static Vec axis(double[] f) { return new Vec(f[2], f[6], f[10]); }
+
+    private static Vec org(double[] f) { return new Vec(f[3], f[7], f[11]); }
+
+    /** Midpoint of the closest points of two lines (p + s u, q + t v). */
+    private static Vec closest(Vec p, Vec u, Vec q, Vec v) {
+        Vec w = p.minus(q);
+        double b = u.dot(v), d = u.dot(w), e = v.dot(w), den = 1 - b * b;
+        if (den < 1e-12) return q;
+        double sp = (b * e - d) / den, tq = (e - b * d) / den;
+        return p.plus(u.times(sp)).plus(q.plus(v.times(tq))).times(0.5);
+    }
+
+    private static double distToLine(Vec x, Vec p, Vec u) {
+        Vec d = x.minus(p);
+        return d.minus(u.times(d.dot(u))).norm();
+    }
+}
