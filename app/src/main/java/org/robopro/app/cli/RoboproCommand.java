@@ -13,6 +13,8 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                ControllerSimCommand.class,
+                LinkCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
