@@ -59,7 +59,7 @@ public final class CommandInvoker implements AutoCloseable {
     private final ExecutorService worker;
     private final List<CommandListener> listeners = new CopyOnWriteArrayList<>();
     private final ArrayDeque<CommandRecord> history = new ArrayDeque<>();
-    private final Set<CompletableFuture<?>> pending = ConcurrentHashMap.newKeySet();
+    private final Set<CompletableFuture<?>> pending = ConcurrentHashMap.newKeySet(); // queued, not yet started
     private volatile boolean closed;
 
     public CommandInvoker(ControllerReceiver receiver, Options options) {
@@ -126,6 +126,7 @@ public final class CommandInvoker implements AutoCloseable {
     }
 
     private <T> void run(ControllerCommand<T> command, Duration replyTimeout, CompletableFuture<T> future) {
+        pending.remove(future); // from here on it is running, no longer "pending"
         if (future.isDone()) {
             emit(command, CommandRecord.State.CANCELLED, 0, "cancelled before it was sent");
             return;
