@@ -13,6 +13,9 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                ModelCommand.class,
+                FkCommand.class,
+                IkCommand.class,
                 ControllerSimCommand.class,
                 LinkCommand.class,
         })
