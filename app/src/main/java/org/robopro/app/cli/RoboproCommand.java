@@ -18,6 +18,8 @@ import picocli.CommandLine.Command;
                 IkCommand.class,
                 ProgramCommand.class,
                 WorkbenchCommand.class,
+                ControllerSimCommand.class,
+                LinkCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
