@@ -16,6 +16,13 @@ import picocli.CommandLine.Command;
                 SimulateCommand.class,
                 CalibrateCommand.class,
                 CompensateCommand.class,
+                ModelCommand.class,
+                FkCommand.class,
+                IkCommand.class,
+                ProgramCommand.class,
+                WorkbenchCommand.class,
+                ControllerSimCommand.class,
+                LinkCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
@@ -33,8 +40,7 @@ public final class RoboproCommand implements Callable<Integer> {
     }
 
     @Override
-    public Integer call() {
-        CommandLine.usage(this, System.out);
-        return 0;
+    public Integer call() throws Exception {
+        return new CommandLine(new WorkbenchCommand()).execute(); // no subcommand: open the workbench
     }
 }
