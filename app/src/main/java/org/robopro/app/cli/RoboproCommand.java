@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
                 WorkbenchCommand.class,
                 ControllerSimCommand.class,
                 LinkCommand.class,
+                DemoCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 

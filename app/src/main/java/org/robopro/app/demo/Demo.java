@@ -1,0 +1,376 @@
+package org.robopro.app.demo;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.temporal.ChronoUnit;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Random;
+import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.identification.Calibrator;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.report.CalibrationReport;
+import org.robopro.calibration.simulation.PoseSampler;
+import org.robopro.comms.CommandInvoker;
+import org.robopro.comms.Commands;
+import org.robopro.comms.CommsException;
+import org.robopro.comms.ControllerStatus;
+import org.robopro.comms.MeasurementCampaign;
+import org.robopro.comms.client.ProtocolClient;
+import org.robopro.comms.client.TcpRequestChannel;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Units;
+import org.robopro.models.AtomicFiles;
+import org.robopro.models.CellDescription;
+import org.robopro.models.CellFile;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+import org.robopro.models.Vec3;
+import org.robopro.programs.Move;
+import org.robopro.programs.ProgramCompensation;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.check.CheckReport;
+import org.robopro.programs.check.PathChecker;
+import org.robopro.programs.check.Problem;
+import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.sim.MoveStep;
+
+/**
+ * {@code robopro demo}: the seed paper's whole loop, headless, on a simulated IRB-2000 controller
+ * running as its own process (issue 8). An off-line welding program misses its targets by the
+ * robot's real inaccuracy; a measurement campaign through the controller link, calibration and
+ * diagnosis model that inaccuracy; the compensated program hits the targets.
+ *
+ * <p>Target errors are what the controller's laser tracker measures at each target (the program
+ * run up to that target), expressed in the robot base frame as the calibration registered the
+ * tracker to it, and compared with the programmed TCP position. Each compensated program is
+ * evaluated in the registration of the model that compensated it; the nominal program in the
+ * geometric calibration's.
+ */
+public final class Demo {
+    /** Tracker noise of the simulated controller, mm per axis. */
+    public static final double NOISE_MM = 0.02;
+
+    /**
+     * @param seed   seed of the true robot (errors, effect) and of the campaign poses
+     * @param effect the concealed effect ({@link ConcealedEffect#NAMES})
+     * @param poses  measured poses of the campaign (every 5th is kept for validation)
+     * @param passes welding passes of the program
+     * @param out    output folder
+     */
+    public record Options(long seed, String effect, int poses, int passes, Path out) {
+        public Options {
+            if (poses < 40) throw new IllegalArgumentException("--poses must be at least 40 (the calibration needs more equations than its ~30 unknowns), got " + poses);
+            if (passes < 1 || passes > 4) throw new IllegalArgumentException("passes must be 1..4, got " + passes);
+            if (!ConcealedEffect.NAMES.contains(effect.toLowerCase(Locale.ROOT)))
+                throw new IllegalArgumentException("--effect: unknown effect '" + effect + "'; choose one of " + String.join(", ", ConcealedEffect.NAMES));
+        }
+    }
+
+    /** Per-target errors of one program run, mm. */
+    public record Run(String label, String program, double[] errorsMm) {
+        public double meanMm() { return java.util.Arrays.stream(errorsMm).average().orElse(Double.NaN); }
+        public double maxMm() { return java.util.Arrays.stream(errorsMm).max().orElse(Double.NaN); }
+    }
+
+    /**
+     * What the demo found: the before/after table and the effects.
+     *
+     * @param nominal         the off-line program as taught
+     * @param calibrated      compensated with the geometric calibration
+     * @param diagnosed       compensated with the diagnosed extended model (null when the diagnosis is unavailable)
+     * @param concealedEffect what the simulator hid (revealed after the diagnosis)
+     * @param namedEffects    what the diagnosis named
+     * @param noiseFloorMm    √3 σ of the tracker noise estimated by the calibration
+     * @param elapsedS        wall time of the whole demo
+     */
+    public record Result(Run nominal, Run calibrated, Run diagnosed, String concealedEffect, List<String> namedEffects,
+                         double noiseFloorMm, double elapsedS) { }
+
+    /** A step that failed, with its number. */
+    public static final class StepFailure extends Exception {
+        private static final long serialVersionUID = 1L;
+        public final int step;
+
+        StepFailure(int step, String message, Throwable cause) {
+            super("step " + step + ": " + message, cause);
+            this.step = step;
+        }
+    }
+
+    private final Options o;
+    private final Console con;
+    private int step;
+
+    private Demo(Options o, Console con) {
+        this.o = o;
+        this.con = con;
+    }
+
+    /** Runs the demo, printing as it goes; the simulated controller is stopped in every case. */
+    public static Result run(Options o, PrintWriter out, boolean terminal) throws StepFailure {
+        return new Demo(o, new Console(out, terminal)).run();
+    }
+
+    private Result run() throws StepFailure {
+        Path out = o.out();
+        try {
+            prepareOut(out);
+        } catch (IOException | IllegalArgumentException e) {
+            throw new StepFailure(0, e.getMessage(), e);
+        }
+        step = 1;
+        con.step(1, "Start the simulated IRB-2000 controller");
+        ControllerProcess sim;
+        try {
+            sim = ControllerProcess.start(out, o.seed(), o.effect(), NOISE_MM, 60);
+        } catch (IOException e) {
+            throw new StepFailure(1, e.getMessage(), e);
+        }
+        try (sim) {
+            con.line("own process (pid %d), open_abb protocol on 127.0.0.1:%d, started in %.1f s", sim.pid(), sim.port(), con.stepS());
+            con.line("true robot: seeded geometric errors of 5-15 mm and one concealed effect (--effect %s); log %s",
+                    o.effect(), out.relativize(sim.log()));
+            return loop(sim);
+        } catch (StepFailure e) {
+            throw e;
+        } catch (CommsException e) {
+            throw new StepFailure(step, "controller link: " + e.getMessage(), e);
+        } catch (RuntimeException | IOException e) {
+            throw new StepFailure(step, e.getClass().getSimpleName() + ": " + e.getMessage(), e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new StepFailure(step, "interrupted", e);
+        }
+    }
+
+    /** Refuses a folder that holds anything but an earlier demo's output (user data is never overwritten). */
+    static void prepareOut(Path out) throws IOException {
+        if (Files.exists(out) && !Files.isDirectory(out)) throw new IllegalArgumentException("--out " + out + " is a file, not a folder");
+        if (Files.isDirectory(out)) {
+            try (var s = Files.list(out)) {
+                if (s.findAny().isPresent() && !Files.exists(out.resolve("demo.json")))
+                    throw new IllegalArgumentException("--out " + out + " is not empty and holds no earlier demo (no demo.json);"
+                            + " choose a new folder");
+            }
+        }
+        Files.createDirectories(out);
+    }
+
+    private Result loop(ControllerProcess sim) throws StepFailure, IOException, InterruptedException {
+        Path out = o.out();
+        // ------------------------------------------------------------------ 2. model, cell, program
+        step = 2;
+        con.step(2, "Model, cell and an off-line welding program");
+        RobotDescription desc = RobotLibrary.shipped("irb2000");
+        KinematicModel nominal = KinematicModel.build(desc);
+        int revolute = 0;
+        for (int i = 0; i < nominal.dof(); i++) if (!nominal.isPrismatic(i)) revolute++;
+        con.line("IRB-2000 kinematic model (seed paper Table 1): %d parameters = 4·%d revolute + 2·%d prismatic + 6",
+                nominal.parameters().size(), revolute, nominal.dof() - revolute);
+        if (nominal.parameters().size() != nominal.expectedParameterCount())
+            throw new StepFailure(2, "the model has " + nominal.parameters().size() + " parameters, expected "
+                    + nominal.expectedParameterCount(), null);
+        CellDescription cell = CellFile.shipped("irb2000-welding");
+        con.line("cell %s: %d objects, tool torch, work object wobj_table", cell.name(), cell.objects().size());
+        WeldProgram weld = WeldProgram.teach(cell, nominal, o.passes());
+        List<MoveStep> moves = MotionInterpreter.of(weld.module).moves("main");
+        List<Integer> targetIdx = new ArrayList<>();
+        List<Pose> targets = new ArrayList<>();
+        List<String> targetNames = new ArrayList<>();
+        for (MoveStep m : moves)
+            if (m.kind() != Move.Kind.MOVE_ABS_J) {
+                targetIdx.add(m.statementIndex());
+                targets.add(m.baseTtcp().orElseThrow());
+                targetNames.add(m.targetName());
+            }
+        con.line("taught with Teach.seam along the T joint of base_plate and web_plate: %d passes, %d targets",
+                weld.passes, targets.size());
+        CheckReport check = new PathChecker(nominal, PathChecker.Options.DEFAULT.withStart(WeldProgram.homeRad()))
+                .check(MotionInterpreter.of(weld.module).run());
+        long warnings = check.problems().stream().filter(p -> p.severity() == Problem.Severity.WARNING).count();
+        con.line("path check: %d moves, %d errors, %d warnings, cycle time %.1f s", moves.size(),
+                check.problems().size() - warnings, warnings, check.cycleTimeS());
+        if (check.hasErrors()) throw new StepFailure(2, "the program does not pass the path check:\n" + check.format(), null);
+        String rapid = RapidWriter.export(weld.module).text();
+        AtomicFiles.writeString(out.resolve(WeldProgram.MODULE + ".mod"), rapid, true);
+        con.line("exported RAPID: %s (%d lines)", WeldProgram.MODULE + ".mod", rapid.split("\n").length);
+
+        try (ProtocolClient client = new ProtocolClient(new TcpRequestChannel("127.0.0.1", sim.port()));
+             CommandInvoker inv = new CommandInvoker(client, CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofSeconds(20)))) {
+            // -------------------------------------------------------------- 3. run the off-line program
+            step = 3;
+            con.step(3, "Run the off-line program on the controller and measure the targets");
+            inv.execute(Commands.ping());
+            con.line("connected: %s controller, robopro protocol extension %s", client.robotName(), client.extended() ? "on" : "off");
+            List<Vec3> nominalReadings = runAndMeasure(inv, weld.module, "DemoWeld", targetIdx);
+
+            // -------------------------------------------------------------- 4. campaign, calibration, diagnosis, compensation
+            step = 4;
+            con.step(4, "Measurement campaign, calibration, diagnosis, compensation");
+            MeasurementSet[] sets = campaign(inv, nominal, desc, weld);
+            CalibrationResult cal = calibrate(nominal, desc, sets[0], sets[1], weld);
+            double floorMm = Math.sqrt(3) * Units.mToMm(cal.sigmaPosM());
+            Run nominalRun = evaluate("nominal (off-line)", "DemoWeld", nominalReadings, targets, cal.instrumentTbase());
+
+            DiagnosisStep.Outcome diag = DiagnosisStep.run(con, desc, sets[0], sets[1], out);
+
+            Pose toolCal = Pose.of(weld.flangeTtcp.rotationRowMajor(), cal.flangeTtool().x(), cal.flangeTtool().y(), cal.flangeTtool().z());
+            Compensator geometric = new Compensator(nominal, cal.calibrated(), weld.flangeTtcp, toolCal);
+            RapidModule calModule = compensate(weld, nominal, geometric, "DemoWeldCal", out);
+            List<Vec3> calReadings = runAndMeasure(inv, calModule, "DemoWeldCal", targetIdx);
+            Run calibratedRun = evaluate("geometric calibration", "DemoWeldCal", calReadings, targets, cal.instrumentTbase());
+
+            Run diagnosedRun = null;
+            if (diag.available()) {
+                RapidModule diagModule = compensate(weld, nominal, diag.compensator(nominal, weld.flangeTtcp), "DemoWeldDiag", out);
+                List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
+                diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
+            }
+
+            // -------------------------------------------------------------- 5. table and report
+            step = 5;
+            con.step(5, "Before and after");
+            String concealed = DemoReport.concealedEffect(sim.truthFile());
+            if (diag.available()) con.line("concealed effect (revealed now): %s; the diagnosis named: %s", concealed,
+                    diag.named().isEmpty() ? "nothing" : String.join(", ", diag.named()));
+            else con.line("concealed effect (revealed now): %s", concealed);
+            Files.copy(sim.truthFile(), out.resolve("truth.json"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            Result r = new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
+            for (String line : DemoReport.table(r).split("\n")) con.line("%s", line);
+            String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
+            AtomicFiles.writeString(out.resolve("demo.json"), DemoReport.json(r), true);
+            AtomicFiles.writeString(out.resolve("report.html"),
+                    DemoReport.html(r, o, cal, diag, targetNames, created), true);
+            con.line("wrote %s: report.html, demo.json, %s.mod (+ Cal, Diag), measurements.csv, calibration/, diagnosis/",
+                    out.toAbsolutePath().normalize(), WeldProgram.MODULE);
+            con.line("elapsed %.1f s", con.elapsedS());
+            return new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
+        }
+    }
+
+    /**
+     * Downloads and runs the program once (it must end without error), then measures the TCP at
+     * every target by running the program up to that target and reading the tracker.
+     */
+    private List<Vec3> runAndMeasure(CommandInvoker inv, RapidModule module, String name, List<Integer> targetIdx)
+            throws StepFailure, InterruptedException {
+        String text = RapidWriter.export(module).text();
+        var info = inv.execute(Commands.downloadProgram(name, text.getBytes(StandardCharsets.UTF_8)));
+        ControllerStatus st = runToEnd(inv, name);
+        con.line("downloaded %s (%d bytes, CRC verified) and ran it: %s, controller clock %.1f s", name, info.length(),
+                st.state(), st.clockS());
+        List<Vec3> readings = new ArrayList<>();
+        Console.Bar bar = con.bar("targets measured", targetIdx.size());
+        String stepName = name + "To";
+        for (int k = 0; k < targetIdx.size(); k++) {
+            String part = RapidWriter.export(WeldProgram.truncated(module, targetIdx.get(k))).text();
+            inv.execute(Commands.downloadProgram(stepName, part.getBytes(StandardCharsets.UTF_8)));
+            runToEnd(inv, stepName);
+            readings.add(inv.execute(Commands.measure()));
+            bar.update(k + 1);
+        }
+        bar.done("tracker reading at each of the %d targets (program run up to the target)", readings.size());
+        return readings;
+    }
+
+    private ControllerStatus runToEnd(CommandInvoker inv, String name) throws StepFailure, InterruptedException {
+        inv.execute(Commands.startProgram(name));
+        ControllerStatus st;
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        do {
+            Thread.sleep(2);
+            st = inv.execute(Commands.readStatus());
+            if (System.nanoTime() > deadline) throw new StepFailure(step, "program " + name + " still running after 60 s", null);
+        } while (st.state() == ControllerStatus.State.RUNNING);
+        if (st.state() == ControllerStatus.State.ERROR)
+            throw new StepFailure(step, "program " + name + " stopped with an error: " + st.lastErrorMessage(), null);
+        return st;
+    }
+
+    /** The campaign through the link: sampled poses, tracker on the torch TCP; returns {train, validate}. */
+    private MeasurementSet[] campaign(CommandInvoker inv, KinematicModel nominal, RobotDescription desc, WeldProgram weld)
+            throws IOException {
+        List<double[]> poses = new PoseSampler(nominal).sample(o.poses(), new Random(o.seed() * 31 + 7));
+        inv.execute(Commands.setWorkObject(Pose.IDENTITY));
+        inv.execute(Commands.setTool(weld.flangeTtcp)); // the tracker's reflector sits at the torch tip
+        List<MeasurementCampaign.Row> rows = new ArrayList<>();
+        Console.Bar bar = con.bar("poses measured", poses.size());
+        long t0 = System.nanoTime();
+        for (int from = 0; from < poses.size(); from += 10) {
+            List<double[]> chunk = poses.subList(from, Math.min(poses.size(), from + 10));
+            for (MeasurementCampaign.Row r : MeasurementCampaign.run(inv, chunk))
+                rows.add(new MeasurementCampaign.Row(Integer.toString(rows.size() + 1), r.q(), r.measured(), r.direction()));
+            bar.update(rows.size());
+        }
+        Path file = o.out().resolve("measurements.csv");
+        MeasurementCampaign.write(file, desc.name(), String.format(Locale.ROOT,
+                "simulated laser tracker at the torch tip, sigma %.3f mm", NOISE_MM), rows, true);
+        bar.done("campaign: %d poses moved to and measured through the link in %.1f s -> measurements.csv", rows.size(),
+                (System.nanoTime() - t0) / 1e9);
+        MeasurementSet all = MeasurementReader.read(file, desc);
+        List<Measurement> train = new ArrayList<>(), validate = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) (i % 5 == 4 ? validate : train).add(all.rows().get(i));
+        return new MeasurementSet[] {all.withRows(train), all.withRows(validate)};
+    }
+
+    private CalibrationResult calibrate(KinematicModel nominal, RobotDescription desc, MeasurementSet train, MeasurementSet validate,
+                                        WeldProgram weld) throws IOException {
+        Calibrator.Options opts = Calibrator.Options.defaults().withInitialTool(Pose.translation(weld.flangeTtcp.position()));
+        CalibrationResult r = Calibrator.calibrate(nominal, train, validate, opts);
+        Path dir = o.out().resolve("calibration");
+        Files.createDirectories(dir);
+        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), "measurements.csv (every 5th pose validates)",
+                "measurements.csv (hold-out)", Instant.now().truncatedTo(ChronoUnit.SECONDS).toString());
+        RobotLibrary.write(r.calibrated().toDescription(), dir.resolve("calibrated.robot.json"), true);
+        AtomicFiles.writeString(dir.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx), true);
+        AtomicFiles.writeString(dir.resolve("report.html"), CalibrationReport.html(r, ctx), true);
+        con.line("calibrated (%d training poses): RMS %.3f mm -> %.4f mm; validation (%d poses) %.3f mm -> %.4f mm;"
+                        + " noise floor %.4f mm", train.size(), Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()),
+                validate.size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()),
+                Math.sqrt(3) * Units.mToMm(r.sigmaPosM()));
+        return r;
+    }
+
+    /** Compensates every target of the program (Fig. 5) and writes the module. */
+    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, Compensator c, String name, Path out) throws IOException {
+        ProgramCompensation.TargetCompensator tc = (target, tool, seed) -> {
+            if (tool.distanceTo(weld.flangeTtcp) > 1e-9 || tool.angleTo(weld.flangeTtcp) > 1e-9)
+                throw new IllegalStateException("the demo compensates only the torch; got another tool " + tool);
+            Compensator.Result r = c.compensate(target, seed);
+            return new ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
+                    r.status() == Compensator.Status.CONVERGED, r.status().name().toLowerCase(Locale.ROOT).replace('_', ' '));
+        };
+        ProgramCompensation.Outcome oc = ProgramCompensation.compensate(weld.module, "main", nominal, tc);
+        double maxShift = 0;
+        for (ProgramCompensation.Correction k : oc.corrections()) {
+            if (!"converged".equals(k.status())) throw new IllegalStateException("compensation of " + k.target() + ": " + k.status());
+            maxShift = Math.max(maxShift, k.shiftM());
+        }
+        String text = RapidWriter.export(oc.module()).text();
+        AtomicFiles.writeString(out.resolve(name + ".mod"), text, true);
+        con.line("compensated %d targets (largest shift %.2f mm) -> %s.mod", oc.corrections().size(), Units.mToMm(maxShift), name);
+        return oc.module();
+    }
+
+    /** Target errors: tracker readings taken to the base frame by a registration, against the programmed TCP positions. */
+    private Run evaluate(String label, String program, List<Vec3> readings, List<Pose> targets, Pose instrumentTbase) {
+        Pose baseTinstrument = instrumentTbase.inverse();
+        double[] e = new double[readings.size()];
+        for (int k = 0; k < e.length; k++) e[k] = Units.mToMm(baseTinstrument.apply(readings.get(k)).minus(targets.get(k).position()).norm());
+        Run r = new Run(label, program, e);
+        con.line("%s: target error mean %.3f mm, max %.3f mm", label, r.meanMm(), r.maxMm());
+        return r;
+    }
+}
