@@ -15,23 +15,25 @@ import java.util.concurrent.TimeUnit;
 final class ControllerProcess implements AutoCloseable {
     private final Process process;
     private final int port;
-    private final Path log;
+    private final Path log, truth;
     private final Thread hook;
 
-    private ControllerProcess(Process process, int port, Path log, Thread hook) {
+    private ControllerProcess(Process process, int port, Path log, Path truth, Thread hook) {
         this.process = process;
         this.port = port;
         this.log = log;
+        this.truth = truth;
         this.hook = hook;
     }
 
     /**
      * Starts the controller and waits (at most {@code timeoutS}) until it writes its port.
      *
-     * @param work folder for the port file, truth file and log
+     * @param work folder for the port file and the truth file (kept from the demo's output until the reveal)
+     * @param log  the process's output
      */
-    static ControllerProcess start(Path work, long seed, String effect, double noiseMm, double timeoutS) throws IOException {
-        Path portFile = work.resolve("controller.port"), truth = work.resolve("truth.json"), log = work.resolve("controller.log");
+    static ControllerProcess start(Path work, Path log, long seed, String effect, double noiseMm, double timeoutS) throws IOException {
+        Path portFile = work.resolve("controller.port"), truth = work.resolve("truth.json");
         Files.deleteIfExists(portFile);
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = new ArrayList<>(List.of(java, "-XX:+UseSerialGC", "-Xmx256m", "-cp", System.getProperty("java.class.path"),
@@ -47,7 +49,7 @@ final class ControllerProcess implements AutoCloseable {
                 if (Files.exists(portFile)) {
                     String text = Files.readString(portFile).strip();
                     if (!text.isEmpty()) {
-                        cp = new ControllerProcess(p, Integer.parseInt(text), log, hook);
+                        cp = new ControllerProcess(p, Integer.parseInt(text), log, truth, hook);
                         return cp;
                     }
                 }
@@ -74,7 +76,7 @@ final class ControllerProcess implements AutoCloseable {
     Path log() { return log; }
 
     /** The truth file the controller wrote at start. */
-    Path truthFile() { return log.resolveSibling("truth.json"); }
+    Path truthFile() { return truth; }
 
     @Override
     public void close() { stop(process, hook); }

@@ -92,7 +92,7 @@ public final class Demo {
      * @param diagnosed       compensated with the diagnosed extended model (null when the diagnosis is unavailable)
      * @param concealedEffect what the simulator hid (revealed after the diagnosis)
      * @param namedEffects    what the diagnosis named
-     * @param noiseFloorMm    √3 σ of the tracker noise estimated by the calibration
+     * @param noiseFloorMm    √3 σ of the tracker noise (σ as configured on the simulated tracker)
      * @param elapsedS        wall time of the whole demo
      */
     public record Result(Run nominal, Run calibrated, Run diagnosed, String concealedEffect, List<String> namedEffects,
@@ -133,8 +133,10 @@ public final class Demo {
         step = 1;
         con.step(1, "Start the simulated IRB-2000 controller");
         ControllerProcess sim;
+        Path work;
         try {
-            sim = ControllerProcess.start(out, o.seed(), o.effect(), NOISE_MM, 60);
+            work = Files.createTempDirectory("robopro-demo");
+            sim = ControllerProcess.start(work, out.resolve("controller.log"), o.seed(), o.effect(), NOISE_MM, 60);
         } catch (IOException e) {
             throw new StepFailure(1, e.getMessage(), e);
         }
@@ -152,6 +154,17 @@ public final class Demo {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new StepFailure(step, "interrupted", e);
+        } finally {
+            deleteQuietly(work);
+        }
+    }
+
+    private static void deleteQuietly(Path dir) {
+        try (var s = Files.list(dir)) {
+            for (Path p : s.toList()) Files.deleteIfExists(p);
+            Files.deleteIfExists(dir);
+        } catch (IOException e) {
+            // a temporary folder left behind is harmless
         }
     }
 
@@ -215,13 +228,15 @@ public final class Demo {
             inv.execute(Commands.ping());
             con.line("connected: %s controller, robopro protocol extension %s", client.robotName(), client.extended() ? "on" : "off");
             List<Vec3> nominalReadings = runAndMeasure(inv, weld.module, "DemoWeld", targetIdx);
+            con.line("(the tracker stands somewhere in the cell: its readings become target errors once step 4's calibration"
+                    + " has registered it to the robot base)");
 
             // -------------------------------------------------------------- 4. campaign, calibration, diagnosis, compensation
             step = 4;
             con.step(4, "Measurement campaign, calibration, diagnosis, compensation");
             MeasurementSet[] sets = campaign(inv, nominal, desc, weld);
             CalibrationResult cal = calibrate(nominal, desc, sets[0], sets[1], weld);
-            double floorMm = Math.sqrt(3) * Units.mToMm(cal.sigmaPosM());
+            double floorMm = Math.sqrt(3) * NOISE_MM;
             Run nominalRun = evaluate("nominal (off-line)", "DemoWeld", nominalReadings, targets, cal.instrumentTbase());
 
             DiagnosisStep.Outcome diag = DiagnosisStep.run(con, desc, sets[0], sets[1], out);
@@ -268,9 +283,10 @@ public final class Demo {
             throws StepFailure, InterruptedException {
         String text = RapidWriter.export(module).text();
         var info = inv.execute(Commands.downloadProgram(name, text.getBytes(StandardCharsets.UTF_8)));
+        double clock0 = inv.execute(Commands.readStatus()).clockS();
         ControllerStatus st = runToEnd(inv, name);
-        con.line("downloaded %s (%d bytes, CRC verified) and ran it: %s, controller clock %.1f s", name, info.length(),
-                st.state(), st.clockS());
+        con.line("downloaded %s (%d bytes, CRC verified) and ran it: %s after %.1f s of robot time", name, info.length(),
+                st.state(), st.clockS() - clock0);
         List<Vec3> readings = new ArrayList<>();
         Console.Bar bar = con.bar("targets measured", targetIdx.size());
         String stepName = name + "To";
@@ -336,10 +352,11 @@ public final class Demo {
         RobotLibrary.write(r.calibrated().toDescription(), dir.resolve("calibrated.robot.json"), true);
         AtomicFiles.writeString(dir.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx), true);
         AtomicFiles.writeString(dir.resolve("report.html"), CalibrationReport.html(r, ctx), true);
-        con.line("calibrated (%d training poses): RMS %.3f mm -> %.4f mm; validation (%d poses) %.3f mm -> %.4f mm;"
-                        + " noise floor %.4f mm", train.size(), Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()),
-                validate.size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()),
-                Math.sqrt(3) * Units.mToMm(r.sigmaPosM()));
+        con.line("calibrated (%d training poses): RMS %.3f mm -> %.4f mm; validation (%d poses) %.3f mm -> %.4f mm",
+                train.size(), Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()),
+                validate.size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()));
+        con.line("tracker noise floor √3·σ = %.4f mm; what is left above it is not geometry (see the diagnosis)",
+                Math.sqrt(3) * NOISE_MM);
         return r;
     }
 

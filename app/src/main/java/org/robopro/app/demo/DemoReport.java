@@ -79,8 +79,8 @@ final class DemoReport {
         hrow(h, "geometric calibration", r.calibrated());
         if (r.diagnosed() != null) hrow(h, "with the diagnosed effect", r.diagnosed());
         else h.append("<tr><td class=\"l\">with the diagnosed effect</td><td class=\"pending\" colspan=\"2\">pending: diagnosis not in this build</td></tr>");
-        h.append(String.format(Locale.ROOT, "</table>\n<p>Noise floor of the tracker (&radic;3&middot;&sigma;, &sigma; estimated by the "
-                + "calibration): %.4f mm. Concealed effect: <b>%s</b>; named by the diagnosis: <b>%s</b>.</p>\n", r.noiseFloorMm(),
+        h.append(String.format(Locale.ROOT, "</table>\n<p>Noise floor of the tracker (&radic;3&middot;&sigma;, &sigma; = %.3f mm "
+                + "per axis): %.4f mm. Concealed effect: <b>%s</b>; named by the diagnosis: <b>%s</b>.</p>\n", Demo.NOISE_MM, r.noiseFloorMm(),
                 Html.esc(r.concealedEffect()), r.namedEffects().isEmpty() ? (diag.available() ? "nothing" : "(pending)")
                         : Html.esc(String.join(", ", r.namedEffects()))));
 

@@ -1,0 +1,93 @@
+package org.robopro.app.demo;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.app.cli.RoboproCommand;
+import picocli.CommandLine;
+
+/** The whole demo loop with a small campaign: the numbers, the files, and the controller process ended. */
+class DemoTest {
+    @TempDir Path dir;
+
+    private record Outcome(int code, String out, String err) { }
+
+    private static Outcome run(String... args) {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        CommandLine cl = RoboproCommand.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        int code = cl.execute(args);
+        return new Outcome(code, out.toString(), err.toString());
+    }
+
+    private static List<ProcessHandle> demoControllers() {
+        List<ProcessHandle> l = new ArrayList<>();
+        ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)
+                .filter(p -> p.info().commandLine().orElse("").contains(DemoController.class.getName())).forEach(l::add);
+        return l;
+    }
+
+    @Test
+    void demo_smallCampaign_calibratedNearNoiseFloorAndReportWritten() throws Exception {
+        Path out = dir.resolve("demo");
+        Outcome o = run("demo", "--seed", "3", "--poses", "80", "--passes", "2", "--out", out.toString());
+        assertEquals(0, o.code(), () -> o.out() + o.err());
+        for (String s : List.of("[1/5]", "[2/5]", "[3/5]", "[4/5]", "[5/5]", "30 parameters", "path check", "elapsed"))
+            assertTrue(o.out().contains(s), () -> "missing '" + s + "' in\n" + o.out());
+
+        JsonNode j = Json.read(Files.readString(out.resolve("demo.json")));
+        Set<String> keys = new TreeSet<>();
+        j.fieldNames().forEachRemaining(keys::add);
+        assertEquals(new TreeSet<>(List.of("nominal_mean_mm", "nominal_max_mm", "calibrated_mean_mm", "calibrated_max_mm",
+                "diagnosed_mean_mm", "diagnosed_max_mm", "concealed_effect", "named_effects")), keys);
+        double nominal = j.get("nominal_mean_mm").asDouble(), calibrated = j.get("calibrated_mean_mm").asDouble();
+        double floor = Math.sqrt(3) * Demo.NOISE_MM;
+        assertTrue(nominal > 2, "a 5-15 mm robot misses the off-line targets by mm: " + nominal);
+        assertTrue(j.get("nominal_max_mm").asDouble() >= nominal);
+        assertTrue(nominal > 20 * calibrated, "calibration removes most of the error: " + nominal + " -> " + calibrated);
+        assertTrue(calibrated < 5 * floor, "calibrated mean " + calibrated + " mm within a few noise floors (" + floor + ")");
+        assertTrue(j.get("calibrated_max_mm").asDouble() >= calibrated);
+        assertTrue(j.get("concealed_effect").asText().startsWith(ConcealedEffect.DEFAULT), j.toString());
+        assertTrue(j.get("named_effects").isArray());
+
+        String html = Files.readString(out.resolve("report.html"));
+        assertTrue(html.contains("<svg") && html.contains("Target errors"), "report with inline plots");
+        assertFalse(html.contains("<script"), "self-contained, no scripts");
+        for (String f : List.of("DemoWeld.mod", "DemoWeldCal.mod", "measurements.csv", "calibration/report.html", "truth.json"))
+            assertTrue(Files.exists(out.resolve(f)), f);
+        assertTrue(demoControllers().isEmpty(), "the controller process is ended: " + demoControllers());
+
+        // A second run into the same folder replaces the earlier demo's files.
+        Outcome again = run("demo", "--seed", "3", "--poses", "40", "--passes", "1", "--out", out.toString());
+        assertEquals(0, again.code(), () -> again.out() + again.err());
+    }
+
+    @Test
+    void demo_folderWithOtherFiles_refusedWithoutStartingTheController() throws Exception {
+        Path out = Files.createDirectories(dir.resolve("mine"));
+        Files.writeString(out.resolve("notes.txt"), "my notes");
+        Outcome o = run("demo", "--out", out.toString());
+        assertEquals(1, o.code());
+        assertTrue(o.err().contains("not empty"), o.err());
+        assertEquals("my notes", Files.readString(out.resolve("notes.txt")));
+        assertTrue(demoControllers().isEmpty());
+    }
+
+    @Test
+    void demo_unknownEffect_exitCode2NamingTheChoices() {
+        Outcome o = run("demo", "--effect", "gremlins", "--out", dir.resolve("x").toString());
+        assertEquals(2, o.code());
+        assertTrue(o.err().contains("gremlins") && o.err().contains(ConcealedEffect.DEFAULT), o.err());
+    }
+}
