@@ -175,14 +175,24 @@ public final class KinematicModel {
 
     /** Controller values q from model angles theta (inverse coupling). */
     public double[] q(double[] theta) {
-        checkLength(theta);
         double[] q = new double[n];
+        q(theta, q);
+        return q;
+    }
+
+    /** Allocation-free inverse coupling: writes q for model angles theta into {@code out}. */
+    void q(double[] theta, double[] out) {
+        checkLength(theta);
+        if (couplingIdentity) {
+            System.arraycopy(theta, 0, out, 0, n);
+            return;
+        }
         for (int i = 0; i < n; i++) {
             double s = 0;
-            for (int j = 0; j < n; j++) s += cInv[i][j] * theta[j];
-            q[i] = s;
+            double[] row = cInv[i];
+            for (int j = 0; j < n; j++) s += row[j] * theta[j];
+            out[i] = s;
         }
-        return q;
     }
 
     /** The coupling matrix C (theta = C q), a copy. */
