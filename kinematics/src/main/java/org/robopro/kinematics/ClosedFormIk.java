@@ -129,10 +129,10 @@ final class ClosedFormIk {
         double r = Math.sqrt(cx * cx + cy * cy);
         if (r < Math.abs(s) - 1e-12) return 0;
         // theta1 = phi - asin(s / r) or phi - pi + asin(s / r), phi = atan2(cy, cx)
-        double phi = r > 0 ? Math.atan2(cy, cx) : 0;
+        double phi = r > 0 ? FastTrig.atan2(cy, cx) : 0;
         double cphi = r > 0 ? cx / r : 1, sphi = r > 0 ? cy / r : 0;
         double sa = r > 0 ? ModelBuilder.clamp(s / r) : 0, ca = Math.sqrt(1 - sa * sa);
-        double as = Math.asin(sa);
+        double as = FastTrig.asin(sa);
         // R_target C^T, shared by all branches (24..32)
         for (int l = 0; l < 3; l++)
             for (int j = 0; j < 3; j++)
@@ -148,7 +148,7 @@ final class ClosedFormIk {
             double ck = rho > 0 ? k / rho : 2;
             if (ck > 1 + 1e-9 || ck < -1 - 1e-9) continue;
             ck = ModelBuilder.clamp(ck);
-            double ac = Math.acos(ck), sac = Math.sqrt(1 - ck * ck);
+            double ac = FastTrig.acos(ck), sac = Math.sqrt(1 - ck * ck);
             // frame after joint 1 and F1
             System.arraycopy(fixedF(0), 0, frame1, 0, 12);
             Mat34.rotate(frame1, 2, c1, s1);
@@ -161,7 +161,7 @@ final class ClosedFormIk {
                 double vz = l2z + c3 * l3z - s3 * l3x, vx = l2x + s3 * l3z + c3 * l3x;
                 // e^(i theta2) = D conj(V) / |D conj(V)| with D = dz + i dx
                 double re2 = dz * vz + dx * vx, im2 = dx * vz - dz * vx, h2 = Math.sqrt(re2 * re2 + im2 * im2);
-                double th2 = Math.atan2(im2, re2);
+                double th2 = FastTrig.atan2(im2, re2);
                 double c2 = h2 > 0 ? re2 / h2 : 1, s2 = h2 > 0 ? im2 / h2 : 0;
                 double th3 = sigma3 * phi3;
                 // frame 4 (before joint 4) at theta1..3
@@ -182,7 +182,7 @@ final class ClosedFormIk {
                 double cT5 = (ca4 * ca5 - m8) / (sa4 * sa5);
                 if (cT5 > 1 + 1e-9 || cT5 < -1 - 1e-9) continue;
                 cT5 = ModelBuilder.clamp(cT5);
-                double t5a = Math.acos(cT5), st5 = Math.sqrt(1 - cT5 * cT5);
+                double t5a = FastTrig.acos(cT5), st5 = Math.sqrt(1 - cT5 * cT5);
                 int bits = 0;
                 if (xp * frontAxis1Sign < 0) bits |= 4;
                 double lz = c2 * l2z - s2 * l2x, lx = s2 * l2z + c2 * l2x; // lower arm e^(i theta2) L2
@@ -196,7 +196,7 @@ final class ClosedFormIk {
                     if (p * p + qv * qv < 1e-24 || m2 * m2 + m5 * m5 < 1e-24) { T4 = 0; c4 = 1; s4 = 0; } // wrist singular
                     else {
                         double re4 = m2 * p + m5 * qv, im4 = m5 * p - m2 * qv, h4 = Math.sqrt(re4 * re4 + im4 * im4);
-                        T4 = Math.atan2(im4, re4); c4 = re4 / h4; s4 = im4 / h4;
+                        T4 = FastTrig.atan2(im4, re4); c4 = re4 / h4; s4 = im4 / h4;
                     }
                     // first two columns of G = R_Z(T4) R_X(a4) R_Z(T5) R_X(a5); N = G^T M, T6 = atan2(N10, N00)
                     double u0 = c4 * cT5 - s4 * ca4 * sT5, u1 = s4 * cT5 + c4 * ca4 * sT5, u2 = sa4 * sT5;
@@ -204,7 +204,7 @@ final class ClosedFormIk {
                     double g01 = ca5 * k0 + sa5 * (s4 * sa4), g11 = ca5 * k1 - sa5 * (c4 * sa4), g21 = ca5 * k2 + sa5 * ca4;
                     double n00 = u0 * m0 + u1 * m3 + u2 * m6;
                     double n10 = g01 * m0 + g11 * m3 + g21 * m6;
-                    double T6 = Math.atan2(n10, n00);
+                    double T6 = FastTrig.atan2(n10, n00);
                     if (armBits != null) armBits[count] = bits;
                     if (detFactor != null) detFactor[count] = armDet;
                     double[] o = out[count++];

@@ -80,6 +80,8 @@ public final class IkSolver {
 
     public KinematicModel model() { return model; }
 
+    double[] scratch() { return scratch; }
+
     // ---------------------------------------------------------------- all solutions
 
     /**
@@ -346,7 +348,7 @@ public final class IkSolver {
         if (cos > 1 - 5e-13) { // angle < 1e-6: sin(angle) ~ angle, the skew part is the rotation vector
             err[3] = vx / 2; err[4] = vy / 2; err[5] = vz / 2;
         } else {
-            double angle = Math.acos(cos);
+            double angle = FastTrig.acos(cos);
             if (Math.PI - angle < 1e-4) {
                 org.robopro.models.Vec3 rv = Pose.of(new double[] {r00, r01, r02, r10, r11, r12, r20, r21, r22}, 0, 0, 0)
                         .rotationVector(); // far from the solution only

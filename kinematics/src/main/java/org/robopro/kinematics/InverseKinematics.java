@@ -140,7 +140,7 @@ public final class InverseKinematics {
      * how many; 0 when the model has no closed form or the pose is unreachable.
      */
     public int closedFormThetas(double[] baseTflange12, double[][] thetaOut) {
-        return closed == null ? 0 : closed.solve(baseTflange12, thetaOut);
+        return closed == null ? 0 : closed.solve(baseTflange12, thetaOut, null, null, solvers.get().scratch());
     }
 
     // ---------------------------------------------------------------- numerical
