@@ -43,8 +43,12 @@ public final class IkSolver {
     private final int[] candCount, odo;
     // numerical
     private final double[] target = new double[12], jac, f = new double[12], e = new double[6];
-    private final double[] a, g, qTry, eTry = new double[6], fTry = new double[12], chol, y, qWork;
+    private final double[] a, g, qTry, eTry = new double[6], fTry = new double[12], chol, y;
     private final double[] lu = new double[36];
+    // solveNear
+    private final double[][] branchQ = new double[8][6];
+    private final double[] branchD = new double[8], nearBest, nearTry;
+    private final boolean[] branchDone = new boolean[8];
     private int iterations;
     private double positionError, orientationError;
     private boolean converged;
@@ -75,7 +79,8 @@ public final class IkSolver {
         qTry = new double[n];
         chol = new double[n * n];
         y = new double[n];
-        qWork = new double[n];
+        nearBest = new double[n];
+        nearTry = new double[n];
     }
 
     public KinematicModel model() { return model; }
@@ -206,6 +211,101 @@ public final class IkSolver {
     private int idx(int i) {
         if (i < 0 || i >= count) throw new IndexOutOfBoundsException("solution " + i + " of " + count);
         return order[i];
+    }
+
+    // ---------------------------------------------------------------- nearest solution
+
+    /**
+     * The solution inside the limits nearest to {@code qSeed} (Euclidean distance in q), as
+     * {@link InverseKinematics#solveNear}: written into {@code qOut}; false when there is none.
+     *
+     * <p>For an approximate closed form (calibrated arm) the candidates are the damped
+     * least-squares solution from the seed and the refined closed-form branches. Branches are
+     * refined nearest first and the search stops when the next branch, even moved by twice the
+     * largest refinement correction seen (at least 0.1 rad), cannot beat the best so far; usually
+     * one or two refinements instead of eight.
+     */
+    public boolean solveNear(double[] baseTflange12, double[] qSeed, double[] qOut) {
+        if (qSeed.length != n || qOut.length != n) throw new IllegalArgumentException("seed and output need " + n + " values");
+        if (closed == null) return solveNumerical(baseTflange12, qSeed, qOut);
+        double bestD = Double.POSITIVE_INFINITY;
+        if (closed.exact) {
+            solveAll(baseTflange12);
+            for (int i = 0; i < count; i++) {
+                int k = order[i];
+                if (!sWithin[k]) continue;
+                double d = dist2(sq[k], qSeed);
+                if (d < bestD) { bestD = d; System.arraycopy(sq[k], 0, nearBest, 0, n); }
+            }
+        } else {
+            System.arraycopy(qSeed, 0, nearTry, 0, n);
+            if (dls(baseTflange12, nearTry, true) && model.withinLimits(nearTry)) {
+                bestD = dist2(nearTry, qSeed);
+                System.arraycopy(nearTry, 0, nearBest, 0, n);
+            }
+            int m = closed.solve(baseTflange12, thetas, null, null, scratch);
+            for (int i = 0; i < m; i++) {
+                model.q(thetas[i], branchQ[i]);
+                System.arraycopy(branchQ[i], 0, nearTry, 0, n);
+                branchD[i] = nearestVariant(nearTry, qSeed);
+                branchDone[i] = false;
+            }
+            double slack = 0.1;
+            while (true) {
+                int next = -1;
+                for (int i = 0; i < m; i++) if (!branchDone[i] && (next < 0 || branchD[i] < branchD[next])) next = i;
+                if (next < 0 || branchD[next] == Double.POSITIVE_INFINITY) break;
+                branchDone[next] = true;
+                if (bestD < Double.POSITIVE_INFINITY && Math.sqrt(bestD) < Math.sqrt(branchD[next]) - slack) break;
+                System.arraycopy(branchQ[next], 0, nearTry, 0, n);
+                if (!dls(baseTflange12, nearTry, false)) continue;
+                double moved = 0;
+                for (int i = 0; i < n; i++) {
+                    double dq = nearTry[i] - branchQ[next][i];
+                    moved += dq * dq;
+                }
+                slack = Math.max(slack, 2 * Math.sqrt(moved));
+                double d = nearestVariant(nearTry, qSeed);
+                if (d < bestD) { bestD = d; System.arraycopy(nearTry, 0, nearBest, 0, n); }
+            }
+        }
+        if (bestD < Double.POSITIVE_INFINITY) {
+            System.arraycopy(nearBest, 0, qOut, 0, n);
+            return true;
+        }
+        return solveNumerical(baseTflange12, qSeed, qOut) && model.withinLimits(qOut);
+    }
+
+    /**
+     * Moves q (in place) to its turn variant inside the limits nearest to the seed and returns
+     * the squared distance; infinite when no variant is inside the limits.
+     */
+    private double nearestVariant(double[] q, double[] seed) {
+        double d = 0;
+        for (int i = 0; i < n; i++) {
+            if (integerColumn[i]) {
+                double w = ClosedFormIk.wrap(q[i]), best = Double.NaN, bd = Double.POSITIVE_INFINITY;
+                for (int k = -2; k <= 2; k++) {
+                    double v = w + 2 * Math.PI * k;
+                    if (v >= model.qMin(i) - 1e-9 && v <= model.qMax(i) + 1e-9 && Math.abs(v - seed[i]) < bd) {
+                        bd = Math.abs(v - seed[i]);
+                        best = v;
+                    }
+                }
+                if (Double.isNaN(best)) return Double.POSITIVE_INFINITY;
+                q[i] = best;
+            } else if (!(q[i] >= model.qMin(i) - 1e-9 && q[i] <= model.qMax(i) + 1e-9)) {
+                return Double.POSITIVE_INFINITY;
+            }
+            d += (q[i] - seed[i]) * (q[i] - seed[i]);
+        }
+        return d;
+    }
+
+    private double dist2(double[] a0, double[] b0) {
+        double d = 0;
+        for (int i = 0; i < n; i++) d += (a0[i] - b0[i]) * (a0[i] - b0[i]);
+        return d;
     }
 
     // ---------------------------------------------------------------- manipulability

@@ -1,6 +1,5 @@
 package org.robopro.kinematics;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.ejml.data.DMatrixRMaj;
@@ -82,24 +81,19 @@ public final class InverseKinematics {
         return solver.solutions();
     }
 
-    /** The solution nearest to qSeed (numerical refinement), or empty when unreachable. */
+    /**
+     * The solution inside the limits nearest to qSeed (closed-form branches refined
+     * numerically on calibrated arms, or damped least squares from the seed), or empty when
+     * unreachable. Allocation-free equivalent: {@link IkSolver#solveNear}.
+     */
     public Optional<IkSolution> solveNear(Pose baseTflange, double[] qSeed) {
         if (qSeed.length != model.dof()) throw new IllegalArgumentException("seed needs " + model.dof() + " values");
-        if (closed != null) {
-            IkSolution best = null;
-            double bestD = Double.POSITIVE_INFINITY;
-            List<IkSolution> candidates = new ArrayList<>(solveAll(baseTflange));
-            // approximate closed form: the branch the seed lies on may refine to a neighbour
-            if (!closed.exact) solveNumerical(baseTflange, qSeed).solution().ifPresent(candidates::add);
-            for (IkSolution s : candidates) {
-                if (!s.withinLimits()) continue;
-                double d = 0;
-                for (int i = 0; i < qSeed.length; i++) d += (s.q()[i] - qSeed[i]) * (s.q()[i] - qSeed[i]);
-                if (d < bestD) { bestD = d; best = s; }
-            }
-            if (best != null) return Optional.of(best);
-        }
-        return solveNumerical(baseTflange, qSeed).solution();
+        double[] target = new double[12];
+        Mat34.fromPose(baseTflange, target);
+        double[] q = new double[model.dof()];
+        IkSolver solver = solvers.get();
+        if (!solver.solveNear(target, qSeed, q)) return Optional.empty();
+        return Optional.of(new IkSolution(q, confOf(q), model.withinLimits(q), solver.manipulabilityAt(q)));
     }
 
     /** The solution with the given configuration data (inside the limits), or empty. */

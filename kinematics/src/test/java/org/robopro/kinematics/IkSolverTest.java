@@ -166,4 +166,40 @@ class IkSolverTest {
         }
         assertTrue(maxIterations <= 8, "Levenberg-Marquardt from a 0.05 rad seed took " + maxIterations + " iterations");
     }
+
+    @Test
+    void solveNear_calibratedIrb2000_sameAsExhaustiveReference() {
+        KinematicModel nominal = KinematicModel.build(ReferenceRobots.irb2000());
+        Random rnd = new Random(36);
+        double[] p = nominal.parameterValues();
+        for (int i = 0; i < p.length; i++) p[i] += 2e-3 * rnd.nextGaussian();
+        KinematicModel cal = KinematicModel.build(nominal.withParameterValues(p).toDescription());
+        InverseKinematics ik = InverseKinematics.of(cal);
+        IkSolver solver = ik.newSolver();
+        double[] target = new double[12], q = new double[6];
+        int compared = 0;
+        for (double[] q0 : cal.randomConfigurations(25, 37)) {
+            cal.flange(q0, cal.newWorkspace(), target);
+            double[] seed = q0.clone();
+            for (int i = 0; i < 6; i++) seed[i] += 0.5 * rnd.nextGaussian(); // often nearer another branch
+            // reference: every refined branch with every turn variant, plus DLS from the seed
+            List<IkSolution> candidates = new ArrayList<>(ik.solveAll(Mat34.toPose(target)));
+            ik.solveNumerical(Mat34.toPose(target), seed).solution().ifPresent(candidates::add);
+            double[] best = null;
+            double bestD = Double.POSITIVE_INFINITY;
+            for (IkSolution s : candidates) {
+                if (!s.withinLimits()) continue;
+                double d = 0;
+                for (int i = 0; i < 6; i++) d += (s.q()[i] - seed[i]) * (s.q()[i] - seed[i]);
+                if (d < bestD) { bestD = d; best = s.q(); }
+            }
+            boolean found = solver.solveNear(target, seed, q);
+            assertEquals(best != null, found);
+            if (found) {
+                assertArrayEquals(best, q, 1e-8, "nearest to " + Arrays.toString(seed));
+                compared++;
+            }
+        }
+        assertTrue(compared >= 20, "compared " + compared);
+    }
 }
