@@ -38,4 +38,20 @@ class FastTrigTest {
             assertEquals(Math.asin(x), FastTrig.asin(x), 1e-15, "asin " + x);
         }
     }
+
+    @Test
+    void sinCos_jointRangeAndBeyond_matchMath() {
+        Random r = new Random(43);
+        for (int i = 0; i < 200_000; i++) {
+            double x = (2 * r.nextDouble() - 1) * (i % 2 == 0 ? 4 * Math.PI : 2e5);
+            assertEquals(Math.sin(x), FastTrig.sin(x), 4e-16 * Math.max(1, Math.abs(x) / 100), "sin " + x);
+            assertEquals(Math.cos(x), FastTrig.cos(x), 4e-16 * Math.max(1, Math.abs(x) / 100), "cos " + x);
+        }
+        for (double x : new double[] {0, -0.0, Math.PI / 4, Math.PI / 2, Math.PI, -Math.PI, 1e-300, 3 * Math.PI / 4}) {
+            assertEquals(Math.sin(x), FastTrig.sin(x), 4e-16, "sin " + x);
+            assertEquals(Math.cos(x), FastTrig.cos(x), 4e-16, "cos " + x);
+        }
+        assertEquals(Double.NaN, FastTrig.sin(Double.NaN));
+        assertEquals(Double.NaN, FastTrig.cos(Double.POSITIVE_INFINITY));
+    }
 }
