@@ -17,6 +17,7 @@ import java.util.List;
  */
 public final class IkSolver {
     private static final int MAX_ITERATIONS = 100;
+    private static final double INV_TWO_PI = 1 / (2 * Math.PI);
 
     private final InverseKinematics ik;
     private final KinematicModel model;
@@ -24,6 +25,7 @@ public final class IkSolver {
     private final int n;
     private final double len;
     private final boolean[] integerColumn;
+    private final double[] qMin, qMax;
     private final KinematicModel.Workspace ws;
     // closed form
     private final double[][] thetas = new double[8][6];
@@ -61,6 +63,9 @@ public final class IkSolver {
         this.len = model.characteristicLength();
         this.integerColumn = integerColumn;
         ws = model.newWorkspace();
+        qMin = new double[n];
+        qMax = new double[n];
+        for (int i = 0; i < n; i++) { qMin[i] = model.qMin(i); qMax[i] = model.qMax(i); }
         int cap = 16;
         sq = new double[cap][n];
         sConf = new int[4 * cap];
@@ -128,9 +133,13 @@ public final class IkSolver {
         for (int i = 0; i < n; i++) {
             if (!integerColumn[i]) { cand[i][0] = base[i]; candCount[i] = 1; continue; }
             int c = 0;
-            for (int k = -2; k <= 2; k++) {
-                double v = base[i] + 2 * Math.PI * k;
-                if (v >= model.qMin(i) - 1e-9 && v <= model.qMax(i) + 1e-9) cand[i][c++] = v;
+            double lo = qMin[i] - 1e-9, hi = qMax[i] + 1e-9, w = base[i];
+            // only the turns k that can land in [lo, hi] (one more each side for rounding), k in -2..2
+            int kLo = (int) Math.max(-2, Math.ceil((lo - w) * INV_TWO_PI) - 1);
+            int kHi = (int) Math.min(2, Math.floor((hi - w) * INV_TWO_PI) + 1);
+            for (int k = kLo; k <= kHi; k++) {
+                double v = w + 2 * Math.PI * k;
+                if (v >= lo && v <= hi) cand[i][c++] = v;
             }
             candCount[i] = c;
             if (c == 0) each = false;

@@ -121,10 +121,10 @@ public final class InverseKinematics {
     /** cf1, cf4, cf6, cfx of q into out[off..off+3]; cfxArm holds the arm bits (4, 2) of cfx. */
     static void confInto(double[] q, int cfxArm, int[] out, int off) {
         int n = q.length;
-        double quarter = Math.PI / 2;
-        out[off] = (int) Math.floor(q[0] / quarter + 1e-12);
-        out[off + 1] = n > 3 ? (int) Math.floor(q[3] / quarter + 1e-12) : 0;
-        out[off + 2] = n > 5 ? (int) Math.floor(q[5] / quarter + 1e-12) : 0;
+        double perQuarter = 2 / Math.PI; // a multiplication: the 1e-12 slack covers its rounding
+        out[off] = (int) Math.floor(q[0] * perQuarter + 1e-12);
+        out[off + 1] = n > 3 ? (int) Math.floor(q[3] * perQuarter + 1e-12) : 0;
+        out[off + 2] = n > 5 ? (int) Math.floor(q[5] * perQuarter + 1e-12) : 0;
         out[off + 3] = cfxArm | (n > 4 && q[4] < 0 ? 1 : 0);
     }
 
