@@ -13,6 +13,13 @@ public final class Main {
 
     /** Runs the command line and returns its exit code (tests call this). */
     public static int run(String... args) {
-        return RoboproCommand.commandLine().execute(args);
+        CommandLine cl = RoboproCommand.commandLine();
+        try {
+            return cl.execute(args);
+        } finally {
+            // main() ends with System.exit: output a command print()ed without a newline must not be lost.
+            cl.getOut().flush();
+            cl.getErr().flush();
+        }
     }
 }

@@ -18,6 +18,7 @@ import org.robopro.calibration.identification.Calibrator;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.measurement.MeasurementWriter;
 import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.calibration.simulation.PoseSampler;
 import org.robopro.comms.CommandInvoker;
@@ -33,6 +34,7 @@ import org.robopro.kinematics.Units;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.CellDescription;
 import org.robopro.models.CellFile;
+import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
@@ -112,6 +114,7 @@ public final class Demo {
     private final Options o;
     private final Console con;
     private int step;
+    private Path work;
 
     private Demo(Options o, Console con) {
         this.o = o;
@@ -133,7 +136,6 @@ public final class Demo {
         step = 1;
         con.step(1, "Start the simulated IRB-2000 controller");
         ControllerProcess sim;
-        Path work;
         try {
             work = Files.createTempDirectory("robopro-demo");
             sim = ControllerProcess.start(work, out.resolve("controller.log"), o.seed(), o.effect(), NOISE_MM, 60);
@@ -330,14 +332,22 @@ public final class Demo {
                 rows.add(new MeasurementCampaign.Row(Integer.toString(rows.size() + 1), r.q(), r.measured(), r.direction()));
             bar.update(rows.size());
         }
-        Path file = o.out().resolve("measurements.csv");
-        MeasurementCampaign.write(file, desc.name(), String.format(Locale.ROOT,
+        // What the link recorded (comms' campaign file) is read back like any user file, then saved with a train/validate split.
+        Path raw = work.resolve("campaign.csv");
+        MeasurementCampaign.write(raw, desc.name(), String.format(Locale.ROOT,
                 "simulated laser tracker at the torch tip, sigma %.3f mm", NOISE_MM), rows, true);
+        MeasurementSet all = MeasurementReader.read(raw, desc);
+        List<Measurement> split = new ArrayList<>(), train = new ArrayList<>(), validate = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) {
+            boolean v = i % 5 == 4; // every 5th pose validates
+            Measurement m = all.rows().get(i).withSet(v ? Measurement.Split.VALIDATE : Measurement.Split.TRAIN);
+            split.add(m);
+            (v ? validate : train).add(m);
+        }
+        List<JointType> types = desc.joints().stream().map(j -> j.type()).toList();
+        MeasurementWriter.write(all.withRows(split), types, o.out().resolve("measurements.csv"), true);
         bar.done("campaign: %d poses moved to and measured through the link in %.1f s -> measurements.csv", rows.size(),
                 (System.nanoTime() - t0) / 1e9);
-        MeasurementSet all = MeasurementReader.read(file, desc);
-        List<Measurement> train = new ArrayList<>(), validate = new ArrayList<>();
-        for (int i = 0; i < all.size(); i++) (i % 5 == 4 ? validate : train).add(all.rows().get(i));
         return new MeasurementSet[] {all.withRows(train), all.withRows(validate)};
     }
 
@@ -347,8 +357,8 @@ public final class Demo {
         CalibrationResult r = Calibrator.calibrate(nominal, train, validate, opts);
         Path dir = o.out().resolve("calibration");
         Files.createDirectories(dir);
-        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), "measurements.csv (every 5th pose validates)",
-                "measurements.csv (hold-out)", Instant.now().truncatedTo(ChronoUnit.SECONDS).toString());
+        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), "measurements.csv (set = train)",
+                "measurements.csv (set = validate)", Instant.now().truncatedTo(ChronoUnit.SECONDS).toString());
         RobotLibrary.write(r.calibrated().toDescription(), dir.resolve("calibrated.robot.json"), true);
         AtomicFiles.writeString(dir.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx), true);
         AtomicFiles.writeString(dir.resolve("report.html"), CalibrationReport.html(r, ctx), true);
