@@ -97,7 +97,7 @@ class RapidParserTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', quoteCharacter = '`', value = {
-            "if without ENDIF    | MODULE M\\n  PROC main()\\n    IF x THEN\\n  ENDPROC\\nENDMODULE | 4 | 3 | expected ENDIF",
+            "if without ENDIF    | MODULE M\\n  PROC main()\\n    IF x THEN\\n  ENDPROC\\nENDMODULE | 4 | 3 | ENDIF, found 'ENDPROC'",
             "call with brackets  | MODULE M\\n  PROC main()\\n    SetDO(do1, 1);\\n  ENDPROC\\nENDMODULE | 3 | 10 | without parentheses",
             "missing argument    | MODULE M\\n  PROC main()\\n    MoveL p1, v100, z10;\\n  ENDPROC\\nENDMODULE | 3 | 5 | MoveL needs 4 arguments",
             "missing comma       | MODULE M\\n  PROC main()\\n    MoveL p1 v100, z10, tool0;\\n  ENDPROC\\nENDMODULE | 3 | 14 | expected ',' or ';'",
