@@ -270,8 +270,8 @@ public final class Demo {
             AtomicFiles.writeString(out.resolve("demo.json"), DemoReport.json(r), true);
             AtomicFiles.writeString(out.resolve("report.html"),
                     DemoReport.html(r, o, cal, diag, targetNames, created), true);
-            con.line("wrote %s: report.html, demo.json, %s.mod (+ Cal, Diag), measurements.csv, calibration/, diagnosis/",
-                    out.toAbsolutePath().normalize(), WeldProgram.MODULE);
+            con.line("wrote %s: report.html, demo.json, DemoWeld.mod, DemoWeldCal.mod%s, measurements.csv, calibration/%s",
+                    out.toAbsolutePath().normalize(), diag.available() ? ", DemoWeldDiag.mod" : "", diag.available() ? ", diagnosis/" : "");
             con.line("elapsed %.1f s", con.elapsedS());
             return new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
         }
