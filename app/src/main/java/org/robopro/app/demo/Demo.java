@@ -113,17 +113,29 @@ public final class Demo {
 
     private final Options o;
     private final Console con;
+    private final java.util.function.IntConsumer beforeStep;
     private int step;
     private Path work;
 
-    private Demo(Options o, Console con) {
+    private Demo(Options o, Console con, java.util.function.IntConsumer beforeStep) {
         this.o = o;
         this.con = con;
+        this.beforeStep = beforeStep;
     }
 
     /** Runs the demo, printing as it goes; the simulated controller is stopped in every case. */
     public static Result run(Options o, PrintWriter out, boolean terminal) throws StepFailure {
-        return new Demo(o, new Console(out, terminal)).run();
+        return run(o, out, terminal, k -> { });
+    }
+
+    /** With a hook called before steps 2-5 (tests make a step fail with it). */
+    static Result run(Options o, PrintWriter out, boolean terminal, java.util.function.IntConsumer beforeStep) throws StepFailure {
+        return new Demo(o, new Console(out, terminal), beforeStep).run();
+    }
+
+    private void begin(int k) {
+        step = k;
+        beforeStep.accept(k);
     }
 
     private Result run() throws StepFailure {
@@ -186,7 +198,7 @@ public final class Demo {
     private Result loop(ControllerProcess sim) throws StepFailure, IOException, InterruptedException {
         Path out = o.out();
         // ------------------------------------------------------------------ 2. model, cell, program
-        step = 2;
+        begin(2);
         con.step(2, "Model, cell and an off-line welding program");
         RobotDescription desc = RobotLibrary.shipped("irb2000");
         KinematicModel nominal = KinematicModel.build(desc);
@@ -225,7 +237,7 @@ public final class Demo {
         try (ProtocolClient client = new ProtocolClient(new TcpRequestChannel("127.0.0.1", sim.port()));
              CommandInvoker inv = new CommandInvoker(client, CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofSeconds(20)))) {
             // -------------------------------------------------------------- 3. run the off-line program
-            step = 3;
+            begin(3);
             con.step(3, "Run the off-line program on the controller and measure the targets");
             inv.execute(Commands.ping());
             con.line("connected: %s controller, robopro protocol extension %s", client.robotName(), client.extended() ? "on" : "off");
@@ -234,7 +246,7 @@ public final class Demo {
                     + " has registered it to the robot base)");
 
             // -------------------------------------------------------------- 4. campaign, calibration, diagnosis, compensation
-            step = 4;
+            begin(4);
             con.step(4, "Measurement campaign, calibration, diagnosis, compensation");
             MeasurementSet[] sets = campaign(inv, nominal, desc, weld);
             CalibrationResult cal = calibrate(nominal, desc, sets[0], sets[1], weld);
@@ -257,7 +269,7 @@ public final class Demo {
             }
 
             // -------------------------------------------------------------- 5. table and report
-            step = 5;
+            begin(5);
             con.step(5, "Before and after");
             String concealed = DemoReport.concealedEffect(sim.truthFile());
             if (diag.available()) con.line("concealed effect (revealed now): %s; the diagnosis named: %s", concealed,

@@ -33,8 +33,10 @@ class DemoTest {
 
     private static List<ProcessHandle> demoControllers() {
         List<ProcessHandle> l = new ArrayList<>();
+        // Descendants of this JVM that are (or may be: the OS may not tell) the demo's controller.
         ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)
-                .filter(p -> p.info().commandLine().orElse("").contains(DemoController.class.getName())).forEach(l::add);
+                .filter(p -> p.info().arguments().map(a -> List.of(a).contains(DemoController.class.getName())).orElse(true))
+                .forEach(l::add);
         return l;
     }
 
@@ -71,6 +73,22 @@ class DemoTest {
         // A second run into the same folder replaces the earlier demo's files.
         Outcome again = run("demo", "--seed", "3", "--poses", "40", "--passes", "1", "--out", out.toString());
         assertEquals(0, again.code(), () -> again.out() + again.err());
+    }
+
+    @Test
+    void run_stepFailsMidway_stepFailureNamesTheStepAndControllerIsEnded() {
+        Demo.Options o = new Demo.Options(2, ConcealedEffect.DEFAULT, 40, 1, dir.resolve("fail"));
+        List<ProcessHandle> during = new ArrayList<>();
+        Demo.StepFailure f = assertThrows(Demo.StepFailure.class, () -> Demo.run(o, new PrintWriter(new StringWriter()), false, k -> {
+            if (k == 3) {
+                during.addAll(demoControllers());
+                throw new IllegalStateException("injected failure");
+            }
+        }));
+        assertEquals(3, f.step);
+        assertTrue(f.getMessage().contains("injected failure"), f.getMessage());
+        assertEquals(1, during.size(), "the controller ran while the demo did");
+        assertFalse(during.get(0).isAlive(), "and was ended after the failure");
     }
 
     @Test
