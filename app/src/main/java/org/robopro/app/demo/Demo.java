@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.identification.Calibrator;
@@ -257,13 +258,16 @@ public final class Demo {
 
             Pose toolCal = Pose.of(weld.flangeTtcp.rotationRowMajor(), cal.flangeTtool().x(), cal.flangeTtool().y(), cal.flangeTtool().z());
             Compensator geometric = new Compensator(nominal, cal.calibrated(), weld.flangeTtcp, toolCal);
-            RapidModule calModule = compensate(weld, nominal, geometric, "DemoWeldCal", out);
+            RapidModule calModule = compensate(weld, nominal, t -> geometric, "DemoWeldCal", out);
             List<Vec3> calReadings = runAndMeasure(inv, calModule, "DemoWeldCal", targetIdx);
             Run calibratedRun = evaluate("geometric calibration", "DemoWeldCal", calReadings, targets, cal.instrumentTbase());
 
             Run diagnosedRun = null;
             if (diag.available()) {
-                RapidModule diagModule = compensate(weld, nominal, diag.compensator(nominal, weld.flangeTtcp), "DemoWeldDiag", out);
+                // The extended model predicts each target under the approach directions the program reaches it with.
+                List<int[]> approach = approachDirections(check, moves);
+                RapidModule diagModule = compensate(weld, nominal, t -> diag.compensator(nominal, weld.flangeTtcp,
+                        new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)), "DemoWeldDiag", out);
                 List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
                 diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
             }
@@ -383,11 +387,12 @@ public final class Demo {
     }
 
     /** Compensates every target of the program (Fig. 5) and writes the module. */
-    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, Compensator c, String name, Path out) throws IOException {
+    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, java.util.function.Function<Pose, Compensator> forTarget,
+                                   String name, Path out) throws IOException {
         ProgramCompensation.TargetCompensator tc = (target, tool, seed) -> {
             if (tool.distanceTo(weld.flangeTtcp) > 1e-9 || tool.angleTo(weld.flangeTtcp) > 1e-9)
                 throw new IllegalStateException("the demo compensates only the torch; got another tool " + tool);
-            Compensator.Result r = c.compensate(target, seed);
+            Compensator.Result r = forTarget.apply(target).compensate(target, seed);
             return new ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
                     r.status() == Compensator.Status.CONVERGED, r.status().name().toLowerCase(Locale.ROOT).replace('_', ' '));
         };
@@ -401,6 +406,31 @@ public final class Demo {
         AtomicFiles.writeString(out.resolve(name + ".mod"), text, true);
         con.line("compensated %d targets (largest shift %.2f mm) -> %s.mod", oc.corrections().size(), Units.mToMm(maxShift), name);
         return oc.module();
+    }
+
+    /**
+     * Sign of each joint's last motion on arrival at each target (robtarget moves in program
+     * order), from the path check's joint values at the end of every move; 0 before a joint has moved.
+     */
+    static List<int[]> approachDirections(CheckReport check, List<MoveStep> moves) {
+        List<int[]> out = new ArrayList<>();
+        double[] prev = null;
+        int[] dir = null;
+        for (int i = 0; i < moves.size(); i++) {
+            double[] q = check.steps().get(i).qEnd();
+            if (dir == null) dir = new int[q.length];
+            if (prev != null)
+                for (int j = 0; j < q.length; j++) if (Math.abs(q[j] - prev[j]) > 1e-9) dir[j] = q[j] > prev[j] ? 1 : -1;
+            prev = q;
+            if (moves.get(i).kind() != Move.Kind.MOVE_ABS_J) out.add(dir.clone());
+        }
+        return out;
+    }
+
+    private static int indexOf(List<Pose> targets, Pose t) {
+        for (int k = 0; k < targets.size(); k++)
+            if (targets.get(k).distanceTo(t) < 1e-9 && targets.get(k).angleTo(t) < 1e-9) return k;
+        throw new IllegalStateException("not a target of the program: " + t);
     }
 
     /** Target errors: tracker readings taken to the base frame by a registration, against the programmed TCP positions. */

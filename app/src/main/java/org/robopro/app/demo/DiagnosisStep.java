@@ -41,7 +41,7 @@ final class DiagnosisStep {
                     + "the program was not compensated for one.</p>\n";
         }
 
-        Compensator compensator(KinematicModel nominal, Pose flangeTtcp) {
+        Compensator compensator(KinematicModel nominal, Pose flangeTtcp, org.robopro.calibration.PoseConditions conditions) {
             throw new IllegalStateException("no diagnosis in this build");
         }
     }
