@@ -89,7 +89,7 @@ final class DemoReport {
         per.add(series("geometric calibration", r.calibrated(), "#1f77b4"));
         if (r.diagnosed() != null) per.add(series("diagnosed effect", r.diagnosed(), "#2ca02c"));
         h.append(Svg.plot("Error at each target of the welding program (log scale)", "target (program order)",
-                "log10 error (mm)", per, true)).append("\n<p>Targets: ");
+                "error (mm, log scale)", per, true)).append("\n<p>Targets: ");
         for (int i = 0; i < targetNames.size(); i++) h.append(i == 0 ? "" : ", ").append(i + 1).append(" ").append(Html.esc(targetNames.get(i)));
         h.append(".</p>\n");
 
