@@ -24,7 +24,7 @@ class LinkCommandTest {
     @BeforeEach
     void start() throws Exception {
         sim = ControllerSim.start(new ControllerSim.Config("127.0.0.1:0", null, 115200, "irb2000", 2, 0.5, List.of(), 0.0,
-                dir.resolve("port"), false, 0));
+                null, 0, dir.resolve("port"), false, 0));
         where = "127.0.0.1:" + Files.readString(dir.resolve("port")).strip();
     }
 
