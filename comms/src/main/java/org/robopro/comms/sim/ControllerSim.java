@@ -122,6 +122,9 @@ public final class ControllerSim implements AutoCloseable {
 
     public SimulatedController controller() { return controller; }
 
+    /** The bound TCP motion port, or -1 for a serial simulator. */
+    public int port() { return server instanceof TcpControllerServer t ? t.port() : -1; }
+
     /** Where it listens, for the user. */
     public String where() { return where; }
 
