@@ -225,4 +225,18 @@ class SimulatedControllerTest {
         assertEquals(0, c.motionsExecuted());
         assertEquals(ControllerStatus.State.IDLE, c.readStatus().state());
     }
+
+    @Test
+    void startProgram_controlFlowLoop_runsEveryIterationsMove() throws Exception {
+        SimulatedController c = controller(0);
+        String prog = "MODULE loop\n  CONST robtarget p1 := [[800,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n"
+                + "  PROC main()\n    FOR i FROM 1 TO 3 DO\n      MoveL Offs(p1, 50 * i, 0, 0), v200, fine, tool0;\n    ENDFOR\n"
+                + "    TPWrite \"done\";\n  ENDPROC\nENDMODULE\n";
+        c.downloadProgram("loop", prog.getBytes(StandardCharsets.UTF_8));
+        c.startProgram(0, "loop");
+        c.awaitIdle(Duration.ofSeconds(10));
+        assertEquals(ControllerStatus.State.IDLE, c.readStatus().state(), String.valueOf(c.readStatus()));
+        assertEquals(3, c.motionsExecuted());
+        assertEquals(0, c.readPose().distanceTo(Pose.translation(0.95, 0, 1.0)), 1e-9);
+    }
 }
