@@ -17,9 +17,7 @@ import org.robopro.calibration.compensation.Compensator;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.identification.Calibrator;
 import org.robopro.calibration.measurement.Measurement;
-import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
-import org.robopro.calibration.measurement.MeasurementWriter;
 import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.calibration.simulation.PoseSampler;
 import org.robopro.comms.CommandInvoker;
@@ -338,21 +336,11 @@ public final class Demo {
             throws IOException {
         List<double[]> poses = new PoseSampler(nominal).sample(o.poses(), new Random(o.seed() * 31 + 7));
         inv.execute(Commands.setWorkObject(Pose.IDENTITY));
-        inv.execute(Commands.setTool(weld.flangeTtcp)); // the tracker's reflector sits at the torch tip
-        List<MeasurementCampaign.Row> rows = new ArrayList<>();
+        inv.execute(Commands.setTool(weld.flangeTtcp));
         Console.Bar bar = con.bar("poses measured", poses.size());
         long t0 = System.nanoTime();
-        for (int from = 0; from < poses.size(); from += 10) {
-            List<double[]> chunk = poses.subList(from, Math.min(poses.size(), from + 10));
-            for (MeasurementCampaign.Row r : MeasurementCampaign.run(inv, chunk))
-                rows.add(new MeasurementCampaign.Row(Integer.toString(rows.size() + 1), r.q(), r.measured(), r.direction()));
-            bar.update(rows.size());
-        }
-        // What the link recorded (comms' campaign file) is read back like any user file, then saved with a train/validate split.
-        Path raw = work.resolve("campaign.csv");
-        MeasurementCampaign.write(raw, desc.name(), String.format(Locale.ROOT,
-                "simulated laser tracker at the torch tip, sigma %.3f mm", NOISE_MM), rows, true);
-        MeasurementSet all = MeasurementReader.read(raw, desc);
+        MeasurementSet all = MeasurementCampaign.run(inv, poses, desc.name(), String.format(Locale.ROOT,
+                "simulated laser tracker, reflector at the torch tip, sigma %.3f mm", NOISE_MM), bar::update);
         List<Measurement> split = new ArrayList<>(), train = new ArrayList<>(), validate = new ArrayList<>();
         for (int i = 0; i < all.size(); i++) {
             boolean v = i % 5 == 4; // every 5th pose validates
@@ -361,8 +349,8 @@ public final class Demo {
             (v ? validate : train).add(m);
         }
         List<JointType> types = desc.joints().stream().map(j -> j.type()).toList();
-        MeasurementWriter.write(all.withRows(split), types, o.out().resolve("measurements.csv"), true);
-        bar.done("campaign: %d poses moved to and measured through the link in %.1f s -> measurements.csv", rows.size(),
+        MeasurementCampaign.write(all.withRows(split), types, o.out().resolve("measurements.csv"), true);
+        bar.done("campaign: %d poses moved to and measured through the link in %.1f s -> measurements.csv", all.size(),
                 (System.nanoTime() - t0) / 1e9);
         return new MeasurementSet[] {all.withRows(train), all.withRows(validate)};
     }

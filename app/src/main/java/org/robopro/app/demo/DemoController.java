@@ -23,6 +23,8 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.AtomicFiles;
+import org.robopro.models.CellFile;
+import org.robopro.models.Vec3;
 import org.robopro.models.JointDescription;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
@@ -60,6 +62,9 @@ public final class DemoController {
             this.ik = InverseKinematics.of(nominal);
         }
 
+        /** The physical robot (tests compare it with the nominal model). */
+        TrueRobot truth() { return truth; }
+
         @Override public String name() { return description.name(); }
         @Override public int dof() { return nominal.dof(); }
         @Override public double[] lowerLimits() { return description.joints().stream().mapToDouble(JointDescription::min).toArray(); }
@@ -68,31 +73,31 @@ public final class DemoController {
         @Override public Pose nominalFlange(double[] q) { return nominal.flange(q); }
 
         @Override
-        public Pose trueFlange(double[] q, int[] lastDirection) {
-            // The effects see the approach directions the controller tracked; no temperature or payload change in the demo cell.
-            return truth.flange(q, new PoseConditions(lastDirection, Double.NaN, Double.NaN, Double.NaN));
-        }
-
-        @Override
         public Optional<double[]> inverse(Pose baseTflange, double[] qSeed) {
             return ik.solveNear(baseTflange, qSeed).map(IkSolution::q);
         }
+
+        /** The tracker sees the reflector at the torch tip under the conditions the controller reports (approach directions, payload). */
+        @Override
+        public Vec3 measure(double[] q, PoseConditions c, Random rng) { return truth.measure(q, c, rng); }
     }
+
+    /** Where the tracker stands: 3 m in front of the robot, turned to face it (unknown to the calibration). */
+    static final Pose TRACKER_T_BASE = Pose.rotZ(Math.toRadians(160)).times(Pose.translation(-3.0, 0.4, -0.2));
 
     /**
      * Builds the true robot of a seed: Gaussian errors on every Table-1 parameter scaled to an
-     * RMS flange error drawn uniformly in 5-15 mm, plus the concealed effect.
+     * RMS flange error drawn uniformly in 5-15 mm, plus the concealed effect; the tracker's
+     * reflector sits at {@code flangeTreflector} (the torch tip) and the tracker at {@link #TRACKER_T_BASE}.
      */
-    static Robot robot(RobotDescription d, long seed, String effect, double noiseM, Truth[] truthOut) {
+    static Robot robot(RobotDescription d, Pose flangeTreflector, long seed, String effect, double noiseM, Truth[] truthOut) {
         KinematicModel nominal = KinematicModel.build(d);
         Random rng = new Random(seed * 1_000_003L + 11);
         double errorM = Units.mmToM(5 + 10 * rng.nextDouble());
         List<double[]> sizing = new PoseSampler(nominal).sample(100, new Random(seed));
         KinematicModel trueModel = CampaignSimulator.perturb(nominal, errorM, sizing, rng);
         ConcealedEffect.Drawn drawn = ConcealedEffect.draw(effect, nominal, d, rng);
-        // The tracker measures the controller's current tool origin, so the TrueRobot's own tool
-        // and instrument frame are identities; the controller applies both.
-        TrueRobot truth = new TrueRobot(trueModel, Pose.IDENTITY, Pose.IDENTITY, 0, 0,
+        TrueRobot truth = new TrueRobot(trueModel, flangeTreflector, TRACKER_T_BASE, noiseM, 0,
                 drawn == null ? List.of() : List.of(drawn.truth()));
         if (truthOut != null) truthOut[0] = new Truth(CampaignSimulator.flangeRms(nominal, trueModel, sizing), drawn, noiseM);
         return new Robot(d, nominal, truth);
@@ -138,9 +143,8 @@ public final class DemoController {
     static TcpControllerServer start(long seed, String effect, double noiseM, Path portFile, Path truthFile) throws IOException {
         RobotDescription d = RobotLibrary.shipped("irb2000");
         Truth[] truth = new Truth[1];
-        Robot robot = robot(d, seed, effect, noiseM, truth);
-        SimulatedController controller = new SimulatedController(robot,
-                SimulatedController.Settings.defaults(seed).withNoise(noiseM));
+        Robot robot = robot(d, WeldProgram.torch(CellFile.shipped("irb2000-welding")), seed, effect, noiseM, truth);
+        SimulatedController controller = new SimulatedController(robot, SimulatedController.Settings.defaults(seed));
         TcpControllerServer server = new TcpControllerServer(new ProtocolHandler(controller), InetAddress.getLoopbackAddress(), 0, null);
         if (truthFile != null) AtomicFiles.writeString(truthFile, truthJson(truth[0]), true);
         // The port file last: its appearance tells the demo the controller is ready.

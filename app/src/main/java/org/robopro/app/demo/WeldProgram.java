@@ -65,6 +65,12 @@ final class WeldProgram {
                 .orElseThrow(() -> new IllegalArgumentException("cell " + cell.name() + " has no object '" + name + "'"));
     }
 
+    /** The cell's welding torch, flangeTtcp. */
+    static Pose torch(CellDescription cell) {
+        return pose(cell.tools().stream().filter(t -> t.name().equals("torch")).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("cell " + cell.name() + " has no tool 'torch'")).flangeTtcp());
+    }
+
     /** Teaches the program in {@code cell} (the shipped welding cell: torch, wobj_table, base_plate, web_plate). */
     static WeldProgram teach(CellDescription cell, KinematicModel nominal, int passes) {
         ToolDescription td = cell.tools().stream().filter(t -> t.name().equals("torch")).findFirst()
