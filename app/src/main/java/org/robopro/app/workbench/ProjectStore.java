@@ -97,6 +97,7 @@ public final class ProjectStore {
             for (double v : t.qTaught()) j.add(round(Math.toDegrees(v), 1e-6));
             ArrayNode c = n.putArray("conf");
             c.add(t.conf().cf1()).add(t.conf().cf4()).add(t.conf().cf6()).add(t.conf().cfx());
+            if (!t.wobj().equals(Target.WOBJ0)) n.put("wobj", t.wobj());
         }
         ArrayNode programs = root.putArray("programs");
         ObjectNode main = programs.addObject();
@@ -106,6 +107,7 @@ public final class ProjectStore {
             ObjectNode n = ins.addObject();
             n.put("type", i.type().rapid());
             n.put("target", i.target());
+            if (i.via() != null) n.put("via", i.via());
             n.put("speed_mm_s", i.speedMmPerS());
             n.put("zone_mm", i.zoneMm());
         }
@@ -335,25 +337,39 @@ public final class ProjectStore {
                 if (targets.stream().anyMatch(t -> t.name().equals(name))) throw bad(p + "/name", "duplicate target " + name);
                 double[] qd = numbers(p + "/joints_deg", robot.dof());
                 double[] c = numbers(p + "/conf", 4);
+                String wobj = Target.WOBJ0;
+                if (!at(p + "/wobj").isMissingNode()) {
+                    wobj = text(p + "/wobj");
+                    String w = wobj;
+                    if (!w.equals(Target.WOBJ0) && wobjs.stream().noneMatch(x -> x.name().equals(w)))
+                        throw bad(p + "/wobj", "no work object named " + w);
+                }
                 targets.add(new Target(name, pose(p + "/pose"), Units.degToRad(qd),
-                        new ConfData((int) c[0], (int) c[1], (int) c[2], (int) c[3])));
+                        new ConfData((int) c[0], (int) c[1], (int) c[2], (int) c[3]), wobj));
             }
             List<Instruction> program = new ArrayList<>();
             if (size("/programs") > 0) {
                 for (int i = 0; i < size("/programs/0/instructions"); i++) {
                     String p = "/programs/0/instructions/" + i;
                     String type = text(p + "/type");
-                    Instruction.Type t = switch (type.toLowerCase(Locale.ROOT)) {
-                        case "movej" -> Instruction.Type.MOVEJ;
-                        case "movel" -> Instruction.Type.MOVEL;
-                        default -> throw bad(p + "/type", "expected MoveJ or MoveL, got " + type);
-                    };
+                    Instruction.Type t;
+                    try {
+                        t = Instruction.Type.ofRapid(type);
+                    } catch (IllegalArgumentException e) {
+                        throw bad(p + "/type", e.getMessage());
+                    }
                     String target = text(p + "/target");
                     if (targets.stream().noneMatch(x -> x.name().equals(target)))
                         throw bad(p + "/target", "no target named " + target);
+                    String via = null;
+                    if (t == Instruction.Type.MOVEC) {
+                        via = text(p + "/via");
+                        String viaName = via;
+                        if (targets.stream().noneMatch(x -> x.name().equals(viaName))) throw bad(p + "/via", "no target named " + via);
+                    } else if (!at(p + "/via").isMissingNode()) throw bad(p + "/via", t.rapid() + " takes no circle point");
                     double zone = number(p + "/zone_mm");
                     if (zone < 0) throw bad(p + "/zone_mm", "must be >= 0");
-                    program.add(new Instruction(t, target, positive(p + "/speed_mm_s"), zone));
+                    program.add(new Instruction(t, target, positive(p + "/speed_mm_s"), zone, via));
                 }
             }
             JsonNode cal = at("/calibration/reference");

@@ -23,9 +23,9 @@ import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.app.workbench.model.Instruction;
-import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.ProgramModule;
+import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.ProjectData;
-import org.robopro.app.workbench.model.RapidExport;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.app.workbench.scene.CameraState;
@@ -34,6 +34,11 @@ import org.robopro.app.workbench.ui.WorkbenchFrame;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.Vec3;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.rapid.RapidExport;
+import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.rapid.RapidWriter;
 
 /**
  * The workbench: model, 3D view and Swing shell, and the operations the menus, buttons and
@@ -196,39 +201,72 @@ public final class Workbench {
 
     // ---- teaching and programs ---------------------------------------------------------------
 
-    /** Teaches the current TCP pose as a new target and returns it. */
+    /**
+     * Teaches the current TCP pose as a new target in the active work object and returns it
+     * (the programs module's {@code Teach.taught}: forward kinematics and confdata of the joints).
+     */
     public Target teach() {
         String name = model.newTargetName();
         double[] q = model.q();
-        Target t = new Target(name, model.worldTtcp(), q, model.kinematics().confOf(q));
+        Target t = new Target(name, model.worldTtcp(), q, model.kinematics().confOf(q), model.activeWorkObject());
         model.putTarget(t);
-        log(String.format(java.util.Locale.ROOT, "Taught %s at (%.1f, %.1f, %.1f) mm", name,
-                t.worldTtcp().x() * 1000, t.worldTtcp().y() * 1000, t.worldTtcp().z() * 1000));
+        log(String.format(java.util.Locale.ROOT, "Taught %s at (%.1f, %.1f, %.1f) mm in %s", name,
+                t.worldTtcp().x() * 1000, t.worldTtcp().y() * 1000, t.worldTtcp().z() * 1000, t.wobj()));
         return t;
     }
 
     public void addMove(Instruction.Type type, String target, double speedMmPerS, double zoneMm) {
-        model.addInstruction(new Instruction(type, target, speedMmPerS, zoneMm));
+        addMove(type, target, null, speedMmPerS, zoneMm);
     }
 
-    /** Checks the program and logs each failing instruction. */
-    public ProgramPlan checkProgram() {
-        ProgramPlan p = ProgramPlan.of(model);
-        for (ProgramPlan.Step s : p.steps())
-            if (!s.ok()) log("Check: instruction " + (s.index() + 1) + " (" + s.instruction() + "): " + s.message());
-        log(p.ok() ? String.format(java.util.Locale.ROOT, "Check: program OK, %d instructions, %.2f s",
-                p.steps().size(), p.duration()) : "Check: program has problems");
+    /** Appends a move; {@code via} is MoveC's circle point (null for MoveJ/MoveL). */
+    public void addMove(Instruction.Type type, String target, String via, double speedMmPerS, double zoneMm) {
+        model.addInstruction(new Instruction(type, target, speedMmPerS, zoneMm, via));
+    }
+
+    /** Checks the program with the programs module's path checker and logs every problem by instruction and target. */
+    public ProgramRun checkProgram() {
+        ProgramRun p = model.programRun();
+        for (String line : p.problemLines()) log("Check: " + line);
+        if (p.report() != null) log(String.format(java.util.Locale.ROOT, "Check: %s, %d instructions, cycle time %.2f s (%s)",
+                p.ok() ? "program OK" : "program has errors", p.steps().size(), p.report().cycleTimeS(), p.report().assumptions()));
+        else log(p.ok() ? "Check: program OK (reachability only: no kinematics-module model)" : "Check: program has errors");
         return p;
     }
 
-    /** Writes the program as a RAPID module (refuses to overwrite unless asked). */
-    public String exportRapid(Path file, boolean overwrite) throws IOException {
+    /** A RAPID module name from a file name ("weld-1.mod" -> "weld_1"). */
+    static String moduleName(Path file) {
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "").replaceAll("[^A-Za-z0-9_]", "_");
-        if (name.isEmpty() || !Character.isLetter(name.charAt(0))) name = "M" + name;
-        String text = RapidExport.module(name, model);
-        AtomicFiles.writeString(file, text, overwrite);
-        log("Exported RAPID module " + name + " to " + file);
-        return text;
+        return name.isEmpty() || !Character.isLetter(name.charAt(0)) ? "M" + name : name;
+    }
+
+    /**
+     * Writes the program as a RAPID module with the programs module's writer: targets in their
+     * work objects, confdata of the IK solutions used (refuses to overwrite unless asked).
+     */
+    public String exportRapid(Path file, boolean overwrite) throws IOException {
+        RapidModule module = ProgramModule.toRapid(model, moduleName(file));
+        RapidExport ex = RapidWriter.export(module);
+        AtomicFiles.writeString(file, ex.text(), overwrite);
+        for (RapidExport.Rename r : ex.renames()) log("RAPID export renamed " + r);
+        log("Exported RAPID module " + module.name() + " to " + file);
+        return ex.text();
+    }
+
+    /**
+     * Reads a RAPID module (programs module's parser and interpreter) and replaces the targets
+     * and program with its {@code main}. A file with errors throws an InputException naming the
+     * line and column, and the open program is left as it was.
+     */
+    public ProgramModule.Imported importRapid(Path file) throws IOException {
+        String text = Files.readString(file);
+        ParsedModule parsed = RapidParser.parseDetailed(text, file.toString());
+        ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
+        model.replaceProgram(imp);
+        for (String n : imp.notes()) log("RAPID import: " + n);
+        log(String.format(java.util.Locale.ROOT, "Imported RAPID module %s from %s: %d targets, %d instructions",
+                imp.moduleName(), file, imp.targets().size(), imp.program().size()));
+        return imp;
     }
 
     // ---- cell layout -------------------------------------------------------------------------

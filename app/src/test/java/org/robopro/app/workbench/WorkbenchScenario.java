@@ -7,7 +7,7 @@ import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.atomic.AtomicReference;
 import org.robopro.app.workbench.model.Instruction;
-import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.InputException;
@@ -91,7 +91,7 @@ public final class WorkbenchScenario {
             }
         });
         r.setProperty("program", String.join(";", wb.model().program().stream().map(Instruction::toString).toList()));
-        AtomicReference<ProgramPlan> plan = new AtomicReference<>();
+        AtomicReference<ProgramRun> plan = new AtomicReference<>();
         Workbench.onEdt(() -> plan.set(frame.programPanel().check()));
         r.setProperty("checkOk", String.valueOf(plan.get().ok()));
         r.setProperty("duration", String.valueOf(plan.get().duration()));
@@ -108,6 +108,10 @@ public final class WorkbenchScenario {
             plan.set(frame.programPanel().check());
         });
         r.setProperty("checkWithFarOk", String.valueOf(plan.get().ok()));
+        r.setProperty("farProblem", plan.get().steps().get(4).problems().stream()
+                .filter(p -> p.severity() == org.robopro.programs.check.Problem.Severity.ERROR)
+                .map(p -> p.kind() + " " + p.target()).findFirst().orElse(""));
+        r.setProperty("badTargets", String.join(",", new java.util.TreeSet<>(plan.get().badTargets())));
         r.setProperty("farStatus", wb.model().status(far).name());
         Workbench.onEdt(() -> {
             frame.programPanel().showTime(plan.get().duration() * 0.4);
@@ -134,6 +138,22 @@ public final class WorkbenchScenario {
         } catch (IOException e) {
             r.setProperty("rapidOverwriteRefused", "true");
         }
+
+        // Import RAPID: the exported module comes back as the same program; a broken file is
+        // reported with its line and column and changes nothing.
+        String programBefore = String.join(";", wb.model().program().stream().map(Instruction::toString).toList());
+        AtomicReference<Boolean> imported = new AtomicReference<>();
+        Workbench.onEdt(() -> imported.set(frame.importRapid(mod)));
+        r.setProperty("importOk", String.valueOf(imported.get()));
+        r.setProperty("importSameProgram", String.valueOf(programBefore.equals(
+                String.join(";", wb.model().program().stream().map(Instruction::toString).toList()))));
+        r.setProperty("importTargets", String.join(",", wb.model().targets().stream().map(Target::name).toList()));
+        Path broken = out.resolve("Broken.mod");
+        Files.writeString(broken, Files.readString(mod).replaceFirst("MoveL p20,", "MoveL p20 v500,"));
+        Workbench.onEdt(() -> imported.set(frame.importRapid(broken)));
+        r.setProperty("brokenImportOk", String.valueOf(imported.get()));
+        r.setProperty("brokenImportError", String.valueOf(frame.lastError()));
+        r.setProperty("afterBrokenProgram", String.valueOf(wb.model().program().size()));
 
         // Cell layout: add and move a table, then save, reopen, and try a damaged copy.
         Workbench.onEdt(() -> {

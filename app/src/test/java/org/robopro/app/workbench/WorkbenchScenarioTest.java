@@ -117,12 +117,21 @@ class WorkbenchScenarioTest {
         assertTrue(Double.parseDouble(r.getProperty("duration")) > 0.3, r.getProperty("duration"));
         assertEquals("false", r.getProperty("checkWithFarOk"));
         assertEquals("UNREACHABLE", r.getProperty("farStatus"));
+        assertEquals("UNREACHABLE p99", r.getProperty("farProblem"), "the path checker names the instruction's target");
+        assertEquals("p99", r.getProperty("badTargets"));
         assertEquals("true", r.getProperty("rapidOverwriteRefused"));
         String rapid = Files.readString(Path.of(r.getProperty("rapidFile")));
         assertTrue(rapid.startsWith("MODULE Weld"), rapid);
         for (String s : new String[] {"CONST robtarget p10:=[[", "CONST robtarget p20", "CONST robtarget p30",
-                "MoveJ p10, v500, z10, torch\\WObj:=wobj0;", "MoveL p30, v500, z10, torch", "PERS tooldata torch:=[TRUE,[[110.00,0.00,340.00]", "ENDMODULE"})
+                "MoveJ p10, v500, z10, torch;", "MoveL p30, v500, z10, torch;", "PERS tooldata torch:=[TRUE,[[110,0,340]", "ENDMODULE"})
             assertTrue(rapid.contains(s), "RAPID lacks " + s + ":\n" + rapid);
+        assertEquals("true", r.getProperty("importOk"));
+        assertEquals("true", r.getProperty("importSameProgram"), "export then import must give the same program");
+        assertEquals("p10,p20,p30", r.getProperty("importTargets"));
+        assertEquals("false", r.getProperty("brokenImportOk"));
+        assertTrue(r.getProperty("brokenImportError").contains("Broken.mod") && r.getProperty("brokenImportError").contains("line "),
+                r.getProperty("brokenImportError"));
+        assertEquals("4", r.getProperty("afterBrokenProgram"), "a broken import leaves the program as it was");
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
         assertEquals("3", r.getProperty("reopenedTargets"));

@@ -66,6 +66,7 @@ public final class RobotState extends BaseAppState {
             jointVersion = -1;
         }
         Shapes.apply(model.worldTbase(), robotRoot);
+        robotRoot.setCullHint(model.preview() != null ? Spatial.CullHint.Always : Spatial.CullHint.Inherit);
         long jv = model.jointVersion();
         if (jv != jointVersion) {
             jointVersion = jv;

@@ -38,6 +38,7 @@ public final class WorkbenchApp extends SimpleApplication {
     private volatile AwtPanel panel;
     private final Node world = new Node("world");
     private final CameraState cameraState = new CameraState();
+    private volatile PreviewState previewState;
     private PathState pathState;
     private RobotState robotState;
     private volatile double fps;
@@ -81,8 +82,9 @@ public final class WorkbenchApp extends SimpleApplication {
             return robotFile.toAbsolutePath().getParent().resolve(path);
         });
         pathState = new PathState(model, world);
+        previewState = new PreviewState(model, world);
         stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
-                pathState, cameraState, new SelectionState(model, world, rootNode));
+                pathState, previewState, cameraState, new SelectionState(model, world, rootNode));
         windowStartNanos = System.nanoTime();
     }
 
@@ -143,6 +145,7 @@ public final class WorkbenchApp extends SimpleApplication {
     public Throwable error() { return error.get(); }
     public CameraState camera() { return cameraState; }
     public PathState pathState() { return pathState; }
+    public PreviewState previewState() { return previewState; }
     public RobotState robotState() { return robotState; }
     public Node world() { return world; }
 

@@ -69,6 +69,7 @@ public final class WorkbenchFrame extends JFrame {
     private volatile boolean robotChanged;
     private volatile boolean structureChanged = true;
     private volatile boolean selectionChanged;
+    private volatile String lastError;
     private JSplitPane mainSplit;
     private JSplitPane midSplit;
 
@@ -133,6 +134,37 @@ public final class WorkbenchFrame extends JFrame {
         return a;
     }
 
+    /** The message of the last error dialog (tests read it; under robopro.test no modal dialog opens). */
+    public String lastError() { return lastError; }
+
+    /** Shows an error: a modal dialog for a user, only the log and {@link #lastError()} under tests. */
+    public void showError(String title, String message) {
+        lastError = message;
+        wb.log(title + ": " + message);
+        if (isShowing() && System.getenv("robopro.test") == null)
+            JOptionPane.showMessageDialog(this, message, title, JOptionPane.ERROR_MESSAGE);
+    }
+
+    /**
+     * File > Import RAPID: replaces the program with the module's main; a file with errors is
+     * shown in a dialog with its line and column and changes nothing.
+     */
+    public boolean importRapid(Path file) {
+        try {
+            var imp = wb.importRapid(file);
+            if (!imp.notes().isEmpty() && isShowing() && System.getenv("robopro.test") == null)
+                JOptionPane.showMessageDialog(this, String.join("\n", imp.notes()), "RAPID import", JOptionPane.INFORMATION_MESSAGE);
+            return true;
+        } catch (org.robopro.models.InputException e) {
+            showError("RAPID import failed", e.file() + "\nline " + e.line() + ", column " + e.column()
+                    + (e.field() == null || e.field().isEmpty() ? "" : " (" + e.field() + ")") + ":\n" + e.problem());
+            return false;
+        } catch (IOException e) {
+            showError("RAPID import failed", "cannot read " + file + ": " + e.getMessage());
+            return false;
+        }
+    }
+
     public JogPanel jogPanel() { return jog; }
     public ProgramPanel programPanel() { return program; }
     public CellTree cellTree() { return tree; }
@@ -169,9 +201,7 @@ public final class WorkbenchFrame extends JFrame {
         }
         selectionChanged = false;
         structureChanged = false;
-        var st = new java.util.HashMap<String, org.robopro.app.workbench.model.TargetStatus>();
-        for (var t : wb.model().targets()) st.put(t.name(), wb.model().status(t));
-        tree.rebuild(st);
+        tree.rebuild(wb.model().statuses());
         properties.refresh();
         program.refresh();
         updateTitle();
@@ -198,8 +228,7 @@ public final class WorkbenchFrame extends JFrame {
                 try {
                     body.accept(e);
                 } catch (RuntimeException ex) {
-                    wb.log(name + " failed: " + ex.getMessage());
-                    if (isShowing()) JOptionPane.showMessageDialog(WorkbenchFrame.this, ex.getMessage(), name, JOptionPane.ERROR_MESSAGE);
+                    showError(name + " failed", String.valueOf(ex.getMessage()));
                 }
             }
         };
@@ -252,6 +281,10 @@ public final class WorkbenchFrame extends JFrame {
             Path p = choose(true, ".mod");
             if (p != null) io(() -> wb.exportRapid(p, true));
         });
+        def("import-rapid", "Import RAPID...", "ctrl I", e -> {
+            Path p = choose(false, null);
+            if (p != null) importRapid(p);
+        });
         def("screenshot", "Save screenshot...", null, e -> {
             Path p = choose(true, ".png");
             if (p != null) new Thread(() -> {
@@ -286,6 +319,7 @@ public final class WorkbenchFrame extends JFrame {
         def("teach", "Teach target", "ctrl T", e -> wb.teach());
         def("add-movej", "Add MoveJ", null, e -> program.addMove(Instruction.Type.MOVEJ));
         def("add-movel", "Add MoveL", null, e -> program.addMove(Instruction.Type.MOVEL));
+        def("add-movec", "Add MoveC (through the target taught before)", null, e -> program.addMove(Instruction.Type.MOVEC));
         def("check", "Check program", "ctrl K", e -> program.check());
         disabled("connect", "Connect to controller...", NEEDS_COMMS);
         disabled("download", "Download program", NEEDS_COMMS);
@@ -316,10 +350,10 @@ public final class WorkbenchFrame extends JFrame {
 
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
-        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
         bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
         bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
-        bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", null, "check", "export-rapid"));
+        bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", "add-movec", null, "check", "import-rapid", "export-rapid"));
         bar.add(menu("Controller", KeyEvent.VK_R, "connect", "download", "upload", "run", "read-position"));
         bar.add(menu("Calibration", KeyEvent.VK_A, "calibration"));
         bar.add(menu("Help", KeyEvent.VK_H, "about"));
