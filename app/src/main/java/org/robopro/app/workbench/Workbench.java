@@ -359,6 +359,18 @@ public final class Workbench {
             Graphics2D pg = (Graphics2D) g.create(p.x, p.y, panel.getWidth(), panel.getHeight());
             panel.paint(pg);
             pg.dispose();
+            // Open dialogs (model wizard, calibration) are drawn where they stand over the window.
+            for (java.awt.Window w : frame.getOwnedWindows()) {
+                if (!w.isShowing() || !(w instanceof javax.swing.RootPaneContainer rc)) continue;
+                Point o = w.getLocationOnScreen(), f = root.getLocationOnScreen();
+                Graphics2D dg = (Graphics2D) g.create(o.x - f.x, o.y - f.y, w.getWidth(), w.getHeight());
+                dg.setColor(java.awt.Color.DARK_GRAY);
+                dg.fillRect(0, 0, w.getWidth(), w.getHeight());
+                rc.getRootPane().paintAll(dg);
+                dg.setColor(java.awt.Color.GRAY);
+                dg.drawRect(0, 0, rc.getRootPane().getWidth() - 1, rc.getRootPane().getHeight() - 1);
+                dg.dispose();
+            }
             g.dispose();
             out.set(img);
         });

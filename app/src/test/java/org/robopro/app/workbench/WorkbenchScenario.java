@@ -184,5 +184,74 @@ public final class WorkbenchScenario {
         r.setProperty("afterDamagedTargets", String.valueOf(wb.model().targets().size()));
         r.setProperty("projectFile", wb.projectFile().map(Path::toString).orElse(""));
         r.setProperty("fps", String.valueOf(wb.app().fps()));
+        wizard(wb, out, r);
+    }
+
+    /**
+     * The robot model wizard: start from the IRB-2000, break and fix a joint axis (the error is
+     * shown, the model rebuilt), move joint 1, save the robot file (an existing file only after
+     * confirmation) and use the new robot in the cell.
+     */
+    static void wizard(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        AtomicReference<org.robopro.app.workbench.ui.RobotWizard> w = new AtomicReference<>();
+        Workbench.onEdt(() -> {
+            frame.action("robot-wizard").actionPerformed(null);
+            w.set(frame.openWizard());
+            w.get().setBounds(frame.getX() + 640, frame.getY() + 150, 630, 560);
+            w.get().startFrom("irb2000");
+            w.get().setRobotName("irb2000_long", "IRB 2000, longer upper arm");
+        });
+        var wiz = w.get();
+        r.setProperty("wizardJoints", String.valueOf(wiz.wizardModel().jointCount()));
+        r.setProperty("wizardFirstOk", String.valueOf(wiz.result().ok()));
+        Pose[] first = wiz.result().framesAtZero();
+        r.setProperty("wizardFlangeZ0", String.valueOf(first[first.length - 1].z()));
+        Workbench.onEdt(() -> {
+            wiz.setJointCell(2, "Axis x", "0");
+            wiz.setJointCell(2, "Axis y", "0");
+        });
+        r.setProperty("wizardBrokenError", wiz.errorText());
+        r.setProperty("wizardBrokenOk", String.valueOf(wiz.result().ok()));
+        Workbench.onEdt(() -> {
+            wiz.setJointCell(2, "Axis y", "1");
+            // Longer upper arm: joints 3.. and the flange 200 mm higher.
+            for (int j = 2; j < wiz.wizardModel().jointCount(); j++)
+                wiz.setJointCell(j, "Z mm", String.valueOf(wiz.wizardModel().joint(j).pointMm()[2] + 200));
+            wiz.setFlangeCell(0, 2, wiz.wizardModel().flangeOriginMm()[2] + 200);
+        });
+        r.setProperty("wizardFixedOk", String.valueOf(wiz.result().ok()));
+        r.setProperty("wizardError", wiz.errorText());
+        Pose[] frames = wiz.result().framesAtZero();
+        r.setProperty("wizardFlangeZ", String.valueOf(frames[frames.length - 1].z()));
+        r.setProperty("wizardPreviewFrames", String.valueOf(wb.model().preview() == null ? 0 : wb.model().preview().frames().length));
+        r.setProperty("wizardReportHasTable", String.valueOf(wiz.reportText().contains("identified parameters")));
+        wb.app().awaitFrames(3, 10_000);
+        r.setProperty("wizardPreviewDrawn", String.valueOf(wb.app().previewState().frameCount()));
+        wb.setView(org.robopro.app.workbench.scene.CameraState.View.SIDE);
+        wb.app().camera().focus(0.45, 0, 0.95);
+        wb.app().camera().zoom(0.75);
+        wb.screenshot(out.resolve("04-wizard.png"));
+        Path robotFile = out.resolve("irb2000_long.robot.json");
+        Files.deleteIfExists(robotFile);
+        AtomicReference<Boolean> saved = new AtomicReference<>();
+        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
+        r.setProperty("wizardSaved", String.valueOf(saved.get()));
+        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
+        r.setProperty("wizardOverwriteRefused", String.valueOf(!saved.get()));
+        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> true)));
+        r.setProperty("wizardOverwriteConfirmed", String.valueOf(saved.get()));
+        Workbench.onEdt(() -> saved.set(wiz.useInCell(() -> false)));
+        r.setProperty("wizardUsed", String.valueOf(saved.get()));
+        r.setProperty("cellRobot", wb.model().robot().name());
+        r.setProperty("cellRobotRef", wb.model().robotRef());
+        r.setProperty("previewAfterUse", String.valueOf(wb.model().preview() != null));
+        Workbench.onEdt(() -> wiz.dispose());
+        wb.setView(org.robopro.app.workbench.scene.CameraState.View.ISO);
+        Path project = out.resolve("long.robopro.json");
+        Files.deleteIfExists(project);
+        wb.save(project);
+        r.setProperty("reopenedRobot", ProjectStore.read(project).robot().name());
+        wb.screenshot(out.resolve("05-new-robot.png"));
     }
 }

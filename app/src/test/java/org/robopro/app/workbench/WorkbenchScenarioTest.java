@@ -143,6 +143,31 @@ class WorkbenchScenarioTest {
         assertEquals("3", r.getProperty("afterDamagedTargets"), "a damaged project must not disturb the open one");
         assertTrue(r.getProperty("projectFile").endsWith("cell.robopro.json"));
 
+        assertEquals("6", r.getProperty("wizardJoints"));
+        assertEquals("true", r.getProperty("wizardFirstOk"));
+        assertEquals("false", r.getProperty("wizardBrokenOk"));
+        assertTrue(r.getProperty("wizardBrokenError").contains("axis"), r.getProperty("wizardBrokenError"));
+        assertEquals("true", r.getProperty("wizardFixedOk"), r.getProperty("wizardError"));
+        assertEquals("", r.getProperty("wizardError"));
+        assertEquals(Double.parseDouble(r.getProperty("wizardFlangeZ0")) + 0.2, Double.parseDouble(r.getProperty("wizardFlangeZ")), 1e-9,
+                "the flange frame follows the typed flange origin");
+        assertEquals("8", r.getProperty("wizardPreviewFrames"), "base, six links, flange");
+        assertEquals("8", r.getProperty("wizardPreviewDrawn"));
+        assertEquals("true", r.getProperty("wizardReportHasTable"));
+        assertEquals("true", r.getProperty("wizardSaved"));
+        assertEquals("true", r.getProperty("wizardOverwriteRefused"));
+        assertEquals("true", r.getProperty("wizardOverwriteConfirmed"));
+        assertEquals("true", r.getProperty("wizardUsed"));
+        assertEquals("irb2000_long", r.getProperty("cellRobot"));
+        assertTrue(r.getProperty("cellRobotRef").endsWith("irb2000_long.robot.json"), r.getProperty("cellRobotRef"));
+        assertEquals("false", r.getProperty("previewAfterUse"));
+        assertEquals("irb2000_long", r.getProperty("reopenedRobot"));
+        BufferedImage wizard = ImageIO.read(out.resolve("04-wizard.png").toFile());
+        assertTrue(orangeFraction(wizard, 230, 60, 640, 460) > 0.005, "no preview drums in the 3D view of 04-wizard.png");
+        assertTrue(colourCount(wizard) > 40);
+        BufferedImage newRobot = ImageIO.read(out.resolve("05-new-robot.png").toFile());
+        assertTrue(orangeFraction(newRobot, 230, 60, 940, 460) > 0.01, "the new robot is not drawn in 05-new-robot.png");
+
         BufferedImage cell = ImageIO.read(out.resolve("01-cell.png").toFile());
         assertEquals(1280, cell.getWidth());
         assertTrue(colourCount(cell) > 40, "01-cell.png looks uniform: " + colourCount(cell) + " colours");

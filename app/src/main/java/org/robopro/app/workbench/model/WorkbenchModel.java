@@ -77,6 +77,12 @@ public final class WorkbenchModel {
             robotRef = Objects.requireNonNull(ref);
             kinematics = RobotKinematics.of(robot);
             q = new double[robot.dof()];
+            // Taught joints of another robot are only IK seeds now: keep their length right.
+            List<Target> n = new ArrayList<>();
+            for (Target t : targets)
+                n.add(t.qTaught().length == robot.dof() ? t
+                        : new Target(t.name(), t.worldTtcp(), java.util.Arrays.copyOf(t.qTaught(), robot.dof()), t.conf(), t.wobj()));
+            targets = List.copyOf(n);
         }
         jointVersion.incrementAndGet();
         fire(Change.ROBOT);

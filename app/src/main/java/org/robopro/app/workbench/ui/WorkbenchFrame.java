@@ -165,6 +165,18 @@ public final class WorkbenchFrame extends JFrame {
         }
     }
 
+    private RobotWizard wizard;
+
+    /** Opens (or brings to front) the robot model wizard, starting from the cell's robot. */
+    public RobotWizard openWizard() {
+        if (wizard == null || !wizard.isDisplayable()) {
+            wizard = new RobotWizard(this, wb);
+            wizard.setLocationRelativeTo(this);
+        }
+        wizard.setVisible(true);
+        return wizard;
+    }
+
     public JogPanel jogPanel() { return jog; }
     public ProgramPanel programPanel() { return program; }
     public CellTree cellTree() { return tree; }
@@ -327,7 +339,7 @@ public final class WorkbenchFrame extends JFrame {
         disabled("run", "Run on controller", NEEDS_COMMS);
         disabled("read-position", "Read robot position", NEEDS_COMMS);
         disabled("calibration", "Calibration panel...", NEEDS_CAL);
-        disabled("robot-wizard", "Robot model wizard (Fig. 7)...", "Not built yet: robots are loaded from robot files");
+        def("robot-wizard", "Robot model wizard (Fig. 7)...", null, e -> openWizard());
         def("about", "About", null, e -> JOptionPane.showMessageDialog(this,
                 "robopro workbench\nOff-line programming and calibration of industrial robots.\n"
                         + "Left drag: orbit, right/middle drag: pan, wheel: zoom, click: select.", "About", JOptionPane.INFORMATION_MESSAGE));
