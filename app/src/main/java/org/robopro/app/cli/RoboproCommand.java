@@ -13,11 +13,16 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                SimulateCommand.class,
+                CalibrateCommand.class,
+                CompensateCommand.class,
                 ModelCommand.class,
                 FkCommand.class,
                 IkCommand.class,
                 ProgramCommand.class,
                 WorkbenchCommand.class,
+                ControllerSimCommand.class,
+                LinkCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 

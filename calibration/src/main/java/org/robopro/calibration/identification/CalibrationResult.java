@@ -1,0 +1,90 @@
+package org.robopro.calibration.identification;
+
+import java.util.List;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+
+/**
+ * What a calibration produced. SI units inside; the report writers convert.
+ *
+ * @param nominal          the model calibration started from
+ * @param calibrated       the identified model
+ * @param flangeTtool      identified tool frame (origin = measured point)
+ * @param instrumentTbase  identified instrument pose, or null for data in the base frame
+ * @param parameters       every parameter of the problem: geometry, tool, instrument, effects
+ * @param unidentifiable   directions the data cannot see and the parameter fixed for each
+ * @param conditionNumber  of the column-scaled Jacobian of the free parameters
+ * @param observability    O1 (Borm &amp; Menq) of the free parameters
+ * @param outliers         poses flagged by the outlier rule (excluded from the fit)
+ * @param train            per-pose errors on the training poses
+ * @param validate         per-pose errors on validation poses (empty without validation data)
+ * @param nominalFit       solver diagnostics of the nominal fit (instrument and tool only)
+ * @param fit              solver diagnostics of the final fit
+ * @param sigmaPosM        position noise estimated from the residuals, m
+ * @param sigmaRotRad      orientation noise estimated from the residuals, rad (NaN for position-only data)
+ * @param sixD             orientations were used
+ * @param elapsedMs        wall time of the calibration
+ */
+public record CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
+                                List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
+                                double conditionNumber, double observability, List<Outlier> outliers,
+                                List<PoseError> train, List<PoseError> validate,
+                                LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
+                                double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs) {
+
+    /**
+     * One parameter. Values in SI ({@code unitSi}); {@code sigma} NaN when fixed.
+     *
+     * @param block {@link IdentificationProblem.Block} name in lower case
+     */
+    public record ParameterEstimate(String name, String block, String unitSi, double nominal, double identified,
+                                    double sigma, boolean fixed) { }
+
+    /** A pose flagged as an outlier: its residual (m) and the robust noise estimate it was compared with. */
+    public record Outlier(String poseId, double residualM, double robustSigmaM, String reason) { }
+
+    /**
+     * Errors at one pose: position error norms (m) with the nominal model (after fitting only
+     * the instrument and tool) and with the calibrated model; rotation errors (rad, NaN for
+     * position-only); whether the pose is an outlier.
+     */
+    public record PoseError(String poseId, double nominalM, double calibratedM, double nominalRotRad,
+                            double calibratedRotRad, boolean outlier) { }
+
+    /** RMS of position errors over non-outlier poses, m. */
+    public static double rms(List<PoseError> es, boolean calibratedModel) {
+        double s = 0;
+        int n = 0;
+        for (PoseError e : es) {
+            if (e.outlier()) continue;
+            double v = calibratedModel ? e.calibratedM() : e.nominalM();
+            s += v * v;
+            n++;
+        }
+        return n == 0 ? Double.NaN : Math.sqrt(s / n);
+    }
+
+    /** Largest position error over non-outlier poses, m. */
+    public static double max(List<PoseError> es, boolean calibratedModel) {
+        double m = Double.NaN;
+        for (PoseError e : es) {
+            if (e.outlier()) continue;
+            double v = calibratedModel ? e.calibratedM() : e.nominalM();
+            if (Double.isNaN(m) || v > m) m = v;
+        }
+        return m;
+    }
+
+    public double trainRmsM() { return rms(train, true); }
+    public double nominalTrainRmsM() { return rms(train, false); }
+    public double validateRmsM() { return rms(validate, true); }
+    public double nominalValidateRmsM() { return rms(validate, false); }
+    public double trainMaxM() { return max(train, true); }
+    public double validateMaxM() { return max(validate, true); }
+
+    /** The parameter with this name, or null. */
+    public ParameterEstimate parameter(String name) {
+        for (ParameterEstimate p : parameters) if (p.name().equals(name)) return p;
+        return null;
+    }
+}

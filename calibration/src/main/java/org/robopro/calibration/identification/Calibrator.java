@@ -1,0 +1,412 @@
+package org.robopro.calibration.identification;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.Set;
+import java.util.WeakHashMap;
+import org.robopro.calibration.Cancellation;
+import org.robopro.calibration.Progress;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.InputException;
+import org.robopro.models.JointDescription;
+import org.robopro.models.Vec3;
+
+/**
+ * Calibrates a robot from measurements (issue 3, seed paper §5):
+ * <ol>
+ * <li>check the data (joint count, enough poses, an instrument frame the data can determine);</li>
+ * <li>start the instrument frame by rigid registration of nominal predictions, then fit only
+ *     instrument and tool with the nominal geometry (the "nominal" errors of the report);</li>
+ * <li>identifiability: parameters that no pose set can separate for this model and data kind
+ *     (structural; from 60 random poses) are fixed by {@link Identifiability}'s rule; if the given
+ *     poses cannot separate more, refuse and say what is missing;</li>
+ * <li>Levenberg–Marquardt on everything else; with orientations, re-weight by the estimated
+ *     position and rotation noise and refit;</li>
+ * <li>outliers: a pose whose position residual exceeds {@code outlierK} times the robust noise
+ *     (median residual norm / 1.5382, the median of a 3-D Gaussian's norm) is flagged, dropped
+ *     from the fit and reported; repeated until no new pose is flagged (at most 5 rounds);</li>
+ * <li>σ per parameter from s²(JᵀJ)⁻¹; validation errors on poses the fit did not see.</li>
+ * </ol>
+ */
+public final class Calibrator {
+    /** Median of the norm of a 3-D standard normal vector (Maxwell distribution). */
+    static final double MAXWELL_MEDIAN = 1.5381722;
+    private static final int STRUCTURAL_POSES = 60;
+
+    /**
+     * @param initialTool      start of the tool frame (its origin is the measured point), flange coordinates
+     * @param outlierK         outlier threshold in robust sigmas
+     * @param rejectOutliers   drop flagged poses from the fit (else only report them)
+     * @param tolerance        relative singular-value threshold for identifiability
+     * @param maxIterations    LM iteration limit per fit
+     * @param effects          extra parameter blocks (diagnosis)
+     * @param cancel           cancellation token
+     * @param progress         progress listener
+     */
+    public record Options(Pose initialTool, double outlierK, boolean rejectOutliers, double tolerance, int maxIterations,
+                          List<EffectBlock> effects, Cancellation cancel, Progress progress) {
+        public static Options defaults() {
+            return new Options(Pose.IDENTITY, 5.0, true, Identifiability.DEFAULT_TOLERANCE, 100, List.of(),
+                    Cancellation.NONE, Progress.NONE);
+        }
+
+        public Options withInitialTool(Pose t) { return new Options(t, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, progress); }
+        public Options withEffects(List<EffectBlock> e) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, e, cancel, progress); }
+        public Options withCancel(Cancellation c) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, c, progress); }
+        public Options withProgress(Progress p) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, p); }
+        public Options withOutliers(double k, boolean reject) { return new Options(initialTool, k, reject, tolerance, maxIterations, effects, cancel, progress); }
+    }
+
+    private Calibrator() { }
+
+    public static CalibrationResult calibrate(KinematicModel nominal, MeasurementSet train, MeasurementSet validate) {
+        return calibrate(nominal, train, validate, Options.defaults());
+    }
+
+    public static CalibrationResult calibrate(KinematicModel nominal, MeasurementSet train, MeasurementSet validate, Options o) {
+        long t0 = System.nanoTime();
+        checkData(nominal, train);
+        if (validate != null) {
+            checkData(nominal, validate);
+            if (!validate.frame().equalsIgnoreCase(train.frame()))
+                throw new InputException(validate.source(), 0, 0, "frame", "validation data are in frame '" + validate.frame()
+                        + "' but the training data in '" + train.frame() + "'; validation needs the same instrument set-up");
+        }
+        boolean sixD = train.hasOrientation();
+        boolean instrument = !train.inBaseFrame();
+        List<EffectBlock> effects = o.effects();
+        List<Measurement> rows = train.rows();
+        o.progress().update("start", 0);
+
+        // 1. Starting instrument frame and tool.
+        Pose tool0 = sixD ? o.initialTool() : Pose.translation(o.initialTool().position());
+        Pose inst0 = null;
+        if (instrument) {
+            List<Vec3> pred = new ArrayList<>(), meas = new ArrayList<>();
+            for (Measurement m : rows) {
+                pred.add(nominal.flange(m.q()).times(tool0).position());
+                meas.add(m.position());
+            }
+            double[] spread = Registration.spread(meas);
+            if (rows.size() < 3 || spread[1] < 5e-3)
+                throw new InputException(train.source(), 0, 0, "frame", String.format(Locale.ROOT,
+                        "the measured points lie on a line (spread %.1f mm x %.1f mm), so the instrument frame '%s' "
+                                + "cannot be determined; add poses that move the measured point in at least two "
+                                + "directions, or write '# frame: base' if the positions are in the robot base frame",
+                        spread[0] * 1e3, spread[1] * 1e3, train.frame()));
+            inst0 = Registration.rigid(pred, meas);
+        }
+        if (sixD) tool0 = averageToolRotation(nominal, rows, tool0, inst0);
+
+        // 2. Nominal fit: geometry fixed, instrument and tool free.
+        double[] start = IdentificationProblem.startVector(nominal, tool0, sixD, inst0, effects);
+        IdentificationProblem p1 = new IdentificationProblem(nominal, rows, sixD, instrument, effects, start);
+        boolean[] geoFixed = new boolean[p1.fullSize()];
+        for (int i = 0; i < p1.fullSize(); i++)
+            geoFixed[i] = p1.blocks().get(i) == IdentificationProblem.Block.GEOMETRY
+                    || p1.blocks().get(i) == IdentificationProblem.Block.EFFECT;
+        p1.setFixed(geoFixed);
+        LevenbergMarquardt.Result r1 = new LevenbergMarquardt(p1).maxIterations(o.maxIterations()).solve(p1.freeOf(start), o.cancel());
+        double[] nominalFull = p1.fullOf(r1.x());
+        if (sixD) {
+            double[] sig = estimateSigmas(p1, nominalFull, p1.freeIndices().length);
+            p1.setSigmas(sig[0], sig[1]);
+        }
+        o.progress().update("nominal fit", 0.2);
+
+        // 3. Identifiability: structural (any poses) then these poses.
+        Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance());
+        boolean[] fix = new boolean[p1.fullSize()];
+        for (int j : structural.fixed()) fix[j] = true;
+        int nFree = 0;
+        for (boolean b : fix) if (!b) nFree++;
+        int eq = rows.size() * p1.rowsPerPose();
+        if (eq < nFree) {
+            int need = (nFree + p1.rowsPerPose() - 1) / p1.rowsPerPose();
+            throw new InputException(train.source(), 0, 0, null, String.format(Locale.ROOT,
+                    "%d poses give %d equations but %d parameters are to be identified; measure at least %d poses "
+                            + "(3 to 5 times as many give a usable result)", rows.size(), eq, nFree, need));
+        }
+        IdentificationProblem p2 = new IdentificationProblem(nominal, rows, sixD, instrument, effects, nominalFull);
+        p2.setSigmas(p1.sigmaPos(), p1.sigmaRot());
+        double[] jFull = new double[eq * p2.fullSize()];
+        p2.evaluateFull(nominalFull, new double[eq], jFull);
+        Identifiability.Result data = Identifiability.analyze(jFull, eq, p2.fullSize(), p2.names(), p2.fixPriorities(),
+                fix, rows.size(), o.tolerance());
+        if (data.fixed().length > 0) {
+            StringBuilder sb = new StringBuilder();
+            for (Identifiability.Direction d : data.directions()) sb.append("\n  ").append(d.describe());
+            throw new InputException(train.source(), 0, 0, null, "these " + rows.size()
+                    + " poses cannot separate the following parameter combinations:" + sb
+                    + "\nadd poses that move the joints involved over a wider part of their ranges");
+        }
+        p2.setFixed(fix);
+        o.progress().update("identifiability", 0.3);
+
+        // 4. Full fit, re-weighting for 6-D data, outlier rounds.
+        Set<String> outlierIds = new HashSet<>();
+        List<CalibrationResult.Outlier> outliers = new ArrayList<>();
+        double[] full = nominalFull;
+        LevenbergMarquardt.Result fit = null;
+        IdentificationProblem p = p2;
+        for (int round = 0; round < 6; round++) {
+            fit = new LevenbergMarquardt(p).maxIterations(o.maxIterations()).solve(p.freeOf(full), o.cancel());
+            full = p.fullOf(fit.x());
+            if (sixD) {
+                double[] sig = estimateSigmas(p, full, p.freeIndices().length);
+                p.setSigmas(sig[0], sig[1]);
+                fit = new LevenbergMarquardt(p).maxIterations(o.maxIterations()).solve(p.freeOf(full), o.cancel());
+                full = p.fullOf(fit.x());
+            }
+            o.progress().update("fit", Math.min(0.9, 0.4 + 0.1 * round));
+            if (round == 5) break;
+            List<CalibrationResult.Outlier> fresh = findOutliers(p, full, train, outlierIds, o.outlierK());
+            if (fresh.isEmpty()) break;
+            outliers.addAll(fresh);
+            for (CalibrationResult.Outlier ol : fresh) outlierIds.add(ol.poseId());
+            if (!o.rejectOutliers()) break;
+            List<Measurement> kept = new ArrayList<>();
+            for (Measurement m : rows) if (!outlierIds.contains(m.poseId())) kept.add(m);
+            if (kept.size() * p.rowsPerPose() <= nFree)
+                throw new InputException(train.source(), 0, 0, null, "after removing " + outlierIds.size()
+                        + " outlier poses too few poses remain to identify " + nFree + " parameters");
+            IdentificationProblem next = new IdentificationProblem(nominal, kept, sixD, instrument, effects, full);
+            next.setSigmas(p.sigmaPos(), p.sigmaRot());
+            next.setFixed(fix);
+            p = next;
+        }
+
+        // 5. Uncertainty.
+        double[] sigmaFull = covarianceSigmas(p, fit.x());
+        double[] sig = estimateSigmas(p, full, p.freeIndices().length);
+        KinematicModel calibrated = p.modelOf(full);
+        Pose tool = p.toolOf(full);
+        Pose inst = instrument ? p.instrumentOf(full) : null;
+        List<CalibrationResult.ParameterEstimate> params = new ArrayList<>();
+        List<String> names = p.names(), units = p.unitsSi();
+        double[] nomStart = IdentificationProblem.startVector(nominal, tool0, sixD, inst0, effects);
+        for (int i = 0; i < names.size(); i++) {
+            double nomValue = p.blocks().get(i) == IdentificationProblem.Block.GEOMETRY ? nomStart[i] : nominalFull[i];
+            params.add(new CalibrationResult.ParameterEstimate(names.get(i), p.blocks().get(i).name().toLowerCase(Locale.ROOT),
+                    units.get(i), nomValue, full[i], fix[i] ? Double.NaN : sigmaFull[i], fix[i]));
+        }
+
+        // 6. Errors per pose, training and validation.
+        List<CalibrationResult.PoseError> trainErr = poseErrors(p, nominal, train, nominalFull, full, outlierIds, effects);
+        List<CalibrationResult.PoseError> valErr = validate == null ? List.of()
+                : poseErrors(p, nominal, validate, nominalFull, full, Set.of(), effects);
+        o.progress().update("done", 1);
+        return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
+                data.conditionNumber(), data.observability(), outliers, trainErr, valErr, r1, fit,
+                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6);
+    }
+
+    static void checkData(KinematicModel model, MeasurementSet set) {
+        if (set.size() == 0) throw new InputException(set.source(), 0, 0, null, "no measurements");
+        if (set.dof() != model.dof())
+            throw new InputException(set.source(), 0, 0, "q" + set.dof(), "the measurements have " + set.dof()
+                    + " joint values per pose but robot " + model.description().name() + " has " + model.dof()
+                    + " joints; use the robot the data were taken on");
+    }
+
+    private static Pose averageToolRotation(KinematicModel nominal, List<Measurement> rows, Pose tool0, Pose inst0) {
+        double[] acc = new double[4];
+        double[] ref = null;
+        for (Measurement m : rows) {
+            Pose bf = nominal.flange(m.q());
+            Pose meas = Pose.fromQuaternion(m.orientation()[0], m.orientation()[1], m.orientation()[2], m.orientation()[3], 0, 0, 0);
+            Pose ib = inst0 == null ? Pose.IDENTITY : inst0;
+            double[] qf = ib.times(bf).inverse().times(meas).quaternion(); // flangeTtool rotation seen by this pose
+            if (ref == null) ref = qf;
+            double s = qf[0] * ref[0] + qf[1] * ref[1] + qf[2] * ref[2] + qf[3] * ref[3] < 0 ? -1 : 1;
+            for (int k = 0; k < 4; k++) acc[k] += s * qf[k];
+        }
+        return Pose.fromQuaternion(acc[0], acc[1], acc[2], acc[3], tool0.x(), tool0.y(), tool0.z());
+    }
+
+    /** Position (m) and rotation (rad) noise per axis from the residuals, with the dof correction. */
+    static double[] estimateSigmas(IdentificationProblem p, double[] full, int nFree) {
+        int m = p.residualCount();
+        double[] r = new double[m];
+        p.evaluateFull(full, r, null);
+        int rpp = p.rowsPerPose();
+        double sp = 0, sr = 0;
+        int np = 0, nr = 0;
+        for (int i = 0; i < m; i++) {
+            if (i % rpp < 3) { sp += Math.pow(r[i] * p.sigmaPos(), 2); np++; }
+            else { sr += Math.pow(r[i] * p.sigmaRot(), 2); nr++; }
+        }
+        double corr = (double) m / Math.max(1, m - nFree);
+        double sigP = Math.sqrt(sp / np * corr), sigR = nr == 0 ? 1e-4 : Math.sqrt(sr / nr * corr);
+        return new double[] {Math.max(sigP, 1e-12), Math.max(sigR, 1e-12)};
+    }
+
+    /** σ_j = sqrt(s² [(JᵀJ)⁻¹]_jj), for every full index (NaN where fixed). */
+    static double[] covarianceSigmas(IdentificationProblem p, double[] x) {
+        int m = p.residualCount(), n = p.parameterCount();
+        double[] r = new double[m], j = new double[m * n];
+        p.evaluate(x, r, j);
+        double[] scale = new double[n];
+        for (int c = 0; c < n; c++) {
+            double s = 0;
+            for (int i = 0; i < m; i++) s += j[i * n + c] * j[i * n + c];
+            scale[c] = s > 0 ? Math.sqrt(s) : 1;
+        }
+        double[] a = new double[n * n];
+        Dense.normalMatrix(j, m, n, scale, a);
+        double s2 = Dense.dot(r, r, m) / Math.max(1, m - n);
+        double[] out = new double[p.fullSize()];
+        Arrays.fill(out, Double.NaN);
+        if (!Dense.cholesky(a, n)) return out;
+        int[] free = p.freeIndices();
+        double[] e = new double[n];
+        for (int c = 0; c < n; c++) {
+            Arrays.fill(e, 0);
+            e[c] = 1;
+            Dense.choleskySolve(a, n, e);
+            out[free[c]] = Math.sqrt(s2 * e[c]) / scale[c];
+        }
+        return out;
+    }
+
+    private static List<CalibrationResult.Outlier> findOutliers(IdentificationProblem p, double[] full, MeasurementSet train,
+                                                               Set<String> known, double k) {
+        // Residuals of every training pose (the flagged ones too), at the current solution.
+        IdentificationProblem all = withRows(p, train.rows(), full);
+        int m = all.residualCount(), rpp = all.rowsPerPose();
+        double[] r = new double[m];
+        all.evaluateFull(full, r, null);
+        int n = train.size();
+        double[] pos = new double[n], rot = new double[n];
+        for (int i = 0; i < n; i++) {
+            pos[i] = Math.sqrt(sq(r[i * rpp]) + sq(r[i * rpp + 1]) + sq(r[i * rpp + 2])) * all.sigmaPos();
+            if (rpp == 6) rot[i] = Math.sqrt(sq(r[i * rpp + 3]) + sq(r[i * rpp + 4]) + sq(r[i * rpp + 5])) * all.sigmaRot();
+        }
+        double sigPos = Math.max(robustSigma(pos, train, known), 1e-9);
+        double sigRot = rpp == 6 ? Math.max(robustSigma(rot, train, known), 1e-9) : 0;
+        List<CalibrationResult.Outlier> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            String id = train.rows().get(i).poseId();
+            if (known.contains(id)) continue;
+            if (pos[i] > k * sigPos)
+                out.add(new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
+                        "position residual %.4f mm > %.1f x robust sigma %.4f mm", pos[i] * 1e3, k, sigPos * 1e3)));
+            else if (rpp == 6 && rot[i] > k * sigRot)
+                out.add(new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
+                        "rotation residual %.5f deg > %.1f x robust sigma %.5f deg", Math.toDegrees(rot[i]), k, Math.toDegrees(sigRot))));
+        }
+        return out;
+    }
+
+    private static double robustSigma(double[] norms, MeasurementSet train, Set<String> known) {
+        double[] v = new double[norms.length];
+        int c = 0;
+        for (int i = 0; i < norms.length; i++) if (!known.contains(train.rows().get(i).poseId())) v[c++] = norms[i];
+        v = Arrays.copyOf(v, c);
+        Arrays.sort(v);
+        double med = c % 2 == 1 ? v[c / 2] : 0.5 * (v[c / 2 - 1] + v[c / 2]);
+        return med / MAXWELL_MEDIAN;
+    }
+
+    private static double sq(double v) { return v * v; }
+
+    /** A problem of the same layout on other rows; orientation rows only when every row has one. */
+    private static IdentificationProblem withRows(IdentificationProblem p, List<Measurement> rows, double[] full) {
+        IdentificationProblem q = new IdentificationProblem(p.model(), rows, p.sixD(), p.hasInstrument(), effectsOf(p), full);
+        q.setSigmas(p.sigmaPos(), p.sigmaRot());
+        return q;
+    }
+
+    private static List<EffectBlock> effectsOf(IdentificationProblem p) { return p.effects(); }
+
+    private static List<CalibrationResult.PoseError> poseErrors(IdentificationProblem p, KinematicModel nominal, MeasurementSet set,
+                                                               double[] nominalFull, double[] full, Set<String> outliers,
+                                                               List<EffectBlock> effects) {
+        boolean sixD = p.sixD() && set.hasOrientation();
+        IdentificationProblem src = p;
+        IdentificationProblem q = new IdentificationProblem(nominal, set.rows(), sixD, p.hasInstrument(), effects,
+                remap(src, sixD, nominalFull));
+        q.setSigmas(1, 1);
+        int rpp = q.rowsPerPose(), m = q.residualCount();
+        double[] rn = new double[m], rc = new double[m];
+        q.evaluateFull(remap(src, sixD, nominalFull), rn, null);
+        q.evaluateFull(remap(src, sixD, full), rc, null);
+        List<CalibrationResult.PoseError> out = new ArrayList<>();
+        for (int i = 0; i < set.size(); i++) {
+            int b = i * rpp;
+            double en = Math.sqrt(sq(rn[b]) + sq(rn[b + 1]) + sq(rn[b + 2]));
+            double ec = Math.sqrt(sq(rc[b]) + sq(rc[b + 1]) + sq(rc[b + 2]));
+            double rnRot = Double.NaN, rcRot = Double.NaN;
+            if (rpp == 6) {
+                rnRot = Math.sqrt(sq(rn[b + 3]) + sq(rn[b + 4]) + sq(rn[b + 5]));
+                rcRot = Math.sqrt(sq(rc[b + 3]) + sq(rc[b + 4]) + sq(rc[b + 5]));
+            }
+            String id = set.rows().get(i).poseId();
+            out.add(new CalibrationResult.PoseError(id, en, ec, rnRot, rcRot, outliers.contains(id)));
+        }
+        return out;
+    }
+
+    /** A full vector of a 6-D layout turned into the position-only layout (tool rotation dropped), or as is. */
+    private static double[] remap(IdentificationProblem from, boolean sixDTo, double[] full) {
+        if (from.sixD() == sixDTo) return full;
+        int t = from.toolOffset();
+        double[] out = new double[full.length - 3];
+        System.arraycopy(full, 0, out, 0, t + 3);
+        System.arraycopy(full, t + 6, out, t + 3, full.length - t - 6);
+        return out;
+    }
+
+    // ------------------------------------------------------------------ structural identifiability
+
+    private static final Map<KinematicModel, Map<String, Identifiability.Result>> STRUCTURAL = new WeakHashMap<>();
+
+    /**
+     * Identifiability of the model and data kind, independent of the measured poses: the
+     * analysis on {@value #STRUCTURAL_POSES} random poses inside the joint limits. Cached per model.
+     */
+    static Identifiability.Result structural(KinematicModel nominal, boolean sixD, boolean instrument, List<EffectBlock> effects,
+                                             double[] start, IdentificationProblem like, double tol) {
+        StringBuilder key = new StringBuilder().append(sixD).append('/').append(instrument).append('/').append(tol);
+        for (EffectBlock e : effects) key.append('/').append(e.name()).append(e.parameterNames());
+        synchronized (STRUCTURAL) {
+            Identifiability.Result r = STRUCTURAL.getOrDefault(nominal, Map.of()).get(key.toString());
+            if (r != null) return r;
+        }
+        Random rng = new Random(20261121L);
+        List<Measurement> rows = new ArrayList<>();
+        List<JointDescription> js = nominal.description().joints();
+        for (int i = 0; i < STRUCTURAL_POSES; i++) {
+            double[] q = new double[js.size()];
+            for (int k = 0; k < q.length; k++) {
+                double lo = js.get(k).min(), hi = js.get(k).max();
+                if (!(hi > lo) || !Double.isFinite(lo) || !Double.isFinite(hi) || hi - lo > 2 * Math.PI) {
+                    double mid = Double.isFinite(lo + hi) ? 0.5 * (lo + hi) : 0;
+                    lo = mid - Math.PI; hi = mid + Math.PI;
+                }
+                q[k] = lo + (hi - lo) * rng.nextDouble();
+            }
+            rows.add(new Measurement("s" + i, q, Vec3.ZERO, sixD ? new double[] {1, 0, 0, 0} : null,
+                    null, Double.NaN, Double.NaN, Double.NaN, null, 0));
+        }
+        IdentificationProblem p = new IdentificationProblem(nominal, rows, sixD, instrument, effects, start);
+        p.setSigmas(like.sigmaPos(), like.sigmaRot());
+        int m = p.residualCount(), n = p.fullSize();
+        double[] j = new double[m * n];
+        p.evaluateFull(start, new double[m], j);
+        Identifiability.Result r = Identifiability.analyze(j, m, n, p.names(), p.fixPriorities(), null, rows.size(), tol);
+        synchronized (STRUCTURAL) {
+            STRUCTURAL.computeIfAbsent(nominal, k -> new HashMap<>()).put(key.toString(), r);
+        }
+        return r;
+    }
+}

@@ -1,0 +1,508 @@
+package org.robopro.calibration.identification;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.ModelParameter;
+import org.robopro.kinematics.Pose;
+
+/**
+ * The identification problem of issue 3 as pluggable parameter blocks, each contributing
+ * Jacobian columns per pose:
+ * <ul>
+ * <li><b>geometry</b>: the kinematic model's Table-1 parameters (analytic columns from
+ *     {@link KinematicModel#poseJacobian});</li>
+ * <li><b>tool</b>: the measured point on the flange (3; m) or, with orientations, the whole tool
+ *     frame (3 + 3: translation, then a rotation vector perturbed on the left in flange axes);</li>
+ * <li><b>instrument</b>: instrumentTbase (3 translation + 3 rotation, perturbed on the left in
+ *     instrument axes), absent when the positions are in the base frame;</li>
+ * <li><b>effects</b>: {@link EffectBlock}s (diagnosis), chained through the joint-angle Jacobian.</li>
+ * </ul>
+ * Prediction (instrument frame): p = R_ib (baseTflange(q + Δq) · t_ft + dp) + t_ib, and for 6-D
+ * data R = R_ib R_bf R_ft. Residuals are (predicted − measured) / σ per row: positions first (3
+ * per pose), then rotations Log(R_pred R_measᵀ) (3 per pose) when orientations are measured.
+ * Parameters in {@code fixed} keep their start value; the {@link LeastSquaresProblem} view sees
+ * the free ones only. One problem per thread (it owns a workspace).
+ */
+public final class IdentificationProblem implements LeastSquaresProblem {
+    /** Which block a parameter belongs to. */
+    public enum Block { GEOMETRY, TOOL, INSTRUMENT, EFFECT }
+
+    private final KinematicModel model;
+    private final List<Measurement> rows;
+    private final boolean sixD, instrument;
+    private final List<EffectBlock> effects;
+    private final int nGeo, toolOff, toolSize, instOff, effOff, nFull;
+    private final int[] effStart;
+    private final List<String> names = new ArrayList<>();
+    private final List<String> units = new ArrayList<>();
+    private final List<Block> blocks = new ArrayList<>();
+    private final double[] priority;
+    private final double[] start;
+    private final boolean[] fixed;
+    private int[] free;
+    private double sigmaPos = 1e-4, sigmaRot = 1e-4;
+    private final int m;
+    // work buffers
+    private final KinematicModel.Workspace ws;
+    private final double[] pose12 = new double[12], flange12 = new double[12], jg, jFull;
+    private final double[][] cInvCols;
+
+    /**
+     * @param model       the model whose structure is identified (values come from the parameter vector)
+     * @param rows        the measurements used
+     * @param sixD        orientations are measured (every row has one)
+     * @param instrument  positions are in an unknown instrument frame
+     * @param effects     extra effect blocks (may be empty)
+     * @param start       full start vector (see {@link #names()} for the layout)
+     */
+    public IdentificationProblem(KinematicModel model, List<Measurement> rows, boolean sixD, boolean instrument,
+                                 List<EffectBlock> effects, double[] start) {
+        this.model = model;
+        this.rows = List.copyOf(rows);
+        this.sixD = sixD;
+        this.instrument = instrument;
+        this.effects = List.copyOf(effects);
+        List<ModelParameter> ps = model.parameters();
+        nGeo = ps.size();
+        for (ModelParameter p : ps) {
+            names.add(p.name());
+            units.add(p.unitSi());
+            blocks.add(Block.GEOMETRY);
+        }
+        toolOff = nGeo;
+        toolSize = sixD ? 6 : 3;
+        for (String s : new String[] {"tool.x", "tool.y", "tool.z"}) { names.add(s); units.add("m"); blocks.add(Block.TOOL); }
+        if (sixD) for (String s : new String[] {"tool.rx", "tool.ry", "tool.rz"}) { names.add(s); units.add("rad"); blocks.add(Block.TOOL); }
+        instOff = toolOff + toolSize;
+        if (instrument) {
+            for (String s : new String[] {"instrument.x", "instrument.y", "instrument.z"}) { names.add(s); units.add("m"); blocks.add(Block.INSTRUMENT); }
+            for (String s : new String[] {"instrument.rx", "instrument.ry", "instrument.rz"}) { names.add(s); units.add("rad"); blocks.add(Block.INSTRUMENT); }
+        }
+        effOff = instOff + (instrument ? 6 : 0);
+        effStart = new int[this.effects.size() + 1];
+        int off = effOff;
+        for (int k = 0; k < this.effects.size(); k++) {
+            effStart[k] = off;
+            EffectBlock e = this.effects.get(k);
+            for (int i = 0; i < e.parameterNames().size(); i++) {
+                names.add(e.name() + "." + e.parameterNames().get(i));
+                units.add(e.units().get(i));
+                blocks.add(Block.EFFECT);
+            }
+            off += e.parameterNames().size();
+        }
+        effStart[this.effects.size()] = off;
+        nFull = off;
+        if (start.length != nFull) throw new IllegalArgumentException("start vector has " + start.length + " values, layout needs " + nFull);
+        this.start = start.clone();
+        priority = new double[nFull];
+        for (int i = 0; i < nFull; i++)
+            priority[i] = switch (blocks.get(i)) {
+                case GEOMETRY -> 1.0;
+                case TOOL -> 0.5;
+                case INSTRUMENT -> 0.25;
+                case EFFECT -> 1.0;
+            };
+        for (int k = 0; k < this.effects.size(); k++)
+            for (int i = effStart[k]; i < effStart[k + 1]; i++) priority[i] = this.effects.get(k).fixPriority();
+        fixed = new boolean[nFull];
+        free = allIndices(nFull);
+        m = this.rows.size() * (sixD ? 6 : 3);
+        ws = model.newWorkspace();
+        jg = new double[6 * nGeo];
+        jFull = new double[m * nFull];
+        int dof = model.dof();
+        cInvCols = new double[dof][];
+        if (!this.effects.isEmpty())
+            for (int j = 0; j < dof; j++) {
+                double[] e = new double[dof];
+                e[j] = 1;
+                cInvCols[j] = model.q(e); // dq/dθ_j: q = C⁻¹ θ is linear
+            }
+    }
+
+    private static int[] allIndices(int n) {
+        int[] a = new int[n];
+        for (int i = 0; i < n; i++) a[i] = i;
+        return a;
+    }
+
+    /** The start vector for a model, a tool frame and (optionally) an instrument pose; effect values from the blocks. */
+    public static double[] startVector(KinematicModel model, Pose flangeTtool, boolean sixD, Pose instrumentTbase,
+                                       List<EffectBlock> effects) {
+        List<Double> v = new ArrayList<>();
+        for (double p : model.parameterValues()) v.add(p);
+        v.add(flangeTtool.x()); v.add(flangeTtool.y()); v.add(flangeTtool.z());
+        if (sixD) { var w = flangeTtool.rotationVector(); v.add(w.x()); v.add(w.y()); v.add(w.z()); }
+        if (instrumentTbase != null) {
+            v.add(instrumentTbase.x()); v.add(instrumentTbase.y()); v.add(instrumentTbase.z());
+            var w = instrumentTbase.rotationVector();
+            v.add(w.x()); v.add(w.y()); v.add(w.z());
+        }
+        for (EffectBlock e : effects) for (double d : e.initialValues()) v.add(d);
+        return v.stream().mapToDouble(Double::doubleValue).toArray();
+    }
+
+    // ------------------------------------------------------------------ layout
+
+    public List<String> names() { return List.copyOf(names); }
+    public List<String> unitsSi() { return List.copyOf(units); }
+    public List<Block> blocks() { return List.copyOf(blocks); }
+    public double[] fixPriorities() { return priority.clone(); }
+    public int fullSize() { return nFull; }
+    public int geometryCount() { return nGeo; }
+    public int toolOffset() { return toolOff; }
+    public int instrumentOffset() { return instrument ? instOff : -1; }
+    public int effectOffset(int k) { return effStart[k]; }
+    public boolean sixD() { return sixD; }
+    public boolean hasInstrument() { return instrument; }
+    public List<Measurement> rows() { return rows; }
+    public List<EffectBlock> effects() { return effects; }
+    public double[] start() { return start.clone(); }
+    public KinematicModel model() { return model; }
+
+    /** Residual rows per pose: 3, or 6 with orientations. */
+    public int rowsPerPose() { return sixD ? 6 : 3; }
+
+    /** Standard deviations that weight position (m) and rotation (rad) residuals. */
+    public void setSigmas(double sigmaPosM, double sigmaRotRad) {
+        if (!(sigmaPosM > 0) || !(sigmaRotRad > 0)) throw new IllegalArgumentException("sigmas must be > 0: " + sigmaPosM + ", " + sigmaRotRad);
+        sigmaPos = sigmaPosM;
+        sigmaRot = sigmaRotRad;
+    }
+
+    public double sigmaPos() { return sigmaPos; }
+    public double sigmaRot() { return sigmaRot; }
+
+    /** Fixes parameters (by full index) at their start values; the rest are free. */
+    public void setFixed(boolean[] fix) {
+        if (fix.length != nFull) throw new IllegalArgumentException("fixed mask has " + fix.length + " entries, need " + nFull);
+        System.arraycopy(fix, 0, fixed, 0, nFull);
+        int c = 0;
+        for (boolean b : fix) if (!b) c++;
+        free = new int[c];
+        c = 0;
+        for (int i = 0; i < nFull; i++) if (!fix[i]) free[c++] = i;
+    }
+
+    public boolean[] fixedMask() { return fixed.clone(); }
+    public int[] freeIndices() { return free.clone(); }
+
+    /** The free part of a full vector. */
+    public double[] freeOf(double[] full) {
+        double[] x = new double[free.length];
+        for (int k = 0; k < free.length; k++) x[k] = full[free[k]];
+        return x;
+    }
+
+    /** The full vector: start values with the free part replaced. */
+    public double[] fullOf(double[] x) {
+        double[] full = start.clone();
+        for (int k = 0; k < free.length; k++) full[free[k]] = x[k];
+        return full;
+    }
+
+    // ------------------------------------------------------------------ LeastSquaresProblem (free view)
+
+    @Override public int parameterCount() { return free.length; }
+    @Override public int residualCount() { return m; }
+
+    @Override
+    public void evaluate(double[] x, double[] residuals, double[] jacobian) {
+        double[] full = fullOf(x);
+        evaluateFull(full, residuals, jacobian == null ? null : jFull);
+        if (jacobian != null) {
+            int nf = free.length;
+            for (int r = 0; r < m; r++) {
+                int src = r * nFull, dst = r * nf;
+                for (int k = 0; k < nf; k++) jacobian[dst + k] = jFull[src + free[k]];
+            }
+        }
+    }
+
+    @Override
+    public void retract(double[] x, double[] step, double[] out) {
+        for (int k = 0; k < x.length; k++) out[k] = x[k] + step[k];
+        // Rotation-vector parameters move on SO(3): R' = Exp(step) R, not w + step.
+        retractRotation(x, step, out, toolOff + 3, sixD);
+        retractRotation(x, step, out, instOff + 3, instrument);
+    }
+
+    private void retractRotation(double[] x, double[] step, double[] out, int fullIdx, boolean present) {
+        if (!present) return;
+        int k0 = Arrays.binarySearch(free, fullIdx);
+        int k1 = Arrays.binarySearch(free, fullIdx + 1);
+        int k2 = Arrays.binarySearch(free, fullIdx + 2);
+        if (k0 < 0 || k1 < 0 || k2 < 0) return; // a partly fixed rotation stays additive (tiny steps only)
+        double[] w = {x[k0], x[k1], x[k2]}, d = {step[k0], step[k1], step[k2]}, o = new double[3];
+        Rotations.leftCompose(w, 0, d, 0, o, 0);
+        out[k0] = o[0]; out[k1] = o[1]; out[k2] = o[2];
+    }
+
+    // ------------------------------------------------------------------ full evaluation
+
+    /**
+     * Residuals (weighted) and, when {@code jac} is not null, the full Jacobian (m x fullSize,
+     * row-major) at the full parameter vector.
+     */
+    public void evaluateFull(double[] full, double[] res, double[] jac) {
+        KinematicModel mdl = model.withParameterValues(Arrays.copyOf(full, nGeo));
+        double[] tool = {full[toolOff], full[toolOff + 1], full[toolOff + 2]};
+        double[] rft = new double[9];
+        Pose flangeTtool;
+        if (sixD) {
+            Rotations.exp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], rft);
+            flangeTtool = poseOf(rft, tool);
+        } else {
+            rft[0] = rft[4] = rft[8] = 1;
+            flangeTtool = Pose.translation(tool[0], tool[1], tool[2]);
+        }
+        double[] rib = new double[9];
+        double[] tib = new double[3];
+        if (instrument) {
+            Rotations.exp(full[instOff + 3], full[instOff + 4], full[instOff + 5], rib);
+            tib[0] = full[instOff]; tib[1] = full[instOff + 1]; tib[2] = full[instOff + 2];
+        } else rib[0] = rib[4] = rib[8] = 1;
+        double wp = 1 / sigmaPos, wr = 1 / sigmaRot;
+        int dof = model.dof();
+        double[] pbKin = new double[3];
+        double[] pb = new double[3], rbt = new double[9], rbf = new double[9], rib_rbf = new double[9],
+                rpred = new double[9], rmeas = new double[9], err = new double[9], e = new double[3];
+        double[] dTheta = new double[dof], dp = new double[3], qEff = new double[dof];
+        int rpp = rowsPerPose();
+        if (jac != null) Arrays.fill(jac, 0);
+        for (int i = 0; i < rows.size(); i++) {
+            Measurement row = rows.get(i);
+            double[] q = row.q();
+            double[][] dThetaDv = null;
+            if (!effects.isEmpty()) {
+                Arrays.fill(dTheta, 0);
+                dThetaDv = new double[effects.size()][];
+                for (int k = 0; k < effects.size(); k++) {
+                    int size = effStart[k + 1] - effStart[k];
+                    double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
+                    dThetaDv[k] = jac == null ? null : new double[dof * size];
+                    effects.get(k).jointDelta(v, row, dTheta, dThetaDv[k]);
+                }
+                double[] theta = mdl.theta(q);
+                for (int j = 0; j < dof; j++) theta[j] += dTheta[j];
+                qEff = mdl.q(theta);
+            } else qEff = q;
+            if (jac != null) mdl.poseJacobian(qEff, flangeTtool, ws, pose12, jg);
+            else {
+                // Residuals only: forward kinematics is enough (several times cheaper than the Jacobian).
+                mdl.flange(qEff, ws, flange12);
+                for (int a = 0; a < 3; a++) {
+                    double f0 = flange12[4 * a], f1 = flange12[4 * a + 1], f2 = flange12[4 * a + 2];
+                    for (int b = 0; b < 3; b++) pose12[4 * a + b] = f0 * rft[b] + f1 * rft[3 + b] + f2 * rft[6 + b];
+                    pose12[4 * a + 3] = f0 * tool[0] + f1 * tool[1] + f2 * tool[2] + flange12[4 * a + 3];
+                }
+            }
+            pb[0] = pose12[3]; pb[1] = pose12[7]; pb[2] = pose12[11];
+            rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
+            rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
+            rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
+            Rotations.mulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
+            double[][] dpDv = null;
+            double[] dpDpoint = null;
+            if (!effects.isEmpty()) {
+                Arrays.fill(dp, 0);
+                dpDpoint = new double[9];
+                dpDv = new double[effects.size()][];
+                for (int k = 0; k < effects.size(); k++) {
+                    int size = effStart[k + 1] - effStart[k];
+                    double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
+                    dpDv[k] = jac == null ? null : new double[3 * size];
+                    effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
+                }
+                System.arraycopy(pb, 0, pbKin, 0, 3);
+                pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
+            }
+            double px = rib[0] * pb[0] + rib[1] * pb[1] + rib[2] * pb[2] + tib[0];
+            double py = rib[3] * pb[0] + rib[4] * pb[1] + rib[5] * pb[2] + tib[1];
+            double pz = rib[6] * pb[0] + rib[7] * pb[1] + rib[8] * pb[2] + tib[2];
+            var meas = row.position();
+            int r0 = i * rpp;
+            res[r0] = (px - meas.x()) * wp;
+            res[r0 + 1] = (py - meas.y()) * wp;
+            res[r0 + 2] = (pz - meas.z()) * wp;
+            if (sixD) {
+                Rotations.mul(rib, rbt, rpred);
+                double[] oq = row.orientation();
+                quatToMatrix(oq, rmeas);
+                Rotations.mulT(rpred, rmeas, err);
+                Rotations.log(err, e, 0);
+                res[r0 + 3] = e[0] * wr;
+                res[r0 + 4] = e[1] * wr;
+                res[r0 + 5] = e[2] * wr;
+            }
+            if (jac == null) continue;
+            // geometry: R_ib * (∂p_base/∂k), R_ib * (∂ω_base/∂k)
+            for (int c = 0; c < nGeo; c++) {
+                double a0 = jg[c], a1 = jg[nGeo + c], a2 = jg[2 * nGeo + c];
+                jac[r0 * nFull + c] = (rib[0] * a0 + rib[1] * a1 + rib[2] * a2) * wp;
+                jac[(r0 + 1) * nFull + c] = (rib[3] * a0 + rib[4] * a1 + rib[5] * a2) * wp;
+                jac[(r0 + 2) * nFull + c] = (rib[6] * a0 + rib[7] * a1 + rib[8] * a2) * wp;
+                if (sixD) {
+                    double b0 = jg[3 * nGeo + c], b1 = jg[4 * nGeo + c], b2 = jg[5 * nGeo + c];
+                    jac[(r0 + 3) * nFull + c] = (rib[0] * b0 + rib[1] * b1 + rib[2] * b2) * wr;
+                    jac[(r0 + 4) * nFull + c] = (rib[3] * b0 + rib[4] * b1 + rib[5] * b2) * wr;
+                    jac[(r0 + 5) * nFull + c] = (rib[6] * b0 + rib[7] * b1 + rib[8] * b2) * wr;
+                }
+            }
+            // tool point: ∂p/∂t_ft = R_ib R_bf; tool rotation (6-D): ∂ε/∂φ = R_ib R_bf
+            Rotations.mul(rib, rbf, rib_rbf);
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) {
+                    jac[(r0 + a) * nFull + toolOff + b] = rib_rbf[3 * a + b] * wp;
+                    if (sixD) jac[(r0 + 3 + a) * nFull + toolOff + 3 + b] = rib_rbf[3 * a + b] * wr;
+                }
+            if (instrument) {
+                double qx = px - tib[0], qy = py - tib[1], qz = pz - tib[2]; // R_ib p_base
+                for (int a = 0; a < 3; a++) jac[(r0 + a) * nFull + instOff + a] = wp;
+                // ∂(Exp(δ) v)/∂δ = -[v]x
+                int c = instOff + 3;
+                jac[r0 * nFull + c + 1] = qz * wp;       jac[r0 * nFull + c + 2] = -qy * wp;
+                jac[(r0 + 1) * nFull + c] = -qz * wp;    jac[(r0 + 1) * nFull + c + 2] = qx * wp;
+                jac[(r0 + 2) * nFull + c] = qy * wp;     jac[(r0 + 2) * nFull + c + 1] = -qx * wp;
+                if (sixD) for (int a = 0; a < 3; a++) jac[(r0 + 3 + a) * nFull + c + a] = wr;
+            }
+            if (!effects.isEmpty()) {
+                // A position term that depends on the point itself scales every column that moves the point.
+                double[] g = dpDpoint;
+                boolean any = false;
+                for (double v : g) any |= v != 0;
+                if (any) {
+                    double[] a = new double[9], t = new double[9], ribT = new double[9];
+                    for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
+                    // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
+                    Rotations.mul(rib, a, t);
+                    Rotations.mulT(t, rib, ribT);
+                    int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
+                    double[] col = new double[3];
+                    for (int cIdx = 0; cIdx < effOff; cIdx++) {
+                        if (cIdx >= instStart && cIdx < instEnd) continue;
+                        for (int u = 0; u < 3; u++) col[u] = jac[(r0 + u) * nFull + cIdx];
+                        for (int u = 0; u < 3; u++)
+                            jac[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
+                    }
+                }
+                effectColumns(mdl, qEff, flangeTtool, pbKin, rib, dThetaDv, dpDv, g, jac, r0, wp, wr);
+            }
+            if (sixD) {
+                // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
+                double[] jinv = new double[9];
+                leftJacobianInverse(e, jinv);
+                double[] col = new double[3];
+                for (int cIdx = 0; cIdx < nFull; cIdx++) {
+                    for (int u = 0; u < 3; u++) col[u] = jac[(r0 + 3 + u) * nFull + cIdx];
+                    for (int u = 0; u < 3; u++)
+                        jac[(r0 + 3 + u) * nFull + cIdx] = jinv[3 * u] * col[0] + jinv[3 * u + 1] * col[1] + jinv[3 * u + 2] * col[2];
+                }
+            }
+        }
+    }
+
+    /** J_l⁻¹(e) = I − ½[e]x + (1/θ² − (1 + cos θ)/(2 θ sin θ)) [e]x² (SO(3) left Jacobian inverse). */
+    static void leftJacobianInverse(double[] e, double[] out) {
+        double th2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], th = Math.sqrt(th2);
+        double c = th < 1e-4 ? 1.0 / 12 + th2 / 720 : 1 / th2 - (1 + Math.cos(th)) / (2 * th * Math.sin(th));
+        double[] k = {0, -e[2], e[1], e[2], 0, -e[0], -e[1], e[0], 0};
+        double[] k2 = new double[9];
+        Rotations.mul(k, k, k2);
+        for (int u = 0; u < 9; u++) out[u] = (u % 4 == 0 ? 1 : 0) - 0.5 * k[u] + c * k2[u];
+    }
+
+    private void effectColumns(KinematicModel mdl, double[] qEff, Pose flangeTtool, double[] pb, double[] rib,
+                               double[][] dThetaDv, double[][] dpDv, double[] dpDpoint, double[] jac, int r0, double wp, double wr) {
+        int dof = mdl.dof();
+        double[][] jq = mdl.geometricJacobian(qEff); // flange origin velocity and angular velocity per q
+        Pose f = mdl.flange(qEff);
+        double ox = pb[0] - f.x(), oy = pb[1] - f.y(), oz = pb[2] - f.z();
+        // ∂(point, rotation)/∂θ_j = J_q · C⁻¹ e_j, with the point moved from the flange origin.
+        double[][] dth = new double[6][dof];
+        for (int j = 0; j < dof; j++) {
+            double[] cj = cInvCols[j];
+            double vx = 0, vy = 0, vz = 0, wx = 0, wy = 0, wz = 0;
+            for (int k = 0; k < dof; k++) {
+                double c = cj[k];
+                if (c == 0) continue;
+                vx += jq[0][k] * c; vy += jq[1][k] * c; vz += jq[2][k] * c;
+                wx += jq[3][k] * c; wy += jq[4][k] * c; wz += jq[5][k] * c;
+            }
+            dth[0][j] = vx + wy * oz - wz * oy;
+            dth[1][j] = vy + wz * ox - wx * oz;
+            dth[2][j] = vz + wx * oy - wy * ox;
+            dth[3][j] = wx; dth[4][j] = wy; dth[5][j] = wz;
+        }
+        for (int k = 0; k < effects.size(); k++) {
+            int size = effStart[k + 1] - effStart[k];
+            for (int c = 0; c < size; c++) {
+                double[] col = new double[6];
+                for (int a = 0; a < 6; a++) {
+                    double s = 0;
+                    for (int j = 0; j < dof; j++) s += dth[a][j] * dThetaDv[k][j * size + c];
+                    col[a] = s;
+                }
+                double c0 = col[0], c1 = col[1], c2 = col[2];
+                for (int a = 0; a < 3; a++)
+                    col[a] += dpDpoint[3 * a] * c0 + dpDpoint[3 * a + 1] * c1 + dpDpoint[3 * a + 2] * c2 + dpDv[k][a * size + c];
+                int colIdx = effStart[k] + c;
+                for (int a = 0; a < 3; a++) {
+                    jac[(r0 + a) * nFull + colIdx] = (rib[3 * a] * col[0] + rib[3 * a + 1] * col[1] + rib[3 * a + 2] * col[2]) * wp;
+                    if (sixD)
+                        jac[(r0 + 3 + a) * nFull + colIdx] = (rib[3 * a] * col[3] + rib[3 * a + 1] * col[4] + rib[3 * a + 2] * col[5]) * wr;
+                }
+            }
+        }
+    }
+
+    // ------------------------------------------------------------------ reading a solution
+
+    /** The kinematic model at a full parameter vector. */
+    public KinematicModel modelOf(double[] full) { return model.withParameterValues(Arrays.copyOf(full, nGeo)); }
+
+    /** flangeTtool at a full parameter vector (identity rotation for position-only data). */
+    public Pose toolOf(double[] full) {
+        double[] t = {full[toolOff], full[toolOff + 1], full[toolOff + 2]};
+        if (!sixD) return Pose.translation(t[0], t[1], t[2]);
+        double[] r = new double[9];
+        Rotations.exp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], r);
+        return poseOf(r, t);
+    }
+
+    /** instrumentTbase at a full parameter vector (identity when measuring in the base frame). */
+    public Pose instrumentOf(double[] full) {
+        if (!instrument) return Pose.IDENTITY;
+        double[] r = new double[9];
+        Rotations.exp(full[instOff + 3], full[instOff + 4], full[instOff + 5], r);
+        return poseOf(r, new double[] {full[instOff], full[instOff + 1], full[instOff + 2]});
+    }
+
+    static Pose poseOf(double[] r, double[] t) {
+        // Re-orthonormalise against rounding before the checked constructor.
+        return Pose.of(orthonormal(r), t[0], t[1], t[2]);
+    }
+
+    private static double[] orthonormal(double[] r) {
+        double[] x = {r[0], r[3], r[6]}, y = {r[1], r[4], r[7]};
+        double nx = Math.sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        for (int i = 0; i < 3; i++) x[i] /= nx;
+        double d = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+        for (int i = 0; i < 3; i++) y[i] -= d * x[i];
+        double ny = Math.sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
+        for (int i = 0; i < 3; i++) y[i] /= ny;
+        double[] z = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+        return new double[] {x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]};
+    }
+
+    static void quatToMatrix(double[] q, double[] m) {
+        double w = q[0], x = q[1], y = q[2], z = q[3];
+        m[0] = 1 - 2 * (y * y + z * z); m[1] = 2 * (x * y - z * w); m[2] = 2 * (x * z + y * w);
+        m[3] = 2 * (x * y + z * w); m[4] = 1 - 2 * (x * x + z * z); m[5] = 2 * (y * z - x * w);
+        m[6] = 2 * (x * z - y * w); m[7] = 2 * (y * z + x * w); m[8] = 1 - 2 * (x * x + y * y);
+    }
+}

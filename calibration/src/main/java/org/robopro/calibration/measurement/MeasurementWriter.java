@@ -1,0 +1,83 @@
+package org.robopro.calibration.measurement;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.robopro.kinematics.Units;
+import org.robopro.models.AtomicFiles;
+import org.robopro.models.JointType;
+
+/**
+ * Writes measurement files, version 1, in mm and degrees (metres for prismatic joints' values
+ * would break the one length unit, so prismatic joint values are written in mm). Optional columns
+ * are written when every row has them. Files are written atomically and never overwrite
+ * existing data unless asked.
+ */
+public final class MeasurementWriter {
+    private MeasurementWriter() { }
+
+    /** The file's text. {@code jointTypes} null treats every joint as revolute. */
+    public static String format(MeasurementSet set, List<JointType> jointTypes) {
+        StringBuilder sb = new StringBuilder();
+        sb.append("# robopro-measurements 1\n");
+        boolean wroteFrame = false;
+        for (Map.Entry<String, String> e : set.metadata().entrySet()) {
+            String k = e.getKey();
+            if (k.equals("length-unit") || k.equals("angle-unit") || k.equals("robopro-measurements 1")) continue;
+            if (k.equals("frame")) { wroteFrame = true; sb.append("# frame: ").append(set.frame()).append('\n'); continue; }
+            sb.append("# ").append(k).append(": ").append(e.getValue().replace('\n', ' ')).append('\n');
+        }
+        if (!wroteFrame) sb.append("# frame: ").append(set.frame()).append('\n');
+        sb.append("# length-unit: mm\n# angle-unit: deg\n");
+        int dof = set.dof();
+        boolean o = set.hasOrientation(), d = set.hasDirections(), t = set.hasTime(), te = set.hasTemperature(),
+                p = set.hasPayload(), s = set.hasSplit();
+        sb.append("pose");
+        for (int k = 1; k <= dof; k++) sb.append(",q").append(k);
+        sb.append(",x,y,z");
+        if (o) sb.append(",qw,qx,qy,qz");
+        if (d) for (int k = 1; k <= dof; k++) sb.append(",dir").append(k);
+        if (t) sb.append(",time_s");
+        if (te) sb.append(",temp_c");
+        if (p) sb.append(",payload_kg");
+        if (s) sb.append(",set");
+        sb.append('\n');
+        for (Measurement m : set.rows()) {
+            String id = m.poseId();
+            if (id.contains(",") || id.contains("\n") || id.startsWith("#"))
+                throw new IllegalArgumentException("pose id '" + id + "' cannot be written (comma, newline or leading #)");
+            sb.append(id);
+            for (int k = 0; k < dof; k++) {
+                boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
+                sb.append(',').append(num(prismatic ? Units.mToMm(m.q(k)) : Units.radToDeg(m.q(k)), 9));
+            }
+            sb.append(',').append(num(Units.mToMm(m.position().x()), 6))
+              .append(',').append(num(Units.mToMm(m.position().y()), 6))
+              .append(',').append(num(Units.mToMm(m.position().z()), 6));
+            if (o) for (double v : m.orientation()) sb.append(',').append(num(v, 12));
+            if (d) for (int v : m.directions()) sb.append(',').append(v);
+            if (t) sb.append(',').append(num(m.timeS(), 3));
+            if (te) sb.append(',').append(num(m.tempC(), 3));
+            if (p) sb.append(',').append(num(m.payloadKg(), 3));
+            if (s) sb.append(',').append(m.set().fileName());
+            sb.append('\n');
+        }
+        return sb.toString();
+    }
+
+    public static void write(MeasurementSet set, List<JointType> jointTypes, Path file, boolean overwrite) throws IOException {
+        AtomicFiles.writeString(file, format(set, jointTypes), overwrite);
+    }
+
+    private static String num(double v, int decimals) {
+        String s = String.format(Locale.ROOT, "%." + decimals + "f", v);
+        // Trim trailing zeros so files stay readable; keep at least one digit after the point.
+        int end = s.length();
+        while (end > 0 && s.charAt(end - 1) == '0') end--;
+        if (end > 0 && s.charAt(end - 1) == '.') end++;
+        s = s.substring(0, end);
+        return s.equals("-0.0") ? "0.0" : s;
+    }
+}

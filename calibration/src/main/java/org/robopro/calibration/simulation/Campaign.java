@@ -1,0 +1,17 @@
+package org.robopro.calibration.simulation;
+
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.kinematics.KinematicModel;
+
+/**
+ * A simulated campaign: the nominal model, the true robot, the settings, and what was measured.
+ *
+ * @param nominal         the model the calibration starts from
+ * @param truth           the simulated real robot
+ * @param settings        how it was made
+ * @param measurements    training measurements
+ * @param validation      separate validation measurements, or null
+ * @param nominalErrorRmsM RMS flange position error of the nominal model against the truth over the training poses, m
+ */
+public record Campaign(KinematicModel nominal, TrueRobot truth, SimulationSettings settings, MeasurementSet measurements,
+                       MeasurementSet validation, double nominalErrorRmsM) { }

@@ -1,0 +1,189 @@
+package org.robopro.calibration.simulation;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import org.robopro.calibration.JointEffect;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.ModelParameter;
+import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Units;
+import org.robopro.models.AtomicFiles;
+import org.robopro.models.Vec3;
+
+/**
+ * Simulates a calibration campaign (issue 3): a "true" robot is the nominal model with random
+ * errors on its identifiable parameter vector (so the truth is exactly representable and
+ * parameters compare one to one), scaled so the nominal model's RMS flange error is
+ * {@link SimulationSettings#errorM()}; a measured point on the flange with its own error; an
+ * instrument 2.5–3.5 m away at a random heading (unless frame: base); Gaussian noise; poses by
+ * {@link PoseSampler}'s rule. Effects (diagnosis) are added through {@link JointEffect}s.
+ */
+public final class CampaignSimulator {
+    private CampaignSimulator() { }
+
+    public static Campaign simulate(KinematicModel nominal, SimulationSettings s) {
+        return simulate(nominal, s, List.of(), (rng, q, i) -> PoseConditions.NONE);
+    }
+
+    /** Supplies the conditions of pose i (time, temperature, payload, directions) for effect studies. */
+    @FunctionalInterface
+    public interface ConditionsSource {
+        PoseConditions conditions(Random rng, double[] q, int index);
+    }
+
+    /** A campaign with non-geometric effects on the true robot and per-pose conditions. */
+    public static Campaign simulate(KinematicModel nominal, SimulationSettings s, List<JointEffect> effects,
+                                    ConditionsSource conditions) {
+        Random rng = new Random(s.seed());
+        PoseSampler sampler = new PoseSampler(nominal);
+        List<double[]> sizing = sampler.sample(100, new Random(s.seed() ^ 0x5DEECE66DL));
+        KinematicModel trueModel = perturb(nominal, s.errorM(), sizing, rng);
+
+        Vec3 target = s.nominalTarget().plus(new Vec3(rng.nextGaussian(), rng.nextGaussian(), rng.nextGaussian())
+                .times(s.targetErrorM()));
+        Pose flangeTtool = Pose.translation(target);
+        if (s.sixD()) {
+            Vec3 axis = new Vec3(rng.nextGaussian(), rng.nextGaussian(), rng.nextGaussian());
+            flangeTtool = flangeTtool.times(Pose.rotAxis(axis, Math.toRadians(0.5) * rng.nextGaussian()));
+        }
+        Pose instrumentTbase = Pose.IDENTITY;
+        if (!s.baseFrame()) {
+            double heading = 2 * Math.PI * rng.nextDouble();
+            double dist = 2.5 + rng.nextDouble();
+            Pose baseTinstrument = Pose.translation(dist * Math.cos(heading), dist * Math.sin(heading), rng.nextDouble())
+                    .times(Pose.rotZ(2 * Math.PI * rng.nextDouble()))
+                    .times(Pose.rotX(Math.toRadians(5) * (2 * rng.nextDouble() - 1)))
+                    .times(Pose.rotY(Math.toRadians(5) * (2 * rng.nextDouble() - 1)));
+            instrumentTbase = baseTinstrument.inverse();
+        }
+        TrueRobot truth = new TrueRobot(trueModel, flangeTtool, instrumentTbase, s.sigmaM(), s.sixD() ? s.sigmaRotRad() : 0, effects);
+
+        List<double[]> qs = sampler.sample(s.poses() + s.validatePoses(), rng);
+        List<Measurement> train = new ArrayList<>(), validate = new ArrayList<>();
+        double sumSq = 0;
+        for (int i = 0; i < qs.size(); i++) {
+            double[] q = qs.get(i);
+            PoseConditions c = conditions.conditions(rng, q, i);
+            Vec3 p = truth.measure(q, c, rng);
+            double[] o = s.sixD() ? truth.measureOrientation(q, c, rng) : null;
+            Measurement m = new Measurement(Integer.toString(i + 1), q, p, o, c.directions(), c.timeS(), c.tempC(),
+                    c.payloadKg(), null, 0);
+            if (i < s.poses()) {
+                train.add(m);
+                sumSq += Math.pow(nominal.flange(q).distanceTo(trueModel.flange(q)), 2);
+            } else validate.add(m);
+        }
+        Map<String, String> meta = new LinkedHashMap<>();
+        meta.put("robot", nominal.description().name());
+        meta.put("frame", s.baseFrame() ? MeasurementSet.BASE_FRAME : "tracker");
+        meta.put("instrument", String.format(java.util.Locale.ROOT, "simulated, sigma %.4f mm, seed %d",
+                Units.mToMm(s.sigmaM()), s.seed()));
+        String frame = meta.get("frame");
+        MeasurementSet trainSet = new MeasurementSet("simulated", meta, frame, train);
+        MeasurementSet validateSet = validate.isEmpty() ? null : new MeasurementSet("simulated-validate", meta, frame, validate);
+        return new Campaign(nominal, truth, s, trainSet, validateSet, Math.sqrt(sumSq / Math.max(1, s.poses())));
+    }
+
+    /**
+     * The nominal model with Gaussian errors on every identifiable parameter (1 mm : 1 mrad),
+     * scaled so that the RMS flange position error over {@code poses} is {@code errorM}.
+     */
+    public static KinematicModel perturb(KinematicModel nominal, double errorM, List<double[]> poses, Random rng) {
+        double[] p0 = nominal.parameterValues();
+        List<ModelParameter> ps = nominal.parameters();
+        double[] dir = new double[p0.length];
+        for (int i = 0; i < dir.length; i++) dir[i] = rng.nextGaussian() * 1e-3;
+        if (errorM == 0) return nominal;
+        double k = errorM / 1e-3 / Math.sqrt(ps.size()); // first guess
+        KinematicModel m = nominal;
+        for (int iter = 0; iter < 4; iter++) {
+            double[] p = p0.clone();
+            for (int i = 0; i < p.length; i++) p[i] += k * dir[i];
+            m = nominal.withParameterValues(p);
+            double rms = flangeRms(nominal, m, poses);
+            if (!(rms > 0)) break;
+            k *= errorM / rms;
+        }
+        double[] p = p0.clone();
+        for (int i = 0; i < p.length; i++) p[i] += k * dir[i];
+        return nominal.withParameterValues(p);
+    }
+
+    /** RMS distance between two models' flange origins over poses, m. */
+    public static double flangeRms(KinematicModel a, KinematicModel b, List<double[]> poses) {
+        double s = 0;
+        for (double[] q : poses) s += Math.pow(a.flange(q).distanceTo(b.flange(q)), 2);
+        return Math.sqrt(s / poses.size());
+    }
+
+    /**
+     * The truth as JSON (mm, deg, quaternions w-first): true parameters next to the nominal ones,
+     * the instrument pose, the measured point and tool frame, noise, seed, and the nominal error.
+     */
+    public static String truthJson(Campaign c) {
+        Map<String, Object> root = new LinkedHashMap<>();
+        SimulationSettings s = c.settings();
+        root.put("robot", c.nominal().description().name());
+        root.put("seed", s.seed());
+        root.put("sigma_mm", Units.mToMm(s.sigmaM()));
+        root.put("sigma_rot_deg", Units.radToDeg(c.truth().sigmaRotRad()));
+        root.put("nominal_flange_rms_mm", Units.mToMm(c.nominalErrorRmsM()));
+        root.put("frame", c.measurements().frame());
+        root.put("instrument_T_base", poseJson(c.truth().instrumentTbase()));
+        root.put("target_in_flange_mm", vecMm(c.truth().flangeTtool().position()));
+        root.put("flange_T_tool", poseJson(c.truth().flangeTtool()));
+        List<Map<String, Object>> params = new ArrayList<>();
+        double[] nom = c.nominal().parameterValues(), tru = c.truth().model().parameterValues();
+        List<ModelParameter> ps = c.nominal().parameters();
+        for (int i = 0; i < ps.size(); i++) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            boolean t = ps.get(i).kind() == ModelParameter.Kind.TRANSLATION;
+            e.put("name", ps.get(i).name());
+            e.put("unit", t ? "mm" : "deg");
+            e.put("nominal", t ? Units.mToMm(nom[i]) : Units.radToDeg(nom[i]));
+            e.put("true", t ? Units.mToMm(tru[i]) : Units.radToDeg(tru[i]));
+            e.put("true_si", tru[i]);
+            params.add(e);
+        }
+        root.put("parameters", params);
+        List<String> eff = new ArrayList<>();
+        for (JointEffect e : c.truth().effects()) eff.add(e.name());
+        root.put("effects", eff);
+        try {
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root);
+        } catch (IOException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    public static void writeTruth(Campaign c, Path file, boolean overwrite) throws IOException {
+        AtomicFiles.writeString(file, truthJson(c) + "\n", overwrite);
+    }
+
+    static Map<String, Object> poseJson(Pose p) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("x_mm", Units.mToMm(p.x()));
+        m.put("y_mm", Units.mToMm(p.y()));
+        m.put("z_mm", Units.mToMm(p.z()));
+        double[] q = p.quaternion();
+        m.put("qw", q[0]);
+        m.put("qx", q[1]);
+        m.put("qy", q[2]);
+        m.put("qz", q[3]);
+        return m;
+    }
+
+    static List<Double> vecMm(Vec3 v) {
+        return List.of(Units.mToMm(v.x()), Units.mToMm(v.y()), Units.mToMm(v.z()));
+    }
+}
