@@ -269,6 +269,141 @@ public final class Workbench {
         return imp;
     }
 
+    // ---- controller link -----------------------------------------------------------------------
+
+    private volatile ControllerSession controller;
+    private final java.util.concurrent.ExecutorService background = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "workbench-controller");
+        t.setDaemon(true);
+        return t;
+    });
+    private final List<Runnable> controllerListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    public Optional<ControllerSession> controller() { return Optional.ofNullable(controller); }
+
+    /** Told (on any thread) when the controller link opens or closes. */
+    public void addControllerListener(Runnable r) { controllerListeners.add(r); }
+
+    /**
+     * Connects off the UI thread: to {@code address} ("host:port" or a serial device), or with
+     * null/blank to a simulated controller started for the cell's robot.
+     */
+    public java.util.concurrent.CompletableFuture<ControllerSession> connectController(String address) {
+        return java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+            disconnectNow();
+            try {
+                ControllerSession s = address == null || address.isBlank()
+                        ? ControllerSession.startSimulator(model.robotRef(), 30_000, this::log)
+                        : ControllerSession.connect(address.trim(), this::log);
+                controller = s;
+                log("Connected to " + s.description() + (s.robotName().isEmpty() ? "" : " (robot " + s.robotName() + ")"));
+                return s;
+            } catch (IOException e) {
+                throw new java.util.concurrent.CompletionException(e);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new java.util.concurrent.CompletionException(e);
+            } finally {
+                controllerListeners.forEach(Runnable::run);
+            }
+        }, background).whenComplete((s, e) -> { if (e != null) log("Connect failed: " + rootMessage(e)); });
+    }
+
+    private void disconnectNow() {
+        ControllerSession s = controller;
+        controller = null;
+        if (s != null) {
+            s.close();
+            model.setGhostQ(null);
+            log("Disconnected from " + s.description());
+        }
+    }
+
+    public java.util.concurrent.CompletableFuture<Void> disconnectController() {
+        return java.util.concurrent.CompletableFuture.runAsync(() -> {
+            disconnectNow();
+            controllerListeners.forEach(Runnable::run);
+        }, background);
+    }
+
+    private ControllerSession needController() {
+        ControllerSession s = controller;
+        if (s == null) throw new IllegalStateException("not connected to a controller (Controller > Connect)");
+        return s;
+    }
+
+    static String rootMessage(Throwable e) {
+        while ((e instanceof java.util.concurrent.CompletionException || e instanceof java.util.concurrent.ExecutionException) && e.getCause() != null)
+            e = e.getCause();
+        return e.getMessage() == null ? e.toString() : e.getMessage();
+    }
+
+    /** The RAPID program name used on the controller: the project's name, or "Workbench". */
+    public String controllerProgramName() {
+        return projectFile == null ? "Workbench" : moduleName(Path.of(projectFile.getFileName().toString().replaceFirst("\\.robopro\\.json$", ".mod")));
+    }
+
+    /** Downloads the program (RAPID written by the programs module) to the controller. */
+    public java.util.concurrent.CompletableFuture<org.robopro.comms.ProgramInfo> downloadProgram() {
+        ControllerSession s = needController();
+        String name = controllerProgramName();
+        String text = RapidWriter.export(ProgramModule.toRapid(model, name)).text();
+        return s.download(name, text).whenComplete((info, e) -> log(e == null
+                ? String.format(java.util.Locale.ROOT, "Downloaded %s: %d bytes, CRC-32 %08x", info.name(), info.length(), info.crc32())
+                : "Download failed: " + rootMessage(e)));
+    }
+
+    /** Uploads program {@code name} and makes it the workbench program (on the Swing thread). */
+    public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name) {
+        ControllerSession s = needController();
+        return s.upload(name).thenApply(text -> {
+            ParsedModule parsed = RapidParser.parseDetailed(text, "controller:" + name);
+            ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
+            onEdt(() -> model.replaceProgram(imp));
+            for (String n : imp.notes()) log("Upload: " + n);
+            log("Uploaded " + name + " (" + text.length() + " bytes): " + imp.targets().size() + " targets, "
+                    + imp.program().size() + " instructions");
+            return imp;
+        }).whenComplete((imp, e) -> { if (e != null) log("Upload failed: " + rootMessage(e)); });
+    }
+
+    /**
+     * Runs the downloaded program on the controller, waits (polling its status) until it
+     * stops, and shows where the real robot ended as the ghost.
+     */
+    public java.util.concurrent.CompletableFuture<org.robopro.comms.ControllerStatus> runProgram() {
+        ControllerSession s = needController();
+        String name = controllerProgramName();
+        return s.run(name).thenApplyAsync(v -> {
+            log("Running " + name + " on the controller");
+            long end = System.currentTimeMillis() + 120_000;
+            org.robopro.comms.ControllerStatus st = s.status().join();
+            while (st.state() == org.robopro.comms.ControllerStatus.State.RUNNING && System.currentTimeMillis() < end) {
+                try {
+                    Thread.sleep(100);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    break;
+                }
+                st = s.status().join();
+            }
+            log("Controller status after the run: " + st);
+            model.setGhostQ(s.readJoints().join());
+            return st;
+        }, background).whenComplete((st, e) -> { if (e != null) log("Run failed: " + rootMessage(e)); });
+    }
+
+    /** Reads the real robot's joints and shows them as the ghost robot. */
+    public java.util.concurrent.CompletableFuture<double[]> readRobotPosition() {
+        return needController().readJoints().whenComplete((q, e) -> {
+            if (e != null) { log("Read position failed: " + rootMessage(e)); return; }
+            model.setGhostQ(q);
+            StringBuilder b = new StringBuilder("Real robot joints (deg):");
+            for (double v : q) b.append(String.format(java.util.Locale.ROOT, " %.3f", Math.toDegrees(v)));
+            log(b.toString());
+        });
+    }
+
     // ---- cell layout -------------------------------------------------------------------------
 
     public CellObject addObject(CellObject.Kind kind) {
@@ -389,6 +524,8 @@ public final class Workbench {
     /** Stops rendering, closes the window, removes the autosave of a saved project. */
     public void close() {
         if (autosave != null) autosave.stop();
+        disconnectNow();
+        background.shutdownNow();
         try {
             app.stop(true);
         } catch (RuntimeException e) {

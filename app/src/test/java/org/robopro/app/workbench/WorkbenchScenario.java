@@ -184,7 +184,40 @@ public final class WorkbenchScenario {
         r.setProperty("afterDamagedTargets", String.valueOf(wb.model().targets().size()));
         r.setProperty("projectFile", wb.projectFile().map(Path::toString).orElse(""));
         r.setProperty("fps", String.valueOf(wb.app().fps()));
+        controller(wb, out, r);
         wizard(wb, out, r);
+    }
+
+    /**
+     * Controller menu against the simulated controller: connect (starts controller-sim),
+     * download, run, read the real robot's joints (ghost), upload, disconnect.
+     */
+    static void controller(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        r.setProperty("downloadEnabledBefore", String.valueOf(frame.action("download").isEnabled()));
+        var s = wb.connectController(null).get(60, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("controllerRobot", s.robotName());
+        Thread.sleep(200); // the enable/disable runs on the Swing thread
+        Workbench.onEdt(() -> r.setProperty("downloadEnabledAfter", String.valueOf(frame.action("download").isEnabled())));
+        var info = wb.downloadProgram().get(30, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("downloadedName", info.name());
+        r.setProperty("downloadedLength", String.valueOf(info.length()));
+        var st = wb.runProgram().get(60, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("runState", st.state().name());
+        double[] ghost = wb.model().ghostQ();
+        Pose last = wb.model().target(wb.model().program().get(wb.model().program().size() - 1).target()).orElseThrow().worldTtcp();
+        r.setProperty("ghostToLastTargetMm", String.valueOf(1000 * wb.model().worldTtcp(ghost).distanceTo(last)));
+        Workbench.onEdt(() -> {
+            frame.jogPanel().setJointDegrees(0, -35);
+            frame.jogPanel().setJointDegrees(1, 0);
+        });
+        wb.screenshot(out.resolve("06-controller.png"));
+        var imp = wb.uploadProgram(info.name()).get(30, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
+        r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
+        r.setProperty("controllerLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Controller:")).toList()));
+        wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
     }
 
     /**

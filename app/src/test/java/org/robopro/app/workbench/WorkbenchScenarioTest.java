@@ -81,6 +81,18 @@ class WorkbenchScenarioTest {
         return s.size();
     }
 
+    /** Pixels of the translucent blue ghost robot. */
+    static int blueCount(BufferedImage img) {
+        int hit = 0;
+        for (int y = 60; y < Math.min(460, img.getHeight()); y++)
+            for (int x = 230; x < Math.min(940, img.getWidth()); x++) {
+                int c = img.getRGB(x, y);
+                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+                if (b > r + 50 && b > g + 20) hit++;
+            }
+        return hit;
+    }
+
     static int redCount(BufferedImage img) {
         int hit = 0;
         for (int y = 0; y < img.getHeight(); y++)
@@ -142,6 +154,21 @@ class WorkbenchScenarioTest {
         assertTrue(r.getProperty("damagedField").endsWith("speed_mm_s"), r.getProperty("damagedField"));
         assertEquals("3", r.getProperty("afterDamagedTargets"), "a damaged project must not disturb the open one");
         assertTrue(r.getProperty("projectFile").endsWith("cell.robopro.json"));
+
+        assertEquals("false", r.getProperty("downloadEnabledBefore"), "controller actions wait for a connection");
+        assertEquals("true", r.getProperty("downloadEnabledAfter"));
+        assertEquals("irb2000", r.getProperty("controllerRobot"));
+        assertEquals("cell", r.getProperty("downloadedName"), "the program is named after the project file");
+        assertTrue(Integer.parseInt(r.getProperty("downloadedLength")) > 300, r.getProperty("downloadedLength"));
+        assertEquals("IDLE", r.getProperty("runState"), r.getProperty("controllerLog"));
+        assertEquals(0, Double.parseDouble(r.getProperty("ghostToLastTargetMm")), 0.05,
+                "after the run the real robot's joints put the TCP at the program's last target");
+        assertEquals("4", r.getProperty("uploadedInstructions"));
+        assertEquals("4", r.getProperty("programAfterUpload"));
+        assertTrue(r.getProperty("controllerLog").contains("succeeded"), r.getProperty("controllerLog"));
+        assertEquals("false", r.getProperty("ghostAfterDisconnect"));
+        BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
+        assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");
 
         assertEquals("6", r.getProperty("wizardJoints"));
         assertEquals("true", r.getProperty("wizardFirstOk"));

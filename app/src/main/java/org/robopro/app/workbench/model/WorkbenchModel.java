@@ -43,6 +43,8 @@ public final class WorkbenchModel {
     private volatile boolean dirty;
     private String activeWorkObject = Target.WOBJ0;
     private volatile ModelPreview preview;
+    private volatile double[] ghostQ;
+    private final AtomicLong ghostVersion = new AtomicLong();
     private ProgramRun run;
 
     public WorkbenchModel(String robotRef, RobotDescription robot) {
@@ -284,6 +286,17 @@ public final class WorkbenchModel {
     public void setPreview(ModelPreview p) {
         preview = p;
         fire(Change.VIEW);
+    }
+
+    /** Joint values read from the real controller, drawn as a ghost robot; null when none. A copy. */
+    public double[] ghostQ() { double[] g = ghostQ; return g == null ? null : g.clone(); }
+
+    public long ghostVersion() { return ghostVersion.get(); }
+
+    public void setGhostQ(double[] q) {
+        ghostQ = q == null ? null : q.clone();
+        ghostVersion.incrementAndGet();
+        for (Listener l : listeners) l.changed(Change.JOINTS);
     }
 
     /** The work object new targets are taught in ("wobj0": the world). */

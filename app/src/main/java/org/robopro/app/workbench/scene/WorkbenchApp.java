@@ -73,18 +73,20 @@ public final class WorkbenchApp extends SimpleApplication {
         // robopro's scene is z-up; jME's world is y-up.
         world.rotate(-FastMath.HALF_PI, 0, 0);
         rootNode.attachChild(world);
-        robotState = new RobotState(model, world, path -> {
+        java.util.function.Function<String, Path> robotMeshes = path -> {
             // Robot meshes are relative to the robot file; shipped robots (a name, not a path) have none on disk.
             String ref = model.robotRef();
             boolean isFile = ref.contains("/") || ref.contains("\\") || ref.endsWith(".json");
             if (!isFile) return null;
             Path robotFile = meshResolver.apply(ref);
             return robotFile.toAbsolutePath().getParent().resolve(path);
-        });
+        };
+        robotState = new RobotState(model, world, robotMeshes);
+        RobotState ghostState = new RobotState(model, world, robotMeshes, true);
         pathState = new PathState(model, world);
         previewState = new PreviewState(model, world);
         stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
-                pathState, previewState, cameraState, new SelectionState(model, world, rootNode));
+                pathState, previewState, ghostState, cameraState, new SelectionState(model, world, rootNode));
         windowStartNanos = System.nanoTime();
     }
 

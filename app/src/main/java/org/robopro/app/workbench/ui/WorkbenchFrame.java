@@ -54,7 +54,6 @@ import org.robopro.kinematics.Pose;
  * drive the same code paths as a user.
  */
 public final class WorkbenchFrame extends JFrame {
-    private static final String NEEDS_COMMS = "Needs the controller link (comms module, issue 5), not merged into the workbench yet";
     private static final String NEEDS_CAL = "Needs the calibration and diagnosis modules (issues 3 and 4), not merged into the workbench yet";
 
     private final Workbench wb;
@@ -250,6 +249,13 @@ public final class WorkbenchFrame extends JFrame {
         return a;
     }
 
+    /** Controller actions are enabled only while connected. */
+    private void controllerChanged() {
+        boolean on = wb.controller().isPresent();
+        for (String id : new String[] {"disconnect", "download", "upload", "run", "read-position"})
+            if (actions.containsKey(id)) action(id).setEnabled(on);
+    }
+
     private Action disabled(String id, String name, String tooltip) {
         Action a = def(id, name, null, e -> { });
         a.setEnabled(false);
@@ -333,11 +339,21 @@ public final class WorkbenchFrame extends JFrame {
         def("add-movel", "Add MoveL", null, e -> program.addMove(Instruction.Type.MOVEL));
         def("add-movec", "Add MoveC (through the target taught before)", null, e -> program.addMove(Instruction.Type.MOVEC));
         def("check", "Check program", "ctrl K", e -> program.check());
-        disabled("connect", "Connect to controller...", NEEDS_COMMS);
-        disabled("download", "Download program", NEEDS_COMMS);
-        disabled("upload", "Upload program", NEEDS_COMMS);
-        disabled("run", "Run on controller", NEEDS_COMMS);
-        disabled("read-position", "Read robot position", NEEDS_COMMS);
+        def("connect", "Connect to controller...", null, e -> {
+            String a = JOptionPane.showInputDialog(this, "Controller address: host:port (TCP) or a serial device.\n"
+                    + "Leave empty to start the simulated controller.", "");
+            if (a != null) wb.connectController(a);
+        });
+        def("disconnect", "Disconnect", null, e -> wb.disconnectController());
+        def("download", "Download program", null, e -> wb.downloadProgram());
+        def("upload", "Upload program...", null, e -> {
+            String n = JOptionPane.showInputDialog(this, "Program name on the controller:", wb.controllerProgramName());
+            if (n != null && !n.isBlank()) wb.uploadProgram(n.trim());
+        });
+        def("run", "Run on controller", null, e -> wb.runProgram());
+        def("read-position", "Read robot position", null, e -> wb.readRobotPosition());
+        wb.addControllerListener(() -> SwingUtilities.invokeLater(this::controllerChanged));
+        controllerChanged();
         disabled("calibration", "Calibration panel...", NEEDS_CAL);
         def("robot-wizard", "Robot model wizard (Fig. 7)...", null, e -> openWizard());
         def("about", "About", null, e -> JOptionPane.showMessageDialog(this,
@@ -366,7 +382,7 @@ public final class WorkbenchFrame extends JFrame {
         bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
         bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
         bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", "add-movec", null, "check", "import-rapid", "export-rapid"));
-        bar.add(menu("Controller", KeyEvent.VK_R, "connect", "download", "upload", "run", "read-position"));
+        bar.add(menu("Controller", KeyEvent.VK_R, "connect", "disconnect", null, "download", "upload", "run", null, "read-position"));
         bar.add(menu("Calibration", KeyEvent.VK_A, "calibration"));
         bar.add(menu("Help", KeyEvent.VK_H, "about"));
         return bar;
