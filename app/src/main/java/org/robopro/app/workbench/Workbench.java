@@ -246,6 +246,20 @@ public final class Workbench {
      */
     public String exportRapid(Path file, boolean overwrite) throws IOException {
         RapidModule module = ProgramModule.toRapid(model, moduleName(file));
+        var cal = calibratedModel;
+        var nominal = model.kinematics().kinematicModel();
+        if (cal != null && nominal.isPresent()) {
+            var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
+                    org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
+            module = out.module();
+            double max = 0;
+            for (var c : out.corrections()) {
+                max = Math.max(max, c.shiftM());
+                if (!"converged".equals(c.status())) log("Compensation: " + c);
+            }
+            log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the calibrated model (largest shift %.3f mm)",
+                    out.corrections().size(), max * 1e3));
+        }
         RapidExport ex = RapidWriter.export(module);
         AtomicFiles.writeString(file, ex.text(), overwrite);
         for (RapidExport.Rename r : ex.renames()) log("RAPID export renamed " + r);
@@ -402,6 +416,65 @@ public final class Workbench {
             for (double v : q) b.append(String.format(java.util.Locale.ROOT, " %.3f", Math.toDegrees(v)));
             log(b.toString());
         });
+    }
+
+    // ---- calibration ---------------------------------------------------------------------------
+
+    private volatile org.robopro.kinematics.KinematicModel calibratedModel;
+
+    /** The applied calibrated model (RAPID export is compensated with it), if any. */
+    public Optional<org.robopro.kinematics.KinematicModel> calibratedModel() { return Optional.ofNullable(calibratedModel); }
+
+    /** Training and validation sets of a measurement file: its set column, else every 5th pose held out. */
+    public record Measurements(Path file, org.robopro.calibration.measurement.MeasurementSet train,
+                               org.robopro.calibration.measurement.MeasurementSet validate) { }
+
+    public Measurements loadMeasurements(Path file) throws IOException {
+        var all = org.robopro.calibration.measurement.MeasurementReader.read(file, model.robot());
+        if (all.hasSplit()) {
+            var v = all.split(org.robopro.calibration.measurement.Measurement.Split.VALIDATE);
+            return new Measurements(file, all.split(org.robopro.calibration.measurement.Measurement.Split.TRAIN), v.size() == 0 ? null : v);
+        }
+        List<org.robopro.calibration.measurement.Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) (i % 5 == 4 ? va : tr).add(all.rows().get(i));
+        return new Measurements(file, all.withRows(tr), va.isEmpty() ? null : all.withRows(va));
+    }
+
+    /**
+     * Calibrates the cell's robot from measurements (blocking: run it off the UI thread).
+     * Throws CancellationException when {@code cancel} fires.
+     */
+    public org.robopro.calibration.identification.CalibrationResult calibrate(Measurements m, org.robopro.calibration.Cancellation cancel,
+                                                                            org.robopro.calibration.Progress progress) {
+        var nominal = org.robopro.kinematics.KinematicModel.build(model.robot());
+        var o = org.robopro.calibration.identification.Calibrator.Options.defaults()
+                .withInitialTool(Pose.translation(0, 0, 0.1)).withCancel(cancel).withProgress(progress);
+        var r = org.robopro.calibration.identification.Calibrator.calibrate(nominal, m.train(), m.validate(), o);
+        log(String.format(java.util.Locale.ROOT, "Calibrated from %d poses: RMS %.4f mm -> %.4f mm%s", r.train().size(),
+                r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3, m.validate() == null ? ""
+                        : String.format(java.util.Locale.ROOT, "; validation %.4f mm -> %.4f mm", r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3)));
+        return r;
+    }
+
+    /**
+     * Applies a calibration: writes the calibrated robot file (refusing to replace one unless
+     * {@code overwrite}), records it as the project's calibration reference and compensates RAPID
+     * exports with it from now on (seed paper Fig. 5; the controller keeps the nominal model).
+     */
+    public void applyCalibration(org.robopro.calibration.identification.CalibrationResult r, Path robotFile, String source, boolean overwrite) {
+        java.util.Map<String, String> prov = new java.util.LinkedHashMap<>(model.robot().provenance());
+        prov.put("calibrated-from", source);
+        prov.put("calibrated-nominal", model.robot().name());
+        prov.put("calibration-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", r.trainRmsM() * 1e3));
+        org.robopro.models.RobotLibrary.write(r.calibrated().toDescription().withProvenance(prov), robotFile, overwrite);
+        calibratedModel = r.calibrated();
+        model.setCalibrationReference(robotFile.toString());
+        log("Applied the calibrated model " + robotFile + ": RAPID exports are compensated with it");
+    }
+
+    public void clearCalibration() {
+        calibratedModel = null;
+        log("Calibration no longer applied: RAPID exports are nominal");
     }
 
     // ---- cell layout -------------------------------------------------------------------------

@@ -185,7 +185,70 @@ public final class WorkbenchScenario {
         r.setProperty("projectFile", wb.projectFile().map(Path::toString).orElse(""));
         r.setProperty("fps", String.valueOf(wb.app().fps()));
         controller(wb, out, r);
+        calibration(wb, out, r);
         wizard(wb, out, r);
+    }
+
+    /**
+     * Calibration panel: a simulated campaign (robopro simulate), a cancelled run, a full run in
+     * the background, RMS before/after and effects shown, the calibrated model applied so the
+     * RAPID export is compensated.
+     */
+    static void calibration(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        Path sim = out.resolve("campaign");
+        int code = new picocli.CommandLine(new org.robopro.app.cli.RoboproCommand()).execute("simulate", "--robot", "irb2000",
+                "--poses", "60", "--sigma", "0.02", "--seed", "11", "--out", sim.toString(), "--force");
+        r.setProperty("simulateExit", String.valueOf(code));
+        AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
+        AtomicReference<Boolean> ok = new AtomicReference<>();
+        Workbench.onEdt(() -> {
+            panel.set(frame.openCalibration());
+            panel.get().setBounds(frame.getX() + 500, frame.getY() + 120, 770, 590);
+            ok.set(panel.get().loadMeasurements(sim.resolve("measurements.csv")));
+        });
+        var p = panel.get();
+        r.setProperty("calLoaded", String.valueOf(ok.get()));
+        AtomicReference<java.util.concurrent.CompletableFuture<?>> f = new AtomicReference<>();
+        Workbench.onEdt(() -> { f.set(p.start()); p.cancel(); });
+        try {
+            f.get().get(60, java.util.concurrent.TimeUnit.SECONDS);
+            r.setProperty("calCancelled", "finished before the cancel was seen");
+        } catch (java.util.concurrent.CancellationException e) { // CompletableFuture.get rethrows it as is
+            r.setProperty("calCancelled", e.getClass().getSimpleName());
+        } catch (java.util.concurrent.ExecutionException e) {
+            r.setProperty("calCancelled", e.getCause().getClass().getSimpleName());
+        }
+        Thread.sleep(100);
+        r.setProperty("calStateAfterCancel", p.state());
+        Workbench.onEdt(() -> f.set(p.start()));
+        f.get().get(120, java.util.concurrent.TimeUnit.SECONDS);
+        Thread.sleep(200);
+        Workbench.onEdt(() -> {
+            r.setProperty("calState", p.state());
+            r.setProperty("calRms", p.rmsText());
+            r.setProperty("calEffects", p.effectsText());
+            r.setProperty("calProgress", String.valueOf(p.progressValue()));
+        });
+        r.setProperty("calNominalRmsMm", String.valueOf(p.result().nominalTrainRmsM() * 1e3));
+        r.setProperty("calRmsMm", String.valueOf(p.result().trainRmsM() * 1e3));
+        r.setProperty("calValidateRmsMm", String.valueOf(p.result().validateRmsM() * 1e3));
+        wb.screenshot(out.resolve("07-calibration.png"));
+        Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");
+        Files.deleteIfExists(nominalMod);
+        Files.deleteIfExists(compensatedMod);
+        wb.exportRapid(nominalMod, false);
+        Path calFile = out.resolve("irb2000-calibrated.robot.json");
+        Files.deleteIfExists(calFile);
+        Workbench.onEdt(() -> ok.set(p.apply(calFile, () -> false)));
+        r.setProperty("calApplied", String.valueOf(ok.get()));
+        r.setProperty("calReference", String.valueOf(wb.model().calibrationReference()));
+        wb.exportRapid(compensatedMod, false);
+        r.setProperty("compensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("Nominal", "X")
+                .equals(Files.readString(compensatedMod).replace("Compensated", "X"))));
+        r.setProperty("compensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
+        Workbench.onEdt(() -> p.dispose());
+        wb.clearCalibration();
     }
 
     /**

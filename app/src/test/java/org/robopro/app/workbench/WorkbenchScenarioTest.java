@@ -170,6 +170,23 @@ class WorkbenchScenarioTest {
         BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
         assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");
 
+        assertEquals("0", r.getProperty("simulateExit"));
+        assertEquals("true", r.getProperty("calLoaded"));
+        assertEquals("CancellationException", r.getProperty("calCancelled"), "Cancel stops the background calibration");
+        assertEquals("cancelled", r.getProperty("calStateAfterCancel"));
+        assertEquals("done", r.getProperty("calState"));
+        assertEquals("1000", r.getProperty("calProgress"));
+        double before = Double.parseDouble(r.getProperty("calNominalRmsMm")), after = Double.parseDouble(r.getProperty("calRmsMm"));
+        assertTrue(before > 1, "the simulated robot has millimetres of error: " + before);
+        assertTrue(after < 0.1, "calibration reaches the noise floor: " + after);
+        assertTrue(Double.parseDouble(r.getProperty("calValidateRmsMm")) < 0.1, r.getProperty("calValidateRmsMm"));
+        assertTrue(r.getProperty("calRms").startsWith("RMS ") && r.getProperty("calRms").contains("validation"), r.getProperty("calRms"));
+        assertTrue(r.getProperty("calEffects").contains("correction"), r.getProperty("calEffects"));
+        assertEquals("true", r.getProperty("calApplied"));
+        assertTrue(r.getProperty("calReference").endsWith("irb2000-calibrated.robot.json"), r.getProperty("calReference"));
+        assertEquals("true", r.getProperty("compensatedDiffers"), "the applied calibration changes the exported targets");
+        assertTrue(r.getProperty("compensationLog").startsWith("Compensated 3 targets"), r.getProperty("compensationLog"));
+
         assertEquals("6", r.getProperty("wizardJoints"));
         assertEquals("true", r.getProperty("wizardFirstOk"));
         assertEquals("false", r.getProperty("wizardBrokenOk"));

@@ -54,7 +54,6 @@ import org.robopro.kinematics.Pose;
  * drive the same code paths as a user.
  */
 public final class WorkbenchFrame extends JFrame {
-    private static final String NEEDS_CAL = "Needs the calibration and diagnosis modules (issues 3 and 4), not merged into the workbench yet";
 
     private final Workbench wb;
     private final Map<String, Action> actions = new LinkedHashMap<>();
@@ -165,6 +164,17 @@ public final class WorkbenchFrame extends JFrame {
     }
 
     private RobotWizard wizard;
+    private CalibrationPanel calibration;
+
+    /** Opens (or brings to front) the calibration panel. */
+    public CalibrationPanel openCalibration() {
+        if (calibration == null || !calibration.isDisplayable()) {
+            calibration = new CalibrationPanel(this, wb);
+            calibration.setLocationRelativeTo(this);
+        }
+        calibration.setVisible(true);
+        return calibration;
+    }
 
     /** Opens (or brings to front) the robot model wizard, starting from the cell's robot. */
     public RobotWizard openWizard() {
@@ -354,7 +364,7 @@ public final class WorkbenchFrame extends JFrame {
         def("read-position", "Read robot position", null, e -> wb.readRobotPosition());
         wb.addControllerListener(() -> SwingUtilities.invokeLater(this::controllerChanged));
         controllerChanged();
-        disabled("calibration", "Calibration panel...", NEEDS_CAL);
+        def("calibration", "Calibration panel...", null, e -> openCalibration());
         def("robot-wizard", "Robot model wizard (Fig. 7)...", null, e -> openWizard());
         def("about", "About", null, e -> JOptionPane.showMessageDialog(this,
                 "robopro workbench\nOff-line programming and calibration of industrial robots.\n"
