@@ -266,13 +266,6 @@ public final class WorkbenchFrame extends JFrame {
             if (actions.containsKey(id)) action(id).setEnabled(on);
     }
 
-    private Action disabled(String id, String name, String tooltip) {
-        Action a = def(id, name, null, e -> { });
-        a.setEnabled(false);
-        a.putValue(Action.SHORT_DESCRIPTION, tooltip);
-        return a;
-    }
-
     private interface IoAction { void run() throws IOException; }
 
     private void io(IoAction a) {
