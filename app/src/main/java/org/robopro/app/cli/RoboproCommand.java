@@ -13,6 +13,9 @@ import picocli.CommandLine.Command;
         description = "Off-line programming and calibration of industrial robots.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                SimulateCommand.class,
+                CalibrateCommand.class,
+                CompensateCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 

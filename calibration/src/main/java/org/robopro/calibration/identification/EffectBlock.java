@@ -35,10 +35,12 @@ public interface EffectBlock {
 
     /**
      * Optional additive position term in base coordinates (m) given the predicted point
-     * {@code pointBase}: add it to {@code dp} and write ∂dp/∂v (3 x size, overwrite) into
-     * {@code dpDv} when not null. The default adds nothing.
+     * {@code pointBase}: add it to {@code dp}, write ∂dp/∂v (3 x size, overwrite) into
+     * {@code dpDv} when not null, and add ∂dp/∂pointBase (3 x 3, row-major) into {@code dpDpoint}
+     * when not null (e.g. the strain ε·I of a length scaling). The default adds nothing.
      */
-    default void positionDelta(double[] values, Measurement row, double[] pointBase, double[] dp, double[] dpDv) {
+    default void positionDelta(double[] values, Measurement row, double[] pointBase, double[] dp, double[] dpDv,
+                               double[] dpDpoint) {
         if (dpDv != null) java.util.Arrays.fill(dpDv, 0);
     }
 }

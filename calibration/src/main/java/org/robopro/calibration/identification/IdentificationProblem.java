@@ -268,6 +268,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         } else rib[0] = rib[4] = rib[8] = 1;
         double wp = 1 / sigmaPos, wr = 1 / sigmaRot;
         int dof = model.dof();
+        double[] pbKin = new double[3];
         double[] pb = new double[3], rbt = new double[9], rbf = new double[9], rib_rbf = new double[9],
                 rpred = new double[9], rmeas = new double[9], err = new double[9], e = new double[3];
         double[] dTheta = new double[dof], dp = new double[3], qEff = new double[dof];
@@ -297,15 +298,18 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
             Rotations.mulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
             double[][] dpDv = null;
+            double[] dpDpoint = null;
             if (!effects.isEmpty()) {
                 Arrays.fill(dp, 0);
+                dpDpoint = new double[9];
                 dpDv = new double[effects.size()][];
                 for (int k = 0; k < effects.size(); k++) {
                     int size = effStart[k + 1] - effStart[k];
                     double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
                     dpDv[k] = jac == null ? null : new double[3 * size];
-                    effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k]);
+                    effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
                 }
+                System.arraycopy(pb, 0, pbKin, 0, 3);
                 pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
             }
             double px = rib[0] * pb[0] + rib[1] * pb[1] + rib[2] * pb[2] + tib[0];
@@ -357,12 +361,54 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 jac[(r0 + 2) * nFull + c] = qy * wp;     jac[(r0 + 2) * nFull + c + 1] = -qx * wp;
                 if (sixD) for (int a = 0; a < 3; a++) jac[(r0 + 3 + a) * nFull + c + a] = wr;
             }
-            if (!effects.isEmpty()) effectColumns(mdl, qEff, flangeTtool, pb, rib, dThetaDv, dpDv, jac, r0, wp, wr);
+            if (!effects.isEmpty()) {
+                // A position term that depends on the point itself scales every column that moves the point.
+                double[] g = dpDpoint;
+                boolean any = false;
+                for (double v : g) any |= v != 0;
+                if (any) {
+                    double[] a = new double[9], t = new double[9], ribT = new double[9];
+                    for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
+                    // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
+                    Rotations.mul(rib, a, t);
+                    Rotations.mulT(t, rib, ribT);
+                    int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
+                    double[] col = new double[3];
+                    for (int cIdx = 0; cIdx < effOff; cIdx++) {
+                        if (cIdx >= instStart && cIdx < instEnd) continue;
+                        for (int u = 0; u < 3; u++) col[u] = jac[(r0 + u) * nFull + cIdx];
+                        for (int u = 0; u < 3; u++)
+                            jac[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
+                    }
+                }
+                effectColumns(mdl, qEff, flangeTtool, pbKin, rib, dThetaDv, dpDv, g, jac, r0, wp, wr);
+            }
+            if (sixD) {
+                // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
+                double[] jinv = new double[9];
+                leftJacobianInverse(e, jinv);
+                double[] col = new double[3];
+                for (int cIdx = 0; cIdx < nFull; cIdx++) {
+                    for (int u = 0; u < 3; u++) col[u] = jac[(r0 + 3 + u) * nFull + cIdx];
+                    for (int u = 0; u < 3; u++)
+                        jac[(r0 + 3 + u) * nFull + cIdx] = jinv[3 * u] * col[0] + jinv[3 * u + 1] * col[1] + jinv[3 * u + 2] * col[2];
+                }
+            }
         }
     }
 
+    /** J_l⁻¹(e) = I − ½[e]x + (1/θ² − (1 + cos θ)/(2 θ sin θ)) [e]x² (SO(3) left Jacobian inverse). */
+    static void leftJacobianInverse(double[] e, double[] out) {
+        double th2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], th = Math.sqrt(th2);
+        double c = th < 1e-4 ? 1.0 / 12 + th2 / 720 : 1 / th2 - (1 + Math.cos(th)) / (2 * th * Math.sin(th));
+        double[] k = {0, -e[2], e[1], e[2], 0, -e[0], -e[1], e[0], 0};
+        double[] k2 = new double[9];
+        Rotations.mul(k, k, k2);
+        for (int u = 0; u < 9; u++) out[u] = (u % 4 == 0 ? 1 : 0) - 0.5 * k[u] + c * k2[u];
+    }
+
     private void effectColumns(KinematicModel mdl, double[] qEff, Pose flangeTtool, double[] pb, double[] rib,
-                               double[][] dThetaDv, double[][] dpDv, double[] jac, int r0, double wp, double wr) {
+                               double[][] dThetaDv, double[][] dpDv, double[] dpDpoint, double[] jac, int r0, double wp, double wr) {
         int dof = mdl.dof();
         double[][] jq = mdl.geometricJacobian(qEff); // flange origin velocity and angular velocity per q
         Pose f = mdl.flange(qEff);
@@ -392,7 +438,9 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                     for (int j = 0; j < dof; j++) s += dth[a][j] * dThetaDv[k][j * size + c];
                     col[a] = s;
                 }
-                for (int a = 0; a < 3; a++) col[a] += dpDv[k][a * size + c];
+                double c0 = col[0], c1 = col[1], c2 = col[2];
+                for (int a = 0; a < 3; a++)
+                    col[a] += dpDpoint[3 * a] * c0 + dpDpoint[3 * a + 1] * c1 + dpDpoint[3 * a + 2] * c2 + dpDv[k][a * size + c];
                 int colIdx = effStart[k] + c;
                 for (int a = 0; a < 3; a++) {
                     jac[(r0 + a) * nFull + colIdx] = (rib[3 * a] * col[0] + rib[3 * a + 1] * col[1] + rib[3 * a + 2] * col[2]) * wp;

@@ -1,0 +1,251 @@
+package org.robopro.calibration.report;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.identification.CalibrationResult.ParameterEstimate;
+import org.robopro.calibration.identification.CalibrationResult.PoseError;
+import org.robopro.calibration.identification.Identifiability;
+import org.robopro.calibration.identification.LevenbergMarquardt;
+import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Units;
+
+/**
+ * Writes what a calibration found: {@code summary.json} (machine-readable, mm and degrees) and
+ * a self-contained {@code report.html} with inline SVG plots (errors per pose before and after,
+ * histograms, convergence) and the parameter table with σ.
+ */
+public final class CalibrationReport {
+    private CalibrationReport() { }
+
+    /** Where the data came from, for the report header. */
+    public record Context(String robot, String measurements, String validation, String created) { }
+
+    /** A value in display units: m → mm, rad → deg, anything else as is. */
+    static double display(double v, String unitSi) {
+        return switch (unitSi) {
+            case "m" -> Units.mToMm(v);
+            case "rad" -> Units.radToDeg(v);
+            default -> v;
+        };
+    }
+
+    static String displayUnit(String unitSi) {
+        return switch (unitSi) {
+            case "m" -> "mm";
+            case "rad" -> "deg";
+            default -> unitSi;
+        };
+    }
+
+    private static Double mm(double m) { return Double.isNaN(m) ? null : Units.mToMm(m); }
+
+    public static Map<String, Object> summary(CalibrationResult r, Context ctx) {
+        Map<String, Object> s = new LinkedHashMap<>();
+        s.put("robot", ctx.robot());
+        s.put("measurements", ctx.measurements());
+        s.put("validation", ctx.validation());
+        s.put("created", ctx.created());
+        s.put("poses_train", r.train().size());
+        s.put("poses_validate", r.validate().size());
+        s.put("six_d", r.sixD());
+        s.put("nominal_train_rms_mm", mm(r.nominalTrainRmsM()));
+        s.put("train_rms_mm", mm(r.trainRmsM()));
+        s.put("nominal_validate_rms_mm", mm(r.nominalValidateRmsM()));
+        s.put("validate_rms_mm", mm(r.validateRmsM()));
+        s.put("nominal_train_max_mm", mm(CalibrationResult.max(r.train(), false)));
+        s.put("train_max_mm", mm(r.trainMaxM()));
+        s.put("validate_max_mm", mm(r.validateMaxM()));
+        s.put("noise_sigma_mm", mm(r.sigmaPosM()));
+        if (r.sixD()) s.put("noise_sigma_deg", Units.radToDeg(r.sigmaRotRad()));
+        s.put("condition_number", r.conditionNumber());
+        s.put("observability_o1", r.observability());
+        List<Map<String, Object>> ps = new ArrayList<>();
+        for (ParameterEstimate p : r.parameters()) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("name", p.name());
+            e.put("block", p.block());
+            e.put("nominal", display(p.nominal(), p.unitSi()));
+            e.put("identified", display(p.identified(), p.unitSi()));
+            e.put("sigma", p.fixed() || Double.isNaN(p.sigma()) ? null : display(p.sigma(), p.unitSi()));
+            e.put("unit", displayUnit(p.unitSi()));
+            e.put("fixed", p.fixed());
+            ps.add(e);
+        }
+        s.put("parameters", ps);
+        List<Map<String, Object>> un = new ArrayList<>();
+        for (Identifiability.Direction d : r.unidentifiable()) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("fixed", d.fixed());
+            e.put("combination", d.describe());
+            un.add(e);
+        }
+        s.put("unidentifiable", un);
+        List<Map<String, Object>> ol = new ArrayList<>();
+        for (CalibrationResult.Outlier o : r.outliers()) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("pose", o.poseId());
+            e.put("residual_mm", Units.mToMm(o.residualM()));
+            e.put("reason", o.reason());
+            e.put("dropped", true);
+            ol.add(e);
+        }
+        s.put("outliers", ol);
+        if (r.instrumentTbase() != null) s.put("instrument_T_base", pose(r.instrumentTbase()));
+        s.put("flange_T_tool", pose(r.flangeTtool()));
+        Map<String, Object> solver = new LinkedHashMap<>();
+        solver.put("method", "Levenberg-Marquardt (robopro, scaled normal equations)");
+        solver.put("nominal_fit", lm(r.nominalFit()));
+        solver.put("fit", lm(r.fit()));
+        s.put("solver", solver);
+        s.put("elapsed_ms", r.elapsedMs());
+        return s;
+    }
+
+    private static Map<String, Object> lm(LevenbergMarquardt.Result f) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("iterations", f.iterations());
+        m.put("evaluations", f.evaluations());
+        m.put("reason", f.reason().name());
+        m.put("cost_history", f.costHistory());
+        return m;
+    }
+
+    static Map<String, Object> pose(Pose p) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("x_mm", Units.mToMm(p.x()));
+        m.put("y_mm", Units.mToMm(p.y()));
+        m.put("z_mm", Units.mToMm(p.z()));
+        double[] q = p.quaternion();
+        m.put("qw", q[0]);
+        m.put("qx", q[1]);
+        m.put("qy", q[2]);
+        m.put("qz", q[3]);
+        return m;
+    }
+
+    public static String summaryJson(CalibrationResult r, Context ctx) {
+        try {
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx)) + "\n";
+        } catch (IOException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    // ------------------------------------------------------------------ HTML
+
+    public static String html(CalibrationResult r, Context ctx) {
+        StringBuilder h = new StringBuilder();
+        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration of ")
+         .append(Html.esc(ctx.robot())).append("</title><style>")
+         .append("body{font-family:sans-serif;max-width:780px;margin:1em auto;color:#222}")
+         .append("table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}")
+         .append("th{background:#eee}td.l,th.l{text-align:left}.fixed{color:#888}.warn{color:#a40}")
+         .append("</style></head><body>\n");
+        h.append("<h1>Calibration of ").append(Html.esc(ctx.robot())).append("</h1>\n<p>Measurements: <code>")
+         .append(Html.esc(ctx.measurements())).append("</code>");
+        if (ctx.validation() != null) h.append("; validation: <code>").append(Html.esc(ctx.validation())).append("</code>");
+        h.append(". ").append(r.train().size()).append(" training poses").append(r.sixD() ? " with orientations" : " (positions)")
+         .append(", ").append(r.validate().size()).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");
+
+        h.append("<h2>Result</h2><table><tr><th class=\"l\"></th><th>nominal model</th><th>calibrated</th></tr>");
+        row(h, "training RMS (mm)", r.nominalTrainRmsM(), r.trainRmsM());
+        row(h, "training max (mm)", CalibrationResult.max(r.train(), false), r.trainMaxM());
+        if (!r.validate().isEmpty()) {
+            row(h, "validation RMS (mm)", r.nominalValidateRmsM(), r.validateRmsM());
+            row(h, "validation max (mm)", CalibrationResult.max(r.validate(), false), r.validateMaxM());
+        }
+        h.append("</table>\n<p>The nominal column fits only the instrument frame and the measured point with the nominal geometry. ")
+         .append(String.format(Locale.ROOT, "Noise estimated from the residuals: &sigma; = %.4f mm per axis", Units.mToMm(r.sigmaPosM())));
+        if (r.sixD()) h.append(String.format(Locale.ROOT, ", %.5f&deg; per axis", Units.radToDeg(r.sigmaRotRad())));
+        h.append(String.format(Locale.ROOT, "; the noise floor &radic;3&middot;&sigma; = %.4f mm. ", Math.sqrt(3) * Units.mToMm(r.sigmaPosM())));
+        h.append(String.format(Locale.ROOT, "Condition number of the scaled identification Jacobian %.3g, observability index O1 = %.3g (Borm &amp; Menq).</p>\n",
+                r.conditionNumber(), r.observability()));
+
+        List<Svg.Series> before = new ArrayList<>(), after = new ArrayList<>();
+        addSeries(before, r.train(), false, "training", "#1f77b4");
+        addSeries(before, r.validate(), false, "validation", "#ff7f0e");
+        addSeries(after, r.train(), true, "training", "#1f77b4");
+        addSeries(after, r.validate(), true, "validation", "#ff7f0e");
+        h.append("<h2>Error per pose</h2>\n").append(Svg.plot("Before: nominal model", "pose (file order)", "position error (mm)", before, false))
+         .append("\n").append(Svg.plot("After: calibrated model", "pose (file order)", "position error (mm)", after, false)).append("\n");
+        List<Svg.Series> hist = new ArrayList<>();
+        hist.add(new Svg.Series("training", null, values(r.train(), true), "#1f77b4", false));
+        if (!r.validate().isEmpty()) hist.add(new Svg.Series("validation", null, values(r.validate(), true), "#ff7f0e", false));
+        h.append(Svg.histogram("Calibrated errors", "position error (mm)", hist, 20)).append("\n");
+        List<Svg.Series> histNom = new ArrayList<>();
+        histNom.add(new Svg.Series("training", null, values(r.train(), false), "#1f77b4", false));
+        if (!r.validate().isEmpty()) histNom.add(new Svg.Series("validation", null, values(r.validate(), false), "#ff7f0e", false));
+        h.append(Svg.histogram("Nominal errors", "position error (mm)", histNom, 20)).append("\n");
+
+        h.append("<h2>Convergence</h2>\n");
+        double[] ch = r.fit().costHistory();
+        double[] it = new double[ch.length];
+        for (int i = 0; i < ch.length; i++) it[i] = i;
+        h.append(Svg.plot("Cost ½‖r‖² per accepted step", "iteration", "cost (weighted)", List.of(new Svg.Series("cost", it, ch, "#2ca02c", true)), true));
+        h.append(String.format(Locale.ROOT, "<p>Levenberg&ndash;Marquardt: %d iterations, %d evaluations, stopped: %s. Nominal fit: %d iterations, %s. Wall time %.1f ms.</p>\n",
+                r.fit().iterations(), r.fit().evaluations(), r.fit().reason(), r.nominalFit().iterations(), r.nominalFit().reason(), r.elapsedMs()));
+
+        h.append("<h2>Identifiability</h2>\n");
+        if (r.unidentifiable().isEmpty()) h.append("<p>Every parameter is identifiable from these data.</p>\n");
+        else {
+            h.append("<p>These data cannot separate the following combinations (right singular vectors of the scaled Jacobian with a zero singular value); ")
+             .append("for each, the named parameter was fixed at its nominal value (rule: the largest component, robot geometry before the measured point before the instrument frame):</p><table><tr><th class=\"l\">fixed</th><th class=\"l\">combination</th></tr>");
+            for (Identifiability.Direction d : r.unidentifiable())
+                h.append("<tr><td class=\"l\">").append(Html.esc(d.fixed())).append("</td><td class=\"l\">").append(Html.esc(d.describe())).append("</td></tr>");
+            h.append("</table>\n");
+        }
+
+        h.append("<h2>Outliers</h2>\n");
+        if (r.outliers().isEmpty()) h.append("<p>None: no pose exceeded the outlier rule.</p>\n");
+        else {
+            h.append("<p class=\"warn\">Dropped from the fit and reported (rule: residual &gt; k &times; robust &sigma; from the median residual, iterated):</p><table><tr><th class=\"l\">pose</th><th>residual (mm)</th><th class=\"l\">reason</th></tr>");
+            for (CalibrationResult.Outlier o : r.outliers())
+                h.append("<tr><td class=\"l\">").append(Html.esc(o.poseId())).append("</td><td>").append(fmt(Units.mToMm(o.residualM())))
+                 .append("</td><td class=\"l\">").append(Html.esc(o.reason())).append("</td></tr>");
+            h.append("</table>\n");
+        }
+
+        h.append("<h2>Parameters</h2>\n<table><tr><th class=\"l\">name</th><th class=\"l\">block</th><th>nominal</th><th>identified</th><th>change</th><th>&sigma;</th><th class=\"l\">unit</th></tr>");
+        for (ParameterEstimate p : r.parameters()) {
+            String cls = p.fixed() ? " class=\"fixed\"" : "";
+            double nom = display(p.nominal(), p.unitSi()), id = display(p.identified(), p.unitSi());
+            h.append("<tr").append(cls).append("><td class=\"l\">").append(Html.esc(p.name())).append("</td><td class=\"l\">").append(p.block())
+             .append("</td><td>").append(fmt(nom)).append("</td><td>").append(fmt(id)).append("</td><td>").append(fmt(id - nom))
+             .append("</td><td>").append(p.fixed() ? "fixed" : fmt(display(p.sigma(), p.unitSi()))).append("</td><td class=\"l\">")
+             .append(displayUnit(p.unitSi())).append("</td></tr>");
+        }
+        h.append("</table>\n<p>&sigma; from s&sup2;(J<sup>T</sup>J)<sup>&minus;1</sup>; rotation-vector parameters of the tool and instrument are reported as values of the rotation vector.</p>\n");
+        h.append("</body></html>\n");
+        return h.toString();
+    }
+
+    private static void row(StringBuilder h, String label, double nominalM, double calibratedM) {
+        h.append("<tr><td class=\"l\">").append(label).append("</td><td>").append(fmt(Units.mToMm(nominalM))).append("</td><td>")
+         .append(fmt(Units.mToMm(calibratedM))).append("</td></tr>");
+    }
+
+    private static void addSeries(List<Svg.Series> out, List<PoseError> es, boolean calibrated, String name, String color) {
+        if (es.isEmpty()) return;
+        double[] x = new double[es.size()];
+        for (int i = 0; i < x.length; i++) x[i] = i + 1;
+        out.add(new Svg.Series(name, x, values(es, calibrated), color, false));
+    }
+
+    private static double[] values(List<PoseError> es, boolean calibrated) {
+        double[] y = new double[es.size()];
+        for (int i = 0; i < y.length; i++) y[i] = Units.mToMm(calibrated ? es.get(i).calibratedM() : es.get(i).nominalM());
+        return y;
+    }
+
+    static String fmt(double v) {
+        if (Double.isNaN(v)) return "&ndash;";
+        return String.format(Locale.ROOT, Math.abs(v) >= 100 ? "%.3f" : "%.5f", v);
+    }
+}

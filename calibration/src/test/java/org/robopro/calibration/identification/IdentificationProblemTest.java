@@ -1,0 +1,99 @@
+package org.robopro.calibration.identification;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.simulation.Campaign;
+import org.robopro.calibration.simulation.CampaignSimulator;
+import org.robopro.calibration.simulation.SimulationSettings;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.RobotLibrary;
+
+class IdentificationProblemTest {
+    /** A test effect: θ_j grows by scale_j · θ_j (joint-scale), and lengths by strain (position term). */
+    static final class ScaleAndStrain implements EffectBlock {
+        public String name() { return "test"; }
+        public List<String> parameterNames() { return List.of("j2.scale", "j3.scale", "strain"); }
+        public List<String> units() { return List.of("1", "1", "1"); }
+        public double[] initialValues() { return new double[] {2e-4, -3e-4, 1e-4}; }
+        public void jointDelta(double[] v, Measurement row, double[] dTheta, double[] dThetaDv) {
+            int dof = dTheta.length;
+            dTheta[1] += v[0] * row.q(1);
+            dTheta[2] += v[1] * row.q(2);
+            if (dThetaDv != null) {
+                java.util.Arrays.fill(dThetaDv, 0);
+                dThetaDv[1 * 3] = row.q(1);
+                dThetaDv[2 * 3 + 1] = row.q(2);
+            }
+            if (dof < 3) throw new IllegalStateException();
+        }
+        @Override
+        public void positionDelta(double[] v, Measurement row, double[] p, double[] dp, double[] dpDv, double[] dpDpoint) {
+            for (int a = 0; a < 3; a++) dp[a] += v[2] * p[a];
+            if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += v[2];
+            if (dpDv != null) {
+                java.util.Arrays.fill(dpDv, 0);
+                for (int a = 0; a < 3; a++) dpDv[a * 3 + 2] = p[a];
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @CsvSource({"false, false, false", "true, false, false", "false, true, false", "true, true, true", "false, false, true"})
+    void evaluate_analyticJacobian_matchesCentralDifferences(boolean sixD, boolean baseFrame, boolean effects) {
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.load("irb2000"));
+        Campaign c = CampaignSimulator.simulate(nominal, SimulationSettings.defaults().withPoses(12).withSixD(sixD)
+                .withBaseFrame(baseFrame).withSeed(5));
+        List<EffectBlock> eff = effects ? List.of(new ScaleAndStrain()) : List.of();
+        Pose inst = baseFrame ? null : c.truth().instrumentTbase().times(Pose.rotX(0.01));
+        Pose tool = c.truth().flangeTtool().times(Pose.translation(0.001, 0, 0)).times(Pose.rotZ(sixD ? 0.02 : 0));
+        double[] start = IdentificationProblem.startVector(nominal, tool, sixD, inst, eff);
+        IdentificationProblem p = new IdentificationProblem(nominal, c.measurements().rows(), sixD, !baseFrame, eff, start);
+        p.setSigmas(1e-4, 2e-4);
+        int m = p.residualCount(), n = p.parameterCount();
+        double[] x = p.freeOf(start), r = new double[m], j = new double[m * n];
+        p.evaluate(x, r, j);
+        double[] rp = new double[m], rm = new double[m], xp = new double[n], xm = new double[n];
+        double worst = 0;
+        for (int col = 0; col < n; col++) {
+            double h = p.unitsSi().get(col).equals("m") ? 1e-6 : 1e-7;
+            double[] step = new double[n];
+            step[col] = h;
+            p.retract(x, step, xp);
+            step[col] = -h;
+            p.retract(x, step, xm);
+            p.evaluate(xp, rp, null);
+            p.evaluate(xm, rm, null);
+            double scale = 0;
+            for (int i = 0; i < m; i++) scale = Math.max(scale, Math.abs(j[i * n + col]));
+            for (int i = 0; i < m; i++) {
+                double fd = (rp[i] - rm[i]) / (2 * h);
+                double err = Math.abs(fd - j[i * n + col]) / Math.max(scale, 1e-3);
+                worst = Math.max(worst, err);
+                if (err > 1e-5)
+                    throw new AssertionError("column " + p.names().get(col) + " row " + i + ": analytic " + j[i * n + col] + ", FD " + fd);
+            }
+        }
+        assertTrue(worst < 1e-5, "worst relative Jacobian error " + worst);
+    }
+
+    @ParameterizedTest
+    @CsvSource({"false", "true"})
+    void evaluateFull_atTruth_leavesOnlyNoise(boolean sixD) {
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.load("irb2400"));
+        Campaign c = CampaignSimulator.simulate(nominal, SimulationSettings.defaults().withPoses(30).withSixD(sixD)
+                .withSigma(0).withSigmaRot(0).withSeed(2));
+        double[] start = IdentificationProblem.startVector(c.truth().model(), c.truth().flangeTtool(), sixD,
+                c.truth().instrumentTbase(), List.of());
+        IdentificationProblem p = new IdentificationProblem(nominal, c.measurements().rows(), sixD, true, List.of(), start);
+        p.setSigmas(1, 1);
+        double[] r = new double[p.residualCount()];
+        p.evaluateFull(start, r, null);
+        for (double v : r) assertEquals(0, v, 1e-9);
+    }
+}
