@@ -16,6 +16,9 @@ import picocli.CommandLine.Command;
                 SimulateCommand.class,
                 CalibrateCommand.class,
                 CompensateCommand.class,
+                ModelCommand.class,
+                FkCommand.class,
+                IkCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
