@@ -73,7 +73,20 @@ public final class Diagnoser {
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     static final double MAX_STRAIN = 2e-3;
 
+    private static final boolean DEBUG = "1".equals(System.getenv("ROBOPRO_DIAG_DEBUG"));
+
     private Diagnoser() { }
+
+    private static void debug(int step, List<Candidate> cs) {
+        List<Candidate> sorted = new ArrayList<>(cs);
+        sorted.sort((x, y) -> Double.compare(x.bic, y.bic));
+        for (int i = 0; i < Math.min(6, sorted.size()); i++) {
+            Candidate c = sorted.get(i);
+            System.out.printf(Locale.ROOT, "step %d %-30s F %.2f p %.2e bic %.1f press %.1f/%.1f ratio %.3f %s %s est %s sd %s%n", step,
+                    c.effect.label(), c.f, c.p, c.bic, c.pressBefore, c.pressAfter, c.ratio, c.plausible, c.plausibility,
+                    Arrays.toString(c.estimate), Arrays.toString(c.sd));
+        }
+    }
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate) {
         return diagnose(robot, train, validate, Options.defaults());
@@ -112,18 +125,19 @@ public final class Diagnoser {
         if (gravity != null && !hasPayload)
             notes.add("no payload_kg column: compliance tested with the arm's own weight only (payload taken as 0 kg)");
 
-        // Stepwise forward selection.
+        // Stepwise selection: forward by BIC among the candidates that pass, backward when one stops being needed.
         List<Effect> selected = new ArrayList<>();
+        Map<Effect, boolean[]> absorbedCols = new java.util.IdentityHashMap<>();
         List<Step> steps = new ArrayList<>();
-        Fit fit = w.fit(selected, w.geoFull, null);
+        Fit fit = w.fit(selected, absorbedCols, w.geoFull, null);
         double geoTrain = fit.trainRms, geoVal = w.validateRms(fit);
         Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
         Map<String, Candidate> implausible = new LinkedHashMap<>();
         List<Effect> remaining = new ArrayList<>(family);
         int familySize = -1;
-        for (int step = 0; step < o.maxEffects() + 1 && !remaining.isEmpty(); step++) {
+        for (int step = 0; step < 2 * o.maxEffects() + 2 && !remaining.isEmpty(); step++) {
             o.cancel().check();
-            o.progress().update("testing effects", 0.2 + 0.7 * step / (o.maxEffects() + 1.0));
+            o.progress().update("testing effects", Math.min(0.9, 0.2 + 0.7 * step / (o.maxEffects() + 1.0)));
             Tester t = w.tester(fit);
             List<Candidate> cs = new ArrayList<>();
             for (Effect e : remaining) {
@@ -135,15 +149,8 @@ public final class Diagnoser {
                 } else cs.add(c);
             }
             if (familySize < 0) familySize = cs.size();
-            if (Boolean.getBoolean("robopro.diagDebug")) {
-                cs.sort((x, y) -> Double.compare(x.bic, y.bic));
-                for (int i = 0; i < Math.min(8, cs.size()); i++) {
-                    Candidate c = cs.get(i);
-                    System.out.printf(Locale.ROOT, "step %d %-30s F %.2f p %.2e bic %.1f press %.1f/%.1f ratio %.3f %s %s est %s%n", step,
-                            c.effect.label(), c.f, c.p, c.bic, c.pressBefore, c.pressAfter, c.ratio, c.plausible, c.plausibility, Arrays.toString(c.estimate));
-                }
-            }
-            double threshold = o.alpha() / Math.max(1, familySize - step);
+            double threshold = o.alpha() / Math.max(1, familySize - selected.size());
+            if (DEBUG) debug(step, cs);
             Candidate best = null;
             for (Candidate c : cs) {
                 c.threshold = threshold;
@@ -153,12 +160,28 @@ public final class Diagnoser {
             }
             if (best == null || selected.size() >= o.maxEffects()) break;
             implausible.clear(); // only those still significant when selection stops are reported
-            selected.add(best.effect);
             Effect chosen = best.effect;
+            selected.add(chosen);
+            absorbedCols.put(chosen, best.absorbedMask);
             remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL));
-            notIdent.remove(best.effect.label());
-            fit = w.fit(selected, fit.full, best);
+            notIdent.remove(chosen.label());
+            fit = w.fit(selected, absorbedCols, fit.full, best);
             steps.add(new Step(best, fit.trainRms, w.validateRms(fit)));
+            // Backward: an effect made redundant by the new one (aliases), or implausible in the joint fit, leaves.
+            if (selected.size() >= 2) {
+                int drop = w.weakest(fit, selected, threshold);
+                if (drop >= 0) {
+                    Effect gone = selected.remove(drop);
+                    absorbedCols.remove(gone);
+                    steps.remove(drop);
+                    if (DEBUG) System.out.println("backward: dropped " + gone.label());
+                    fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
+                    if (!steps.isEmpty()) {
+                        Step last = steps.remove(steps.size() - 1);
+                        steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
+                    }
+                }
+            }
         }
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
@@ -315,7 +338,7 @@ public final class Diagnoser {
         }
 
         /** LM on geometry + the effects, from {@code start} (geometry part) and the previous effect values (new ones at 0). */
-        Fit fit(List<Effect> effects, double[] start, Candidate added) {
+        Fit fit(List<Effect> effects, Map<Effect, boolean[]> absorbed, double[] start, Candidate added) {
             int nBase = geoFull.length;
             int nEff = 0;
             for (Effect e : effects) nEff += e.size();
@@ -323,12 +346,22 @@ public final class Diagnoser {
             System.arraycopy(start, 0, full, 0, Math.min(start.length, full.length));
             if (added != null) {
                 // Start the new effect at its linearised estimate: fewer LM iterations.
-                int off = full.length - added.effect.size();
-                for (int i = 0; i < added.effect.size(); i++) full[off + i] = added.estimate[i];
+                int o0 = full.length - added.effect.size();
+                for (int i = 0; i < added.effect.size(); i++) full[o0 + i] = added.estimate[i];
             }
             IdentificationProblem p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
             p.setSigmas(sigmaPos, sigmaRot);
             boolean[] fix = Arrays.copyOf(geoFixed, full.length);
+            int off = nBase;
+            for (Effect e : effects) {
+                boolean[] a = absorbed.get(e);
+                for (int i = 0; i < e.size(); i++) {
+                    if (a != null && a[i]) { fix[off + i] = true; full[off + i] = 0; } // left to the geometry
+                }
+                off += e.size();
+            }
+            p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
+            p.setSigmas(sigmaPos, sigmaRot);
             p.setFixed(fix);
             LevenbergMarquardt.Result res = new LevenbergMarquardt(p).maxIterations(100).solve(p.freeOf(full), o.cancel());
             Fit f = new Fit();
@@ -408,6 +441,55 @@ public final class Diagnoser {
             return out;
         }
 
+        /** The full vector of a fit without effect {@code k}'s parameters. */
+        double[] dropEffect(Fit f, int k) {
+            int a = f.problem.effectOffset(k), b = a + f.problem.effects().get(k).parameterNames().size();
+            double[] out = new double[f.full.length - (b - a)];
+            System.arraycopy(f.full, 0, out, 0, a);
+            System.arraycopy(f.full, b, out, a, f.full.length - b);
+            return out;
+        }
+
+        /**
+         * Backward step: the selected effect whose partial F-test (its columns against the rest of
+         * the model's Jacobian) fails {@code threshold}, or whose joint estimate is implausible
+         * beyond 3σ; the worst one, or -1 when all stay.
+         */
+        int weakest(Fit f, List<Effect> selected, double threshold) {
+            int n = f.nf, m = f.m;
+            int[] free = f.problem.freeIndices();
+            double[] sig = effectSigmas(f);
+            int eff0 = f.problem.effectOffset(0);
+            double rss = 0;
+            for (double v : f.r) rss += v * v;
+            int worst = -1;
+            double worstP = -1;
+            for (int k = 0; k < selected.size(); k++) {
+                int a = f.problem.effectOffset(k), b = a + selected.get(k).size();
+                List<Integer> mine = new ArrayList<>(), rest = new ArrayList<>();
+                for (int c = 0; c < n; c++) (free[c] >= a && free[c] < b ? mine : rest).add(c);
+                if (mine.isEmpty()) continue;
+                double[] contrib = new double[m];
+                for (int c : mine) for (int i = 0; i < m; i++) contrib[i] += f.jac[i * n + c] * f.full[free[c]];
+                double[] u = basis(f.jac, m, n, rest);
+                int rank = u.length / m;
+                double[] pc = projectOut(u, rank, m, contrib);
+                double drss = 0;
+                for (double v : pc) drss += v * v;
+                int df2 = m - n;
+                double fstat = (drss / mine.size()) / (rss / Math.max(1, df2));
+                double p = Stats.fUpperTail(fstat, mine.size(), df2);
+                Candidate c = new Candidate();
+                c.effect = selected.get(k);
+                c.estimate = Arrays.copyOfRange(f.full, a, b);
+                c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
+                plausibility(c);
+                double score = c.plausible ? p : 2;
+                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; }
+            }
+            return worst;
+        }
+
         /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
         Tester tester(Fit f) {
             return new Tester(this, f);
@@ -439,7 +521,8 @@ public final class Diagnoser {
                 for (int j = 0; j < dof; j++) dThetaDv[j * (dof + 1) + j] = 1;
             }
         }
-        @Override public void positionDelta(double[] v, Measurement row, double[] pb, double[] dp, double[] dpDv) {
+        @Override public void positionDelta(double[] v, Measurement row, double[] pb, double[] dp, double[] dpDv, double[] dpDpoint) {
+            if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += v[dof];
             for (int a = 0; a < 3; a++) {
                 dp[a] += v[dof] * pb[a];
                 if (dpDv != null) {
@@ -455,7 +538,8 @@ public final class Diagnoser {
         Effect effect;
         int keptColumns, df1, df2;
         double ratio, f, p = 1, bic, rssReduction, pressBefore, pressAfter, threshold = Double.NaN;
-        double[] estimate;
+        double[] estimate, sd;
+        boolean[] absorbedMask;
         List<String> absorbed = new ArrayList<>();
         boolean plausible;
         String plausibility;
@@ -485,25 +569,10 @@ public final class Diagnoser {
             rpp = fit.problem.rowsPerPose();
             dof = w.model.dof();
             // Basis of the column-scaled Jacobian (thin SVD, relative rank tolerance 1e-10).
-            int n = fit.nf;
-            DMatrixRMaj a = new DMatrixRMaj(m, n);
-            for (int c = 0; c < n; c++) {
-                double s = 0;
-                for (int i = 0; i < m; i++) s += fit.jac[i * n + c] * fit.jac[i * n + c];
-                s = s > 0 ? 1 / Math.sqrt(s) : 0;
-                for (int i = 0; i < m; i++) a.data[i * n + c] = fit.jac[i * n + c] * s;
-            }
-            SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(m, n, true, false, true);
-            if (!svd.decompose(a)) throw new IllegalStateException("SVD of the model Jacobian failed");
-            double[] sv = svd.getSingularValues();
-            DMatrixRMaj um = svd.getU(null, false);
-            double smax = 0;
-            for (double s : sv) smax = Math.max(smax, s);
-            List<Integer> keep = new ArrayList<>();
-            for (int k = 0; k < svd.numberOfSingularValues(); k++) if (sv[k] > 1e-10 * smax) keep.add(k);
-            rank = keep.size();
-            u = new double[m * rank];
-            for (int i = 0; i < m; i++) for (int k = 0; k < rank; k++) u[i * rank + k] = um.get(i, keep.get(k));
+            List<Integer> all = new ArrayList<>();
+            for (int c = 0; c < fit.nf; c++) all.add(c);
+            u = basis(fit.jac, m, fit.nf, all);
+            rank = u.length / m;
             // Joint-angle and strain sensitivities through the identification chain.
             List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
             bl.add(new Probe(dof));
@@ -539,21 +608,7 @@ public final class Diagnoser {
         }
 
         /** x − U Uᵀ x. */
-        double[] project(double[] x) {
-            double[] c = new double[rank];
-            for (int i = 0; i < m; i++) {
-                double xi = x[i];
-                if (xi == 0) continue;
-                for (int k = 0; k < rank; k++) c[k] += u[i * rank + k] * xi;
-            }
-            double[] out = x.clone();
-            for (int i = 0; i < m; i++) {
-                double s = 0;
-                for (int k = 0; k < rank; k++) s += u[i * rank + k] * c[k];
-                out[i] -= s;
-            }
-            return out;
-        }
+        double[] project(double[] x) { return projectOut(u, rank, m, x); }
 
         /**
          * Leave-one-pose-out prediction error sum of squares of a linear model with residual e and
@@ -596,6 +651,7 @@ public final class Diagnoser {
             }
             // Projection: what the current model cannot absorb, column by column.
             List<Integer> kept = new ArrayList<>();
+            c.absorbedMask = new boolean[k];
             double[][] sp = new double[k][];
             double minKept = Double.POSITIVE_INFINITY, maxRatio = 0;
             for (int col = 0; col < k; col++) {
@@ -611,7 +667,7 @@ public final class Diagnoser {
                 }
                 maxRatio = Math.max(maxRatio, ratio);
                 if (ratio >= w.o.absorbedRatio()) { kept.add(col); minKept = Math.min(minKept, ratio); }
-                else c.absorbed.add(e.parameterNames().get(col));
+                else { c.absorbed.add(e.parameterNames().get(col)); c.absorbedMask[col] = true; }
             }
             c.keptColumns = kept.size();
             c.ratio = kept.isEmpty() ? maxRatio : minKept;
@@ -648,6 +704,13 @@ public final class Diagnoser {
             c.df1 = q;
             c.df2 = m - rank - q;
             double rss1 = Math.max(rss0 - drss, 1e-300);
+            double s2 = rss1 / Math.max(1, c.df2);
+            c.sd = new double[k];
+            for (int col = 0; col < kk; col++) {
+                double var = 0;
+                for (int t = 0; t < q; t++) { double x = vs.get(col, rk.get(t)) / sv[rk.get(t)]; var += x * x; }
+                c.sd[kept.get(col)] = Math.sqrt(s2 * var);
+            }
             c.f = (drss / q) / (rss1 / Math.max(1, c.df2));
             c.p = Stats.fUpperTail(c.f, q, c.df2);
             c.bic = m * Math.log(rss1 / m) + q * Math.log(m);
@@ -665,47 +728,106 @@ public final class Diagnoser {
         }
     }
 
-    /** Physical bounds on an estimate (issue 4), in words. */
+    /** Orthonormal basis (m x rank, row-major) of the column-scaled columns {@code cols} of a row-major m x n matrix. */
+    static double[] basis(double[] jac, int m, int n, List<Integer> cols) {
+        int nc = cols.size();
+        if (nc == 0) return new double[0];
+        DMatrixRMaj a = new DMatrixRMaj(m, nc);
+        for (int k = 0; k < nc; k++) {
+            int c = cols.get(k);
+            double s = 0;
+            for (int i = 0; i < m; i++) s += jac[i * n + c] * jac[i * n + c];
+            s = s > 0 ? 1 / Math.sqrt(s) : 0;
+            for (int i = 0; i < m; i++) a.data[i * nc + k] = jac[i * n + c] * s;
+        }
+        SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(m, nc, true, false, true);
+        if (!svd.decompose(a)) throw new IllegalStateException("SVD of the model Jacobian failed");
+        double[] sv = svd.getSingularValues();
+        DMatrixRMaj um = svd.getU(null, false);
+        double smax = 0;
+        for (int k = 0; k < svd.numberOfSingularValues(); k++) smax = Math.max(smax, sv[k]);
+        List<Integer> keep = new ArrayList<>();
+        for (int k = 0; k < svd.numberOfSingularValues(); k++) if (sv[k] > 1e-10 * smax) keep.add(k);
+        int rank = keep.size();
+        double[] u = new double[m * rank];
+        for (int i = 0; i < m; i++) for (int k = 0; k < rank; k++) u[i * rank + k] = um.get(i, keep.get(k));
+        return u;
+    }
+
+    /** x − U Uᵀ x for an m x rank orthonormal U. */
+    static double[] projectOut(double[] u, int rank, int m, double[] x) {
+        double[] c = new double[rank];
+        for (int i = 0; i < m; i++) {
+            double xi = x[i];
+            if (xi == 0) continue;
+            for (int k = 0; k < rank; k++) c[k] += u[i * rank + k] * xi;
+        }
+        double[] out = x.clone();
+        for (int i = 0; i < m; i++) {
+            double s = 0;
+            for (int k = 0; k < rank; k++) s += u[i * rank + k] * c[k];
+            out[i] -= s;
+        }
+        return out;
+    }
+
+    /**
+     * Physical bounds on an estimate (issue 4), in words. An estimate is implausible when its
+     * whole 3σ interval lies outside the bounds: a poorly determined estimate is not condemned
+     * for its noise, a well determined one outside the physics is.
+     */
     static void plausibility(Candidate c) {
         double[] v = c.estimate;
+        double[] sd = c.sd == null ? new double[v.length] : c.sd;
         Effect e = c.effect;
         switch (e.kind()) {
             case COMPLIANCE -> {
                 double k = 1 / v[0];
-                c.plausible = v[0] > 0 && k >= MIN_STIFFNESS && k <= MAX_STIFFNESS;
-                c.plausibility = String.format(Locale.ROOT, "stiffness %.3g N·m/rad within %.0e..%.0e (and positive)", k,
+                c.plausible = overlaps(v[0], sd[0], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS);
+                c.plausibility = String.format(Locale.ROOT, "stiffness %.3g N·m/rad within %.0e..%.0e (positive)", k,
                         MIN_STIFFNESS, MAX_STIFFNESS);
             }
             case PERIODIC -> {
                 double max = 0;
-                for (int h = 0; h < Effect.HARMONICS; h++) max = Math.max(max, Math.hypot(v[2 * h], v[2 * h + 1]));
-                c.plausible = max < MAX_PERIODIC_RAD;
+                boolean ok = true;
+                for (int h = 0; h < Effect.HARMONICS; h++) {
+                    double amp = Math.hypot(v[2 * h], v[2 * h + 1]);
+                    max = Math.max(max, amp);
+                    if (amp - 3 * Math.max(sd[2 * h], sd[2 * h + 1]) >= MAX_PERIODIC_RAD) ok = false;
+                }
+                c.plausible = ok;
                 c.plausibility = String.format(Locale.ROOT, "largest harmonic amplitude %.4f deg < %.2f deg",
                         Math.toDegrees(max), Math.toDegrees(MAX_PERIODIC_RAD));
             }
             case BACKLASH -> {
-                c.plausible = v[0] > 0 && v[0] < MAX_BACKLASH_RAD;
+                c.plausible = overlaps(v[0], sd[0], 0, MAX_BACKLASH_RAD);
                 c.plausibility = String.format(Locale.ROOT, "lost motion %.4f deg positive and < %.1f deg",
                         Math.toDegrees(v[0]), Math.toDegrees(MAX_BACKLASH_RAD));
             }
             case THERMAL -> {
                 if (e.usesTimeProxy()) {
-                    c.plausible = v[0] > 0 && v[0] < MAX_STRAIN;
+                    c.plausible = overlaps(v[0], sd[0], 0, MAX_STRAIN);
                     c.plausibility = String.format(Locale.ROOT, "warm-up strain %.3g positive and < %.0e", v[0], MAX_STRAIN);
                 } else {
-                    c.plausible = v[0] > 0 && v[0] < MAX_ALPHA;
+                    c.plausible = overlaps(v[0], sd[0], 0, MAX_ALPHA);
                     c.plausibility = String.format(Locale.ROOT, "expansion coefficient %.3g /K positive and < %.0e /K", v[0], MAX_ALPHA);
                 }
             }
             case SCALE -> {
-                c.plausible = Math.abs(v[0]) < MAX_SCALE;
+                c.plausible = overlaps(v[0], sd[0], -MAX_SCALE, MAX_SCALE);
                 c.plausibility = String.format(Locale.ROOT, "|scale error| %.3g < %.0e", Math.abs(v[0]), MAX_SCALE);
             }
             case COUPLING -> {
-                c.plausible = Math.abs(v[0]) < MAX_COUPLING;
+                c.plausible = overlaps(v[0], sd[0], -MAX_COUPLING, MAX_COUPLING);
                 c.plausibility = String.format(Locale.ROOT, "|coupling| %.3g < %.0e", Math.abs(v[0]), MAX_COUPLING);
             }
         }
+    }
+
+    /** Whether [v − 3σ, v + 3σ] meets [lo, hi]. */
+    private static boolean overlaps(double v, double sd, double lo, double hi) {
+        double s = Double.isFinite(sd) ? 3 * sd : 0;
+        return v + s > lo && v - s < hi;
     }
 
     /** Solves a small dense system in place (Gaussian elimination, partial pivoting); false when singular. */

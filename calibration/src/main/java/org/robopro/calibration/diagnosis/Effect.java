@@ -212,12 +212,14 @@ public final class Effect {
                 if (dThetaDv != null) System.arraycopy(g, 0, dThetaDv, joint * k, k);
             }
 
-            @Override public void positionDelta(double[] values, Measurement row, double[] pointBase, double[] dp, double[] dpDv) {
+            @Override public void positionDelta(double[] values, Measurement row, double[] pointBase, double[] dp, double[] dpDv,
+                                                double[] dpDpoint) {
                 if (dpDv != null) Arrays.fill(dpDv, 0);
                 if (!isStrain()) return;
                 double[] g = new double[1];
                 regressor(row.q(), PoseConditions.of(row), g);
                 double e = g[0] * values[0];
+                if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += e; // ∂(ε p)/∂p = ε I
                 for (int a = 0; a < 3; a++) {
                     dp[a] += e * pointBase[a];
                     if (dpDv != null) dpDv[a] = g[0] * pointBase[a];

@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 class ConcealedEffectBenchmarkTest {
     @Test
     void run_fewSeedsPerCase_meetsTheBar() {
-        int seeds = Integer.getInteger("robopro.benchSeeds", 1);
+        int seeds = Integer.parseInt(System.getenv().getOrDefault("ROBOPRO_BENCH_SEEDS", "1"));
         ConcealedEffectBenchmark.Result r = ConcealedEffectBenchmark.run(seeds, 424242L, System.out::println);
         System.out.println(r.markdown());
         assertEquals(0, r.nullFalse(), "false effects on null cases");
