@@ -47,7 +47,7 @@ public final class ConcealedEffectBenchmark {
 
     /** Result of a benchmark run: rows per case and totals. */
     public record Result(List<Row> rows, int seedsPerCase, double namedRightPct, double jointsRightPct, int nullFalse,
-                         int nullRuns, double worstCaseMeanValRatio, double maxMs300) {
+                         int nullRuns, double worstCaseMeanValRatio, double meanValRatio, double maxMs300) {
         /** The bar of issue 4: ≥ 95 % named (and joints) right, no false effect on null cases, RMS ≤ 1.15 floor. */
         public boolean meetsBar() {
             return jointsRightPct >= 95 && nullFalse == 0 && worstCaseMeanValRatio <= 1.15;
@@ -62,9 +62,10 @@ public final class ConcealedEffectBenchmark {
                         r.namedRight(), r.jointsRight(), r.runsWithFalse(), r.meanValRatio(), r.maxValRatio(),
                         r.outliersInjected() == 0 ? "-" : r.outliersFound() + "/" + r.outliersInjected(), r.meanMs()));
             sb.append(String.format(Locale.ROOT, "%nNamed right: %.1f %%; named and on the right joints: %.1f %%; "
-                            + "false effects on null cases: %d of %d runs; worst case mean validation RMS / noise floor: %.3f; "
-                            + "slowest diagnosis of 300 poses: %.0f ms. Bar met: %s.%n", namedRightPct, jointsRightPct, nullFalse,
-                    nullRuns, worstCaseMeanValRatio, maxMs300, meetsBar() ? "yes" : "NO"));
+                            + "false effects on null cases: %d of %d runs; validation RMS / noise floor: %.3f over all runs, "
+                            + "%.3f in the worst case (mean over its seeds); slowest diagnosis of 250-300 poses: %.0f ms. Bar met: %s.%n",
+                    namedRightPct, jointsRightPct, nullFalse, nullRuns, meanValRatio, worstCaseMeanValRatio, maxMs300,
+                    meetsBar() ? "yes" : "NO"));
             return sb.toString();
         }
     }
@@ -202,7 +203,7 @@ public final class ConcealedEffectBenchmark {
         RobotDescription robot = RobotLibrary.shipped("irb2000");
         List<Row> rows = new ArrayList<>();
         int runs = 0, named = 0, joints = 0, nullFalse = 0, nullRuns = 0;
-        double worst = 0, maxMs300 = 0;
+        double worst = 0, maxMs300 = 0, allRatio = 0;
         for (int ci = 0; ci < cases.size(); ci++) {
             Case c = cases.get(ci);
             int nr = 0, jr = 0, withFalse = 0, olFound = 0, olInj = 0;
@@ -236,9 +237,11 @@ public final class ConcealedEffectBenchmark {
             named += nr;
             joints += jr;
             double mean = sumRatio / seeds;
+            allRatio += sumRatio;
             worst = Math.max(worst, mean);
             rows.add(new Row(c.name(), seeds, nr, jr, withFalse, mean, maxRatio, olFound, olInj, sumMs / seeds));
         }
-        return new Result(rows, seeds, 100.0 * named / runs, 100.0 * joints / runs, nullFalse, nullRuns, worst, maxMs300);
+        return new Result(rows, seeds, 100.0 * named / runs, 100.0 * joints / runs, nullFalse, nullRuns, worst, allRatio / runs,
+                maxMs300);
     }
 }

@@ -94,14 +94,58 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
+        Diagnosis d = run(robot, train, validate, o, List.of(), t0);
+        // An effect inflates the geometric fit's robust noise estimate and can hide outliers from the
+        // calibration's rule: apply the same rule with the extended model and, if it flags more, diagnose again without them.
+        List<String> more = outliersUnder(d, train);
+        if (!more.isEmpty()) {
+            List<String> all = new ArrayList<>(d.outliers());
+            all.addAll(more);
+            d = run(robot, train, validate, o, all, t0);
+        }
+        return d;
+    }
+
+    /** Training poses (not yet flagged) whose position residual under the extended model exceeds 5 robust sigmas. */
+    static List<String> outliersUnder(Diagnosis d, MeasurementSet train) {
+        if (d.effects().isEmpty()) return List.of();
+        ExtendedModel ext = d.model();
+        Set<String> known = new HashSet<>(d.outliers());
+        double[] norms = new double[train.size()];
+        List<Double> clean = new ArrayList<>();
+        for (int i = 0; i < train.size(); i++) {
+            Measurement m = train.rows().get(i);
+            // The instrument frame and tool of the final joint fit.
+            norms[i] = d.finalInstrumentTbase().apply(ext.tool(m.q(), d.finalFlangeTtool(), PoseConditions.of(m)).position())
+                    .minus(m.position()).norm();
+            if (!known.contains(m.poseId())) clean.add(norms[i]);
+        }
+        if (clean.isEmpty()) return List.of();
+        java.util.Collections.sort(clean);
+        int c = clean.size();
+        double med = c % 2 == 1 ? clean.get(c / 2) : 0.5 * (clean.get(c / 2 - 1) + clean.get(c / 2));
+        double sigma = med / 1.5381722; // median of a 3-D Gaussian's norm (Maxwell), as the calibration's rule
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i < train.size(); i++) {
+            String id = train.rows().get(i).poseId();
+            if (!known.contains(id) && norms[i] > 5 * sigma) out.add(id);
+        }
+        return out;
+    }
+
+    private static Diagnosis run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
+                                 List<String> extraOutliers, long t0) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
         o.progress().update("geometric calibration", 0);
+        Set<String> extra = new HashSet<>(extraOutliers);
+        MeasurementSet train = extra.isEmpty() ? trainAll : trainAll.filter(m -> !extra.contains(m.poseId()));
         CalibrationResult geo = Calibrator.calibrate(model, train, validate,
                 Calibrator.Options.defaults().withCancel(o.cancel()));
-        Set<String> outlierIds = new HashSet<>();
-        List<String> outliers = new ArrayList<>();
-        for (CalibrationResult.Outlier ol : geo.outliers()) { outlierIds.add(ol.poseId()); outliers.add(ol.poseId()); }
+        Set<String> outlierIds = new HashSet<>(extra);
+        List<String> outliers = new ArrayList<>(extraOutliers);
+        for (CalibrationResult.Outlier ol : geo.outliers())
+            if (outlierIds.add(ol.poseId())) outliers.add(ol.poseId());
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
 
@@ -188,7 +232,6 @@ public final class Diagnoser {
 
         // Advice for columns that are missing.
         Tester finalTester = w.tester(fit);
-        int extra = 0;
         List<Object[]> probes = new ArrayList<>();
         if (!hasDirs) {
             List<PoseConditions> inferred = inferredDirections(train.rows(), rows);
@@ -199,12 +242,12 @@ public final class Diagnoser {
             int n = rows.size();
             for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
         }
-        extra = probes.size();
+        int nProbes = probes.size();
         boolean askedDirs = false, askedTime = false;
         for (Object[] pr : probes) {
             @SuppressWarnings("unchecked") List<PoseConditions> cond = (List<PoseConditions>) pr[1];
             Candidate c = finalTester.test((Effect) pr[0], cond);
-            if (c.keptColumns == 0 || !(c.p < o.alpha() / extra) || !(c.pressAfter < c.pressBefore)) continue;
+            if (c.keptColumns == 0 || !(c.p < o.alpha() / nProbes) || !(c.pressAfter < c.pressBefore)) continue;
             if (pr[2].equals("dir") && !askedDirs) {
                 askedDirs = true;
                 recs.add(String.format(Locale.ROOT, "The residuals change sign with the direction joint %d last moved in "
@@ -251,8 +294,9 @@ public final class Diagnoser {
         ExtendedModel ext = new ExtendedModel(fit.problem.modelOf(fit.full), terms);
         o.progress().update("done", 1);
         return new Diagnosis(robot.name(), geo, w.sigmaPos, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
-                outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext, Math.max(familySize, 0),
-                o.alpha(), (System.nanoTime() - t0) / 1e6);
+                outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
+                fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
+                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6);
     }
 
     private static boolean allFinite(List<Measurement> rows, java.util.function.ToDoubleFunction<Measurement> f) {

@@ -20,6 +20,8 @@ import org.robopro.calibration.identification.CalibrationResult;
  * @param recommendations  what to record next, in words
  * @param notes            other remarks (what was not tested and why)
  * @param model            the extended model (identified geometry plus effects)
+ * @param finalFlangeTtool the measured point (tool frame) of the final joint fit
+ * @param finalInstrumentTbase the instrument pose of the final joint fit (identity for data in the base frame)
  * @param candidatesTested size of the tested family (for the multiple-testing correction)
  * @param alpha            family-wise false-positive rate of the test
  * @param elapsedMs        wall time
@@ -28,7 +30,8 @@ public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM
                         double geometricValidateRmsM, List<Finding> effects, double finalTrainRmsM,
                         double finalValidateRmsM, List<String> outliers, List<NotIdentifiable> notIdentifiable,
                         List<Finding> implausible, List<String> recommendations, List<String> notes,
-                        ExtendedModel model, int candidatesTested, double alpha, double elapsedMs) {
+                        ExtendedModel model, org.robopro.kinematics.Pose finalFlangeTtool,
+                        org.robopro.kinematics.Pose finalInstrumentTbase, int candidatesTested, double alpha, double elapsedMs) {
 
     /**
      * One effect with its evidence.

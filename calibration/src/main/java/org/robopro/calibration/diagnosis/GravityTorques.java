@@ -50,6 +50,17 @@ public final class GravityTorques {
 
     public KinematicModel model() { return model; }
 
+    /** Potential energy V = −Σ m_k g·c_k (J) at q with a payload (kg; NaN = 0); τ = −∂V/∂θ. */
+    public double potentialEnergy(double[] q, double payloadKg) {
+        Pose[] f = model.linkFrames(q);
+        double v = 0;
+        for (int k = 0; k < mass.length; k++) {
+            double mk = k == payloadSlot ? (Double.isNaN(payloadKg) ? 0 : payloadKg) : mass[k];
+            v -= mk * gravity.dot(f[frameIndex[k]].apply(local[k]));
+        }
+        return v;
+    }
+
     /** Gravity torque (N·m; N for prismatic joints) about each joint at controller values q with a payload (kg; NaN = 0). */
     public double[] torques(double[] q, double payloadKg) {
         int n = model.dof();
