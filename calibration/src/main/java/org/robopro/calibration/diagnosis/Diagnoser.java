@@ -293,7 +293,13 @@ public final class Diagnoser {
                     Double.NaN, c.evidence(), null, Words.implausible(c.effect, c.estimate, c.evidence())));
         ExtendedModel ext = new ExtendedModel(fit.problem.modelOf(fit.full), terms);
         o.progress().update("done", 1);
-        return new Diagnosis(robot.name(), geo, w.sigmaPos, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
+        double rssFinal = 0;
+        for (double v : fit.r) rssFinal += v * v;
+        int rppF = fit.problem.rowsPerPose();
+        double posSq = 0;
+        for (int i = 0; i < fit.m; i++) if (i % rppF < 3) posSq += fit.r[i] * fit.r[i];
+        double sigmaFinal = Math.sqrt(posSq / Math.max(1, fit.m / rppF * 3.0 * (fit.m - fit.nf) / fit.m)) * w.sigmaPos;
+        return new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6);

@@ -8,7 +8,7 @@ import org.robopro.calibration.identification.CalibrationResult;
  *
  * @param robot            robot name
  * @param geometric        the geometric calibration the diagnosis started from
- * @param sigmaM           position noise per axis estimated by the geometric fit, m
+ * @param sigmaM           position noise per axis estimated from the final fit's residuals (degrees of freedom corrected), m
  * @param geometricTrainRmsM  RMS position error of the geometric model on the training poses (outliers excluded)
  * @param geometricValidateRmsM  same on the validation poses (NaN without validation data)
  * @param effects          the effects claimed, in the order they were selected

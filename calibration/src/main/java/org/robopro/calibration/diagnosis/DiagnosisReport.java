@@ -143,8 +143,8 @@ public final class DiagnosisReport {
         for (Diagnosis.Finding f : d.effects()) row(h, "+ " + f.effect().label(), f.trainRmsM(), f.validateRmsM());
         row(h, "final (joint re-identification)", d.finalTrainRmsM(), d.finalValidateRmsM());
         h.append("</table>\n");
-        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated by the geometric fit: &sigma; = %.4f mm per axis "
-                + "(noise floor &radic;3&middot;&sigma; = %.4f mm; an effect inflates this estimate). %d candidates (effect &times; joint) "
+        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated from the final fit's residuals: &sigma; = %.4f mm per axis "
+                + "(noise floor &radic;3&middot;&sigma; = %.4f mm). %d candidates (effect &times; joint) "
                 + "tested with a family-wise false-positive rate of %.3g; %d outlier poses excluded. %.0f ms.</p>\n",
                 Units.mToMm(d.sigmaM()), Units.mToMm(Math.sqrt(3) * d.sigmaM()), d.candidatesTested(), d.alpha(),
                 d.outliers().size(), d.elapsedMs()));
@@ -239,7 +239,7 @@ public final class DiagnosisReport {
         }
         double[] fl = new double[n];
         java.util.Arrays.fill(fl, Units.mToMm(Math.sqrt(3) * d.sigmaM()));
-        s.add(new Svg.Series("noise floor (geometric estimate)", x, fl, "#999", true));
+        s.add(new Svg.Series("noise floor (final estimate)", x, fl, "#999", true));
         return Svg.plot("RMS error: geometric model (0) and after each effect", "effects added", "RMS (mm)", s, false);
     }
 }

@@ -43,7 +43,9 @@ final class Plots {
                 proj += d * t.fit.r[i * rpp + a];
             }
             double y = e.value(v, row.q(), c) - proj / dn[i]; // residual is predicted - measured
-            pts.add(new double[] {xOf(e, row, c), y * unit});
+            double x = xOf(e, row, c);
+            if (e.kind() == Effect.Kind.BACKLASH) x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
+            pts.add(new double[] {x, y * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }

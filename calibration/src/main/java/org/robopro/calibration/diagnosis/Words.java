@@ -15,8 +15,13 @@ final class Words {
                 StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
                         "Joint %d has a transmission error that repeats with its angle (gear or encoder eccentricity):", e.joint() + 1));
                 for (int h = 1; h <= Effect.HARMONICS; h++)
-                    sb.append(String.format(Locale.ROOT, " harmonic %d %.4f deg%s", h,
-                            Math.toDegrees(Math.hypot(v[2 * h - 2], v[2 * h - 1])), h < Effect.HARMONICS ? "," : "."));
+                    sb.append(String.format(Locale.ROOT, " harmonic %d %.4f ± %.4f deg%s", h,
+                            Math.toDegrees(Math.hypot(v[2 * h - 2], v[2 * h - 1])),
+                            Math.toDegrees(Math.max(s[2 * h - 2], s[2 * h - 1])), h < Effect.HARMONICS ? "," : "."));
+                if (ev.projectionRatio() < 0.3)
+                    sb.append(String.format(Locale.ROOT, " Only %.0f %% of its signature is distinct from geometry on these poses, "
+                            + "so the amplitudes are uncertain; a wider range of joint %d would separate them.",
+                            100 * ev.projectionRatio(), e.joint() + 1));
                 if (!ev.absorbed().isEmpty())
                     sb.append(" Terms ").append(String.join(", ", ev.absorbed()))
                             .append(" look like geometry on these poses and were left to the geometric model.");
@@ -43,9 +48,11 @@ final class Words {
         return what + fit;
     }
 
+    static String p(double p) { return p < 1e-300 ? "< 1e-300" : String.format(Locale.ROOT, "= %.2g", p); }
+
     static String implausible(Effect e, double[] v, Diagnosis.Evidence ev) {
         return String.format(Locale.ROOT, "%s would reduce the residuals significantly (F = %.1f, p = %.2g), but its estimate "
                 + "is physically implausible (%s), so it is not claimed: the residual structure it fits probably has another "
-                + "cause.", e.label(), ev.f(), ev.pValue(), ev.plausibility());
+                + "cause.", e.label(), ev.f(), ev.pValue(), ev.plausibility()).replace("p = 0,", "p < 1e-300,");
     }
 }
