@@ -144,11 +144,23 @@ public final class ConcealedEffectBenchmark {
     record Trial(Campaign campaign, List<Effect.Term> truth, Set<String> outlierIds, double sigmaM) { }
 
     /** Builds the campaign of case {@code c} for a seed. */
-    static Trial trial(RobotDescription robot, Case c, long seed) {
+    static Trial trial(RobotDescription robot, Case c, long seed) { return trial(robot, c, seed, 0); }
+
+    /**
+     * A simulated IRB-2000 campaign of the named benchmark case (e.g. "null (geometric errors only)",
+     * "backlash j2 + thermal-expansion") with a fixed number of training poses, for speed measurements.
+     */
+    public static Campaign campaign(String caseName, long seed, int poses) {
+        for (Case c : cases()) if (c.name().equals(caseName)) return trial(RobotLibrary.shipped("irb2000"), c, seed, poses).campaign();
+        throw new IllegalArgumentException("no benchmark case '" + caseName + "'");
+    }
+
+    static Trial trial(RobotDescription robot, Case c, long seed, int fixedPoses) {
         KinematicModel nominal = KinematicModel.build(robot);
         GravityTorques g = new GravityTorques(nominal, robot.massModel().orElseThrow());
         Random r = new Random(seed * 7919 + 17);
-        int poses = 100 + r.nextInt(201);
+        int drawn = 100 + r.nextInt(201);
+        int poses = fixedPoses > 0 ? fixedPoses : drawn;
         double sigma = uniform(r, 0.01e-3, 0.05e-3);
         double error = uniform(r, 2e-3, 10e-3);
         List<Effect.Term> truth = new ArrayList<>();
