@@ -44,6 +44,10 @@ public final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--validate", paramLabel = "FILE", description = "measurement file of validation poses")
     Path validate;
 
+    @Option(names = "--holdout", paramLabel = "FRACTION",
+            description = "without --validate or a set column: keep every (1/FRACTION)-th pose out of the fit for validation")
+    Double holdout;
+
     @Option(names = "--target", defaultValue = "0,0,0", paramLabel = "X,Y,Z",
             description = "start value of the measured point on the flange, mm (default ${DEFAULT-VALUE})")
     String target;
@@ -73,6 +77,13 @@ public final class CalibrateCommand implements Callable<Integer> {
             train = all.split(Measurement.Split.TRAIN);
             val = all.split(Measurement.Split.VALIDATE);
             if (val.size() == 0) val = null;
+        } else if (holdout != null) {
+            if (!(holdout > 0 && holdout < 1)) throw new IllegalArgumentException("--holdout must be between 0 and 1, got " + holdout);
+            int every = (int) Math.max(2, Math.round(1 / holdout));
+            java.util.List<Measurement> tr = new java.util.ArrayList<>(), va = new java.util.ArrayList<>();
+            for (int i = 0; i < all.size(); i++) (i % every == every - 1 ? va : tr).add(all.rows().get(i));
+            train = all.withRows(tr);
+            val = all.withRows(va);
         }
         if (all.robot() != null && !all.robot().equalsIgnoreCase(desc.name()))
             spec.commandLine().getErr().printf("robopro: warning: %s was measured on '%s', calibrating '%s'%n", measurements, all.robot(), desc.name());
@@ -94,7 +105,7 @@ public final class CalibrateCommand implements Callable<Integer> {
         }
         String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
         CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), measurements.toString(),
-                validate != null ? validate.toString() : val != null ? measurements + " (set=validate)" : null, created);
+                validate != null ? validate.toString() : val != null ? measurements + (holdout != null ? " (hold-out)" : " (set=validate)") : null, created);
         Map<String, String> prov = new LinkedHashMap<>(desc.provenance());
         prov.put("calibrated-from", measurements.toString());
         prov.put("calibrated-on", created);

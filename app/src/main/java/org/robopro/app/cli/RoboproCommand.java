@@ -21,6 +21,10 @@ import picocli.CommandLine.Command;
                 ModelCommand.class,
                 FkCommand.class,
                 IkCommand.class,
+                ProgramCommand.class,
+                WorkbenchCommand.class,
+                ControllerSimCommand.class,
+                LinkCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 
@@ -38,8 +42,7 @@ public final class RoboproCommand implements Callable<Integer> {
     }
 
     @Override
-    public Integer call() {
-        CommandLine.usage(this, System.out);
-        return 0;
+    public Integer call() throws Exception {
+        return new CommandLine(new WorkbenchCommand()).execute(); // no subcommand: open the workbench
     }
 }

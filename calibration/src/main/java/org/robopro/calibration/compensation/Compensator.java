@@ -120,24 +120,28 @@ public final class Compensator {
     public Batch batch() { return new Batch(); }
 
     /**
-     * Fast path for large target lists: closed-form nominal IK picking the branch nearest to
-     * the previous joint values, allocation-free FK of the calibrated model; falls back to the
-     * reference path when the nominal model has no closed form.
+     * Fast path for large target lists. It computes the same fixed point as the Fig. 5 iteration
+     * (joint values q* where the calibrated model reaches the target, X_comp = nominal FK at q*)
+     * but converges quadratically: q starts at the seed when the nominal model puts the seed
+     * within {@link #SEED_RADIUS_M} / {@link #SEED_ANGLE_RAD} of the target (paths: the previous
+     * target's joints), else at the closed-form nominal IK branch nearest to the seed; then
+     * Newton steps on the calibrated model (its geometric Jacobian) until the residual is below
+     * the tolerances; X_comp is the nominal forward kinematics at q*. Checked against the
+     * reference path in the tests. Allocation-free per target for six-axis arms.
      */
     public final class Batch {
-        private final KinematicModel.Workspace ws = calibrated.newWorkspace();
-        private final double[][] th = new double[8][Math.max(6, nominal.dof())];
-        private final double[] comp = new double[12], flangeCmd = new double[12], f = new double[12], act = new double[12],
-                tn = new double[12], tc = new double[12], tnInv = new double[12], target = new double[12], tmp = new double[9],
-                rot = new double[9];
-        private final double[] theta;
+        private final KinematicModel.Workspace wsC = calibrated.newWorkspace(), wsN = nominal.newWorkspace();
         private final int n = nominal.dof();
+        private final double[][] th = new double[8][Math.max(6, n)];
+        private final double[] f = new double[12], act = new double[12], tn = new double[12], tc = new double[12],
+                tnInv = new double[12], target = new double[12], flangeCmd = new double[12], tmp = new double[9],
+                jac = new double[6 * n], a = new double[36], e = new double[6], w = new double[3], qWork = new double[n],
+                thetaSeed = new double[n];
 
         private Batch() {
             toArray(toolNominal, tn);
             toArray(toolCalibrated, tc);
             toArray(toolNominal.inverse(), tnInv);
-            theta = new double[n];
         }
 
         /**
@@ -147,71 +151,143 @@ public final class Compensator {
          * {@code residualOut} receives position (m) and rotation (rad) residuals. Returns the status.
          */
         public Status compensate(double[] pos, double[] quat, double[] qInOut, double[] commandedOut, double[] residualOut) {
-            if (!ik.hasClosedForm() || n != 6 || extended != null) { // effects: the reference path
-                Result r = Compensator.this.compensate(Pose.fromQuaternion(quat[0], quat[1], quat[2], quat[3], pos[0], pos[1], pos[2]), qInOut);
-                System.arraycopy(r.q(), 0, qInOut, 0, n);
-                double[] qq = r.commanded().quaternion();
-                commandedOut[0] = r.commanded().x(); commandedOut[1] = r.commanded().y(); commandedOut[2] = r.commanded().z();
-                System.arraycopy(qq, 0, commandedOut, 3, 4);
-                residualOut[0] = r.residualM();
-                residualOut[1] = r.residualRad();
-                return r.status();
-            }
+            if (n != 6 || extended != null) return reference(pos, quat, qInOut, commandedOut, residualOut); // effects: reference path
             quatTo12(quat, pos, target);
-            System.arraycopy(target, 0, comp, 0, 12);
-            double[] thetaPrev = nominal.theta(qInOut);
-            double rp = Double.NaN, rr = Double.NaN;
-            for (int it = 1; it <= MAX_ITERATIONS; it++) {
-                mul12(comp, tnInv, flangeCmd);
+            System.arraycopy(qInOut, 0, qWork, 0, n);
+            nominal.flange(qWork, wsN, f);
+            mul12(f, tn, act);
+            if (error(target, act) > SEED_RADIUS_M || Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) > SEED_ANGLE_RAD) {
+                if (!ik.hasClosedForm()) return reference(pos, quat, qInOut, commandedOut, residualOut);
+                mul12(target, tnInv, flangeCmd);
                 int count = ik.closedFormThetas(flangeCmd, th);
-                if (count == 0) return finish(comp, commandedOut, residualOut, rp, rr, Status.UNREACHABLE);
-                int best = -1;
+                if (count == 0) return finish(qInOut, commandedOut, residualOut, Double.NaN, Double.NaN, Status.UNREACHABLE);
+                // The branch nearest to the seed (in q, on the seed's turn), preferring ones inside the limits.
+                double[] ts = nominal.theta(qInOut);
                 double bestD = Double.POSITIVE_INFINITY;
+                boolean bestInside = false;
                 for (int s = 0; s < count; s++) {
+                    for (int j = 0; j < n; j++) thetaSeed[j] = ts[j] + wrap(th[s][j] - ts[j]);
+                    double[] qc = nominal.q(thetaSeed);
+                    boolean inside = nominal.withinLimits(qc);
                     double d = 0;
-                    for (int j = 0; j < n; j++) {
-                        double diff = wrap(th[s][j] - thetaPrev[j]);
-                        d += diff * diff;
+                    for (int j = 0; j < n; j++) d += (qc[j] - qInOut[j]) * (qc[j] - qInOut[j]);
+                    if ((inside && !bestInside) || (inside == bestInside && d < bestD)) {
+                        bestD = d;
+                        bestInside = inside;
+                        System.arraycopy(qc, 0, qWork, 0, n);
                     }
-                    if (d < bestD) { bestD = d; best = s; }
                 }
-                // Stay on the previous turn: theta = previous + wrapped difference.
-                for (int j = 0; j < n; j++) theta[j] = thetaPrev[j] + wrap(th[best][j] - thetaPrev[j]);
-                System.arraycopy(theta, 0, thetaPrev, 0, n);
-                double[] q = nominal.q(theta);
-                calibrated.flange(q, ws, f);
-                mul12(f, tc, act);
-                double dx = target[3] - act[3], dy = target[7] - act[7], dz = target[11] - act[11];
-                // rotation error Log(R_t R_aᵀ)
-                for (int i = 0; i < 3; i++)
-                    for (int j = 0; j < 3; j++)
-                        tmp[3 * i + j] = target[4 * i] * act[4 * j] + target[4 * i + 1] * act[4 * j + 1] + target[4 * i + 2] * act[4 * j + 2];
-                double[] w = new double[3];
-                log(tmp, w);
-                rp = Math.sqrt(dx * dx + dy * dy + dz * dz);
-                rr = Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-                System.arraycopy(q, 0, qInOut, 0, n);
-                if (rp <= POSITION_TOLERANCE && rr <= ROTATION_TOLERANCE)
-                    return finish(comp, commandedOut, residualOut, rp, rr, nominal.withinLimits(q) ? Status.CONVERGED : Status.OUT_OF_LIMITS);
-                comp[3] += dx; comp[7] += dy; comp[11] += dz;
-                exp(w, rot);
-                for (int i = 0; i < 3; i++)
-                    for (int j = 0; j < 3; j++)
-                        tmp[3 * i + j] = rot[3 * i] * comp[j] + rot[3 * i + 1] * comp[4 + j] + rot[3 * i + 2] * comp[8 + j];
-                for (int i = 0; i < 3; i++) for (int j = 0; j < 3; j++) comp[4 * i + j] = tmp[3 * i + j];
             }
-            return finish(comp, commandedOut, residualOut, rp, rr, Status.NOT_CONVERGED);
+            double rp = Double.NaN, rr = Double.NaN;
+            for (int it = 0; it <= MAX_ITERATIONS; it++) {
+                calibrated.flange(qWork, wsC, f);
+                mul12(f, tc, act);
+                rp = error(target, act);
+                rr = Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+                if (rp <= POSITION_TOLERANCE && rr <= ROTATION_TOLERANCE) {
+                    System.arraycopy(qWork, 0, qInOut, 0, n);
+                    nominal.flange(qWork, wsN, f);
+                    mul12(f, tn, act);
+                    return finish(qInOut, commandedOut, residualOut, rp, rr,
+                            nominal.withinLimits(qWork) ? Status.CONVERGED : Status.OUT_OF_LIMITS);
+                }
+                // Newton step on the calibrated model: J dq = e, J of the tool point (v + ω x r; ω).
+                calibrated.geometricJacobian(qWork, wsC, jac);
+                double ox = act[3] - f[3], oy = act[7] - f[7], oz = act[11] - f[11];
+                for (int c = 0; c < 6; c++) {
+                    double wx = jac[3 * n + c], wy = jac[4 * n + c], wz = jac[5 * n + c];
+                    a[c] = jac[c] + wy * oz - wz * oy;
+                    a[6 + c] = jac[n + c] + wz * ox - wx * oz;
+                    a[12 + c] = jac[2 * n + c] + wx * oy - wy * ox;
+                    a[18 + c] = wx; a[24 + c] = wy; a[30 + c] = wz;
+                }
+                e[0] = target[3] - act[3]; e[1] = target[7] - act[7]; e[2] = target[11] - act[11];
+                e[3] = w[0]; e[4] = w[1]; e[5] = w[2];
+                if (!solve6(a, e)) return finish(qInOut, commandedOut, residualOut, rp, rr, Status.NOT_CONVERGED);
+                for (int j = 0; j < 6; j++) qWork[j] += e[j];
+            }
+            System.arraycopy(qWork, 0, qInOut, 0, n);
+            return finish(qInOut, commandedOut, residualOut, rp, rr, Status.NOT_CONVERGED);
         }
 
-        private Status finish(double[] c, double[] commandedOut, double[] residualOut, double rp, double rr, Status s) {
-            commandedOut[0] = c[3]; commandedOut[1] = c[7]; commandedOut[2] = c[11];
-            double[] r = {c[0], c[1], c[2], c[4], c[5], c[6], c[8], c[9], c[10]};
-            double[] qq = Pose.of(orthonormalize(r), 0, 0, 0).quaternion();
+        /** Position error |target - actual| (m); leaves the rotation error Log(R_t R_aᵀ) in w. */
+        private double error(double[] t, double[] a) {
+            double dx = t[3] - a[3], dy = t[7] - a[7], dz = t[11] - a[11];
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    tmp[3 * i + j] = t[4 * i] * a[4 * j] + t[4 * i + 1] * a[4 * j + 1] + t[4 * i + 2] * a[4 * j + 2];
+            log(tmp, w);
+            return Math.sqrt(dx * dx + dy * dy + dz * dz);
+        }
+
+        private Status reference(double[] pos, double[] quat, double[] qInOut, double[] commandedOut, double[] residualOut) {
+            Result r = Compensator.this.compensate(Pose.fromQuaternion(quat[0], quat[1], quat[2], quat[3], pos[0], pos[1], pos[2]), qInOut);
+            System.arraycopy(r.q(), 0, qInOut, 0, n);
+            double[] qq = r.commanded().quaternion();
+            commandedOut[0] = r.commanded().x(); commandedOut[1] = r.commanded().y(); commandedOut[2] = r.commanded().z();
             System.arraycopy(qq, 0, commandedOut, 3, 4);
+            residualOut[0] = r.residualM();
+            residualOut[1] = r.residualRad();
+            return r.status();
+        }
+
+        /** Writes X_comp (the nominal tool pose left in {@code act}) and residuals. */
+        private Status finish(double[] q, double[] commandedOut, double[] residualOut, double rp, double rr, Status s) {
+            commandedOut[0] = act[3]; commandedOut[1] = act[7]; commandedOut[2] = act[11];
+            quaternion(act, commandedOut);
             residualOut[0] = rp;
             residualOut[1] = rr;
             return s;
         }
+    }
+
+    /** Seed closeness below which the batch path skips the closed-form IK. */
+    public static final double SEED_RADIUS_M = 0.05, SEED_ANGLE_RAD = 0.2;
+
+    /** Solves the 6x6 system a x = b in place (b becomes x), partial pivoting; false when singular. */
+    static boolean solve6(double[] a, double[] b) {
+        for (int c = 0; c < 6; c++) {
+            int p = c;
+            for (int r = c + 1; r < 6; r++) if (Math.abs(a[6 * r + c]) > Math.abs(a[6 * p + c])) p = r;
+            if (Math.abs(a[6 * p + c]) < 1e-12) return false;
+            if (p != c) {
+                for (int k = 0; k < 6; k++) { double t = a[6 * c + k]; a[6 * c + k] = a[6 * p + k]; a[6 * p + k] = t; }
+                double t = b[c]; b[c] = b[p]; b[p] = t;
+            }
+            for (int r = c + 1; r < 6; r++) {
+                double fct = a[6 * r + c] / a[6 * c + c];
+                if (fct == 0) continue;
+                for (int k = c; k < 6; k++) a[6 * r + k] -= fct * a[6 * c + k];
+                b[r] -= fct * b[c];
+            }
+        }
+        for (int r = 5; r >= 0; r--) {
+            double s = b[r];
+            for (int k = r + 1; k < 6; k++) s -= a[6 * r + k] * b[k];
+            b[r] = s / a[6 * r + r];
+        }
+        return true;
+    }
+
+    /** Unit quaternion (w, x, y, z), w >= 0, of the rotation in a 3x4 matrix, written at out[3..6]. */
+    static void quaternion(double[] m, double[] out) {
+        double r00 = m[0], r01 = m[1], r02 = m[2], r10 = m[4], r11 = m[5], r12 = m[6], r20 = m[8], r21 = m[9], r22 = m[10];
+        double t = r00 + r11 + r22, qw, qx, qy, qz;
+        if (t > 0) {
+            double s = Math.sqrt(t + 1) * 2;
+            qw = 0.25 * s; qx = (r21 - r12) / s; qy = (r02 - r20) / s; qz = (r10 - r01) / s;
+        } else if (r00 > r11 && r00 > r22) {
+            double s = Math.sqrt(1 + r00 - r11 - r22) * 2;
+            qw = (r21 - r12) / s; qx = 0.25 * s; qy = (r01 + r10) / s; qz = (r02 + r20) / s;
+        } else if (r11 > r22) {
+            double s = Math.sqrt(1 + r11 - r00 - r22) * 2;
+            qw = (r02 - r20) / s; qx = (r01 + r10) / s; qy = 0.25 * s; qz = (r12 + r21) / s;
+        } else {
+            double s = Math.sqrt(1 + r22 - r00 - r11) * 2;
+            qw = (r10 - r01) / s; qx = (r02 + r20) / s; qy = (r12 + r21) / s; qz = 0.25 * s;
+        }
+        double nrm = Math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz) * (qw < 0 ? -1 : 1);
+        out[3] = qw / nrm; out[4] = qx / nrm; out[5] = qy / nrm; out[6] = qz / nrm;
     }
 
     // ------------------------------------------------------------------ small 3x4 helpers
@@ -249,26 +325,5 @@ public final class Compensator {
         double vx = r[7] - r[5], vy = r[2] - r[6], vz = r[3] - r[1];
         double k = th < 1e-6 ? 0.5 : th / (2 * Math.sin(th));
         w[0] = vx * k; w[1] = vy * k; w[2] = vz * k;
-    }
-
-    static void exp(double[] w, double[] r) {
-        double th2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2], th = Math.sqrt(th2);
-        double a = th < 1e-6 ? 1 - th2 / 6 : Math.sin(th) / th, b = th < 1e-6 ? 0.5 - th2 / 24 : (1 - Math.cos(th)) / th2;
-        double x = w[0], y = w[1], z = w[2];
-        r[0] = 1 - b * (y * y + z * z); r[1] = b * x * y - a * z; r[2] = b * x * z + a * y;
-        r[3] = b * x * y + a * z; r[4] = 1 - b * (x * x + z * z); r[5] = b * y * z - a * x;
-        r[6] = b * x * z - a * y; r[7] = b * y * z + a * x; r[8] = 1 - b * (x * x + y * y);
-    }
-
-    static double[] orthonormalize(double[] r) {
-        double[] x = {r[0], r[3], r[6]}, y = {r[1], r[4], r[7]};
-        double nx = Math.sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-        for (int i = 0; i < 3; i++) x[i] /= nx;
-        double d = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-        for (int i = 0; i < 3; i++) y[i] -= d * x[i];
-        double ny = Math.sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
-        for (int i = 0; i < 3; i++) y[i] /= ny;
-        double[] z = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-        return new double[] {x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]};
     }
 }

@@ -47,7 +47,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     private final int m;
     // work buffers
     private final KinematicModel.Workspace ws;
-    private final double[] pose12 = new double[12], jg, jFull;
+    private final double[] pose12 = new double[12], flange12 = new double[12], jg, jFull;
     private final double[][] cInvCols;
 
     /**
@@ -291,7 +291,16 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 for (int j = 0; j < dof; j++) theta[j] += dTheta[j];
                 qEff = mdl.q(theta);
             } else qEff = q;
-            mdl.poseJacobian(qEff, flangeTtool, ws, pose12, jg);
+            if (jac != null) mdl.poseJacobian(qEff, flangeTtool, ws, pose12, jg);
+            else {
+                // Residuals only: forward kinematics is enough (several times cheaper than the Jacobian).
+                mdl.flange(qEff, ws, flange12);
+                for (int a = 0; a < 3; a++) {
+                    double f0 = flange12[4 * a], f1 = flange12[4 * a + 1], f2 = flange12[4 * a + 2];
+                    for (int b = 0; b < 3; b++) pose12[4 * a + b] = f0 * rft[b] + f1 * rft[3 + b] + f2 * rft[6 + b];
+                    pose12[4 * a + 3] = f0 * tool[0] + f1 * tool[1] + f2 * tool[2] + flange12[4 * a + 3];
+                }
+            }
             pb[0] = pose12[3]; pb[1] = pose12[7]; pb[2] = pose12[11];
             rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
             rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];

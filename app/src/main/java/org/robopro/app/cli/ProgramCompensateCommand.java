@@ -1,0 +1,55 @@
+package org.robopro.app.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotLibrary;
+import org.robopro.programs.ProgramCompensation;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.rapid.RapidWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code robopro program compensate FILE.mod --robot irb2000 --calibrated MODEL --out FILE.mod}:
+ * rewrites the targets so the real (calibrated) robot reaches them; prints each target's correction.
+ */
+@Command(name = "compensate", mixinStandardHelpOptions = true,
+        description = "Rewrite a RAPID module's targets with a calibrated model so the real robot reaches them.")
+public final class ProgramCompensateCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE.mod") Path file;
+
+    @Option(names = "--robot", required = true, paramLabel = "ROBOT", description = "the controller's (nominal) robot") String robot;
+
+    @Option(names = "--calibrated", required = true, paramLabel = "MODEL", description = "robot file of the calibrated model") String calibrated;
+
+    @Option(names = "--out", required = true, paramLabel = "FILE.mod") Path out;
+
+    @Option(names = "--proc", defaultValue = "main", paramLabel = "PROC") String proc;
+
+    @Option(names = "--force", description = "replace the output if it exists") boolean force;
+
+    @Spec CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        RapidModule m = RapidParser.parse(Files.readString(file), file.toString());
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.load(robot));
+        KinematicModel real = KinematicModel.build(RobotLibrary.load(calibrated));
+        ProgramCompensation.Outcome o = ProgramCompensation.compensate(m, proc, nominal, ProgramCompensation.fixedPoint(nominal, real));
+        AtomicFiles.writeString(out, RapidWriter.export(o.module()).text(), force);
+        boolean allOk = true;
+        for (ProgramCompensation.Correction c : o.corrections()) {
+            spec.commandLine().getOut().println(c);
+            allOk &= c.status().equals("converged");
+        }
+        spec.commandLine().getOut().printf("wrote %s (%d targets compensated)%n", out, o.corrections().size());
+        return allOk ? 0 : 1;
+    }
+}

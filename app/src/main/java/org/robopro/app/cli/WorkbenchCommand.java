@@ -1,0 +1,135 @@
+package org.robopro.app.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import javax.swing.JOptionPane;
+import org.robopro.app.workbench.ProjectStore;
+import org.robopro.app.workbench.Workbench;
+import org.robopro.models.InputException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code robopro workbench}: opens the desktop workbench (also what {@code robopro} with no
+ * arguments does); with {@code --screenshot} renders once, saves a PNG of the whole window and
+ * exits; with {@code --benchmark} measures the start-up time and frame rate.
+ * Exit codes: 0 fine, 2 bad input, 3 the 3D view could not start (no OpenGL context).
+ */
+@Command(name = "workbench", mixinStandardHelpOptions = true,
+        description = "Open the 3D workbench (cell layout, jogging, teaching, programs).")
+public final class WorkbenchCommand implements Callable<Integer> {
+    @Option(names = "--project", paramLabel = "FILE", description = "Project file to open (default: the IRB-2000 welding cell).")
+    Path project;
+
+    @Option(names = "--screenshot", paramLabel = "FILE", description = "Render, save a PNG of the whole window, exit.")
+    Path screenshot;
+
+    @Option(names = "--size", paramLabel = "WxH", defaultValue = "1280x720", description = "Window size (default ${DEFAULT-VALUE}).")
+    String size;
+
+    @Option(names = "--benchmark", description = "Measure time to first frame and frames per second, print them, exit.")
+    boolean benchmark;
+
+    @Option(names = "--benchmark-seconds", defaultValue = "6", description = "Measuring time of --benchmark (default ${DEFAULT-VALUE} s).")
+    double benchmarkSeconds;
+
+    @Option(names = "--first-frame-timeout", defaultValue = "20", paramLabel = "S",
+            description = "Fail when no frame is drawn within S seconds (default ${DEFAULT-VALUE}).")
+    double firstFrameTimeout;
+
+    @Override
+    public Integer call() throws Exception {
+        int[] wh = parseSize(size);
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            System.err.println("robopro workbench: no display (DISPLAY is unset or java.awt.headless is true); "
+                    + "run under a desktop or Xvfb (e.g. xvfb-run ./robopro workbench ...)");
+            return 3;
+        }
+        boolean interactive = screenshot == null && !benchmark;
+        Path open = project;
+        if (interactive) open = offerRecovery(project).orElse(project);
+        Workbench.Options o = Workbench.Options.defaults().withSize(wh[0], wh[1]).withProject(open)
+                .withFrameRateCap(benchmark ? -1 : 60);
+        o = new Workbench.Options(o.width(), o.height(), o.project(), o.visible(), o.frameRateCap(), (long) (firstFrameTimeout * 1000));
+        Workbench wb;
+        try {
+            wb = Workbench.open(o);
+        } catch (IllegalStateException e) {
+            System.err.println("robopro workbench: " + e.getMessage());
+            return 3;
+        }
+        if (interactive) {
+            new CountDownLatch(1).await(); // the window's Exit action ends the process
+            return 0;
+        }
+        try {
+            if (benchmark) benchmark(wb);
+            if (screenshot != null) {
+                wb.screenshot(screenshot);
+                System.out.println("robopro workbench: saved " + screenshot.toAbsolutePath());
+            }
+        } catch (IllegalStateException e) {
+            System.err.println("robopro workbench: " + e.getMessage());
+            return 3;
+        } finally {
+            wb.close();
+        }
+        return 0;
+    }
+
+    private void benchmark(Workbench wb) throws InterruptedException {
+        double first = wb.secondsToFirstFrame();
+        // Keep the robot moving so every frame re-poses the links, as when jogging or playing.
+        double[] q0 = wb.model().q();
+        Thread.sleep(1500);
+        long f0 = wb.app().frameCount();
+        long t0 = System.nanoTime();
+        long end = t0 + (long) (benchmarkSeconds * 1e9);
+        while (System.nanoTime() < end) {
+            double t = (System.nanoTime() - t0) / 1e9;
+            double[] q = q0.clone();
+            q[0] += Math.toRadians(30) * Math.sin(t);
+            wb.model().setQ(q);
+            Thread.sleep(16); // a jog or playback update per 60 Hz frame
+        }
+        long frames = wb.app().frameCount() - f0;
+        double secs = (System.nanoTime() - t0) / 1e9;
+        System.out.printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%n",
+                size, first, frames / secs, frames, secs);
+    }
+
+    /** An autosave left by a crash: asks whether to open it instead. */
+    private static Optional<Path> offerRecovery(Path project) throws java.io.IOException {
+        Optional<Path> a = ProjectStore.recoverable(project);
+        if (a.isEmpty()) return Optional.empty();
+        try {
+            ProjectStore.read(a.get());
+        } catch (InputException e) {
+            return Optional.empty();
+        }
+        int r = JOptionPane.showConfirmDialog(null, "robopro found unsaved work from an earlier session:\n" + a.get()
+                + "\n\nRecover it? (No keeps the autosave file; it is replaced at the next autosave.)", "Recover unsaved work",
+                JOptionPane.YES_NO_OPTION);
+        if (r != JOptionPane.YES_OPTION) return Optional.empty();
+        Path recovered = a.get().resolveSibling(a.get().getFileName() + ".recovered.json");
+        Files.copy(a.get(), recovered, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        return Optional.of(recovered);
+    }
+
+    static int[] parseSize(String s) {
+        String[] p = s.toLowerCase(Locale.ROOT).split("x");
+        try {
+            if (p.length == 2) {
+                int w = Integer.parseInt(p[0].trim()), h = Integer.parseInt(p[1].trim());
+                if (w >= 320 && h >= 240 && w <= 8192 && h <= 8192) return new int[] {w, h};
+            }
+        } catch (NumberFormatException ignored) {
+            // reported below
+        }
+        throw new IllegalArgumentException("--size: expected WIDTHxHEIGHT between 320x240 and 8192x8192, got '" + s + "'");
+    }
+}

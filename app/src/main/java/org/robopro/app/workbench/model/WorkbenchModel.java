@@ -1,0 +1,307 @@
+package org.robopro.app.workbench.model;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicLong;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.RobotDescription;
+
+/**
+ * The workbench's plain application model: the cell (robot and its placement, tool, objects,
+ * work objects), the robot's joint values, taught targets and the program. The 3D scene is
+ * updated FROM it each frame (scene states compare {@link #version()}), the Swing panels listen
+ * to it. Mutators are synchronized and bump the version; getters return immutable snapshots, so
+ * the render thread may read at any time. Angles inside are radians, lengths metres.
+ */
+public final class WorkbenchModel {
+    /** What changed, for listeners that care. */
+    public enum Change { ROBOT, JOINTS, CELL, TOOL, TARGETS, PROGRAM, SELECTION, VIEW, PROJECT }
+
+    /** Told about each change, on the thread that made it. */
+    public interface Listener { void changed(Change what); }
+
+    private final AtomicLong version = new AtomicLong();
+    private final AtomicLong jointVersion = new AtomicLong();
+    private final List<Listener> listeners = new CopyOnWriteArrayList<>();
+
+    private String robotRef;
+    private RobotKinematics kinematics;
+    private Pose worldTbase = Pose.IDENTITY;
+    private Tool tool = Tool.flange();
+    private List<CellObject> objects = List.of();
+    private List<WorkObject> workObjects = List.of();
+    private List<Target> targets = List.of();
+    private List<Instruction> program = List.of();
+    private String calibrationReference;
+    private volatile double[] q;
+    private volatile String selection;
+    private volatile boolean showFrames;
+    private volatile boolean showPath = true;
+    private volatile boolean dirty;
+
+    public WorkbenchModel(String robotRef, RobotDescription robot) {
+        setRobot(robotRef, robot);
+        dirty = false;
+    }
+
+    public void addListener(Listener l) { listeners.add(l); }
+    public void removeListener(Listener l) { listeners.remove(l); }
+
+    private void fire(Change c) {
+        version.incrementAndGet();
+        if (c != Change.SELECTION && c != Change.VIEW) dirty = true;
+        for (Listener l : listeners) l.changed(c);
+    }
+
+    /** Incremented by every change; scene states rebuild when it moved. */
+    public long version() { return version.get(); }
+
+    /** Incremented when only the joint values changed (cheap per-frame update). */
+    public long jointVersion() { return jointVersion.get(); }
+
+    /** True when there are changes not yet saved. */
+    public boolean dirty() { return dirty; }
+    public void markSaved() { dirty = false; }
+
+    // ---- robot ---------------------------------------------------------------------------
+
+    public void setRobot(String ref, RobotDescription robot) {
+        synchronized (this) {
+            robotRef = Objects.requireNonNull(ref);
+            kinematics = RobotKinematics.of(robot);
+            q = new double[robot.dof()];
+        }
+        jointVersion.incrementAndGet();
+        fire(Change.ROBOT);
+    }
+
+    public synchronized String robotRef() { return robotRef; }
+    public synchronized RobotKinematics kinematics() { return kinematics; }
+    public RobotDescription robot() { return kinematics().description(); }
+
+    public synchronized Pose worldTbase() { return worldTbase; }
+
+    public void setWorldTbase(Pose p) {
+        synchronized (this) { worldTbase = Objects.requireNonNull(p); }
+        fire(Change.CELL);
+    }
+
+    /** Controller joint values (rad / m), a copy. */
+    public double[] q() { return q.clone(); }
+
+    public void setQ(double[] newQ) {
+        if (newQ.length != q.length)
+            throw new IllegalArgumentException("expected " + q.length + " joint values, got " + newQ.length);
+        for (double v : newQ) if (!Double.isFinite(v)) throw new IllegalArgumentException("non-finite joint value");
+        q = newQ.clone();
+        jointVersion.incrementAndGet();
+        for (Listener l : listeners) l.changed(Change.JOINTS);
+    }
+
+    /** TCP in world coordinates at the current joint values. */
+    public Pose worldTtcp() { return worldTtcp(q); }
+
+    public Pose worldTtcp(double[] qq) {
+        RobotKinematics k;
+        Pose base;
+        Tool t;
+        synchronized (this) { k = kinematics; base = worldTbase; t = tool; }
+        return base.times(k.flange(qq)).times(t.flangeTtcp());
+    }
+
+    /** Joint values putting the TCP at {@code worldTtcp}, nearest to {@code seed}. */
+    public Optional<double[]> solveTcp(Pose worldTtcp, double[] seed) {
+        RobotKinematics k;
+        Pose base;
+        Tool t;
+        synchronized (this) { k = kinematics; base = worldTbase; t = tool; }
+        Pose baseTflange = base.inverse().times(worldTtcp).times(t.flangeTtcp().inverse());
+        return k.solveNear(baseTflange, seed);
+    }
+
+    // ---- tool ----------------------------------------------------------------------------
+
+    public synchronized Tool tool() { return tool; }
+
+    public void setTool(Tool t) {
+        synchronized (this) { tool = Objects.requireNonNull(t); }
+        fire(Change.TOOL);
+    }
+
+    // ---- cell objects --------------------------------------------------------------------
+
+    public synchronized List<CellObject> objects() { return objects; }
+
+    public synchronized Optional<CellObject> object(String id) {
+        return objects.stream().filter(o -> o.id().equals(id)).findFirst();
+    }
+
+    /** A fresh id with the given prefix ("table" -> "table2"). */
+    public synchronized String newObjectId(String prefix) {
+        for (int i = 1; ; i++) {
+            String id = prefix + i;
+            if (objects.stream().noneMatch(o -> o.id().equals(id))) return id;
+        }
+    }
+
+    public void addObject(CellObject o) {
+        synchronized (this) {
+            if (objects.stream().anyMatch(x -> x.id().equals(o.id())))
+                throw new IllegalArgumentException("an object with id " + o.id() + " exists already");
+            List<CellObject> n = new ArrayList<>(objects);
+            n.add(o);
+            objects = List.copyOf(n);
+        }
+        fire(Change.CELL);
+    }
+
+    /** Replaces the object with the same id. */
+    public void updateObject(CellObject o) {
+        synchronized (this) {
+            List<CellObject> n = new ArrayList<>(objects);
+            int i = indexOf(n, o.id());
+            n.set(i, o);
+            objects = List.copyOf(n);
+        }
+        fire(Change.CELL);
+    }
+
+    public void removeObject(String id) {
+        synchronized (this) {
+            List<CellObject> n = new ArrayList<>(objects);
+            n.remove(indexOf(n, id));
+            objects = List.copyOf(n);
+            if (("object:" + id).equals(selection)) selection = null;
+        }
+        fire(Change.CELL);
+    }
+
+    private static int indexOf(List<CellObject> list, String id) {
+        for (int i = 0; i < list.size(); i++) if (list.get(i).id().equals(id)) return i;
+        throw new IllegalArgumentException("no object with id " + id);
+    }
+
+    public synchronized List<WorkObject> workObjects() { return workObjects; }
+
+    public void setWorkObjects(List<WorkObject> w) {
+        synchronized (this) { workObjects = List.copyOf(w); }
+        fire(Change.CELL);
+    }
+
+    // ---- targets and program -------------------------------------------------------------
+
+    public synchronized List<Target> targets() { return targets; }
+
+    public synchronized Optional<Target> target(String name) {
+        return targets.stream().filter(t -> t.name().equals(name)).findFirst();
+    }
+
+    /** A fresh target name: p10, p20, ... as RAPID programmers write them. */
+    public synchronized String newTargetName() {
+        for (int i = 10; ; i += 10) {
+            String n = "p" + i;
+            if (targets.stream().noneMatch(t -> t.name().equals(n))) return n;
+        }
+    }
+
+    /** Adds a target, or replaces the one with the same name. */
+    public void putTarget(Target t) {
+        synchronized (this) {
+            List<Target> n = new ArrayList<>(targets);
+            n.removeIf(x -> x.name().equals(t.name()));
+            n.add(t);
+            targets = List.copyOf(n);
+        }
+        fire(Change.TARGETS);
+    }
+
+    /** Removes a target and the instructions moving to it (a program never names a missing target). */
+    public void removeTarget(String name) {
+        boolean programChanged;
+        synchronized (this) {
+            List<Target> n = new ArrayList<>(targets);
+            n.removeIf(x -> x.name().equals(name));
+            targets = List.copyOf(n);
+            List<Instruction> p = new ArrayList<>(program);
+            programChanged = p.removeIf(i -> i.target().equals(name));
+            program = List.copyOf(p);
+            if (("target:" + name).equals(selection)) selection = null;
+        }
+        fire(Change.TARGETS);
+        if (programChanged) fire(Change.PROGRAM);
+    }
+
+    public synchronized List<Instruction> program() { return program; }
+
+    public void setProgram(List<Instruction> p) {
+        synchronized (this) { program = List.copyOf(p); }
+        fire(Change.PROGRAM);
+    }
+
+    public void addInstruction(Instruction i) {
+        List<Instruction> n;
+        synchronized (this) { n = new ArrayList<>(program); }
+        n.add(i);
+        setProgram(n);
+    }
+
+    /** How the robot can reach {@code t} from its taught joint values (the seed keeps the configuration). */
+    public TargetStatus status(Target t) {
+        Optional<double[]> sol = solveTcp(t.worldTtcp(), t.qTaught());
+        if (sol.isEmpty()) return TargetStatus.UNREACHABLE;
+        return kinematics().withinLimits(sol.get()) ? TargetStatus.REACHABLE : TargetStatus.OUTSIDE_LIMITS;
+    }
+
+    public synchronized String calibrationReference() { return calibrationReference; }
+
+    public void setCalibrationReference(String ref) {
+        synchronized (this) { calibrationReference = ref; }
+        fire(Change.PROJECT);
+    }
+
+    // ---- selection and view --------------------------------------------------------------
+
+    /** "object:ID", "link:N", "target:NAME", "tool", or null. */
+    public String selection() { return selection; }
+
+    public void select(String s) {
+        if (Objects.equals(s, selection)) return;
+        selection = s;
+        fire(Change.SELECTION);
+    }
+
+    public boolean showFrames() { return showFrames; }
+    public void setShowFrames(boolean b) { showFrames = b; fire(Change.VIEW); }
+    public boolean showPath() { return showPath; }
+    public void setShowPath(boolean b) { showPath = b; fire(Change.VIEW); }
+
+    /** Replaces everything with the content of a loaded project (one change event per part). */
+    public void load(ProjectData p) {
+        synchronized (this) {
+            robotRef = p.robotRef();
+            kinematics = RobotKinematics.of(p.robot());
+            q = new double[p.robot().dof()];
+            worldTbase = p.worldTbase();
+            tool = p.tool();
+            objects = List.copyOf(p.objects());
+            workObjects = List.copyOf(p.workObjects());
+            targets = List.copyOf(p.targets());
+            program = List.copyOf(p.program());
+            calibrationReference = p.calibrationReference();
+            selection = null;
+        }
+        jointVersion.incrementAndGet();
+        for (Change c : new Change[] {Change.ROBOT, Change.CELL, Change.TOOL, Change.TARGETS, Change.PROGRAM, Change.PROJECT})
+            fire(c);
+        dirty = false;
+    }
+
+    /** A snapshot of everything a project file holds. */
+    public synchronized ProjectData snapshot() {
+        return new ProjectData(robotRef, kinematics.description(), worldTbase, tool, objects, workObjects, targets,
+                program, calibrationReference);
+    }
+}

@@ -1,0 +1,63 @@
+package org.robopro.app.workbench.scene;
+
+import com.jme3.app.Application;
+import com.jme3.app.SimpleApplication;
+import com.jme3.app.state.BaseAppState;
+import com.jme3.light.AmbientLight;
+import com.jme3.light.DirectionalLight;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.FastMath;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Node;
+import com.jme3.scene.debug.Grid;
+import com.jme3.scene.shape.Quad;
+
+/** Lights, background, floor and floor grid (1 m and 0.25 m lines), all in the jME y-up root. */
+public final class EnvironmentState extends BaseAppState {
+    private final Node env = new Node("environment");
+    private final AmbientLight ambient = new AmbientLight(new ColorRGBA(0.45f, 0.46f, 0.5f, 1));
+    private final DirectionalLight key = new DirectionalLight(new Vector3f(-0.5f, -1f, -0.35f).normalizeLocal(),
+            new ColorRGBA(0.85f, 0.83f, 0.8f, 1));
+    private final DirectionalLight fill = new DirectionalLight(new Vector3f(0.6f, -0.4f, 0.7f).normalizeLocal(),
+            new ColorRGBA(0.35f, 0.37f, 0.42f, 1));
+
+    @Override
+    protected void initialize(Application app) {
+        Shapes s = new Shapes(app.getAssetManager());
+        app.getViewPort().setBackgroundColor(new ColorRGBA(0.80f, 0.83f, 0.87f, 1));
+        Geometry floor = new Geometry("floor", new Quad(12, 12));
+        floor.setMaterial(s.lit(0xA9AEB5));
+        floor.rotate(-FastMath.HALF_PI, 0, 0);
+        floor.setLocalTranslation(-6, -0.002f, 6);
+        env.attachChild(floor);
+        Geometry fine = new Geometry("grid-fine", new Grid(49, 49, 0.25f));
+        fine.setMaterial(s.flat(0x9298A0, false));
+        fine.setLocalTranslation(-6, 0, -6);
+        env.attachChild(fine);
+        Geometry coarse = new Geometry("grid", new Grid(13, 13, 1f));
+        coarse.setMaterial(s.flat(0x6F757D, false));
+        coarse.setLocalTranslation(-6, 0.001f, -6);
+        env.attachChild(coarse);
+    }
+
+    @Override protected void cleanup(Application app) { }
+
+    @Override
+    protected void onEnable() {
+        Node root = ((SimpleApplication) getApplication()).getRootNode();
+        root.attachChild(env);
+        root.addLight(ambient);
+        root.addLight(key);
+        root.addLight(fill);
+    }
+
+    @Override
+    protected void onDisable() {
+        Node root = ((SimpleApplication) getApplication()).getRootNode();
+        env.removeFromParent();
+        root.removeLight(ambient);
+        root.removeLight(key);
+        root.removeLight(fill);
+    }
+}

@@ -1,0 +1,132 @@
+package org.robopro.app.workbench.scene;
+
+import com.jme3.asset.AssetManager;
+import com.jme3.material.Material;
+import com.jme3.material.RenderState;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Matrix3f;
+import com.jme3.math.Quaternion;
+import com.jme3.math.Transform;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Node;
+import com.jme3.scene.debug.Arrow;
+import com.jme3.scene.shape.Box;
+import com.jme3.scene.shape.Cylinder;
+import java.util.HashMap;
+import java.util.Map;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
+
+/** Geometry helpers shared by the scene states: poses to transforms, beams, boxes, axis triads, cached materials. */
+public final class Shapes {
+    private final AssetManager assets;
+    private final Map<String, Material> materials = new HashMap<>();
+
+    public Shapes(AssetManager assets) { this.assets = assets; }
+
+    public static Vector3f v(Vec3 p) { return new Vector3f((float) p.x(), (float) p.y(), (float) p.z()); }
+
+    /** A robopro pose as a jME transform (same coordinates: the scene's world node is z-up). */
+    public static Transform transform(Pose p) {
+        Matrix3f m = new Matrix3f(
+                (float) p.rot(0, 0), (float) p.rot(0, 1), (float) p.rot(0, 2),
+                (float) p.rot(1, 0), (float) p.rot(1, 1), (float) p.rot(1, 2),
+                (float) p.rot(2, 0), (float) p.rot(2, 1), (float) p.rot(2, 2));
+        Quaternion q = new Quaternion();
+        q.fromRotationMatrix(m);
+        return new Transform(new Vector3f((float) p.x(), (float) p.y(), (float) p.z()), q);
+    }
+
+    public static void apply(Pose p, com.jme3.scene.Spatial s) { s.setLocalTransform(transform(p)); }
+
+    /** Rotation taking +z to {@code dir}. */
+    public static Quaternion alignZ(Vector3f dir) {
+        Vector3f z = dir.normalize();
+        Vector3f helper = Math.abs(z.x) < 0.9f ? Vector3f.UNIT_X : Vector3f.UNIT_Y;
+        Vector3f x = helper.cross(z).normalizeLocal();
+        Vector3f y = z.cross(x);
+        Quaternion q = new Quaternion();
+        q.fromAxes(x, y, z);
+        return q;
+    }
+
+    /** Shaded material of an 0xRRGGBB colour, shared. */
+    public Material lit(int rgb) {
+        return materials.computeIfAbsent("lit" + rgb, k -> {
+            Material m = new Material(assets, "Common/MatDefs/Light/Lighting.j3md");
+            ColorRGBA c = color(rgb);
+            m.setBoolean("UseMaterialColors", true);
+            m.setColor("Diffuse", c);
+            m.setColor("Ambient", c.mult(0.55f));
+            m.setColor("Specular", new ColorRGBA(0.35f, 0.35f, 0.35f, 1));
+            m.setFloat("Shininess", 24f);
+            return m;
+        });
+    }
+
+    /** Flat (unlit) material, optionally drawn over everything (selection outlines, frames). */
+    public Material flat(int rgb, boolean onTop) {
+        return materials.computeIfAbsent("flat" + rgb + onTop, k -> {
+            Material m = new Material(assets, "Common/MatDefs/Misc/Unshaded.j3md");
+            m.setColor("Color", color(rgb));
+            if (onTop) m.getAdditionalRenderState().setDepthTest(false);
+            m.getAdditionalRenderState().setFaceCullMode(RenderState.FaceCullMode.Off);
+            return m;
+        });
+    }
+
+    public static ColorRGBA color(int rgb) {
+        return new ColorRGBA(((rgb >> 16) & 255) / 255f, ((rgb >> 8) & 255) / 255f, (rgb & 255) / 255f, 1f);
+    }
+
+    /** A closed cylinder of radius r from a to b. */
+    public Geometry beam(String name, Vector3f a, Vector3f b, float r, Material m) {
+        Vector3f d = b.subtract(a);
+        float len = d.length();
+        Geometry g = new Geometry(name, new Cylinder(2, 28, r, Math.max(len, 1e-4f), true));
+        g.setMaterial(m);
+        g.setLocalTranslation(a.add(b).multLocal(0.5f));
+        if (len > 1e-6f) g.setLocalRotation(alignZ(d));
+        return g;
+    }
+
+    /** A cylinder of radius r and length len centred at c along axis. */
+    public Geometry disc(String name, Vector3f c, Vector3f axis, float r, float len, Material m) {
+        Vector3f h = axis.normalize().multLocal(len / 2);
+        return beam(name, c.subtract(h), c.add(h), r, m);
+    }
+
+    /** A box of full size (sx, sy, sz) standing on its local origin (centre of the underside). */
+    public Geometry standingBox(String name, Vec3 size, Material m) {
+        Geometry g = new Geometry(name, new Box((float) size.x() / 2, (float) size.y() / 2, (float) size.z() / 2));
+        g.setLocalTranslation(0, 0, (float) size.z() / 2);
+        g.setMaterial(m);
+        return g;
+    }
+
+    /** A box from corner lo to corner hi. */
+    public Geometry box(String name, Vector3f lo, Vector3f hi, Material m) {
+        Vector3f half = hi.subtract(lo).multLocal(0.5f);
+        Geometry g = new Geometry(name, new Box(half.x, half.y, half.z));
+        g.setLocalTranslation(lo.add(half));
+        g.setMaterial(m);
+        return g;
+    }
+
+    /** Red/green/blue arrows for the x/y/z axes of a frame, {@code len} long (the paper's Fig. 8 view). */
+    public Node axes(String name, float len) {
+        Node n = new Node(name);
+        Vector3f[] dirs = {Vector3f.UNIT_X, Vector3f.UNIT_Y, Vector3f.UNIT_Z};
+        int[] cols = {0xE53935, 0x43A047, 0x1E88E5};
+        for (int i = 0; i < 3; i++) {
+            Arrow a = new Arrow(dirs[i].mult(len));
+            a.setLineWidth(2f);
+            Geometry g = new Geometry(name + "-" + "xyz".charAt(i), a);
+            g.setMaterial(flat(cols[i], true));
+            g.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
+            n.attachChild(g);
+        }
+        return n;
+    }
+}

@@ -1,0 +1,181 @@
+package org.robopro.app.workbench.scene;
+
+import com.jme3.app.SimpleApplication;
+import com.jme3.app.state.AppState;
+import com.jme3.collision.CollisionResult;
+import com.jme3.collision.CollisionResults;
+import com.jme3.math.FastMath;
+import com.jme3.math.Ray;
+import com.jme3.math.Vector2f;
+import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
+import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import com.jme3.system.awt.AwtPanel;
+import java.nio.file.Path;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Function;
+import org.robopro.app.workbench.model.WorkbenchModel;
+
+/**
+ * The jME side of the workbench: one AppState per feature (environment, robot, cell, path,
+ * camera, selection), all updated from the {@link WorkbenchModel} each frame. Other threads
+ * talk to the scene only through {@link #enqueue} or the model. Reports the first frame, the
+ * frame rate, and GL errors (jME would otherwise exit quietly with status 0 when it cannot
+ * create a context).
+ */
+public final class WorkbenchApp extends SimpleApplication {
+    private final WorkbenchModel model;
+    private final Function<String, Path> meshResolver;
+    private final CountDownLatch panelReady = new CountDownLatch(1);
+    private final CountDownLatch firstFrame = new CountDownLatch(1);
+    private final AtomicReference<Throwable> error = new AtomicReference<>();
+    private final AtomicLong frames = new AtomicLong();
+    private volatile AwtPanel panel;
+    private final Node world = new Node("world");
+    private final CameraState cameraState = new CameraState();
+    private PathState pathState;
+    private RobotState robotState;
+    private volatile double fps;
+    private long windowStartNanos;
+    private long windowFrames;
+    private int lastW, lastH;
+
+    public WorkbenchApp(WorkbenchModel model, Function<String, Path> meshResolver) {
+        super(new AppState[0]); // no fly camera, no stats overlay: navigation is CameraState
+        this.model = model;
+        this.meshResolver = meshResolver;
+    }
+
+    /** Hands over the Swing panel the scene is drawn into; simpleInitApp waits for it. */
+    public void setPanel(AwtPanel p) {
+        panel = p;
+        panelReady.countDown();
+    }
+
+    @Override
+    public void simpleInitApp() {
+        try {
+            if (!panelReady.await(30, TimeUnit.SECONDS)) throw new IllegalStateException("the Swing panel never arrived");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return;
+        }
+        // Both view ports: the panel resizes their cameras, and the renderer reads the frame back
+        // with the last-used view port's size (a stale GUI camera garbles the picture).
+        panel.attachTo(true, viewPort, guiViewPort);
+        setPauseOnLostFocus(false);
+        // robopro's scene is z-up; jME's world is y-up.
+        world.rotate(-FastMath.HALF_PI, 0, 0);
+        rootNode.attachChild(world);
+        robotState = new RobotState(model, world, path -> {
+            // Robot meshes are relative to the robot file; shipped robots (a name, not a path) have none on disk.
+            String ref = model.robotRef();
+            boolean isFile = ref.contains("/") || ref.contains("\\") || ref.endsWith(".json");
+            if (!isFile) return null;
+            Path robotFile = meshResolver.apply(ref);
+            return robotFile.toAbsolutePath().getParent().resolve(path);
+        });
+        pathState = new PathState(model, world);
+        stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
+                pathState, cameraState, new SelectionState(model, world, rootNode));
+        windowStartNanos = System.nanoTime();
+    }
+
+    @Override
+    public void simpleUpdate(float tpf) {
+        if (cam.getWidth() != lastW || cam.getHeight() != lastH) {
+            lastW = cam.getWidth();
+            lastH = cam.getHeight();
+            cameraState.refresh();
+        }
+    }
+
+    @Override
+    public void simpleRender(com.jme3.renderer.RenderManager rm) {
+        long n = frames.incrementAndGet();
+        if (n == 1) firstFrame.countDown();
+        windowFrames++;
+        long now = System.nanoTime();
+        if (now - windowStartNanos > 500_000_000L) {
+            fps = windowFrames * 1e9 / (now - windowStartNanos);
+            windowFrames = 0;
+            windowStartNanos = now;
+        }
+    }
+
+    @Override
+    public void handleError(String errMsg, Throwable t) {
+        error.compareAndSet(null, t != null ? new IllegalStateException(errMsg, t) : new IllegalStateException(errMsg));
+        firstFrame.countDown();
+        super.handleError(errMsg, t);
+    }
+
+    /**
+     * Waits for the first rendered frame; throws with the GL error, or when nothing was drawn
+     * within {@code timeoutMs} (no usable OpenGL context).
+     */
+    public void awaitFirstFrame(long timeoutMs) throws InterruptedException {
+        boolean done = firstFrame.await(timeoutMs, TimeUnit.MILLISECONDS);
+        Throwable e = error.get();
+        if (e != null) throw new IllegalStateException("3D view failed: " + e.getMessage(), e);
+        if (!done) throw new IllegalStateException("3D view did not draw a frame within " + timeoutMs
+                + " ms: no usable OpenGL context (is DISPLAY set and Mesa/GL installed?)");
+    }
+
+    /** Waits until {@code n} more frames were drawn after this call (so model changes are visible). */
+    public void awaitFrames(int n, long timeoutMs) throws InterruptedException {
+        long target = frames.get() + n;
+        long end = System.currentTimeMillis() + timeoutMs;
+        while (frames.get() < target) {
+            if (error.get() != null) throw new IllegalStateException("3D view failed", error.get());
+            if (System.currentTimeMillis() > end) throw new IllegalStateException("3D view stopped drawing");
+            Thread.sleep(5);
+        }
+    }
+
+    public long frameCount() { return frames.get(); }
+    public double fps() { return fps; }
+    public Throwable error() { return error.get(); }
+    public CameraState camera() { return cameraState; }
+    public PathState pathState() { return pathState; }
+    public RobotState robotState() { return robotState; }
+    public Node world() { return world; }
+
+    /** Picks at panel pixel (x, y) (Swing coordinates, y down); completes with a pick key or null. */
+    public CompletableFuture<String> pick(int x, int y) {
+        CompletableFuture<String> f = new CompletableFuture<>();
+        enqueue(() -> {
+            try {
+                Camera c = cam;
+                float sy = c.getHeight() - y;
+                Vector3f near = c.getWorldCoordinates(new Vector2f(x, sy), 0f);
+                Vector3f far = c.getWorldCoordinates(new Vector2f(x, sy), 1f);
+                CollisionResults res = new CollisionResults();
+                world.collideWith(new Ray(near, far.subtractLocal(near).normalizeLocal()), res);
+                String key = null;
+                for (CollisionResult r : res) {
+                    if (r.getGeometry().getName().startsWith("grid") || r.getGeometry().getName().startsWith("frame")) continue;
+                    key = keyOf(r.getGeometry());
+                    if (key != null) break;
+                }
+                f.complete(key);
+            } catch (RuntimeException e) {
+                f.completeExceptionally(e);
+            }
+        });
+        return f;
+    }
+
+    private static String keyOf(Spatial s) {
+        for (Spatial p = s; p != null; p = p.getParent()) {
+            Object k = p.getUserData("pick");
+            if (k != null) return k.toString();
+        }
+        return null;
+    }
+}

@@ -1,0 +1,226 @@
+package org.robopro.app.workbench.ui;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.Component;
+import java.awt.FlowLayout;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import javax.swing.JButton;
+import javax.swing.JComboBox;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSlider;
+import javax.swing.JSpinner;
+import javax.swing.JTable;
+import javax.swing.SpinnerNumberModel;
+import javax.swing.Timer;
+import javax.swing.table.AbstractTableModel;
+import javax.swing.table.DefaultTableCellRenderer;
+import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.model.Instruction;
+import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.Target;
+
+/**
+ * The program: instructions in a table (editable type, target, speed, zone; failing ones in
+ * red after a check), buttons to teach, add moves, reorder and check, and a timeline to play
+ * the program back.
+ */
+public final class ProgramPanel extends JPanel {
+    private final Workbench wb;
+    private final Rows rows = new Rows();
+    private final JTable table = new JTable(rows);
+    private final JSpinner speed = new JSpinner(new SpinnerNumberModel(500, 5, 7000, 50));
+    private final JSpinner zone = new JSpinner(new SpinnerNumberModel(10, 0, 200, 5));
+    private final JSlider timeline = new JSlider(0, 1000, 0);
+    private final JLabel time = new JLabel("0.00 s");
+    private final JButton play = new JButton("Play");
+    private final Timer player;
+    private ProgramPlan plan;
+    private long playStart;
+    private double playFrom;
+    private boolean scrubbing;
+
+    public ProgramPanel(Workbench wb) {
+        super(new BorderLayout(4, 4));
+        this.wb = wb;
+        table.setRowHeight(20);
+        table.setDefaultRenderer(Object.class, new StatusRenderer());
+        table.getColumnModel().getColumn(0).setMaxWidth(40);
+        table.getColumnModel().getColumn(1).setCellEditor(new javax.swing.DefaultCellEditor(
+                new JComboBox<>(new String[] {"MoveJ", "MoveL"})));
+        add(new JScrollPane(table), BorderLayout.CENTER);
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
+        buttons.add(button("Teach", "teach", e -> wb.teach()));
+        buttons.add(button("MoveJ", "add-movej", e -> addMove(Instruction.Type.MOVEJ)));
+        buttons.add(button("MoveL", "add-movel", e -> addMove(Instruction.Type.MOVEL)));
+        buttons.add(button("Check", "check", e -> check()));
+        buttons.add(new JLabel(" speed mm/s"));
+        buttons.add(speed);
+        buttons.add(new JLabel("zone mm"));
+        buttons.add(zone);
+        buttons.add(new JLabel(" "));
+        buttons.add(button("Up", "move-up", e -> shift(-1)));
+        buttons.add(button("Down", "move-down", e -> shift(1)));
+        buttons.add(button("Remove", "remove-instruction", e -> remove()));
+        add(buttons, BorderLayout.NORTH);
+        JPanel tl = new JPanel(new BorderLayout(4, 0));
+        play.setName("play");
+        play.addActionListener(e -> togglePlay());
+        tl.add(play, BorderLayout.WEST);
+        tl.add(timeline, BorderLayout.CENTER);
+        tl.add(time, BorderLayout.EAST);
+        add(tl, BorderLayout.SOUTH);
+        timeline.addChangeListener(e -> {
+            if (scrubbing || plan == null || plan.sampleCount() == 0) return;
+            showTime(plan.duration() * timeline.getValue() / 1000.0);
+        });
+        player = new Timer(30, e -> tick());
+    }
+
+    private JButton button(String text, String name, java.awt.event.ActionListener l) {
+        JButton b = new JButton(text);
+        b.setMargin(new java.awt.Insets(2, 6, 2, 6));
+        b.setName(name);
+        b.addActionListener(l);
+        return b;
+    }
+
+    /** Adds a move to the selected target, or to the last taught one. */
+    public void addMove(Instruction.Type type) {
+        String sel = wb.model().selection();
+        String target;
+        if (sel != null && sel.startsWith("target:")) target = sel.substring(7);
+        else {
+            List<Target> ts = wb.model().targets();
+            if (ts.isEmpty()) { wb.log("Teach a target first"); return; }
+            target = ts.get(ts.size() - 1).name();
+        }
+        wb.addMove(type, target, ((Number) speed.getValue()).doubleValue(), ((Number) zone.getValue()).doubleValue());
+    }
+
+    private void shift(int d) {
+        int r = table.getSelectedRow();
+        List<Instruction> p = new ArrayList<>(wb.model().program());
+        if (r < 0 || r + d < 0 || r + d >= p.size()) return;
+        Instruction i = p.remove(r);
+        p.add(r + d, i);
+        wb.model().setProgram(p);
+        table.getSelectionModel().setSelectionInterval(r + d, r + d);
+    }
+
+    private void remove() {
+        int r = table.getSelectedRow();
+        List<Instruction> p = new ArrayList<>(wb.model().program());
+        if (r < 0 || r >= p.size()) return;
+        p.remove(r);
+        wb.model().setProgram(p);
+    }
+
+    /** Checks the program and shows the outcome per row. */
+    public ProgramPlan check() {
+        plan = wb.checkProgram();
+        rows.fireTableDataChanged();
+        return plan;
+    }
+
+    private void togglePlay() {
+        if (player.isRunning()) { stop(); return; }
+        plan = ProgramPlan.of(wb.model());
+        rows.fireTableDataChanged();
+        if (plan.sampleCount() < 2) { wb.log("Nothing to play: the program needs two reachable moves"); return; }
+        playFrom = timeline.getValue() >= 1000 ? 0 : plan.duration() * timeline.getValue() / 1000.0;
+        playStart = System.nanoTime();
+        play.setText("Stop");
+        player.start();
+    }
+
+    private void stop() {
+        player.stop();
+        play.setText("Play");
+    }
+
+    private void tick() {
+        double t = playFrom + (System.nanoTime() - playStart) / 1e9;
+        if (t >= plan.duration()) { t = plan.duration(); stop(); }
+        showTime(t);
+        scrubbing = true;
+        timeline.setValue((int) Math.round(1000 * t / Math.max(1e-9, plan.duration())));
+        scrubbing = false;
+    }
+
+    /** Puts the robot where the program has it at time t (s). */
+    public void showTime(double t) {
+        if (plan == null) plan = ProgramPlan.of(wb.model());
+        if (plan.sampleCount() == 0) return;
+        wb.model().setQ(plan.qAtTime(t));
+        time.setText(String.format(Locale.ROOT, "%.2f / %.2f s", t, plan.duration()));
+    }
+
+    /** The model's program changed. */
+    public void refresh() {
+        if (plan != null && !player.isRunning()) plan = ProgramPlan.of(wb.model()); // keep check results live once checked
+        rows.fireTableDataChanged();
+    }
+
+    private final class Rows extends AbstractTableModel {
+        private final String[] cols = {"#", "Move", "Target", "Speed mm/s", "Zone mm", "Check"};
+
+        @Override public int getRowCount() { return wb.model().program().size(); }
+        @Override public int getColumnCount() { return cols.length; }
+        @Override public String getColumnName(int c) { return cols[c]; }
+        @Override public boolean isCellEditable(int r, int c) { return c >= 1 && c <= 4; }
+
+        @Override
+        public Object getValueAt(int r, int c) {
+            List<Instruction> p = wb.model().program();
+            if (r >= p.size()) return "";
+            Instruction i = p.get(r);
+            return switch (c) {
+                case 0 -> r + 1;
+                case 1 -> i.type().rapid();
+                case 2 -> i.target();
+                case 3 -> i.speedMmPerS();
+                case 4 -> i.zoneMm();
+                default -> step(r) == null ? "" : (step(r).ok() ? "ok " : "FAIL: ") + step(r).message();
+            };
+        }
+
+        @Override
+        public void setValueAt(Object v, int r, int c) {
+            List<Instruction> p = new ArrayList<>(wb.model().program());
+            Instruction i = p.get(r);
+            try {
+                Instruction n = switch (c) {
+                    case 1 -> new Instruction("MoveL".equals(v) ? Instruction.Type.MOVEL : Instruction.Type.MOVEJ, i.target(), i.speedMmPerS(), i.zoneMm());
+                    case 2 -> new Instruction(i.type(), v.toString().trim(), i.speedMmPerS(), i.zoneMm());
+                    case 3 -> new Instruction(i.type(), i.target(), Double.parseDouble(v.toString()), i.zoneMm());
+                    case 4 -> new Instruction(i.type(), i.target(), i.speedMmPerS(), Double.parseDouble(v.toString()));
+                    default -> i;
+                };
+                p.set(r, n);
+                wb.model().setProgram(p);
+            } catch (IllegalArgumentException e) {
+                wb.log("Not changed: " + e.getMessage());
+            }
+        }
+    }
+
+    private ProgramPlan.Step step(int r) {
+        if (plan == null) return null;
+        return plan.steps().stream().filter(s -> s.index() == r).findFirst().orElse(null);
+    }
+
+    private final class StatusRenderer extends DefaultTableCellRenderer {
+        @Override
+        public Component getTableCellRendererComponent(JTable t, Object v, boolean sel, boolean focus, int r, int c) {
+            Component comp = super.getTableCellRendererComponent(t, v, sel, focus, r, c);
+            ProgramPlan.Step s = step(r);
+            if (!sel) comp.setForeground(s != null && !s.ok() ? new Color(0xC0, 0x20, 0x20) : Color.BLACK);
+            return comp;
+        }
+    }
+}

@@ -1,0 +1,386 @@
+package org.robopro.app.workbench.ui;
+
+import com.jme3.system.awt.AwtPanel;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.Font;
+import java.awt.event.ActionEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseWheelEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Consumer;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
+import javax.swing.BorderFactory;
+import javax.swing.JCheckBoxMenuItem;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JLabel;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
+import javax.swing.JTextArea;
+import javax.swing.JToolBar;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import javax.swing.Timer;
+import javax.swing.WindowConstants;
+import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.model.CellObject;
+import org.robopro.app.workbench.model.Instruction;
+import org.robopro.app.workbench.model.WorkbenchModel;
+import org.robopro.app.workbench.scene.CameraState;
+import org.robopro.kinematics.Pose;
+
+/**
+ * The workbench window: menus and toolbar, the cell tree on the left, the 3D view in the
+ * middle with the program and log below it, properties and jogging on the right, a status bar.
+ * Every menu entry is an {@link Action} reachable by id ({@link #action(String)}), so tests
+ * drive the same code paths as a user.
+ */
+public final class WorkbenchFrame extends JFrame {
+    private static final String NEEDS_COMMS = "Needs the controller link (comms module, issue 5), not merged into the workbench yet";
+    private static final String NEEDS_CAL = "Needs the calibration and diagnosis modules (issues 3 and 4), not merged into the workbench yet";
+
+    private final Workbench wb;
+    private final Map<String, Action> actions = new LinkedHashMap<>();
+    private final CellTree tree;
+    private final PropertiesPanel properties;
+    private final JogPanel jog;
+    private final ProgramPanel program;
+    private final JTextArea logArea = new JTextArea(6, 60);
+    private final JLabel status = new JLabel(" ");
+    private final AtomicBoolean refreshQueued = new AtomicBoolean();
+    private volatile boolean robotChanged;
+    private volatile boolean structureChanged = true;
+    private volatile boolean selectionChanged;
+    private JSplitPane mainSplit;
+    private JSplitPane midSplit;
+
+    public WorkbenchFrame(Workbench wb, AwtPanel view) {
+        super("robopro workbench");
+        this.wb = wb;
+        setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
+        addWindowListener(new WindowAdapter() {
+            @Override public void windowClosing(WindowEvent e) { action("exit").actionPerformed(null); }
+        });
+        tree = new CellTree(wb.model());
+        properties = new PropertiesPanel(wb);
+        jog = new JogPanel(wb);
+        program = new ProgramPanel(wb);
+        defineActions();
+        setJMenuBar(menus());
+
+        view.setMinimumSize(new Dimension(100, 100));
+        navigation(view);
+        logArea.setEditable(false);
+        logArea.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        JTabbedPane bottom = new JTabbedPane();
+        bottom.addTab("Program", program);
+        bottom.addTab("Log", new JScrollPane(logArea));
+        JSplitPane centre = new JSplitPane(JSplitPane.VERTICAL_SPLIT, view, bottom);
+        centre.setResizeWeight(0.72);
+        centre.setBorder(null);
+        JScrollPane treeScroll = new JScrollPane(tree);
+        treeScroll.setPreferredSize(new Dimension(210, 400));
+        JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, properties, jog);
+        right.setResizeWeight(0.35);
+        right.setPreferredSize(new Dimension(330, 400));
+        JSplitPane mid = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, right);
+        mid.setResizeWeight(1);
+        JSplitPane main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, treeScroll, mid);
+        mainSplit = main;
+        midSplit = mid;
+        main.setResizeWeight(0);
+        JPanel content = new JPanel(new BorderLayout());
+        content.add(toolbar(), BorderLayout.NORTH);
+        content.add(main, BorderLayout.CENTER);
+        status.setBorder(BorderFactory.createEmptyBorder(2, 6, 2, 6));
+        content.add(status, BorderLayout.SOUTH);
+        setContentPane(content);
+
+        wb.model().addListener(this::modelChanged);
+        new Timer(500, e -> updateStatus()).start();
+    }
+
+    /** Sizes the window and places the split panes: tree 17 %, properties/jog 27 % of the width. */
+    public void sizeTo(int width, int height) {
+        setSize(width, height);
+        int tree = Math.max(170, (int) (width * 0.17));
+        mainSplit.setDividerLocation(tree);
+        midSplit.setDividerLocation(Math.max(300, width - tree - Math.max(300, (int) (width * 0.27))));
+        validate();
+    }
+
+    public Action action(String id) {
+        Action a = actions.get(id);
+        if (a == null) throw new IllegalArgumentException("no action " + id + "; known: " + actions.keySet());
+        return a;
+    }
+
+    public JogPanel jogPanel() { return jog; }
+    public ProgramPanel programPanel() { return program; }
+    public CellTree cellTree() { return tree; }
+    public PropertiesPanel propertiesPanel() { return properties; }
+
+    public void appendLog(String line) {
+        logArea.append(line + "\n");
+        logArea.setCaretPosition(logArea.getDocument().getLength());
+        status.setToolTipText(line);
+    }
+
+    private void modelChanged(WorkbenchModel.Change c) {
+        if (c == WorkbenchModel.Change.ROBOT) robotChanged = true;
+        // Joint changes (jogging, playback) come at frame rate: they only touch the jog panel.
+        if (c == WorkbenchModel.Change.SELECTION || c == WorkbenchModel.Change.VIEW) selectionChanged = true;
+        else if (c != WorkbenchModel.Change.JOINTS) structureChanged = true;
+        if (refreshQueued.compareAndSet(false, true)) SwingUtilities.invokeLater(this::refresh);
+    }
+
+    private void refresh() {
+        refreshQueued.set(false);
+        if (robotChanged) { robotChanged = false; jog.rebuild(); }
+        jog.refresh();
+        String sel = wb.model().selection();
+        if (!structureChanged) {
+            if (selectionChanged) {
+                selectionChanged = false;
+                tree.showSelection();
+                properties.refresh();
+            } else if (sel != null && sel.startsWith("link:")) {
+                properties.refresh();
+            }
+            return;
+        }
+        selectionChanged = false;
+        structureChanged = false;
+        var st = new java.util.HashMap<String, org.robopro.app.workbench.model.TargetStatus>();
+        for (var t : wb.model().targets()) st.put(t.name(), wb.model().status(t));
+        tree.rebuild(st);
+        properties.refresh();
+        program.refresh();
+        updateTitle();
+    }
+
+    private void updateTitle() {
+        String name = wb.projectFile().map(p -> p.getFileName().toString()).orElse("IRB-2000 welding cell (unsaved)");
+        setTitle((wb.model().dirty() ? "* " : "") + name + " - robopro workbench");
+    }
+
+    private void updateStatus() {
+        Pose p = wb.model().worldTtcp();
+        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %.0f fps  |  %s",
+                wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, wb.model().targets().size(),
+                wb.model().program().size(), wb.app().fps(), wb.model().kinematics().implementation()));
+        updateTitle();
+    }
+
+    // ---- actions and menus ------------------------------------------------------------------
+
+    private Action def(String id, String name, String key, Consumer<ActionEvent> body) {
+        Action a = new AbstractAction(name) {
+            @Override public void actionPerformed(ActionEvent e) {
+                try {
+                    body.accept(e);
+                } catch (RuntimeException ex) {
+                    wb.log(name + " failed: " + ex.getMessage());
+                    if (isShowing()) JOptionPane.showMessageDialog(WorkbenchFrame.this, ex.getMessage(), name, JOptionPane.ERROR_MESSAGE);
+                }
+            }
+        };
+        if (key != null) a.putValue(Action.ACCELERATOR_KEY, KeyStroke.getKeyStroke(key));
+        a.putValue(Action.ACTION_COMMAND_KEY, id);
+        actions.put(id, a);
+        return a;
+    }
+
+    private Action disabled(String id, String name, String tooltip) {
+        Action a = def(id, name, null, e -> { });
+        a.setEnabled(false);
+        a.putValue(Action.SHORT_DESCRIPTION, tooltip);
+        return a;
+    }
+
+    private interface IoAction { void run() throws IOException; }
+
+    private void io(IoAction a) {
+        try {
+            a.run();
+        } catch (IOException e) {
+            throw new IllegalStateException(e.getMessage(), e);
+        }
+    }
+
+    private Path choose(boolean save, String suffix) {
+        JFileChooser fc = new JFileChooser(wb.projectFile().map(p -> p.toAbsolutePath().getParent().toFile()).orElse(new java.io.File(".")));
+        int r = save ? fc.showSaveDialog(this) : fc.showOpenDialog(this);
+        if (r != JFileChooser.APPROVE_OPTION) return null;
+        Path p = fc.getSelectedFile().toPath();
+        if (save && suffix != null && !p.getFileName().toString().contains(".")) p = p.resolveSibling(p.getFileName() + suffix);
+        return p;
+    }
+
+    private void defineActions() {
+        def("open", "Open project...", "ctrl O", e -> {
+            Path p = choose(false, null);
+            if (p != null) io(() -> wb.openProject(p));
+        });
+        def("save", "Save project", "ctrl S", e -> {
+            Path p = wb.projectFile().orElseGet(() -> choose(true, ".robopro.json"));
+            if (p != null) io(() -> wb.save(p));
+        });
+        def("save-as", "Save project as...", "ctrl shift S", e -> {
+            Path p = choose(true, ".robopro.json");
+            if (p != null) io(() -> wb.save(p));
+        });
+        def("export-rapid", "Export RAPID...", "ctrl E", e -> {
+            Path p = choose(true, ".mod");
+            if (p != null) io(() -> wb.exportRapid(p, true));
+        });
+        def("screenshot", "Save screenshot...", null, e -> {
+            Path p = choose(true, ".png");
+            if (p != null) new Thread(() -> {
+                try { wb.screenshot(p); wb.log("Screenshot " + p); } catch (Exception ex) { wb.log("Screenshot failed: " + ex); }
+            }, "screenshot").start();
+        });
+        def("exit", "Exit", "ctrl Q", e -> {
+            if (wb.model().dirty() && isShowing()) {
+                int r = JOptionPane.showConfirmDialog(this, "Save changes before closing?", "robopro", JOptionPane.YES_NO_CANCEL_OPTION);
+                if (r == JOptionPane.CANCEL_OPTION || r == JOptionPane.CLOSED_OPTION) return;
+                if (r == JOptionPane.YES_OPTION) { action("save").actionPerformed(null); if (wb.model().dirty()) return; }
+            }
+            new Thread(() -> { wb.close(); System.exit(0); }, "exit").start();
+        });
+        def("add-table", "Add table", null, e -> wb.addObject(CellObject.Kind.TABLE));
+        def("add-fixture", "Add fixture", null, e -> wb.addObject(CellObject.Kind.FIXTURE));
+        def("add-part", "Add part", null, e -> wb.addObject(CellObject.Kind.PART));
+        def("import-mesh", "Import mesh (STL, OBJ, glTF)...", null, e -> {
+            Path p = choose(false, null);
+            if (p == null) return;
+            String s = JOptionPane.showInputDialog(this, "Scale to metres (0.001 for a mesh in mm):", "0.001");
+            if (s != null) wb.importMesh(p, Double.parseDouble(s));
+        });
+        def("delete", "Delete selection", "DELETE", e -> wb.deleteSelection());
+        def("edit-tool", "Tool...", null, e -> wb.model().select("tool"));
+        def("view-front", "Front view", "F1", e -> wb.setView(CameraState.View.FRONT));
+        def("view-top", "Top view", "F2", e -> wb.setView(CameraState.View.TOP));
+        def("view-side", "Side view", "F3", e -> wb.setView(CameraState.View.SIDE));
+        def("view-iso", "Isometric view", "F4", e -> wb.setView(CameraState.View.ISO));
+        def("show-frames", "Show frames (joint axes)", null, e -> wb.model().setShowFrames(!wb.model().showFrames()));
+        def("show-path", "Show targets and path", null, e -> wb.model().setShowPath(!wb.model().showPath()));
+        def("teach", "Teach target", "ctrl T", e -> wb.teach());
+        def("add-movej", "Add MoveJ", null, e -> program.addMove(Instruction.Type.MOVEJ));
+        def("add-movel", "Add MoveL", null, e -> program.addMove(Instruction.Type.MOVEL));
+        def("check", "Check program", "ctrl K", e -> program.check());
+        disabled("connect", "Connect to controller...", NEEDS_COMMS);
+        disabled("download", "Download program", NEEDS_COMMS);
+        disabled("upload", "Upload program", NEEDS_COMMS);
+        disabled("run", "Run on controller", NEEDS_COMMS);
+        disabled("read-position", "Read robot position", NEEDS_COMMS);
+        disabled("calibration", "Calibration panel...", NEEDS_CAL);
+        disabled("robot-wizard", "Robot model wizard (Fig. 7)...", "Not built yet: robots are loaded from robot files");
+        def("about", "About", null, e -> JOptionPane.showMessageDialog(this,
+                "robopro workbench\nOff-line programming and calibration of industrial robots.\n"
+                        + "Left drag: orbit, right/middle drag: pan, wheel: zoom, click: select.", "About", JOptionPane.INFORMATION_MESSAGE));
+    }
+
+    private JMenu menu(String name, int mnemonic, String... ids) {
+        JMenu m = new JMenu(name);
+        m.setMnemonic(mnemonic);
+        for (String id : ids) {
+            if (id == null) { m.addSeparator(); continue; }
+            Action a = action(id);
+            JMenuItem it = id.startsWith("show-") ? new JCheckBoxMenuItem(a) : new JMenuItem(a);
+            if (id.equals("show-path")) it.setSelected(true);
+            it.setName("menu-" + id);
+            if (a.getValue(Action.SHORT_DESCRIPTION) != null) it.setToolTipText((String) a.getValue(Action.SHORT_DESCRIPTION));
+            m.add(it);
+        }
+        return m;
+    }
+
+    private JMenuBar menus() {
+        JMenuBar bar = new JMenuBar();
+        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
+        bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
+        bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", null, "check", "export-rapid"));
+        bar.add(menu("Controller", KeyEvent.VK_R, "connect", "download", "upload", "run", "read-position"));
+        bar.add(menu("Calibration", KeyEvent.VK_A, "calibration"));
+        bar.add(menu("Help", KeyEvent.VK_H, "about"));
+        return bar;
+    }
+
+    private JToolBar toolbar() {
+        JToolBar t = new JToolBar();
+        t.setFloatable(false);
+        for (String id : new String[] {"open", "save", null, "view-front", "view-top", "view-side", "view-iso", null,
+                "add-table", "add-part", "delete", null, "teach", "add-movej", "add-movel", "check", "export-rapid", null, "connect", "calibration"}) {
+            if (id == null) { t.addSeparator(); continue; }
+            var b = t.add(action(id));
+            b.setName("tool-" + id);
+            b.setText(shortName(id));
+            if (action(id).getValue(Action.SHORT_DESCRIPTION) != null) b.setToolTipText((String) action(id).getValue(Action.SHORT_DESCRIPTION));
+        }
+        return t;
+    }
+
+    private static String shortName(String id) {
+        return switch (id) {
+            case "open" -> "Open"; case "save" -> "Save";
+            case "view-front" -> "Front"; case "view-top" -> "Top"; case "view-side" -> "Side"; case "view-iso" -> "Iso";
+            case "add-table" -> "+Table"; case "add-part" -> "+Part"; case "delete" -> "Delete";
+            case "teach" -> "Teach"; case "add-movej" -> "MoveJ"; case "add-movel" -> "MoveL"; case "check" -> "Check";
+            case "export-rapid" -> "RAPID"; case "connect" -> "Connect"; case "calibration" -> "Calibrate";
+            default -> id;
+        };
+    }
+
+    /** Mouse navigation on the 3D view: left drag orbits, right or middle drag pans, the wheel zooms, a click selects. */
+    private void navigation(AwtPanel view) {
+        MouseAdapter m = new MouseAdapter() {
+            private int lx, ly, px, py;
+            private boolean dragged;
+
+            @Override public void mousePressed(MouseEvent e) { lx = px = e.getX(); ly = py = e.getY(); dragged = false; }
+
+            @Override
+            public void mouseDragged(MouseEvent e) {
+                int dx = e.getX() - lx, dy = e.getY() - ly;
+                lx = e.getX();
+                ly = e.getY();
+                if (Math.abs(e.getX() - px) + Math.abs(e.getY() - py) > 3) dragged = true;
+                double h = Math.max(1, view.getHeight());
+                if ((e.getModifiersEx() & (InputEvent.BUTTON3_DOWN_MASK | InputEvent.BUTTON2_DOWN_MASK)) != 0
+                        || e.isShiftDown()) wb.app().camera().pan(dx / h, dy / h);
+                else wb.app().camera().orbit(-dx * 0.01, dy * 0.01);
+            }
+
+            @Override
+            public void mouseReleased(MouseEvent e) {
+                if (dragged || e.getButton() != MouseEvent.BUTTON1) return;
+                wb.app().pick(e.getX(), e.getY()).thenAccept(k -> SwingUtilities.invokeLater(() -> wb.model().select(k)));
+            }
+
+            @Override public void mouseWheelMoved(MouseWheelEvent e) { wb.app().camera().zoom(Math.pow(1.12, e.getPreciseWheelRotation())); }
+        };
+        view.addMouseListener(m);
+        view.addMouseMotionListener(m);
+        view.addMouseWheelListener(m);
+    }
+}

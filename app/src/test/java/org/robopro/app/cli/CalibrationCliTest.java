@@ -1,0 +1,74 @@
+package org.robopro.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/** simulate → calibrate → compensate through the command line, as docs/calibration.md shows. */
+class CalibrationCliTest {
+    @TempDir Path dir;
+    final StringWriter out = new StringWriter(), err = new StringWriter();
+
+    int run(String... args) {
+        CommandLine cl = RoboproCommand.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        return cl.execute(args);
+    }
+
+    @Test
+    void simulateCalibrateCompensate_irb2000_writesEveryOutput() throws Exception {
+        Path sim = dir.resolve("sim"), cal = dir.resolve("cal");
+        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "120", "--validate-poses", "80", "--sigma", "0.02",
+                "--seed", "7", "--out", sim.toString()), err.toString());
+        for (String f : List.of("measurements.csv", "validate.csv", "truth.json", "true.robot.json"))
+            assertTrue(Files.exists(sim.resolve(f)), f);
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
+                "--validate", sim.resolve("validate.csv").toString(), "--out", cal.toString()), err.toString());
+        JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
+        for (String k : List.of("nominal_train_rms_mm", "train_rms_mm", "nominal_validate_rms_mm", "validate_rms_mm",
+                "train_max_mm", "validate_max_mm", "parameters", "unidentifiable", "outliers"))
+            assertTrue(s.has(k), k);
+        assertTrue(s.get("validate_rms_mm").asDouble() < 0.045, s.get("validate_rms_mm").toString());
+        assertTrue(s.get("nominal_validate_rms_mm").asDouble() > 1);
+        JsonNode p0 = s.get("parameters").get(0);
+        for (String k : List.of("name", "nominal", "identified", "sigma", "unit")) assertTrue(p0.has(k), k);
+        String html = Files.readString(cal.resolve("report.html"));
+        assertTrue(html.contains("<svg") && html.contains("Parameters"));
+        assertFalse(html.contains("<script") || html.contains("<link") || html.contains("src=\"http"), "report must be self-contained");
+        assertTrue(Files.readString(cal.resolve("calibrated.robot.json")).contains("calibrated-from"));
+
+        // Compensate a few targets with the calibrated model.
+        Path targets = dir.resolve("targets.csv"), comp = dir.resolve("comp.csv");
+        Files.writeString(targets, "# frame: base\nx,y,z\n1200,100,900\n1100,-200,1000\n");
+        assertEquals(0, run("compensate", "--nominal", "irb2000", "--calibrated", cal.resolve("calibrated.robot.json").toString(),
+                "--targets", targets.toString(), "--out", comp.toString()), err.toString());
+        List<String> lines = Files.readAllLines(comp);
+        assertEquals(4, lines.size(), lines.toString());
+        assertTrue(lines.get(2).endsWith("converged"), lines.get(2));
+
+        // Existing outputs are not overwritten without --force.
+        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
+                "--out", cal.toString()));
+    }
+
+    @Test
+    void calibrate_measurementFileWithWrongJointCount_failsWithLocation() throws Exception {
+        Path m = dir.resolve("m.csv");
+        Files.writeString(m, "# robopro-measurements 1\n# length-unit: mm\n# angle-unit: deg\npose,q1,q2,x,y,z\n1,0,0,1,2,3\n");
+        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", m.toString(), "--out", dir.resolve("o").toString()));
+        assertTrue(err.toString().contains("m.csv:4") && err.toString().contains("6 joints"), err.toString());
+        assertFalse(Files.exists(dir.resolve("o")));
+    }
+}

@@ -1,0 +1,90 @@
+package org.robopro.app.cli;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.comms.sim.ControllerSim;
+import picocli.CommandLine;
+
+class LinkCommandTest {
+    @TempDir Path dir;
+    private ControllerSim sim;
+    private String where;
+    private StringWriter out, err;
+
+    @BeforeEach
+    void start() throws Exception {
+        sim = ControllerSim.start(new ControllerSim.Config("127.0.0.1:0", null, 115200, "irb2000", 2, 0.5, List.of(), 0.0,
+                dir.resolve("port"), false, 0));
+        where = "127.0.0.1:" + Files.readString(dir.resolve("port")).strip();
+    }
+
+    @AfterEach
+    void stop() throws Exception { sim.close(); }
+
+    private int run(String... args) {
+        out = new StringWriter();
+        err = new StringWriter();
+        CommandLine cl = RoboproCommand.commandLine();
+        cl.setOut(new PrintWriter(out));
+        cl.setErr(new PrintWriter(err));
+        return cl.execute(args);
+    }
+
+    @Test
+    void moveThenJoints_printsTargetInDegrees() {
+        assertEquals(0, run("link", "--tcp", where, "move", "10", "-5", "15", "0", "30", "0"), err.toString());
+        assertEquals(0, run("link", "--tcp", where, "joints"), err.toString());
+        assertTrue(out.toString().startsWith("10.0000 -5.0000 15.0000 0.0000 30.0000 0.0000"), out.toString());
+    }
+
+    @Test
+    void moveOutOfLimits_exitCode4WithReason() {
+        assertEquals(4, run("link", "--tcp", where, "move", "0", "150", "0", "0", "0", "0"));
+        assertTrue(err.toString().contains("E110") && err.toString().contains("joint 2"), err.toString());
+    }
+
+    @Test
+    void badArguments_exitCode2WithMessage() {
+        assertEquals(2, run("link", "--tcp", where, "move", "1", "2"));
+        assertTrue(err.toString().contains("takes 6 arguments"), err.toString());
+        assertEquals(2, run("link", "--tcp", where, "move", "1", "2", "x", "4", "5", "6"));
+        assertTrue(err.toString().contains("'x'"), err.toString());
+        assertEquals(2, run("link", "--tcp", "nohost", "ping"));
+        assertEquals(2, run("link", "--tcp", where, "dance"));
+    }
+
+    @Test
+    void noController_exitCode3WithClearError() throws Exception {
+        sim.close();
+        assertEquals(3, run("link", "--tcp", where, "--timeout-ms", "300", "ping"));
+        assertTrue(err.toString().contains("cannot connect"), err.toString());
+    }
+
+    @Test
+    void downloadRunUpload_roundTripAndNoSilentOverwrite() throws Exception {
+        Path prog = dir.resolve("demo.mod");
+        String text = "MODULE demo\n  PROC main()\n    MoveAbsJ [[5,0,0,0,20,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+        Files.writeString(prog, text);
+        assertEquals(0, run("link", "--tcp", where, "download", prog.toString()), err.toString());
+        assertTrue(out.toString().contains("stored demo"), out.toString());
+        assertEquals(0, run("link", "--tcp", where, "run", "demo"), err.toString());
+        assertTrue(out.toString().startsWith("IDLE demo"), out.toString());
+        Path back = dir.resolve("back.mod");
+        assertEquals(0, run("link", "--tcp", where, "upload", "demo", "--out", back.toString()), err.toString());
+        assertEquals(text, Files.readString(back, StandardCharsets.UTF_8));
+        assertEquals(2, run("link", "--tcp", where, "upload", "demo", "--out", back.toString()));
+        assertTrue(err.toString().contains("refusing to overwrite"), err.toString());
+        assertEquals(0, run("link", "--tcp", where, "measure"), err.toString());
+        assertTrue(out.toString().contains("tracker frame"));
+    }
+}

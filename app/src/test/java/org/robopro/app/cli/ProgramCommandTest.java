@@ -1,0 +1,41 @@
+package org.robopro.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.app.Main;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.rapid.RapidParser;
+
+class ProgramCommandTest {
+    static final String PROJECT = """
+            {"format": "robopro-program", "version": 1, "module": "Demo", "robot": "irb2000",
+             "tools": {"tTorch": {"tframe": {"pos_mm": [0, 0, 150]}}},
+             "jointtargets": {"jHome": {"joints_deg": [0, 0, 0, 0, 30, 0]}},
+             "targets": {"pA": {"joints_deg": [17, 11, 6, 11, 40, -17], "tool": "tTorch"},
+                         "pB": {"joints_deg": [6, 17, 0, 6, 34, -6], "tool": "tTorch"}},
+             "procedures": {"main": [{"move": "MoveAbsJ", "to": "jHome", "speed": "v1000", "zone": "fine", "tool": "tTorch"},
+                                     {"move": "MoveJ", "to": "pA", "speed": "v1000", "zone": "z10", "tool": "tTorch"},
+                                     {"move": "MoveL", "to": "pB", "speed": "v200", "zone": "fine", "tool": "tTorch"}]}}
+            """;
+
+    @Test
+    void exportCheckCompensate_project_writesValidModulesAndExitCodes(@TempDir Path dir) throws Exception {
+        Path project = dir.resolve("demo.json");
+        Files.writeString(project, PROJECT);
+        Path mod = dir.resolve("Demo.mod");
+        assertEquals(0, Main.run("program", "export", project.toString(), "--out", mod.toString()));
+        RapidModule m = RapidParser.parse(Files.readString(mod), mod.toString());
+        assertEquals(2, m.procedures().get(0).body().size() - 1);
+        assertEquals(2, Main.run("program", "export", project.toString(), "--out", mod.toString()), "refuses to overwrite");
+        assertEquals(0, Main.run("program", "check", mod.toString(), "--robot", "irb2000"));
+        Path comp = dir.resolve("Comp.mod");
+        assertEquals(0, Main.run("program", "compensate", mod.toString(), "--robot", "irb2000", "--calibrated", "irb2000",
+                "--out", comp.toString()));
+        assertTrue(Files.readString(comp).contains("CONST robtarget pA:="));
+    }
+}

@@ -1,0 +1,174 @@
+package org.robopro.app.workbench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.File;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Properties;
+import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * End-to-end workbench tests under X (Xvfb when DISPLAY is unset): the user scenario of
+ * {@link WorkbenchScenario}, the screenshot command, and the failure when no GL context can be
+ * created. Screenshots are kept in app/target/screenshots as test artifacts.
+ */
+class WorkbenchScenarioTest {
+    static final Path SHOTS = Path.of("target", "screenshots");
+    static XvfbDisplay display;
+
+    @BeforeAll
+    static void startDisplay() throws Exception {
+        display = XvfbDisplay.acquire();
+        Files.createDirectories(SHOTS);
+    }
+
+    @AfterAll
+    static void stopDisplay() {
+        if (display != null) display.close();
+    }
+
+    static Process java(String display, List<String> extraEnv, String mainClass, String... args) throws Exception {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.add("-Xmx768m");
+        cmd.add("-cp");
+        cmd.add(System.getProperty("java.class.path"));
+        cmd.add(mainClass);
+        cmd.addAll(List.of(args));
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
+        pb.environment().put("DISPLAY", display);
+        pb.environment().put("robopro.test", "1");
+        for (String kv : extraEnv) pb.environment().put(kv.substring(0, kv.indexOf('=')), kv.substring(kv.indexOf('=') + 1));
+        return pb.start();
+    }
+
+    static String finish(Process p, Path log, int seconds) throws Exception {
+        byte[] all = p.getInputStream().readAllBytes();
+        boolean done = p.waitFor(seconds, TimeUnit.SECONDS);
+        if (!done) p.destroyForcibly();
+        Files.write(log, all);
+        assertTrue(done, "process did not finish within " + seconds + " s; log " + log);
+        return new String(all);
+    }
+
+    /** Fraction of pixels in the rectangle close to ABB orange (the robot). */
+    static double orangeFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
+        int n = 0, hit = 0;
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++) {
+                int c = img.getRGB(x, y);
+                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+                n++;
+                if (r > 120 && r > g + 45 && g > b + 20 && b < 90) hit++;
+            }
+        return (double) hit / n;
+    }
+
+    static int colourCount(BufferedImage img) {
+        java.util.Set<Integer> s = new java.util.HashSet<>();
+        for (int y = 0; y < img.getHeight(); y += 3)
+            for (int x = 0; x < img.getWidth(); x += 3) s.add(img.getRGB(x, y) & 0xF0F0F0);
+        return s.size();
+    }
+
+    static int redCount(BufferedImage img) {
+        int hit = 0;
+        for (int y = 0; y < img.getHeight(); y++)
+            for (int x = 0; x < img.getWidth(); x++) {
+                int c = img.getRGB(x, y);
+                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+                if (r > 180 && g < 70 && b < 70) hit++;
+            }
+        return hit;
+    }
+
+    @Test
+    void scenario_loadJogTeachCheckExport_resultsAndPicturesAsExpected() throws Exception {
+        Path out = SHOTS.resolve("scenario").toAbsolutePath();
+        Files.createDirectories(out);
+        Files.deleteIfExists(out.resolve("results.properties"));
+        Process p = java(display.display(), List.of(), WorkbenchScenario.class.getName(), out.toString());
+        String log = finish(p, out.resolve("scenario.log"), 240);
+        Properties r = new Properties();
+        try (var in = Files.newBufferedReader(out.resolve("results.properties"))) { r.load(in); }
+        assertEquals("done", r.getProperty("status"), "scenario failed; see " + out.resolve("scenario.log") + "\n" + log);
+
+        assertEquals("5", r.getProperty("objects"), "the shipped irb2000-welding cell has five objects");
+        assertNotEquals(r.getProperty("q0"), r.getProperty("qJointJog"));
+        assertTrue(r.getProperty("qJointJog").startsWith("10.000000 30.000000"), r.getProperty("qJointJog"));
+        assertEquals("true", r.getProperty("cartesianJogOk"));
+        assertEquals(-0.050, Double.parseDouble(r.getProperty("cartesianDz")), 1e-6);
+        assertEquals(0, Double.parseDouble(r.getProperty("cartesianDxy")), 1e-6);
+        assertEquals(0, Double.parseDouble(r.getProperty("cartesianAngle")), 1e-6);
+        assertEquals("p10,p20,p30", r.getProperty("targets"));
+        assertEquals("MoveJ p10, v500, z10, tool;;MoveL p20, v500, z10, tool;;MoveL p30, v500, z10, tool;;MoveL p10, v500, z10, tool;",
+                r.getProperty("program"));
+        assertEquals("true", r.getProperty("checkOk"));
+        assertTrue(Double.parseDouble(r.getProperty("duration")) > 0.3, r.getProperty("duration"));
+        assertEquals("false", r.getProperty("checkWithFarOk"));
+        assertEquals("UNREACHABLE", r.getProperty("farStatus"));
+        assertEquals("true", r.getProperty("rapidOverwriteRefused"));
+        String rapid = Files.readString(Path.of(r.getProperty("rapidFile")));
+        assertTrue(rapid.startsWith("MODULE Weld"), rapid);
+        for (String s : new String[] {"CONST robtarget p10:=[[", "CONST robtarget p20", "CONST robtarget p30",
+                "MoveJ p10, v500, z10, torch\\WObj:=wobj0;", "MoveL p30, v500, z10, torch", "PERS tooldata torch:=[TRUE,[[110.00,0.00,340.00]", "ENDMODULE"})
+            assertTrue(rapid.contains(s), "RAPID lacks " + s + ":\n" + rapid);
+        assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
+        assertEquals("6", r.getProperty("objectsAfterAdd"));
+        assertEquals("3", r.getProperty("reopenedTargets"));
+        assertEquals("4", r.getProperty("reopenedProgram"));
+        assertEquals("6", r.getProperty("reopenedObjects"));
+        assertTrue(r.getProperty("damaged").contains("damaged.robopro.json"), r.getProperty("damaged"));
+        assertTrue(Integer.parseInt(r.getProperty("damagedLine")) > 1, r.getProperty("damaged"));
+        assertTrue(r.getProperty("damagedField").endsWith("speed_mm_s"), r.getProperty("damagedField"));
+        assertEquals("3", r.getProperty("afterDamagedTargets"), "a damaged project must not disturb the open one");
+        assertTrue(r.getProperty("projectFile").endsWith("cell.robopro.json"));
+
+        BufferedImage cell = ImageIO.read(out.resolve("01-cell.png").toFile());
+        assertEquals(1280, cell.getWidth());
+        assertTrue(colourCount(cell) > 40, "01-cell.png looks uniform: " + colourCount(cell) + " colours");
+        // The 3D view lies right of the tree (x > 230) and above the program panel (y < 460).
+        assertTrue(orangeFraction(cell, 230, 60, 940, 460) > 0.01, "no robot-orange in the 3D view of 01-cell.png");
+        BufferedImage path = ImageIO.read(out.resolve("02-path.png").toFile());
+        assertTrue(orangeFraction(path, 230, 60, 940, 460) > 0.01, "no robot in 02-path.png");
+        assertTrue(redCount(path) > 30, "the unreachable target is not marked red in 02-path.png");
+        BufferedImage layout = ImageIO.read(out.resolve("03-layout.png").toFile());
+        assertTrue(colourCount(layout) > 40);
+    }
+
+    @Test
+    void screenshotCommand_defaultCell_writesWholeWindowPng() throws Exception {
+        Path png = SHOTS.resolve("workbench-command.png").toAbsolutePath();
+        Files.deleteIfExists(png);
+        Process p = java(display.display(), List.of(), "org.robopro.app.Main", "workbench", "--screenshot", png.toString(), "--size", "1024x640");
+        String log = finish(p, SHOTS.resolve("workbench-command.log"), 120);
+        assertEquals(0, p.exitValue(), log);
+        BufferedImage img = ImageIO.read(png.toFile());
+        assertEquals(1024, img.getWidth());
+        assertEquals(640, img.getHeight());
+        assertTrue(orangeFraction(img, 0, 0, img.getWidth(), img.getHeight()) * img.getWidth() * img.getHeight() > 1500, "no robot in the screenshot");
+    }
+
+    @Test
+    void screenshotCommand_noGlContext_failsWithNonZeroStatus() throws Exception {
+        Path png = SHOTS.resolve("no-gl.png").toAbsolutePath();
+        Files.deleteIfExists(png);
+        // Mesa cannot create any context when told to expose OpenGL 1.1 only; jME needs 2.0+.
+        Process p = java(display.display(), List.of("MESA_GL_VERSION_OVERRIDE=1.1", "MESA_GLSL_VERSION_OVERRIDE=100"),
+                "org.robopro.app.Main", "workbench", "--screenshot", png.toString(), "--first-frame-timeout", "15");
+        String log = finish(p, SHOTS.resolve("no-gl.log"), 120);
+        assertNotEquals(0, p.exitValue(), "must fail loudly without GL:\n" + log);
+        assertTrue(log.contains("robopro workbench:"), log);
+        assertTrue(!new File(png.toString()).exists(), "no picture may be written");
+    }
+}

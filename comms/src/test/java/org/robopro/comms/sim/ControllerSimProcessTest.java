@@ -1,0 +1,106 @@
+package org.robopro.comms.sim;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.comms.CommandInvoker;
+import org.robopro.comms.Commands;
+import org.robopro.comms.CommsException;
+import org.robopro.comms.ControllerStatus;
+import org.robopro.comms.ErrorCode;
+import org.robopro.comms.client.ProtocolClient;
+import org.robopro.comms.client.TcpRequestChannel;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.RobotLibrary;
+import org.robopro.models.Vec3;
+
+/** The simulated IRB-2000 controller as a process of its own, driven over TCP. */
+class ControllerSimProcessTest {
+    @TempDir Path dir;
+
+    @Test
+    void separateProcess_irb2000_movesRefusesMeasuresAndRunsPrograms() throws Exception {
+        Path portFile = dir.resolve("port");
+        Path log = dir.resolve("sim.log");
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), ControllerSim.class.getName(),
+                "--tcp", "127.0.0.1:0", "--port-file", portFile.toString(), "--seed", "3", "--error-mm", "0.5", "--noise-mm", "0")
+                .redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        try {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (!Files.exists(portFile) || Files.readString(portFile).isBlank()) {
+                assertTrue(p.isAlive(), () -> "simulator exited: " + read(log));
+                assertTrue(System.nanoTime() < deadline, () -> "simulator did not start within 30 s: " + read(log));
+                Thread.sleep(50);
+            }
+            int port = Integer.parseInt(Files.readString(portFile).strip());
+            KinematicModel nominal = KinematicModel.build(RobotLibrary.load("irb2000"));
+            try (ProtocolClient client = new ProtocolClient(new TcpRequestChannel("127.0.0.1", port));
+                 CommandInvoker inv = new CommandInvoker(client, CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofSeconds(10)))) {
+                inv.execute(Commands.ping());
+                assertEquals("irb2000", client.robotName());
+                double[] q = {
+                        Math.toRadians(20), Math.toRadians(10), Math.toRadians(-15), Math.toRadians(30), Math.toRadians(40), Math.toRadians(-20)};
+                var m = inv.execute(Commands.moveJoints(q));
+                // joint 6 moves 20 deg at 450 deg/s, joint 1 20 deg at 150 deg/s: at least 0.133 s
+                assertTrue(m.motionTimeS() >= Math.toRadians(20) / Math.toRadians(150) - 1e-9, "motion time " + m.motionTimeS());
+                assertArrayEquals(q, inv.execute(Commands.readJoints()), 1e-6);
+                Pose pose = inv.execute(Commands.readPose());
+                assertEquals(0, pose.distanceTo(nominal.flange(q)), 1e-5, "CRobT reports the nominal model");
+
+                CommsException.Refused e = assertThrows(CommsException.Refused.class,
+                        () -> inv.execute(Commands.moveJoints(new double[] {0, Math.toRadians(120), 0, 0, 0, 0})));
+                assertEquals(ErrorCode.JOINT_LIMIT, e.code());
+                assertTrue(e.getMessage().contains("joint 2"), e.getMessage());
+                CommsException.Refused far = assertThrows(CommsException.Refused.class,
+                        () -> inv.execute(Commands.moveLinear(Pose.translation(5, 0, 1).times(pose.inverse().times(pose)))));
+                assertEquals(ErrorCode.UNREACHABLE, far.code());
+
+                Pose goal = Pose.translation(pose.x() - 0.05, pose.y() + 0.05, pose.z() - 0.05)
+                        .times(Pose.of(pose.rotationRowMajor(), 0, 0, 0));
+                inv.execute(Commands.moveLinear(goal));
+                assertEquals(0, inv.execute(Commands.readPose()).distanceTo(goal), 1e-5);
+
+                Vec3 m1 = inv.execute(Commands.measure());
+                Vec3 nominalInTracker = SimulatedController.Settings.defaults(3).trackerTbase().apply(goal.position());
+                double dev = m1.minus(nominalInTracker).norm();
+                assertTrue(dev > 1e-5 && dev < 0.02, "tracker sees the true robot, mm-level away from nominal: " + dev);
+
+                String prog = "MODULE demo\n  PROC main()\n"
+                        + "    MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n"
+                        + "    MoveAbsJ [[10,5,5,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n"
+                        + "  ENDPROC\nENDMODULE\n";
+                inv.execute(Commands.downloadProgram("demo", prog.getBytes(StandardCharsets.UTF_8)));
+                assertEquals(List.of("demo"), inv.execute(Commands.listPrograms()).stream().map(x -> x.name()).toList());
+                inv.execute(Commands.startProgram("demo"));
+                ControllerStatus st;
+                long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+                do {
+                    st = inv.execute(Commands.readStatus());
+                } while (st.state() == ControllerStatus.State.RUNNING && System.nanoTime() < until);
+                assertEquals(ControllerStatus.State.IDLE, st.state(), String.valueOf(st));
+                assertArrayEquals(new double[] {Math.toRadians(10), Math.toRadians(5), Math.toRadians(5), 0, Math.toRadians(30), 0},
+                        inv.execute(Commands.readJoints()), 1e-6);
+            }
+        } finally {
+            p.destroy();
+            if (!p.waitFor(5, TimeUnit.SECONDS)) p.destroyForcibly();
+        }
+    }
+
+    private static String read(Path p) {
+        try {
+            return Files.exists(p) ? Files.readString(p) : "(no output)";
+        } catch (java.io.IOException e) {
+            return e.toString();
+        }
+    }
+}

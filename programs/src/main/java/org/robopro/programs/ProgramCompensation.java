@@ -1,0 +1,145 @@
+package org.robopro.programs;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import org.robopro.kinematics.IkSolution;
+import org.robopro.kinematics.InverseKinematics;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
+import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.sim.MoveStep;
+
+/**
+ * Compensated export: rewrites a program's robtargets so that a robot whose real geometry is
+ * the calibrated model reaches the intended poses while its controller knows only the nominal
+ * model (seed paper §5, Fig. 5). Each named target is compensated with the tool and work object
+ * of the first instruction that uses it; confdata comes from the nominal IK solution the
+ * controller will use. Joint targets are left as they are (the controller moves the joints).
+ */
+public final class ProgramCompensation {
+    private ProgramCompensation() { }
+
+    /** Compensates one TCP pose (base coordinates) for a tool flangeTtcp, starting near qSeed. */
+    @FunctionalInterface
+    public interface TargetCompensator {
+        Result compensate(Pose baseTtcp, Pose flangeTtcp, double[] qSeed);
+    }
+
+    /** The pose to command (base), the nominal joint values for it, the calibrated prediction's residual, and whether it converged. */
+    public record Result(Pose commandedBaseTtcp, double[] q, double residualM, double residualRad, boolean ok, String status) { }
+
+    /** One target's correction: how far the commanded pose moved (m, rad) and what is left. */
+    public record Correction(String target, double shiftM, double turnRad, double residualM, double residualRad, String status) {
+        @Override public String toString() {
+            return String.format(Locale.ROOT, "%-24s shift %8.3f mm  turn %7.4f deg  residual %.2e mm %.2e deg  %s", target,
+                    shiftM * 1e3, Math.toDegrees(turnRad), residualM * 1e3, Math.toDegrees(residualRad), status);
+        }
+    }
+
+    public record Outcome(RapidModule module, List<Correction> corrections) {
+        public Outcome {
+            corrections = List.copyOf(corrections);
+        }
+    }
+
+    /**
+     * The seed paper's Fig. 5 iteration: nominal IK of the commanded pose, calibrated FK of those
+     * joints, move the commanded pose by the remaining error, until the calibrated prediction
+     * lands on the target. (The calibration module's Compensator implements the same loop.)
+     */
+    public static TargetCompensator fixedPoint(KinematicModel nominal, KinematicModel calibrated) {
+        InverseKinematics ik = InverseKinematics.of(nominal);
+        return (target, tool, seed) -> {
+            Pose comp = target;
+            double[] q = seed.clone();
+            double resP = Double.NaN, resR = Double.NaN;
+            for (int it = 0; it < 30; it++) {
+                Optional<IkSolution> s = ik.solveNear(comp.times(tool.inverse()), q);
+                if (s.isEmpty()) return new Result(comp, q, resP, resR, false, "unreachable");
+                q = s.get().q();
+                Pose actual = calibrated.flange(q).times(tool);
+                Vec3 dp = target.position().minus(actual.position());
+                Vec3 dr = target.times(actual.inverse()).rotationVector();
+                resP = dp.norm();
+                resR = dr.norm();
+                if (resP <= 1e-8 && resR <= 1e-8)
+                    return new Result(comp, q, resP, resR, nominal.withinLimits(q), nominal.withinLimits(q) ? "converged" : "out of limits");
+                Pose rot = resR > 0 ? Pose.rotAxis(dr, resR) : Pose.IDENTITY;
+                Pose rotated = rot.times(Pose.of(comp.rotationRowMajor(), 0, 0, 0));
+                comp = Pose.of(rotated.rotationRowMajor(), comp.x() + dp.x(), comp.y() + dp.y(), comp.z() + dp.z());
+            }
+            return new Result(comp, q, resP, resR, false, "not converged");
+        };
+    }
+
+    /** Compensates every robtarget of {@code module} run from procedure {@code entry}. */
+    public static Outcome compensate(RapidModule module, String entry, KinematicModel nominal, TargetCompensator compensator) {
+        InverseKinematics ik = InverseKinematics.of(nominal);
+        List<MoveStep> steps = MotionInterpreter.of(module).moves(entry);
+        Map<String, RobTarget> replaced = new LinkedHashMap<>();
+        List<Correction> corrections = new ArrayList<>();
+        Map<String, MoveStep> firstUse = new HashMap<>();
+        for (MoveStep s : steps) {
+            if (s.kind() == Move.Kind.MOVE_ABS_J) continue;
+            firstUse.putIfAbsent(s.targetName().toLowerCase(Locale.ROOT), s);
+        }
+        for (Map.Entry<String, MoveStep> e : firstUse.entrySet()) {
+            String key = e.getKey();
+            if (key.equals("*")) continue; // inline targets: below
+            MoveStep s = e.getValue();
+            Declaration d = module.declaration(key).orElse(null);
+            if (d == null || !(d.value() instanceof RobTarget t)) continue;
+            replaced.put(key, compensateOne(d.name(), t, s, ik, compensator, corrections));
+        }
+        List<ModuleItem> items = new ArrayList<>();
+        for (ModuleItem it : module.items()) {
+            if (it instanceof Declaration d && replaced.containsKey(d.name().toLowerCase(Locale.ROOT)))
+                items.add(d.withValue(replaced.get(d.name().toLowerCase(Locale.ROOT))));
+            else if (it instanceof Procedure p) items.add(inlineCompensated(module, p, nominal, ik, compensator, corrections));
+            else items.add(it);
+        }
+        return new Outcome(module.withItems(items), corrections);
+    }
+
+    private static Procedure inlineCompensated(RapidModule module, Procedure p, KinematicModel nominal, InverseKinematics ik,
+                                               TargetCompensator c, List<Correction> corrections) {
+        List<Statement> body = new ArrayList<>();
+        boolean changed = false;
+        for (int k = 0; k < p.body().size(); k++) {
+            Statement st = p.body().get(k);
+            if (st instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && m.toPoint() instanceof Ref.Inline<?> in) {
+                // Resolve the single instruction in context to get its base poses.
+                RapidModule one = RapidModule.builder("one").procedure("one", List.of(m)).build();
+                MoveStep s = MotionInterpreter.of(one, module).moves("one").get(0);
+                RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " *", (RobTarget) in.value(), s, ik, c, corrections);
+                body.add(m.withToPoint(Ref.inline(t)));
+                changed = true;
+            } else body.add(st);
+        }
+        return changed ? p.withBody(body) : p;
+    }
+
+    private static RobTarget compensateOne(String name, RobTarget t, MoveStep s, InverseKinematics ik, TargetCompensator c,
+                                           List<Correction> corrections) {
+        if (!s.tool().robhold() || s.wobj().robhold()) {
+            corrections.add(new Correction(name, 0, 0, Double.NaN, Double.NaN, "not compensated: stationary tool"));
+            return t;
+        }
+        Pose baseTtcp = s.baseTtcp().orElseThrow();
+        Optional<IkSolution> start = ik.solveWithConf(s.baseTflange().orElseThrow(), t.robconf());
+        double[] seed = start.map(IkSolution::q).orElseGet(() -> new double[ik.model().dof()]);
+        Result r = c.compensate(baseTtcp, s.flangeTtcp(), seed);
+        Pose baseTobj = Teach.baseTobj(s.wobj());
+        Pose objTcommanded = baseTobj.inverse().times(r.commandedBaseTtcp());
+        corrections.add(new Correction(name, r.commandedBaseTtcp().distanceTo(baseTtcp), r.commandedBaseTtcp().angleTo(baseTtcp),
+                r.residualM(), r.residualRad(), r.status()));
+        if (!r.ok()) return t; // keep the target; the report says why
+        return new RobTarget(objTcommanded.position(), Quaternion.of(objTcommanded), ik.confOf(r.q()), t.extax());
+    }
+}

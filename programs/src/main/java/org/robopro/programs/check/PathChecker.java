@@ -1,0 +1,281 @@
+package org.robopro.programs.check;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.robopro.kinematics.ConfData;
+import org.robopro.kinematics.IkSolution;
+import org.robopro.kinematics.InverseKinematics;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
+import org.robopro.programs.Move;
+import org.robopro.programs.sim.MoveStep;
+import org.robopro.programs.sim.ProgramStep;
+import org.robopro.programs.sim.WaitStep;
+
+/**
+ * Checks a program run ({@link ProgramStep}s from the interpreter) against a robot model:
+ * reachability with the programmed configuration, inverse kinematics at every interpolated
+ * point of MoveL and MoveC (configuration held: each point solved next to the previous one),
+ * joint limits, configuration changes, closeness to singularities, and a cycle-time estimate
+ * from the joint speed limits with trapezoidal velocity profiles. Every target is treated as a
+ * stop point (zones are not blended), so the estimate is an upper bound. Thread-safe.
+ */
+public final class PathChecker {
+    /**
+     * @param stepM              interpolation step along a Cartesian path, m
+     * @param stepRad            interpolation step of the tool orientation, rad
+     * @param singularityWarning singularity measure (IkSolution) below which a point is "near a singularity"
+     * @param rampS              time to reach full speed: acceleration = speed limit / rampS (trapezoid assumption)
+     * @param maxJointJumpRad    joint change between neighbouring path points taken as a configuration change
+     * @param qStart             joint values (rad) the robot starts from; empty: at the first target
+     */
+    public record Options(double stepM, double stepRad, double singularityWarning, double rampS, double maxJointJumpRad,
+                          Optional<double[]> qStart) {
+        public static final Options DEFAULT = new Options(0.005, Math.toRadians(2), 0.02, 0.25, Math.toRadians(20), Optional.empty());
+
+        public Options withStart(double[] q) { return new Options(stepM, stepRad, singularityWarning, rampS, maxJointJumpRad, Optional.of(q.clone())); }
+    }
+
+    private final KinematicModel model;
+    private final InverseKinematics ik;
+    private final Options opt;
+    private final double[] vMax;
+
+    public PathChecker(KinematicModel model, Options options) {
+        this.model = model;
+        this.ik = InverseKinematics.of(model);
+        this.opt = options;
+        int n = model.dof();
+        vMax = new double[n];
+        for (int i = 0; i < n; i++) {
+            double v = model.description().joints().get(i).maxSpeed();
+            vMax[i] = v > 0 && Double.isFinite(v) ? v : Math.toRadians(90);
+        }
+    }
+
+    public PathChecker(KinematicModel model) { this(model, Options.DEFAULT); }
+
+    /** Checks the steps in order and returns every problem found and the cycle-time estimate. */
+    public CheckReport check(List<ProgramStep> steps) {
+        List<Problem> problems = new ArrayList<>();
+        List<CheckReport.StepResult> results = new ArrayList<>();
+        double[] q = opt.qStart().map(double[]::clone).orElse(null);
+        double total = 0;
+        for (ProgramStep s : steps) {
+            if (s instanceof WaitStep w) {
+                total += w.seconds();
+                results.add(new CheckReport.StepResult(w.label(), "", w.seconds(), q == null ? null : q.clone(), 0));
+                continue;
+            }
+            MoveStep m = (MoveStep) s;
+            Outcome o = switch (m.kind()) {
+                case MOVE_ABS_J -> absJ(m, q, problems);
+                case MOVE_J -> joint(m, q, problems);
+                case MOVE_L, MOVE_C -> cartesian(m, q, problems);
+            };
+            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points);
+            total += o.duration;
+            results.add(new CheckReport.StepResult(m.label(), m.targetName(), o.duration, o.q == null ? null : o.q.clone(), o.points));
+            if (o.q != null) q = o.q;
+        }
+        String assumptions = String.format(Locale.ROOT, "trapezoidal profiles reaching full speed in %.2f s, stop at every target, "
+                + "joint speed limits from the robot description", opt.rampS());
+        return new CheckReport(problems, results, total, assumptions);
+    }
+
+    private record Outcome(double[] q, double duration, int points) { }
+
+    private Outcome absJ(MoveStep m, double[] q, List<Problem> problems) {
+        double[] all = m.q().orElseThrow();
+        double[] target = Arrays.copyOf(all, model.dof());
+        if (!model.withinLimits(target)) problems.add(limitProblem(m, target));
+        checkSingularity(m, target, problems);
+        return new Outcome(target, q == null ? 0 : jointTime(q, target, m), 1);
+    }
+
+    private Outcome joint(MoveStep m, double[] q, List<Problem> problems) {
+        Pose flange = m.baseTflange().orElseThrow();
+        ConfData conf = m.conf().orElseThrow();
+        Optional<IkSolution> s = ik.solveWithConf(flange, conf);
+        if (s.isEmpty()) {
+            problems.add(unreachable(m, flange, conf));
+            return new Outcome(null, 0, 1);
+        }
+        double[] target = s.get().q();
+        checkSingularity(m, target, problems);
+        double t = q == null ? 0 : Math.max(jointTime(q, target, m), cartesianTime(model.flange(q).times(m.flangeTtcp()), m.baseTtcp().get(), 0, m));
+        return new Outcome(target, t, 1);
+    }
+
+    private Outcome cartesian(MoveStep m, double[] q, List<Problem> problems) {
+        Pose flangeEnd = m.baseTflange().orElseThrow();
+        ConfData conf = m.conf().orElseThrow();
+        if (q == null) { // no start: the robot is put at the target
+            Optional<IkSolution> s = ik.solveWithConf(flangeEnd, conf);
+            if (s.isEmpty()) {
+                problems.add(unreachable(m, flangeEnd, conf));
+                return new Outcome(null, 0, 1);
+            }
+            return new Outcome(s.get().q(), 0, 1);
+        }
+        Pose tcpStart = model.flange(q).times(m.flangeTtcp());
+        Pose tcpEnd = m.baseTtcp().orElseThrow();
+        Pose tcpCirc = m.baseTtcpCirc().orElse(null);
+        Pose toolInv = m.flangeTtcp().inverse();
+        Circle circle = null;
+        double length;
+        if (m.kind() == Move.Kind.MOVE_C) {
+            circle = Circle.through(tcpStart.position(), tcpCirc.position(), tcpEnd.position());
+            if (circle == null) {
+                problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.BAD_CIRCLE, m.label(), m.targetName(), m.source(),
+                        "start, circle point " + m.circName().orElse("?") + " and end do not define a circle (coincident or collinear)"));
+                return new Outcome(null, 0, 1);
+            }
+            length = circle.radius * circle.angle;
+        } else {
+            length = tcpStart.distanceTo(tcpEnd);
+        }
+        Vec3 w = tcpStart.inverse().times(tcpEnd).rotationVector();
+        double angle = w.norm();
+        int n = Math.max(1, (int) Math.ceil(Math.max(length / opt.stepM(), angle / opt.stepRad())));
+        double[] prev = q.clone();
+        double jointLimitedTime = 0;
+        boolean reported = false, limitReported = false, singReported = false, jumpReported = false;
+        for (int k = 1; k <= n; k++) {
+            double s = (double) k / n;
+            Vec3 p = circle != null ? circle.at(s) : tcpStart.position().plus(tcpEnd.position().minus(tcpStart.position()).times(s));
+            Pose rot = angle > 1e-12 ? Pose.rotAxis(w, angle * s) : Pose.IDENTITY;
+            Pose ori = tcpStart.times(rot);
+            Pose tcp = Pose.of(ori.rotationRowMajor(), p.x(), p.y(), p.z());
+            Optional<IkSolution> sol = ik.solveNear(tcp.times(toolInv), prev);
+            if (sol.isEmpty()) {
+                if (!reported)
+                    problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.UNREACHABLE, m.label(), m.targetName(), m.source(),
+                            String.format(Locale.ROOT, "path point %d of %d (%.0f%% along, at %s mm) is out of reach", k, n, 100 * s, mm(p))));
+                reported = true;
+                continue;
+            }
+            double[] qk = sol.get().q();
+            double dt = 0, jump = 0;
+            for (int j = 0; j < qk.length; j++) {
+                double d = Math.abs(qk[j] - prev[j]);
+                dt = Math.max(dt, d / vMax[j]);
+                jump = Math.max(jump, d);
+            }
+            jointLimitedTime += dt;
+            if (!sol.get().withinLimits() && !limitReported) {
+                problems.add(limitProblem(m, qk));
+                limitReported = true;
+            }
+            if (jump > opt.maxJointJumpRad() && !jumpReported) {
+                problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.CONFIGURATION_CHANGE, m.label(), m.targetName(), m.source(),
+                        String.format(Locale.ROOT, "joints jump %.1f deg between path points %d and %d: the configuration cannot be held", Math.toDegrees(jump), k - 1, k)));
+                jumpReported = true;
+            }
+            if (sol.get().singularityMeasure() < opt.singularityWarning() && !singReported) {
+                problems.add(singular(m, sol.get().singularityMeasure(), String.format(Locale.ROOT, "at path point %d of %d", k, n)));
+                singReported = true;
+            }
+            prev = qk;
+        }
+        if (reported) return new Outcome(null, 0, n);
+        ConfData reached = ik.confOf(prev);
+        if (!reached.equals(conf))
+            problems.add(new Problem(reached.cfx() != conf.cfx() ? Problem.Severity.ERROR : Problem.Severity.WARNING,
+                    Problem.Kind.CONFIGURATION_MISMATCH, m.label(), m.targetName(), m.source(),
+                    "the path ends in configuration " + confText(reached) + ", the target asks for " + confText(conf)));
+        double t = Math.max(cartesianTime(tcpStart, tcpEnd, length, m), jointLimitedTime + opt.rampS());
+        return new Outcome(prev, t, n);
+    }
+
+    /** Trapezoid time of the TCP path (length m, or the straight distance when 0) and of the reorientation. */
+    private double cartesianTime(Pose from, Pose to, double length, MoveStep m) {
+        double l = length > 0 ? length : from.distanceTo(to);
+        double a = from.angleTo(to);
+        return Math.max(trapezoid(l, m.speed().vTcp()), trapezoid(a, m.speed().vOri()));
+    }
+
+    private double jointTime(double[] from, double[] to, MoveStep m) {
+        double t = 0;
+        for (int j = 0; j < from.length; j++) t = Math.max(t, trapezoid(Math.abs(to[j] - from[j]), vMax[j]));
+        return t;
+    }
+
+    /** Time to cover d with speed limit v and acceleration v / rampS, starting and ending at rest. */
+    double trapezoid(double d, double v) {
+        if (d <= 0) return 0;
+        if (!(v > 0)) return Double.POSITIVE_INFINITY;
+        double a = v / opt.rampS();
+        if (d >= v * v / a) return d / v + v / a;
+        return 2 * Math.sqrt(d / a);
+    }
+
+    private void checkSingularity(MoveStep m, double[] q, List<Problem> problems) {
+        double s = ik.singularityMeasure(q);
+        if (s < opt.singularityWarning()) problems.add(singular(m, s, "at the target"));
+    }
+
+    private Problem singular(MoveStep m, double measure, String where) {
+        return new Problem(Problem.Severity.WARNING, Problem.Kind.NEAR_SINGULARITY, m.label(), m.targetName(), m.source(),
+                String.format(Locale.ROOT, "near a singularity %s (measure %.4f < %.4f)", where, measure, opt.singularityWarning()));
+    }
+
+    private Problem limitProblem(MoveStep m, double[] q) {
+        StringBuilder b = new StringBuilder();
+        for (int j = 0; j < q.length; j++)
+            if (q[j] < model.qMin(j) || q[j] > model.qMax(j))
+                b.append(String.format(Locale.ROOT, " axis %d at %.2f deg outside [%.1f, %.1f];", j + 1, Math.toDegrees(q[j]),
+                        Math.toDegrees(model.qMin(j)), Math.toDegrees(model.qMax(j))));
+        return new Problem(Problem.Severity.ERROR, Problem.Kind.JOINT_LIMIT, m.label(), m.targetName(), m.source(), "joint limit:" + b);
+    }
+
+    private Problem unreachable(MoveStep m, Pose flange, ConfData conf) {
+        List<IkSolution> all = ik.solveAll(flange);
+        String msg;
+        if (all.isEmpty()) msg = "no joint values reach the target at " + mm(flange.position()) + " mm (flange)";
+        else {
+            List<String> confs = all.stream().filter(IkSolution::withinLimits).map(s -> confText(s.conf())).distinct().toList();
+            msg = confs.isEmpty() ? "the target is reachable only outside the joint limits"
+                    : "configuration " + confText(conf) + " does not reach the target; reachable with " + String.join(", ", confs);
+        }
+        return new Problem(Problem.Severity.ERROR, Problem.Kind.UNREACHABLE, m.label(), m.targetName(), m.source(), msg);
+    }
+
+    static String confText(ConfData c) { return "[" + c.cf1() + "," + c.cf4() + "," + c.cf6() + "," + c.cfx() + "]"; }
+
+    private static String mm(Vec3 p) {
+        return String.format(Locale.ROOT, "(%.1f, %.1f, %.1f)", p.x() * 1e3, p.y() * 1e3, p.z() * 1e3);
+    }
+
+    /** A circular arc from a through b to c. */
+    static final class Circle {
+        final Vec3 center, u, n;
+        final double radius, angle;
+
+        private Circle(Vec3 center, Vec3 u, Vec3 n, double radius, double angle) {
+            this.center = center; this.u = u; this.n = n; this.radius = radius; this.angle = angle;
+        }
+
+        /** The circle through three points, or null when they are (nearly) collinear or coincident. */
+        static Circle through(Vec3 a, Vec3 b, Vec3 c) {
+            Vec3 ac = a.minus(c), bc = b.minus(c);
+            Vec3 cr = ac.cross(bc);
+            double cr2 = cr.dot(cr);
+            double scale = Math.max(ac.norm(), bc.norm());
+            if (!(scale > 1e-9) || Math.sqrt(cr2) < 1e-6 * scale * scale) return null;
+            Vec3 center = c.plus(bc.times(ac.dot(ac)).minus(ac.times(bc.dot(bc))).cross(cr).times(1 / (2 * cr2)));
+            Vec3 n = b.minus(a).cross(c.minus(b)).normalized(); // travel a -> b -> c turns positively about n
+            Vec3 u = a.minus(center);
+            Vec3 v = c.minus(center);
+            double ang = Math.atan2(u.cross(v).dot(n), u.dot(v));
+            if (ang <= 0) ang += 2 * Math.PI;
+            return new Circle(center, u, n, u.norm(), ang);
+        }
+
+        Vec3 at(double s) { return center.plus(Pose.rotAxis(n, angle * s).rotate(u)); }
+    }
+}

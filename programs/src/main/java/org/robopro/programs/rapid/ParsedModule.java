@@ -1,0 +1,29 @@
+package org.robopro.programs.rapid;
+
+import java.util.IdentityHashMap;
+import java.util.Map;
+import java.util.Optional;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.Statement;
+
+/** A parsed module together with where each statement was written (for error messages). */
+public final class ParsedModule {
+    private final RapidModule module;
+    private final String file;
+    private final IdentityHashMap<Statement, SourcePos> positions;
+
+    ParsedModule(RapidModule module, String file, IdentityHashMap<Statement, SourcePos> positions) {
+        this.module = module;
+        this.file = file;
+        this.positions = new IdentityHashMap<>(positions);
+    }
+
+    public RapidModule module() { return module; }
+
+    public String file() { return file; }
+
+    /** Where {@code s} (this very statement object of {@link #module()}) was written. */
+    public Optional<SourcePos> position(Statement s) { return Optional.ofNullable(positions.get(s)); }
+
+    Map<Statement, SourcePos> positions() { return positions; }
+}

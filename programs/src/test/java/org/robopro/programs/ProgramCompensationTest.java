@@ -1,0 +1,53 @@
+package org.robopro.programs;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.robopro.kinematics.InverseKinematics;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.RobotLibrary;
+import org.robopro.models.Vec3;
+import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.sim.MoveStep;
+
+class ProgramCompensationTest {
+
+    @Test
+    void compensate_perturbedRobot_calibratedRobotReachesIntendedTargetsFromExportedFile() {
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        double[] p = nominal.parameterValues();
+        Random r = new Random(7);
+        for (int i = 0; i < p.length; i++) p[i] += r.nextGaussian() * (nominal.parameters().get(i).unitSi().equals("m") ? 0.002 : 0.002);
+        KinematicModel real = nominal.withParameterValues(p);
+        ToolData torch = new ToolData(true, new RapidPose(new Vec3(0, 0, 0.15), Quaternion.IDENTITY), LoadData.LOAD0);
+        WObjData table = new WObjData(false, true, "", new RapidPose(new Vec3(0.9, -0.2, 0.5), Quaternion.IDENTITY), RapidPose.IDENTITY);
+        RobTarget a = Teach.taught(nominal, new double[] {0.3, 0.2, 0.1, 0.2, 0.7, -0.3}, torch, table);
+        RobTarget b = Teach.taught(nominal, new double[] {0.1, 0.3, 0.0, 0.1, 0.6, -0.1}, torch, table);
+        RapidModule m = RapidModule.builder("C").pers("tTorch", torch).pers("wTable", table).constant("pA", a)
+                .procedure("main", List.of(Move.moveJ(Ref.to("pA"), Ref.to("v1000"), Ref.to("fine"), "tTorch", "wTable"),
+                        Move.moveL(Ref.inline(b), Ref.to("v100"), Ref.to("fine"), "tTorch", "wTable"))).build();
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, ProgramCompensation.fixedPoint(nominal, real));
+        assertEquals(2, out.corrections().size());
+        for (ProgramCompensation.Correction c : out.corrections()) {
+            assertEquals("converged", c.status(), c.toString());
+            assertTrue(c.shiftM() > 1e-4, "the perturbation needs a visible correction: " + c);
+        }
+        String text = RapidWriter.export(out.module()).text();
+        List<MoveStep> intended = MotionInterpreter.of(m).moves("main");
+        List<MoveStep> commanded = MotionInterpreter.of(RapidParser.parse(text, "C.mod")).moves("main");
+        InverseKinematics ik = InverseKinematics.of(nominal);
+        for (int k = 0; k < 2; k++) {
+            MoveStep cs = commanded.get(k);
+            double[] q = ik.solveWithConf(cs.baseTflange().orElseThrow(), cs.conf().orElseThrow()).orElseThrow().q();
+            Pose reached = real.flange(q).times(cs.flangeTtcp());
+            assertEquals(0, reached.distanceTo(intended.get(k).baseTtcp().orElseThrow()), 2e-6, "file precision 1e-6 mm, quaternion 1e-10");
+            assertEquals(0, reached.angleTo(intended.get(k).baseTtcp().orElseThrow()), 1e-6);
+        }
+    }
+}

@@ -1,0 +1,35 @@
+package org.robopro.programs.rapid;
+
+import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.nio.charset.StandardCharsets;
+import org.robopro.models.InputException;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.sim.MotionInterpreter;
+
+/**
+ * Fuzzes the RAPID parser: whatever the text, it either returns a module or throws an
+ * {@link InputException}; any other exception fails. A module that was read must export, read
+ * back to the same text, and run in the interpreter (again only InputException allowed).
+ * With JAZZER_FUZZ=1 (the "fuzz" surefire execution) this fuzzes for a short bounded time; in
+ * a plain test run it replays the seeds in RapidParserFuzzTestInputs/.
+ */
+class RapidParserFuzzTest {
+    @FuzzTest(maxDuration = "20s")
+    void parse_anyText_onlyInputException(byte[] bytes) {
+        String text = new String(bytes, StandardCharsets.ISO_8859_1);
+        RapidModule m;
+        try {
+            m = RapidParser.parse(text, "fuzz.mod");
+        } catch (InputException expected) {
+            return;
+        }
+        String once = RapidWriter.export(m).text();
+        String twice = RapidWriter.export(RapidParser.parse(once, "again.mod")).text();
+        if (!once.equals(twice)) throw new AssertionError("export is not stable:\n" + once + "\n---\n" + twice);
+        try {
+            MotionInterpreter.of(m).run(m.procedures().isEmpty() ? "main" : m.procedures().get(0).name());
+        } catch (InputException expected) {
+            // unknown names, unsupported frames: reported clearly
+        }
+    }
+}
