@@ -43,7 +43,7 @@ public final class ConcealedEffectBenchmark {
 
     /** Scores of one case over its seeds. */
     public record Row(String name, int runs, int namedRight, int jointsRight, int runsWithFalse, double meanValRatio,
-                      double maxValRatio, int outliersFound, int outliersInjected, double meanMs) { }
+                      double maxValRatio, int outliersFound, int outliersInjected, int falseOutliers, double meanMs) { }
 
     /** Result of a benchmark run: rows per case and totals. */
     public record Result(List<Row> rows, int seedsPerCase, double namedRightPct, double jointsRightPct, int nullFalse,
@@ -55,12 +55,12 @@ public final class ConcealedEffectBenchmark {
 
         public String markdown() {
             StringBuilder sb = new StringBuilder();
-            sb.append("| case | runs | named right | joints right | runs with a false effect | val RMS / floor (mean) | (max) | outliers found | mean time (ms) |\n");
-            sb.append("|---|---|---|---|---|---|---|---|---|\n");
+            sb.append("| case | runs | named right | joints right | runs with a false effect | val RMS / floor (mean) | (max) | outliers found | clean poses flagged | mean time (ms) |\n");
+            sb.append("|---|---|---|---|---|---|---|---|---|---|\n");
             for (Row r : rows)
-                sb.append(String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %.3f | %.3f | %s | %.0f |%n", r.name(), r.runs(),
+                sb.append(String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %.3f | %.3f | %s | %d | %.0f |%n", r.name(), r.runs(),
                         r.namedRight(), r.jointsRight(), r.runsWithFalse(), r.meanValRatio(), r.maxValRatio(),
-                        r.outliersInjected() == 0 ? "-" : r.outliersFound() + "/" + r.outliersInjected(), r.meanMs()));
+                        r.outliersInjected() == 0 ? "-" : r.outliersFound() + "/" + r.outliersInjected(), r.falseOutliers(), r.meanMs()));
             sb.append(String.format(Locale.ROOT, "%nNamed right: %.1f %%; named and on the right joints: %.1f %%; "
                             + "false effects on null cases: %d of %d runs; validation RMS / noise floor: %.3f over all runs, "
                             + "%.3f in the worst case (mean over its seeds); slowest diagnosis of 250-300 poses: %.0f ms. Bar met: %s.%n",
@@ -218,7 +218,7 @@ public final class ConcealedEffectBenchmark {
         double worst = 0, maxMs300 = 0, allRatio = 0;
         for (int ci = 0; ci < cases.size(); ci++) {
             Case c = cases.get(ci);
-            int nr = 0, jr = 0, withFalse = 0, olFound = 0, olInj = 0;
+            int nr = 0, jr = 0, withFalse = 0, olFound = 0, olInj = 0, olFalse = 0;
             double sumRatio = 0, maxRatio = 0, sumMs = 0;
             for (int s = 0; s < seeds; s++) {
                 long seed = baseSeed + 1000L * ci + s;
@@ -239,6 +239,7 @@ public final class ConcealedEffectBenchmark {
                 if (t.campaign().measurements().size() >= 250) maxMs300 = Math.max(maxMs300, d.elapsedMs());
                 olInj += t.outlierIds().size();
                 for (String id : t.outlierIds()) if (d.outliers().contains(id)) olFound++;
+                for (String id : d.outliers()) if (!t.outlierIds().contains(id)) olFalse++;
                 if (c.effects().isEmpty()) { nullRuns++; if (!d.effects().isEmpty()) nullFalse++; }
                 if (log != null)
                     log.accept(String.format(Locale.ROOT, "%-36s seed %d: %d poses, sigma %.3f mm: found %s, injected %s%s, "
@@ -251,7 +252,7 @@ public final class ConcealedEffectBenchmark {
             double mean = sumRatio / seeds;
             allRatio += sumRatio;
             worst = Math.max(worst, mean);
-            rows.add(new Row(c.name(), seeds, nr, jr, withFalse, mean, maxRatio, olFound, olInj, sumMs / seeds));
+            rows.add(new Row(c.name(), seeds, nr, jr, withFalse, mean, maxRatio, olFound, olInj, olFalse, sumMs / seeds));
         }
         return new Result(rows, seeds, 100.0 * named / runs, 100.0 * joints / runs, nullFalse, nullRuns, worst, allRatio / runs,
                 maxMs300);

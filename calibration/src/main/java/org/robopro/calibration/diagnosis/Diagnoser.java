@@ -94,58 +94,56 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
-        Diagnosis d = run(robot, train, validate, o, List.of(), t0);
-        // An effect inflates the geometric fit's robust noise estimate and can hide outliers from the
-        // calibration's rule: apply the same rule with the extended model and, if it flags more, diagnose again without them.
-        List<String> more = outliersUnder(d, train);
-        if (!more.isEmpty()) {
-            List<String> all = new ArrayList<>(d.outliers());
-            all.addAll(more);
-            d = run(robot, train, validate, o, all, t0);
-        }
-        return d;
+        Diagnosis d = run(robot, train, validate, o, null, t0);
+        if (d.effects().isEmpty()) return d;
+        // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
+        // most and misses outliers the effect's spread hides. The same rule under the extended model
+        // decides; if it differs, diagnose again with its outliers.
+        List<String> under = outliersUnder(d, train);
+        if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
+        return run(robot, train, validate, o, under, t0);
     }
 
-    /** Training poses (not yet flagged) whose position residual under the extended model exceeds 5 robust sigmas. */
+    /**
+     * The calibration's outlier rule under the extended model: training poses whose position
+     * residual exceeds 5 robust sigmas (median residual norm / 1.5382, the median of a 3-D
+     * Gaussian's norm), over every training pose.
+     */
     static List<String> outliersUnder(Diagnosis d, MeasurementSet train) {
-        if (d.effects().isEmpty()) return List.of();
         ExtendedModel ext = d.model();
-        Set<String> known = new HashSet<>(d.outliers());
         double[] norms = new double[train.size()];
-        List<Double> clean = new ArrayList<>();
         for (int i = 0; i < train.size(); i++) {
             Measurement m = train.rows().get(i);
-            // The instrument frame and tool of the final joint fit.
             norms[i] = d.finalInstrumentTbase().apply(ext.tool(m.q(), d.finalFlangeTtool(), PoseConditions.of(m)).position())
                     .minus(m.position()).norm();
-            if (!known.contains(m.poseId())) clean.add(norms[i]);
         }
-        if (clean.isEmpty()) return List.of();
-        java.util.Collections.sort(clean);
-        int c = clean.size();
-        double med = c % 2 == 1 ? clean.get(c / 2) : 0.5 * (clean.get(c / 2 - 1) + clean.get(c / 2));
-        double sigma = med / 1.5381722; // median of a 3-D Gaussian's norm (Maxwell), as the calibration's rule
+        double[] sorted = norms.clone();
+        Arrays.sort(sorted);
+        int c = sorted.length;
+        if (c == 0) return List.of();
+        double med = c % 2 == 1 ? sorted[c / 2] : 0.5 * (sorted[c / 2 - 1] + sorted[c / 2]);
+        double sigma = med / 1.5381722;
         List<String> out = new ArrayList<>();
-        for (int i = 0; i < train.size(); i++) {
-            String id = train.rows().get(i).poseId();
-            if (!known.contains(id) && norms[i] > 5 * sigma) out.add(id);
-        }
+        for (int i = 0; i < train.size(); i++) if (norms[i] > 5 * sigma) out.add(train.rows().get(i).poseId());
         return out;
     }
 
+    /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
     private static Diagnosis run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
-                                 List<String> extraOutliers, long t0) {
+                                 List<String> forcedOutliers, long t0) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
         o.progress().update("geometric calibration", 0);
-        Set<String> extra = new HashSet<>(extraOutliers);
-        MeasurementSet train = extra.isEmpty() ? trainAll : trainAll.filter(m -> !extra.contains(m.poseId()));
-        CalibrationResult geo = Calibrator.calibrate(model, train, validate,
-                Calibrator.Options.defaults().withCancel(o.cancel()));
-        Set<String> outlierIds = new HashSet<>(extra);
-        List<String> outliers = new ArrayList<>(extraOutliers);
-        for (CalibrationResult.Outlier ol : geo.outliers())
-            if (outlierIds.add(ol.poseId())) outliers.add(ol.poseId());
+        Set<String> forced = forcedOutliers == null ? Set.of() : new HashSet<>(forcedOutliers);
+        MeasurementSet train = forced.isEmpty() ? trainAll : trainAll.filter(m -> !forced.contains(m.poseId()));
+        Calibrator.Options co = Calibrator.Options.defaults().withCancel(o.cancel());
+        if (forcedOutliers != null) co = co.withOutliers(co.outlierK(), false);
+        CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
+        Set<String> outlierIds = new HashSet<>(forced);
+        List<String> outliers = new ArrayList<>(forced.isEmpty() ? List.of() : forcedOutliers);
+        if (forcedOutliers == null)
+            for (CalibrationResult.Outlier ol : geo.outliers())
+                if (outlierIds.add(ol.poseId())) outliers.add(ol.poseId());
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
 

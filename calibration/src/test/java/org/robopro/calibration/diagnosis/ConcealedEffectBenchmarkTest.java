@@ -21,7 +21,9 @@ class ConcealedEffectBenchmarkTest {
         assertTrue(r.jointsRightPct() >= 95, "named right with joints: " + r.jointsRightPct());
         assertTrue(r.meanValRatio() <= 1.15, "validation RMS / floor over all runs: " + r.meanValRatio());
         assertTrue(r.worstCaseMeanValRatio() <= 1.25, "validation RMS / floor, worst case: " + r.worstCaseMeanValRatio());
-        for (ConcealedEffectBenchmark.Row row : r.rows())
+        for (ConcealedEffectBenchmark.Row row : r.rows()) {
             if (row.outliersInjected() > 0) assertEquals(row.outliersInjected(), row.outliersFound(), row.name() + ": outliers");
+            assertEquals(0, row.falseOutliers(), row.name() + ": clean poses reported as outliers");
+        }
     }
 }
