@@ -12,6 +12,7 @@ import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.robopro.kinematics.IkSolution;
+import org.robopro.kinematics.IkSolver;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
@@ -26,7 +27,8 @@ import org.robopro.models.Vec3;
  * Speed targets of issue 2 on the IRB-2000 (single thread): FK <= 150 ns, identification
  * Jacobian (all parameters, position) <= 2 us, closed-form IK all solutions <= 1.5 us,
  * numerical IK <= 30 us. The robot is built here from robots.md so the benchmark does not
- * depend on the robot files.
+ * depend on the robot files. {@code IkSolver} benchmarks are the allocation-free paths; the
+ * others are the convenience API (which allocates its results).
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
@@ -35,6 +37,8 @@ public class KinematicsBench {
     KinematicModel model;
     KinematicModel calibrated;
     InverseKinematics ik, ikCalibrated;
+    IkSolver solver;
+    double[] qOut = new double[6];
     KinematicModel.Workspace ws;
     double[] q = {0.3, 0.2, -0.1, 0.5, 0.7, -0.4};
     double[] seed = {0.25, 0.25, -0.05, 0.45, 0.75, -0.35};
@@ -63,6 +67,7 @@ public class KinematicsBench {
         ws = model.newWorkspace();
         jac = new double[3 * model.parameters().size()];
         ik = InverseKinematics.of(model);
+        solver = ik.newSolver();
         target = model.flange(q);
         model.flange(q, ws, target12);
         double[] p = model.parameterValues();
@@ -91,6 +96,12 @@ public class KinematicsBench {
         return thetas;
     }
 
+    /** All solutions with confdata, limits and manipulability, allocation-free (the fast public path). */
+    @Benchmark
+    public int closedFormIkSolverSolveAll() {
+        return solver.solveAll(target12) + solver.cfx(0);
+    }
+
     @Benchmark
     public List<IkSolution> closedFormIkSolveAllApi() {
         return ik.solveAll(target);
@@ -99,6 +110,12 @@ public class KinematicsBench {
     @Benchmark
     public InverseKinematics.NumericalOutcome numericalIkFromNearbySeed() {
         return ik.solveNumerical(target, seed);
+    }
+
+    @Benchmark
+    public double[] numericalIkSolverFromNearbySeed() {
+        solver.solveNumerical(target12, seed, qOut);
+        return qOut;
     }
 
     @Benchmark

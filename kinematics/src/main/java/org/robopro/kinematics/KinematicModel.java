@@ -34,6 +34,8 @@ public final class KinematicModel {
     private final boolean[] prismatic;
     private final double[][] c, cInv;
     private final boolean couplingIdentity;
+    private final int[] cStart, cCol; // C in compressed rows
+    private final double[] cVal;
     private final double[] qMin, qMax;
     private final List<Transformation> transformations;
     // compiled element arrays (all transformations, in chain order)
@@ -68,6 +70,17 @@ public final class KinematicModel {
         boolean id = true;
         for (int i = 0; i < n; i++) for (int j = 0; j < n; j++) if (c[i][j] != (i == j ? 1 : 0)) id = false;
         couplingIdentity = id;
+        cStart = new int[n + 1];
+        int nz = 0;
+        for (double[] row : c) for (double v : row) if (v != 0) nz++;
+        cCol = new int[nz];
+        cVal = new double[nz];
+        nz = 0;
+        for (int i = 0; i < n; i++) {
+            cStart[i] = nz;
+            for (int j = 0; j < n; j++) if (c[i][j] != 0) { cCol[nz] = j; cVal[nz++] = c[i][j]; }
+        }
+        cStart[n] = nz;
 
         int count = 0;
         for (Transformation t : transformations) count += t.elements().size();
@@ -165,24 +178,33 @@ public final class KinematicModel {
             System.arraycopy(q, 0, out, 0, n);
             return;
         }
-        for (int i = 0; i < n; i++) {
+        for (int i = 0; i < n; i++) { // sparse rows of C: usually one or two terms
             double s = 0;
-            double[] row = c[i];
-            for (int j = 0; j < n; j++) s += row[j] * q[j];
+            for (int t = cStart[i], end = cStart[i + 1]; t < end; t++) s += cVal[t] * q[cCol[t]];
             out[i] = s;
         }
     }
 
     /** Controller values q from model angles theta (inverse coupling). */
     public double[] q(double[] theta) {
-        checkLength(theta);
         double[] q = new double[n];
+        q(theta, q);
+        return q;
+    }
+
+    /** Allocation-free inverse coupling: writes q for model angles theta into {@code out}. */
+    void q(double[] theta, double[] out) {
+        checkLength(theta);
+        if (couplingIdentity) {
+            System.arraycopy(theta, 0, out, 0, n);
+            return;
+        }
         for (int i = 0; i < n; i++) {
             double s = 0;
-            for (int j = 0; j < n; j++) s += cInv[i][j] * theta[j];
-            q[i] = s;
+            double[] row = cInv[i];
+            for (int j = 0; j < n; j++) s += row[j] * theta[j];
+            out[i] = s;
         }
-        return q;
     }
 
     /** The coupling matrix C (theta = C q), a copy. */
@@ -251,7 +273,7 @@ public final class KinematicModel {
 
     private void joint(double[] m, int k, double t) {
         if (prismatic[k]) Mat34.translate(m, 2, t);
-        else Mat34.rotate(m, 2, Math.cos(t), Math.sin(t));
+        else Mat34.rotate(m, 2, FastTrig.cos(t), FastTrig.sin(t)); // pure Java: the reduction is shared
     }
 
     /**
