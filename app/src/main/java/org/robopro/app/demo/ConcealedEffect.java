@@ -4,21 +4,23 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 import org.robopro.calibration.JointEffect;
-import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.diagnosis.Effect;
+import org.robopro.calibration.diagnosis.GravityTorques;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotDescription;
 
 /**
  * The non-geometric effect the demo's true robot hides (issue 8): its kind is chosen with
  * {@code --effect}, its joint and size are drawn from the seed within the realistic ranges of the
- * diagnosis benchmark (docs/diagnosis.md).
+ * concealed-effect benchmark (docs/diagnosis.md). The simulator applies exactly the diagnosis's
+ * own definition ({@link Effect#truth}), so what the diagnosis names can be compared with it.
  */
 public final class ConcealedEffect {
     /** The default concealed effect. */
     public static final String DEFAULT = "gear-periodic";
 
     /** Effects the demo can conceal ("none": geometric errors only). */
-    public static final List<String> NAMES = List.of("gear-periodic", "none");
+    public static final List<String> NAMES = List.of("gear-periodic", "joint-compliance", "backlash", "joint-scale", "none");
 
     /**
      * A drawn effect.
@@ -33,31 +35,42 @@ public final class ConcealedEffect {
 
     private ConcealedEffect() { }
 
+    private static double uniform(Random r, double lo, double hi) { return lo + (hi - lo) * r.nextDouble(); }
+
     /** Draws the effect {@code name} for the robot; null for "none". */
     static Drawn draw(String name, KinematicModel nominal, RobotDescription d, Random rng) {
         String n = name.toLowerCase(Locale.ROOT);
         if (!NAMES.contains(n)) throw new IllegalArgumentException("unknown effect '" + name + "'; choose one of " + String.join(", ", NAMES));
-        return switch (n) {
-            case "none" -> null;
-            default -> periodic(rng.nextInt(2), rng);
-        };
-    }
-
-    // TODO(diagnosis merge): replace by org.robopro.calibration.diagnosis.Effect once it is on main.
-    private static Drawn periodic(int joint, Random rng) {
-        double[] v = new double[6];
-        for (int h = 0; h < 3; h++) {
-            double a = Math.toRadians(0.004 + 0.006 * rng.nextDouble()), ph = 2 * Math.PI * rng.nextDouble();
-            v[2 * h] = a * Math.cos(ph);
-            v[2 * h + 1] = a * Math.sin(ph);
-        }
-        JointEffect e = new JointEffect() {
-            @Override public String name() { return "gear-periodic"; }
-
-            @Override public void addDeltaTheta(KinematicModel model, double[] q, PoseConditions c, double[] dThetaOut) {
-                for (int h = 1; h <= 3; h++) dThetaOut[joint] += v[2 * h - 2] * Math.sin(h * q[joint]) + v[2 * h - 1] * Math.cos(h * q[joint]);
+        Effect e;
+        double[] v;
+        switch (n) {
+            case "none" -> { return null; }
+            case "gear-periodic" -> {
+                // Joints 1-2: a periodic error of 0.004-0.01 deg per harmonic (joint 3's is barely distinct from geometry).
+                e = Effect.periodic(rng.nextInt(2));
+                v = new double[2 * Effect.HARMONICS];
+                for (int h = 0; h < Effect.HARMONICS; h++) {
+                    double a = Math.toRadians(uniform(rng, 0.004, 0.01)), ph = 2 * Math.PI * rng.nextDouble();
+                    v[2 * h] = a * Math.cos(ph);
+                    v[2 * h + 1] = a * Math.sin(ph);
+                }
             }
-        };
-        return new Drawn("gear-periodic", "gear-periodic j" + (joint + 1), List.of("a1", "b1", "a2", "b2", "a3", "b3"), v, e);
+            case "joint-compliance" -> {
+                GravityTorques g = new GravityTorques(nominal, d.massModel()
+                        .orElseThrow(() -> new IllegalArgumentException(d.name() + " has no mass model: no compliance")));
+                e = Effect.compliance(1 + rng.nextInt(2), g); // joints 2-3 carry the arm's weight
+                v = new double[] {1 / uniform(rng, 0.5e6, 2e6)};
+            }
+            case "backlash" -> {
+                e = Effect.backlash(rng.nextInt(3));
+                v = new double[] {Math.toRadians(uniform(rng, 0.02, 0.05))};
+            }
+            case "joint-scale" -> {
+                e = Effect.scale(rng.nextInt(2));
+                v = new double[] {(rng.nextBoolean() ? 1 : -1) * uniform(rng, 1e-4, 3e-4)};
+            }
+            default -> throw new IllegalStateException(n);
+        }
+        return new Drawn(e.kind().json, e.label(), e.parameterNames(), v, e.truth(v));
     }
 }

@@ -90,7 +90,7 @@ public final class Demo {
      *
      * @param nominal         the off-line program as taught
      * @param calibrated      compensated with the geometric calibration
-     * @param diagnosed       compensated with the diagnosed extended model (null when the diagnosis is unavailable)
+     * @param diagnosed       compensated with the diagnosed extended model
      * @param concealedEffect what the simulator hid (revealed after the diagnosis)
      * @param namedEffects    what the diagnosis named
      * @param noiseFloorMm    √3 σ of the tracker noise (σ as configured on the simulated tracker)
@@ -260,23 +260,19 @@ public final class Demo {
             List<Vec3> calReadings = runAndMeasure(inv, calModule, "DemoWeldCal", targetIdx);
             Run calibratedRun = evaluate("geometric calibration", "DemoWeldCal", calReadings, targets, cal.instrumentTbase());
 
-            Run diagnosedRun = null;
-            if (diag.available()) {
-                // The extended model predicts each target under the approach directions the program reaches it with.
-                List<int[]> approach = approachDirections(check, moves);
-                RapidModule diagModule = compensate(weld, nominal, t -> diag.compensator(nominal, weld.flangeTtcp,
-                        new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)), "DemoWeldDiag", out);
-                List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
-                diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
-            }
+            // The extended model predicts each target under the approach directions the program reaches it with.
+            List<int[]> approach = approachDirections(check, moves);
+            RapidModule diagModule = compensate(weld, nominal, t -> diag.compensator(nominal, weld.flangeTtcp,
+                    new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)), "DemoWeldDiag", out);
+            List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
+            Run diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
 
             // -------------------------------------------------------------- 5. table and report
             begin(5);
             con.step(5, "Before and after");
             String concealed = DemoReport.concealedEffect(sim.truthFile());
-            if (diag.available()) con.line("concealed effect (revealed now): %s; the diagnosis named: %s", concealed,
+            con.line("concealed effect (revealed now): %s; the diagnosis named: %s", concealed,
                     diag.named().isEmpty() ? "nothing" : String.join(", ", diag.named()));
-            else con.line("concealed effect (revealed now): %s", concealed);
             Files.copy(sim.truthFile(), out.resolve("truth.json"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             Result r = new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
             for (String line : DemoReport.table(r).split("\n")) con.line("%s", line);
@@ -284,8 +280,8 @@ public final class Demo {
             AtomicFiles.writeString(out.resolve("demo.json"), DemoReport.json(r), true);
             AtomicFiles.writeString(out.resolve("report.html"),
                     DemoReport.html(r, o, cal, diag, targetNames, created), true);
-            con.line("wrote %s: report.html, demo.json, DemoWeld.mod, DemoWeldCal.mod%s, measurements.csv, calibration/%s",
-                    out.toAbsolutePath().normalize(), diag.available() ? ", DemoWeldDiag.mod" : "", diag.available() ? ", diagnosis/" : "");
+            con.line("wrote %s: report.html, demo.json, DemoWeld.mod, DemoWeldCal.mod, DemoWeldDiag.mod, measurements.csv,"
+                    + " calibration/, diagnosis/", out.toAbsolutePath().normalize());
             con.line("elapsed %.1f s", con.elapsedS());
             return new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
         }

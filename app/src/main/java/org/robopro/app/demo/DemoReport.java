@@ -29,8 +29,7 @@ final class DemoReport {
         sb.append(String.format(Locale.ROOT, "%-34s %10s %10s%n", "target error of the welding program", "mean (mm)", "max (mm)"));
         row(sb, "nominal (off-line, uncalibrated)", r.nominal());
         row(sb, "geometric calibration", r.calibrated());
-        if (r.diagnosed() != null) row(sb, "with the diagnosed effect", r.diagnosed());
-        else sb.append(String.format(Locale.ROOT, "%-34s %10s %10s%n", "with the diagnosed effect", "pending", "pending"));
+        row(sb, "with the diagnosed effect", r.diagnosed());
         sb.append(String.format(Locale.ROOT, "%-34s %10.4f%n", "noise floor (√3·σ of the tracker)", r.noiseFloorMm()));
         return sb.toString();
     }
@@ -48,8 +47,8 @@ final class DemoReport {
         m.put("nominal_max_mm", round(r.nominal().maxMm()));
         m.put("calibrated_mean_mm", round(r.calibrated().meanMm()));
         m.put("calibrated_max_mm", round(r.calibrated().maxMm()));
-        m.put("diagnosed_mean_mm", r.diagnosed() == null ? null : round(r.diagnosed().meanMm()));
-        m.put("diagnosed_max_mm", r.diagnosed() == null ? null : round(r.diagnosed().maxMm()));
+        m.put("diagnosed_mean_mm", round(r.diagnosed().meanMm()));
+        m.put("diagnosed_max_mm", round(r.diagnosed().maxMm()));
         m.put("concealed_effect", r.concealedEffect());
         m.put("named_effects", r.namedEffects());
         return Json.write(m);
@@ -61,7 +60,7 @@ final class DemoReport {
         h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>robopro demo</title><style>")
          .append("body{font-family:sans-serif;max-width:780px;margin:1em auto;color:#222}")
          .append("table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}")
-         .append("th{background:#eee}td.l,th.l{text-align:left}.pending{color:#a40}")
+         .append("th{background:#eee}td.l,th.l{text-align:left}")
          .append("</style></head><body>\n");
         h.append("<h1>robopro demo: an off-line program, calibrated</h1>\n<p>")
          .append(String.format(Locale.ROOT, "Seed %d, concealed effect chosen: <code>%s</code>, %d campaign poses, %d welding passes. "
@@ -77,17 +76,16 @@ final class DemoReport {
         h.append("<h2>Target errors</h2>\n<table><tr><th class=\"l\">program</th><th>mean (mm)</th><th>max (mm)</th></tr>");
         hrow(h, "nominal (off-line, uncalibrated)", r.nominal());
         hrow(h, "geometric calibration", r.calibrated());
-        if (r.diagnosed() != null) hrow(h, "with the diagnosed effect", r.diagnosed());
-        else h.append("<tr><td class=\"l\">with the diagnosed effect</td><td class=\"pending\" colspan=\"2\">pending: diagnosis not in this build</td></tr>");
+        hrow(h, "with the diagnosed effect", r.diagnosed());
         h.append(String.format(Locale.ROOT, "</table>\n<p>Noise floor of the tracker (&radic;3&middot;&sigma;, &sigma; = %.3f mm "
                 + "per axis): %.4f mm. Concealed effect: <b>%s</b>; named by the diagnosis: <b>%s</b>.</p>\n", Demo.NOISE_MM, r.noiseFloorMm(),
-                Html.esc(r.concealedEffect()), r.namedEffects().isEmpty() ? (diag.available() ? "nothing" : "(pending)")
+                Html.esc(r.concealedEffect()), r.namedEffects().isEmpty() ? "nothing"
                         : Html.esc(String.join(", ", r.namedEffects()))));
 
         List<Svg.Series> per = new ArrayList<>();
         per.add(series("nominal", r.nominal(), "#d62728"));
         per.add(series("geometric calibration", r.calibrated(), "#1f77b4"));
-        if (r.diagnosed() != null) per.add(series("diagnosed effect", r.diagnosed(), "#2ca02c"));
+        per.add(series("diagnosed effect", r.diagnosed(), "#2ca02c"));
         h.append(Svg.plot("Error at each target of the welding program (log scale)", "target (program order)",
                 "error (mm, log scale)", per, true)).append("\n<p>Targets: ");
         for (int i = 0; i < targetNames.size(); i++) h.append(i == 0 ? "" : ", ").append(i + 1).append(" ").append(Html.esc(targetNames.get(i)));

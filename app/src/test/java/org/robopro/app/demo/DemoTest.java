@@ -43,7 +43,7 @@ class DemoTest {
     @Test
     void demo_smallCampaign_calibratedNearNoiseFloorAndReportWritten() throws Exception {
         Path out = dir.resolve("demo");
-        Outcome o = run("demo", "--seed", "3", "--poses", "80", "--passes", "2", "--out", out.toString());
+        Outcome o = run("demo", "--seed", "3", "--poses", "150", "--passes", "2", "--out", out.toString());
         assertEquals(0, o.code(), () -> o.out() + o.err());
         for (String s : List.of("[1/5]", "[2/5]", "[3/5]", "[4/5]", "[5/5]", "30 parameters", "path check", "elapsed"))
             assertTrue(o.out().contains(s), () -> "missing '" + s + "' in\n" + o.out());
@@ -60,13 +60,21 @@ class DemoTest {
         assertTrue(nominal > 20 * calibrated, "calibration removes most of the error: " + nominal + " -> " + calibrated);
         assertTrue(calibrated < 5 * floor, "calibrated mean " + calibrated + " mm within a few noise floors (" + floor + ")");
         assertTrue(j.get("calibrated_max_mm").asDouble() >= calibrated);
-        assertTrue(j.get("concealed_effect").asText().startsWith(ConcealedEffect.DEFAULT), j.toString());
-        assertTrue(j.get("named_effects").isArray());
+        String concealed = j.get("concealed_effect").asText();
+        assertTrue(concealed.startsWith(ConcealedEffect.DEFAULT + " j"), j.toString());
+        List<String> named = new ArrayList<>();
+        j.get("named_effects").forEach(n -> named.add(n.asText()));
+        assertEquals(List.of(concealed), named, "the diagnosis names the concealed effect, joint included, and nothing else");
+        double diagnosed = j.get("diagnosed_mean_mm").asDouble();
+        assertTrue(diagnosed < calibrated, "modelling the effect helps: " + calibrated + " -> " + diagnosed);
+        assertTrue(diagnosed < 2 * floor, "the diagnosed program hits its targets to the noise floor: " + diagnosed);
+        assertTrue(j.get("diagnosed_max_mm").asDouble() >= diagnosed);
 
         String html = Files.readString(out.resolve("report.html"));
         assertTrue(html.contains("<svg") && html.contains("Target errors"), "report with inline plots");
         assertFalse(html.contains("<script"), "self-contained, no scripts");
-        for (String f : List.of("DemoWeld.mod", "DemoWeldCal.mod", "measurements.csv", "calibration/report.html", "truth.json"))
+        for (String f : List.of("DemoWeld.mod", "DemoWeldCal.mod", "DemoWeldDiag.mod", "measurements.csv", "calibration/report.html",
+                "diagnosis/report.html", "diagnosis/extended.robot.json", "truth.json"))
             assertTrue(Files.exists(out.resolve(f)), f);
         assertTrue(demoControllers().isEmpty(), "the controller process is ended: " + demoControllers());
 
@@ -89,6 +97,20 @@ class DemoTest {
         assertTrue(f.getMessage().contains("injected failure"), f.getMessage());
         assertEquals(1, during.size(), "the controller ran while the demo did");
         assertFalse(during.get(0).isAlive(), "and was ended after the failure");
+    }
+
+    @Test
+    void demo_eachConcealableEffect_diagnosisNamesItAndTheDiagnosedProgramIsBetter() throws Exception {
+        for (String effect : List.of("joint-compliance", "backlash", "joint-scale")) {
+            Path out = dir.resolve(effect);
+            Outcome o = run("demo", "--seed", "4", "--effect", effect, "--poses", "150", "--passes", "1", "--out", out.toString());
+            assertEquals(0, o.code(), () -> o.out() + o.err());
+            JsonNode j = Json.read(Files.readString(out.resolve("demo.json")));
+            assertTrue(j.get("concealed_effect").asText().startsWith(effect + " j"), j.toString());
+            assertEquals(1, j.get("named_effects").size(), j.toString());
+            assertEquals(j.get("concealed_effect").asText(), j.get("named_effects").get(0).asText(), j.toString());
+            assertTrue(j.get("diagnosed_mean_mm").asDouble() < j.get("calibrated_mean_mm").asDouble(), j.toString());
+        }
     }
 
     @Test
