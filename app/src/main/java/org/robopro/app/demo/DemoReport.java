@@ -100,8 +100,8 @@ final class DemoReport {
         before.add(poseSeries("validation", cal.validate(), false, "#ff7f0e"));
         after.add(poseSeries("training", cal.train(), true, "#1f77b4"));
         after.add(poseSeries("validation", cal.validate(), true, "#ff7f0e"));
-        h.append(Svg.plot("Campaign poses, nominal model", "pose", "position error (mm)", before, false)).append("\n")
-         .append(Svg.plot("Campaign poses, calibrated model", "pose", "position error (mm)", after, false)).append("\n");
+        h.append(Svg.plot("Campaign poses, nominal model", "pose (campaign order)", "position error (mm)", before, false)).append("\n")
+         .append(Svg.plot("Campaign poses, calibrated model", "pose (campaign order)", "position error (mm)", after, false)).append("\n");
 
         h.append("<h2>Diagnosis</h2>\n").append(diag.html());
         h.append("<h2>Files</h2>\n<ul><li><code>DemoWeld.mod</code>: the off-line program; <code>DemoWeldCal.mod</code>, "
@@ -122,10 +122,18 @@ final class DemoReport {
         return new Svg.Series(name, x, run.errorsMm(), colour, true);
     }
 
+    private static double campaignIndex(String poseId, int fallback) {
+        try {
+            return Integer.parseInt(poseId);
+        } catch (NumberFormatException e) {
+            return fallback;
+        }
+    }
+
     private static Svg.Series poseSeries(String name, List<CalibrationResult.PoseError> es, boolean calibrated, String colour) {
         double[] x = new double[es.size()], y = new double[es.size()];
         for (int i = 0; i < x.length; i++) {
-            x[i] = i + 1;
+            x[i] = campaignIndex(es.get(i).poseId(), i + 1); // training and validation poses interleave in the campaign
             y[i] = Units.mToMm(calibrated ? es.get(i).calibratedM() : es.get(i).nominalM());
         }
         return new Svg.Series(name, x, y, colour, false);
