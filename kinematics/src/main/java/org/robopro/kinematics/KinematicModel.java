@@ -36,6 +36,9 @@ public final class KinematicModel {
     private final boolean couplingIdentity;
     private final int[] cStart, cCol; // C in compressed rows
     private final double[] cVal;
+    private final int[] ciStart, ciCol; // C^-1 in compressed rows (IK: q from theta per solution)
+    private final int[] qFrom; // j when row i of C^-1 is exactly e_j (q_i = theta_j), else -1
+    private final double[] ciVal;
     private final double[] qMin, qMax;
     private final List<Transformation> transformations;
     // compiled element arrays (all transformations, in chain order)
@@ -87,6 +90,19 @@ public final class KinematicModel {
             for (int j = 0; j < n; j++) if (c[i][j] != 0) { cCol[nz] = j; cVal[nz++] = c[i][j]; }
         }
         cStart[n] = nz;
+        ciStart = new int[n + 1];
+        nz = 0;
+        for (double[] row : cInv) for (double v : row) if (v != 0) nz++;
+        ciCol = new int[nz];
+        ciVal = new double[nz];
+        qFrom = new int[n];
+        nz = 0;
+        for (int i = 0; i < n; i++) {
+            ciStart[i] = nz;
+            for (int j = 0; j < n; j++) if (cInv[i][j] != 0) { ciCol[nz] = j; ciVal[nz++] = cInv[i][j]; }
+            qFrom[i] = nz - ciStart[i] == 1 && ciVal[ciStart[i]] == 1 ? ciCol[ciStart[i]] : -1;
+        }
+        ciStart[n] = nz;
 
         int count = 0;
         for (Transformation t : transformations) count += t.elements().size();
@@ -228,10 +244,15 @@ public final class KinematicModel {
             System.arraycopy(theta, 0, out, 0, n);
             return;
         }
+        // a unit row of C^-1 is a copy; the others are sparse sums (usually one or two rows)
         for (int i = 0; i < n; i++) {
+            int from = qFrom[i];
+            if (from >= 0) {
+                out[i] = theta[from];
+                continue;
+            }
             double s = 0;
-            double[] row = cInv[i];
-            for (int j = 0; j < n; j++) s += row[j] * theta[j];
+            for (int t = ciStart[i], end = ciStart[i + 1]; t < end; t++) s += ciVal[t] * theta[ciCol[t]];
             out[i] = s;
         }
     }
