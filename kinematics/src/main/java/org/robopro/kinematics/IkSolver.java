@@ -140,16 +140,25 @@ public final class IkSolver {
      */
     private void addVariants(int cfxArm, double manip) {
         // common case first: every whole-turn joint's wrapped value is the one turn inside its range
-        boolean simple = true, within = true;
+        boolean simple = true, within = true, none = false;
         for (int i = 0; i < n; i++) {
             double v = base[i], lo = qLo[i], hi = qHi[i];
             if (integerColumn[i]) {
                 v = ClosedFormIk.wrap(v);
                 base[i] = v;
-                if (!(v >= lo && v <= hi && v + TWO_PI > hi && v - TWO_PI < lo)) simple = false;
+                boolean in = v >= lo && v <= hi;
+                if (!(in && v + TWO_PI > hi && v - TWO_PI < lo)) {
+                    simple = false;
+                    // outside, and the next turn towards the range already overshoots it: no turn fits
+                    if (!in && (v < lo ? v + TWO_PI > hi : v - TWO_PI < lo)) none = true;
+                }
             } else if (!(v >= lo && v <= hi)) {
                 within = false;
             }
+        }
+        if (none) { // the wrapped q, outside the limits
+            addUnique(base, cfxArm, manip, false);
+            return;
         }
         if (simple) {
             addUnique(base, cfxArm, manip, within);
