@@ -211,10 +211,13 @@ public final class IkSolver {
     /** Adds q unless a stored solution is within 1e-7 rad (every joint) of it. */
     private void addUnique(double[] q, int cfxArm, double manip, boolean within) {
         double[][] store = sq;
-        double q0 = q[0];
+        // the closed form's branches differ in joint 4 (wrist flip: theta4 + pi) and joint 1
+        // (shoulder) almost always, so those two decide before the loop over the rest
+        int first = n > 3 ? 3 : 0;
+        double qa = q[first], q0 = q[0];
         for (int s = 0; s < count; s++) {
             double[] o = store[s];
-            if (!(Math.abs(o[0] - q0) < 1e-7)) continue; // usually decided here (shoulder) or by the next joints
+            if (!(Math.abs(o[first] - qa) < 1e-7) || !(Math.abs(o[0] - q0) < 1e-7)) continue;
             int i = 1;
             while (i < n && Math.abs(o[i] - q[i]) < 1e-7) i++;
             if (i == n) return;
