@@ -1,4 +1,4 @@
 package org.robopro.programs;
 
 /** One item at module level, kept in file order: data declaration, procedure or comment line. */
-public sealed interface ModuleItem permits Declaration, Procedure, Comment { }
+public sealed interface ModuleItem permits Declaration, Procedure, Comment, AstItem { }

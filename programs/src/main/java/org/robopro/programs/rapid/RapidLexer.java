@@ -50,7 +50,7 @@ final class RapidLexer {
                     advance();
                     advance();
                     out.add(new Token(Token.Kind.PUNCT, two, l, c));
-                } else if ("[](){},;:\\+-*/=<>.%".indexOf(ch) >= 0) {
+                } else if ("[](){},;:\\+-*/=<>.%?|".indexOf(ch) >= 0) {
                     advance();
                     out.add(new Token(Token.Kind.PUNCT, String.valueOf(ch), l, c));
                 } else {
@@ -63,6 +63,17 @@ final class RapidLexer {
 
     private Token number(int l, int c) {
         int start = pos;
+        if (s.charAt(pos) == '0' && pos + 2 < s.length() && "xXbBoO".indexOf(s.charAt(pos + 1)) >= 0
+                && digitOf(s.charAt(pos + 2), radix(s.charAt(pos + 1))) >= 0) {
+            // 0x1F, 0b101, 0o17: RAPID's hexadecimal, binary and octal literals
+            int radix = radix(s.charAt(pos + 1));
+            advance();
+            advance();
+            while (pos < s.length() && digitOf(s.charAt(pos), radix) >= 0) advance();
+            if (pos < s.length() && (RapidNames.isAsciiLetter(s.charAt(pos)) || isDigit(s.charAt(pos)) || s.charAt(pos) == '_'))
+                throw new InputException(file, line, col, null, "unexpected '" + s.charAt(pos) + "' in number '" + s.substring(start, pos) + "'");
+            return new Token(Token.Kind.NUMBER, s.substring(start, pos), l, c);
+        }
         while (pos < s.length() && isDigit(s.charAt(pos))) advance();
         if (pos < s.length() && s.charAt(pos) == '.') {
             advance();
@@ -118,4 +129,11 @@ final class RapidLexer {
     }
 
     private static boolean isDigit(char c) { return c >= '0' && c <= '9'; }
+
+    private static int radix(char c) {
+        char k = Character.toLowerCase(c);
+        return k == 'x' ? 16 : k == 'b' ? 2 : 8;
+    }
+
+    private static int digitOf(char c, int radix) { return c < 128 ? Character.digit(c, radix) : -1; }
 }

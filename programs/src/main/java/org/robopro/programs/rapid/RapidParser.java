@@ -13,6 +13,8 @@ import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.Units;
 import org.robopro.models.InputException;
 import org.robopro.models.Vec3;
+import org.robopro.programs.AstItem;
+import org.robopro.programs.AstStatement;
 import org.robopro.programs.Comment;
 import org.robopro.programs.Declaration;
 import org.robopro.programs.ExtJoints;
@@ -34,28 +36,30 @@ import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
 import org.robopro.programs.WaitTime;
 import org.robopro.programs.ZoneData;
+import org.robopro.programs.rapid.RapidAst.Expr;
 
 /**
- * Recursive-descent parser for the RAPID subset robopro models: one MODULE with data
- * declarations (robtarget, jointtarget, tooldata, wobjdata, loaddata, speeddata, zonedata, pose,
- * num, bool, string; CONST/PERS/VAR, LOCAL/TASK), procedures without parameters holding
- * MoveAbsJ/MoveJ/MoveL/MoveC, WaitTime, procedure calls and comments. Anything else is refused
- * with an {@link InputException} naming the file, line and column: a Move is never skipped.
- * RAPID units (mm, degrees) become SI here.
+ * Reads RAPID modules. The whole RAPID kernel grammar is parsed into a {@link RapidAst}
+ * ({@link #parseAst}); {@link #parse} then maps what robopro models into typed form: data
+ * declarations of robtarget, jointtarget, tooldata, wobjdata, loaddata, speeddata, zonedata,
+ * pose, num, bool, string with literal values; PROCs without parameters or handlers; MoveAbsJ/
+ * MoveJ/MoveL/MoveC with named or literal arguments, WaitTime, calls without arguments, comments.
+ * Everything else stays as syntax tree ({@link AstItem}, {@link AstStatement}) so the module
+ * exports with the same meaning. Errors: {@link InputException} naming the file, line and column.
+ * RAPID units (mm, degrees) become SI in the typed model.
  */
 public final class RapidParser {
     private final String file;
-    private final List<Token> toks;
-    private int i;
+    private final ParsedAst ast;
     private final IdentityHashMap<Statement, SourcePos> positions = new IdentityHashMap<>();
     /** Declared data by lower-case name: type name, for checking references. */
     private final Map<String, String> declaredTypes = new HashMap<>();
     /** Declared values by lower-case name, for initialisers that name other data. */
     private final Map<String, RapidValue> declaredValues = new HashMap<>();
 
-    private RapidParser(String text, String file) {
-        this.file = file;
-        this.toks = new RapidLexer(blankHeader(text), file).tokens();
+    private RapidParser(ParsedAst ast) {
+        this.file = ast.file();
+        this.ast = ast;
     }
 
     /** Parses RAPID module text; {@code fileName} names the source in error messages. */
@@ -63,265 +67,207 @@ public final class RapidParser {
         return parseDetailed(text, fileName).module();
     }
 
-    /** Like {@link #parse} and also keeps each statement's position. */
+    /** Like {@link #parse} and also keeps each statement's position and the syntax tree. */
     public static ParsedModule parseDetailed(String text, String fileName) {
+        ParsedAst a = parseAst(text, fileName);
+        RapidParser p = new RapidParser(a);
+        RapidModule m = p.module(a.module());
+        return new ParsedModule(m, p.file, p.positions, a);
+    }
+
+    /** The syntax tree of RAPID module text (the full grammar; nothing is interpreted). */
+    public static ParsedAst parseAst(String text, String fileName) {
         if (text == null) throw new IllegalArgumentException("text must not be null");
-        RapidParser p = new RapidParser(text, fileName == null ? "<rapid>" : fileName);
-        RapidModule m = p.module();
-        return new ParsedModule(m, p.file, p.positions);
+        return RapidAstParser.parse(text, fileName == null ? "<rapid>" : fileName);
     }
 
     /**
-     * Old controllers write a "%%%\n VERSION:1\n LANGUAGE:ENGLISH\n%%%" header before MODULE. It
-     * carries no program meaning; it is blanked (line numbers stay right).
+     * A typed value from a literal expression (aggregates of numbers, strings, booleans, names
+     * of predefined data), RAPID units to SI; errors name {@code file} and the expression's place
+     * in {@code where} when known.
      */
-    private static String blankHeader(String text) {
-        int start = 0;
-        while (start < text.length() && Character.isWhitespace(text.charAt(start))) start++;
-        if (!text.startsWith("%%%", start)) return text;
-        int end = text.indexOf("%%%", start + 3);
-        if (end < 0) return text;
-        StringBuilder b = new StringBuilder(text);
-        for (int k = start; k < end + 3; k++) if (b.charAt(k) != '\n' && b.charAt(k) != '\r') b.setCharAt(k, ' ');
-        return b.toString();
+    public static RapidValue literalValue(String type, Expr e, String file, String field) {
+        RapidParser p = new RapidParser(new ParsedAst(new RapidAst.Module("M", List.of(), List.of()), file, new IdentityHashMap<>()));
+        if (!TYPES.contains(type)) throw new InputException(file, 0, 0, field, "data type '" + type + "' is not a typed value");
+        try {
+            return p.convertChecked(type, e, field);
+        } catch (IllegalArgumentException bad) {
+            if (bad instanceof NumberFormatException) throw bad;
+            throw new InputException(file, 0, 0, field, bad.getMessage());
+        }
     }
+
+    /** The RAPID data types robopro holds typed. */
+    public static final Set<String> TYPES = Set.of("robtarget", "jointtarget", "tooldata", "wobjdata", "loaddata",
+            "speeddata", "zonedata", "pose", "num", "bool", "string");
 
     // ---------------------------------------------------------------- module level
 
-    private RapidModule module() {
-        while (peek().kind() == Token.Kind.COMMENT) i++; // comments before MODULE carry no meaning
-        expectWord("MODULE");
-        String name = ident("module name");
-        List<String> options = new ArrayList<>();
-        if (peek().is("(")) {
-            i++;
-            do {
-                Token o = next();
-                if (o.kind() != Token.Kind.IDENT || !Set.of("SYSMODULE", "NOSTEPIN", "VIEWONLY", "READONLY", "NOVIEW")
-                        .contains(o.text().toUpperCase(Locale.ROOT)))
-                    throw error(o, "module option", "expected SYSMODULE, NOSTEPIN, VIEWONLY, READONLY or NOVIEW, found " + o.describe());
-                options.add(o.text().toUpperCase(Locale.ROOT));
-            } while (accept(","));
-            expect(")");
-        }
+    private RapidModule module(RapidAst.Module am) {
         List<ModuleItem> items = new ArrayList<>();
-        Map<String, Token> names = new HashMap<>();
-        while (true) {
-            Token t = peek();
-            if (t.kind() == Token.Kind.COMMENT) {
-                items.add(new Comment(toks.get(i++).text()));
-                continue;
+        Map<String, SourcePos> names = new HashMap<>();
+        for (RapidAst.Item it : am.items()) {
+            ModuleItem item = item(it);
+            String n = item instanceof Declaration d ? d.name() : item instanceof Procedure p ? p.name()
+                    : item instanceof AstItem a ? a.name() : null;
+            if (n != null) {
+                SourcePos at = pos(it);
+                SourcePos prev = names.putIfAbsent(n.toLowerCase(Locale.ROOT), at);
+                if (prev != null)
+                    throw new InputException(file, at.line(), nameColumn(it, at), n, "name already used on line " + prev.line() + " (RAPID names ignore case)");
             }
-            if (t.isWord("ENDMODULE")) { i++; break; }
-            if (t.kind() == Token.Kind.EOF) throw error(t, null, "ENDMODULE missing (module " + name + " opened on line 1)");
-            ModuleItem item;
-            Token nameTok;
-            if (isDeclarationStart()) {
-                int at = i;
-                Declaration d = declaration();
-                item = d;
-                nameTok = findNameToken(at, d.name());
-                declaredTypes.put(d.name().toLowerCase(Locale.ROOT), d.rapidType());
-                declaredValues.putIfAbsent(d.name().toLowerCase(Locale.ROOT), d.value());
-            } else if (t.isWord("PROC") || (t.isWord("LOCAL") && peekAt(1).isWord("PROC"))) {
-                nameTok = peekAt(t.isWord("LOCAL") ? 2 : 1);
-                item = procedure();
-            } else if (t.isWord("FUNC") || t.isWord("TRAP") || t.isWord("RECORD") || t.isWord("ALIAS")
-                    || (t.isWord("LOCAL") && (peekAt(1).isWord("FUNC") || peekAt(1).isWord("TRAP")))) {
-                Token w = t.isWord("LOCAL") ? peekAt(1) : t;
-                throw error(w, null, w.text().toUpperCase(Locale.ROOT) + " is not supported (robopro reads data declarations and PROCs)");
-            } else {
-                throw error(t, null, "expected a declaration, PROC or ENDMODULE, found " + t.describe());
-            }
-            String key = nameOf(item).toLowerCase(Locale.ROOT);
-            Token prev = names.putIfAbsent(key, nameTok);
-            if (prev != null)
-                throw error(nameTok, nameOf(item), "name already used on line " + prev.line() + " (RAPID names ignore case)");
             items.add(item);
         }
-        while (peek().kind() == Token.Kind.COMMENT) i++;
-        if (peek().kind() != Token.Kind.EOF) throw error(peek(), null, "text after ENDMODULE: " + peek().describe());
-        RapidModule m = new RapidModule(name, options, items);
+        RapidModule m = new RapidModule(am.name(), am.options(), items);
         checkReferences(m);
         return m;
     }
 
-    private static String nameOf(ModuleItem item) {
-        return item instanceof Declaration d ? d.name() : ((Procedure) item).name();
+    /** Column of the declared name on its line (for messages), the item's column when not found. */
+    private int nameColumn(RapidAst.Item it, SourcePos at) { return at.column() + (it instanceof RapidAst.DataDecl d ? declOffset(d) : 0); }
+
+    private static int declOffset(RapidAst.DataDecl d) {
+        int o = d.scope() == Declaration.Scope.GLOBAL ? 0 : d.scope().name().length() + 1;
+        return o + d.storage().name().length() + 1 + d.type().length() + 1;
     }
 
-    private Token findNameToken(int from, String name) {
-        for (int k = from; k < i; k++) if (toks.get(k).kind() == Token.Kind.IDENT && toks.get(k).text().equals(name)) return toks.get(k);
-        return toks.get(from);
+    private SourcePos pos(Object node) {
+        return ast.position(node).orElse(new SourcePos(file, 0, 0));
     }
 
-    private boolean isDeclarationStart() {
-        Token t = peek();
-        if (t.isWord("LOCAL") || t.isWord("TASK")) t = peekAt(1);
-        return t.isWord("CONST") || t.isWord("PERS") || t.isWord("VAR");
+    private ModuleItem item(RapidAst.Item it) {
+        if (it instanceof RapidAst.CommentLine c) return new Comment(c.text());
+        if (it instanceof RapidAst.DataDecl d) {
+            Declaration typed = typedDeclaration(d);
+            if (typed == null) {
+                declaredTypes.put(d.name().toLowerCase(Locale.ROOT), d.dims().isEmpty() ? d.type().toLowerCase(Locale.ROOT) : "array");
+                return new AstItem(d);
+            }
+            declaredTypes.put(d.name().toLowerCase(Locale.ROOT), typed.rapidType());
+            declaredValues.putIfAbsent(d.name().toLowerCase(Locale.ROOT), typed.value());
+            return typed;
+        }
+        if (it instanceof RapidAst.Routine r && r.kind() == RapidAst.RoutineKind.PROC && r.params().isEmpty()
+                && r.backward() == null && r.error() == null && r.undo() == null) {
+            List<Statement> body = new ArrayList<>();
+            for (RapidAst.Stmt s : r.body()) body.add(statement(s, r.name()));
+            return new Procedure(r.name(), r.local(), body);
+        }
+        return new AstItem(it);
     }
 
-    private Declaration declaration() {
-        Declaration.Scope scope = Declaration.Scope.GLOBAL;
-        if (peek().isWord("LOCAL")) { i++; scope = Declaration.Scope.LOCAL; }
-        else if (peek().isWord("TASK")) { i++; scope = Declaration.Scope.TASK; }
-        Token st = next();
-        Declaration.Storage storage = Declaration.Storage.valueOf(st.text().toUpperCase(Locale.ROOT));
-        Token typeTok = peek();
-        String type = ident("data type").toLowerCase(Locale.ROOT);
-        Token nameTok = peek();
-        String name = ident("data name");
-        if (peek().is("{")) throw error(peek(), name, "arrays are not supported");
+    /** The typed declaration, or null when the data stays a syntax tree (other type, array, computed value). */
+    private Declaration typedDeclaration(RapidAst.DataDecl d) {
+        String type = d.type().toLowerCase(Locale.ROOT);
+        if (!TYPES.contains(type) || !d.dims().isEmpty()) return null;
         RapidValue value;
-        if (accept(":=")) {
-            Expr e = expr();
-            value = convert(type, typeTok, e, name);
-        } else {
-            if (storage == Declaration.Storage.CONST) throw error(nameTok, name, "CONST needs a value (':=')");
+        if (d.init() == null) {
             value = switch (type) {
                 case "num" -> new RapidValue.Num(0);
                 case "bool" -> new RapidValue.Bool(false);
                 case "string" -> new RapidValue.Str("");
-                default -> {
-                    checkType(type, typeTok, name);
-                    throw error(nameTok, name, type + " declared without a value is not supported (give ':= [...]')");
-                }
+                default -> null; // a record's zero value (e.g. a zero quaternion) is no typed value
             };
+            if (value == null) return null;
+        } else {
+            if (!isLiteral(d.init(), type)) return null;
+            value = convert(type, d.init(), d.name());
         }
-        expect(";");
-        return new Declaration(scope, storage, name, value);
+        return new Declaration(d.scope(), d.storage(), d.name(), value);
     }
 
-    private static final Set<String> TYPES = Set.of("robtarget", "jointtarget", "tooldata", "wobjdata", "loaddata",
-            "speeddata", "zonedata", "pose", "num", "bool", "string");
-
-    private void checkType(String type, Token at, String name) {
-        if (!TYPES.contains(type))
-            throw error(at, name, "data type '" + at.text() + "' is not supported (robopro reads " + String.join(", ", TYPES.stream().sorted().toList()) + ")");
+    /**
+     * A literal value robopro reads typed: numbers (signed), strings, booleans, aggregates of
+     * these; for record types also a plain name (predefined or earlier data, e.g. z10).
+     */
+    private boolean isLiteral(Expr e, String type) {
+        if (e instanceof RapidAst.Name n)
+            return !type.equals("num") && !type.equals("bool") && !type.equals("string")
+                    && (declaredValues.containsKey(n.name().toLowerCase(Locale.ROOT)) || predefinedValue(n.name()) != null);
+        return pureLiteral(e);
     }
 
-    private Procedure procedure() {
-        boolean local = false;
-        if (peek().isWord("LOCAL")) { i++; local = true; }
-        expectWord("PROC");
-        String name = ident("procedure name");
-        expect("(");
-        if (!peek().is(")")) throw error(peek(), name, "procedure parameters are not supported");
-        expect(")");
-        List<Statement> body = new ArrayList<>();
-        while (true) {
-            Token t = peek();
-            if (t.kind() == Token.Kind.COMMENT) { body.add(new Comment(toks.get(i++).text())); continue; }
-            if (t.isWord("ENDPROC")) { i++; break; }
-            if (t.kind() == Token.Kind.EOF) throw error(t, name, "ENDPROC missing for PROC " + name);
-            body.add(statement(name));
+    private static boolean pureLiteral(Expr e) {
+        if (e instanceof RapidAst.Num || e instanceof RapidAst.Str || e instanceof RapidAst.Bool) return true;
+        if (e instanceof RapidAst.Unary u && (u.op().equals("-") || u.op().equals("+"))) return u.operand() instanceof RapidAst.Num;
+        if (e instanceof RapidAst.Aggregate a) {
+            for (Expr x : a.items()) if (!pureLiteral(x)) return false;
+            return true;
         }
-        return new Procedure(name, local, body);
+        return false;
     }
-
-    private static final Set<String> STATEMENT_KEYWORDS = Set.of("IF", "WHILE", "FOR", "TEST", "GOTO", "RETURN",
-            "RAISE", "EXIT", "RETRY", "TRYNEXT", "CONNECT", "ERROR", "UNDO", "BACKWARD", "VAR", "PERS", "CONST",
-            "LOCAL", "TASK", "PROC", "FUNC", "TRAP", "ENDMODULE", "ELSE", "ELSEIF", "ENDIF", "ENDWHILE", "ENDFOR",
-            "ENDTEST", "CASE", "DEFAULT");
 
     // ---------------------------------------------------------------- statements
 
-    private Statement statement(String proc) {
-        Token head = peek();
-        if (head.kind() != Token.Kind.IDENT)
-            throw error(head, proc, "expected an instruction, found " + head.describe());
-        String upper = head.text().toUpperCase(Locale.ROOT);
-        if (STATEMENT_KEYWORDS.contains(upper)) {
-            String what = switch (upper) {
-                case "VAR", "PERS", "CONST", "LOCAL", "TASK" -> "data declarations inside a PROC are not supported";
-                case "PROC", "FUNC", "TRAP", "ENDMODULE" -> "ENDPROC missing before " + upper;
-                default -> upper + " is not supported (robopro reads straight-line motion programs)";
-            };
-            throw error(head, proc, what);
-        }
-        if (RapidNames.isReserved(upper)) throw error(head, proc, "expected an instruction, found keyword " + head.text());
-        i++;
-        if (peek().is(":=") || peek().is(".") || peek().is("{"))
-            throw error(head, proc, "assignments are not supported");
-        if (peek().is("("))
-            throw error(head, proc, "function call statement '" + head.text() + "(...)' is not supported");
-        List<Arg> args = arguments(proc);
-        expect(";");
-        Statement s;
-        try {
-            s = instruction(upper, head, args, proc);
-        } catch (IllegalArgumentException bad) {
-            throw error(head, proc, bad.getMessage());
-        }
-        positions.put(s, new SourcePos(file, head.line(), head.column()));
-        return s;
+    private static final Set<String> MOVE_OPTIONS = Set.of("CONC", "NOEOFFS", "V", "T", "Z", "WOBJ");
+
+    private Statement statement(RapidAst.Stmt s, String proc) {
+        Statement out = typedStatement(s, proc);
+        SourcePos p = ast.position(s).orElse(null);
+        if (p != null) positions.put(out, p);
+        return out;
     }
 
-    private Statement instruction(String upper, Token head, List<Arg> args, String proc) {
-        return switch (upper) {
-            case "MOVEL" -> move(Move.Kind.MOVE_L, head, args, proc);
-            case "MOVEJ" -> move(Move.Kind.MOVE_J, head, args, proc);
-            case "MOVEC" -> move(Move.Kind.MOVE_C, head, args, proc);
-            case "MOVEABSJ" -> move(Move.Kind.MOVE_ABS_J, head, args, proc);
-            case "WAITTIME" -> waitTime(head, args, proc);
+    private Statement typedStatement(RapidAst.Stmt s, String proc) {
+        if (s instanceof RapidAst.CommentLine c) return new Comment(c.text());
+        if (!(s instanceof RapidAst.Call c) || c.name() == null) return new AstStatement(s);
+        String upper = c.name().toUpperCase(Locale.ROOT);
+        switch (upper) {
+            case "MOVEL", "MOVEJ", "MOVEC", "MOVEABSJ" -> {
+                for (RapidAst.Arg a : c.args()) {
+                    if (a.kind() == RapidAst.ArgKind.NAMED || a.kind() == RapidAst.ArgKind.CONDITIONAL) return new AstStatement(s);
+                    if (a.kind() != RapidAst.ArgKind.POSITIONAL && !MOVE_OPTIONS.contains(a.name().toUpperCase(Locale.ROOT))) return new AstStatement(s);
+                    if (a.value() != null && !(a.value() instanceof RapidAst.Name) && !pureLiteral(a.value())) return new AstStatement(s);
+                    // a name of data the module holds untyped (a VAR robtarget without value, an array) stays untyped too
+                    if (a.value() instanceof RapidAst.Name n && isUntypedData(n.name())) return new AstStatement(s);
+                }
+                Move.Kind kind = switch (upper) {
+                    case "MOVEL" -> Move.Kind.MOVE_L;
+                    case "MOVEJ" -> Move.Kind.MOVE_J;
+                    case "MOVEC" -> Move.Kind.MOVE_C;
+                    default -> Move.Kind.MOVE_ABS_J;
+                };
+                try {
+                    return move(kind, c, proc);
+                } catch (IllegalArgumentException bad) {
+                    throw errAt(s, proc, bad.getMessage());
+                }
+            }
+            case "WAITTIME" -> {
+                if (c.args().size() == 1 && c.args().get(0).kind() == RapidAst.ArgKind.POSITIONAL && pureLiteral(c.args().get(0).value())) {
+                    double sec = number(c.args().get(0).value(), proc + ": WaitTime");
+                    if (sec < 0) throw err(c.args().get(0).value(), proc, "WaitTime needs a time >= 0");
+                    return new WaitTime(sec);
+                }
+                return new AstStatement(s);
+            }
             default -> {
-                if (!args.isEmpty())
-                    throw error(head, proc, "instruction " + head.text() + " is not supported (robopro reads MoveAbsJ, MoveJ, MoveL, MoveC, WaitTime and calls of PROCs without arguments)");
-                yield new ProcCall(head.text());
+                return c.args().isEmpty() ? new ProcCall(c.name()) : new AstStatement(s);
             }
-        };
-    }
-
-    /** One argument: positional (name null) or optional ({@code \Name[:=value]}), and how many positional ones precede it. */
-    private record Arg(String name, Expr value, int position, Token at) { }
-
-    private List<Arg> arguments(String proc) {
-        List<Arg> args = new ArrayList<>();
-        int positional = 0;
-        if (peek().is(";")) return args;
-        while (true) {
-            Token at = peek();
-            if (accept("\\")) {
-                String n = ident("optional argument");
-                Expr v = accept(":=") ? expr() : null;
-                args.add(new Arg(n, v, positional, at));
-            } else {
-                if (at.kind() == Token.Kind.IDENT && peekAt(1).is(":="))
-                    throw error(at, proc, "named argument '" + at.text() + ":=' is not supported");
-                args.add(new Arg(null, expr(), positional, at));
-                positional++;
-            }
-            if (accept(",")) continue;
-            if (peek().is("\\")) continue;
-            if (peek().is(";")) return args;
-            throw error(peek(), proc, "expected ',' or ';' after an argument, found " + peek().describe());
         }
     }
 
-    private Statement waitTime(Token head, List<Arg> args, String proc) {
-        for (Arg a : args)
-            if (a.name() != null) throw error(a.at(), proc, "WaitTime \\" + a.name() + " is not supported");
-        if (args.size() != 1) throw error(head, proc, "WaitTime takes one time in seconds");
-        double s = number(args.get(0).value(), proc + ": WaitTime");
-        if (s < 0) throw error(args.get(0).at(), proc, "WaitTime needs a time >= 0");
-        return new WaitTime(s);
+    private boolean isUntypedData(String name) {
+        String t = declaredTypes.get(name.toLowerCase(Locale.ROOT));
+        return t != null && !declaredValues.containsKey(name.toLowerCase(Locale.ROOT));
     }
 
     @SuppressWarnings("unchecked")
-    private Statement move(Move.Kind kind, Token head, List<Arg> args, String proc) {
+    private Statement move(Move.Kind kind, RapidAst.Call c, String proc) {
         int base = kind == Move.Kind.MOVE_C ? 1 : 0; // MoveC has CirPoint before ToPoint
         int toIdx = base, speedIdx = base + 1, zoneIdx = base + 2, toolIdx = base + 3;
-        List<Arg> pos = new ArrayList<>();
-        for (Arg a : args) if (a.name() == null) pos.add(a);
+        List<RapidAst.Arg> pos = new ArrayList<>();
+        for (RapidAst.Arg a : c.args()) if (a.kind() == RapidAst.ArgKind.POSITIONAL) pos.add(a);
         if (pos.size() != toolIdx + 1) {
             String sig = kind == Move.Kind.MOVE_C ? "CirPoint, ToPoint, Speed, Zone, Tool" : "ToPoint, Speed, Zone, Tool";
-            throw error(head, proc, kind.rapidName() + " needs " + (toolIdx + 1) + " arguments (" + sig + "), found " + pos.size());
+            throw errAt(c, proc, kind.rapidName() + " needs " + (toolIdx + 1) + " arguments (" + sig + "), found " + pos.size());
         }
         boolean conc = false, noEOffs = false;
         OptionalDouble v = OptionalDouble.empty(), t = OptionalDouble.empty(), z = OptionalDouble.empty();
         Optional<String> wobj = Optional.empty();
-        for (Arg a : args) {
-            if (a.name() == null) continue;
+        int positional = 0;
+        for (RapidAst.Arg a : c.args()) {
+            if (a.kind() == RapidAst.ArgKind.POSITIONAL) { positional++; continue; }
             String n = a.name().toUpperCase(Locale.ROOT);
             int want = switch (n) {
                 case "CONC" -> 0;
@@ -331,11 +277,11 @@ public final class RapidParser {
                 case "WOBJ" -> toolIdx + 1;
                 default -> -1;
             };
-            if (want < 0) throw error(a.at(), proc, "optional argument \\" + a.name() + " of " + kind.rapidName() + " is not supported");
-            if (a.position() != want) throw error(a.at(), proc, "\\" + a.name() + " is not in its place in " + kind.rapidName());
+            if (want < 0) throw errAt(a, proc, "optional argument \\" + a.name() + " of " + kind.rapidName() + " is not supported");
+            if (positional != want) throw errAt(a, proc, "\\" + a.name() + " is not in its place in " + kind.rapidName());
             boolean isSwitch = n.equals("CONC") || n.equals("NOEOFFS");
             if (isSwitch != (a.value() == null))
-                throw error(a.at(), proc, "\\" + a.name() + (isSwitch ? " takes no value" : " needs a value (\\" + a.name() + ":=...)"));
+                throw errAt(a, proc, "\\" + a.name() + (isSwitch ? " takes no value" : " needs a value (\\" + a.name() + ":=...)"));
             switch (n) {
                 case "CONC" -> conc = true;
                 case "NOEOFFS" -> noEOffs = true;
@@ -346,7 +292,7 @@ public final class RapidParser {
                 default -> throw new IllegalStateException(n);
             }
         }
-        if (v.isPresent() && t.isPresent()) throw error(head, proc, "\\V and \\T exclude each other");
+        if (v.isPresent() && t.isPresent()) throw errAt(c, proc, "\\V and \\T exclude each other");
         Optional<Ref<RobTarget>> circ = Optional.empty();
         if (kind == Move.Kind.MOVE_C) circ = Optional.of((Ref<RobTarget>) (Ref<?>) targetRef(pos.get(0), "robtarget", proc));
         Ref<? extends RapidValue> to = targetRef(pos.get(toIdx), kind == Move.Kind.MOVE_ABS_J ? "jointtarget" : "robtarget", proc);
@@ -356,39 +302,39 @@ public final class RapidParser {
         return new Move(kind, conc, circ, to, noEOffs, speed, v, t, zone, z, tool, wobj);
     }
 
-    private double positive(Arg a, String proc, String what, double x) {
-        if (!(x > 0)) throw error(a.at(), proc, what + " must be > 0");
+    private double positive(RapidAst.Arg a, String proc, String what, double x) {
+        if (!(x > 0)) throw errAt(a, proc, what + " must be > 0");
         return x;
     }
 
-    private double nonNegative(Arg a, String proc, String what, double x) {
-        if (!(x >= 0)) throw error(a.at(), proc, what + " must be >= 0");
+    private double nonNegative(RapidAst.Arg a, String proc, String what, double x) {
+        if (!(x >= 0)) throw errAt(a, proc, what + " must be >= 0");
         return x;
     }
 
     /** A data argument: a name (type-checked when this module declares it) or an inline aggregate. */
-    private Ref<?> targetRef(Arg a, String type, String proc) {
+    private Ref<?> targetRef(RapidAst.Arg a, String type, String proc) {
         Expr e = a.value();
-        if (e instanceof NameE n) {
+        if (e instanceof RapidAst.Name n) {
             checkDeclaredType(n, type, proc);
             return Ref.to(n.name());
         }
-        if (e instanceof AggE) return Ref.inline(convert(type, a.at(), e, proc + ": inline " + type));
-        throw error(a.at(), proc, "expected a " + type + " name or [...] value, found " + e.describe());
+        if (e instanceof RapidAst.Aggregate) return Ref.inline(convert(type, e, proc + ": inline " + type));
+        throw errAt(a, proc, "expected a " + type + " name or [...] value, found " + describe(e));
     }
 
-    private String name(Arg a, String proc, String type) {
-        if (a.value() instanceof NameE n) {
+    private String name(RapidAst.Arg a, String proc, String type) {
+        if (a.value() instanceof RapidAst.Name n) {
             checkDeclaredType(n, type, proc);
             return n.name();
         }
-        throw error(a.at(), proc, "expected the name of a " + type + ", found " + (a.value() == null ? "nothing" : a.value().describe()));
+        throw errAt(a, proc, "expected the name of a " + type + ", found " + (a.value() == null ? "nothing" : describe(a.value())));
     }
 
-    private void checkDeclaredType(NameE n, String type, String proc) {
+    private void checkDeclaredType(RapidAst.Name n, String type, String proc) {
         String declared = declaredTypes.get(n.name().toLowerCase(Locale.ROOT));
         if (declared != null && !declared.equals(type))
-            throw new InputException(file, n.line(), n.col(), proc, "'" + n.name() + "' is a " + declared + ", a " + type + " is needed here");
+            throw err(n, proc, "'" + n.name() + "' is a " + declared + ", a " + type + " is needed here");
     }
 
     /** References to data declared further down the file are checked once everything is read. */
@@ -412,95 +358,23 @@ public final class RapidParser {
 
     private void checkName(String n, String type, SourcePos at, String proc) {
         String declared = declaredTypes.get(n.toLowerCase(Locale.ROOT));
-        if (declared != null && !declared.equals(type))
+        if (declared != null && !declared.equals(type) && at != null)
             throw new InputException(file, at.line(), at.column(), proc, "'" + n + "' is a " + declared + ", a " + type + " is needed here");
     }
 
-    // ---------------------------------------------------------------- expressions (literals only)
-
-    private sealed interface Expr permits NumE, BoolE, StrE, NameE, AggE {
-        int line();
-        int col();
-        String describe();
-    }
-
-    private record NumE(double value, int line, int col) implements Expr {
-        public String describe() { return "number " + value; }
-    }
-
-    private record BoolE(boolean value, int line, int col) implements Expr {
-        public String describe() { return value ? "TRUE" : "FALSE"; }
-    }
-
-    private record StrE(String raw, int line, int col) implements Expr {
-        public String describe() { return "string \"" + raw + "\""; }
-    }
-
-    private record NameE(String name, int line, int col) implements Expr {
-        public String describe() { return "name " + name; }
-    }
-
-    private record AggE(List<Expr> items, int line, int col) implements Expr {
-        public String describe() { return "aggregate of " + items.size(); }
-    }
-
-    private Expr expr() {
-        Expr e = primary();
-        Token t = peek();
-        if (t.is("+") || t.is("-") || t.is("*") || t.is("/") || t.isWord("DIV") || t.isWord("MOD")
-                || t.is("=") || t.is("<") || t.is(">") || t.is("<=") || t.is(">=") || t.is("<>")
-                || t.isWord("AND") || t.isWord("OR") || t.isWord("XOR"))
-            throw error(t, null, "expressions with operators are not supported (only literal values and names)");
-        return e;
-    }
-
-    private Expr primary() {
-        Token t = next();
-        if (t.is("-") || t.is("+")) {
-            Token n = next();
-            if (n.kind() != Token.Kind.NUMBER) throw error(n, null, "expected a number after '" + t.text() + "', found " + n.describe());
-            double d = parseNumber(n);
-            return new NumE(t.is("-") ? -d : d, t.line(), t.column());
-        }
-        switch (t.kind()) {
-            case NUMBER: return new NumE(parseNumber(t), t.line(), t.column());
-            case STRING: return new StrE(t.text(), t.line(), t.column());
-            case IDENT:
-                if (t.isWord("TRUE")) return new BoolE(true, t.line(), t.column());
-                if (t.isWord("FALSE")) return new BoolE(false, t.line(), t.column());
-                if (RapidNames.isReserved(t.text())) throw error(t, null, "expected a value, found keyword " + t.text());
-                if (peek().is("(")) throw error(t, null, "function call " + t.text() + "(...) is not supported (only literal values and names)");
-                if (peek().is(".") || peek().is("{")) throw error(peek(), null, "components and array elements are not supported");
-                return new NameE(t.text(), t.line(), t.column());
-            case PUNCT:
-                if (t.is("[")) {
-                    List<Expr> items = new ArrayList<>();
-                    if (peek().is("]")) throw error(peek(), null, "empty aggregate");
-                    do { items.add(expr()); } while (accept(","));
-                    expect("]");
-                    return new AggE(items, t.line(), t.column());
-                }
-                // fall through
-            default:
-                throw error(t, null, "expected a value, found " + t.describe());
-        }
-    }
-
-    private double parseNumber(Token t) {
-        double d;
-        try {
-            d = Double.parseDouble(t.text());
-        } catch (NumberFormatException e) {
-            throw error(t, null, "bad number '" + t.text() + "'");
-        }
-        if (!Double.isFinite(d)) throw error(t, null, "number out of range '" + t.text() + "'");
-        return d;
+    private static String describe(Expr e) {
+        if (e instanceof RapidAst.Num n) return "number " + n.text();
+        if (e instanceof RapidAst.Bool b) return b.value() ? "TRUE" : "FALSE";
+        if (e instanceof RapidAst.Str s) return "string \"" + s.raw() + "\"";
+        if (e instanceof RapidAst.Name n) return "name " + n.name();
+        if (e instanceof RapidAst.Aggregate a) return "aggregate of " + a.items().size();
+        if (e instanceof RapidAst.FuncCall f) return "function call " + f.name() + "(...)";
+        return "expression " + RapidAstWriter.expr(e);
     }
 
     // ---------------------------------------------------------------- values
 
-    private RapidValue convert(String type, Token typeTok, Expr e, String field) {
-        checkType(type, typeTok, field);
+    private RapidValue convert(String type, Expr e, String field) {
         try {
             return convertChecked(type, e, field);
         } catch (IllegalArgumentException bad) {
@@ -511,7 +385,7 @@ public final class RapidParser {
     }
 
     private RapidValue convertChecked(String type, Expr e, String field) {
-        if (e instanceof NameE n && !type.equals("num") && !type.equals("bool") && !type.equals("string")) {
+        if (e instanceof RapidAst.Name n && !type.equals("num") && !type.equals("bool") && !type.equals("string")) {
             // "CONST zonedata zCorner := z10;": the value of predefined or earlier declared data.
             RapidValue v = declaredValues.get(n.name().toLowerCase(Locale.ROOT));
             if (v == null) v = predefinedValue(n.name());
@@ -536,14 +410,16 @@ public final class RapidParser {
     }
 
     private List<Expr> agg(Expr e, int n, String field) {
-        if (!(e instanceof AggE a)) throw err(e, field, "expected [...] with " + n + " components, found " + e.describe());
+        if (!(e instanceof RapidAst.Aggregate a)) throw err(e, field, "expected [...] with " + n + " components, found " + describe(e));
         if (a.items().size() != n) throw err(e, field, "expected " + n + " components, found " + a.items().size());
         return a.items();
     }
 
     private double number(Expr e, String field) {
-        if (e instanceof NumE n) return n.value();
-        throw err(e, field, "expected a number, found " + e.describe());
+        if (e instanceof RapidAst.Num n) return n.value();
+        if (e instanceof RapidAst.Unary u && u.operand() instanceof RapidAst.Num n && (u.op().equals("-") || u.op().equals("+")))
+            return u.op().equals("-") ? -n.value() : n.value();
+        throw err(e, field, "expected a number, found " + describe(e));
     }
 
     private int integer(Expr e, String field) {
@@ -553,17 +429,17 @@ public final class RapidParser {
     }
 
     private boolean bool(Expr e, String field) {
-        if (e instanceof BoolE b) return b.value();
-        throw err(e, field, "expected TRUE or FALSE, found " + e.describe());
+        if (e instanceof RapidAst.Bool b) return b.value();
+        throw err(e, field, "expected TRUE or FALSE, found " + describe(e));
     }
 
     private String string(Expr e, String field) {
-        if (e instanceof StrE s) return unescape(s, field);
-        throw err(e, field, "expected a string, found " + e.describe());
+        if (e instanceof RapidAst.Str s) return unescape(s, field);
+        throw err(e, field, "expected a string, found " + describe(e));
     }
 
     /** RAPID string escapes: "" is a quote, backslash-backslash a backslash, backslash hh a character code. */
-    private String unescape(StrE s, String field) {
+    private String unescape(RapidAst.Str s, String field) {
         String r = s.raw();
         StringBuilder b = new StringBuilder();
         for (int k = 0; k < r.length(); k++) {
@@ -683,47 +559,12 @@ public final class RapidParser {
         return ZoneData.ofRapid(bool(c.get(0), field + ".finep"), v[0], v[1], v[2], v[3], v[4], v[5]);
     }
 
-    // ---------------------------------------------------------------- tokens
+    // ---------------------------------------------------------------- errors
 
-    private Token peek() { return toks.get(i); }
-
-    private Token peekAt(int k) { return toks.get(Math.min(i + k, toks.size() - 1)); }
-
-    /** The next token that is not a comment (comments are only statements at line starts). */
-    private Token next() {
-        Token t = toks.get(i);
-        if (t.kind() == Token.Kind.COMMENT) throw error(t, null, "comment inside an instruction or declaration is not supported");
-        if (t.kind() != Token.Kind.EOF) i++;
-        return t;
+    private InputException err(Object node, String field, String problem) {
+        SourcePos p = pos(node);
+        return new InputException(file, p.line(), p.column(), field, problem);
     }
 
-    private boolean accept(String punct) {
-        if (peek().is(punct)) { i++; return true; }
-        return false;
-    }
-
-    private void expect(String punct) {
-        Token t = next();
-        if (!t.is(punct)) throw error(t, null, "expected '" + punct + "', found " + t.describe());
-    }
-
-    private void expectWord(String word) {
-        Token t = next();
-        if (!t.isWord(word)) throw error(t, null, "expected " + word + ", found " + t.describe());
-    }
-
-    private String ident(String what) {
-        Token t = next();
-        if (t.kind() != Token.Kind.IDENT) throw error(t, what, "expected a " + what + ", found " + t.describe());
-        if (RapidNames.isReserved(t.text())) throw error(t, what, "'" + t.text() + "' is a reserved word");
-        return t.text();
-    }
-
-    private InputException error(Token t, String field, String problem) {
-        return new InputException(file, t.line(), t.column(), field, problem);
-    }
-
-    private InputException err(Expr e, String field, String problem) {
-        return new InputException(file, e.line(), e.col(), field, problem);
-    }
+    private InputException errAt(Object node, String field, String problem) { return err(node, field, problem); }
 }

@@ -10,6 +10,8 @@ import java.util.Map;
 import java.util.Set;
 import org.robopro.kinematics.Units;
 import org.robopro.models.Vec3;
+import org.robopro.programs.AstItem;
+import org.robopro.programs.AstStatement;
 import org.robopro.programs.Comment;
 import org.robopro.programs.Declaration;
 import org.robopro.programs.ExtJoints;
@@ -90,6 +92,10 @@ public final class RapidWriter {
                 if (afterDecl || b.charAt(b.length() - 2) != '\n') b.append('\n');
                 procedure(b, p);
                 afterDecl = true;
+            } else if (item instanceof AstItem a) {
+                if (a.item() instanceof RapidAst.Routine && (afterDecl || b.charAt(b.length() - 2) != '\n')) b.append('\n');
+                RapidAstWriter.item(b, a.item(), IND);
+                afterDecl = !(a.item() instanceof RapidAst.CommentLine);
             }
         }
         b.append("ENDMODULE\n");
@@ -98,7 +104,10 @@ public final class RapidWriter {
 
     private void procedure(StringBuilder b, Procedure p) {
         b.append(IND).append(p.local() ? "LOCAL " : "").append("PROC ").append(name(p.name())).append("()\n");
-        for (Statement s : p.body()) b.append(IND).append(IND).append(statement(s)).append('\n');
+        for (Statement s : p.body()) {
+            if (s instanceof AstStatement a) RapidAstWriter.stmt(b, a.stmt(), IND + IND);
+            else b.append(IND).append(IND).append(statement(s)).append('\n');
+        }
         b.append(IND).append("ENDPROC\n");
     }
 
@@ -119,6 +128,11 @@ public final class RapidWriter {
         Map<String, String> declared = new LinkedHashMap<>();
         for (ModuleItem it : m.items()) {
             String n = it instanceof Declaration d ? d.name() : it instanceof Procedure p ? p.name() : null;
+            if (it instanceof AstItem a && a.name() != null) {
+                // Written as read: its name and the names inside it are kept.
+                used.add(a.name().toLowerCase(Locale.ROOT));
+                declared.putIfAbsent(a.name().toLowerCase(Locale.ROOT), a.name());
+            }
             if (n == null) continue;
             String key = n.toLowerCase(Locale.ROOT);
             if (declared.containsKey(key)) {

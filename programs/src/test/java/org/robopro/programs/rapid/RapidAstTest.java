@@ -1,0 +1,128 @@
+package org.robopro.programs.rapid;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.robopro.programs.AstItem;
+import org.robopro.programs.Declaration;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.rapid.RapidAst.Expr;
+
+class RapidAstTest {
+
+    @Test
+    void parseWriteParse_fixtures_sameTree() {
+        for (String f : List.of("PickPlace.mod", "Palletize.mod")) {
+            RapidAst.Module a = RapidParser.parseAst(RapidParserTest.fixture(f), f).module();
+            String text = RapidAstWriter.write(a);
+            RapidAst.Module b = RapidParser.parseAst(text, "again.mod").module();
+            assertEquals(a, b, f);
+            assertEquals(text, RapidAstWriter.write(b), f);
+        }
+    }
+
+    @Test
+    void parse_palletize_typedWhereModelledAndTreeElsewhere() {
+        RapidModule m = RapidParser.parse(RapidParserTest.fixture("Palletize.mod"), "Palletize.mod");
+        assertTrue(m.declaration("pBase").isPresent(), "literal robtarget is typed");
+        assertTrue(m.declaration("pNow").isEmpty(), "robtarget without value stays a tree");
+        assertEquals(List.of("main"), m.procedures().stream().map(p -> p.name()).toList());
+        long trees = m.items().stream().filter(i -> i instanceof AstItem).count();
+        assertEquals(10, trees, "RECORD, ALIAS, 6 data, place, area, onStop minus typed ones");
+        assertEquals(Declaration.Storage.CONST, m.declaration("nMax").orElseThrow().storage());
+        String out = RapidWriter.export(m).text();
+        assertEquals(out, RapidWriter.export(RapidParser.parse(out, "out.mod")).text());
+    }
+
+    @Test
+    void parseWriteParse_randomExpressions_sameTree() {
+        Random rnd = new Random(42);
+        for (int n = 0; n < 2000; n++) {
+            Expr e = randomExpr(rnd, 4);
+            String text = "MODULE M\n  VAR num x:=" + RapidAstWriter.expr(e) + ";\nENDMODULE\n";
+            RapidAst.DataDecl d = (RapidAst.DataDecl) RapidParser.parseAst(text, "r.mod").module().items().get(0);
+            assertEquals(e, d.init(), text);
+        }
+    }
+
+    @Test
+    void parseWriteParse_randomModules_sameTree() {
+        for (long seed = 1; seed <= 60; seed++) {
+            Random rnd = new Random(seed);
+            List<RapidAst.Item> items = new ArrayList<>();
+            items.add(new RapidAst.DataDecl(Declaration.Scope.LOCAL, Declaration.Storage.VAR, "num", "a", List.of(new RapidAst.Num("3")), null));
+            items.add(new RapidAst.RecordDecl(false, "rec", List.of(new RapidAst.Field("num", "x"), new RapidAst.CommentLine(" c"))));
+            List<RapidAst.Stmt> body = new ArrayList<>();
+            for (int k = 0; k < 6; k++) body.add(randomStmt(rnd, 3));
+            items.add(new RapidAst.Routine(rnd.nextBoolean(), RapidAst.RoutineKind.PROC, null, "p" + seed,
+                    List.of(new RapidAst.Param(false, List.of(new RapidAst.ParamAlt("INOUT", "num", "n", 0))),
+                            new RapidAst.Param(true, List.of(new RapidAst.ParamAlt(null, "switch", "s", 0), new RapidAst.ParamAlt(null, "num", "t", 1)))),
+                    body, null, rnd.nextBoolean() ? List.of(new RapidAst.Name("ERR_X")) : null, List.of(new RapidAst.Retry()), List.of()));
+            RapidAst.Module m = new RapidAst.Module("R" + seed, List.of("SYSMODULE"), items);
+            String text = RapidAstWriter.write(m);
+            assertEquals(m, RapidParser.parseAst(text, "r.mod").module(), text);
+        }
+    }
+
+    static RapidAst.Stmt randomStmt(Random rnd, int depth) {
+        int k = depth <= 0 ? rnd.nextInt(4) : rnd.nextInt(9);
+        return switch (k) {
+            case 0 -> new RapidAst.Assign(new RapidAst.Component(new RapidAst.Index(new RapidAst.Name("a"), List.of(randomExpr(rnd, 1))), "x"), randomExpr(rnd, 3));
+            case 1 -> new RapidAst.Call("MoveL", null, List.of(new RapidAst.Arg(RapidAst.ArgKind.SWITCH, "Conc", null),
+                    RapidAst.Arg.positional(new RapidAst.FuncCall("Offs", List.of(RapidAst.Arg.positional(new RapidAst.Name("p")),
+                            RapidAst.Arg.positional(randomExpr(rnd, 2))))), RapidAst.Arg.positional(new RapidAst.Name("v100")),
+                    new RapidAst.Arg(RapidAst.ArgKind.OPTIONAL, "V", new RapidAst.Num("80")),
+                    new RapidAst.Arg(RapidAst.ArgKind.NAMED, "Zone", new RapidAst.Name("z10")),
+                    new RapidAst.Arg(RapidAst.ArgKind.CONDITIONAL, "WObj", new RapidAst.Name("w"))));
+            case 2 -> new RapidAst.CommentLine(" note " + rnd.nextInt(9));
+            case 3 -> new RapidAst.Call(null, new RapidAst.Binary("+", new RapidAst.Str("proc"), new RapidAst.Name("n")), List.of());
+            case 4 -> new RapidAst.If(randomExpr(rnd, 2), stmts(rnd, depth), List.of(new RapidAst.ElseIf(randomExpr(rnd, 2), stmts(rnd, depth))),
+                    rnd.nextBoolean() ? stmts(rnd, depth) : null);
+            case 5 -> new RapidAst.While(randomExpr(rnd, 2), stmts(rnd, depth));
+            case 6 -> new RapidAst.For("i", randomExpr(rnd, 1), randomExpr(rnd, 1), rnd.nextBoolean() ? null : new RapidAst.Num("2"), stmts(rnd, depth));
+            case 7 -> new RapidAst.Test(randomExpr(rnd, 1), List.of(new RapidAst.Case(List.of(new RapidAst.Num("1"), new RapidAst.Num("2")), stmts(rnd, depth))),
+                    rnd.nextBoolean() ? stmts(rnd, depth) : null);
+            default -> new RapidAst.CompactIf(randomExpr(rnd, 2), rnd.nextBoolean() ? new RapidAst.Goto("l1") : new RapidAst.Return(null));
+        };
+    }
+
+    static List<RapidAst.Stmt> stmts(Random rnd, int depth) {
+        List<RapidAst.Stmt> l = new ArrayList<>();
+        int n = rnd.nextInt(3);
+        for (int k = 0; k < n; k++) l.add(randomStmt(rnd, depth - 1));
+        if (rnd.nextInt(4) == 0) l.add(new RapidAst.Label("l1"));
+        return l;
+    }
+
+    static final String[] OPS = {"OR", "XOR", "AND", "=", "<>", "<", ">", "<=", ">=", "+", "-", "*", "/", "DIV", "MOD"};
+
+    static Expr randomExpr(Random rnd, int depth) {
+        int k = depth <= 0 ? rnd.nextInt(5) : rnd.nextInt(10);
+        return switch (k) {
+            case 0 -> new RapidAst.Num(List.of("1", "2.5", "0x1F", "1E+09", ".5", "0b101", "3E-07").get(rnd.nextInt(7)));
+            case 1 -> new RapidAst.Name(List.of("a", "b", "nCount").get(rnd.nextInt(3)));
+            case 2 -> new RapidAst.Str(List.of("", "x\\22y", "a\\\\b").get(rnd.nextInt(3)));
+            case 3 -> new RapidAst.Bool(rnd.nextBoolean());
+            case 4 -> new RapidAst.Component(new RapidAst.Name("p"), "trans");
+            case 5 -> new RapidAst.Unary(List.of("-", "+", "NOT").get(rnd.nextInt(3)), randomExpr(rnd, depth - 1));
+            case 6 -> new RapidAst.Aggregate(List.of(randomExpr(rnd, depth - 1), randomExpr(rnd, depth - 1)));
+            case 7 -> new RapidAst.FuncCall("F", List.of(RapidAst.Arg.positional(randomExpr(rnd, depth - 1)),
+                    new RapidAst.Arg(RapidAst.ArgKind.OPTIONAL, "D", randomExpr(rnd, depth - 1))));
+            default -> new RapidAst.Binary(OPS[rnd.nextInt(OPS.length)], randomExpr(rnd, depth - 1), randomExpr(rnd, depth - 1));
+        };
+    }
+
+    @Test
+    void parse_hexBinaryOctal_values() {
+        assertEquals(31, new RapidAst.Num("0x1F").value());
+        assertEquals(5, new RapidAst.Num("0b101").value());
+        assertEquals(15, new RapidAst.Num("0o17").value());
+        assertInstanceOf(RapidAst.Num.class, ((RapidAst.DataDecl) RapidParser.parseAst("MODULE M\n VAR num a:=0o17;\nENDMODULE", "m")
+                .module().items().get(0)).init());
+    }
+}

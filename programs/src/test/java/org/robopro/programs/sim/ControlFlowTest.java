@@ -1,0 +1,68 @@
+package org.robopro.programs.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.robopro.models.InputException;
+import org.robopro.models.Vec3;
+import org.robopro.programs.rapid.RapidParser;
+
+class ControlFlowTest {
+
+    static Simulation sim(String text, int max) {
+        return MotionInterpreter.of(RapidParser.parseDetailed(text, "c.mod")).withMaxStatements(max).simulate("main");
+    }
+
+    @Test
+    void simulate_palletFixture_movesAtGridPointsInOrder() {
+        String text;
+        try (java.io.InputStream in = ControlFlowTest.class.getResourceAsStream("/org/robopro/programs/rapid/Palletize.mod")) {
+            text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException(e);
+        }
+        Simulation s = MotionInterpreter.of(RapidParser.parseDetailed(text, "Palletize.mod")).simulate("main");
+        List<MoveStep> moves = s.steps().stream().filter(x -> x instanceof MoveStep).map(x -> (MoveStep) x).toList();
+        // home + 6 places x 3 moves + the final move of the TEST (nDone = 6, 6 MOD 2 = 0: CRobT then Offs)
+        assertEquals(1 + 18 + 1, moves.size());
+        // place 2,3: pBase + ((2-1)*50, (3-1)*40, 0) mm; tool z down, so the TCP is at that point.
+        Vec3 tcp = moves.get(1 + 5 * 3 + 1).baseTtcp().orElseThrow().position();
+        assertEquals(0, tcp.minus(new Vec3(0.650, -0.120, 0.100)).norm(), 1e-9);
+        // RelTool 0,0,-30 in a tool frame pointing down: 30 mm above.
+        Vec3 above = moves.get(1 + 5 * 3).baseTtcp().orElseThrow().position();
+        assertEquals(0, above.minus(new Vec3(0.650, -0.120, 0.130)).norm(), 1e-9);
+        // last: CRobT (the last place's RelTool target) lowered by -(50-10)*2 = -80 mm
+        Vec3 last = moves.get(moves.size() - 1).baseTtcp().orElseThrow().position();
+        assertEquals(0, last.minus(new Vec3(0.650, -0.120, 0.130 - 0.080)).norm(), 1e-9);
+        assertTrue(s.log().get(0).startsWith("TPWrite \"done 6\""), s.log().toString());
+    }
+
+    @Test
+    void simulate_whileTrue_stopsWithLoopPosition() {
+        String text = "MODULE M\n  PROC main()\n    WHILE TRUE DO\n      WaitTime 1;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n";
+        InputException e = assertThrows(InputException.class, () -> sim(text, 1000));
+        assertTrue(e.getMessage().contains("stopped after 1000 statements"), e.getMessage());
+        assertTrue(e.getMessage().contains("loop at 3:5"), e.getMessage());
+    }
+
+    @Test
+    void simulate_ioInstruction_notSimulatedWithPosition() {
+        String text = "MODULE M\n  PROC main()\n    MoveL Offs([[1,2,3],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],0,0,1), v100, z10, tool0;\n    SetDO do1, 1;\n  ENDPROC\nENDMODULE\n";
+        InputException e = assertThrows(InputException.class, () -> sim(text, 1000));
+        assertTrue(e.getMessage().contains("not simulated: SetDO at 4:5"), e.getMessage());
+        assertEquals(4, e.line());
+    }
+
+    @Test
+    void simulate_forStepAndProcArguments_countsAndInout() {
+        String text = "MODULE M\n  VAR num n:=0;\n  PROC main()\n    FOR i FROM 10 TO 1 STEP -3 DO\n      add2 n;\n    ENDFOR\n"
+                + "    IF n <> 8 RAISE;\n  ENDPROC\n  PROC add2(INOUT num x)\n    x := x + 2;\n  ENDPROC\nENDMODULE\n";
+        assertEquals(0, sim(text, 1000).steps().size());
+        String wrong = text.replace("n <> 8", "n <> 6");
+        InputException e = assertThrows(InputException.class, () -> sim(wrong, 1000));
+        assertTrue(e.getMessage().contains("not simulated: RAISE"), e.getMessage());
+    }
+}
