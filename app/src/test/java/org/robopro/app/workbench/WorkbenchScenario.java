@@ -349,6 +349,7 @@ public final class WorkbenchScenario {
         r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
         r.setProperty("controllerLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Controller:")).toList()));
 
+        List<Instruction> original = wb.model().program();
         // A program with MoveC: checked, downloaded and run on the simulated controller, which ends at the arc's end.
         Workbench.onEdt(() -> wb.model().setProgram(List.of(new Instruction(Instruction.Type.MOVEJ, "p10", 500, 10),
                 new Instruction(Instruction.Type.MOVEC, "p30", 200, 0, "p20"))));
@@ -373,6 +374,7 @@ public final class WorkbenchScenario {
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.CancellationException e) {
             r.setProperty("uploadCancelled", String.valueOf(wb.model().program().size()));
         }
+        Workbench.onEdt(() -> wb.model().setProgram(original));
         wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
     }
