@@ -126,6 +126,9 @@ public final class WorkbenchCommand implements Callable<Integer> {
 
     private long editTick = -1;
 
+    /** Targets of the benchmark program (a sphere and a triad each in 3D). */
+    static final int GRID = Integer.getInteger("robopro.benchmark.targets", 100);
+
     /**
      * A long program over targets on a 10 x 10 grid (±100 mm, ±150 mm) about the TCP at the ready
      * pose: MoveL between them, every fifth move a MoveC.
@@ -136,13 +139,13 @@ public final class WorkbenchCommand implements Callable<Integer> {
         double[] q = m.q();
         List<Instruction> p = new ArrayList<>();
         Workbench.onEdt(() -> {
-            for (int i = 0; i < 100; i++) {
-                org.robopro.kinematics.Pose t = org.robopro.kinematics.Pose.translation(0, -0.1 + 0.02 * (i % 10), -0.15 + 0.03 * (i / 10)).times(tcp);
+            for (int i = 0; i < GRID; i++) {
+                org.robopro.kinematics.Pose t = org.robopro.kinematics.Pose.translation(0, -0.1 + 0.02 * (i % 10), -0.15 + 0.3 * (i / 10) / Math.max(1, GRID / 10)).times(tcp);
                 m.putTarget(new Target(String.format(Locale.ROOT, "b%03d", i), t, q, m.kinematics().confOf(q)));
             }
             for (int i = 0; i < moves; i++) {
-                String to = String.format(Locale.ROOT, "b%03d", (i * 37) % 100);
-                if (i % 5 == 4) p.add(new Instruction(Instruction.Type.MOVEC, to, 200, 10, String.format(Locale.ROOT, "b%03d", (i * 37 + 11) % 100)));
+                String to = String.format(Locale.ROOT, "b%03d", (i * 37) % GRID);
+                if (i % 5 == 4) p.add(new Instruction(Instruction.Type.MOVEC, to, 200, 10, String.format(Locale.ROOT, "b%03d", (i * 37 + 11) % GRID)));
                 else p.add(new Instruction(i == 0 ? Instruction.Type.MOVEJ : Instruction.Type.MOVEL, to, 200, 10));
             }
             m.setProgram(p);
