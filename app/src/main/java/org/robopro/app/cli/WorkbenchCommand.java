@@ -2,6 +2,8 @@ package org.robopro.app.cli;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.Callable;
@@ -9,6 +11,8 @@ import java.util.concurrent.CountDownLatch;
 import javax.swing.JOptionPane;
 import org.robopro.app.workbench.ProjectStore;
 import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.model.Instruction;
+import org.robopro.app.workbench.model.Target;
 import org.robopro.models.InputException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -36,6 +40,11 @@ public final class WorkbenchCommand implements Callable<Integer> {
 
     @Option(names = "--benchmark-seconds", defaultValue = "6", description = "Measuring time of --benchmark (default ${DEFAULT-VALUE} s).")
     double benchmarkSeconds;
+
+    @Option(names = "--benchmark-moves", defaultValue = "0", paramLabel = "N",
+            description = "With --benchmark: a program of N MoveL/MoveC instructions, edited twice a second while the robot "
+                    + "moves, so the background path check runs during the measurement (default ${DEFAULT-VALUE}).")
+    int benchmarkMoves;
 
     @Option(names = "--first-frame-timeout", defaultValue = "20", paramLabel = "S",
             description = "Fail when no frame is drawn within S seconds (default ${DEFAULT-VALUE}).")
@@ -85,6 +94,8 @@ public final class WorkbenchCommand implements Callable<Integer> {
         double first = wb.secondsToFirstFrame();
         // Keep the robot moving so every frame re-poses the links, as when jogging or playing.
         double[] q0 = wb.model().q();
+        List<Instruction> program = benchmarkMoves > 0 ? longProgram(wb, benchmarkMoves) : List.of();
+        long checks0 = wb.app().pathChecker().checks();
         Thread.sleep(1500);
         long f0 = wb.app().frameCount();
         long t0 = System.nanoTime();
@@ -94,12 +105,52 @@ public final class WorkbenchCommand implements Callable<Integer> {
             double[] q = q0.clone();
             q[0] += Math.toRadians(30) * Math.sin(t);
             wb.model().setQ(q);
+            long tick = (long) (2 * t);
+            if (!program.isEmpty() && tick != editTick) {
+                // An edit twice a second (a speed change): each one starts a background path check.
+                editTick = tick;
+                List<Instruction> p = new ArrayList<>(program);
+                Instruction i = p.get((int) (tick % p.size()));
+                p.set((int) (tick % p.size()), new Instruction(i.type(), i.target(), 100 + 50 * (tick % 5), i.zoneMm(), i.via()));
+                Workbench.onEdt(() -> wb.model().setProgram(p));
+            }
             Thread.sleep(16); // a jog or playback update per 60 Hz frame
         }
         long frames = wb.app().frameCount() - f0;
         double secs = (System.nanoTime() - t0) / 1e9;
-        System.out.printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%n",
-                size, first, frames / secs, frames, secs);
+        System.out.printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%s%n",
+                size, first, frames / secs, frames, secs, program.isEmpty() ? ""
+                        : String.format(Locale.ROOT, "; program of %d moves, %d background path checks", program.size(),
+                        wb.app().pathChecker().checks() - checks0));
+    }
+
+    private long editTick = -1;
+
+    /** Targets of the benchmark program (a sphere and a triad each in 3D). */
+    static final int GRID = Integer.getInteger("robopro.benchmark.targets", 100);
+
+    /**
+     * A long program over targets on a 10 x 10 grid (±100 mm, ±150 mm) about the TCP at the ready
+     * pose: MoveL between them, every fifth move a MoveC.
+     */
+    private static List<Instruction> longProgram(Workbench wb, int moves) throws InterruptedException {
+        var m = wb.model();
+        org.robopro.kinematics.Pose tcp = m.worldTtcp();
+        double[] q = m.q();
+        List<Instruction> p = new ArrayList<>();
+        Workbench.onEdt(() -> {
+            for (int i = 0; i < GRID; i++) {
+                org.robopro.kinematics.Pose t = org.robopro.kinematics.Pose.translation(0, -0.1 + 0.02 * (i % 10), -0.15 + 0.3 * (i / 10) / Math.max(1, GRID / 10)).times(tcp);
+                m.putTarget(new Target(String.format(Locale.ROOT, "b%03d", i), t, q, m.kinematics().confOf(q)));
+            }
+            for (int i = 0; i < moves; i++) {
+                String to = String.format(Locale.ROOT, "b%03d", (i * 37) % GRID);
+                if (i % 5 == 4) p.add(new Instruction(Instruction.Type.MOVEC, to, 200, 10, String.format(Locale.ROOT, "b%03d", (i * 37 + 11) % GRID)));
+                else p.add(new Instruction(i == 0 ? Instruction.Type.MOVEJ : Instruction.Type.MOVEL, to, 200, 10));
+            }
+            m.setProgram(p);
+        });
+        return List.copyOf(p);
     }
 
     /** An autosave left by a crash: asks whether to open it instead. */

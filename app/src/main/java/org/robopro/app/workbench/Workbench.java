@@ -247,18 +247,21 @@ public final class Workbench {
     public String exportRapid(Path file, boolean overwrite) throws IOException {
         RapidModule module = ProgramModule.toRapid(model, moduleName(file));
         var cal = calibratedModel;
+        var ext = extendedModel;
         var nominal = model.kinematics().kinematicModel();
         if (cal != null && nominal.isPresent()) {
             var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
-                    org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
+                    ext != null && ext.hasEffects() ? extendedCompensator(nominal.get(), ext, compensationConditions)
+                            : org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
             module = out.module();
             double max = 0;
             for (var c : out.corrections()) {
                 max = Math.max(max, c.shiftM());
                 if (!"converged".equals(c.status())) log("Compensation: " + c);
             }
-            log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the calibrated model (largest shift %.3f mm)",
-                    out.corrections().size(), max * 1e3));
+            log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the %s (largest shift %.3f mm)",
+                    out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
+                    max * 1e3));
         }
         RapidExport ex = RapidWriter.export(module);
         AtomicFiles.writeString(file, ex.text(), overwrite);
@@ -367,18 +370,50 @@ public final class Workbench {
                 : "Download failed: " + rootMessage(e)));
     }
 
-    /** Uploads program {@code name} and makes it the workbench program (on the Swing thread). */
+    /** Uploads program {@code name} and makes its {@code main} (or its only procedure) the workbench program. */
     public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name) {
+        return uploadProgram(name, Workbench::defaultProcedure);
+    }
+
+    /** "main" when the module has it, else its first procedure. */
+    public static String defaultProcedure(List<String> procedures) {
+        for (String p : procedures) if (p.equalsIgnoreCase("main")) return p;
+        return procedures.isEmpty() ? "main" : procedures.get(0);
+    }
+
+    /** The procedures of a RAPID module, in file order. */
+    public static List<String> procedures(ParsedModule parsed) {
+        return parsed.module().procedures().stream().map(org.robopro.programs.Procedure::name).toList();
+    }
+
+    /**
+     * Uploads program {@code name} and makes the procedure {@code chooseProc} picks from the
+     * module's procedures (called on the Swing thread; null cancels and changes nothing) the
+     * workbench program. The procedure runs through the programs module's interpreter, so calls,
+     * loops, MoveC and Offs are flattened into the instructions it executes.
+     */
+    public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name,
+            java.util.function.Function<List<String>, String> chooseProc) {
         ControllerSession s = needController();
-        return s.upload(name).thenApply(text -> {
+        // Off the invoker's thread: choosing may wait for the user.
+        return s.upload(name).thenApplyAsync(text -> {
             ParsedModule parsed = RapidParser.parseDetailed(text, "controller:" + name);
-            ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
+            List<String> procs = procedures(parsed);
+            AtomicReference<String> proc = new AtomicReference<>();
+            onEdt(() -> proc.set(procs.size() == 1 ? procs.get(0) : chooseProc.apply(procs)));
+            if (proc.get() == null) throw new java.util.concurrent.CancellationException("no procedure chosen");
+            ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, proc.get());
             onEdt(() -> model.replaceProgram(imp));
             for (String n : imp.notes()) log("Upload: " + n);
-            log("Uploaded " + name + " (" + text.length() + " bytes): " + imp.targets().size() + " targets, "
+            log("Uploaded " + name + " (" + text.length() + " bytes), PROC " + proc.get() + ": " + imp.targets().size() + " targets, "
                     + imp.program().size() + " instructions");
             return imp;
-        }).whenComplete((imp, e) -> { if (e != null) log("Upload failed: " + rootMessage(e)); });
+        }, background).whenComplete((imp, e) -> { if (e != null) log("Upload failed: " + rootMessage(e)); });
+    }
+
+    /** The programs stored on the controller. */
+    public java.util.concurrent.CompletableFuture<List<org.robopro.comms.ProgramInfo>> controllerPrograms() {
+        return needController().programs();
     }
 
     /**
@@ -421,6 +456,30 @@ public final class Workbench {
     // ---- calibration ---------------------------------------------------------------------------
 
     private volatile org.robopro.kinematics.KinematicModel calibratedModel;
+    private volatile org.robopro.calibration.diagnosis.ExtendedModel extendedModel;
+    private volatile org.robopro.calibration.PoseConditions compensationConditions = org.robopro.calibration.PoseConditions.NONE;
+
+    /** The applied extended model (geometry plus the effects a diagnosis found), if any. */
+    public Optional<org.robopro.calibration.diagnosis.ExtendedModel> extendedModel() { return Optional.ofNullable(extendedModel); }
+
+    /**
+     * Conditions the program will run under, for compensation with an extended model
+     * (temperature °C, payload kg; NaN = unknown, which makes that effect contribute nothing).
+     */
+    public void setCompensationConditions(double tempC, double payloadKg) {
+        compensationConditions = new org.robopro.calibration.PoseConditions(null, Double.NaN, tempC, payloadKg);
+    }
+
+    /** The calibration module's Compensator with an extended model, per target and tool (as `robopro program compensate`). */
+    static org.robopro.programs.ProgramCompensation.TargetCompensator extendedCompensator(org.robopro.kinematics.KinematicModel nominal,
+            org.robopro.calibration.diagnosis.ExtendedModel ext, org.robopro.calibration.PoseConditions cond) {
+        return (target, tool, seed) -> {
+            var r = new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond).compensate(target, seed);
+            return new org.robopro.programs.ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
+                    r.status() == org.robopro.calibration.compensation.Compensator.Status.CONVERGED,
+                    r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
+        };
+    }
 
     /** The applied calibrated model (RAPID export is compensated with it), if any. */
     public Optional<org.robopro.kinematics.KinematicModel> calibratedModel() { return Optional.ofNullable(calibratedModel); }
@@ -468,12 +527,48 @@ public final class Workbench {
         prov.put("calibration-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", r.trainRmsM() * 1e3));
         org.robopro.models.RobotLibrary.write(r.calibrated().toDescription().withProvenance(prov), robotFile, overwrite);
         calibratedModel = r.calibrated();
+        extendedModel = null;
         model.setCalibrationReference(robotFile.toString());
         log("Applied the calibrated model " + robotFile + ": RAPID exports are compensated with it");
     }
 
+    /**
+     * Diagnoses the cell's robot from measurements (issue 4: geometric calibration, then the
+     * non-geometric effects one by one; blocking: run it off the UI thread). Throws
+     * CancellationException when {@code cancel} fires.
+     */
+    public org.robopro.calibration.diagnosis.Diagnosis diagnose(Measurements m, org.robopro.calibration.Cancellation cancel,
+                                                               org.robopro.calibration.Progress progress) {
+        var o = org.robopro.calibration.diagnosis.Diagnoser.Options.defaults().withCancel(cancel).withProgress(progress);
+        var d = org.robopro.calibration.diagnosis.Diagnoser.diagnose(model.robot(), m.train(), m.validate(), o);
+        StringBuilder found = new StringBuilder();
+        for (var f : d.effects()) found.append(found.length() == 0 ? "" : ", ").append(f.effect().label());
+        log(String.format(java.util.Locale.ROOT, "Diagnosed from %d poses: geometric RMS %.4f mm -> %.4f mm with %s", m.train().size(),
+                d.geometricTrainRmsM() * 1e3, d.finalTrainRmsM() * 1e3, found.length() == 0 ? "no effect found" : found));
+        return d;
+    }
+
+    /**
+     * Applies a diagnosis: writes its extended model (identified geometry plus an effects
+     * section, docs/robot-file.md; an existing file only when {@code overwrite}), records it as
+     * the project's calibration reference, and compensates RAPID exports with the calibration
+     * module's Compensator on the extended model from now on.
+     */
+    public void applyDiagnosis(org.robopro.calibration.diagnosis.Diagnosis d, Path robotFile, String source, boolean overwrite) {
+        java.util.Map<String, String> prov = new java.util.LinkedHashMap<>(model.robot().provenance());
+        prov.put("diagnosed-from", source);
+        prov.put("diagnosed-nominal", model.robot().name());
+        prov.put("diagnosis-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", d.finalTrainRmsM() * 1e3));
+        org.robopro.models.RobotLibrary.write(d.model().toDescription().withProvenance(prov), robotFile, overwrite);
+        calibratedModel = d.model().geometry();
+        extendedModel = d.model();
+        model.setCalibrationReference(robotFile.toString());
+        log("Applied the extended model " + robotFile + " (" + d.effects().size() + " effects): RAPID exports are compensated with it");
+    }
+
     public void clearCalibration() {
         calibratedModel = null;
+        extendedModel = null;
         log("Calibration no longer applied: RAPID exports are nominal");
     }
 
@@ -556,6 +651,7 @@ public final class Workbench {
      * frames showing the model's current state.
      */
     public BufferedImage captureWindow() throws InterruptedException {
+        awaitPathCheck();
         app.awaitFrames(4, 10_000);
         AtomicReference<BufferedImage> out = new AtomicReference<>();
         onEdt(() -> {
@@ -585,6 +681,18 @@ public final class Workbench {
         return out.get();
     }
 
+    /**
+     * Waits until the background path check has caught up with the model and the 3D view and
+     * the panels show it (for tests and screenshots; interactive use never waits).
+     */
+    public void awaitPathCheck() throws InterruptedException {
+        var r = app.pathChecker().awaitCurrent(60_000);
+        if (r == null) throw new IllegalStateException("the path check did not finish within 60 s");
+        long end = System.currentTimeMillis() + 10_000;
+        while (app.pathState().shownRequest() < r.request() && System.currentTimeMillis() < end) Thread.sleep(5);
+        onEdt(() -> { }); // the Swing side's invokeLater has run
+    }
+
     public void screenshot(Path png) throws IOException, InterruptedException {
         BufferedImage img = captureWindow();
         Path abs = png.toAbsolutePath();
@@ -597,6 +705,7 @@ public final class Workbench {
     /** Stops rendering, closes the window, removes the autosave of a saved project. */
     public void close() {
         if (autosave != null) autosave.stop();
+        app.pathChecker().close();
         disconnectNow();
         background.shutdownNow();
         try {

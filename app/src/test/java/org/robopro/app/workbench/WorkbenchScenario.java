@@ -3,6 +3,8 @@ package org.robopro.app.workbench;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.atomic.AtomicReference;
@@ -186,6 +188,7 @@ public final class WorkbenchScenario {
         r.setProperty("fps", String.valueOf(wb.app().fps()));
         controller(wb, out, r);
         calibration(wb, out, r);
+        diagnosis(wb, out, r);
         wizard(wb, out, r);
     }
 
@@ -252,6 +255,72 @@ public final class WorkbenchScenario {
     }
 
     /**
+     * Diagnosis in the calibration panel: a simulated IRB-2000 campaign with backlash injected on
+     * joint 2 (the diagnosis benchmark's case, approach directions recorded), Diagnose in the
+     * background, the finding shown in words, the extended model applied so the RAPID export is
+     * compensated with the Compensator on it.
+     */
+    static void diagnosis(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        var camp = org.robopro.calibration.diagnosis.ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
+        List<org.robopro.calibration.measurement.Measurement> rows = new ArrayList<>();
+        for (var m : camp.measurements().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.TRAIN));
+        for (var m : camp.validation().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.VALIDATE));
+        Path file = out.resolve("backlash-campaign.csv");
+        List<org.robopro.models.JointType> types = new ArrayList<>();
+        wb.model().robot().joints().forEach(j -> types.add(j.type()));
+        org.robopro.calibration.measurement.MeasurementWriter.write(camp.measurements().withRows(rows), types, file, true);
+        AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
+        AtomicReference<Boolean> ok = new AtomicReference<>();
+        Workbench.onEdt(() -> {
+            panel.set(frame.openCalibration());
+            panel.get().setBounds(frame.getX() + 420, frame.getY() + 60, 850, 650);
+            ok.set(panel.get().loadMeasurements(file));
+        });
+        var p = panel.get();
+        r.setProperty("diagLoaded", String.valueOf(ok.get()));
+        AtomicReference<java.util.concurrent.CompletableFuture<?>> f = new AtomicReference<>();
+        Workbench.onEdt(() -> { f.set(p.startDiagnosis()); p.cancel(); });
+        try {
+            f.get().get(60, java.util.concurrent.TimeUnit.SECONDS);
+            r.setProperty("diagCancelled", "finished before the cancel was seen");
+        } catch (java.util.concurrent.CancellationException e) {
+            r.setProperty("diagCancelled", e.getClass().getSimpleName());
+        } catch (java.util.concurrent.ExecutionException e) {
+            r.setProperty("diagCancelled", e.getCause().getClass().getSimpleName());
+        }
+        Workbench.onEdt(() -> f.set(p.startDiagnosis()));
+        f.get().get(180, java.util.concurrent.TimeUnit.SECONDS);
+        var d = p.diagnosis();
+        Workbench.onEdt(() -> {
+            r.setProperty("diagState", p.state());
+            r.setProperty("diagFindings", p.findingsText());
+            r.setProperty("diagProgress", String.valueOf(p.progressValue()));
+        });
+        r.setProperty("diagEffects", String.join(",", d.effects().stream().map(x -> x.effect().label()).toList()));
+        r.setProperty("diagGeometricValidateMm", String.valueOf(d.geometricValidateRmsM() * 1e3));
+        r.setProperty("diagFinalValidateMm", String.valueOf(d.finalValidateRmsM() * 1e3));
+        r.setProperty("diagFloorMm", String.valueOf(Math.sqrt(3) * d.sigmaM() * 1e3));
+        wb.screenshot(out.resolve("08-diagnosis.png"));
+        Path nominalMod = out.resolve("NominalD.mod"), compensatedMod = out.resolve("Extended.mod");
+        Files.deleteIfExists(nominalMod);
+        Files.deleteIfExists(compensatedMod);
+        wb.exportRapid(nominalMod, false);
+        Path extFile = out.resolve("irb2000-extended.robot.json");
+        Files.deleteIfExists(extFile);
+        Workbench.onEdt(() -> ok.set(p.apply(extFile, () -> false)));
+        r.setProperty("diagApplied", String.valueOf(ok.get()));
+        r.setProperty("diagExtendedEffects", String.valueOf(wb.extendedModel().map(x -> x.terms().size()).orElse(0)));
+        r.setProperty("diagFileHasEffects", String.valueOf(org.robopro.models.RobotLibrary.load(extFile.toString()).effects().size()));
+        wb.exportRapid(compensatedMod, false);
+        r.setProperty("diagCompensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("NominalD", "X")
+                .equals(Files.readString(compensatedMod).replace("Extended", "X"))));
+        r.setProperty("diagCompensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
+        Workbench.onEdt(() -> p.dispose());
+        wb.clearCalibration();
+    }
+
+    /**
      * Controller menu against the simulated controller: connect (starts controller-sim),
      * download, run, read the real robot's joints (ghost), upload, disconnect.
      */
@@ -279,6 +348,33 @@ public final class WorkbenchScenario {
         r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
         r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
         r.setProperty("controllerLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Controller:")).toList()));
+
+        List<Instruction> original = wb.model().program();
+        // A program with MoveC: checked, downloaded and run on the simulated controller, which ends at the arc's end.
+        Workbench.onEdt(() -> wb.model().setProgram(List.of(new Instruction(Instruction.Type.MOVEJ, "p10", 500, 10),
+                new Instruction(Instruction.Type.MOVEC, "p30", 200, 0, "p20"))));
+        r.setProperty("moveCCheckOk", String.valueOf(wb.checkProgram().ok()));
+        wb.downloadProgram().get(30, java.util.concurrent.TimeUnit.SECONDS);
+        var stc = wb.runProgram().get(60, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("moveCRunState", stc.state().name() + " " + stc);
+        Pose p30 = wb.model().target("p30").orElseThrow().worldTtcp();
+        r.setProperty("moveCGhostToP30Mm", String.valueOf(1000 * wb.model().worldTtcp(wb.model().ghostQ()).distanceTo(p30)));
+        // Upload lets the user choose the PROC: a module whose second procedure calls main twice.
+        String text = org.robopro.programs.rapid.RapidWriter.export(
+                org.robopro.app.workbench.model.ProgramModule.toRapid(wb.model(), "Twice")).text();
+        text = text.substring(0, text.lastIndexOf("ENDMODULE")) + "  PROC twice()\n    main;\n    main;\n  ENDPROC\nENDMODULE\n";
+        wb.controller().orElseThrow().download("Twice", text).get(30, java.util.concurrent.TimeUnit.SECONDS);
+        AtomicReference<List<String>> offered = new AtomicReference<>();
+        var twice = wb.uploadProgram("Twice", procs -> { offered.set(procs); return "twice"; }).get(30, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("uploadOfferedProcs", String.join(",", offered.get()));
+        r.setProperty("uploadTwiceProgram", String.join(";", twice.program().stream().map(i -> i.type() + " " + i.target()).toList()));
+        try {
+            wb.uploadProgram("Twice", procs -> null).get(30, java.util.concurrent.TimeUnit.SECONDS);
+            r.setProperty("uploadCancelled", "no");
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.CancellationException e) {
+            r.setProperty("uploadCancelled", String.valueOf(wb.model().program().size()));
+        }
+        Workbench.onEdt(() -> wb.model().setProgram(original));
         wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
     }

@@ -166,6 +166,12 @@ class WorkbenchScenarioTest {
         assertEquals("4", r.getProperty("uploadedInstructions"));
         assertEquals("4", r.getProperty("programAfterUpload"));
         assertTrue(r.getProperty("controllerLog").contains("succeeded"), r.getProperty("controllerLog"));
+        assertEquals("true", r.getProperty("moveCCheckOk"));
+        assertTrue(r.getProperty("moveCRunState").startsWith("IDLE"), r.getProperty("moveCRunState"));
+        assertEquals(0, Double.parseDouble(r.getProperty("moveCGhostToP30Mm")), 0.05, "MoveC ends at its ToPoint on the controller");
+        assertEquals("main,twice", r.getProperty("uploadOfferedProcs"));
+        assertEquals("MOVEJ p10;MOVEC p30;MOVEJ p10;MOVEC p30", r.getProperty("uploadTwiceProgram"), "PROC twice calls main twice");
+        assertEquals("4", r.getProperty("uploadCancelled"), "choosing no PROC leaves the program as it was");
         assertEquals("false", r.getProperty("ghostAfterDisconnect"));
         BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
         assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");
@@ -186,6 +192,26 @@ class WorkbenchScenarioTest {
         assertTrue(r.getProperty("calReference").endsWith("irb2000-calibrated.robot.json"), r.getProperty("calReference"));
         assertEquals("true", r.getProperty("compensatedDiffers"), "the applied calibration changes the exported targets");
         assertTrue(r.getProperty("compensationLog").startsWith("Compensated 3 targets"), r.getProperty("compensationLog"));
+
+        assertEquals("true", r.getProperty("diagLoaded"));
+        assertEquals("CancellationException", r.getProperty("diagCancelled"), "Cancel stops the background diagnosis");
+        assertEquals("done", r.getProperty("diagState"));
+        assertEquals("1000", r.getProperty("diagProgress"));
+        assertEquals("backlash j2", r.getProperty("diagEffects"), "the injected backlash on joint 2 is found, nothing else");
+        String words = r.getProperty("diagFindings");
+        for (String s : new String[] {"Backlash", "on joint 2", "b = ", " deg", "RMS: training", "validation", "Evidence:", "Outliers",
+                "What to record next"})
+            assertTrue(words.contains(s), "the findings lack '" + s + "':\n" + words);
+        double floor = Double.parseDouble(r.getProperty("diagFloorMm"));
+        assertTrue(Double.parseDouble(r.getProperty("diagGeometricValidateMm")) > 1.5 * floor, r.getProperty("diagGeometricValidateMm"));
+        assertTrue(Double.parseDouble(r.getProperty("diagFinalValidateMm")) < 1.2 * floor, r.getProperty("diagFinalValidateMm"));
+        assertEquals("true", r.getProperty("diagApplied"));
+        assertEquals("1", r.getProperty("diagExtendedEffects"));
+        assertEquals("1", r.getProperty("diagFileHasEffects"), "the extended robot file carries the effect");
+        assertEquals("true", r.getProperty("diagCompensatedDiffers"));
+        assertTrue(r.getProperty("diagCompensationLog").contains("extended model"), r.getProperty("diagCompensationLog"));
+        BufferedImage diag = ImageIO.read(out.resolve("08-diagnosis.png").toFile());
+        assertTrue(colourCount(diag) > 40, "08-diagnosis.png looks uniform");
 
         assertEquals("6", r.getProperty("wizardJoints"));
         assertEquals("true", r.getProperty("wizardFirstOk"));

@@ -336,8 +336,10 @@ public final class WorkbenchModel {
     }
 
     /** Every target's status, with targets the path check names in an error marked {@link TargetStatus#PATH_PROBLEM}. */
-    public java.util.Map<String, TargetStatus> statuses() {
-        ProgramRun r = programRun();
+    public java.util.Map<String, TargetStatus> statuses() { return statuses(programRun()); }
+
+    /** As {@link #statuses()}, with the path errors of a given run. */
+    public java.util.Map<String, TargetStatus> statuses(ProgramRun r) {
         java.util.Map<String, TargetStatus> out = new java.util.HashMap<>();
         for (Target t : targets()) {
             TargetStatus s = status(t);

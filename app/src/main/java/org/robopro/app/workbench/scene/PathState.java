@@ -11,6 +11,7 @@ import com.jme3.scene.shape.Sphere;
 import com.jme3.util.BufferUtils;
 import java.util.List;
 import java.util.Map;
+import org.robopro.app.workbench.model.PathChecker;
 import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.TargetStatus;
@@ -18,8 +19,9 @@ import org.robopro.app.workbench.model.WorkbenchModel;
 
 /**
  * Taught targets (a sphere and a TCP triad each: green when reachable, red when out of reach or
- * outside the joint limits) and the programmed TCP path as a polyline, recomputed when the
- * targets, program, robot, tool or placement change.
+ * outside the joint limits) and the programmed TCP path as a polyline. The path check runs on the
+ * {@link PathChecker}'s background thread; each finished check reaches this state through
+ * {@code app.enqueue(() -> show(result))}, so the render thread only builds the geometry.
  */
 public final class PathState extends BaseAppState {
     public static final int OK_RGB = 0x2E9E44;
@@ -28,9 +30,10 @@ public final class PathState extends BaseAppState {
     private final Node parent;
     private final Node node = new Node("path");
     private Shapes shapes;
-    private long builtVersion = -1;
     private volatile Map<String, TargetStatus> statuses = Map.of();
     private volatile ProgramRun plan;
+    private PathChecker.Result result;
+    private long shownRequest = -1;
 
     public PathState(WorkbenchModel model, Node parent) {
         this.model = model;
@@ -43,7 +46,20 @@ public final class PathState extends BaseAppState {
     /** The program run last drawn (may be null before the first frame). */
     public ProgramRun plan() { return plan; }
 
-    @Override protected void initialize(Application app) { shapes = new Shapes(app.getAssetManager()); }
+    @Override protected void initialize(Application app) {
+        shapes = new Shapes(app.getAssetManager());
+        if (result != null) rebuild(result);
+    }
+
+    /** Shows a finished path check (render thread; a check older than the one shown is ignored). */
+    public void show(PathChecker.Result r) {
+        if (r.request() <= shownRequest) return;
+        result = r;
+        if (isInitialized()) rebuild(r);
+    }
+
+    /** The request number of the check drawn last (-1 before the first). */
+    public long shownRequest() { return shownRequest; }
     @Override protected void cleanup(Application app) { }
     @Override protected void onEnable() { parent.attachChild(node); }
     @Override protected void onDisable() { node.removeFromParent(); }
@@ -51,14 +67,15 @@ public final class PathState extends BaseAppState {
     @Override
     public void update(float tpf) {
         node.setCullHint(model.showPath() ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
-        long v = model.version();
-        if (v == builtVersion) return;
-        builtVersion = v;
+    }
+
+    private void rebuild(PathChecker.Result r) {
+        shownRequest = r.request();
         node.detachAllChildren();
-        List<Target> targets = model.targets();
-        ProgramRun p = model.programRun();
+        List<Target> targets = r.targets();
+        ProgramRun p = r.run();
         plan = p;
-        Map<String, TargetStatus> st = model.statuses();
+        Map<String, TargetStatus> st = r.statuses();
         for (Target t : targets) {
             TargetStatus s = st.getOrDefault(t.name(), TargetStatus.REACHABLE);
             Node tn = new Node("target-" + t.name());
@@ -89,11 +106,13 @@ public final class PathState extends BaseAppState {
             node.attachChild(line);
         }
         // Straight dashes between consecutive program targets whose move failed, so the gap is visible.
-        List<org.robopro.app.workbench.model.Instruction> program = model.program();
+        List<org.robopro.app.workbench.model.Instruction> program = r.program();
+        Map<String, Target> byName = new java.util.HashMap<>();
+        for (Target t : targets) byName.put(t.name(), t);
         for (ProgramRun.Step s : p.steps()) {
             if (s.ok() || s.index() == 0 || s.index() >= program.size()) continue;
-            var from = model.target(program.get(s.index() - 1).target());
-            var to = model.target(s.instruction().target());
+            var from = java.util.Optional.ofNullable(byName.get(program.get(s.index() - 1).target()));
+            var to = java.util.Optional.ofNullable(byName.get(s.instruction().target()));
             if (from.isEmpty() || to.isEmpty()) continue;
             node.attachChild(shapes.beam("path-fail", Shapes.v(from.get().worldTtcp().position()),
                     Shapes.v(to.get().worldTtcp().position()), 0.004f, shapes.flat(BAD_RGB, false)));

@@ -19,6 +19,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
+import org.robopro.app.workbench.model.PathChecker;
 import org.robopro.app.workbench.model.WorkbenchModel;
 
 /**
@@ -39,7 +40,8 @@ public final class WorkbenchApp extends SimpleApplication {
     private final Node world = new Node("world");
     private final CameraState cameraState = new CameraState();
     private volatile PreviewState previewState;
-    private PathState pathState;
+    private final PathState pathState;
+    private final PathChecker pathChecker;
     private RobotState robotState;
     private volatile double fps;
     private long windowStartNanos;
@@ -50,7 +52,14 @@ public final class WorkbenchApp extends SimpleApplication {
         super(new AppState[0]); // no fly camera, no stats overlay: navigation is CameraState
         this.model = model;
         this.meshResolver = meshResolver;
+        this.pathState = new PathState(model, world);
+        // Path checks run off the render thread; the scene takes each result in its own update.
+        this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
+        pathChecker.addListener(r -> enqueue(() -> pathState.show(r)));
     }
+
+    /** Edits closer together than this cost one path check. */
+    public static final long PATH_CHECK_DEBOUNCE_MS = 120;
 
     /** Hands over the Swing panel the scene is drawn into; simpleInitApp waits for it. */
     public void setPanel(AwtPanel p) {
@@ -83,7 +92,6 @@ public final class WorkbenchApp extends SimpleApplication {
         };
         robotState = new RobotState(model, world, robotMeshes);
         RobotState ghostState = new RobotState(model, world, robotMeshes, true);
-        pathState = new PathState(model, world);
         previewState = new PreviewState(model, world);
         stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
                 pathState, previewState, ghostState, cameraState, new SelectionState(model, world, rootNode));
@@ -147,6 +155,7 @@ public final class WorkbenchApp extends SimpleApplication {
     public Throwable error() { return error.get(); }
     public CameraState camera() { return cameraState; }
     public PathState pathState() { return pathState; }
+    public PathChecker pathChecker() { return pathChecker; }
     public PreviewState previewState() { return previewState; }
     public RobotState robotState() { return robotState; }
     public Node world() { return world; }

@@ -27,10 +27,13 @@ import javax.swing.JPanel;
 import javax.swing.JProgressBar;
 import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.Workbench;
 import org.robopro.calibration.Cancellation;
+import org.robopro.calibration.diagnosis.Diagnosis;
+import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.models.InputException;
 
@@ -39,22 +42,31 @@ import org.robopro.models.InputException;
  * the calibration in the background with a progress bar and a Cancel button, then see the RMS
  * error before and after (training and validation poses), a plot of every pose's error with the
  * nominal and the calibrated model, and the effects found: the largest parameter corrections
- * and what the data could not identify. "Apply" writes the calibrated robot file and makes RAPID
- * export compensate targets with it.
+ * and what the data could not identify. "Diagnose" runs the diagnosis of issue 4 (geometric
+ * calibration, then the non-geometric effects: compliance, gear errors, backlash, thermal
+ * expansion, scale, coupling) in the background and shows each finding in words with its
+ * parameters, RMS improvement and evidence, the outliers, what could not be identified and what
+ * to record next. "Apply" writes the calibrated (or, after a diagnosis that found effects, the
+ * extended) robot file and makes RAPID export compensate targets with it.
  */
 public final class CalibrationPanel extends JDialog {
     private final Workbench wb;
     private final JLabel file = new JLabel("no measurement file");
     private final JProgressBar progress = new JProgressBar(0, 1000);
     private final JButton run = new JButton("Calibrate");
+    private final JButton diagnose = new JButton("Diagnose");
     private final JButton cancel = new JButton("Cancel");
     private final JButton apply = new JButton("Apply calibrated model...");
     private final JLabel rms = new JLabel(" ");
     private final JTextArea effects = new JTextArea(12, 60);
     private final ErrorPlot plot = new ErrorPlot();
+    private final JTextArea findings = new JTextArea(12, 60);
+    private final RmsChart rmsChart = new RmsChart();
+    private final JTabbedPane tabs = new JTabbedPane();
     private Workbench.Measurements measurements;
     private volatile Cancellation token;
     private volatile CalibrationResult result;
+    private volatile Diagnosis diagnosis;
     private volatile String state = "idle";
 
     public CalibrationPanel(WorkbenchFrame owner, Workbench wb) {
@@ -70,6 +82,9 @@ public final class CalibrationPanel extends JDialog {
         });
         run.setName("cal-run");
         run.addActionListener(e -> start());
+        diagnose.setName("cal-diagnose");
+        diagnose.setToolTipText("Calibrate, then test which non-geometric effects explain what is left (compliance, gear errors, backlash, ...)");
+        diagnose.addActionListener(e -> startDiagnosis());
         cancel.setName("cal-cancel");
         cancel.addActionListener(e -> cancel());
         apply.setName("cal-apply");
@@ -83,6 +98,7 @@ public final class CalibrationPanel extends JDialog {
         bar.add(progress, BorderLayout.CENTER);
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT, 4, 0));
         buttons.add(run);
+        buttons.add(diagnose);
         buttons.add(cancel);
         buttons.add(apply);
         bar.add(buttons, BorderLayout.EAST);
@@ -102,9 +118,23 @@ public final class CalibrationPanel extends JDialog {
         plot.setPreferredSize(new Dimension(600, 200));
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, es);
         split.setResizeWeight(0.5);
+        findings.setEditable(false);
+        findings.setLineWrap(true);
+        findings.setWrapStyleWord(true);
+        findings.setName("cal-findings");
+        findings.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        JScrollPane fs = new JScrollPane(findings);
+        fs.setBorder(BorderFactory.createTitledBorder("Findings, outliers, what the data cannot tell, what to record next"));
+        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, then after each effect (train / validation)"));
+        rmsChart.setPreferredSize(new Dimension(600, 150));
+        JSplitPane dsplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, rmsChart, fs);
+        dsplit.setResizeWeight(0.3);
+        tabs.addTab("Calibration", split);
+        tabs.addTab("Diagnosis", dsplit);
+        tabs.setName("cal-tabs");
         JPanel content = new JPanel(new BorderLayout());
         content.add(head, BorderLayout.NORTH);
-        content.add(split, BorderLayout.CENTER);
+        content.add(tabs, BorderLayout.CENTER);
         setContentPane(content);
         setSize(760, 600);
         updateButtons();
@@ -116,6 +146,8 @@ public final class CalibrationPanel extends JDialog {
     public CalibrationResult result() { return result; }
     public String rmsText() { return rms.getText(); }
     public String effectsText() { return effects.getText(); }
+    public Diagnosis diagnosis() { return diagnosis; }
+    public String findingsText() { return findings.getText(); }
     public int progressValue() { return progress.getValue(); }
 
     /** Loads a measurement file; errors (file, line, column, field) are shown, nothing changes. */
@@ -125,6 +157,7 @@ public final class CalibrationPanel extends JDialog {
             file.setText(String.format(Locale.ROOT, "%s: %d training poses, %s", f.getFileName(), measurements.train().size(),
                     measurements.validate() == null ? "no validation poses" : measurements.validate().size() + " validation poses"));
             result = null;
+            diagnosis = null;
             state = "loaded";
             updateButtons();
             return true;
@@ -136,36 +169,51 @@ public final class CalibrationPanel extends JDialog {
 
     /** Starts the calibration on a background thread; the future completes when it is done, failed or cancelled. */
     public CompletableFuture<CalibrationResult> start() {
+        return background("Calibration", (m, c, p) -> wb.calibrate(m, c, p), this::show);
+    }
+
+    /**
+     * Starts the diagnosis (geometric calibration, then the effects) on a background thread; the
+     * future completes when it is done, failed or cancelled.
+     */
+    public CompletableFuture<Diagnosis> startDiagnosis() {
+        return background("Diagnosis", (m, c, p) -> wb.diagnose(m, c, p), this::show);
+    }
+
+    private interface Job<T> { T run(Workbench.Measurements m, Cancellation c, org.robopro.calibration.Progress p); }
+
+    /** Runs a job off the Swing thread with the progress bar and Cancel; the result is shown on the Swing thread. */
+    private <T> CompletableFuture<T> background(String what, Job<T> job, java.util.function.Consumer<T> show) {
         if (measurements == null || "running".equals(state)) return CompletableFuture.failedFuture(new IllegalStateException("nothing to run"));
         Cancellation c = new Cancellation();
         token = c;
         state = "running";
         progress.setValue(0);
+        progress.setString(what.toLowerCase(Locale.ROOT));
         updateButtons();
         Workbench.Measurements m = measurements;
-        CompletableFuture<CalibrationResult> f = new CompletableFuture<>();
+        CompletableFuture<T> f = new CompletableFuture<>();
         Thread t = new Thread(() -> {
             try {
-                CalibrationResult r = wb.calibrate(m, c, (stage, fraction) -> SwingUtilities.invokeLater(() -> {
+                T r = job.run(m, c, (stage, fraction) -> SwingUtilities.invokeLater(() -> {
                     progress.setValue((int) Math.round(1000 * Math.max(0, Math.min(1, fraction))));
                     progress.setString(stage);
                 }));
-                SwingUtilities.invokeLater(() -> show(r));
-                f.complete(r);
+                // Complete after the panel shows the result, so callers see the finished panel.
+                SwingUtilities.invokeLater(() -> { show.accept(r); f.complete(r); });
             } catch (CancellationException e) {
-                SwingUtilities.invokeLater(() -> { state = "cancelled"; progress.setString("cancelled"); updateButtons(); });
-                wb.log("Calibration cancelled; nothing changed");
-                f.completeExceptionally(e);
+                SwingUtilities.invokeLater(() -> { state = "cancelled"; progress.setString("cancelled"); updateButtons(); f.completeExceptionally(e); });
+                wb.log(what + " cancelled; nothing changed");
             } catch (RuntimeException e) {
                 SwingUtilities.invokeLater(() -> {
                     state = "failed";
                     progress.setString("failed");
                     updateButtons();
-                    ((WorkbenchFrame) getOwner()).showError("Calibration failed", e.getMessage());
+                    f.completeExceptionally(e);
+                    ((WorkbenchFrame) getOwner()).showError(what + " failed", e.getMessage());
                 });
-                f.completeExceptionally(e);
             }
-        }, "calibration");
+        }, what.toLowerCase(Locale.ROOT));
         t.setDaemon(true);
         t.start();
         return f;
@@ -178,6 +226,7 @@ public final class CalibrationPanel extends JDialog {
 
     private void show(CalibrationResult r) {
         result = r;
+        diagnosis = null;
         state = "done";
         progress.setValue(1000);
         progress.setString("done");
@@ -190,7 +239,110 @@ public final class CalibrationPanel extends JDialog {
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
         all.addAll(r.validate());
         plot.set(all);
+        tabs.setSelectedIndex(0);
         updateButtons();
+    }
+
+    private void show(Diagnosis d) {
+        diagnosis = d;
+        show(d.geometric());
+        diagnosis = d;
+        apply.setText(d.effects().isEmpty() ? "Apply calibrated model..." : "Apply extended model...");
+        findings.setText(diagnosisReport(d));
+        findings.setCaretPosition(0);
+        rmsChart.set(d);
+        tabs.setSelectedIndex(1);
+    }
+
+    /** A diagnosis in plain words: findings (effect, joints, parameters with units, RMS, evidence), outliers, the rest. */
+    static String diagnosisReport(Diagnosis d) {
+        StringBuilder b = new StringBuilder();
+        boolean val = Double.isFinite(d.geometricValidateRmsM());
+        b.append(String.format(Locale.ROOT, "Geometric model: RMS %.4f mm on the training poses%s. Noise floor about %.4f mm (sigma %.4f mm per axis).%n",
+                d.geometricTrainRmsM() * 1e3, val ? String.format(Locale.ROOT, ", %.4f mm on the validation poses", d.geometricValidateRmsM() * 1e3) : "",
+                Math.sqrt(3) * d.sigmaM() * 1e3, d.sigmaM() * 1e3));
+        if (d.effects().isEmpty()) {
+            b.append(String.format(Locale.ROOT, "%nNo non-geometric effect found: %d candidates tested at a family-wise false-positive rate of %.3g. "
+                    + "The geometric calibration explains the data.%n", d.candidatesTested(), d.alpha()));
+        } else {
+            b.append(String.format(Locale.ROOT, "With the effects below: RMS %.4f mm%s.%n", d.finalTrainRmsM() * 1e3,
+                    val ? String.format(Locale.ROOT, ", validation %.4f mm", d.finalValidateRmsM() * 1e3) : ""));
+        }
+        double trainBefore = d.geometricTrainRmsM(), valBefore = d.geometricValidateRmsM();
+        int n = 1;
+        for (Diagnosis.Finding f : d.effects()) {
+            Effect e = f.effect();
+            b.append(String.format(Locale.ROOT, "%n%d. %s%s%n", n++, effectName(e), e.joints1().isEmpty() ? ""
+                    : (e.joints1().size() == 1 ? " on joint " : " on joints ") + joinInts(e.joints1())));
+            b.append("   ").append(f.words()).append('\n');
+            b.append("   Parameters: ").append(parameters(e, f.values(), f.sigmas())).append('\n');
+            b.append(String.format(Locale.ROOT, "   RMS: training %.4f -> %.4f mm", trainBefore * 1e3, f.trainRmsM() * 1e3));
+            if (Double.isFinite(f.validateRmsM()))
+                b.append(String.format(Locale.ROOT, ", validation %.4f -> %.4f mm", valBefore * 1e3, f.validateRmsM() * 1e3));
+            b.append('\n');
+            Diagnosis.Evidence ev = f.evidence();
+            b.append(String.format(Locale.ROOT, "   Evidence: removes %.0f %% of the residual sum of squares; F = %.1f (%d, %d), p %s "
+                            + "< Holm threshold %.2g; leave-one-out error %.1f -> %.1f; %.0f %% of its signature distinct from geometry%s; %s.%n",
+                    100 * ev.rssReduction(), ev.f(), ev.df1(), ev.df2(), ev.pValue() < 1e-300 ? "< 1e-300" : String.format(Locale.ROOT, "= %.2g", ev.pValue()), ev.threshold(), ev.pressBefore(), ev.pressAfter(),
+                    100 * ev.projectionRatio(), ev.absorbed().isEmpty() ? "" : " (" + String.join(", ", ev.absorbed()) + " left to geometry)",
+                    ev.plausibility()));
+            trainBefore = f.trainRmsM();
+            valBefore = f.validateRmsM();
+        }
+        b.append('\n');
+        b.append(d.outliers().isEmpty() ? "Outliers: none.\n"
+                : "Outliers (left out of every fit; re-measure these poses): " + String.join(", ", d.outliers()) + "\n");
+        if (!d.notIdentifiable().isEmpty()) {
+            b.append("Not identifiable on these data (the geometry absorbs them; not claimed):\n");
+            for (Diagnosis.NotIdentifiable x : d.notIdentifiable())
+                b.append(String.format(Locale.ROOT, "  - %s (%.0f %% of its signature left): %s%n", x.label(), 100 * x.ratio(), x.reason()));
+        }
+        if (!d.implausible().isEmpty()) {
+            b.append("Significant but physically implausible (not claimed):\n");
+            for (Diagnosis.Finding f : d.implausible()) b.append("  - ").append(f.words()).append('\n');
+        }
+        b.append(d.recommendations().isEmpty() ? "What to record next: nothing more is needed for these effects.\n" : "What to record next:\n");
+        for (String r : d.recommendations()) b.append("  - ").append(r).append('\n');
+        if (!d.notes().isEmpty()) {
+            b.append("Notes:\n");
+            for (String r : d.notes()) b.append("  - ").append(r).append('\n');
+        }
+        b.append(String.format(Locale.ROOT, "(%d candidates tested, %.1f s)%n", d.candidatesTested(), d.elapsedMs() / 1e3));
+        return b.toString();
+    }
+
+    static String effectName(Effect e) {
+        return switch (e.kind()) {
+            case COMPLIANCE -> "Joint compliance (the joint gives way under gravity)";
+            case PERIODIC -> "Periodic transmission error (gear or encoder)";
+            case BACKLASH -> "Backlash (lost motion on direction reversal)";
+            case THERMAL -> "Thermal expansion";
+            case SCALE -> "Joint scale error (gear ratio or encoder)";
+            case COUPLING -> "Joint coupling";
+        };
+    }
+
+    private static String joinInts(List<Integer> js) {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < js.size(); i++) b.append(i == 0 ? "" : i == js.size() - 1 ? " (moved by) " : ", ").append(js.get(i));
+        return b.toString();
+    }
+
+    /** Parameters with their uncertainty in the units an engineer reads: degrees, ppm, stiffness. */
+    static String parameters(Effect e, double[] v, double[] s) {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < e.size(); i++) {
+            if (i > 0) b.append(", ");
+            String name = e.parameterNames().get(i), unit = e.units().get(i);
+            double sd = i < s.length ? s[i] : Double.NaN;
+            switch (unit) {
+                case "rad" -> b.append(String.format(Locale.ROOT, "%s = %.4f ± %.4f deg", name, Math.toDegrees(v[i]), Math.toDegrees(sd)));
+                case "rad/(N·m)" -> b.append(String.format(Locale.ROOT, "%s = %.3g ± %.2g rad/(N·m) (stiffness %.3g N·m/rad)", name, v[i], sd, 1 / v[i]));
+                case "1/K" -> b.append(String.format(Locale.ROOT, "%s = %.2f ± %.2f µm/(m·K)", name, v[i] * 1e6, sd * 1e6));
+                default -> b.append(String.format(Locale.ROOT, "%s = %.1f ± %.1f ppm", name, v[i] * 1e6, sd * 1e6));
+            }
+        }
+        return b.toString();
     }
 
     /** The parameters that moved most (in units of their uncertainty where known) and what was fixed. */
@@ -219,26 +371,96 @@ public final class CalibrationPanel extends JDialog {
 
     private void updateButtons() {
         run.setEnabled(measurements != null && !"running".equals(state));
+        diagnose.setEnabled(measurements != null && !"running".equals(state));
         cancel.setEnabled("running".equals(state));
-        apply.setEnabled(result != null);
+        apply.setEnabled(result != null && !"running".equals(state));
+        if (diagnosis == null) apply.setText("Apply calibrated model...");
     }
 
     private void applyInteractive() {
         JFileChooser fc = new JFileChooser(wb.projectFile().map(p -> p.toAbsolutePath().getParent().toFile()).orElse(new java.io.File(".")));
-        fc.setSelectedFile(new java.io.File(wb.model().robot().name() + "-calibrated.robot.json"));
+        boolean extended = diagnosis != null && !diagnosis.effects().isEmpty();
+        fc.setSelectedFile(new java.io.File(wb.model().robot().name() + (extended ? "-extended" : "-calibrated") + ".robot.json"));
         if (fc.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) return;
         apply(fc.getSelectedFile().toPath(), () -> JOptionPane.showConfirmDialog(this, fc.getSelectedFile() + " exists. Replace it?",
                 "Apply calibration", JOptionPane.YES_NO_OPTION) == JOptionPane.YES_OPTION);
     }
 
-    /** Writes the calibrated robot file (an existing one only when confirmed) and applies it. */
+    /**
+     * Writes the calibrated robot file (an existing one only when confirmed) and applies it:
+     * after a diagnosis that found effects, the extended model (geometry plus effects), so that
+     * compensated export uses the calibration module's Compensator on it.
+     */
     public boolean apply(Path robotFile, BooleanSupplier confirmOverwrite) {
         CalibrationResult r = result;
+        Diagnosis d = diagnosis;
         if (r == null) return false;
         boolean exists = java.nio.file.Files.exists(robotFile);
         if (exists && !confirmOverwrite.getAsBoolean()) { wb.log("Calibration not applied: " + robotFile + " exists"); return false; }
-        wb.applyCalibration(r, robotFile, measurements.file().toString(), exists);
+        if (d != null && !d.effects().isEmpty()) wb.applyDiagnosis(d, robotFile, measurements.file().toString(), exists);
+        else wb.applyCalibration(r, robotFile, measurements.file().toString(), exists);
         return true;
+    }
+
+    /** Bars of the RMS error: geometric model, then after each effect; training dark, validation light. */
+    private static final class RmsChart extends JPanel {
+        private final List<String> labels = new ArrayList<>();
+        private final List<double[]> values = new ArrayList<>(); // {train, validate} m
+        private double floorM = Double.NaN;
+
+        void set(Diagnosis d) {
+            labels.clear();
+            values.clear();
+            labels.add("geometric");
+            values.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
+            for (Diagnosis.Finding f : d.effects()) {
+                labels.add("+ " + f.effect().label());
+                values.add(new double[] {f.trainRmsM(), f.validateRmsM()});
+            }
+            floorM = Math.sqrt(3) * d.sigmaM();
+            repaint();
+        }
+
+        @Override
+        protected void paintComponent(Graphics g0) {
+            super.paintComponent(g0);
+            Graphics2D g = (Graphics2D) g0;
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            var in = getInsets();
+            int x0 = in.left + 8, y0 = in.top + 4, w = getWidth() - x0 - in.right - 8, h = getHeight() - y0 - in.bottom - 18;
+            g.setColor(Color.WHITE);
+            g.fillRect(x0, y0, w, h);
+            if (values.isEmpty() || w < 20 || h < 20) return;
+            double max = 0;
+            for (double[] v : values) for (double x : v) if (Double.isFinite(x)) max = Math.max(max, x);
+            if (max <= 0) return;
+            g.setFont(g.getFont().deriveFont(10f));
+            int slot = w / values.size(), bw = Math.max(4, Math.min(40, slot / 3));
+            for (int i = 0; i < values.size(); i++) {
+                int cx = x0 + slot * i + slot / 2;
+                for (int k = 0; k < 2; k++) {
+                    double v = values.get(i)[k];
+                    if (!Double.isFinite(v)) continue;
+                    int bh = (int) Math.round((h - 16) * v / max);
+                    int x = cx - bw + k * bw;
+                    g.setColor(k == 0 ? new Color(0xF07A1A) : new Color(0xF5B77F));
+                    g.fillRect(x, y0 + h - bh, bw - 2, bh);
+                    g.setColor(Color.DARK_GRAY);
+                    g.drawString(String.format(Locale.ROOT, "%.3f", v * 1e3), x, y0 + h - bh - 2);
+                }
+                String l = labels.get(i);
+                g.drawString(l, cx - g.getFontMetrics().stringWidth(l) / 2, y0 + h + 13);
+            }
+            if (Double.isFinite(floorM) && floorM < max) {
+                int y = y0 + h - (int) Math.round((h - 16) * floorM / max);
+                g.setColor(new Color(0x2E9E44));
+                g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
+                g.drawLine(x0, y, x0 + w, y);
+                g.drawString(String.format(Locale.ROOT, "noise floor %.3f mm", floorM * 1e3), x0 + 4, y - 3);
+            }
+            g.setColor(Color.DARK_GRAY);
+            g.drawString("mm (dark: training, light: validation)", x0 + w - 190, y0 + 12);
+        }
     }
 
     /** Sorted per-pose errors before (grey) and after (orange) calibration, log scale. */

@@ -196,7 +196,9 @@ public final class ProgramPanel extends JPanel {
 
     /** The model's program changed. */
     public void refresh() {
-        if (plan != null && !player.isRunning()) plan = wb.model().programRun(); // keep check results live once checked
+        // Keep check results live once checked, from the background check (never computed on this thread).
+        var latest = wb.app().pathChecker().latest();
+        if (plan != null && !player.isRunning() && latest != null && latest.program().equals(wb.model().program())) plan = latest.run();
         refreshWobjs();
         rows.fireTableDataChanged();
     }

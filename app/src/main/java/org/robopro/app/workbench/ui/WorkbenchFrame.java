@@ -114,6 +114,7 @@ public final class WorkbenchFrame extends JFrame {
         setContentPane(content);
 
         wb.model().addListener(this::modelChanged);
+        wb.app().pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
         new Timer(500, e -> updateStatus()).start();
     }
 
@@ -147,6 +148,12 @@ public final class WorkbenchFrame extends JFrame {
      * File > Import RAPID: replaces the program with the module's main; a file with errors is
      * shown in a dialog with its line and column and changes nothing.
      */
+    /** Asks which procedure of an uploaded module becomes the program (main preselected); null when cancelled. */
+    String chooseProcedure(java.util.List<String> procs) {
+        return (String) JOptionPane.showInputDialog(this, "The module has " + procs.size() + " procedures. Which one is the program?",
+                "Upload program: PROC", JOptionPane.QUESTION_MESSAGE, null, procs.toArray(), Workbench.defaultProcedure(procs));
+    }
+
     public boolean importRapid(Path file) {
         try {
             var imp = wb.importRapid(file);
@@ -222,10 +229,22 @@ public final class WorkbenchFrame extends JFrame {
         }
         selectionChanged = false;
         structureChanged = false;
-        tree.rebuild(wb.model().statuses());
+        tree.rebuild(latestStatuses());
         properties.refresh();
         program.refresh();
         updateTitle();
+    }
+
+    /** Target statuses of the last background path check (none before the first). */
+    private Map<String, org.robopro.app.workbench.model.TargetStatus> latestStatuses() {
+        var r = wb.app().pathChecker().latest();
+        return r == null ? Map.of() : r.statuses();
+    }
+
+    /** A background path check finished: show its statuses and per-instruction results. */
+    private void pathChecked() {
+        tree.rebuild(latestStatuses());
+        program.refresh();
     }
 
     private void updateTitle() {
@@ -349,10 +368,19 @@ public final class WorkbenchFrame extends JFrame {
         });
         def("disconnect", "Disconnect", null, e -> wb.disconnectController());
         def("download", "Download program", null, e -> wb.downloadProgram());
-        def("upload", "Upload program...", null, e -> {
-            String n = JOptionPane.showInputDialog(this, "Program name on the controller:", wb.controllerProgramName());
-            if (n != null && !n.isBlank()) wb.uploadProgram(n.trim());
-        });
+        def("upload", "Upload program...", null, e -> wb.controllerPrograms().whenComplete((list, err) -> SwingUtilities.invokeLater(() -> {
+            // Offer the controller's programs; type a name when it cannot list them (plain SERVER.mod).
+            String n;
+            if (err == null && list != null && !list.isEmpty()) {
+                Object[] names = list.stream().map(org.robopro.comms.ProgramInfo::name).toArray();
+                Object def = java.util.Arrays.asList(names).contains(wb.controllerProgramName()) ? wb.controllerProgramName() : names[0];
+                n = (String) JOptionPane.showInputDialog(this, "Program on the controller:", "Upload program",
+                        JOptionPane.QUESTION_MESSAGE, null, names, def);
+            } else {
+                n = JOptionPane.showInputDialog(this, "Program name on the controller:", wb.controllerProgramName());
+            }
+            if (n != null && !n.isBlank()) wb.uploadProgram(n.trim(), this::chooseProcedure);
+        })));
         def("run", "Run on controller", null, e -> wb.runProgram());
         def("read-position", "Read robot position", null, e -> wb.readRobotPosition());
         wb.addControllerListener(() -> SwingUtilities.invokeLater(this::controllerChanged));
