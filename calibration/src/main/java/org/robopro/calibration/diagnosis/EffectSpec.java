@@ -74,6 +74,11 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
         return new EffectSpec(kind, kind == Effect.Kind.THERMAL ? 0 : joint, 0, null);
     }
 
+    /** The spec of an effect (no VALUE); {@code of(e).withSize(values)} writes a term back as text. */
+    public static EffectSpec of(Effect e) {
+        return new EffectSpec(e.kind(), e.joint() + 1, e.kind() == Effect.Kind.COUPLING ? e.source() + 1 : 0, null);
+    }
+
     public static EffectSpec coupling(int target, int source) { return new EffectSpec(Effect.Kind.COUPLING, target, source, null); }
 
     public static EffectSpec thermal() { return new EffectSpec(Effect.Kind.THERMAL, 0, 0, null); }
