@@ -27,8 +27,8 @@ final class FastTrig {
     private static final double PIO2_LO = 6.123233995736766e-17;
 
     /**
-     * sin x for joint angles: x = k pi/2 + r, |r| <= pi/4, then the Taylor series of sin and cos
-     * of r to degree 17/16 (truncation below 1e-19); |x| >= 1e5 goes to {@link Math#sin}. Used in
+     * sin x for joint angles: x = k pi/2 + r, |r| <= pi/4, then fdlibm's kernel polynomials for
+     * sin and cos of r; |x| >= 1e5 goes to {@link Math#sin}. Used in
      * forward kinematics, where sin and cos of the same angle share the reduction after inlining.
      */
     static double sin(double x) {
@@ -56,16 +56,37 @@ final class FastTrig {
         }
     }
 
-    private static double sinPoly(double r) {
-        double r2 = r * r;
-        return r + r * r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800
-                + r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0))))))));
+    /** r = x - k pi/2 (three-part Cody-Waite), k = rint(x * 2 / pi), for |x| < 1e5. */
+    static double reduce(double x, double k) {
+        return ((x - k * PIO2_HI) - k * PIO2_MID) - k * PIO2_LO;
     }
 
-    private static double cosPoly(double r) {
-        double r2 = r * r;
-        return 1 + r2 * (-0.5 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800
-                + r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
+    // minimax coefficients of fdlibm's __kernel_sin / __kernel_cos (k_sin.c, k_cos.c) on |r| <= pi/4:
+    // degree 13 / 14, error below 2^-58, i.e. within an ulp like Math.sin / Math.cos
+    private static final double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+            S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+            S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+    private static final double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+            C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+            C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+
+    /**
+     * sin r for |r| <= pi/4. The polynomial in z = r^2 is split in two halves evaluated side by
+     * side (z and z^2 = w available early) instead of one Horner chain: about half the latency,
+     * which is what a chain of six joints waits for.
+     */
+    static double sinPoly(double r) {
+        double z = r * r, w = z * z;
+        double p = (S2 + z * (S3 + z * S4)) + z * w * (S5 + z * S6);
+        return r + r * z * (S1 + z * p);
+    }
+
+    /** cos r for |r| <= pi/4; 1 - z/2 is formed with its rounding error carried (as fdlibm does). */
+    static double cosPoly(double r) {
+        double z = r * r, w = z * z;
+        double p = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
+        double hz = 0.5 * z, h = 1 - hz;
+        return h + (((1 - h) - hz) + z * p);
     }
 
     static double atan2(double y, double x) {

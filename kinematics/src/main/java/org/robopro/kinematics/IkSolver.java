@@ -17,7 +17,7 @@ import java.util.List;
  */
 public final class IkSolver {
     private static final int MAX_ITERATIONS = 100;
-    private static final double INV_TWO_PI = 1 / (2 * Math.PI);
+    private static final double TWO_PI = 2 * Math.PI, INV_TWO_PI = 1 / TWO_PI;
 
     private final InverseKinematics ik;
     private final KinematicModel model;
@@ -26,6 +26,7 @@ public final class IkSolver {
     private final double len;
     private final boolean[] integerColumn;
     private final double[] qMin, qMax;
+    private final double[] qLo, qHi; // limits with the 1e-9 rounding slack of KinematicModel.withinLimits
     private final KinematicModel.Workspace ws;
     // closed form
     private final double[][] thetas = new double[8][6];
@@ -65,7 +66,12 @@ public final class IkSolver {
         ws = model.newWorkspace();
         qMin = new double[n];
         qMax = new double[n];
-        for (int i = 0; i < n; i++) { qMin[i] = model.qMin(i); qMax[i] = model.qMax(i); }
+        qLo = new double[n];
+        qHi = new double[n];
+        for (int i = 0; i < n; i++) {
+            qMin[i] = model.qMin(i); qMax[i] = model.qMax(i);
+            qLo[i] = qMin[i] - 1e-9; qHi[i] = qMax[i] + 1e-9;
+        }
         int cap = 16;
         sq = new double[cap][n];
         sConf = new int[4 * cap];
@@ -126,46 +132,100 @@ public final class IkSolver {
         return count;
     }
 
-    /** Turn variants (+-2 pi on whole-turn columns) of {@link #base} within the limits, each added once. */
+    /**
+     * Turn variants (+-2 pi on whole-turn columns) of {@link #base} within the limits, each added
+     * once. Usually every joint has exactly one in-limit turn (its wrapped value), so that case
+     * is tested first and goes straight to {@link #addUnique}; the general enumeration only
+     * runs for joints whose range spans more than a turn around their value.
+     */
     private void addVariants(int cfxArm, double manip) {
-        for (int i = 0; i < n; i++) if (integerColumn[i]) base[i] = ClosedFormIk.wrap(base[i]);
-        boolean each = true;
+        // common case first: every whole-turn joint's wrapped value is the one turn inside its range
+        boolean simple = true, within = true, none = false;
         for (int i = 0; i < n; i++) {
-            if (!integerColumn[i]) { cand[i][0] = base[i]; candCount[i] = 1; continue; }
+            double v = base[i], lo = qLo[i], hi = qHi[i];
+            if (integerColumn[i]) {
+                v = ClosedFormIk.wrap(v);
+                base[i] = v;
+                boolean in = v >= lo && v <= hi;
+                if (!(in && v + TWO_PI > hi && v - TWO_PI < lo)) {
+                    simple = false;
+                    // outside, and the next turn towards the range already overshoots it: no turn fits
+                    if (!in && (v < lo ? v + TWO_PI > hi : v - TWO_PI < lo)) none = true;
+                }
+            } else if (!(v >= lo && v <= hi)) {
+                within = false;
+            }
+        }
+        if (none) { // the wrapped q, outside the limits
+            addUnique(base, cfxArm, manip, false);
+            return;
+        }
+        if (simple) {
+            addUnique(base, cfxArm, manip, within);
+            return;
+        }
+        boolean single = true;
+        for (int i = 0; i < n; i++) {
+            double lo = qLo[i], hi = qHi[i];
+            if (!integerColumn[i]) {
+                cand[i][0] = base[i];
+                candCount[i] = 1;
+                continue;
+            }
+            double w = base[i]; // wrapped above
+            if (w >= lo && w <= hi && w + TWO_PI > hi && w - TWO_PI < lo) { // exactly one turn fits: w
+                cand[i][0] = w;
+                candCount[i] = 1;
+                continue;
+            }
             int c = 0;
-            double lo = qMin[i] - 1e-9, hi = qMax[i] + 1e-9, w = base[i];
             // only the turns k that can land in [lo, hi] (one more each side for rounding), k in -2..2
             int kLo = (int) Math.max(-2, Math.ceil((lo - w) * INV_TWO_PI) - 1);
             int kHi = (int) Math.min(2, Math.floor((hi - w) * INV_TWO_PI) + 1);
             for (int k = kLo; k <= kHi; k++) {
-                double v = w + 2 * Math.PI * k;
+                double v = w + TWO_PI * k;
                 if (v >= lo && v <= hi) cand[i][c++] = v;
             }
+            if (c == 0) { // no in-limit turn for this joint: the wrapped q, outside the limits
+                addUnique(base, cfxArm, manip, false);
+                return;
+            }
             candCount[i] = c;
-            if (c == 0) each = false;
+            if (c > 1) single = false;
         }
-        if (!each) { addUnique(base, cfxArm, manip); return; } // no in-limit turn for some joint: the wrapped q
+        if (single) { // one variant (a joint outside its range by a turn may have moved by one)
+            for (int i = 0; i < n; i++) variant[i] = cand[i][0];
+            addUnique(variant, cfxArm, manip, within);
+            return;
+        }
         Arrays.fill(odo, 0);
         while (true) {
             for (int i = 0; i < n; i++) variant[i] = cand[i][odo[i]];
-            addUnique(variant, cfxArm, manip);
+            addUnique(variant, cfxArm, manip, within);
             int i = n - 1; // odometer, last joint fastest (the order of InverseKinematics before this class)
             while (i >= 0 && ++odo[i] == candCount[i]) odo[i--] = 0;
             if (i < 0) return;
         }
     }
 
-    private void addUnique(double[] q, int cfxArm, double manip) {
+    /** Adds q unless a stored solution is within 1e-7 rad (every joint) of it. */
+    private void addUnique(double[] q, int cfxArm, double manip, boolean within) {
+        double[][] store = sq;
+        // the closed form's branches differ in joint 4 (wrist flip: theta4 + pi) and joint 1
+        // (shoulder) almost always, so those two decide before the loop over the rest
+        int first = n > 3 ? 3 : 0;
+        double qa = q[first], q0 = q[0];
         for (int s = 0; s < count; s++) {
-            double[] o = sq[s];
-            double d = 0;
-            for (int i = 0; i < n; i++) d = Math.max(d, Math.abs(o[i] - q[i]));
-            if (d < 1e-7) return;
+            double[] o = store[s];
+            if (!(Math.abs(o[first] - qa) < 1e-7) || !(Math.abs(o[0] - q0) < 1e-7)) continue;
+            int i = 1;
+            while (i < n && Math.abs(o[i] - q[i]) < 1e-7) i++;
+            if (i == n) return;
         }
-        if (count == sq.length) grow();
+        if (count == store.length) grow();
         System.arraycopy(q, 0, sq[count], 0, n);
         InverseKinematics.confInto(q, cfxArm, sConf, 4 * count);
-        sWithin[count] = model.withinLimits(q);
+        sWithin[count] = within;
         sManip[count] = manip;
         count++;
     }

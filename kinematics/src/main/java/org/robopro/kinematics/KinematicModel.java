@@ -36,6 +36,9 @@ public final class KinematicModel {
     private final boolean couplingIdentity;
     private final int[] cStart, cCol; // C in compressed rows
     private final double[] cVal;
+    private final int[] ciStart, ciCol; // C^-1 in compressed rows (IK: q from theta per solution)
+    private final int[] qFrom; // j when row i of C^-1 is exactly e_j (q_i = theta_j), else -1
+    private final double[] ciVal;
     private final double[] qMin, qMax;
     private final List<Transformation> transformations;
     // compiled element arrays (all transformations, in chain order)
@@ -45,6 +48,12 @@ public final class KinematicModel {
     private final int[] elParam; // parameter index or -1
     private final int[] trStart; // first element of transformation k; trStart[n + 1] = nEl
     private final double[][] fixed; // F_k as 3x4
+    // FK fast path (see flange(q, ws, out12)): joint k's angle offset folded into its R_Z, the
+    // rest F'_k of transformation k as 3x4 and whether its rotation is exactly R_X-shaped
+    private final double[] jointOffset;
+    private final double[][] fastFixed;
+    private final boolean[] fastRx;
+    private final int[] thetaFrom; // j when row k of C is exactly e_j (theta_k = q_j), else -1
     private final List<ModelParameter> parameters;
     private final int[] paramElem;
     private final String identifiabilityNote;
@@ -81,6 +90,19 @@ public final class KinematicModel {
             for (int j = 0; j < n; j++) if (c[i][j] != 0) { cCol[nz] = j; cVal[nz++] = c[i][j]; }
         }
         cStart[n] = nz;
+        ciStart = new int[n + 1];
+        nz = 0;
+        for (double[] row : cInv) for (double v : row) if (v != 0) nz++;
+        ciCol = new int[nz];
+        ciVal = new double[nz];
+        qFrom = new int[n];
+        nz = 0;
+        for (int i = 0; i < n; i++) {
+            ciStart[i] = nz;
+            for (int j = 0; j < n; j++) if (cInv[i][j] != 0) { ciCol[nz] = j; ciVal[nz++] = cInv[i][j]; }
+            qFrom[i] = nz - ciStart[i] == 1 && ciVal[ciStart[i]] == 1 ? ciCol[ciStart[i]] : -1;
+        }
+        ciStart[n] = nz;
 
         int count = 0;
         for (Transformation t : transformations) count += t.elements().size();
@@ -116,6 +138,29 @@ public final class KinematicModel {
             }
         }
         trStart[n + 1] = nEl;
+        jointOffset = new double[n];
+        fastFixed = new double[n + 1][];
+        fastRx = new boolean[n + 1];
+        fastFixed[0] = fixed[0];
+        for (int k = 1; k <= n; k++) {
+            int first = trStart[k], end = trStart[k + 1];
+            // R_Z(theta) R_Z(offset) = R_Z(theta + offset): one rotation instead of a 3x4 product's worth
+            boolean fold = !prismatic[k - 1] && first < end && elOp[first] == Elementary.Op.RZ.ordinal();
+            double[] f = new double[12];
+            Mat34.identity(f);
+            for (int e2 = fold ? first + 1 : first; e2 < end; e2++)
+                Mat34.apply(f, Elementary.Op.values()[elOp[e2]], elVal[e2], elCos[e2], elSin[e2]);
+            jointOffset[k - 1] = fold ? elVal[first] : 0;
+            fastFixed[k] = f;
+            // exact structure only (it comes from the element list, not from the values): a DH row
+            // T_Z T_X R_X T_Z leaves column 0 and row 0 of the rotation exactly (1, 0, 0)
+            fastRx[k] = f[0] == 1 && f[1] == 0 && f[2] == 0 && f[4] == 0 && f[8] == 0;
+        }
+        thetaFrom = new int[n];
+        for (int i = 0; i < n; i++) {
+            thetaFrom[i] = -1;
+            if (cStart[i + 1] - cStart[i] == 1 && cVal[cStart[i]] == 1) thetaFrom[i] = cCol[cStart[i]];
+        }
         parameters = List.copyOf(params);
         paramElem = pe.stream().mapToInt(Integer::intValue).toArray();
     }
@@ -199,10 +244,15 @@ public final class KinematicModel {
             System.arraycopy(theta, 0, out, 0, n);
             return;
         }
+        // a unit row of C^-1 is a copy; the others are sparse sums (usually one or two rows)
         for (int i = 0; i < n; i++) {
+            int from = qFrom[i];
+            if (from >= 0) {
+                out[i] = theta[from];
+                continue;
+            }
             double s = 0;
-            double[] row = cInv[i];
-            for (int j = 0; j < n; j++) s += row[j] * theta[j];
+            for (int t = ciStart[i], end = ciStart[i + 1]; t < end; t++) s += ciVal[t] * theta[ciCol[t]];
             out[i] = s;
         }
     }
@@ -234,11 +284,13 @@ public final class KinematicModel {
     public static final class Workspace {
         final double[] theta;
         final double[] m = new double[12];
+        final double[] cs; // FK: cos, sin (revolute) or the displacement (prismatic) of each joint
         final double[] axes, origins;
         final int forDof, forElements;
 
         private Workspace(int dof, int elements) {
             theta = new double[dof];
+            cs = new double[2 * dof];
             axes = new double[3 * elements];
             origins = new double[3 * elements];
             forDof = dof;
@@ -259,16 +311,114 @@ public final class KinematicModel {
     /**
      * Allocation-free FK: writes baseTflange at q into {@code out12} as a row-major 3x4 matrix
      * [R | t] (metres). One sine/cosine and one 3x4 product per joint.
+     *
+     * <p>Fast path: the matrix lives in twelve locals (no array round trip per joint); each
+     * joint's constant R_Z(offset) is folded into its angle, so the step is M R_Z(theta + offset) F'
+     * with the rotation's columns 0 and 1 mixed by (c, s) (12 multiplications) and F' multiplied
+     * in (36, or 21 when F' is exactly R_X-shaped, as DH rows are); sine and cosine share one
+     * reduction. {@link #flangeReference} is the plain element-by-element product it is tested against.
      */
     public void flange(double[] q, Workspace ws, double[] out12) {
         checkWorkspace(ws);
-        double[] th = ws.theta;
-        theta(q, th);
-        System.arraycopy(fixed[0], 0, out12, 0, 12);
+        checkLength(q);
+        // 1: every joint's cosine and sine (independent of each other, so they overlap in the
+        // CPU instead of each one stalling the product chain)
+        double[] cs = ws.cs;
         for (int k = 0; k < n; k++) {
-            joint(out12, k, th[k]);
-            Mat34.mulInPlace(out12, fixed[k + 1]);
+            int from = thetaFrom[k];
+            double th;
+            if (from >= 0) th = q[from];
+            else {
+                th = 0;
+                for (int t = cStart[k], end = cStart[k + 1]; t < end; t++) th += cVal[t] * q[cCol[t]];
+            }
+            if (prismatic[k]) {
+                cs[2 * k] = th;
+                continue;
+            }
+            double x = th + jointOffset[k];
+            if (Math.abs(x) < 1e5) { // FastTrig.sin / cos with one shared reduction, quadrant by table (no branch)
+                double kq = Math.rint(x * (2 / Math.PI));
+                double r = FastTrig.reduce(x, kq);
+                double sp = FastTrig.sinPoly(r), cp = FastTrig.cosPoly(r);
+                int quad = (int) kq & 3;
+                cs[2 * k] = QC_C[quad] * cp + QC_S[quad] * sp;
+                cs[2 * k + 1] = QS_C[quad] * cp + QS_S[quad] * sp;
+            } else {
+                cs[2 * k] = Math.cos(x);
+                cs[2 * k + 1] = Math.sin(x);
+            }
         }
+        // 2: the product chain
+        double[] f = fixed[0];
+        double m00 = f[0], m01 = f[1], m02 = f[2], m03 = f[3];
+        double m10 = f[4], m11 = f[5], m12 = f[6], m13 = f[7];
+        double m20 = f[8], m21 = f[9], m22 = f[10], m23 = f[11];
+        for (int k = 0; k < n; k++) {
+            if (prismatic[k]) {
+                double th = cs[2 * k];
+                m03 += th * m02; m13 += th * m12; m23 += th * m22;
+            } else {
+                double c = cs[2 * k], s = cs[2 * k + 1];
+                double a0 = c * m00 + s * m01, a1 = c * m10 + s * m11, a2 = c * m20 + s * m21;
+                m01 = c * m01 - s * m00; m11 = c * m11 - s * m10; m21 = c * m21 - s * m20;
+                m00 = a0; m10 = a1; m20 = a2;
+            }
+            f = fastFixed[k + 1];
+            if (fastRx[k + 1]) {
+                double f3 = f[3], f5 = f[5], f6 = f[6], f7 = f[7], f9 = f[9], f10 = f[10], f11 = f[11];
+                m03 += m00 * f3 + m01 * f7 + m02 * f11;
+                m13 += m10 * f3 + m11 * f7 + m12 * f11;
+                m23 += m20 * f3 + m21 * f7 + m22 * f11;
+                double b0 = m01 * f5 + m02 * f9, b1 = m11 * f5 + m12 * f9, b2 = m21 * f5 + m22 * f9;
+                m02 = m01 * f6 + m02 * f10; m12 = m11 * f6 + m12 * f10; m22 = m21 * f6 + m22 * f10;
+                m01 = b0; m11 = b1; m21 = b2;
+            } else {
+                double f0 = f[0], f1 = f[1], f2 = f[2], f3 = f[3], f4 = f[4], f5 = f[5];
+                double f6 = f[6], f7 = f[7], f8 = f[8], f9 = f[9], f10 = f[10], f11 = f[11];
+                double r0 = m00, r1 = m01, r2 = m02;
+                m00 = r0 * f0 + r1 * f4 + r2 * f8; m01 = r0 * f1 + r1 * f5 + r2 * f9;
+                m02 = r0 * f2 + r1 * f6 + r2 * f10; m03 += r0 * f3 + r1 * f7 + r2 * f11;
+                r0 = m10; r1 = m11; r2 = m12;
+                m10 = r0 * f0 + r1 * f4 + r2 * f8; m11 = r0 * f1 + r1 * f5 + r2 * f9;
+                m12 = r0 * f2 + r1 * f6 + r2 * f10; m13 += r0 * f3 + r1 * f7 + r2 * f11;
+                r0 = m20; r1 = m21; r2 = m22;
+                m20 = r0 * f0 + r1 * f4 + r2 * f8; m21 = r0 * f1 + r1 * f5 + r2 * f9;
+                m22 = r0 * f2 + r1 * f6 + r2 * f10; m23 += r0 * f3 + r1 * f7 + r2 * f11;
+            }
+        }
+        out12[0] = m00; out12[1] = m01; out12[2] = m02; out12[3] = m03;
+        out12[4] = m10; out12[5] = m11; out12[6] = m12; out12[7] = m13;
+        out12[8] = m20; out12[9] = m21; out12[10] = m22; out12[11] = m23;
+    }
+
+    // cos and sin of x = k pi/2 + r from cosPoly(r) and sinPoly(r) by quadrant k & 3 (coefficients 0, +-1: exact)
+    private static final double[] QC_C = {1, 0, -1, 0}, QC_S = {0, -1, 0, 1};
+    private static final double[] QS_C = {0, 1, 0, -1}, QS_S = {1, 0, -1, 0};
+
+    /** How many transformations the FK fast path multiplies as exactly R_X-shaped (tests). */
+    int fastRxCount() {
+        int c = 0;
+        for (boolean b : fastRx) if (b) c++;
+        return c;
+    }
+
+    /**
+     * Reference FK for tests: the chain product element by element (Table 1 elements and the
+     * joints' own R_Z / T_Z), with no folding or structure exploited. Allocates.
+     */
+    double[] flangeReference(double[] q) {
+        double[] th = theta(q), m = new double[12];
+        Mat34.identity(m);
+        for (int k = 0; k <= n; k++) {
+            if (k > 0) {
+                if (prismatic[k - 1]) Mat34.translate(m, 2, th[k - 1]);
+                else Mat34.rotate(m, 2, Math.cos(th[k - 1]), Math.sin(th[k - 1]));
+            }
+            for (int e = trStart[k], end = trStart[k + 1]; e < end; e++)
+                Mat34.apply(m, Elementary.Op.values()[elOp[e]], elVal[e], elCos[e], elSin[e]);
+        }
+        return m;
     }
 
     private void joint(double[] m, int k, double t) {

@@ -136,6 +136,52 @@ class KinematicModelTest {
         }
     }
 
+    private static void assertFastFkMatchesReference(KinematicModel m, long seed, String what) {
+        KinematicModel.Workspace ws = m.newWorkspace();
+        double[] out = new double[12];
+        double[][] qs = m.randomConfigurations(40, seed);
+        Random rnd = new Random(seed);
+        for (int i = 0; i < qs.length; i++) {
+            double[] q = qs[i];
+            if (i % 4 == 3) for (int k = 0; k < q.length; k++) q[k] += 2 * Math.PI * (rnd.nextInt(7) - 3); // every quadrant, big angles
+            if (i == qs.length - 1) q[0] = 3e5; // beyond the polynomial's reduction range
+            m.flange(q, ws, out);
+            double[] ref = m.flangeReference(q);
+            // folding the offset into 3e5 rad rounds the angle to its ulp (6e-11): looser there
+            double tol = i == qs.length - 1 ? 1e-9 : 1e-13;
+            for (int j = 0; j < 12; j++)
+                assertEquals(ref[j], out[j], tol, what + " entry " + j + " at q " + java.util.Arrays.toString(q));
+        }
+    }
+
+    @Test
+    void flange_fastPathNominalAndCalibrated_matchesElementByElementReference() {
+        for (RobotDescription d : ReferenceRobots.all()) {
+            KinematicModel m = KinematicModel.build(d);
+            assertFastFkMatchesReference(m, 3, d.name());
+            double[] p = m.parameterValues();
+            Random rnd = new Random(4);
+            for (int i = 0; i < p.length; i++) p[i] += 1e-3 * rnd.nextGaussian();
+            assertFastFkMatchesReference(m.withParameterValues(p), 5, d.name() + " calibrated");
+        }
+        Random rnd = new Random(8);
+        for (int i = 0; i < 10; i++) {
+            RobotDescription d = ReferenceRobots.randomRobot(rnd, 3 + rnd.nextInt(5), true);
+            assertFastFkMatchesReference(KinematicModel.build(d), 10 + i, "random robot " + i);
+        }
+    }
+
+    @Test
+    void flange_dhRows_takeTheRxShapedProductOnlyWhileExact() {
+        KinematicModel m = KinematicModel.build(ReferenceRobots.irb2000());
+        // four DH rows (j1, j3, j4, j5) plus the Hayati row j2 -> j3 while its beta is exactly 0
+        assertTrue(m.fastRxCount() >= 4, "R_X-shaped rows: " + m.fastRxCount());
+        double[] p = m.parameterValues();
+        int beta = m.parameters().stream().map(ModelParameter::name).toList().indexOf("j2.beta");
+        p[beta] += 1e-4;
+        assertEquals(m.fastRxCount() - 1, m.withParameterValues(p).fastRxCount(), "a calibrated beta makes that row general");
+    }
+
     @Test
     void linkFrames_irb2000_zAxesAreJointAxes() {
         KinematicModel m = KinematicModel.build(ReferenceRobots.irb2000());
