@@ -117,8 +117,9 @@ public final class CalibrateCommand implements Callable<Integer> {
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
         RobotLibrary.write(calibrated, out.resolve("calibrated.robot.json"), force);
-        AtomicFiles.writeString(out.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx), force);
-        AtomicFiles.writeString(out.resolve("report.html"), CalibrationReport.html(r, ctx), force);
+        java.util.List<String> warnings = CalibrationReport.warnings(r, train, val);
+        AtomicFiles.writeString(out.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx, warnings), force);
+        AtomicFiles.writeString(out.resolve("report.html"), CalibrationReport.html(r, ctx, warnings), force);
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(), r.train().size(),
                 r.sixD() ? "6-D" : "positions", Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
@@ -128,6 +129,7 @@ public final class CalibrateCommand implements Callable<Integer> {
                 r.unidentifiable().size(), r.conditionNumber(), r.outliers().size(),
                 r.outliers().isEmpty() ? "" : " (" + String.join(", ", r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList()) + ")");
         w.printf("  wrote %s%n", out.toAbsolutePath());
+        for (String warning : warnings) spec.commandLine().getErr().println("robopro: warning: " + warning);
         return 0;
     }
 }

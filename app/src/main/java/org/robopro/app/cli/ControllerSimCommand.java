@@ -4,7 +4,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.robopro.calibration.diagnosis.EffectSpec;
 import org.robopro.comms.sim.ControllerSim;
+import org.robopro.comms.sim.TrueSimulatedRobot;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -37,7 +39,8 @@ public final class ControllerSimCommand implements Callable<Integer> {
     double errorMm;
 
     @Option(names = "--effect", paramLabel = "NAME[:JOINT]", description = "non-geometric effect of the real robot (repeatable): "
-            + "backlash, joint-compliance, gear-periodic, joint-scale, joint-coupling[:JOINT], thermal-expansion (docs/controller-link.md)")
+            + "backlash, joint-compliance, gear-periodic, joint-scale, joint-coupling[:JOINT[<-SOURCE]], thermal-expansion, "
+            + "optionally =VALUE; sizes otherwise drawn from realistic ranges with --seed (docs/controller-link.md)")
     List<String> effects = new ArrayList<>();
 
     @Option(names = "--noise-mm", defaultValue = "0.02", description = "laser tracker noise, mm per axis (default ${DEFAULT-VALUE})") double noiseMm;
@@ -62,6 +65,10 @@ public final class ControllerSimCommand implements Callable<Integer> {
                 effects, noiseMm, ControllerSim.parseTargetMm(target), payloadKg, portFile, realtime, faultRate))) {
             spec.commandLine().getOut().println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where()
                     + "; stop with Ctrl-C");
+            if (sim.controller().robot() instanceof TrueSimulatedRobot t)
+                for (var e : t.effects())
+                    spec.commandLine().getOut().println("  effect " + EffectSpec.of(e.effect()).withSize(e.values())
+                            + " (" + EffectSpec.valueUnit(e.effect().kind()) + ")");
             spec.commandLine().getOut().flush();
             Thread.currentThread().join();
         }

@@ -6,6 +6,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.robopro.calibration.diagnosis.Effect;
+import org.robopro.calibration.diagnosis.EffectCampaign;
+import org.robopro.calibration.diagnosis.EffectSpec;
 import org.robopro.calibration.measurement.MeasurementWriter;
 import org.robopro.calibration.simulation.Campaign;
 import org.robopro.calibration.simulation.CampaignSimulator;
@@ -24,7 +27,10 @@ import picocli.CommandLine.Spec;
 /**
  * {@code robopro simulate}: a simulated calibration campaign (docs/calibration.md). Writes
  * {@code DIR/measurements.csv}, optionally {@code DIR/validate.csv}, and the truth separately:
- * {@code DIR/truth.json} and {@code DIR/true.robot.json}.
+ * {@code DIR/truth.json} and {@code DIR/true.robot.json}. With {@code --effect SPEC} the true robot
+ * also has non-geometric effects (diagnosis' {@link EffectSpec}), the files get the conditions
+ * columns (dir1..dirN, time_s, temp_c, payload_kg with compliance) and truth.json the injected
+ * effects with their values.
  */
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = "Simulate a calibration campaign on a robot with random geometric errors.")
@@ -59,6 +65,12 @@ public final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "random seed (default ${DEFAULT-VALUE})")
     long seed;
 
+    @Option(names = "--effect", paramLabel = "SPEC",
+            description = "inject a non-geometric effect, repeatable: NAME[:JOINT[<-SOURCE]][=VALUE], e.g. backlash:2, "
+                    + "gear-periodic:1=0.008, joint-coupling:3<-2, thermal-expansion; sizes drawn from realistic ranges with --seed "
+                    + "unless VALUE is given (docs/diagnosis.md)")
+    List<String> effects = new ArrayList<>();
+
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
     Path out;
 
@@ -76,20 +88,30 @@ public final class SimulateCommand implements Callable<Integer> {
         double[] t = CliSupport.numbers("--target", target, 3);
         SimulationSettings s = new SimulationSettings(poses, validatePoses, Units.mmToM(sigmaMm), Units.degToRad(sigmaDeg),
                 Units.mmToM(errorMm), 2e-3, new Vec3(Units.mmToM(t[0]), Units.mmToM(t[1]), Units.mmToM(t[2])), sixD, frameBase, seed);
-        Campaign c = CampaignSimulator.simulate(nominal, s);
+        List<EffectSpec> specs = EffectSpec.parseAll(effects);
+        EffectCampaign ec = specs.isEmpty() ? null : EffectCampaign.simulate(desc, s, specs);
+        Campaign c = ec != null ? ec.campaign() : CampaignSimulator.simulate(nominal, s);
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
         MeasurementWriter.write(c.measurements(), types, out.resolve("measurements.csv"), force);
         if (c.validation() != null) MeasurementWriter.write(c.validation(), types, out.resolve("validate.csv"), force);
-        CampaignSimulator.writeTruth(c, out.resolve("truth.json"), force);
+        CampaignSimulator.writeTruth(c, ec != null ? ec.truthEntries() : null, out.resolve("truth.json"), force);
         RobotDescription trueDesc = c.truth().model().toDescription()
                 .withProvenance(Map.of("simulated-from", desc.name(), "seed", Long.toString(seed),
                         "error-mm", Double.toString(errorMm)));
+        // The injected effects in the robot file's effects section, so the truth can be compensated with too.
+        if (ec != null) trueDesc = trueDesc.withEffects(ec.injected().stream().map(e -> e.effect().describe(e.values())).toList());
         RobotLibrary.write(trueDesc, out.resolve("true.robot.json"), force);
         spec.commandLine().getOut().printf(Locale.ROOT,
                 "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, frame %s%n  wrote %s%n",
                 desc.name(), poses, validatePoses > 0 ? " + " + validatePoses + " validation" : "", sigmaMm,
                 Units.mToMm(c.nominalErrorRmsM()), c.measurements().frame(), out.toAbsolutePath());
+        if (ec != null)
+            for (int i = 0; i < specs.size(); i++) {
+                Effect.Term term = ec.injected().get(i);
+                spec.commandLine().getOut().printf(Locale.ROOT, "  effect %s (%s)%n", specs.get(i).withSize(term.values()),
+                        EffectSpec.valueUnit(term.effect().kind()));
+            }
         return 0;
     }
 }

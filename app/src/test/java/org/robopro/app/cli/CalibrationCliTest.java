@@ -40,6 +40,8 @@ class CalibrationCliTest {
         for (String k : List.of("nominal_train_rms_mm", "train_rms_mm", "nominal_validate_rms_mm", "validate_rms_mm",
                 "train_max_mm", "validate_max_mm", "parameters", "unidentifiable", "outliers"))
             assertTrue(s.has(k), k);
+        assertEquals(0, s.get("warnings").size(), "same set-up: no warning " + s.get("warnings"));
+        assertFalse(err.toString().contains("warning"), err.toString());
         assertTrue(s.get("validate_rms_mm").asDouble() < 0.045, s.get("validate_rms_mm").toString());
         assertTrue(s.get("nominal_validate_rms_mm").asDouble() > 1);
         JsonNode p0 = s.get("parameters").get(0);
@@ -61,6 +63,23 @@ class CalibrationCliTest {
         // Existing outputs are not overwritten without --force.
         assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
                 "--out", cal.toString()));
+    }
+
+    @Test
+    void calibrate_validationFromAnotherSetUp_warnsInOutputAndSummary() throws Exception {
+        Path a = dir.resolve("a"), b = dir.resolve("b"), cal = dir.resolve("cal");
+        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "80", "--seed", "1", "--out", a.toString()), err.toString());
+        // Another seed: another robot and another tracker pose (frame), as a file from another session would be.
+        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "40", "--seed", "2", "--out", b.toString()), err.toString());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", a.resolve("measurements.csv").toString(),
+                "--validate", b.resolve("measurements.csv").toString(), "--out", cal.toString()), err.toString());
+        JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
+        assertTrue(s.get("validate_rms_mm").asDouble() > 10 * s.get("train_rms_mm").asDouble());
+        assertEquals(1, s.get("warnings").size(), s.get("warnings").toString());
+        String w = s.get("warnings").get(0).asText();
+        assertTrue(w.contains("different instrument set-up or robot") && w.contains("seed 1") && w.contains("seed 2"), w);
+        assertTrue(err.toString().contains("robopro: warning: validation RMS"), err.toString());
+        assertTrue(Files.readString(cal.resolve("report.html")).contains("Warning:"));
     }
 
     @Test

@@ -8,14 +8,10 @@ import java.util.Locale;
 import java.util.Random;
 import java.util.Set;
 import java.util.function.Consumer;
-import org.robopro.calibration.JointEffect;
-import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.calibration.simulation.Campaign;
-import org.robopro.calibration.simulation.CampaignSimulator;
 import org.robopro.calibration.simulation.SimulationSettings;
-import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
@@ -29,17 +25,11 @@ import org.robopro.models.Vec3;
  * effects, validation RMS over the noise floor √3 σ on 100 further poses.
  */
 public final class ConcealedEffectBenchmark {
-    /** Seconds between poses of a campaign (time_s). */
-    static final double SECONDS_PER_POSE = 20;
-
-    /** One injected effect: how to draw its size. */
-    @FunctionalInterface
-    interface Injector {
-        Effect.Term draw(KinematicModel model, GravityTorques g, Random rng);
+    /** A benchmark case: the effects injected (sizes drawn, {@link EffectSpec#draw}) and whether outliers are added. */
+    record Case(String name, List<EffectSpec> effects, boolean outliers) {
+        /** Compliance cases vary the payload (the campaign writes payload_kg). */
+        boolean payloadVaries() { return effects.stream().anyMatch(e -> e.kind() == Effect.Kind.COMPLIANCE); }
     }
-
-    /** A benchmark case. */
-    record Case(String name, List<Injector> effects, boolean payloadVaries, boolean outliers) { }
 
     /** Scores of one case over its seeds. */
     public record Row(String name, int runs, int namedRight, int jointsRight, int runsWithFalse, double meanValRatio,
@@ -72,71 +62,39 @@ public final class ConcealedEffectBenchmark {
 
     private ConcealedEffectBenchmark() { }
 
-    // ------------------------------------------------------------------ effect sizes (issue 4)
+    static double uniform(Random r, double lo, double hi) { return EffectSpec.uniform(r, lo, hi); }
 
-    static double uniform(Random r, double lo, double hi) { return lo + (hi - lo) * r.nextDouble(); }
-
-    static double signed(Random r, double lo, double hi) { return (r.nextBoolean() ? 1 : -1) * uniform(r, lo, hi); }
-
-    static Injector compliance(int joint) {
-        return (m, g, r) -> new Effect.Term(Effect.compliance(joint, g), new double[] {1 / uniform(r, 0.5e6, 2e6)});
-    }
-
-    static Injector periodic(int joint) {
-        boolean wrist = joint >= 3;
-        return (m, g, r) -> {
-            double[] v = new double[2 * Effect.HARMONICS];
-            for (int h = 0; h < Effect.HARMONICS; h++) {
-                double a = Math.toRadians(wrist ? uniform(r, 0.02, 0.05) : uniform(r, 0.004, 0.01));
-                double ph = 2 * Math.PI * r.nextDouble();
-                v[2 * h] = a * Math.cos(ph);
-                v[2 * h + 1] = a * Math.sin(ph);
-            }
-            return new Effect.Term(Effect.periodic(joint), v);
-        };
-    }
-
-    static Injector backlash(int joint) {
-        return (m, g, r) -> new Effect.Term(Effect.backlash(joint), new double[] {Math.toRadians(uniform(r, 0.02, 0.05))});
-    }
-
-    static Injector thermal() {
-        return (m, g, r) -> new Effect.Term(Effect.thermal(AMBIENT_C), new double[] {uniform(r, 12e-6, 23e-6)});
-    }
-
-    static Injector scale(int joint) {
-        return (m, g, r) -> new Effect.Term(Effect.scale(joint), new double[] {signed(r, 1e-4, 3e-4)});
-    }
-
-    static Injector coupling(int target, int source) {
-        return (m, g, r) -> new Effect.Term(Effect.coupling(target, source), new double[] {signed(r, 3e-4, 10e-4)});
-    }
-
-    static final double AMBIENT_C = 20;
+    // Effects with sizes drawn from issue 4's ranges (EffectSpec), joints 0-based here as in the case list.
+    private static EffectSpec compliance(int joint) { return EffectSpec.of(Effect.Kind.COMPLIANCE, joint + 1); }
+    private static EffectSpec periodic(int joint) { return EffectSpec.of(Effect.Kind.PERIODIC, joint + 1); }
+    private static EffectSpec backlash(int joint) { return EffectSpec.of(Effect.Kind.BACKLASH, joint + 1); }
+    private static EffectSpec thermal() { return EffectSpec.thermal(); }
+    private static EffectSpec scale(int joint) { return EffectSpec.of(Effect.Kind.SCALE, joint + 1); }
+    private static EffectSpec coupling(int target, int source) { return EffectSpec.coupling(target + 1, source + 1); }
 
     /** The cases of the benchmark (joints 0-based here, 1-based in names). */
     static List<Case> cases() {
         List<Case> c = new ArrayList<>();
-        c.add(new Case("null (geometric errors only)", List.of(), false, false));
-        c.add(new Case("null with outliers", List.of(), false, true));
-        c.add(new Case("joint-compliance j2", List.of(compliance(1)), true, false));
-        c.add(new Case("joint-compliance j3", List.of(compliance(2)), true, false));
-        c.add(new Case("gear-periodic j1", List.of(periodic(0)), false, false));
-        c.add(new Case("gear-periodic j2", List.of(periodic(1)), false, false));
-        c.add(new Case("gear-periodic j3", List.of(periodic(2)), false, false));
-        c.add(new Case("gear-periodic j5 (wrist)", List.of(periodic(4)), false, false));
-        c.add(new Case("backlash j1", List.of(backlash(0)), false, false));
-        c.add(new Case("backlash j2", List.of(backlash(1)), false, false));
-        c.add(new Case("backlash j3", List.of(backlash(2)), false, false));
-        c.add(new Case("thermal-expansion", List.of(thermal()), false, false));
-        c.add(new Case("joint-scale j1", List.of(scale(0)), false, false));
-        c.add(new Case("joint-scale j2", List.of(scale(1)), false, false));
-        c.add(new Case("joint-coupling j3<-j2", List.of(coupling(2, 1)), false, false));
-        c.add(new Case("joint-compliance j2 + j3", List.of(compliance(1), compliance(2)), true, false));
-        c.add(new Case("backlash j2 + thermal-expansion", List.of(backlash(1), thermal()), false, false));
-        c.add(new Case("gear-periodic j1 + joint-scale j3", List.of(periodic(0), scale(2)), false, false));
-        c.add(new Case("joint-coupling j3<-j2 + backlash j1", List.of(coupling(2, 1), backlash(0)), false, false));
-        c.add(new Case("backlash j2 with outliers", List.of(backlash(1)), false, true));
+        c.add(new Case("null (geometric errors only)", List.of(), false));
+        c.add(new Case("null with outliers", List.of(), true));
+        c.add(new Case("joint-compliance j2", List.of(compliance(1)), false));
+        c.add(new Case("joint-compliance j3", List.of(compliance(2)), false));
+        c.add(new Case("gear-periodic j1", List.of(periodic(0)), false));
+        c.add(new Case("gear-periodic j2", List.of(periodic(1)), false));
+        c.add(new Case("gear-periodic j3", List.of(periodic(2)), false));
+        c.add(new Case("gear-periodic j5 (wrist)", List.of(periodic(4)), false));
+        c.add(new Case("backlash j1", List.of(backlash(0)), false));
+        c.add(new Case("backlash j2", List.of(backlash(1)), false));
+        c.add(new Case("backlash j3", List.of(backlash(2)), false));
+        c.add(new Case("thermal-expansion", List.of(thermal()), false));
+        c.add(new Case("joint-scale j1", List.of(scale(0)), false));
+        c.add(new Case("joint-scale j2", List.of(scale(1)), false));
+        c.add(new Case("joint-coupling j3<-j2", List.of(coupling(2, 1)), false));
+        c.add(new Case("joint-compliance j2 + j3", List.of(compliance(1), compliance(2)), false));
+        c.add(new Case("backlash j2 + thermal-expansion", List.of(backlash(1), thermal()), false));
+        c.add(new Case("gear-periodic j1 + joint-scale j3", List.of(periodic(0), scale(2)), false));
+        c.add(new Case("joint-coupling j3<-j2 + backlash j1", List.of(coupling(2, 1), backlash(0)), false));
+        c.add(new Case("backlash j2 with outliers", List.of(backlash(1)), true));
         return c;
     }
 
@@ -156,37 +114,17 @@ public final class ConcealedEffectBenchmark {
     }
 
     static Trial trial(RobotDescription robot, Case c, long seed, int fixedPoses) {
-        KinematicModel nominal = KinematicModel.build(robot);
-        GravityTorques g = new GravityTorques(nominal, robot.massModel().orElseThrow());
         Random r = new Random(seed * 7919 + 17);
         int drawn = 100 + r.nextInt(201);
         int poses = fixedPoses > 0 ? fixedPoses : drawn;
         double sigma = uniform(r, 0.01e-3, 0.05e-3);
         double error = uniform(r, 2e-3, 10e-3);
-        List<Effect.Term> truth = new ArrayList<>();
-        for (Injector in : c.effects()) truth.add(in.draw(nominal, g, r));
-        List<JointEffect> effects = new ArrayList<>();
-        for (Effect.Term t : truth) effects.add(t.effect().truth(t.values()));
-        double warm = uniform(r, 10, 15), tau = uniform(r, 900, 2400);
-        double rated = robot.massModel().get().ratedPayloadKg();
-        boolean payload = c.payloadVaries();
-        double[] prev = new double[1];
-        double[][] prevQ = {null};
-        Random cr = new Random(seed * 31 + 5);
-        CampaignSimulator.ConditionsSource src = (rng, q, i) -> {
-            // Approach directions: the sign of each joint's move from the previous pose (the sequence as measured).
-            int[] dir = new int[q.length];
-            for (int j = 0; j < q.length; j++)
-                dir[j] = prevQ[0] == null ? (cr.nextBoolean() ? 1 : -1) : (q[j] >= prevQ[0][j] ? 1 : -1);
-            prevQ[0] = q.clone();
-            double t = i * SECONDS_PER_POSE + uniform(cr, 0, 2);
-            double temp = AMBIENT_C + warm * (1 - Math.exp(-t / tau)) + 0.05 * cr.nextGaussian();
-            double pl = payload ? rated * ((i / 15) % 3) / 2.0 : Double.NaN;
-            return new PoseConditions(dir, t, temp, pl);
-        };
         SimulationSettings s = SimulationSettings.defaults().withPoses(poses).withValidatePoses(100).withSigma(sigma)
                 .withError(error).withSeed(seed);
-        Campaign camp = CampaignSimulator.simulate(nominal, s, effects, src);
+        // Effect sizes, then the warm-up, from r; the conditions' own noise from a second seed.
+        EffectCampaign ec = EffectCampaign.simulate(robot, s, c.effects(), r, seed * 31 + 5);
+        Campaign camp = ec.campaign();
+        List<Effect.Term> truth = ec.injected();
         Set<String> outlierIds = new LinkedHashSet<>();
         if (c.outliers()) {
             List<Measurement> rows = new ArrayList<>(camp.measurements().rows());

@@ -13,6 +13,7 @@ import org.robopro.calibration.identification.CalibrationResult.ParameterEstimat
 import org.robopro.calibration.identification.CalibrationResult.PoseError;
 import org.robopro.calibration.identification.Identifiability;
 import org.robopro.calibration.identification.LevenbergMarquardt;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 
@@ -46,7 +47,47 @@ public final class CalibrationReport {
 
     private static Double mm(double m) { return Double.isNaN(m) ? null : Units.mToMm(m); }
 
+    /** Validation RMS this many times the training RMS, and above {@link #VALIDATION_SUSPECT_M}, is suspect. */
+    public static final double VALIDATION_SUSPECT_RATIO = 10;
+    public static final double VALIDATION_SUSPECT_M = 1e-3;
+
+    /**
+     * Warnings about a calibration's data: a validation RMS more than 10x the training RMS and above
+     * 1 mm means the validation file was almost certainly measured with another instrument set-up
+     * (instrument frame) or on another robot — the instrument pose identified from the training file
+     * does not hold for it — rather than that the model is bad. {@code train} and {@code validate}
+     * (may be null) let the message name the metadata that differ.
+     */
+    public static List<String> warnings(CalibrationResult r, MeasurementSet train, MeasurementSet validate) {
+        List<String> w = new ArrayList<>();
+        if (r.validate().isEmpty()) return w;
+        double tr = r.trainRmsM(), va = r.validateRmsM();
+        if (va > VALIDATION_SUSPECT_M && va > VALIDATION_SUSPECT_RATIO * tr) {
+            StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
+                    "validation RMS %.3f mm is %.0fx the training RMS %.4f mm: the validation file was probably measured with a "
+                            + "different instrument set-up or robot (a different frame / instrument pose, or a simulation with another "
+                            + "seed), so the instrument pose fitted on the training file does not apply to it; validate with poses "
+                            + "measured in the same set-up (same session, or the file's set column)", Units.mToMm(va), va / tr, Units.mToMm(tr)));
+            if (train != null && validate != null) {
+                List<String> diff = new ArrayList<>();
+                if (!train.frame().equalsIgnoreCase(validate.frame())) diff.add("frame '" + train.frame() + "' vs '" + validate.frame() + "'");
+                for (String k : List.of("robot", "instrument")) {
+                    String a = train.metadata().get(k), b = validate.metadata().get(k);
+                    if (a != null && b != null && !a.equals(b)) diff.add(k + " '" + a + "' vs '" + b + "'");
+                }
+                if (!diff.isEmpty()) sb.append("; the files differ: ").append(String.join(", ", diff));
+            }
+            w.add(sb.toString());
+        }
+        return w;
+    }
+
     public static Map<String, Object> summary(CalibrationResult r, Context ctx) {
+        return summary(r, ctx, warnings(r, null, null));
+    }
+
+    /** The summary with these {@code warnings} (see {@link #warnings}). */
+    public static Map<String, Object> summary(CalibrationResult r, Context ctx, List<String> warnings) {
         Map<String, Object> s = new LinkedHashMap<>();
         s.put("robot", ctx.robot());
         s.put("measurements", ctx.measurements());
@@ -105,6 +146,7 @@ public final class CalibrationReport {
         solver.put("fit", lm(r.fit()));
         s.put("solver", solver);
         s.put("elapsed_ms", r.elapsedMs());
+        s.put("warnings", List.copyOf(warnings));
         return s;
     }
 
@@ -131,8 +173,12 @@ public final class CalibrationReport {
     }
 
     public static String summaryJson(CalibrationResult r, Context ctx) {
+        return summaryJson(r, ctx, warnings(r, null, null));
+    }
+
+    public static String summaryJson(CalibrationResult r, Context ctx, List<String> warnings) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx)) + "\n";
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx, warnings)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }
@@ -141,6 +187,11 @@ public final class CalibrationReport {
     // ------------------------------------------------------------------ HTML
 
     public static String html(CalibrationResult r, Context ctx) {
+        return html(r, ctx, warnings(r, null, null));
+    }
+
+    /** The report with these {@code warnings} shown under the header. */
+    public static String html(CalibrationResult r, Context ctx, List<String> warnings) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration of ")
          .append(Html.esc(ctx.robot())).append("</title><style>")
@@ -153,6 +204,7 @@ public final class CalibrationReport {
         if (ctx.validation() != null) h.append("; validation: <code>").append(Html.esc(ctx.validation())).append("</code>");
         h.append(". ").append(r.train().size()).append(" training poses").append(r.sixD() ? " with orientations" : " (positions)")
          .append(", ").append(r.validate().size()).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");
+        for (String w : warnings) h.append("<p class=\"warn\"><b>Warning:</b> ").append(Html.esc(w)).append("</p>\n");
 
         h.append("<h2>Result</h2><table><tr><th class=\"l\"></th><th>nominal model</th><th>calibrated</th></tr>");
         row(h, "training RMS (mm)", r.nominalTrainRmsM(), r.trainRmsM());

@@ -131,6 +131,14 @@ public final class CampaignSimulator {
      * the instrument pose, the measured point and tool frame, noise, seed, and the nominal error.
      */
     public static String truthJson(Campaign c) {
+        return truthJson(c, null);
+    }
+
+    /**
+     * The truth as JSON with {@code effects} given by the caller (e.g. each injected effect with its
+     * values, as diagnosis describes them) instead of the effects' names; null: the names.
+     */
+    public static String truthJson(Campaign c, List<? extends Map<String, ?>> effectEntries) {
         Map<String, Object> root = new LinkedHashMap<>();
         SimulationSettings s = c.settings();
         root.put("robot", c.nominal().description().name());
@@ -158,7 +166,7 @@ public final class CampaignSimulator {
         root.put("parameters", params);
         List<String> eff = new ArrayList<>();
         for (JointEffect e : c.truth().effects()) eff.add(e.name());
-        root.put("effects", eff);
+        root.put("effects", effectEntries != null ? effectEntries : eff);
         try {
             return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root);
         } catch (IOException e) {
@@ -167,7 +175,12 @@ public final class CampaignSimulator {
     }
 
     public static void writeTruth(Campaign c, Path file, boolean overwrite) throws IOException {
-        AtomicFiles.writeString(file, truthJson(c) + "\n", overwrite);
+        writeTruth(c, null, file, overwrite);
+    }
+
+    /** Writes {@link #truthJson(Campaign, List)}. */
+    public static void writeTruth(Campaign c, List<? extends Map<String, ?>> effectEntries, Path file, boolean overwrite) throws IOException {
+        AtomicFiles.writeString(file, truthJson(c, effectEntries) + "\n", overwrite);
     }
 
     static Map<String, Object> poseJson(Pose p) {

@@ -7,6 +7,7 @@ import org.robopro.calibration.JointEffect;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.simulation.CampaignSimulator;
 import org.robopro.calibration.simulation.SimulationSettings;
+import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.calibration.simulation.TrueRobot;
 import org.robopro.kinematics.IkSolution;
 import org.robopro.kinematics.InverseKinematics;
@@ -22,7 +23,8 @@ import org.robopro.models.Vec3;
  * calibration's campaign simulator makes it (docs/calibration.md): seeded Gaussian errors on every
  * identifiable parameter scaled to the requested RMS flange error, a tracker target on the tool
  * (nominally {@code nominalTarget}, off by 2 mm per axis), a tracker 2.5–3.5 m away at an unknown
- * pose, Gaussian noise — plus the {@link SimEffects} chosen. Immutable.
+ * pose, Gaussian noise — plus the {@link SimEffects} chosen (diagnosis' own effects, sizes drawn
+ * from the seed unless given). Immutable.
  */
 public final class TrueSimulatedRobot implements SimulatedRobot {
 
@@ -30,7 +32,7 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
      * @param errorM        RMS flange position error of the nominal model against the physical robot, m
      * @param noiseM        tracker noise, one sigma per axis, m
      * @param nominalTarget where the tracker target nominally sits on the flange, m
-     * @param effects       effect specs, {@code NAME[:joint]} ({@link SimEffects#NAMES})
+     * @param effects       effect specs, {@code NAME[:JOINT[<-SOURCE]][=VALUE]} (diagnosis' EffectSpec; {@link SimEffects})
      */
     public record Options(double errorM, double noiseM, Vec3 nominalTarget, List<String> effects) {
         public Options {
@@ -52,8 +54,10 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
     private final TrueRobot truth;
     private final InverseKinematics ik;
     private final boolean thermal;
+    private final List<Effect.Term> effects;
 
-    private TrueSimulatedRobot(RobotDescription d, KinematicModel nominal, TrueRobot truth) {
+    private TrueSimulatedRobot(RobotDescription d, KinematicModel nominal, TrueRobot truth, List<Effect.Term> effects) {
+        this.effects = List.copyOf(effects);
         this.description = d;
         this.nominal = nominal;
         this.truth = truth;
@@ -64,18 +68,22 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
     /** The robot of {@code d} with a physical twin made from {@code seed} and {@code o}. */
     public static TrueSimulatedRobot create(RobotDescription d, long seed, Options o) {
         KinematicModel nominal = KinematicModel.build(d);
-        List<JointEffect> effects = SimEffects.parse(o.effects(), nominal);
+        List<Effect.Term> terms = SimEffects.terms(o.effects(), d, nominal, seed);
+        List<JointEffect> effects = SimEffects.joint(terms);
         // Calibration's own construction of the truth (one pose is simulated and thrown away).
         SimulationSettings s = SimulationSettings.defaults().withPoses(1).withError(o.errorM()).withSigma(o.noiseM())
                 .withNominalTarget(o.nominalTarget()).withSeed(seed);
         TrueRobot truth = CampaignSimulator.simulate(nominal, s).truth().withEffects(effects);
-        return new TrueSimulatedRobot(d, nominal, truth);
+        return new TrueSimulatedRobot(d, nominal, truth, terms);
     }
 
-    /** A simulated robot around a given truth (tests). */
+    /** A simulated robot around a given truth (tests); its effects are the truth's. */
     public static TrueSimulatedRobot of(RobotDescription d, KinematicModel nominal, TrueRobot truth) {
-        return new TrueSimulatedRobot(d, nominal, truth);
+        return new TrueSimulatedRobot(d, nominal, truth, List.of());
     }
+
+    /** The non-geometric effects injected by {@link #create}, with their values (SI). */
+    public List<Effect.Term> effects() { return effects; }
 
     public KinematicModel nominalModel() { return nominal; }
 
