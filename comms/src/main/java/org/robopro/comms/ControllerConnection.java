@@ -34,9 +34,16 @@ public final class ControllerConnection implements AutoCloseable {
     private final Process process;          // a simulator process this connection started, or null
     private final ControllerSim inProcess;  // an in-process simulator this connection started, or null
     private final Path tempDir;
+    private final Thread killHook;          // stops the simulator process should this JVM exit without close (Ctrl-C)
 
     private ControllerConnection(ProtocolClient client, CommandInvoker.Options options, String description, Process process,
                                  ControllerSim inProcess, Path tempDir) {
+        this(client, options, description, process, inProcess, tempDir, null);
+    }
+
+    private ControllerConnection(ProtocolClient client, CommandInvoker.Options options, String description, Process process,
+                                 ControllerSim inProcess, Path tempDir, Thread killHook) {
+        this.killHook = killHook;
         this.client = client;
         this.invoker = new CommandInvoker(client, options);
         this.description = description;
@@ -64,7 +71,9 @@ public final class ControllerConnection implements AutoCloseable {
     /**
      * Starts the simulated controller as a separate JVM on loopback TCP (the host and port of
      * {@code options.tcp()}; port 0 picks a free one), waits until it listens (at most
-     * {@code startTimeout}), and connects. The process is stopped by {@link #close()}.
+     * {@code startTimeout}), and connects. The process is stopped by {@link #close()}; should
+     * this JVM end without it, by a shutdown hook (Ctrl-C), and should it be killed outright, the
+     * simulator stops when its standard input (a pipe from this JVM) closes.
      */
     public static ControllerConnection startSimulator(ControllerSim.Config options, Duration startTimeout,
                                                       CommandInvoker.Options invokerOptions) throws IOException {
@@ -78,7 +87,10 @@ public final class ControllerConnection implements AutoCloseable {
         cmd.add(System.getProperty("java.class.path"));
         cmd.add(ControllerSim.class.getName());
         cmd.addAll(options.withPortFile(portFile).toArgs());
+        cmd.add("--stop-on-stdin-eof");
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        Thread hook = new Thread(p::destroyForcibly, "robopro-simulator-kill");
+        Runtime.getRuntime().addShutdownHook(hook);
         try {
             long deadline = System.nanoTime() + startTimeout.toNanos();
             while (!Files.exists(portFile) || Files.readString(portFile).isBlank()) {
@@ -91,9 +103,10 @@ public final class ControllerConnection implements AutoCloseable {
             int port = Integer.parseInt(Files.readString(portFile).strip());
             TcpRequestChannel ch = new TcpRequestChannel(host, port);
             return new ControllerConnection(new ProtocolClient(ch), invokerOptions,
-                    "simulated controller (pid " + p.pid() + ") on " + ch.describe(), p, null, tmp);
+                    "simulated controller (pid " + p.pid() + ") on " + ch.describe(), p, null, tmp, hook);
         } catch (IOException | RuntimeException | InterruptedException e) {
             p.destroyForcibly();
+            removeHook(hook);
             if (e instanceof InterruptedException) {
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted while starting the simulated controller", e);
@@ -141,6 +154,9 @@ public final class ControllerConnection implements AutoCloseable {
     /** The simulator process, when this connection started one. */
     public Optional<Process> simulatorProcess() { return Optional.ofNullable(process); }
 
+    /** The simulator process's output (a temporary file, deleted by {@link #close()}), when this connection started one. */
+    public Optional<Path> simulatorLog() { return Optional.ofNullable(tempDir).map(d -> d.resolve("sim.log")); }
+
     /** Ends the link (cancelling queued commands) and stops the simulator this connection started. Idempotent. */
     @Override
     public void close() {
@@ -157,6 +173,7 @@ public final class ControllerConnection implements AutoCloseable {
                     process.destroyForcibly();
                     Thread.currentThread().interrupt();
                 }
+                removeHook(killHook);
             }
             if (tempDir != null) {
                 try (var files = Files.list(tempDir)) {
@@ -166,6 +183,15 @@ public final class ControllerConnection implements AutoCloseable {
                     // a leftover temp file is harmless
                 }
             }
+        }
+    }
+
+    private static void removeHook(Thread hook) {
+        if (hook == null) return;
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException shuttingDown) {
+            // the JVM is exiting: the hook runs anyway
         }
     }
 

@@ -53,6 +53,9 @@ public final class ControllerSimCommand implements Callable<Integer> {
 
     @Option(names = "--port-file", paramLabel = "FILE", description = "write the bound TCP port to FILE (useful with PORT 0)") Path portFile;
 
+    @Option(names = "--truth-file", paramLabel = "FILE", description = "write what the real robot is (error size, parameters, "
+            + "injected effects with their sizes, noise, seed) to FILE once at start, as JSON (docs/controller-link.md)") Path truthFile;
+
     @Option(names = "--realtime", description = "take the motion time in real time (default: simulated time, answer at once)") boolean realtime;
 
     @Option(names = "--fault-rate", defaultValue = "0", description = "inject faults into this share of replies/frames (testing)") double faultRate;
@@ -62,7 +65,7 @@ public final class ControllerSimCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         try (ControllerSim sim = ControllerSim.start(new ControllerSim.Config(where.tcp, where.serial, baud, robot, seed, errorMm,
-                effects, noiseMm, ControllerSim.parseTargetMm(target), payloadKg, portFile, realtime, faultRate))) {
+                effects, noiseMm, ControllerSim.parseTargetMm(target), payloadKg, portFile, realtime, faultRate, truthFile))) {
             spec.commandLine().getOut().println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where()
                     + "; stop with Ctrl-C");
             if (sim.controller().robot() instanceof TrueSimulatedRobot t)

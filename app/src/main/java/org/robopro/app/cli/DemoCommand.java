@@ -2,7 +2,6 @@ package org.robopro.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.robopro.app.demo.ConcealedEffect;
 import org.robopro.app.demo.Demo;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -21,8 +20,9 @@ public final class DemoCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "seed of the true robot and the campaign (default ${DEFAULT-VALUE})")
     long seed;
 
-    @Option(names = "--effect", defaultValue = ConcealedEffect.DEFAULT, paramLabel = "NAME",
-            description = "concealed non-geometric effect of the true robot: ${COMPLETION-CANDIDATES} (default ${DEFAULT-VALUE})",
+    @Option(names = "--effect", defaultValue = Demo.DEFAULT_EFFECT, paramLabel = "NAME",
+            description = "concealed non-geometric effect of the true robot: ${COMPLETION-CANDIDATES}; optionally NAME:JOINT[=VALUE]"
+                    + " as for controller-sim (default ${DEFAULT-VALUE}, joint drawn from the seed)",
             completionCandidates = EffectNames.class)
     String effect;
 
@@ -42,7 +42,7 @@ public final class DemoCommand implements Callable<Integer> {
     static final class EffectNames extends java.util.ArrayList<String> {
         private static final long serialVersionUID = 1L;
 
-        EffectNames() { super(ConcealedEffect.NAMES); }
+        EffectNames() { super(Demo.EFFECTS); }
     }
 
     @Override

@@ -10,7 +10,9 @@ import java.time.Instant;
 import java.time.temporal.ChronoUnit;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.LinkedHashMap;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Random;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
@@ -23,10 +25,12 @@ import org.robopro.calibration.simulation.PoseSampler;
 import org.robopro.comms.CommandInvoker;
 import org.robopro.comms.Commands;
 import org.robopro.comms.CommsException;
+import org.robopro.comms.ControllerConnection;
 import org.robopro.comms.ControllerStatus;
 import org.robopro.comms.MeasurementCampaign;
 import org.robopro.comms.client.ProtocolClient;
-import org.robopro.comms.client.TcpRequestChannel;
+import org.robopro.comms.sim.ControllerSim;
+import org.robopro.calibration.diagnosis.EffectSpec;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
@@ -63,9 +67,65 @@ public final class Demo {
     /** Tracker noise of the simulated controller, mm per axis. */
     public static final double NOISE_MM = 0.02;
 
+    /** The default concealed effect. */
+    public static final String DEFAULT_EFFECT = "gear-periodic";
+
+    /**
+     * Effects the demo can conceal ("none": geometric errors only), each with the joints (1-based)
+     * the seed picks from when {@code --effect} names no joint: those where the effect is clearly
+     * distinct from geometry (joint 3's periodic error or scale barely is) and, for compliance,
+     * the joints that carry the arm's weight.
+     */
+    static final Map<String, int[]> CONCEALABLE = concealable();
+
+    /** The names of {@link #CONCEALABLE}, in order. */
+    public static final List<String> EFFECTS = List.copyOf(CONCEALABLE.keySet());
+
+    private static Map<String, int[]> concealable() {
+        Map<String, int[]> m = new LinkedHashMap<>();
+        m.put("gear-periodic", new int[] {1, 2});
+        m.put("joint-compliance", new int[] {2, 3});
+        m.put("backlash", new int[] {1, 2, 3});
+        m.put("joint-scale", new int[] {1, 2});
+        m.put("none", new int[0]);
+        return java.util.Collections.unmodifiableMap(m);
+    }
+
+    /**
+     * The simulator's {@code --effect} spec for the demo's {@code --effect}: NAME alone gets a
+     * joint drawn from the seed (its size is drawn by the simulator, docs/diagnosis.md "Injecting
+     * effects"); NAME:JOINT[=VALUE] is passed as given; "none" gives null.
+     *
+     * @throws IllegalArgumentException for an effect the demo cannot conceal or a malformed spec
+     */
+    static String concealedSpec(String effect, long seed) {
+        String e = effect.strip().toLowerCase(Locale.ROOT);
+        String name = e.split("[:=]", 2)[0];
+        if (!CONCEALABLE.containsKey(name))
+            throw new IllegalArgumentException("--effect: unknown effect '" + effect + "'; choose one of " + String.join(", ", EFFECTS)
+                    + " (optionally NAME:JOINT[=VALUE])");
+        if (name.equals("none")) {
+            if (!e.equals("none")) throw new IllegalArgumentException("--effect: 'none' takes no joint or value, got '" + effect + "'");
+            return null;
+        }
+        String spec = e.equals(name) ? name + ":" + pick(CONCEALABLE.get(name), new Random(seed * 1_000_003L + 11)) : e;
+        int joint = EffectSpec.parse(spec).joint(); // malformed: IllegalArgumentException naming the spec
+        if (joint > IRB2000_AXES) throw new IllegalArgumentException("--effect '" + effect + "': the IRB-2000 has joints 1-" + IRB2000_AXES);
+        return spec;
+    }
+
+    private static final int IRB2000_AXES = 6;
+
+    private static int pick(int[] joints, Random rng) { return joints[rng.nextInt(joints.length)]; }
+
+    /** The true robot's RMS geometric flange error of a seed, mm: uniform in 5-15 mm (issue 8). */
+    static double errorMm(long seed) {
+        return 5 + 10 * new Random(seed * 7_919L + 3).nextDouble();
+    }
+
     /**
      * @param seed   seed of the true robot (errors, effect) and of the campaign poses
-     * @param effect the concealed effect ({@link ConcealedEffect#NAMES})
+     * @param effect the concealed effect: a name of {@link #EFFECTS}, optionally NAME:JOINT[=VALUE]
      * @param poses  measured poses of the campaign (every 5th is kept for validation)
      * @param passes welding passes of the program
      * @param out    output folder
@@ -74,8 +134,7 @@ public final class Demo {
         public Options {
             if (poses < 40) throw new IllegalArgumentException("--poses must be at least 40 (the calibration needs more equations than its ~30 unknowns), got " + poses);
             if (passes < 1 || passes > 4) throw new IllegalArgumentException("passes must be 1..4, got " + passes);
-            if (!ConcealedEffect.NAMES.contains(effect.toLowerCase(Locale.ROOT)))
-                throw new IllegalArgumentException("--effect: unknown effect '" + effect + "'; choose one of " + String.join(", ", ConcealedEffect.NAMES));
+            concealedSpec(effect, seed); // fails early, naming the choices
         }
     }
 
@@ -146,18 +205,31 @@ public final class Demo {
         }
         step = 1;
         con.step(1, "Start the simulated IRB-2000 controller");
-        ControllerProcess sim;
+        ControllerConnection sim;
+        Path truthFile;
         try {
             work = Files.createTempDirectory("robopro-demo");
-            sim = ControllerProcess.start(work, out.resolve("controller.log"), o.seed(), o.effect(), NOISE_MM, 60);
-        } catch (IOException e) {
+            truthFile = work.resolve("truth.json");
+            String spec = concealedSpec(o.effect(), o.seed());
+            // The tracker's reflector sits at the torch tip (nominally; the real one is off by ~2 mm).
+            Vec3 tipMm = WeldProgram.torch(CellFile.shipped("irb2000-welding")).position().times(1e3);
+            ControllerSim.Config cfg = ControllerSim.Config.tcp("127.0.0.1:0").withSeed(o.seed()).withErrorMm(errorMm(o.seed()))
+                    .withNoiseMm(NOISE_MM).withTargetMm(tipMm).withEffects(spec == null ? List.of() : List.of(spec))
+                    .withTruthFile(truthFile);
+            sim = ControllerConnection.startSimulator(cfg, Duration.ofSeconds(60),
+                    CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofSeconds(20)));
+        } catch (IOException | RuntimeException e) {
+            deleteQuietly(work);
             throw new StepFailure(1, e.getMessage(), e);
         }
         try (sim) {
-            con.line("own process (pid %d), open_abb protocol on 127.0.0.1:%d, started in %.1f s", sim.pid(), sim.port(), con.stepS());
-            con.line("true robot: seeded geometric errors of 5-15 mm and one concealed effect (--effect %s); log %s",
-                    o.effect(), out.relativize(sim.log()));
-            return loop(sim);
+            con.line("%s (robopro controller-sim: its own JVM, open_abb protocol), started in %.1f s", sim.description(), con.stepS());
+            con.line("true robot: seeded geometric errors of 5-15 mm and one concealed effect (--effect %s)", o.effect());
+            try {
+                return loop(sim, truthFile);
+            } finally {
+                copyLog(sim, out.resolve("controller.log"));
+            }
         } catch (StepFailure e) {
             throw e;
         } catch (CommsException e) {
@@ -172,7 +244,17 @@ public final class Demo {
         }
     }
 
+    private static void copyLog(ControllerConnection sim, Path to) {
+        try {
+            Path log = sim.simulatorLog().orElse(null);
+            if (log != null && Files.exists(log)) AtomicFiles.writeString(to, Files.readString(log), true);
+        } catch (IOException e) {
+            // the log is a convenience; the demo's outcome does not depend on it
+        }
+    }
+
     private static void deleteQuietly(Path dir) {
+        if (dir == null) return;
         try (var s = Files.list(dir)) {
             for (Path p : s.toList()) Files.deleteIfExists(p);
             Files.deleteIfExists(dir);
@@ -194,7 +276,7 @@ public final class Demo {
         Files.createDirectories(out);
     }
 
-    private Result loop(ControllerProcess sim) throws StepFailure, IOException, InterruptedException {
+    private Result loop(ControllerConnection sim, Path truthFile) throws StepFailure, IOException, InterruptedException {
         Path out = o.out();
         // ------------------------------------------------------------------ 2. model, cell, program
         begin(2);
@@ -233,8 +315,9 @@ public final class Demo {
         AtomicFiles.writeString(out.resolve(WeldProgram.MODULE + ".mod"), rapid, true);
         con.line("exported RAPID: %s (%d lines)", WeldProgram.MODULE + ".mod", rapid.split("\n").length);
 
-        try (ProtocolClient client = new ProtocolClient(new TcpRequestChannel("127.0.0.1", sim.port()));
-             CommandInvoker inv = new CommandInvoker(client, CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofSeconds(20)))) {
+        CommandInvoker inv = sim.invoker();
+        ProtocolClient client = sim.client();
+        {
             // -------------------------------------------------------------- 3. run the off-line program
             begin(3);
             con.step(3, "Run the off-line program on the controller and measure the targets");
@@ -270,10 +353,10 @@ public final class Demo {
             // -------------------------------------------------------------- 5. table and report
             begin(5);
             con.step(5, "Before and after");
-            String concealed = DemoReport.concealedEffect(sim.truthFile());
+            String concealed = DemoReport.concealedEffect(truthFile);
             con.line("concealed effect (revealed now): %s; the diagnosis named: %s", concealed,
                     diag.named().isEmpty() ? "nothing" : String.join(", ", diag.named()));
-            Files.copy(sim.truthFile(), out.resolve("truth.json"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            Files.copy(truthFile, out.resolve("truth.json"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             Result r = new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
             for (String line : DemoReport.table(r).split("\n")) con.line("%s", line);
             String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();

@@ -18,10 +18,12 @@ import org.robopro.kinematics.Units;
 final class DemoReport {
     private DemoReport() { }
 
-    /** The concealed effect's label from the controller's truth file. */
+    /** The concealed effect's label ("backlash j2", diagnosis' vocabulary) from the controller's truth file; "none" without one. */
     static String concealedEffect(Path truthFile) throws IOException {
-        JsonNode n = Json.read(Files.readString(truthFile));
-        return n.path("concealed_effect").asText("none");
+        JsonNode effects = Json.read(Files.readString(truthFile)).path("effects");
+        List<String> labels = new ArrayList<>();
+        effects.forEach(e -> labels.add(e.path("label").asText()));
+        return labels.isEmpty() ? "none" : String.join(", ", labels);
     }
 
     static String table(Demo.Result r) {

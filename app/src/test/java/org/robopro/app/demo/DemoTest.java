@@ -14,6 +14,7 @@ import java.util.TreeSet;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.robopro.app.cli.RoboproCommand;
+import org.robopro.comms.sim.ControllerSim;
 import picocli.CommandLine;
 
 /** The whole demo loop with a small campaign: the numbers, the files, and the controller process ended. */
@@ -35,7 +36,7 @@ class DemoTest {
         List<ProcessHandle> l = new ArrayList<>();
         // Descendants of this JVM that are (or may be: the OS may not tell) the demo's controller.
         ProcessHandle.current().descendants().filter(ProcessHandle::isAlive)
-                .filter(p -> p.info().arguments().map(a -> List.of(a).contains(DemoController.class.getName())).orElse(true))
+                .filter(p -> p.info().arguments().map(a -> List.of(a).contains(ControllerSim.class.getName())).orElse(true))
                 .forEach(l::add);
         return l;
     }
@@ -61,7 +62,7 @@ class DemoTest {
         assertTrue(calibrated < 5 * floor, "calibrated mean " + calibrated + " mm within a few noise floors (" + floor + ")");
         assertTrue(j.get("calibrated_max_mm").asDouble() >= calibrated);
         String concealed = j.get("concealed_effect").asText();
-        assertTrue(concealed.startsWith(ConcealedEffect.DEFAULT + " j"), j.toString());
+        assertTrue(concealed.startsWith(Demo.DEFAULT_EFFECT + " j"), j.toString());
         List<String> named = new ArrayList<>();
         j.get("named_effects").forEach(n -> named.add(n.asText()));
         assertEquals(List.of(concealed), named, "the diagnosis names the concealed effect, joint included, and nothing else");
@@ -85,7 +86,7 @@ class DemoTest {
 
     @Test
     void run_stepFailsMidway_stepFailureNamesTheStepAndControllerIsEnded() {
-        Demo.Options o = new Demo.Options(2, ConcealedEffect.DEFAULT, 40, 1, dir.resolve("fail"));
+        Demo.Options o = new Demo.Options(2, Demo.DEFAULT_EFFECT, 40, 1, dir.resolve("fail"));
         List<ProcessHandle> during = new ArrayList<>();
         Demo.StepFailure f = assertThrows(Demo.StepFailure.class, () -> Demo.run(o, new PrintWriter(new StringWriter()), false, k -> {
             if (k == 3) {
@@ -125,9 +126,29 @@ class DemoTest {
     }
 
     @Test
+    void concealedSpec_nameOnly_jointDrawnFromSeedWithinTheEffectsJoints() {
+        for (long seed = 1; seed <= 20; seed++)
+            for (String name : Demo.EFFECTS) {
+                String spec = Demo.concealedSpec(name, seed);
+                if (name.equals("none")) {
+                    assertNull(spec);
+                    continue;
+                }
+                assertEquals(spec, Demo.concealedSpec(name, seed), "the same seed conceals the same effect");
+                int joint = Integer.parseInt(spec.substring(spec.indexOf(':') + 1));
+                assertTrue(java.util.Arrays.stream(Demo.CONCEALABLE.get(name)).anyMatch(j -> j == joint), spec);
+                double e = Demo.errorMm(seed);
+                assertTrue(e >= 5 && e <= 15, "seed " + seed + ": " + e);
+            }
+        assertEquals("backlash:3=0.04", Demo.concealedSpec("backlash:3=0.04", 1), "a full spec is passed as given");
+        assertThrows(IllegalArgumentException.class, () -> Demo.concealedSpec("backlash:9", 1));
+        assertThrows(IllegalArgumentException.class, () -> Demo.concealedSpec("thermal-expansion", 1));
+    }
+
+    @Test
     void demo_unknownEffect_exitCode2NamingTheChoices() {
         Outcome o = run("demo", "--effect", "gremlins", "--out", dir.resolve("x").toString());
         assertEquals(2, o.code());
-        assertTrue(o.err().contains("gremlins") && o.err().contains(ConcealedEffect.DEFAULT), o.err());
+        assertTrue(o.err().contains("gremlins") && o.err().contains(Demo.DEFAULT_EFFECT), o.err());
     }
 }

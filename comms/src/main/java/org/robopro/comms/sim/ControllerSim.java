@@ -4,7 +4,11 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
 import org.robopro.comms.link.FaultInjector;
 import org.robopro.comms.link.FramedLink;
 import org.robopro.comms.link.SerialPortByteLink;
@@ -33,9 +37,11 @@ public final class ControllerSim implements AutoCloseable {
      * @param portFile   file to write the bound TCP port to, or null
      * @param realtime   sleep for the motion time
      * @param faultRate  probability of a fault per reply/frame (tests and demos), 0 for none
+     * @param truthFile  file to write what the real robot is to, once at start (the reveal of a demo), or null
      */
     public record Config(String tcp, String serial, int baud, String robot, long seed, double errorMm, List<String> effects,
-                         double noiseMm, Vec3 targetMm, double payloadKg, Path portFile, boolean realtime, double faultRate) {
+                         double noiseMm, Vec3 targetMm, double payloadKg, Path portFile, boolean realtime, double faultRate,
+                         Path truthFile) {
         public Config {
             if ((tcp == null) == (serial == null)) throw new IllegalArgumentException("give exactly one of --tcp HOST:PORT and --serial DEVICE");
             if (!(errorMm >= 0 && noiseMm >= 0 && faultRate >= 0 && faultRate < 1))
@@ -45,18 +51,26 @@ public final class ControllerSim implements AutoCloseable {
             if (!targetMm.isFinite() || !(payloadKg >= 0)) throw new IllegalArgumentException("--target must be finite and --payload-kg >= 0");
         }
 
-        /** Defaults for a TCP simulator of the IRB-2000 (seed 1, 0.5 mm error, 0.02 mm noise, no effects). */
-        public static Config tcp(String hostPort) {
-            return new Config(hostPort, null, 115200, "irb2000", 1, 0.5, List.of(), 0.02, null, 0, null, false, 0);
+        /** Without a truth file. */
+        public Config(String tcp, String serial, int baud, String robot, long seed, double errorMm, List<String> effects,
+                      double noiseMm, Vec3 targetMm, double payloadKg, Path portFile, boolean realtime, double faultRate) {
+            this(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, null);
         }
 
-        public Config withSeed(long s) { return new Config(tcp, serial, baud, robot, s, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
-        public Config withRobot(String r) { return new Config(tcp, serial, baud, r, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
-        public Config withErrorMm(double e) { return new Config(tcp, serial, baud, robot, seed, e, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
-        public Config withNoiseMm(double n) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, n, targetMm, payloadKg, portFile, realtime, faultRate); }
-        public Config withEffects(List<String> e) { return new Config(tcp, serial, baud, robot, seed, errorMm, e, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
-        public Config withPortFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, f, realtime, faultRate); }
-        public Config withFaultRate(double r) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, r); }
+        /** Defaults for a TCP simulator of the IRB-2000 (seed 1, 0.5 mm error, 0.02 mm noise, no effects). */
+        public static Config tcp(String hostPort) {
+            return new Config(hostPort, null, 115200, "irb2000", 1, 0.5, List.of(), 0.02, null, 0, null, false, 0, null);
+        }
+
+        public Config withSeed(long s) { return new Config(tcp, serial, baud, robot, s, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
+        public Config withRobot(String r) { return new Config(tcp, serial, baud, r, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
+        public Config withErrorMm(double e) { return new Config(tcp, serial, baud, robot, seed, e, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
+        public Config withNoiseMm(double n) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, n, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
+        public Config withEffects(List<String> e) { return new Config(tcp, serial, baud, robot, seed, errorMm, e, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
+        public Config withPortFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, f, realtime, faultRate, truthFile); }
+        public Config withFaultRate(double r) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, r, truthFile); }
+        public Config withTargetMm(Vec3 t) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, t, payloadKg, portFile, realtime, faultRate, truthFile); }
+        public Config withTruthFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, f); }
 
         /** The stand-alone command line for these settings (for {@link ControllerSim#main}). */
         public List<String> toArgs() {
@@ -68,6 +82,7 @@ public final class ControllerSim implements AutoCloseable {
             for (String e : effects) { a.add("--effect"); a.add(e); }
             if (portFile != null) { a.add("--port-file"); a.add(portFile.toString()); }
             if (realtime) a.add("--realtime");
+            if (truthFile != null) { a.add("--truth-file"); a.add(truthFile.toString()); }
             return a;
         }
     }
@@ -98,6 +113,7 @@ public final class ControllerSim implements AutoCloseable {
                 new TrueSimulatedRobot.Options(Units.mmToM(c.errorMm()), Units.mmToM(c.noiseMm()), c.targetMm().times(1e-3), c.effects()));
         SimulatedController controller = new SimulatedController(robot,
                 SimulatedController.Settings.defaults(c.seed()).withRealtime(c.realtime()).withPayload(c.payloadKg()));
+        if (c.truthFile() != null) writeTruth(c, robot);
         ProtocolHandler handler = new ProtocolHandler(controller);
         FaultInjector faults = c.faultRate() > 0 ? FaultInjector.uniform(c.seed() + 1, c.faultRate(), 30) : null;
         if (c.tcp() != null) {
@@ -120,6 +136,24 @@ public final class ControllerSim implements AutoCloseable {
         return new ControllerSim(controller, server, "serial " + c.serial() + " at " + c.baud() + " baud");
     }
 
+    /**
+     * The truth file ({@code --truth-file}): the robot's {@link TrueSimulatedRobot#truthJson()}
+     * (simulate's truth.json, effects with their drawn sizes) plus the simulator's settings:
+     * {@code error_mm} as asked, {@code noise_mm}, {@code payload_kg}, the warm-up when thermal.
+     * Written once, before the simulator listens; an existing file is replaced (it is the simulator's own output).
+     */
+    private static void writeTruth(Config c, TrueSimulatedRobot robot) throws IOException {
+        Map<String, Object> root = new LinkedHashMap<>();
+        root.put("format", "robopro-controller-sim-truth 1");
+        root.put("error_mm", c.errorMm());
+        root.put("noise_mm", c.noiseMm());
+        root.put("payload_kg", c.payloadKg());
+        root.put("effect_specs", c.effects());
+        if (robot.thermal()) root.put("warmup", Map.of("t0_c", SimEffects.T0_C, "rise_k", SimEffects.WARMUP_K, "tau_s", SimEffects.WARMUP_TAU_S));
+        root.putAll(robot.truthJson());
+        AtomicFiles.writeString(c.truthFile(), new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root) + "\n", true);
+    }
+
     public SimulatedController controller() { return controller; }
 
     /** The bound TCP motion port, or -1 for a serial simulator. */
@@ -137,8 +171,10 @@ public final class ControllerSim implements AutoCloseable {
     /**
      * Stand-alone entry: {@code --tcp HOST:PORT | --serial DEVICE [--baud N] [--robot NAME] [--seed N]
      * [--error-mm X] [--effect NAME[:joint]]... [--noise-mm X] [--target X,Y,Z] [--payload-kg M] [--port-file FILE]
-     * [--realtime] [--fault-rate R]}.
-     * Runs until killed.
+     * [--realtime] [--fault-rate R] [--truth-file FILE] [--stop-on-stdin-eof]}.
+     * Runs until killed; with {@code --stop-on-stdin-eof} also until its standard input ends, so
+     * that a simulator started by another JVM ({@code ControllerConnection.startSimulator}) dies
+     * with it even when that JVM is killed outright.
      */
     public static void main(String[] args) throws Exception {
         String tcp = null, serial = null, robot = "irb2000";
@@ -147,12 +183,13 @@ public final class ControllerSim implements AutoCloseable {
         double error = 0.5, noise = 0.02, faultRate = 0, payload = 0;
         Vec3 target = null;
         List<String> effects = new ArrayList<>();
-        Path portFile = null;
-        boolean realtime = false;
+        Path portFile = null, truthFile = null;
+        boolean realtime = false, stopOnEof = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
                 case "--realtime" -> realtime = true;
+                case "--stop-on-stdin-eof" -> stopOnEof = true;
                 default -> {
                     if (i + 1 >= args.length) throw new IllegalArgumentException("option " + a + " needs a value");
                     String v = args[++i];
@@ -169,14 +206,24 @@ public final class ControllerSim implements AutoCloseable {
                         case "--target" -> target = parseTargetMm(v);
                         case "--payload-kg" -> payload = Double.parseDouble(v);
                         case "--fault-rate" -> faultRate = Double.parseDouble(v);
+                        case "--truth-file" -> truthFile = Path.of(v);
                         default -> throw new IllegalArgumentException("unknown option " + a);
                     }
                 }
             }
         }
         ControllerSim sim = start(new Config(tcp, serial, baud, robot, seed, error, effects, noise, target, payload, portFile, realtime,
-                faultRate));
+                faultRate, truthFile));
         System.out.println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where());
+        System.out.flush();
+        if (stopOnEof) {
+            while (System.in.read() >= 0) {
+                // input is ignored; its end means the parent is gone
+            }
+            System.out.println("robopro controller-sim: standard input closed, stopping");
+            sim.close();
+            System.exit(0);
+        }
         Thread.currentThread().join();
     }
 }

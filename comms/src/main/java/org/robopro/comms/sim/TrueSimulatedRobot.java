@@ -1,11 +1,21 @@
 package org.robopro.comms.sim;
 
+import com.fasterxml.jackson.core.type.TypeReference;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Random;
 import org.robopro.calibration.JointEffect;
 import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.diagnosis.EffectSpec;
+import org.robopro.calibration.simulation.Campaign;
 import org.robopro.calibration.simulation.CampaignSimulator;
+import org.robopro.calibration.simulation.PoseSampler;
+import org.robopro.kinematics.Units;
 import org.robopro.calibration.simulation.SimulationSettings;
 import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.calibration.simulation.TrueRobot;
@@ -55,9 +65,14 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
     private final InverseKinematics ik;
     private final boolean thermal;
     private final List<Effect.Term> effects;
+    private final List<String> specs;       // the effect specs as given, or empty
+    private final Campaign campaign;        // calibration's construction of the truth, or null (tests' own truth)
 
-    private TrueSimulatedRobot(RobotDescription d, KinematicModel nominal, TrueRobot truth, List<Effect.Term> effects) {
+    private TrueSimulatedRobot(RobotDescription d, KinematicModel nominal, TrueRobot truth, List<Effect.Term> effects,
+                               List<String> specs, Campaign campaign) {
         this.effects = List.copyOf(effects);
+        this.specs = List.copyOf(specs);
+        this.campaign = campaign;
         this.description = d;
         this.nominal = nominal;
         this.truth = truth;
@@ -73,13 +88,42 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
         // Calibration's own construction of the truth (one pose is simulated and thrown away).
         SimulationSettings s = SimulationSettings.defaults().withPoses(1).withError(o.errorM()).withSigma(o.noiseM())
                 .withNominalTarget(o.nominalTarget()).withSeed(seed);
-        TrueRobot truth = CampaignSimulator.simulate(nominal, s).truth().withEffects(effects);
-        return new TrueSimulatedRobot(d, nominal, truth, terms);
+        Campaign c = CampaignSimulator.simulate(nominal, s);
+        return new TrueSimulatedRobot(d, nominal, c.truth().withEffects(effects), terms, o.effects(), c);
     }
 
     /** A simulated robot around a given truth (tests); its effects are the truth's. */
     public static TrueSimulatedRobot of(RobotDescription d, KinematicModel nominal, TrueRobot truth) {
-        return new TrueSimulatedRobot(d, nominal, truth, List.of());
+        return new TrueSimulatedRobot(d, nominal, truth, List.of(), List.of(), null);
+    }
+
+    /**
+     * What the physical robot really is, as JSON: {@code robopro simulate}'s truth.json (robot,
+     * seed, tracker noise {@code sigma_mm}, {@code nominal_flange_rms_mm} (over 200 poses drawn by
+     * calibration's pose rule from the seed), tracker pose, target on
+     * the flange, every parameter nominal and true) whose {@code effects} are diagnosis' truth
+     * entries (spec with the drawn size, effect, joints, SI parameters) each with its diagnosis
+     * {@code label} ("backlash j2"). Only for a robot made by {@link #create}.
+     */
+    public Map<String, Object> truthJson() {
+        if (campaign == null) throw new IllegalStateException("no truth record: this robot was not made by TrueSimulatedRobot.create");
+        List<Map<String, Object>> entries = new ArrayList<>();
+        for (int i = 0; i < effects.size(); i++) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("label", effects.get(i).effect().label());
+            e.putAll(EffectSpec.truthEntry(EffectSpec.parse(specs.get(i)), effects.get(i)));
+            entries.add(e);
+        }
+        try {
+            Map<String, Object> m = new ObjectMapper().readValue(CampaignSimulator.truthJson(campaign, entries),
+                    new TypeReference<LinkedHashMap<String, Object>>() { });
+            // The campaign that made the truth had one pose: measure the error over the workspace instead.
+            List<double[]> poses = new PoseSampler(nominal).sample(200, new Random(campaign.settings().seed()));
+            m.put("nominal_flange_rms_mm", Units.mToMm(CampaignSimulator.flangeRms(nominal, truth.model(), poses)));
+            return m;
+        } catch (IOException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     /** The non-geometric effects injected by {@link #create}, with their values (SI). */

@@ -101,6 +101,54 @@ class ControllerSimProcessTest {
         }
     }
 
+    @Test
+    void truthFile_effectWithoutValue_recordsTheDrawnSizeTheRobotHas() throws Exception {
+        Path truth = dir.resolve("truth.json");
+        ControllerSim.Config c = ControllerSim.Config.tcp("127.0.0.1:0").withSeed(5).withErrorMm(8).withEffects(List.of("backlash:3"))
+                .withTruthFile(truth);
+        try (ControllerSim sim = ControllerSim.start(c)) {
+            var root = new com.fasterxml.jackson.databind.ObjectMapper().readTree(truth.toFile());
+            TrueSimulatedRobot robot = (TrueSimulatedRobot) sim.controller().robot();
+            assertEquals(5, root.get("seed").asLong());
+            assertEquals(8, root.get("error_mm").asDouble());
+            assertEquals(0.02, root.get("noise_mm").asDouble());
+            assertEquals(8, root.get("nominal_flange_rms_mm").asDouble(), 1.5, "the error over the workspace is near the one asked for");
+            assertEquals(1, root.get("effects").size());
+            var e = root.get("effects").get(0);
+            assertEquals("backlash j3", e.get("label").asText());
+            double playRad = robot.effects().get(0).values()[0];
+            assertEquals(playRad, e.get("parameters_si").get("b").asDouble(), 1e-15, e.toString());
+            double deg = Math.toDegrees(playRad);
+            assertTrue(deg >= 0.02 && deg <= 0.05, "drawn in issue 4's range: " + deg);
+            // The recorded spec reproduces the robot exactly.
+            TrueSimulatedRobot again = TrueSimulatedRobot.create(RobotLibrary.load("irb2000"), 9,
+                    TrueSimulatedRobot.Options.defaults().withEffects(List.of(e.get("spec").asText())));
+            assertEquals(playRad, again.effects().get(0).values()[0], 1e-12);
+        }
+    }
+
+    @Test
+    void startedByAnotherJvm_stdinClosed_simulatorStops() throws Exception {
+        Path portFile = dir.resolve("port");
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), ControllerSim.class.getName(),
+                "--tcp", "127.0.0.1:0", "--port-file", portFile.toString(), "--stop-on-stdin-eof")
+                .redirectErrorStream(true).redirectOutput(dir.resolve("sim.log").toFile()).start();
+        try {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (!Files.exists(portFile) || Files.readString(portFile).isBlank()) {
+                assertTrue(p.isAlive() && System.nanoTime() < deadline, () -> "simulator did not start: " + read(dir.resolve("sim.log")));
+                Thread.sleep(50);
+            }
+            assertTrue(p.isAlive());
+            p.getOutputStream().close(); // what the OS does when the parent JVM dies
+            assertTrue(p.waitFor(10, TimeUnit.SECONDS), "the simulator stops when its parent's pipe closes");
+            assertEquals(0, p.exitValue());
+        } finally {
+            p.destroyForcibly();
+        }
+    }
+
     private static String read(Path p) {
         try {
             return Files.exists(p) ? Files.readString(p) : "(no output)";
