@@ -22,6 +22,7 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -35,14 +36,9 @@ import picocli.CommandLine.Spec;
 @Command(name = "calibrate", mixinStandardHelpOptions = true,
         description = "Identify a robot's geometry from measurements; write the calibrated model and a report.")
 public final class CalibrateCommand implements Callable<Integer> {
-    @Option(names = "--robot", required = true, paramLabel = "ROBOT", description = "shipped robot name or robot file (the nominal model)")
-    String robot;
+    @Mixin RobotOptions robot;
 
-    @Option(names = "--measurements", required = true, paramLabel = "FILE", description = "measurement file (docs/measurement-file.md)")
-    Path measurements;
-
-    @Option(names = "--validate", paramLabel = "FILE", description = "measurement file of validation poses")
-    Path validate;
+    @Mixin MeasurementOptions measurements;
 
     @Option(names = "--holdout", paramLabel = "FRACTION",
             description = "without --validate or a set column: keep every (1/FRACTION)-th pose out of the fit for validation")
@@ -58,35 +54,19 @@ public final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--keep-outliers", description = "report outliers but keep them in the fit")
     boolean keepOutliers;
 
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
-
-    @Option(names = "--force", description = "replace existing files in DIR")
-    boolean force;
+    @Mixin OutputDirOptions out;
 
     @Spec CommandSpec spec;
 
     @Override
     public Integer call() throws Exception {
-        RobotDescription desc = RobotLibrary.load(robot);
-        KinematicModel nominal = KinematicModel.build(desc);
-        MeasurementSet all = MeasurementReader.read(measurements, desc);
-        MeasurementSet train = all, val = null;
-        if (validate != null) val = MeasurementReader.read(validate, desc);
-        else if (all.hasSplit()) {
-            train = all.split(Measurement.Split.TRAIN);
-            val = all.split(Measurement.Split.VALIDATE);
-            if (val.size() == 0) val = null;
-        } else if (holdout != null) {
-            if (!(holdout > 0 && holdout < 1)) throw new IllegalArgumentException("--holdout must be between 0 and 1, got " + holdout);
-            int every = (int) Math.max(2, Math.round(1 / holdout));
-            java.util.List<Measurement> tr = new java.util.ArrayList<>(), va = new java.util.ArrayList<>();
-            for (int i = 0; i < all.size(); i++) (i % every == every - 1 ? va : tr).add(all.rows().get(i));
-            train = all.withRows(tr);
-            val = all.withRows(va);
-        }
+        RobotDescription desc = robot.description();
+        KinematicModel nominal = robot.model();
+        MeasurementOptions.Data data = measurements.read(desc, holdout);
+        MeasurementSet all = data.all(), train = data.train(), val = data.validate();
         if (all.robot() != null && !all.robot().equalsIgnoreCase(desc.name()))
-            spec.commandLine().getErr().printf("robopro: warning: %s was measured on '%s', calibrating '%s'%n", measurements, all.robot(), desc.name());
+            spec.commandLine().getErr().printf("robopro: warning: %s was measured on '%s', calibrating '%s'%n", measurements.file(),
+                    all.robot(), desc.name());
         double[] t = CliSupport.numbers("--target", target, 3);
         Cancellation cancel = new Cancellation();
         Calibrator.Options o = Calibrator.Options.defaults()
@@ -104,10 +84,9 @@ public final class CalibrateCommand implements Callable<Integer> {
             CliSupport.removeHook(hook);
         }
         String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
-        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), measurements.toString(),
-                validate != null ? validate.toString() : val != null ? measurements + (holdout != null ? " (hold-out)" : " (set=validate)") : null, created);
+        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), measurements.file().toString(), data.source(), created);
         Map<String, String> prov = new LinkedHashMap<>(desc.provenance());
-        prov.put("calibrated-from", measurements.toString());
+        prov.put("calibrated-from", measurements.file().toString());
         prov.put("calibrated-on", created);
         prov.put("calibrated-nominal", desc.name());
         prov.put("calibration-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.trainRmsM())));
@@ -116,10 +95,10 @@ public final class CalibrateCommand implements Callable<Integer> {
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
-        RobotLibrary.write(calibrated, out.resolve("calibrated.robot.json"), force);
+        RobotLibrary.write(calibrated, out.file("calibrated.robot.json"), out.force());
         java.util.List<String> warnings = CalibrationReport.warnings(r, train, val);
-        AtomicFiles.writeString(out.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx, warnings), force);
-        AtomicFiles.writeString(out.resolve("report.html"), CalibrationReport.html(r, ctx, warnings), force);
+        AtomicFiles.writeString(out.file("summary.json"), CalibrationReport.summaryJson(r, ctx, warnings), out.force());
+        AtomicFiles.writeString(out.file("report.html"), CalibrationReport.html(r, ctx, warnings), out.force());
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(), r.train().size(),
                 r.sixD() ? "6-D" : "positions", Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
@@ -128,7 +107,7 @@ public final class CalibrateCommand implements Callable<Integer> {
         w.printf(Locale.ROOT, "  %d parameters fixed as unidentifiable, condition number %.3g, %d outliers%s%n",
                 r.unidentifiable().size(), r.conditionNumber(), r.outliers().size(),
                 r.outliers().isEmpty() ? "" : " (" + String.join(", ", r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList()) + ")");
-        w.printf("  wrote %s%n", out.toAbsolutePath());
+        w.printf("  wrote %s%n", out.dir().toAbsolutePath());
         for (String warning : warnings) spec.commandLine().getErr().println("robopro: warning: " + warning);
         return 0;
     }

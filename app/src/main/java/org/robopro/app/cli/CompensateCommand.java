@@ -13,6 +13,7 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -34,8 +35,7 @@ public final class CompensateCommand implements Callable<Integer> {
     @Option(names = "--targets", required = true, paramLabel = "FILE", description = "targets: CSV x,y,z[,qw,qx,qy,qz] in mm")
     Path targets;
 
-    @Option(names = "--out", required = true, paramLabel = "FILE", description = "CSV to write")
-    Path out;
+    @Mixin OutputFileOptions out;
 
     @Option(names = "--tool", defaultValue = "0,0,0", paramLabel = "X,Y,Z[,QW,QX,QY,QZ]", description = "TCP in flange coordinates, mm (default: the flange)")
     String tool;
@@ -58,9 +58,6 @@ public final class CompensateCommand implements Callable<Integer> {
 
     @Option(names = "--payload-kg", paramLabel = "KG", description = "payload the program carries (for joint compliance of an extended model)")
     Double payloadKg;
-
-    @Option(names = "--force", description = "replace FILE if it exists")
-    boolean force;
 
     @Spec CommandSpec spec;
 
@@ -109,9 +106,9 @@ public final class CompensateCommand implements Callable<Integer> {
             sb.append(String.format(Locale.ROOT, ",%.3e,%.3e,%s%n", Units.mToMm(res[0]), Units.radToDeg(res[1]),
                     st.name().toLowerCase(Locale.ROOT)));
         }
-        AtomicFiles.writeString(out, sb.toString(), force);
+        AtomicFiles.writeString(out.file(), sb.toString(), out.force());
         spec.commandLine().getOut().printf("compensated %d targets (%d not converged/unreachable), wrote %s%n",
-                ts.targets().size(), bad, out);
+                ts.targets().size(), bad, out.file());
         return bad == 0 ? 0 : 1;
     }
 }

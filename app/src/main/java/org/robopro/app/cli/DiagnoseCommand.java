@@ -20,6 +20,7 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -34,38 +35,23 @@ import picocli.CommandLine.Spec;
 @Command(name = "diagnose", mixinStandardHelpOptions = true,
         description = "Find the physics a geometric calibration left out; write a report, diagnosis.json and the extended model.")
 public final class DiagnoseCommand implements Callable<Integer> {
-    @Option(names = "--robot", required = true, paramLabel = "ROBOT", description = "shipped robot name or robot file (the nominal model)")
-    String robot;
+    @Mixin RobotOptions robot;
 
-    @Option(names = "--measurements", required = true, paramLabel = "FILE", description = "measurement file (docs/measurement-file.md)")
-    Path measurements;
-
-    @Option(names = "--validate", paramLabel = "FILE", description = "measurement file of validation poses")
-    Path validate;
+    @Mixin MeasurementOptions measurements;
 
     @Option(names = "--alpha", defaultValue = "0.001", paramLabel = "A", description = "family-wise false-positive rate (default ${DEFAULT-VALUE})")
     double alpha;
 
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
-
-    @Option(names = "--force", description = "replace existing files in DIR")
-    boolean force;
+    @Mixin OutputDirOptions out;
 
     @Spec CommandSpec spec;
 
     @Override
     public Integer call() throws Exception {
         if (!(alpha > 0 && alpha < 1)) throw new IllegalArgumentException("--alpha must be in (0, 1), got " + alpha);
-        RobotDescription desc = RobotLibrary.load(robot);
-        MeasurementSet all = MeasurementReader.read(measurements, desc);
-        MeasurementSet train = all, val = null;
-        if (validate != null) val = MeasurementReader.read(validate, desc);
-        else if (all.hasSplit()) {
-            train = all.split(Measurement.Split.TRAIN);
-            val = all.split(Measurement.Split.VALIDATE);
-            if (val.size() == 0) val = null;
-        }
+        RobotDescription desc = robot.description();
+        MeasurementOptions.Data data = measurements.read(desc, null);
+        MeasurementSet train = data.train(), val = data.validate();
         Cancellation cancel = new Cancellation();
         Diagnoser.Options o = Diagnoser.Options.defaults().withAlpha(alpha).withCancel(cancel)
                 .withProgress(CliSupport.progressBar(spec.commandLine().getErr()));
@@ -80,10 +66,9 @@ public final class DiagnoseCommand implements Callable<Integer> {
             CliSupport.removeHook(hook);
         }
         String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
-        DiagnosisReport.Context ctx = new DiagnosisReport.Context(measurements.toString(),
-                validate != null ? validate.toString() : val != null ? measurements + " (set=validate)" : null, created);
+        DiagnosisReport.Context ctx = new DiagnosisReport.Context(measurements.file().toString(), data.source(), created);
         Map<String, String> prov = new LinkedHashMap<>(desc.provenance());
-        prov.put("diagnosed-from", measurements.toString());
+        prov.put("diagnosed-from", measurements.file().toString());
         prov.put("diagnosed-on", created);
         prov.put("diagnosed-nominal", desc.name());
         prov.put("diagnosis-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(d.finalTrainRmsM())));
@@ -91,9 +76,9 @@ public final class DiagnoseCommand implements Callable<Integer> {
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription extended = d.model().toDescription().withProvenance(prov);
-        RobotLibrary.write(extended, out.resolve("extended.robot.json"), force);
-        AtomicFiles.writeString(out.resolve("diagnosis.json"), DiagnosisReport.json(d, ctx), force);
-        AtomicFiles.writeString(out.resolve("report.html"), DiagnosisReport.html(d, ctx), force);
+        RobotLibrary.write(extended, out.file("extended.robot.json"), out.force());
+        AtomicFiles.writeString(out.file("diagnosis.json"), DiagnosisReport.json(d, ctx), out.force());
+        AtomicFiles.writeString(out.file("report.html"), DiagnosisReport.html(d, ctx), out.force());
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "diagnosed %s from %d poses: geometric RMS %.4f mm -> %.4f mm with effects (train)%n", desc.name(),
                 train.size(), Units.mToMm(d.geometricTrainRmsM()), Units.mToMm(d.finalTrainRmsM()));
@@ -103,7 +88,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
         for (Diagnosis.Finding f : d.effects()) w.println("  found " + f.effect().label());
         for (String r : d.recommendations()) w.println("  advice: " + r);
         if (!d.outliers().isEmpty()) w.println("  outliers: " + String.join(", ", d.outliers()));
-        w.printf("  wrote %s%n", out.toAbsolutePath());
+        w.printf("  wrote %s%n", out.dir().toAbsolutePath());
         return 0;
     }
 }

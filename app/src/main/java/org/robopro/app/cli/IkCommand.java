@@ -21,7 +21,9 @@ public final class IkCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "ROBOT", description = "shipped robot name or robot file")
     String robot;
 
-    @Parameters(index = "1..7", arity = "7", paramLabel = "X Y Z QW QX QY QZ", description = "flange position (mm) and orientation quaternion")
+    // hideParamSyntax: picocli would otherwise print the label once per value (7 times) in the usage
+    @Parameters(index = "1..7", arity = "7", paramLabel = "X Y Z QW QX QY QZ", hideParamSyntax = true,
+            description = "flange position (mm) and orientation quaternion")
     double[] pose;
 
     @Option(names = "--json", description = "print a JSON list of solutions")

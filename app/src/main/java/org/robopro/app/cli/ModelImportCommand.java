@@ -8,6 +8,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -28,11 +29,7 @@ public final class ModelImportCommand implements Callable<Integer> {
 
     @ArgGroup(exclusive = true, multiplicity = "1") Input input;
 
-    @Option(names = "--out", required = true, paramLabel = "ROBOT_FILE", description = "robot file to write")
-    Path out;
-
-    @Option(names = "--force", description = "replace ROBOT_FILE if it exists")
-    boolean force;
+    @Mixin OutputFileOptions out;
 
     @Spec CommandSpec spec;
 
@@ -42,8 +39,8 @@ public final class ModelImportCommand implements Callable<Integer> {
         if (input.dh != null) robot = DhImporter.read(input.dh, DhImporter.Convention.STANDARD);
         else if (input.mdh != null) robot = DhImporter.read(input.mdh, DhImporter.Convention.MODIFIED);
         else robot = UrdfImporter.read(input.urdf);
-        RobotLibrary.write(robot, out, force);
-        spec.commandLine().getOut().printf("wrote %s: %s, %d joints%n", out, robot.displayName(), robot.dof());
+        RobotLibrary.write(robot, out.file(), out.force());
+        spec.commandLine().getOut().printf("wrote %s: %s, %d joints%n", out.file(), robot.displayName(), robot.dof());
         return 0;
     }
 }

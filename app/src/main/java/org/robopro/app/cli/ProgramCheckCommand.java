@@ -4,13 +4,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.robopro.kinematics.KinematicModel;
-import org.robopro.models.RobotLibrary;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.rapid.ParsedModule;
 import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.sim.MotionInterpreter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -22,7 +22,7 @@ import picocli.CommandLine.Spec;
 public final class ProgramCheckCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE.mod") Path file;
 
-    @Option(names = "--robot", required = true, paramLabel = "ROBOT", description = "shipped robot name or robot file") String robot;
+    @Mixin RobotOptions robot;
 
     @Option(names = "--proc", defaultValue = "main", paramLabel = "PROC", description = "procedure to run (default main)") String proc;
 
@@ -31,7 +31,7 @@ public final class ProgramCheckCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         ParsedModule pm = RapidParser.parseDetailed(Files.readString(file), file.toString());
-        KinematicModel model = KinematicModel.build(RobotLibrary.load(robot));
+        KinematicModel model = robot.model();
         CheckReport r = new PathChecker(model).check(MotionInterpreter.of(pm).run(proc));
         spec.commandLine().getOut().print(r.format());
         return r.hasErrors() ? 1 : 0;

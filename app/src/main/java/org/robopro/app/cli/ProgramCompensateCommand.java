@@ -15,6 +15,7 @@ import org.robopro.programs.RapidModule;
 import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.rapid.RapidWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -29,11 +30,11 @@ import picocli.CommandLine.Spec;
 public final class ProgramCompensateCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE.mod") Path file;
 
-    @Option(names = "--robot", required = true, paramLabel = "ROBOT", description = "the controller's (nominal) robot") String robot;
+    @Mixin RobotOptions robot;
 
     @Option(names = "--calibrated", required = true, paramLabel = "MODEL", description = "robot file of the calibrated model") String calibrated;
 
-    @Option(names = "--out", required = true, paramLabel = "FILE.mod") Path out;
+    @Mixin OutputFileOptions out;
 
     @Option(names = "--proc", defaultValue = "main", paramLabel = "PROC") String proc;
 
@@ -41,14 +42,12 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
 
     @Option(names = "--payload-kg", paramLabel = "KG", description = "payload the program carries (joint compliance of an extended model)") Double payloadKg;
 
-    @Option(names = "--force", description = "replace the output if it exists") boolean force;
-
     @Spec CommandSpec spec;
 
     @Override
     public Integer call() throws Exception {
         RapidModule m = RapidParser.parse(Files.readString(file), file.toString());
-        KinematicModel nominal = KinematicModel.build(RobotLibrary.load(robot));
+        KinematicModel nominal = robot.model();
         RobotDescription realDesc = RobotLibrary.load(calibrated);
         KinematicModel real = KinematicModel.build(realDesc);
         ProgramCompensation.TargetCompensator tc = ProgramCompensation.fixedPoint(nominal, real);
@@ -64,13 +63,13 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
             };
         }
         ProgramCompensation.Outcome o = ProgramCompensation.compensate(m, proc, nominal, tc);
-        AtomicFiles.writeString(out, RapidWriter.export(o.module()).text(), force);
+        AtomicFiles.writeString(out.file(), RapidWriter.export(o.module()).text(), out.force());
         boolean allOk = true;
         for (ProgramCompensation.Correction c : o.corrections()) {
             spec.commandLine().getOut().println(c);
             allOk &= c.status().equals("converged");
         }
-        spec.commandLine().getOut().printf("wrote %s (%d targets compensated)%n", out, o.corrections().size());
+        spec.commandLine().getOut().printf("wrote %s (%d targets compensated)%n", out.file(), o.corrections().size());
         return allOk ? 0 : 1;
     }
 }

@@ -8,6 +8,7 @@ import org.robopro.programs.project.ProgramProject;
 import org.robopro.programs.rapid.RapidExport;
 import org.robopro.programs.rapid.RapidWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -18,9 +19,7 @@ import picocli.CommandLine.Spec;
 public final class ProgramExportCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "PROJECT") Path project;
 
-    @Option(names = "--out", required = true, paramLabel = "FILE.mod") Path out;
-
-    @Option(names = "--force", description = "replace FILE.mod if it exists") boolean force;
+    @Mixin OutputFileOptions out;
 
     @Spec CommandSpec spec;
 
@@ -28,9 +27,9 @@ public final class ProgramExportCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         RapidModule m = ProgramProject.read(project);
         RapidExport e = RapidWriter.export(m);
-        AtomicFiles.writeString(out, e.text(), force);
+        AtomicFiles.writeString(out.file(), e.text(), out.force());
         for (RapidExport.Rename r : e.renames()) spec.commandLine().getOut().println("renamed " + r);
-        spec.commandLine().getOut().printf("wrote %s: module %s, %d declarations, %d procedures%n", out, m.name(),
+        spec.commandLine().getOut().printf("wrote %s: module %s, %d declarations, %d procedures%n", out.file(), m.name(),
                 m.declarations().size(), m.procedures().size());
         return 0;
     }

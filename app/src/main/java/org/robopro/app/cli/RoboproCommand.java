@@ -11,21 +11,23 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "robopro", mixinStandardHelpOptions = true, version = "robopro 0.1.0",
         description = "Off-line programming and calibration of industrial robots.",
+        // In the order a user meets them: the GUI and the whole loop, the model, kinematics, then the
+        // calibration chain, programs, the controller link.
         subcommands = {
-                CommandLine.HelpCommand.class,
-                SimulateCommand.class,
-                CalibrateCommand.class,
-                CompensateCommand.class,
-                DiagnoseCommand.class,
-                DiagnoseBenchmarkCommand.class,
+                WorkbenchCommand.class,
+                DemoCommand.class,
                 ModelCommand.class,
                 FkCommand.class,
                 IkCommand.class,
+                SimulateCommand.class,
+                CalibrateCommand.class,
+                DiagnoseCommand.class,
+                CompensateCommand.class,
                 ProgramCommand.class,
-                WorkbenchCommand.class,
-                ControllerSimCommand.class,
                 LinkCommand.class,
-                DemoCommand.class,
+                ControllerSimCommand.class,
+                DiagnoseBenchmarkCommand.class,
+                CommandLine.HelpCommand.class,
         })
 public final class RoboproCommand implements Callable<Integer> {
 

@@ -20,6 +20,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -35,8 +36,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = "Simulate a calibration campaign on a robot with random geometric errors.")
 public final class SimulateCommand implements Callable<Integer> {
-    @Option(names = "--robot", required = true, paramLabel = "ROBOT", description = "shipped robot name or robot file")
-    String robot;
+    @Mixin RobotOptions robot;
 
     @Option(names = "--poses", defaultValue = "200", description = "training poses (default ${DEFAULT-VALUE})")
     int poses;
@@ -71,11 +71,7 @@ public final class SimulateCommand implements Callable<Integer> {
                     + "unless VALUE is given (docs/diagnosis.md)")
     List<String> effects = new ArrayList<>();
 
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
-
-    @Option(names = "--force", description = "replace existing files in DIR")
-    boolean force;
+    @Mixin OutputDirOptions out;
 
     @Spec CommandSpec spec;
 
@@ -83,8 +79,8 @@ public final class SimulateCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (poses < 1) throw new IllegalArgumentException("--poses must be at least 1");
         if (sigmaMm < 0 || errorMm < 0) throw new IllegalArgumentException("--sigma and --error-mm must not be negative");
-        RobotDescription desc = RobotLibrary.load(robot);
-        KinematicModel nominal = KinematicModel.build(desc);
+        RobotDescription desc = robot.description();
+        KinematicModel nominal = robot.model();
         double[] t = CliSupport.numbers("--target", target, 3);
         SimulationSettings s = new SimulationSettings(poses, validatePoses, Units.mmToM(sigmaMm), Units.degToRad(sigmaDeg),
                 Units.mmToM(errorMm), 2e-3, new Vec3(Units.mmToM(t[0]), Units.mmToM(t[1]), Units.mmToM(t[2])), sixD, frameBase, seed);
@@ -93,19 +89,19 @@ public final class SimulateCommand implements Callable<Integer> {
         Campaign c = ec != null ? ec.campaign() : CampaignSimulator.simulate(nominal, s);
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
-        MeasurementWriter.write(c.measurements(), types, out.resolve("measurements.csv"), force);
-        if (c.validation() != null) MeasurementWriter.write(c.validation(), types, out.resolve("validate.csv"), force);
-        CampaignSimulator.writeTruth(c, ec != null ? ec.truthEntries() : null, out.resolve("truth.json"), force);
+        MeasurementWriter.write(c.measurements(), types, out.file("measurements.csv"), out.force());
+        if (c.validation() != null) MeasurementWriter.write(c.validation(), types, out.file("validate.csv"), out.force());
+        CampaignSimulator.writeTruth(c, ec != null ? ec.truthEntries() : null, out.file("truth.json"), out.force());
         RobotDescription trueDesc = c.truth().model().toDescription()
                 .withProvenance(Map.of("simulated-from", desc.name(), "seed", Long.toString(seed),
                         "error-mm", Double.toString(errorMm)));
         // The injected effects in the robot file's effects section, so the truth can be compensated with too.
         if (ec != null) trueDesc = trueDesc.withEffects(ec.injected().stream().map(e -> e.effect().describe(e.values())).toList());
-        RobotLibrary.write(trueDesc, out.resolve("true.robot.json"), force);
+        RobotLibrary.write(trueDesc, out.file("true.robot.json"), out.force());
         spec.commandLine().getOut().printf(Locale.ROOT,
                 "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, frame %s%n  wrote %s%n",
                 desc.name(), poses, validatePoses > 0 ? " + " + validatePoses + " validation" : "", sigmaMm,
-                Units.mToMm(c.nominalErrorRmsM()), c.measurements().frame(), out.toAbsolutePath());
+                Units.mToMm(c.nominalErrorRmsM()), c.measurements().frame(), out.dir().toAbsolutePath());
         if (ec != null)
             for (int i = 0; i < specs.size(); i++) {
                 Effect.Term term = ec.injected().get(i);
