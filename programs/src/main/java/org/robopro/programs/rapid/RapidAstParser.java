@@ -385,10 +385,17 @@ final class RapidAstParser {
         } else {
             name = ident("procedure name");
         }
-        if (peek().is("(") && name != null)
-            throw error(peek(), routine, "'" + name + "(' : a procedure call takes its arguments without parentheses");
-        List<Arg> args = args(";", routine);
-        expect(";");
+        List<Arg> args;
+        Token paren = peek();
+        try {
+            // "WaitUntil (a = b);" is a call whose first argument is in parentheses
+            args = args(";", routine);
+            expect(";");
+        } catch (InputException e) {
+            if (paren.is("(") && name != null)
+                throw error(paren, routine, "'" + name + "(' : a procedure call takes its arguments without parentheses");
+            throw e;
+        }
         return at(new RapidAst.Call(name, late, args), h);
     }
 
