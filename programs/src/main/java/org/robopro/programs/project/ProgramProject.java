@@ -284,7 +284,9 @@ public final class ProgramProject {
             } catch (IllegalArgumentException e) {
                 throw bad(f + ".scope", "expected LOCAL or TASK");
             }
-            return new Declaration(sc, st, name, v);
+            Declaration.Storage storage = st;
+            Declaration.Scope scope = sc;
+            return wrap(f, () -> new Declaration(scope, storage, name, v));
         }
 
         Statement statement(JsonNode s, String f) {
@@ -388,7 +390,10 @@ public final class ProgramProject {
             double[] q = array(n, 4, f);
             Quaternion r = new Quaternion(q[0], q[1], q[2], q[3]);
             if (Math.abs(r.norm() - 1) <= 1e-12) return r;
-            return wrap(f, r::normalized);
+            Quaternion u = wrap(f, r::normalized);
+            // components near the double range overflow the norm: no usable direction
+            if (!(Math.abs(u.norm() - 1) <= 1e-12)) throw bad(f, "quaternion " + r + " cannot be normalised");
+            return u;
         }
 
         RapidPose pose(JsonNode n, String f) {
