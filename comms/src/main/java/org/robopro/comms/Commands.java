@@ -32,6 +32,9 @@ public final class Commands {
     public static ReadStatus readStatus() { return new ReadStatus(); }
     public static Measure measure() { return new Measure(); }
 
+    /** A tracker reading with the pose's conditions (what a measurement file row needs). */
+    public static MeasureReading measureReading() { return new MeasureReading(); }
+
     static String degrees(double[] qRad) {
         return Arrays.stream(qRad).mapToObj(v -> String.format(Locale.ROOT, "%.3f", Units.radToDeg(v)))
                 .collect(Collectors.joining(" ", "[", "] deg"));
@@ -214,5 +217,11 @@ public final class Commands {
         Measure() { super("measure", RetryPolicy.SAFE); }
 
         @Override public Vec3 execute(ControllerReceiver r) { return r.measure(); }
+    }
+
+    public static final class MeasureReading extends ControllerCommand<TrackerReading> {
+        MeasureReading() { super("measure", RetryPolicy.SAFE); }
+
+        @Override public TrackerReading execute(ControllerReceiver r) { return r.measureReading(); }
     }
 }

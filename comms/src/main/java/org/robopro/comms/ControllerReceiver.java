@@ -59,6 +59,9 @@ public interface ControllerReceiver extends AutoCloseable {
     /** The laser tracker's reading of the target on the tool, in the tracker frame (m). */
     Vec3 measure();
 
+    /** A tracker reading with the conditions the controller knows (approach directions, clock, temperature, payload). */
+    TrackerReading measureReading();
+
     /** True when request ids are honoured, so a motion may be re-sent safely after a lost reply. */
     boolean deduplicatesRequests();
 

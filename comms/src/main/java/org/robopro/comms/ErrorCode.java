@@ -22,6 +22,7 @@ public enum ErrorCode {
     BAD_PROGRAM_NAME(203, "bad program name"),
     PROGRAM_TOO_LARGE(204, "program too large"),
     PROGRAM_SYNTAX(205, "program does not parse"),
+    PROGRAM_NOT_SIMULATED(206, "program cannot be simulated"),
     PROGRAM_RUNTIME(210, "program stopped with an error"),
     INTERNAL(300, "internal controller error");
 

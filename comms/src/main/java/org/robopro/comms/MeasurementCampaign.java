@@ -3,65 +3,86 @@ package org.robopro.comms;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
-import org.robopro.comms.protocol.OpenAbb;
-import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
-import org.robopro.models.Vec3;
+import java.util.Map;
+import java.util.Random;
+import java.util.function.IntConsumer;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.measurement.MeasurementWriter;
+import org.robopro.calibration.simulation.PoseSampler;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.JointType;
 
 /**
- * A calibration campaign against a controller with a tracker (the simulator's MEASURE): move to
- * each joint pose, measure the target on the tool, and save the rows as a measurement file
- * (/work/shared/formats/measurements.md, version 1: mm, deg, frame "tracker", dir1..dirN).
+ * A calibration campaign through the controller link against a controller with a tracker (the
+ * simulator's MEASURE): move to each joint pose, take a tracker reading, and collect the rows as
+ * a calibration {@link MeasurementSet}, written with calibration's {@link MeasurementWriter}
+ * (/work/shared/formats/measurements.md: frame "tracker", dir1..dirN from the controller's real
+ * approach direction of each joint, time_s from the controller clock, temp_c when the controller
+ * models temperature, payload_kg).
  */
 public final class MeasurementCampaign {
     private MeasurementCampaign() { }
 
-    /** One measured pose: id, joint values (rad), measured position (m, tracker frame), last-motion signs. */
-    public record Row(String pose, double[] q, Vec3 measured, int[] direction) { }
+    /** The campaign stopped at a pose; {@link #getCause()} is the link's or the controller's failure. */
+    public static final class Stopped extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        private final int pose;
 
-    /** Moves through {@code poses} (rad) and measures at each; stops at the first failure. */
-    public static List<Row> run(CommandInvoker invoker, List<double[]> poses) {
-        List<Row> rows = new ArrayList<>();
-        double[] prev = invoker.execute(Commands.readJoints());
-        int[] dir = new int[prev.length];
+        Stopped(int pose, int of, CommsException cause) {
+            super("campaign stopped at pose " + pose + " of " + of + ": " + cause.getMessage(), cause);
+            this.pose = pose;
+        }
+
+        /** 1-based index of the pose that failed. */
+        public int pose() { return pose; }
+    }
+
+    /** {@code n} poses by calibration's pose rule (docs/calibration.md, "Pose rule"), seeded. */
+    public static List<double[]> samplePoses(KinematicModel nominal, int n, long seed) {
+        return new PoseSampler(nominal).sample(n, new Random(seed));
+    }
+
+    /** Moves through {@code poses} (rad) and measures at each; stops at the first failure (the exception says which pose). */
+    public static MeasurementSet run(CommandInvoker invoker, List<double[]> poses, String robot, String instrument) {
+        return run(invoker, poses, robot, instrument, k -> { });
+    }
+
+    /**
+     * As {@link #run(CommandInvoker, List, String, String)}, telling {@code progress} the number of
+     * poses done after each.
+     */
+    public static MeasurementSet run(CommandInvoker invoker, List<double[]> poses, String robot, String instrument,
+                                     IntConsumer progress) {
+        List<Measurement> rows = new ArrayList<>();
         for (int k = 0; k < poses.size(); k++) {
             double[] q = poses.get(k);
-            invoker.execute(Commands.moveJoints(q));
-            for (int i = 0; i < q.length; i++) if (q[i] != prev[i]) dir[i] = q[i] > prev[i] ? 1 : -1;
-            Vec3 m = invoker.execute(Commands.measure());
-            rows.add(new Row(Integer.toString(k + 1), q.clone(), m, dir.clone()));
-            prev = q;
+            TrackerReading m;
+            try {
+                invoker.execute(Commands.moveJoints(q));
+                m = invoker.execute(Commands.measureReading());
+            } catch (CommsException e) {
+                throw new Stopped(k + 1, poses.size(), e);
+            }
+            PoseConditions c = m.conditions();
+            int[] dirs = c.directions();
+            if (dirs == null || dirs.length != q.length) dirs = null;
+            rows.add(new Measurement(Integer.toString(k + 1), q, m.position(), null, dirs, c.timeS(), c.tempC(), c.payloadKg(), null, 0));
+            progress.accept(k + 1);
         }
-        return rows;
+        Map<String, String> meta = new LinkedHashMap<>();
+        meta.put("robot", robot.toLowerCase(Locale.ROOT));
+        meta.put("frame", "tracker");
+        meta.put("instrument", instrument);
+        return new MeasurementSet("campaign", meta, "tracker", rows);
     }
 
-    /** The measurement file text. */
-    public static String format(String robot, String instrument, List<Row> rows) {
-        StringBuilder sb = new StringBuilder();
-        sb.append("# robopro-measurements 1\n# robot: ").append(robot).append("\n# length-unit: mm\n# angle-unit: deg\n")
-                .append("# frame: tracker\n# instrument: ").append(instrument.replace('\n', ' ')).append('\n');
-        int n = rows.isEmpty() ? 6 : rows.get(0).q().length;
-        sb.append("pose");
-        for (int i = 1; i <= n; i++) sb.append(",q").append(i);
-        sb.append(",x,y,z");
-        for (int i = 1; i <= n; i++) sb.append(",dir").append(i);
-        sb.append('\n');
-        for (Row r : rows) {
-            sb.append(r.pose());
-            for (double v : r.q()) sb.append(',').append(OpenAbb.num(Units.radToDeg(v), 6));
-            sb.append(',').append(OpenAbb.num(Units.mToMm(r.measured().x()), 4)).append(',')
-                    .append(OpenAbb.num(Units.mToMm(r.measured().y()), 4)).append(',')
-                    .append(OpenAbb.num(Units.mToMm(r.measured().z()), 4));
-            for (int d : r.direction()) sb.append(',').append(d);
-            sb.append('\n');
-        }
-        return sb.toString();
-    }
-
-    /** Writes the file atomically; refuses to replace an existing one unless {@code overwrite}. */
-    public static void write(Path file, String robot, String instrument, List<Row> rows, boolean overwrite) throws IOException {
-        AtomicFiles.writeString(file, format(robot.toLowerCase(Locale.ROOT), instrument, rows), overwrite);
+    /** Writes the file atomically with calibration's writer; refuses to replace an existing one unless {@code overwrite}. */
+    public static void write(MeasurementSet set, List<JointType> jointTypes, Path file, boolean overwrite) throws IOException {
+        MeasurementWriter.write(set, jointTypes, file, overwrite);
     }
 }

@@ -2,16 +2,20 @@ package org.robopro.comms;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.robopro.comms.sim.ModelSimulatedRobot;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.comms.sim.SimEffects;
 import org.robopro.comms.sim.SimulatedController;
-import org.robopro.kinematics.Pose;
+import org.robopro.comms.sim.TrueSimulatedRobot;
+import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
@@ -19,44 +23,59 @@ class MeasurementCampaignTest {
     @TempDir Path dir;
 
     @Test
-    void run_irb2000WithErrors_fileFollowsFormatAndRowsDeviateFromNominalByErrorSize() throws Exception {
-        ModelSimulatedRobot robot = ModelSimulatedRobot.create(RobotLibrary.load("irb2000"), 4, 0.5e-3, List.of());
-        SimulatedController sim = new SimulatedController(robot, SimulatedController.Settings.defaults(4).withNoise(0));
-        Pose tool = Pose.translation(0.05, 0, 0.1);
-        List<double[]> poses = new ArrayList<>();
-        Random rnd = new Random(8);
-        for (int k = 0; k < 25; k++) {
-            double[] q = new double[6];
-            for (int i = 0; i < 6; i++) q[i] = robot.lowerLimits()[i] * 0.5 + rnd.nextDouble() * (robot.upperLimits()[i] - robot.lowerLimits()[i]) * 0.5;
-            poses.add(q);
-        }
+    void run_irb2000ThermalNoNoise_rowsAreTruthWithConditionsAndFileRoundTrips() throws Exception {
+        RobotDescription d = RobotLibrary.load("irb2000");
+        TrueSimulatedRobot robot = TrueSimulatedRobot.create(d, 4,
+                TrueSimulatedRobot.Options.defaults().withNoise(0).withEffects(List.of("thermal-expansion", "backlash:2")));
+        SimulatedController sim = new SimulatedController(robot, SimulatedController.Settings.defaults(4).withPayload(2.5));
+        List<double[]> poses = MeasurementCampaign.samplePoses(robot.nominalModel(), 25, 8);
         try (CommandInvoker inv = new CommandInvoker(sim)) {
-            inv.execute(Commands.setTool(tool));
-            List<MeasurementCampaign.Row> rows = MeasurementCampaign.run(inv, poses);
-            assertEquals(25, rows.size());
-            double maxDev = 0, sumDev = 0;
-            for (MeasurementCampaign.Row r : rows) {
-                Vec3 nominal = sim.settings().trackerTbase().times(robot.nominalModel().flange(r.q())).times(tool).position();
-                Vec3 truth = sim.settings().trackerTbase().times(robot.trueModel().flange(r.q())).times(tool).position();
-                assertEquals(0, r.measured().minus(truth).norm(), 1e-12);
-                double d = r.measured().minus(nominal).norm();
-                maxDev = Math.max(maxDev, d);
-                sumDev += d;
+            MeasurementSet set = MeasurementCampaign.run(inv, poses, "irb2000", "simulated laser tracker");
+            assertEquals(25, set.size());
+            double[] prev = new double[6];
+            double prevTime = 0, prevTemp = SimEffects.T0_C;
+            for (int k = 0; k < set.size(); k++) {
+                Measurement m = set.rows().get(k);
+                for (int i = 0; i < 6; i++)
+                    if (poses.get(k)[i] != prev[i]) assertEquals(poses.get(k)[i] > prev[i] ? 1 : -1, m.directions()[i], "dir" + (i + 1) + " of pose " + (k + 1));
+                assertTrue(m.timeS() > prevTime, "time advances with the motions");
+                assertTrue(m.tempC() > prevTemp && m.tempC() < SimEffects.T0_C + SimEffects.WARMUP_K, "warm-up curve: " + m.tempC());
+                assertEquals(2.5, m.payloadKg(), 0);
+                Vec3 truth = robot.truth().point(m.q(), PoseConditions.of(m));
+                assertEquals(0, m.position().minus(truth).norm(), 1e-12);
+                prev = m.q();
+                prevTime = m.timeS();
+                prevTemp = m.tempC();
             }
-            assertTrue(sumDev / rows.size() > 0.2e-3 && maxDev < 20e-3, "deviation from nominal " + sumDev / rows.size());
             Path file = dir.resolve("campaign.csv");
-            MeasurementCampaign.write(file, "irb2000", "simulated laser tracker", rows, false);
+            MeasurementCampaign.write(set, d.joints().stream().map(j -> j.type()).toList(), file, false);
             List<String> lines = Files.readAllLines(file);
             assertEquals("# robopro-measurements 1", lines.get(0));
             assertTrue(lines.contains("# length-unit: mm") && lines.contains("# angle-unit: deg") && lines.contains("# frame: tracker"));
-            String header = lines.stream().filter(l -> l.startsWith("pose,")).findFirst().orElseThrow();
-            assertEquals("pose,q1,q2,q3,q4,q5,q6,x,y,z,dir1,dir2,dir3,dir4,dir5,dir6", header);
-            String[] first = lines.get(lines.indexOf(header) + 1).split(",");
-            assertEquals(16, first.length);
-            assertEquals(Math.toDegrees(poses.get(0)[1]), Double.parseDouble(first[2]), 1e-6);
-            assertEquals(rows.get(0).measured().x() * 1000, Double.parseDouble(first[7]), 1e-4);
-            assertThrows(java.nio.file.FileAlreadyExistsException.class,
-                    () -> MeasurementCampaign.write(file, "irb2000", "x", rows, false));
+            assertTrue(lines.contains("pose,q1,q2,q3,q4,q5,q6,x,y,z,dir1,dir2,dir3,dir4,dir5,dir6,time_s,temp_c,payload_kg"), lines.toString());
+            MeasurementSet back = MeasurementReader.read(file, d);
+            assertEquals(25, back.size());
+            for (int k = 0; k < 25; k++) {
+                Measurement a = set.rows().get(k), b = back.rows().get(k);
+                assertEquals(0, a.position().minus(b.position()).norm(), 1e-8);
+                assertArrayEquals(a.directions(), b.directions());
+                assertEquals(a.timeS(), b.timeS(), 1e-3);
+                assertEquals(a.tempC(), b.tempC(), 1e-3);
+            }
+            assertThrows(FileAlreadyExistsException.class, () -> MeasurementCampaign.write(set, null, file, false));
+        }
+    }
+
+    @Test
+    void run_withoutThermalEffect_fileHasNoTemperatureColumn() throws Exception {
+        RobotDescription d = RobotLibrary.load("irb2000");
+        TrueSimulatedRobot robot = TrueSimulatedRobot.create(d, 5, TrueSimulatedRobot.Options.defaults());
+        SimulatedController sim = new SimulatedController(robot, SimulatedController.Settings.defaults(5));
+        try (CommandInvoker inv = new CommandInvoker(sim)) {
+            MeasurementSet set = MeasurementCampaign.run(inv, MeasurementCampaign.samplePoses(robot.nominalModel(), 5, 1), "irb2000", "t");
+            Path file = dir.resolve("c.csv");
+            MeasurementCampaign.write(set, null, file, false);
+            assertTrue(Files.readAllLines(file).contains("pose,q1,q2,q3,q4,q5,q6,x,y,z,dir1,dir2,dir3,dir4,dir5,dir6,time_s,payload_kg"));
         }
     }
 }

@@ -3,12 +3,14 @@ package org.robopro.app.cli;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
 import org.robopro.calibration.compensation.TargetsFile;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -51,6 +53,12 @@ public final class CompensateCommand implements Callable<Integer> {
     @Option(names = "--seed-joints", paramLabel = "Q1,...", description = "joint values (deg) to choose the first IK branch near (default: all zero)")
     String seedJoints;
 
+    @Option(names = "--temp-c", paramLabel = "C", description = "temperature the program runs at (for a thermal effect of an extended model)")
+    Double tempC;
+
+    @Option(names = "--payload-kg", paramLabel = "KG", description = "payload the program carries (for joint compliance of an extended model)")
+    Double payloadKg;
+
     @Option(names = "--force", description = "replace FILE if it exists")
     boolean force;
 
@@ -59,7 +67,8 @@ public final class CompensateCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         KinematicModel nom = KinematicModel.build(RobotLibrary.load(nominal));
-        KinematicModel cal = KinematicModel.build(RobotLibrary.load(calibrated));
+        RobotDescription calDesc = RobotLibrary.load(calibrated);
+        KinematicModel cal = KinematicModel.build(calDesc);
         if (nom.dof() != cal.dof())
             throw new IllegalArgumentException("--nominal has " + nom.dof() + " joints but --calibrated " + cal.dof());
         Pose flangeTtool = CliSupport.poseMm("--tool", tool);
@@ -75,7 +84,10 @@ public final class CompensateCommand implements Callable<Integer> {
             double[] s = CliSupport.numbers("--seed-joints", seedJoints, nom.dof());
             q = Units.degToRad(s);
         }
-        Compensator comp = new Compensator(nom, cal, flangeTtool, flangeTtool);
+        // An extended model (robopro diagnose) brings its effects, evaluated under the given conditions.
+        Compensator comp = calDesc.effects().isEmpty() ? new Compensator(nom, cal, flangeTtool, flangeTtool)
+                : Compensator.forRobotFile(nom, calDesc, calibrated, flangeTtool, flangeTtool,
+                        new PoseConditions(null, Double.NaN, tempC == null ? Double.NaN : tempC, payloadKg == null ? Double.NaN : payloadKg));
         Compensator.Batch batch = comp.batch();
         StringBuilder sb = new StringBuilder("# robopro compensated targets: ").append(f).append(" frame, mm, deg\n");
         sb.append("id,x,y,z,qw,qx,qy,qz");

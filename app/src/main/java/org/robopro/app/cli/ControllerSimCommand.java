@@ -33,13 +33,20 @@ public final class ControllerSimCommand implements Callable<Integer> {
 
     @Option(names = "--seed", defaultValue = "1", description = "seed of the robot's errors and the tracker noise (default ${DEFAULT-VALUE})") long seed;
 
-    @Option(names = "--error-mm", defaultValue = "0.5", description = "size of the true robot's geometric errors, mm (rad per metre for angles; default ${DEFAULT-VALUE})")
+    @Option(names = "--error-mm", defaultValue = "0.5", description = "RMS flange position error of the nominal model against the simulated real robot, mm (default ${DEFAULT-VALUE})")
     double errorMm;
 
-    @Option(names = "--effect", paramLabel = "NAME", description = "non-geometric effect of the true robot: backlash, compliance (repeatable)")
+    @Option(names = "--effect", paramLabel = "NAME[:JOINT]", description = "non-geometric effect of the real robot (repeatable): "
+            + "backlash, joint-compliance, gear-periodic, joint-scale, joint-coupling[:JOINT], thermal-expansion (docs/controller-link.md)")
     List<String> effects = new ArrayList<>();
 
     @Option(names = "--noise-mm", defaultValue = "0.02", description = "laser tracker noise, mm per axis (default ${DEFAULT-VALUE})") double noiseMm;
+
+    @Option(names = "--target", paramLabel = "X,Y,Z", defaultValue = "0,0,100",
+            description = "nominal position of the tracker target on the flange, mm (default ${DEFAULT-VALUE}; the real one is off by ~2 mm)")
+    String target;
+
+    @Option(names = "--payload-kg", defaultValue = "0", description = "payload at the flange, kg (default ${DEFAULT-VALUE})") double payloadKg;
 
     @Option(names = "--port-file", paramLabel = "FILE", description = "write the bound TCP port to FILE (useful with PORT 0)") Path portFile;
 
@@ -52,7 +59,7 @@ public final class ControllerSimCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         try (ControllerSim sim = ControllerSim.start(new ControllerSim.Config(where.tcp, where.serial, baud, robot, seed, errorMm,
-                effects, noiseMm, portFile, realtime, faultRate))) {
+                effects, noiseMm, ControllerSim.parseTargetMm(target), payloadKg, portFile, realtime, faultRate))) {
             spec.commandLine().getOut().println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where()
                     + "; stop with Ctrl-C");
             spec.commandLine().getOut().flush();

@@ -9,7 +9,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.comms.CommandInvoker;
+import org.robopro.comms.MeasurementCampaign;
 import org.robopro.comms.Commands;
 import org.robopro.comms.CommsException;
 import org.robopro.comms.ControllerStatus;
@@ -21,9 +24,11 @@ import org.robopro.comms.client.SerialRequestChannel;
 import org.robopro.comms.client.TcpRequestChannel;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
+import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -40,7 +45,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "link", mixinStandardHelpOptions = true,
         description = "Send one command to a robot controller.%n"
                 + "COMMAND: ping | joints | pose | move J1..J6 (deg) | movel X Y Z Q1 Q2 Q3 Q4 (mm) | download FILE"
-                + " | upload NAME | list | run NAME | stop | status | measure")
+                + " | upload NAME | list | run NAME | stop | status | measure | campaign --poses N --out FILE")
 public final class LinkCommand implements Callable<Integer> {
     static final class Where {
         @Option(names = "--tcp", paramLabel = "HOST:PORT", description = "controller's open_abb server") String tcp;
@@ -55,9 +60,15 @@ public final class LinkCommand implements Callable<Integer> {
 
     @Option(names = "--name", description = "program name on the controller (download; default: the file name)") String name;
 
-    @Option(names = "--out", paramLabel = "FILE", description = "upload: write the program to FILE instead of printing it") Path out;
+    @Option(names = "--out", paramLabel = "FILE", description = "upload: write the program to FILE instead of printing it; campaign: the measurement file") Path out;
 
-    @Option(names = "--force", description = "upload: replace FILE if it exists") boolean force;
+    @Option(names = "--force", description = "upload, campaign: replace FILE if it exists") boolean force;
+
+    @Option(names = "--poses", defaultValue = "150", description = "campaign: number of poses (default ${DEFAULT-VALUE})") int poses;
+
+    @Option(names = "--seed", defaultValue = "1", description = "campaign: seed of the pose choice (default ${DEFAULT-VALUE})") long seed;
+
+    @Option(names = "--robot", paramLabel = "ROBOT", description = "campaign: robot name or file (default: the robot the controller reports)") String robot;
 
     @Parameters(index = "0", paramLabel = "COMMAND") String command;
 
@@ -72,7 +83,7 @@ public final class LinkCommand implements Callable<Integer> {
         PrintWriter o = spec.commandLine().getOut();
         try (ProtocolClient client = new ProtocolClient(channel);
              CommandInvoker inv = new CommandInvoker(client, CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofMillis(timeoutMs)))) {
-            run(inv, o);
+            run(inv, client, o);
             o.flush();
             return 0;
         } catch (CommsException.Refused e) {
@@ -101,7 +112,7 @@ public final class LinkCommand implements Callable<Integer> {
         return v;
     }
 
-    private void run(CommandInvoker inv, PrintWriter o) throws Exception {
+    private void run(CommandInvoker inv, ProtocolClient client, PrintWriter o) throws Exception {
         switch (command.toLowerCase(Locale.ROOT)) {
             case "ping" -> { expectArgs(0, "ping"); inv.execute(Commands.ping()); o.println("ok"); }
             case "joints" -> {
@@ -170,9 +181,43 @@ public final class LinkCommand implements Callable<Integer> {
                 o.println(OpenAbb.num(Units.mToMm(p.x()), 4) + " " + OpenAbb.num(Units.mToMm(p.y()), 4) + " "
                         + OpenAbb.num(Units.mToMm(p.z()), 4) + "  (mm, tracker frame)");
             }
+            case "campaign" -> campaign(inv, client, o);
             default -> throw new IllegalArgumentException("unknown link command '" + command
-                    + "'; use ping, joints, pose, move, movel, download, upload, list, run, stop, status, measure");
+                    + "'; use ping, joints, pose, move, movel, download, upload, list, run, stop, status, measure, campaign");
         }
+    }
+
+    /** A calibration campaign: poses by calibration's pose rule, a tracker reading at each, a measurement file. */
+    private void campaign(CommandInvoker inv, ProtocolClient client, PrintWriter o) throws Exception {
+        expectArgs(0, "campaign --poses N --out FILE");
+        if (out == null) throw new IllegalArgumentException("campaign needs --out FILE (the measurement file)");
+        if (poses < 1) throw new IllegalArgumentException("--poses must be >= 1, got " + poses);
+        if (Files.exists(out) && !force) throw new IllegalArgumentException("refusing to overwrite " + out + " (give --force)");
+        inv.execute(Commands.ping());
+        String robotName = robot != null ? robot : client.robotName();
+        if (robotName == null || robotName.isBlank())
+            throw new IllegalArgumentException("the controller does not say which robot it is; give --robot ROBOT");
+        RobotDescription d = Robots.load(robotName);
+        KinematicModel model = KinematicModel.build(d);
+        List<double[]> qs = MeasurementCampaign.samplePoses(model, poses, seed);
+        PrintWriter e = spec.commandLine().getErr();
+        MeasurementSet set;
+        try {
+            set = MeasurementCampaign.run(inv, qs, d.name(), "laser tracker via " + client.channel().describe(), k -> {
+                if (k % 25 == 0 || k == qs.size()) {
+                    e.println("measured " + k + " / " + qs.size() + " poses");
+                    e.flush();
+                }
+            });
+        } catch (MeasurementCampaign.Stopped stopped) {
+            // Keep the exit code of the cause (4 refused, 3 link), say at which pose it stopped; nothing is written.
+            if (stopped.getCause() instanceof CommsException.Refused r) throw new CommsException.Refused(r.code(), stopped.getMessage());
+            throw new CommsException.Protocol(stopped.getMessage());
+        }
+        MeasurementCampaign.write(set, d.joints().stream().map(j -> j.type()).toList(), out, force);
+        Measurement last = set.rows().get(set.size() - 1);
+        o.println(String.format(Locale.ROOT, "wrote %s: %d poses, %.1f s of controller time%s", out, set.size(), last.timeS(),
+                Double.isNaN(last.tempC()) ? "" : String.format(Locale.ROOT, ", temperature %.1f °C at the end", last.tempC())));
     }
 
     private static String pose(Pose p) {

@@ -3,7 +3,11 @@ package org.robopro.app.cli;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.diagnosis.ExtendedModel;
 import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.RobotDescription;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotLibrary;
 import org.robopro.programs.ProgramCompensation;
@@ -33,6 +37,10 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
 
     @Option(names = "--proc", defaultValue = "main", paramLabel = "PROC") String proc;
 
+    @Option(names = "--temp-c", paramLabel = "C", description = "temperature the program runs at (thermal effect of an extended model)") Double tempC;
+
+    @Option(names = "--payload-kg", paramLabel = "KG", description = "payload the program carries (joint compliance of an extended model)") Double payloadKg;
+
     @Option(names = "--force", description = "replace the output if it exists") boolean force;
 
     @Spec CommandSpec spec;
@@ -41,8 +49,21 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         RapidModule m = RapidParser.parse(Files.readString(file), file.toString());
         KinematicModel nominal = KinematicModel.build(RobotLibrary.load(robot));
-        KinematicModel real = KinematicModel.build(RobotLibrary.load(calibrated));
-        ProgramCompensation.Outcome o = ProgramCompensation.compensate(m, proc, nominal, ProgramCompensation.fixedPoint(nominal, real));
+        RobotDescription realDesc = RobotLibrary.load(calibrated);
+        KinematicModel real = KinematicModel.build(realDesc);
+        ProgramCompensation.TargetCompensator tc = ProgramCompensation.fixedPoint(nominal, real);
+        if (!realDesc.effects().isEmpty()) {
+            // An extended model (robopro diagnose): the calibration Compensator predicts with its effects.
+            ExtendedModel ext = ExtendedModel.of(realDesc, calibrated);
+            PoseConditions cond = new PoseConditions(null, Double.NaN, tempC == null ? Double.NaN : tempC,
+                    payloadKg == null ? Double.NaN : payloadKg);
+            tc = (target, tool, seed) -> {
+                Compensator.Result r = new Compensator(nominal, ext, tool, tool, cond).compensate(target, seed);
+                return new ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
+                        r.status() == Compensator.Status.CONVERGED, r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
+            };
+        }
+        ProgramCompensation.Outcome o = ProgramCompensation.compensate(m, proc, nominal, tc);
         AtomicFiles.writeString(out, RapidWriter.export(o.module()).text(), force);
         boolean allOk = true;
         for (ProgramCompensation.Correction c : o.corrections()) {

@@ -16,6 +16,8 @@ import picocli.CommandLine.Command;
                 SimulateCommand.class,
                 CalibrateCommand.class,
                 CompensateCommand.class,
+                DiagnoseCommand.class,
+                DiagnoseBenchmarkCommand.class,
                 ModelCommand.class,
                 FkCommand.class,
                 IkCommand.class,

@@ -34,7 +34,15 @@ import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
+import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.models.AtomicFiles;
+import org.robopro.models.CellDescription;
+import org.robopro.models.CellFile;
+import org.robopro.models.LocatedJson;
+import org.robopro.models.PoseDescription;
+import org.robopro.models.Rgba;
+import org.robopro.models.ToolDescription;
+import org.robopro.models.WorkObjectDescription;
 import org.robopro.models.InputException;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
@@ -46,7 +54,8 @@ import org.robopro.models.Vec3;
  */
 public final class ProjectStore {
     public static final String FORMAT = "robopro-project";
-    public static final int VERSION = 1;
+    /** Version written: 2 embeds the cell-file structure; version 1 files (own object section) are still read. */
+    public static final int VERSION = 2;
     private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
 
     private ProjectStore() { }
@@ -57,36 +66,20 @@ public final class ProjectStore {
         ObjectNode root = JSON.createObjectNode();
         root.put("format", FORMAT);
         root.put("version", VERSION);
-        ObjectNode robot = root.putObject("robot");
-        robot.put("ref", p.robotRef());
-        robot.set("placement", pose(p.worldTbase()));
-        ObjectNode tool = root.putObject("tool");
+        try {
+            root.set("cell", JSON.readTree(CellFile.format(toCell(p))));
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("cell file writer gave invalid JSON", e);
+        }
+        ObjectNode tool = root.putObject("mounted_tool");
         tool.put("name", p.tool().name());
-        tool.set("tcp", pose(p.tool().flangeTtcp()));
         tool.put("body_radius_mm", round(Units.mToMm(p.tool().bodyRadius()), 1e-6));
         tool.put("body_length_mm", round(Units.mToMm(p.tool().bodyLength()), 1e-6));
-        tool.put("mass_kg", p.tool().massKg());
-        ArrayNode objs = root.putArray("objects");
+        ObjectNode extra = root.putObject("workbench_objects");
         for (CellObject o : p.objects()) {
-            ObjectNode n = objs.addObject();
-            n.put("id", o.id());
-            n.put("name", o.name());
+            ObjectNode n = extra.putObject(o.id());
+            n.put("label", o.name());
             n.put("kind", o.kind().name().toLowerCase(Locale.ROOT));
-            n.set("pose", pose(o.worldTobject()));
-            if (o.meshPath() != null) {
-                n.put("mesh", o.meshPath());
-                n.put("mesh_scale", o.size().x());
-            } else {
-                ArrayNode s = n.putArray("size_mm");
-                s.add(round(Units.mToMm(o.size().x()), 1e-6)).add(round(Units.mToMm(o.size().y()), 1e-6)).add(round(Units.mToMm(o.size().z()), 1e-6));
-            }
-            n.put("color", String.format(Locale.ROOT, "#%06X", o.rgb()));
-        }
-        ArrayNode wobjs = root.putArray("work_objects");
-        for (WorkObject w : p.workObjects()) {
-            ObjectNode n = wobjs.addObject();
-            n.put("name", w.name());
-            n.set("user_frame", pose(w.worldTuser()));
         }
         ArrayNode targets = root.putArray("targets");
         for (Target t : p.targets()) {
@@ -97,6 +90,7 @@ public final class ProjectStore {
             for (double v : t.qTaught()) j.add(round(Math.toDegrees(v), 1e-6));
             ArrayNode c = n.putArray("conf");
             c.add(t.conf().cf1()).add(t.conf().cf4()).add(t.conf().cf6()).add(t.conf().cfx());
+            if (!t.wobj().equals(Target.WOBJ0)) n.put("wobj", t.wobj());
         }
         ArrayNode programs = root.putArray("programs");
         ObjectNode main = programs.addObject();
@@ -106,6 +100,7 @@ public final class ProjectStore {
             ObjectNode n = ins.addObject();
             n.put("type", i.type().rapid());
             n.put("target", i.target());
+            if (i.via() != null) n.put("via", i.via());
             n.put("speed_mm_s", i.speedMmPerS());
             n.put("zone_mm", i.zoneMm());
         }
@@ -116,6 +111,36 @@ public final class ProjectStore {
         } catch (JsonProcessingException e) {
             throw new IllegalStateException(e);
         }
+    }
+
+    /**
+     * The cell part of a project as a cell file describes it (docs/cell-file.md): boxes and
+     * cylinders placed by their centre (the workbench places them by their underside), object
+     * names are the workbench ids, the mounted tool is the cell's one tool.
+     */
+    public static CellDescription toCell(ProjectData p) {
+        List<org.robopro.models.CellObject> objects = new ArrayList<>();
+        for (CellObject o : p.objects()) {
+            Rgba colour = new Rgba(((o.rgb() >> 16) & 255) / 255.0, ((o.rgb() >> 8) & 255) / 255.0, (o.rgb() & 255) / 255.0, 1);
+            if (o.meshPath() != null) {
+                objects.add(new org.robopro.models.CellObject(o.id(), org.robopro.models.CellObject.Kind.MESH, desc(o.worldTobject()),
+                        Vec3.ZERO, colour, o.meshPath(), o.size().x()));
+            } else {
+                Pose centre = o.worldTobject().times(Pose.translation(0, 0, o.size().z() / 2));
+                var kind = o.kind() == CellObject.Kind.CYLINDER ? org.robopro.models.CellObject.Kind.CYLINDER : org.robopro.models.CellObject.Kind.BOX;
+                objects.add(new org.robopro.models.CellObject(o.id(), kind, desc(centre), o.size(), colour, "", 1));
+            }
+        }
+        Tool t = p.tool();
+        List<ToolDescription> tools = List.of(new ToolDescription(t.name(), desc(t.flangeTtcp()), t.massKg(), new Vec3(0, 0, round(t.bodyLength() / 2, 1e-9))));
+        List<WorkObjectDescription> wobjs = new ArrayList<>();
+        for (WorkObject w : p.workObjects()) wobjs.add(new WorkObjectDescription(w.name(), desc(w.worldTuser())));
+        return new CellDescription("workbench_cell", p.robotRef(), desc(p.worldTbase()), objects, tools, wobjs);
+    }
+
+    private static PoseDescription desc(Pose p) {
+        double[] q = p.quaternion();
+        return new PoseDescription(p.position(), q[0], q[1], q[2], q[3]);
     }
 
     private static double round(double v, double step) { return Math.round(v / step) * step; }
@@ -148,7 +173,7 @@ public final class ProjectStore {
     /** Parses project JSON; {@code baseDir} resolves a robot file given by relative path. */
     public static ProjectData parse(String text, String fileName, Path baseDir) {
         Located doc = Located.parse(text, fileName);
-        return new Reader(doc, fileName, baseDir).project();
+        return new Reader(doc, fileName, baseDir, text).project();
     }
 
     /** A JSON tree plus where each value started (by JSON pointer), for error messages. */
@@ -204,11 +229,13 @@ public final class ProjectStore {
         private final Located doc;
         private final String file;
         private final Path baseDir;
+        private final String text;
 
-        Reader(Located doc, String file, Path baseDir) {
+        Reader(Located doc, String file, Path baseDir, String text) {
             this.doc = doc;
             this.file = file;
             this.baseDir = baseDir;
+            this.text = text;
         }
 
         InputException bad(String ptr, String problem) {
@@ -278,7 +305,56 @@ public final class ProjectStore {
             if (!doc.root().isObject()) throw bad("", "a project file holds one JSON object");
             if (!FORMAT.equals(at("/format").asText(null))) throw bad("/format", "expected \"" + FORMAT + "\"");
             double v = number("/version");
-            if (v != VERSION) throw bad("/version", "this robopro reads version " + VERSION + ", the file is version " + v);
+            if (v != 1 && v != VERSION) throw bad("/version", "this robopro reads versions 1 and " + VERSION + ", the file is version " + v);
+            ProjectData cellPart = v == 1 ? cellV1() : cellV2();
+            List<WorkObject> wobjs = cellPart.workObjects();
+            RobotDescription robot = cellPart.robot();
+            return rest(cellPart.robotRef(), robot, cellPart.worldTbase(), cellPart.tool(), cellPart.objects(), wobjs);
+        }
+
+        /** Version 2: the embedded cell file (read by the models module's cell reader) plus the workbench's extras. */
+        ProjectData cellV2() {
+            LocatedJson.Node root = LocatedJson.parse(file, text);
+            if (!root.has("cell")) throw bad("/cell", "missing");
+            CellDescription cell = CellFile.fromTree(root.get("cell"));
+            ProjectData d;
+            try {
+                d = DefaultCell.fromCell(cell, baseDir == null ? null : baseDir.resolve("project.robopro.json"));
+            } catch (InputException e) {
+                throw e;
+            } catch (RuntimeException e) {
+                throw bad("/cell/robot/ref", "cannot load robot: " + e.getMessage());
+            }
+            if (cell.tools().size() > 1) throw bad("/cell/tools", "a project mounts one tool; the cell lists " + cell.tools().size());
+            Tool tool = d.tool();
+            if (!at("/mounted_tool").isMissingNode()) {
+                String name = text("/mounted_tool/name");
+                if (!name.equals(tool.name())) throw bad("/mounted_tool/name", "no tool " + name + " in the cell");
+                tool = new Tool(tool.name(), tool.flangeTtcp(), Units.mmToM(positive("/mounted_tool/body_radius_mm")),
+                        Units.mmToM(number("/mounted_tool/body_length_mm")), tool.massKg());
+            }
+            List<CellObject> objects = new ArrayList<>();
+            for (CellObject o : d.objects()) {
+                String p = "/workbench_objects/" + o.id();
+                if (at(p).isMissingNode()) { objects.add(o); continue; }
+                CellObject.Kind kind = o.kind();
+                if (!at(p + "/kind").isMissingNode()) {
+                    try {
+                        kind = CellObject.Kind.valueOf(text(p + "/kind").toUpperCase(Locale.ROOT));
+                    } catch (IllegalArgumentException e) {
+                        throw bad(p + "/kind", "expected table, fixture, part, cylinder or mesh");
+                    }
+                    if ((kind == CellObject.Kind.MESH) != (o.kind() == CellObject.Kind.MESH))
+                        throw bad(p + "/kind", "does not match the cell object's kind");
+                }
+                String label = at(p + "/label").isTextual() ? at(p + "/label").asText() : o.name();
+                objects.add(new CellObject(o.id(), label, kind, o.worldTobject(), o.size(), o.meshPath(), o.rgb()));
+            }
+            return new ProjectData(cell.robot(), d.robot(), d.worldTbase(), tool, objects, d.workObjects(), List.of(), List.of(), null);
+        }
+
+        /** Version 1: the project's own robot, tool and object sections. */
+        ProjectData cellV1() {
             String ref = text("/robot/ref");
             RobotDescription robot;
             try {
@@ -327,6 +403,11 @@ public final class ProjectStore {
             List<WorkObject> wobjs = new ArrayList<>();
             for (int i = 0; i < size("/work_objects"); i++)
                 wobjs.add(new WorkObject(text("/work_objects/" + i + "/name"), pose("/work_objects/" + i + "/user_frame")));
+            return new ProjectData(ref, robot, placement, tool, objects, wobjs, List.of(), List.of(), null);
+        }
+
+        /** Targets, programs and the calibration reference (the same in versions 1 and 2). */
+        ProjectData rest(String ref, RobotDescription robot, Pose placement, Tool tool, List<CellObject> objects, List<WorkObject> wobjs) {
             List<Target> targets = new ArrayList<>();
             for (int i = 0; i < size("/targets"); i++) {
                 String p = "/targets/" + i;
@@ -335,25 +416,39 @@ public final class ProjectStore {
                 if (targets.stream().anyMatch(t -> t.name().equals(name))) throw bad(p + "/name", "duplicate target " + name);
                 double[] qd = numbers(p + "/joints_deg", robot.dof());
                 double[] c = numbers(p + "/conf", 4);
+                String wobj = Target.WOBJ0;
+                if (!at(p + "/wobj").isMissingNode()) {
+                    wobj = text(p + "/wobj");
+                    String w = wobj;
+                    if (!w.equals(Target.WOBJ0) && wobjs.stream().noneMatch(x -> x.name().equals(w)))
+                        throw bad(p + "/wobj", "no work object named " + w);
+                }
                 targets.add(new Target(name, pose(p + "/pose"), Units.degToRad(qd),
-                        new ConfData((int) c[0], (int) c[1], (int) c[2], (int) c[3])));
+                        new ConfData((int) c[0], (int) c[1], (int) c[2], (int) c[3]), wobj));
             }
             List<Instruction> program = new ArrayList<>();
             if (size("/programs") > 0) {
                 for (int i = 0; i < size("/programs/0/instructions"); i++) {
                     String p = "/programs/0/instructions/" + i;
                     String type = text(p + "/type");
-                    Instruction.Type t = switch (type.toLowerCase(Locale.ROOT)) {
-                        case "movej" -> Instruction.Type.MOVEJ;
-                        case "movel" -> Instruction.Type.MOVEL;
-                        default -> throw bad(p + "/type", "expected MoveJ or MoveL, got " + type);
-                    };
+                    Instruction.Type t;
+                    try {
+                        t = Instruction.Type.ofRapid(type);
+                    } catch (IllegalArgumentException e) {
+                        throw bad(p + "/type", e.getMessage());
+                    }
                     String target = text(p + "/target");
                     if (targets.stream().noneMatch(x -> x.name().equals(target)))
                         throw bad(p + "/target", "no target named " + target);
+                    String via = null;
+                    if (t == Instruction.Type.MOVEC) {
+                        via = text(p + "/via");
+                        String viaName = via;
+                        if (targets.stream().noneMatch(x -> x.name().equals(viaName))) throw bad(p + "/via", "no target named " + via);
+                    } else if (!at(p + "/via").isMissingNode()) throw bad(p + "/via", t.rapid() + " takes no circle point");
                     double zone = number(p + "/zone_mm");
                     if (zone < 0) throw bad(p + "/zone_mm", "must be >= 0");
-                    program.add(new Instruction(t, target, positive(p + "/speed_mm_s"), zone));
+                    program.add(new Instruction(t, target, positive(p + "/speed_mm_s"), zone, via));
                 }
             }
             JsonNode cal = at("/calibration/reference");

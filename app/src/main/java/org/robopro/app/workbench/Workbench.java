@@ -23,9 +23,9 @@ import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.app.workbench.model.Instruction;
-import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.ProgramModule;
+import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.ProjectData;
-import org.robopro.app.workbench.model.RapidExport;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.app.workbench.scene.CameraState;
@@ -34,6 +34,11 @@ import org.robopro.app.workbench.ui.WorkbenchFrame;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.Vec3;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.rapid.RapidExport;
+import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.rapid.RapidWriter;
 
 /**
  * The workbench: model, 3D view and Swing shell, and the operations the menus, buttons and
@@ -196,39 +201,280 @@ public final class Workbench {
 
     // ---- teaching and programs ---------------------------------------------------------------
 
-    /** Teaches the current TCP pose as a new target and returns it. */
+    /**
+     * Teaches the current TCP pose as a new target in the active work object and returns it
+     * (the programs module's {@code Teach.taught}: forward kinematics and confdata of the joints).
+     */
     public Target teach() {
         String name = model.newTargetName();
         double[] q = model.q();
-        Target t = new Target(name, model.worldTtcp(), q, model.kinematics().confOf(q));
+        Target t = new Target(name, model.worldTtcp(), q, model.kinematics().confOf(q), model.activeWorkObject());
         model.putTarget(t);
-        log(String.format(java.util.Locale.ROOT, "Taught %s at (%.1f, %.1f, %.1f) mm", name,
-                t.worldTtcp().x() * 1000, t.worldTtcp().y() * 1000, t.worldTtcp().z() * 1000));
+        log(String.format(java.util.Locale.ROOT, "Taught %s at (%.1f, %.1f, %.1f) mm in %s", name,
+                t.worldTtcp().x() * 1000, t.worldTtcp().y() * 1000, t.worldTtcp().z() * 1000, t.wobj()));
         return t;
     }
 
     public void addMove(Instruction.Type type, String target, double speedMmPerS, double zoneMm) {
-        model.addInstruction(new Instruction(type, target, speedMmPerS, zoneMm));
+        addMove(type, target, null, speedMmPerS, zoneMm);
     }
 
-    /** Checks the program and logs each failing instruction. */
-    public ProgramPlan checkProgram() {
-        ProgramPlan p = ProgramPlan.of(model);
-        for (ProgramPlan.Step s : p.steps())
-            if (!s.ok()) log("Check: instruction " + (s.index() + 1) + " (" + s.instruction() + "): " + s.message());
-        log(p.ok() ? String.format(java.util.Locale.ROOT, "Check: program OK, %d instructions, %.2f s",
-                p.steps().size(), p.duration()) : "Check: program has problems");
+    /** Appends a move; {@code via} is MoveC's circle point (null for MoveJ/MoveL). */
+    public void addMove(Instruction.Type type, String target, String via, double speedMmPerS, double zoneMm) {
+        model.addInstruction(new Instruction(type, target, speedMmPerS, zoneMm, via));
+    }
+
+    /** Checks the program with the programs module's path checker and logs every problem by instruction and target. */
+    public ProgramRun checkProgram() {
+        ProgramRun p = model.programRun();
+        for (String line : p.problemLines()) log("Check: " + line);
+        if (p.report() != null) log(String.format(java.util.Locale.ROOT, "Check: %s, %d instructions, cycle time %.2f s (%s)",
+                p.ok() ? "program OK" : "program has errors", p.steps().size(), p.report().cycleTimeS(), p.report().assumptions()));
+        else log(p.ok() ? "Check: program OK (reachability only: no kinematics-module model)" : "Check: program has errors");
         return p;
     }
 
-    /** Writes the program as a RAPID module (refuses to overwrite unless asked). */
-    public String exportRapid(Path file, boolean overwrite) throws IOException {
+    /** A RAPID module name from a file name ("weld-1.mod" -> "weld_1"). */
+    static String moduleName(Path file) {
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "").replaceAll("[^A-Za-z0-9_]", "_");
-        if (name.isEmpty() || !Character.isLetter(name.charAt(0))) name = "M" + name;
-        String text = RapidExport.module(name, model);
-        AtomicFiles.writeString(file, text, overwrite);
-        log("Exported RAPID module " + name + " to " + file);
-        return text;
+        return name.isEmpty() || !Character.isLetter(name.charAt(0)) ? "M" + name : name;
+    }
+
+    /**
+     * Writes the program as a RAPID module with the programs module's writer: targets in their
+     * work objects, confdata of the IK solutions used (refuses to overwrite unless asked).
+     */
+    public String exportRapid(Path file, boolean overwrite) throws IOException {
+        RapidModule module = ProgramModule.toRapid(model, moduleName(file));
+        var cal = calibratedModel;
+        var nominal = model.kinematics().kinematicModel();
+        if (cal != null && nominal.isPresent()) {
+            var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
+                    org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
+            module = out.module();
+            double max = 0;
+            for (var c : out.corrections()) {
+                max = Math.max(max, c.shiftM());
+                if (!"converged".equals(c.status())) log("Compensation: " + c);
+            }
+            log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the calibrated model (largest shift %.3f mm)",
+                    out.corrections().size(), max * 1e3));
+        }
+        RapidExport ex = RapidWriter.export(module);
+        AtomicFiles.writeString(file, ex.text(), overwrite);
+        for (RapidExport.Rename r : ex.renames()) log("RAPID export renamed " + r);
+        log("Exported RAPID module " + module.name() + " to " + file);
+        return ex.text();
+    }
+
+    /**
+     * Reads a RAPID module (programs module's parser and interpreter) and replaces the targets
+     * and program with its {@code main}. A file with errors throws an InputException naming the
+     * line and column, and the open program is left as it was.
+     */
+    public ProgramModule.Imported importRapid(Path file) throws IOException {
+        String text = Files.readString(file);
+        ParsedModule parsed = RapidParser.parseDetailed(text, file.toString());
+        ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
+        model.replaceProgram(imp);
+        for (String n : imp.notes()) log("RAPID import: " + n);
+        log(String.format(java.util.Locale.ROOT, "Imported RAPID module %s from %s: %d targets, %d instructions",
+                imp.moduleName(), file, imp.targets().size(), imp.program().size()));
+        return imp;
+    }
+
+    // ---- controller link -----------------------------------------------------------------------
+
+    private volatile ControllerSession controller;
+    private final java.util.concurrent.ExecutorService background = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "workbench-controller");
+        t.setDaemon(true);
+        return t;
+    });
+    private final List<Runnable> controllerListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    public Optional<ControllerSession> controller() { return Optional.ofNullable(controller); }
+
+    /** Told (on any thread) when the controller link opens or closes. */
+    public void addControllerListener(Runnable r) { controllerListeners.add(r); }
+
+    /**
+     * Connects off the UI thread: to {@code address} ("host:port" or a serial device), or with
+     * null/blank to a simulated controller started for the cell's robot.
+     */
+    public java.util.concurrent.CompletableFuture<ControllerSession> connectController(String address) {
+        return java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+            disconnectNow();
+            try {
+                ControllerSession s = address == null || address.isBlank()
+                        ? ControllerSession.startSimulator(model.robotRef(), 30_000, this::log)
+                        : ControllerSession.connect(address.trim(), this::log);
+                controller = s;
+                log("Connected to " + s.description() + (s.robotName().isEmpty() ? "" : " (robot " + s.robotName() + ")"));
+                return s;
+            } catch (IOException e) {
+                throw new java.util.concurrent.CompletionException(e);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new java.util.concurrent.CompletionException(e);
+            } finally {
+                controllerListeners.forEach(Runnable::run);
+            }
+        }, background).whenComplete((s, e) -> { if (e != null) log("Connect failed: " + rootMessage(e)); });
+    }
+
+    private void disconnectNow() {
+        ControllerSession s = controller;
+        controller = null;
+        if (s != null) {
+            s.close();
+            model.setGhostQ(null);
+            log("Disconnected from " + s.description());
+        }
+    }
+
+    public java.util.concurrent.CompletableFuture<Void> disconnectController() {
+        return java.util.concurrent.CompletableFuture.runAsync(() -> {
+            disconnectNow();
+            controllerListeners.forEach(Runnable::run);
+        }, background);
+    }
+
+    private ControllerSession needController() {
+        ControllerSession s = controller;
+        if (s == null) throw new IllegalStateException("not connected to a controller (Controller > Connect)");
+        return s;
+    }
+
+    static String rootMessage(Throwable e) {
+        while ((e instanceof java.util.concurrent.CompletionException || e instanceof java.util.concurrent.ExecutionException) && e.getCause() != null)
+            e = e.getCause();
+        return e.getMessage() == null ? e.toString() : e.getMessage();
+    }
+
+    /** The RAPID program name used on the controller: the project's name, or "Workbench". */
+    public String controllerProgramName() {
+        return projectFile == null ? "Workbench" : moduleName(Path.of(projectFile.getFileName().toString().replaceFirst("\\.robopro\\.json$", ".mod")));
+    }
+
+    /** Downloads the program (RAPID written by the programs module) to the controller. */
+    public java.util.concurrent.CompletableFuture<org.robopro.comms.ProgramInfo> downloadProgram() {
+        ControllerSession s = needController();
+        String name = controllerProgramName();
+        String text = RapidWriter.export(ProgramModule.toRapid(model, name)).text();
+        return s.download(name, text).whenComplete((info, e) -> log(e == null
+                ? String.format(java.util.Locale.ROOT, "Downloaded %s: %d bytes, CRC-32 %08x", info.name(), info.length(), info.crc32())
+                : "Download failed: " + rootMessage(e)));
+    }
+
+    /** Uploads program {@code name} and makes it the workbench program (on the Swing thread). */
+    public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name) {
+        ControllerSession s = needController();
+        return s.upload(name).thenApply(text -> {
+            ParsedModule parsed = RapidParser.parseDetailed(text, "controller:" + name);
+            ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
+            onEdt(() -> model.replaceProgram(imp));
+            for (String n : imp.notes()) log("Upload: " + n);
+            log("Uploaded " + name + " (" + text.length() + " bytes): " + imp.targets().size() + " targets, "
+                    + imp.program().size() + " instructions");
+            return imp;
+        }).whenComplete((imp, e) -> { if (e != null) log("Upload failed: " + rootMessage(e)); });
+    }
+
+    /**
+     * Runs the downloaded program on the controller, waits (polling its status) until it
+     * stops, and shows where the real robot ended as the ghost.
+     */
+    public java.util.concurrent.CompletableFuture<org.robopro.comms.ControllerStatus> runProgram() {
+        ControllerSession s = needController();
+        String name = controllerProgramName();
+        return s.run(name).thenApplyAsync(v -> {
+            log("Running " + name + " on the controller");
+            long end = System.currentTimeMillis() + 120_000;
+            org.robopro.comms.ControllerStatus st = s.status().join();
+            while (st.state() == org.robopro.comms.ControllerStatus.State.RUNNING && System.currentTimeMillis() < end) {
+                try {
+                    Thread.sleep(100);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    break;
+                }
+                st = s.status().join();
+            }
+            log("Controller status after the run: " + st);
+            model.setGhostQ(s.readJoints().join());
+            return st;
+        }, background).whenComplete((st, e) -> { if (e != null) log("Run failed: " + rootMessage(e)); });
+    }
+
+    /** Reads the real robot's joints and shows them as the ghost robot. */
+    public java.util.concurrent.CompletableFuture<double[]> readRobotPosition() {
+        return needController().readJoints().whenComplete((q, e) -> {
+            if (e != null) { log("Read position failed: " + rootMessage(e)); return; }
+            model.setGhostQ(q);
+            StringBuilder b = new StringBuilder("Real robot joints (deg):");
+            for (double v : q) b.append(String.format(java.util.Locale.ROOT, " %.3f", Math.toDegrees(v)));
+            log(b.toString());
+        });
+    }
+
+    // ---- calibration ---------------------------------------------------------------------------
+
+    private volatile org.robopro.kinematics.KinematicModel calibratedModel;
+
+    /** The applied calibrated model (RAPID export is compensated with it), if any. */
+    public Optional<org.robopro.kinematics.KinematicModel> calibratedModel() { return Optional.ofNullable(calibratedModel); }
+
+    /** Training and validation sets of a measurement file: its set column, else every 5th pose held out. */
+    public record Measurements(Path file, org.robopro.calibration.measurement.MeasurementSet train,
+                               org.robopro.calibration.measurement.MeasurementSet validate) { }
+
+    public Measurements loadMeasurements(Path file) throws IOException {
+        var all = org.robopro.calibration.measurement.MeasurementReader.read(file, model.robot());
+        if (all.hasSplit()) {
+            var v = all.split(org.robopro.calibration.measurement.Measurement.Split.VALIDATE);
+            return new Measurements(file, all.split(org.robopro.calibration.measurement.Measurement.Split.TRAIN), v.size() == 0 ? null : v);
+        }
+        List<org.robopro.calibration.measurement.Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) (i % 5 == 4 ? va : tr).add(all.rows().get(i));
+        return new Measurements(file, all.withRows(tr), va.isEmpty() ? null : all.withRows(va));
+    }
+
+    /**
+     * Calibrates the cell's robot from measurements (blocking: run it off the UI thread).
+     * Throws CancellationException when {@code cancel} fires.
+     */
+    public org.robopro.calibration.identification.CalibrationResult calibrate(Measurements m, org.robopro.calibration.Cancellation cancel,
+                                                                            org.robopro.calibration.Progress progress) {
+        var nominal = org.robopro.kinematics.KinematicModel.build(model.robot());
+        var o = org.robopro.calibration.identification.Calibrator.Options.defaults()
+                .withInitialTool(Pose.translation(0, 0, 0.1)).withCancel(cancel).withProgress(progress);
+        var r = org.robopro.calibration.identification.Calibrator.calibrate(nominal, m.train(), m.validate(), o);
+        log(String.format(java.util.Locale.ROOT, "Calibrated from %d poses: RMS %.4f mm -> %.4f mm%s", r.train().size(),
+                r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3, m.validate() == null ? ""
+                        : String.format(java.util.Locale.ROOT, "; validation %.4f mm -> %.4f mm", r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3)));
+        return r;
+    }
+
+    /**
+     * Applies a calibration: writes the calibrated robot file (refusing to replace one unless
+     * {@code overwrite}), records it as the project's calibration reference and compensates RAPID
+     * exports with it from now on (seed paper Fig. 5; the controller keeps the nominal model).
+     */
+    public void applyCalibration(org.robopro.calibration.identification.CalibrationResult r, Path robotFile, String source, boolean overwrite) {
+        java.util.Map<String, String> prov = new java.util.LinkedHashMap<>(model.robot().provenance());
+        prov.put("calibrated-from", source);
+        prov.put("calibrated-nominal", model.robot().name());
+        prov.put("calibration-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", r.trainRmsM() * 1e3));
+        org.robopro.models.RobotLibrary.write(r.calibrated().toDescription().withProvenance(prov), robotFile, overwrite);
+        calibratedModel = r.calibrated();
+        model.setCalibrationReference(robotFile.toString());
+        log("Applied the calibrated model " + robotFile + ": RAPID exports are compensated with it");
+    }
+
+    public void clearCalibration() {
+        calibratedModel = null;
+        log("Calibration no longer applied: RAPID exports are nominal");
     }
 
     // ---- cell layout -------------------------------------------------------------------------
@@ -321,6 +567,18 @@ public final class Workbench {
             Graphics2D pg = (Graphics2D) g.create(p.x, p.y, panel.getWidth(), panel.getHeight());
             panel.paint(pg);
             pg.dispose();
+            // Open dialogs (model wizard, calibration) are drawn where they stand over the window.
+            for (java.awt.Window w : frame.getOwnedWindows()) {
+                if (!w.isShowing() || !(w instanceof javax.swing.RootPaneContainer rc)) continue;
+                Point o = w.getLocationOnScreen(), f = root.getLocationOnScreen();
+                Graphics2D dg = (Graphics2D) g.create(o.x - f.x, o.y - f.y, w.getWidth(), w.getHeight());
+                dg.setColor(java.awt.Color.DARK_GRAY);
+                dg.fillRect(0, 0, w.getWidth(), w.getHeight());
+                rc.getRootPane().paintAll(dg);
+                dg.setColor(java.awt.Color.GRAY);
+                dg.drawRect(0, 0, rc.getRootPane().getWidth() - 1, rc.getRootPane().getHeight() - 1);
+                dg.dispose();
+            }
             g.dispose();
             out.set(img);
         });
@@ -339,6 +597,8 @@ public final class Workbench {
     /** Stops rendering, closes the window, removes the autosave of a saved project. */
     public void close() {
         if (autosave != null) autosave.stop();
+        disconnectNow();
+        background.shutdownNow();
         try {
             app.stop(true);
         } catch (RuntimeException e) {

@@ -24,7 +24,7 @@ class LinkCommandTest {
     @BeforeEach
     void start() throws Exception {
         sim = ControllerSim.start(new ControllerSim.Config("127.0.0.1:0", null, 115200, "irb2000", 2, 0.5, List.of(), 0.0,
-                dir.resolve("port"), false, 0));
+                null, 0, dir.resolve("port"), false, 0));
         where = "127.0.0.1:" + Files.readString(dir.resolve("port")).strip();
     }
 
@@ -86,5 +86,18 @@ class LinkCommandTest {
         assertTrue(err.toString().contains("refusing to overwrite"), err.toString());
         assertEquals(0, run("link", "--tcp", where, "measure"), err.toString());
         assertTrue(out.toString().contains("tracker frame"));
+    }
+
+    @Test
+    void campaign_twentyPoses_writesMeasurementFileAndRefusesToOverwrite() throws Exception {
+        Path file = dir.resolve("campaign.csv");
+        assertEquals(0, run("link", "--tcp", where, "campaign", "--poses", "20", "--out", file.toString()), err.toString());
+        assertTrue(out.toString().contains("20 poses"), out.toString());
+        var set = org.robopro.calibration.measurement.MeasurementReader.read(file, org.robopro.models.RobotLibrary.load("irb2000"));
+        assertEquals(20, set.size());
+        assertTrue(set.hasDirections() && set.hasTime() && set.hasPayload() && !set.hasTemperature());
+        assertEquals("tracker", set.frame());
+        assertEquals(2, run("link", "--tcp", where, "campaign", "--poses", "20", "--out", file.toString()));
+        assertTrue(err.toString().contains("refusing to overwrite"), err.toString());
     }
 }

@@ -54,6 +54,31 @@ class ProjectStoreTest {
     }
 
     @Test
+    void read_version1Project_stillOpens() throws Exception {
+        // A version-1 project as the first workbench wrote it (own robot/tool/objects sections).
+        String v1 = String.join("\n", "{", "\"format\" : \"robopro-project\", \"version\" : 1,",
+                "\"robot\" : { \"ref\" : \"irb2000\" },",
+                "\"tool\" : { \"name\" : \"torch\", \"tcp\" : { \"position_mm\" : [ 110, 0, 340 ], \"quaternion\" : [ 1, 0, 0, 0 ] },",
+                "  \"body_radius_mm\" : 30, \"body_length_mm\" : 187, \"mass_kg\" : 2.5 },",
+                "\"objects\" : [ { \"id\" : \"t\", \"kind\" : \"table\", \"pose\" : { \"position_mm\" : [ 1200, 0, 0 ], \"quaternion\" : [ 1, 0, 0, 0 ] },",
+                "  \"size_mm\" : [ 800, 1200, 700 ] } ],",
+                "\"targets\" : [ { \"name\" : \"p10\", \"pose\" : { \"position_mm\" : [ 1200, 0, 900 ], \"quaternion\" : [ 0, 0, 1, 0 ] },",
+                "  \"joints_deg\" : [ 0, 20, 5, 0, 60, 0 ], \"conf\" : [ 0, 0, 0, 0 ] } ],",
+                "\"programs\" : [ { \"name\" : \"main\", \"instructions\" : [ { \"type\" : \"MoveJ\", \"target\" : \"p10\", \"speed_mm_s\" : 500, \"zone_mm\" : 10 } ] } ]",
+                "}");
+        ProjectData d = ProjectStore.parse(v1, "old.robopro.json", dir);
+        assertEquals(1, d.objects().size());
+        assertEquals(0.187, d.tool().bodyLength(), 1e-12);
+        assertEquals(1, d.program().size());
+        // Saved again it is a version-2 file whose cell part is a valid cell file.
+        String v2 = ProjectStore.toJson(d);
+        assertTrue(v2.contains("\"version\" : 2"), v2);
+        var cell = org.robopro.models.CellFile.fromTree(org.robopro.models.LocatedJson.parse("x", v2).get("cell"));
+        assertEquals(1, cell.objects().size());
+        assertEquals(0.35, cell.objects().get(0).worldTobject().position().z(), 1e-12, "cell files place boxes by their centre");
+    }
+
+    @Test
     void write_existingFileWithoutOverwrite_refuses() throws Exception {
         Path f = dir.resolve("cell.robopro.json");
         Files.writeString(f, "user data");
@@ -65,7 +90,7 @@ class ProjectStoreTest {
     void parse_badNumber_namesLineColumnAndField() {
         String json = ProjectStore.toJson(sample()).replace("\"mass_kg\" : 2.5", "\"mass_kg\" : -1");
         InputException e = assertThrows(InputException.class, () -> ProjectStore.parse(json, "x.json", dir));
-        assertEquals("tool.mass_kg", e.field());
+        assertEquals("cell.tools[0].mass_kg", e.field(), "the embedded cell is read by the cell-file reader");
         String[] lines = json.split("\n");
         assertTrue(lines[e.line() - 1].contains("\"mass_kg\""), "line " + e.line() + " is " + lines[e.line() - 1]);
         assertTrue(e.column() > 1);

@@ -7,7 +7,7 @@ import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.atomic.AtomicReference;
 import org.robopro.app.workbench.model.Instruction;
-import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.InputException;
@@ -91,7 +91,7 @@ public final class WorkbenchScenario {
             }
         });
         r.setProperty("program", String.join(";", wb.model().program().stream().map(Instruction::toString).toList()));
-        AtomicReference<ProgramPlan> plan = new AtomicReference<>();
+        AtomicReference<ProgramRun> plan = new AtomicReference<>();
         Workbench.onEdt(() -> plan.set(frame.programPanel().check()));
         r.setProperty("checkOk", String.valueOf(plan.get().ok()));
         r.setProperty("duration", String.valueOf(plan.get().duration()));
@@ -108,6 +108,10 @@ public final class WorkbenchScenario {
             plan.set(frame.programPanel().check());
         });
         r.setProperty("checkWithFarOk", String.valueOf(plan.get().ok()));
+        r.setProperty("farProblem", plan.get().steps().get(4).problems().stream()
+                .filter(p -> p.severity() == org.robopro.programs.check.Problem.Severity.ERROR)
+                .map(p -> p.kind() + " " + p.target()).findFirst().orElse(""));
+        r.setProperty("badTargets", String.join(",", new java.util.TreeSet<>(plan.get().badTargets())));
         r.setProperty("farStatus", wb.model().status(far).name());
         Workbench.onEdt(() -> {
             frame.programPanel().showTime(plan.get().duration() * 0.4);
@@ -134,6 +138,22 @@ public final class WorkbenchScenario {
         } catch (IOException e) {
             r.setProperty("rapidOverwriteRefused", "true");
         }
+
+        // Import RAPID: the exported module comes back as the same program; a broken file is
+        // reported with its line and column and changes nothing.
+        String programBefore = String.join(";", wb.model().program().stream().map(Instruction::toString).toList());
+        AtomicReference<Boolean> imported = new AtomicReference<>();
+        Workbench.onEdt(() -> imported.set(frame.importRapid(mod)));
+        r.setProperty("importOk", String.valueOf(imported.get()));
+        r.setProperty("importSameProgram", String.valueOf(programBefore.equals(
+                String.join(";", wb.model().program().stream().map(Instruction::toString).toList()))));
+        r.setProperty("importTargets", String.join(",", wb.model().targets().stream().map(Target::name).toList()));
+        Path broken = out.resolve("Broken.mod");
+        Files.writeString(broken, Files.readString(mod).replaceFirst("MoveL p20,", "MoveL p20 v500,"));
+        Workbench.onEdt(() -> imported.set(frame.importRapid(broken)));
+        r.setProperty("brokenImportOk", String.valueOf(imported.get()));
+        r.setProperty("brokenImportError", String.valueOf(frame.lastError()));
+        r.setProperty("afterBrokenProgram", String.valueOf(wb.model().program().size()));
 
         // Cell layout: add and move a table, then save, reopen, and try a damaged copy.
         Workbench.onEdt(() -> {
@@ -164,5 +184,170 @@ public final class WorkbenchScenario {
         r.setProperty("afterDamagedTargets", String.valueOf(wb.model().targets().size()));
         r.setProperty("projectFile", wb.projectFile().map(Path::toString).orElse(""));
         r.setProperty("fps", String.valueOf(wb.app().fps()));
+        controller(wb, out, r);
+        calibration(wb, out, r);
+        wizard(wb, out, r);
+    }
+
+    /**
+     * Calibration panel: a simulated campaign (robopro simulate), a cancelled run, a full run in
+     * the background, RMS before/after and effects shown, the calibrated model applied so the
+     * RAPID export is compensated.
+     */
+    static void calibration(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        Path sim = out.resolve("campaign");
+        int code = new picocli.CommandLine(new org.robopro.app.cli.RoboproCommand()).execute("simulate", "--robot", "irb2000",
+                "--poses", "60", "--sigma", "0.02", "--seed", "11", "--out", sim.toString(), "--force");
+        r.setProperty("simulateExit", String.valueOf(code));
+        AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
+        AtomicReference<Boolean> ok = new AtomicReference<>();
+        Workbench.onEdt(() -> {
+            panel.set(frame.openCalibration());
+            panel.get().setBounds(frame.getX() + 500, frame.getY() + 120, 770, 590);
+            ok.set(panel.get().loadMeasurements(sim.resolve("measurements.csv")));
+        });
+        var p = panel.get();
+        r.setProperty("calLoaded", String.valueOf(ok.get()));
+        AtomicReference<java.util.concurrent.CompletableFuture<?>> f = new AtomicReference<>();
+        Workbench.onEdt(() -> { f.set(p.start()); p.cancel(); });
+        try {
+            f.get().get(60, java.util.concurrent.TimeUnit.SECONDS);
+            r.setProperty("calCancelled", "finished before the cancel was seen");
+        } catch (java.util.concurrent.CancellationException e) { // CompletableFuture.get rethrows it as is
+            r.setProperty("calCancelled", e.getClass().getSimpleName());
+        } catch (java.util.concurrent.ExecutionException e) {
+            r.setProperty("calCancelled", e.getCause().getClass().getSimpleName());
+        }
+        Thread.sleep(100);
+        r.setProperty("calStateAfterCancel", p.state());
+        Workbench.onEdt(() -> f.set(p.start()));
+        f.get().get(120, java.util.concurrent.TimeUnit.SECONDS);
+        Thread.sleep(200);
+        Workbench.onEdt(() -> {
+            r.setProperty("calState", p.state());
+            r.setProperty("calRms", p.rmsText());
+            r.setProperty("calEffects", p.effectsText());
+            r.setProperty("calProgress", String.valueOf(p.progressValue()));
+        });
+        r.setProperty("calNominalRmsMm", String.valueOf(p.result().nominalTrainRmsM() * 1e3));
+        r.setProperty("calRmsMm", String.valueOf(p.result().trainRmsM() * 1e3));
+        r.setProperty("calValidateRmsMm", String.valueOf(p.result().validateRmsM() * 1e3));
+        wb.screenshot(out.resolve("07-calibration.png"));
+        Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");
+        Files.deleteIfExists(nominalMod);
+        Files.deleteIfExists(compensatedMod);
+        wb.exportRapid(nominalMod, false);
+        Path calFile = out.resolve("irb2000-calibrated.robot.json");
+        Files.deleteIfExists(calFile);
+        Workbench.onEdt(() -> ok.set(p.apply(calFile, () -> false)));
+        r.setProperty("calApplied", String.valueOf(ok.get()));
+        r.setProperty("calReference", String.valueOf(wb.model().calibrationReference()));
+        wb.exportRapid(compensatedMod, false);
+        r.setProperty("compensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("Nominal", "X")
+                .equals(Files.readString(compensatedMod).replace("Compensated", "X"))));
+        r.setProperty("compensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
+        Workbench.onEdt(() -> p.dispose());
+        wb.clearCalibration();
+    }
+
+    /**
+     * Controller menu against the simulated controller: connect (starts controller-sim),
+     * download, run, read the real robot's joints (ghost), upload, disconnect.
+     */
+    static void controller(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        r.setProperty("downloadEnabledBefore", String.valueOf(frame.action("download").isEnabled()));
+        var s = wb.connectController(null).get(60, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("controllerRobot", s.robotName());
+        Thread.sleep(200); // the enable/disable runs on the Swing thread
+        Workbench.onEdt(() -> r.setProperty("downloadEnabledAfter", String.valueOf(frame.action("download").isEnabled())));
+        var info = wb.downloadProgram().get(30, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("downloadedName", info.name());
+        r.setProperty("downloadedLength", String.valueOf(info.length()));
+        var st = wb.runProgram().get(60, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("runState", st.state().name());
+        double[] ghost = wb.model().ghostQ();
+        Pose last = wb.model().target(wb.model().program().get(wb.model().program().size() - 1).target()).orElseThrow().worldTtcp();
+        r.setProperty("ghostToLastTargetMm", String.valueOf(1000 * wb.model().worldTtcp(ghost).distanceTo(last)));
+        Workbench.onEdt(() -> {
+            frame.jogPanel().setJointDegrees(0, -35);
+            frame.jogPanel().setJointDegrees(1, 0);
+        });
+        wb.screenshot(out.resolve("06-controller.png"));
+        var imp = wb.uploadProgram(info.name()).get(30, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
+        r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
+        r.setProperty("controllerLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Controller:")).toList()));
+        wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
+        r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
+    }
+
+    /**
+     * The robot model wizard: start from the IRB-2000, break and fix a joint axis (the error is
+     * shown, the model rebuilt), move joint 1, save the robot file (an existing file only after
+     * confirmation) and use the new robot in the cell.
+     */
+    static void wizard(Workbench wb, Path out, Properties r) throws Exception {
+        var frame = wb.frame();
+        AtomicReference<org.robopro.app.workbench.ui.RobotWizard> w = new AtomicReference<>();
+        Workbench.onEdt(() -> {
+            frame.action("robot-wizard").actionPerformed(null);
+            w.set(frame.openWizard());
+            w.get().setBounds(frame.getX() + 640, frame.getY() + 150, 630, 560);
+            w.get().startFrom("irb2000");
+            w.get().setRobotName("irb2000_long", "IRB 2000, longer upper arm");
+        });
+        var wiz = w.get();
+        r.setProperty("wizardJoints", String.valueOf(wiz.wizardModel().jointCount()));
+        r.setProperty("wizardFirstOk", String.valueOf(wiz.result().ok()));
+        Pose[] first = wiz.result().framesAtZero();
+        r.setProperty("wizardFlangeZ0", String.valueOf(first[first.length - 1].z()));
+        Workbench.onEdt(() -> {
+            wiz.setJointCell(2, "Axis x", "0");
+            wiz.setJointCell(2, "Axis y", "0");
+        });
+        r.setProperty("wizardBrokenError", wiz.errorText());
+        r.setProperty("wizardBrokenOk", String.valueOf(wiz.result().ok()));
+        Workbench.onEdt(() -> {
+            wiz.setJointCell(2, "Axis y", "1");
+            // Longer upper arm: joints 3.. and the flange 200 mm higher.
+            for (int j = 2; j < wiz.wizardModel().jointCount(); j++)
+                wiz.setJointCell(j, "Z mm", String.valueOf(wiz.wizardModel().joint(j).pointMm()[2] + 200));
+            wiz.setFlangeCell(0, 2, wiz.wizardModel().flangeOriginMm()[2] + 200);
+        });
+        r.setProperty("wizardFixedOk", String.valueOf(wiz.result().ok()));
+        r.setProperty("wizardError", wiz.errorText());
+        Pose[] frames = wiz.result().framesAtZero();
+        r.setProperty("wizardFlangeZ", String.valueOf(frames[frames.length - 1].z()));
+        r.setProperty("wizardPreviewFrames", String.valueOf(wb.model().preview() == null ? 0 : wb.model().preview().frames().length));
+        r.setProperty("wizardReportHasTable", String.valueOf(wiz.reportText().contains("identified parameters")));
+        wb.app().awaitFrames(3, 10_000);
+        r.setProperty("wizardPreviewDrawn", String.valueOf(wb.app().previewState().frameCount()));
+        wb.setView(org.robopro.app.workbench.scene.CameraState.View.SIDE);
+        wb.app().camera().focus(0.45, 0, 0.95);
+        wb.app().camera().zoom(0.75);
+        wb.screenshot(out.resolve("04-wizard.png"));
+        Path robotFile = out.resolve("irb2000_long.robot.json");
+        Files.deleteIfExists(robotFile);
+        AtomicReference<Boolean> saved = new AtomicReference<>();
+        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
+        r.setProperty("wizardSaved", String.valueOf(saved.get()));
+        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
+        r.setProperty("wizardOverwriteRefused", String.valueOf(!saved.get()));
+        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> true)));
+        r.setProperty("wizardOverwriteConfirmed", String.valueOf(saved.get()));
+        Workbench.onEdt(() -> saved.set(wiz.useInCell(() -> false)));
+        r.setProperty("wizardUsed", String.valueOf(saved.get()));
+        r.setProperty("cellRobot", wb.model().robot().name());
+        r.setProperty("cellRobotRef", wb.model().robotRef());
+        r.setProperty("previewAfterUse", String.valueOf(wb.model().preview() != null));
+        Workbench.onEdt(() -> wiz.dispose());
+        wb.setView(org.robopro.app.workbench.scene.CameraState.View.ISO);
+        Path project = out.resolve("long.robopro.json");
+        Files.deleteIfExists(project);
+        wb.save(project);
+        r.setProperty("reopenedRobot", ProjectStore.read(project).robot().name());
+        wb.screenshot(out.resolve("05-new-robot.png"));
     }
 }

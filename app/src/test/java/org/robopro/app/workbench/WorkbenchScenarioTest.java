@@ -81,6 +81,18 @@ class WorkbenchScenarioTest {
         return s.size();
     }
 
+    /** Pixels of the translucent blue ghost robot. */
+    static int blueCount(BufferedImage img) {
+        int hit = 0;
+        for (int y = 60; y < Math.min(460, img.getHeight()); y++)
+            for (int x = 230; x < Math.min(940, img.getWidth()); x++) {
+                int c = img.getRGB(x, y);
+                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+                if (b > r + 50 && b > g + 20) hit++;
+            }
+        return hit;
+    }
+
     static int redCount(BufferedImage img) {
         int hit = 0;
         for (int y = 0; y < img.getHeight(); y++)
@@ -117,12 +129,21 @@ class WorkbenchScenarioTest {
         assertTrue(Double.parseDouble(r.getProperty("duration")) > 0.3, r.getProperty("duration"));
         assertEquals("false", r.getProperty("checkWithFarOk"));
         assertEquals("UNREACHABLE", r.getProperty("farStatus"));
+        assertEquals("UNREACHABLE p99", r.getProperty("farProblem"), "the path checker names the instruction's target");
+        assertEquals("p99", r.getProperty("badTargets"));
         assertEquals("true", r.getProperty("rapidOverwriteRefused"));
         String rapid = Files.readString(Path.of(r.getProperty("rapidFile")));
         assertTrue(rapid.startsWith("MODULE Weld"), rapid);
         for (String s : new String[] {"CONST robtarget p10:=[[", "CONST robtarget p20", "CONST robtarget p30",
-                "MoveJ p10, v500, z10, torch\\WObj:=wobj0;", "MoveL p30, v500, z10, torch", "PERS tooldata torch:=[TRUE,[[110.00,0.00,340.00]", "ENDMODULE"})
+                "MoveJ p10, v500, z10, torch;", "MoveL p30, v500, z10, torch;", "PERS tooldata torch:=[TRUE,[[110,0,340]", "ENDMODULE"})
             assertTrue(rapid.contains(s), "RAPID lacks " + s + ":\n" + rapid);
+        assertEquals("true", r.getProperty("importOk"));
+        assertEquals("true", r.getProperty("importSameProgram"), "export then import must give the same program");
+        assertEquals("p10,p20,p30", r.getProperty("importTargets"));
+        assertEquals("false", r.getProperty("brokenImportOk"));
+        assertTrue(r.getProperty("brokenImportError").contains("Broken.mod") && r.getProperty("brokenImportError").contains("line "),
+                r.getProperty("brokenImportError"));
+        assertEquals("4", r.getProperty("afterBrokenProgram"), "a broken import leaves the program as it was");
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
         assertEquals("3", r.getProperty("reopenedTargets"));
@@ -133,6 +154,63 @@ class WorkbenchScenarioTest {
         assertTrue(r.getProperty("damagedField").endsWith("speed_mm_s"), r.getProperty("damagedField"));
         assertEquals("3", r.getProperty("afterDamagedTargets"), "a damaged project must not disturb the open one");
         assertTrue(r.getProperty("projectFile").endsWith("cell.robopro.json"));
+
+        assertEquals("false", r.getProperty("downloadEnabledBefore"), "controller actions wait for a connection");
+        assertEquals("true", r.getProperty("downloadEnabledAfter"));
+        assertEquals("irb2000", r.getProperty("controllerRobot"));
+        assertEquals("cell", r.getProperty("downloadedName"), "the program is named after the project file");
+        assertTrue(Integer.parseInt(r.getProperty("downloadedLength")) > 300, r.getProperty("downloadedLength"));
+        assertEquals("IDLE", r.getProperty("runState"), r.getProperty("controllerLog"));
+        assertEquals(0, Double.parseDouble(r.getProperty("ghostToLastTargetMm")), 0.05,
+                "after the run the real robot's joints put the TCP at the program's last target");
+        assertEquals("4", r.getProperty("uploadedInstructions"));
+        assertEquals("4", r.getProperty("programAfterUpload"));
+        assertTrue(r.getProperty("controllerLog").contains("succeeded"), r.getProperty("controllerLog"));
+        assertEquals("false", r.getProperty("ghostAfterDisconnect"));
+        BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
+        assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");
+
+        assertEquals("0", r.getProperty("simulateExit"));
+        assertEquals("true", r.getProperty("calLoaded"));
+        assertEquals("CancellationException", r.getProperty("calCancelled"), "Cancel stops the background calibration");
+        assertEquals("cancelled", r.getProperty("calStateAfterCancel"));
+        assertEquals("done", r.getProperty("calState"));
+        assertEquals("1000", r.getProperty("calProgress"));
+        double before = Double.parseDouble(r.getProperty("calNominalRmsMm")), after = Double.parseDouble(r.getProperty("calRmsMm"));
+        assertTrue(before > 1, "the simulated robot has millimetres of error: " + before);
+        assertTrue(after < 0.1, "calibration reaches the noise floor: " + after);
+        assertTrue(Double.parseDouble(r.getProperty("calValidateRmsMm")) < 0.1, r.getProperty("calValidateRmsMm"));
+        assertTrue(r.getProperty("calRms").startsWith("RMS ") && r.getProperty("calRms").contains("validation"), r.getProperty("calRms"));
+        assertTrue(r.getProperty("calEffects").contains("correction"), r.getProperty("calEffects"));
+        assertEquals("true", r.getProperty("calApplied"));
+        assertTrue(r.getProperty("calReference").endsWith("irb2000-calibrated.robot.json"), r.getProperty("calReference"));
+        assertEquals("true", r.getProperty("compensatedDiffers"), "the applied calibration changes the exported targets");
+        assertTrue(r.getProperty("compensationLog").startsWith("Compensated 3 targets"), r.getProperty("compensationLog"));
+
+        assertEquals("6", r.getProperty("wizardJoints"));
+        assertEquals("true", r.getProperty("wizardFirstOk"));
+        assertEquals("false", r.getProperty("wizardBrokenOk"));
+        assertTrue(r.getProperty("wizardBrokenError").contains("axis"), r.getProperty("wizardBrokenError"));
+        assertEquals("true", r.getProperty("wizardFixedOk"), r.getProperty("wizardError"));
+        assertEquals("", r.getProperty("wizardError"));
+        assertEquals(Double.parseDouble(r.getProperty("wizardFlangeZ0")) + 0.2, Double.parseDouble(r.getProperty("wizardFlangeZ")), 1e-9,
+                "the flange frame follows the typed flange origin");
+        assertEquals("8", r.getProperty("wizardPreviewFrames"), "base, six links, flange");
+        assertEquals("8", r.getProperty("wizardPreviewDrawn"));
+        assertEquals("true", r.getProperty("wizardReportHasTable"));
+        assertEquals("true", r.getProperty("wizardSaved"));
+        assertEquals("true", r.getProperty("wizardOverwriteRefused"));
+        assertEquals("true", r.getProperty("wizardOverwriteConfirmed"));
+        assertEquals("true", r.getProperty("wizardUsed"));
+        assertEquals("irb2000_long", r.getProperty("cellRobot"));
+        assertTrue(r.getProperty("cellRobotRef").endsWith("irb2000_long.robot.json"), r.getProperty("cellRobotRef"));
+        assertEquals("false", r.getProperty("previewAfterUse"));
+        assertEquals("irb2000_long", r.getProperty("reopenedRobot"));
+        BufferedImage wizard = ImageIO.read(out.resolve("04-wizard.png").toFile());
+        assertTrue(orangeFraction(wizard, 230, 60, 640, 460) > 0.005, "no preview drums in the 3D view of 04-wizard.png");
+        assertTrue(colourCount(wizard) > 40);
+        BufferedImage newRobot = ImageIO.read(out.resolve("05-new-robot.png").toFile());
+        assertTrue(orangeFraction(newRobot, 230, 60, 940, 460) > 0.01, "the new robot is not drawn in 05-new-robot.png");
 
         BufferedImage cell = ImageIO.read(out.resolve("01-cell.png").toFile());
         assertEquals(1280, cell.getWidth());

@@ -1,10 +1,13 @@
 package org.robopro.calibration.compensation;
 
 import java.util.Optional;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.diagnosis.ExtendedModel;
 import org.robopro.kinematics.IkSolution;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
+import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 
 /**
@@ -34,6 +37,8 @@ public final class Compensator {
     public record Result(Pose commanded, double[] q, double residualM, double residualRad, int iterations, Status status) { }
 
     private final KinematicModel nominal, calibrated;
+    private final ExtendedModel extended; // null: geometry only
+    private final PoseConditions conditions;
     private final Pose toolNominal, toolCalibrated;
     private final InverseKinematics ik;
 
@@ -44,6 +49,29 @@ public final class Compensator {
      * @param toolCalibrated  flangeTtool as calibrated (often the same tool)
      */
     public Compensator(KinematicModel nominal, KinematicModel calibrated, Pose toolNominal, Pose toolCalibrated) {
+        this(nominal, calibrated, toolNominal, toolCalibrated, null, PoseConditions.NONE);
+    }
+
+    /**
+     * With an extended model (geometry plus non-geometric effects, from diagnosis): the real
+     * robot's pose is predicted under {@code conditions} (approach directions, temperature,
+     * payload, time the program will run with; unknown ones contribute nothing).
+     */
+    public Compensator(KinematicModel nominal, ExtendedModel calibrated, Pose toolNominal, Pose toolCalibrated,
+                       PoseConditions conditions) {
+        this(nominal, calibrated.geometry(), toolNominal, toolCalibrated, calibrated.hasEffects() ? calibrated : null, conditions);
+    }
+
+    /** For a robot file: its effects are used when it has any (see {@link ExtendedModel#of}). */
+    public static Compensator forRobotFile(KinematicModel nominal, RobotDescription calibrated, String file, Pose toolNominal,
+                                           Pose toolCalibrated, PoseConditions conditions) {
+        return new Compensator(nominal, ExtendedModel.of(calibrated, file), toolNominal, toolCalibrated, conditions);
+    }
+
+    private Compensator(KinematicModel nominal, KinematicModel calibrated, Pose toolNominal, Pose toolCalibrated,
+                        ExtendedModel extended, PoseConditions conditions) {
+        this.extended = extended;
+        this.conditions = conditions;
         if (nominal.dof() != calibrated.dof())
             throw new IllegalArgumentException("nominal has " + nominal.dof() + " joints, calibrated " + calibrated.dof());
         this.nominal = nominal;
@@ -68,7 +96,7 @@ public final class Compensator {
             Optional<IkSolution> s = ik.solveNear(comp.times(toolNominal.inverse()), q);
             if (s.isEmpty()) return new Result(comp, q, resP, resR, it, Status.UNREACHABLE);
             q = s.get().q();
-            Pose actual = calibrated.flange(q).times(toolCalibrated);
+            Pose actual = extended != null ? extended.tool(q, toolCalibrated, conditions) : calibrated.flange(q).times(toolCalibrated);
             Vec3 dp = baseTtarget.position().minus(actual.position());
             Vec3 dr = baseTtarget.times(actual.inverse()).rotationVector(); // Log(R_t R_aᵀ), base axes
             resP = dp.norm();
@@ -123,7 +151,7 @@ public final class Compensator {
          * {@code residualOut} receives position (m) and rotation (rad) residuals. Returns the status.
          */
         public Status compensate(double[] pos, double[] quat, double[] qInOut, double[] commandedOut, double[] residualOut) {
-            if (n != 6) return reference(pos, quat, qInOut, commandedOut, residualOut);
+            if (n != 6 || extended != null) return reference(pos, quat, qInOut, commandedOut, residualOut); // effects: reference path
             quatTo12(quat, pos, target);
             System.arraycopy(qInOut, 0, qWork, 0, n);
             nominal.flange(qWork, wsN, f);

@@ -10,7 +10,9 @@ import java.util.Locale;
 import org.robopro.comms.CommsException;
 import org.robopro.comms.ControllerReceiver;
 import org.robopro.comms.ControllerStatus;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.comms.ErrorCode;
+import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
 import org.robopro.comms.SpeedData;
@@ -281,6 +283,30 @@ public final class ProtocolClient implements ControllerReceiver {
         requireExtended("measure");
         Reply r = call(OpenAbb.MEASURE, "measure");
         return new Vec3(Units.mmToM(r.number(0, "x")), Units.mmToM(r.number(1, "y")), Units.mmToM(r.number(2, "z")));
+    }
+
+    /**
+     * A reading with its conditions: reply {@code x y z clock_s temp_c payload_kg dir1..dirN}
+     * (temp_c "NaN" when the controller does not model temperature).
+     */
+    @Override
+    public TrackerReading measureReading() {
+        requireExtended("measure");
+        Reply r = call(OpenAbb.MEASURE, "measure");
+        r.expectAtLeast(6, "measure reply (x y z clock_s temp_c payload_kg dir1..dirN)");
+        Vec3 p = new Vec3(Units.mmToM(r.number(0, "x")), Units.mmToM(r.number(1, "y")), Units.mmToM(r.number(2, "z")));
+        double t = r.number(3, "clock_s");
+        String tempTok = r.token(4, "temp_c");
+        double temp = tempTok.equals("NaN") ? Double.NaN : r.number(4, "temp_c");
+        double payload = r.number(5, "payload_kg");
+        int[] dirs = new int[r.data().size() - 6];
+        for (int i = 0; i < dirs.length; i++) {
+            String d = r.token(6 + i, "dir" + (i + 1));
+            if (!d.equals("1") && !d.equals("-1") && !d.equals("0"))
+                throw new CommsException.Protocol("measure reply '" + clip(r.text()) + "': dir" + (i + 1) + " '" + d + "' is not -1, 0 or 1");
+            dirs[i] = Integer.parseInt(d);
+        }
+        return new TrackerReading(p, new PoseConditions(dirs, t, temp, payload));
     }
 
     /** True once HELLO showed a robopro controller (never makes a request itself: the invoker asks while the link is down). */

@@ -11,6 +11,7 @@ import org.robopro.comms.link.SerialPortByteLink;
 import org.robopro.kinematics.Units;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotLibrary;
+import org.robopro.models.Vec3;
 
 /**
  * Starts the simulated controller from settings: the {@code robopro controller-sim} command and
@@ -25,19 +26,60 @@ public final class ControllerSim implements AutoCloseable {
      * @param robot      shipped robot name or robot file
      * @param seed       seed of the geometric errors and of the tracker noise
      * @param errorMm    size of the geometric errors (mm; rad per m for angles)
-     * @param effects    non-geometric effects ({@link ModelSimulatedRobot#EFFECTS})
+     * @param effects    non-geometric effects, NAME[:joint] ({@link SimEffects#NAMES})
      * @param noiseMm    tracker noise (mm, one sigma per axis)
+     * @param targetMm   nominal position of the tracker target on the flange (mm), or null for (0, 0, 100)
+     * @param payloadKg  payload at the flange (kg)
      * @param portFile   file to write the bound TCP port to, or null
      * @param realtime   sleep for the motion time
      * @param faultRate  probability of a fault per reply/frame (tests and demos), 0 for none
      */
     public record Config(String tcp, String serial, int baud, String robot, long seed, double errorMm, List<String> effects,
-                         double noiseMm, Path portFile, boolean realtime, double faultRate) {
+                         double noiseMm, Vec3 targetMm, double payloadKg, Path portFile, boolean realtime, double faultRate) {
         public Config {
             if ((tcp == null) == (serial == null)) throw new IllegalArgumentException("give exactly one of --tcp HOST:PORT and --serial DEVICE");
             if (!(errorMm >= 0 && noiseMm >= 0 && faultRate >= 0 && faultRate < 1))
                 throw new IllegalArgumentException("--error-mm and --noise-mm must be >= 0, --fault-rate in [0, 1)");
             effects = List.copyOf(effects);
+            if (targetMm == null) targetMm = new Vec3(0, 0, 100);
+            if (!targetMm.isFinite() || !(payloadKg >= 0)) throw new IllegalArgumentException("--target must be finite and --payload-kg >= 0");
+        }
+
+        /** Defaults for a TCP simulator of the IRB-2000 (seed 1, 0.5 mm error, 0.02 mm noise, no effects). */
+        public static Config tcp(String hostPort) {
+            return new Config(hostPort, null, 115200, "irb2000", 1, 0.5, List.of(), 0.02, null, 0, null, false, 0);
+        }
+
+        public Config withSeed(long s) { return new Config(tcp, serial, baud, robot, s, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
+        public Config withRobot(String r) { return new Config(tcp, serial, baud, r, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
+        public Config withErrorMm(double e) { return new Config(tcp, serial, baud, robot, seed, e, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
+        public Config withNoiseMm(double n) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, n, targetMm, payloadKg, portFile, realtime, faultRate); }
+        public Config withEffects(List<String> e) { return new Config(tcp, serial, baud, robot, seed, errorMm, e, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate); }
+        public Config withPortFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, f, realtime, faultRate); }
+        public Config withFaultRate(double r) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, r); }
+
+        /** The stand-alone command line for these settings (for {@link ControllerSim#main}). */
+        public List<String> toArgs() {
+            List<String> a = new ArrayList<>();
+            if (tcp != null) { a.add("--tcp"); a.add(tcp); } else { a.add("--serial"); a.add(serial); a.add("--baud"); a.add(Integer.toString(baud)); }
+            a.addAll(List.of("--robot", robot, "--seed", Long.toString(seed), "--error-mm", Double.toString(errorMm),
+                    "--noise-mm", Double.toString(noiseMm), "--target", targetMm.x() + "," + targetMm.y() + "," + targetMm.z(),
+                    "--payload-kg", Double.toString(payloadKg), "--fault-rate", Double.toString(faultRate)));
+            for (String e : effects) { a.add("--effect"); a.add(e); }
+            if (portFile != null) { a.add("--port-file"); a.add(portFile.toString()); }
+            if (realtime) a.add("--realtime");
+            return a;
+        }
+    }
+
+    /** Parses "X,Y,Z" (mm). */
+    public static Vec3 parseTargetMm(String s) {
+        String[] p = s.split(",");
+        if (p.length != 3) throw new IllegalArgumentException("--target '" + s + "' is not X,Y,Z (mm)");
+        try {
+            return new Vec3(Double.parseDouble(p[0].strip()), Double.parseDouble(p[1].strip()), Double.parseDouble(p[2].strip()));
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("--target '" + s + "': not a number");
         }
     }
 
@@ -52,9 +94,10 @@ public final class ControllerSim implements AutoCloseable {
     }
 
     public static ControllerSim start(Config c) throws IOException {
-        ModelSimulatedRobot robot = ModelSimulatedRobot.create(RobotLibrary.load(c.robot()), c.seed(), Units.mmToM(c.errorMm()), c.effects());
+        TrueSimulatedRobot robot = TrueSimulatedRobot.create(RobotLibrary.load(c.robot()), c.seed(),
+                new TrueSimulatedRobot.Options(Units.mmToM(c.errorMm()), Units.mmToM(c.noiseMm()), c.targetMm().times(1e-3), c.effects()));
         SimulatedController controller = new SimulatedController(robot,
-                SimulatedController.Settings.defaults(c.seed()).withNoise(Units.mmToM(c.noiseMm())).withRealtime(c.realtime()));
+                SimulatedController.Settings.defaults(c.seed()).withRealtime(c.realtime()).withPayload(c.payloadKg()));
         ProtocolHandler handler = new ProtocolHandler(controller);
         FaultInjector faults = c.faultRate() > 0 ? FaultInjector.uniform(c.seed() + 1, c.faultRate(), 30) : null;
         if (c.tcp() != null) {
@@ -79,6 +122,9 @@ public final class ControllerSim implements AutoCloseable {
 
     public SimulatedController controller() { return controller; }
 
+    /** The bound TCP motion port, or -1 for a serial simulator. */
+    public int port() { return server instanceof TcpControllerServer t ? t.port() : -1; }
+
     /** Where it listens, for the user. */
     public String where() { return where; }
 
@@ -90,14 +136,16 @@ public final class ControllerSim implements AutoCloseable {
 
     /**
      * Stand-alone entry: {@code --tcp HOST:PORT | --serial DEVICE [--baud N] [--robot NAME] [--seed N]
-     * [--error-mm X] [--effect NAME]... [--noise-mm X] [--port-file FILE] [--realtime] [--fault-rate R]}.
+     * [--error-mm X] [--effect NAME[:joint]]... [--noise-mm X] [--target X,Y,Z] [--payload-kg M] [--port-file FILE]
+     * [--realtime] [--fault-rate R]}.
      * Runs until killed.
      */
     public static void main(String[] args) throws Exception {
         String tcp = null, serial = null, robot = "irb2000";
         int baud = 115200;
         long seed = 1;
-        double error = 0.5, noise = 0.02, faultRate = 0;
+        double error = 0.5, noise = 0.02, faultRate = 0, payload = 0;
+        Vec3 target = null;
         List<String> effects = new ArrayList<>();
         Path portFile = null;
         boolean realtime = false;
@@ -118,13 +166,16 @@ public final class ControllerSim implements AutoCloseable {
                         case "--effect" -> effects.add(v);
                         case "--noise-mm" -> noise = Double.parseDouble(v);
                         case "--port-file" -> portFile = Path.of(v);
+                        case "--target" -> target = parseTargetMm(v);
+                        case "--payload-kg" -> payload = Double.parseDouble(v);
                         case "--fault-rate" -> faultRate = Double.parseDouble(v);
                         default -> throw new IllegalArgumentException("unknown option " + a);
                     }
                 }
             }
         }
-        ControllerSim sim = start(new Config(tcp, serial, baud, robot, seed, error, effects, noise, portFile, realtime, faultRate));
+        ControllerSim sim = start(new Config(tcp, serial, baud, robot, seed, error, effects, noise, target, payload, portFile, realtime,
+                faultRate));
         System.out.println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where());
         Thread.currentThread().join();
     }

@@ -7,6 +7,7 @@ import java.util.List;
 import org.robopro.comms.CommsException;
 import org.robopro.comms.ControllerStatus;
 import org.robopro.comms.ErrorCode;
+import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
 import org.robopro.comms.SpeedData;
@@ -231,8 +232,16 @@ public final class ProtocolHandler {
             case OpenAbb.STOP_PROGRAM -> { r.expectCount(0); c.stopProgram(); return ""; }
             case OpenAbb.MEASURE -> {
                 r.expectCount(0);
-                Vec3 p = c.measure();
-                return OpenAbb.num(Units.mToMm(p.x()), 4) + " " + OpenAbb.num(Units.mToMm(p.y()), 4) + " " + OpenAbb.num(Units.mToMm(p.z()), 4);
+                // x y z (mm), then the conditions: clock_s temp_c|NaN payload_kg dir1..dirN
+                TrackerReading m = c.measureReading();
+                Vec3 p = m.position();
+                StringBuilder sb = new StringBuilder();
+                sb.append(OpenAbb.num(Units.mToMm(p.x()), 4)).append(' ').append(OpenAbb.num(Units.mToMm(p.y()), 4)).append(' ')
+                        .append(OpenAbb.num(Units.mToMm(p.z()), 4)).append(' ').append(OpenAbb.num(m.conditions().timeS(), 3)).append(' ')
+                        .append(Double.isNaN(m.conditions().tempC()) ? "NaN" : OpenAbb.num(m.conditions().tempC(), 3)).append(' ')
+                        .append(OpenAbb.num(m.conditions().payloadKg(), 3));
+                for (int d : m.conditions().directions()) sb.append(' ').append(d);
+                return sb.toString();
             }
             default -> throw new RequestException(r.code(), ErrorCode.UNKNOWN_INSTRUCTION, "instruction " + r.code() + " is not known");
         }

@@ -12,6 +12,7 @@ import java.util.Optional;
 import java.util.Random;
 import java.util.TreeMap;
 import java.util.concurrent.atomic.AtomicLong;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.comms.CommsException;
 import org.robopro.comms.ControllerReceiver;
 import org.robopro.comms.ControllerStatus;
@@ -19,6 +20,7 @@ import org.robopro.comms.ErrorCode;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
 import org.robopro.comms.SpeedData;
+import org.robopro.comms.TrackerReading;
 import org.robopro.comms.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
@@ -43,17 +45,23 @@ public final class SimulatedController implements ControllerReceiver {
     private static final Logger LOG = LoggerFactory.getLogger(SimulatedController.class);
     private static final int DEDUP_WINDOW = 50_000;
 
-    /** Settings of the simulated controller and its tracker. */
-    public record Settings(long seed, double trackerNoiseM, Pose trackerTbase, boolean realtime) {
-        /** A tracker 3 m in front of the robot, looking back at it, rotated about z (an unknown transform for calibration). */
-        public static Settings defaults(long seed) {
-            return new Settings(seed, 0.02e-3,
-                    Pose.rotZ(Math.toRadians(160)).times(Pose.translation(-3.0, 0.4, -0.2)), false);
+    /**
+     * Settings of the simulated controller (the tracker's pose and noise belong to the robot).
+     *
+     * @param seed      seed of the tracker noise
+     * @param realtime  sleep for each motion's time
+     * @param payloadKg mass carried at the flange (reported with each tracker reading)
+     */
+    public record Settings(long seed, boolean realtime, double payloadKg) {
+        public Settings {
+            if (!(payloadKg >= 0) || !Double.isFinite(payloadKg)) throw new IllegalArgumentException("payload " + payloadKg + " kg must be >= 0");
         }
 
-        public Settings withNoise(double noiseM) { return new Settings(seed, noiseM, trackerTbase, realtime); }
+        public static Settings defaults(long seed) { return new Settings(seed, false, 0); }
 
-        public Settings withRealtime(boolean rt) { return new Settings(seed, trackerNoiseM, trackerTbase, rt); }
+        public Settings withRealtime(boolean rt) { return new Settings(seed, rt, payloadKg); }
+
+        public Settings withPayload(double kg) { return new Settings(seed, realtime, kg); }
     }
 
     private final SimulatedRobot robot;
@@ -102,7 +110,7 @@ public final class SimulatedController implements ControllerReceiver {
     }
 
     public SimulatedController(SimulatedRobot robot, Settings settings) {
-        this(robot, settings, new MiniRapidInterpreter());
+        this(robot, settings, new RapidProgramInterpreter());
     }
 
     public SimulatedRobot robot() { return robot; }
@@ -208,11 +216,16 @@ public final class SimulatedController implements ControllerReceiver {
     }
 
     private MotionResult executeJointMove(double[] target) {
+        return executeJointMove(target, speed, Double.NaN);
+    }
+
+    /** MoveAbsJ / MoveJ: joint interpolation, as slow as the slowest joint, the TCP speed or {@code \T} demand. */
+    private MotionResult executeJointMove(double[] target, SpeedData s, double timeS) {
         checkLimits(target, "joint target");
         double t = jointTime(q, target);
         double tcp = robot.nominalFlange(q).times(flangeTtool).distanceTo(robot.nominalFlange(target).times(flangeTtool));
-        t = Math.max(t, tcp / speed.tcpMPerS());
-        return finishMotion(target, t);
+        t = Math.max(t, Double.isFinite(timeS) ? timeS : tcp / s.tcpMPerS());
+        return finishMotion(target, t, q);
     }
 
     private double jointTime(double[] from, double[] to) {
@@ -222,56 +235,108 @@ public final class SimulatedController implements ControllerReceiver {
         return t;
     }
 
+    /** The TCP's path in base coordinates, s from 0 (start) to 1 (target). */
+    private interface ToolPath {
+        Pose baseTtool(double s);
+    }
+
     /** MoveL: straight TCP path, orientation interpolated; every sample must be reachable within limits. */
     private MotionResult executeLinearMove(Pose wobjTtool, SpeedData s) {
-        Pose baseTtool1 = baseTwobj.times(wobjTtool);
-        Pose toolTflange = flangeTtool.inverse();
+        return executeLinear(baseTwobj.times(wobjTtool), s, Double.NaN);
+    }
+
+    private MotionResult executeLinear(Pose baseTtool1, SpeedData s, double timeS) {
         Pose baseTtool0 = robot.nominalFlange(q).times(flangeTtool);
+        Vec3 rv = baseTtool0.inverse().times(baseTtool1).rotationVector();
+        double angle = rv.norm();
+        Vec3 p0 = baseTtool0.position(), p1 = baseTtool1.position();
+        ToolPath path = sk -> Pose.translation(p0.plus(p1.minus(p0).times(sk)))
+                .times(rotationOnly(angle < 1e-12 ? baseTtool0 : baseTtool0.times(Pose.rotAxis(rv, angle * sk))));
+        return executePath(path, baseTtool1, p1.minus(p0).norm(), angle, s, timeS, "linear");
+    }
+
+    /**
+     * MoveC: the TCP on the circle through start, CirPoint and ToPoint, from the start through the
+     * CirPoint to the ToPoint; the orientation turns uniformly from the start's to the ToPoint's.
+     * Circle centre from the circumscribed-circle formula (centre = C + ((|a|²b − |b|²a) × (a × b)) / (2|a × b|²),
+     * a = A − C, b = B − C).
+     */
+    private MotionResult executeCircular(Pose baseTtoolCirc, Pose baseTtool1, SpeedData s, double timeS) {
+        Pose baseTtool0 = robot.nominalFlange(q).times(flangeTtool);
+        Vec3 p0 = baseTtool0.position(), pc = baseTtoolCirc.position(), p2 = baseTtool1.position();
+        Vec3 u = pc.minus(p0), v = p2.minus(p0), nrm = u.cross(v);
+        if (nrm.norm() < 1e-6 * Math.max(1e-3, u.norm() * v.norm()) || u.norm() < 1e-4 || v.norm() < 1e-4 || pc.minus(p2).norm() < 1e-4)
+            throw new CommsException.Refused(ErrorCode.PATH_UNREACHABLE,
+                    "circular move: start, CirPoint and ToPoint are (nearly) on one line or coincide; no circle through them");
+        Vec3 a = p0.minus(p2), b = pc.minus(p2), axb = a.cross(b);
+        Vec3 centre = p2.plus(b.times(a.dot(a)).minus(a.times(b.dot(b))).cross(axb).times(1 / (2 * axb.dot(axb))));
+        double r = p0.minus(centre).norm();
+        Vec3 n = nrm.times(1 / nrm.norm());
+        Vec3 e1 = p0.minus(centre).times(1 / r), e2 = n.cross(e1);
+        double phiC = angleIn(pc.minus(centre), e1, e2), phi2 = angleIn(p2.minus(centre), e1, e2);
+        if (!(phiC > 0 && phiC < phi2)) throw new IllegalStateException("circle construction: CirPoint angle " + phiC + " not before " + phi2);
+        Vec3 rv = baseTtool0.inverse().times(baseTtool1).rotationVector();
+        double angle = rv.norm();
+        ToolPath path = sk -> Pose.translation(centre.plus(e1.times(r * Math.cos(sk * phi2))).plus(e2.times(r * Math.sin(sk * phi2))))
+                .times(rotationOnly(angle < 1e-12 ? baseTtool0 : baseTtool0.times(Pose.rotAxis(rv, angle * sk))));
+        return executePath(path, baseTtool1, r * phi2, angle, s, timeS, "circular");
+    }
+
+    /** Angle of {@code d} in the plane spanned by e1, e2, in [0, 2π). */
+    private static double angleIn(Vec3 d, Vec3 e1, Vec3 e2) {
+        double phi = Math.atan2(d.dot(e2), d.dot(e1));
+        return phi < 0 ? phi + 2 * Math.PI : phi;
+    }
+
+    private static Pose rotationOnly(Pose p) { return Pose.of(p.rotationRowMajor(), 0, 0, 0); }
+
+    /** Follows a TCP path sampled every 5 mm / 2°; refuses it (without moving) if any sample is unreachable, out of limits, or a joint jumps. */
+    private MotionResult executePath(ToolPath path, Pose baseTtool1, double lengthM, double angle, SpeedData s, double timeS, String what) {
+        Pose toolTflange = flangeTtool.inverse();
         Optional<double[]> end = robot.inverse(baseTtool1.times(toolTflange), q);
         if (end.isEmpty())
             throw new CommsException.Refused(ErrorCode.UNREACHABLE, String.format(Locale.ROOT,
-                    "target (%.2f, %.2f, %.2f) mm is out of reach", Units.mToMm(wobjTtool.x()), Units.mToMm(wobjTtool.y()),
-                    Units.mToMm(wobjTtool.z())));
-        checkLimits(end.get(), "linear target");
-        double dist = baseTtool0.distanceTo(baseTtool1);
-        Pose rel = baseTtool0.inverse().times(baseTtool1);
-        Vec3 rv = rel.rotationVector();
-        double angle = rv.norm();
-        int n = (int) Math.min(2000, Math.max(1, Math.ceil(Math.max(dist / 0.005, angle / Math.toRadians(2)))));
-        double[] qi = q;
+                    "target (%.2f, %.2f, %.2f) mm (base frame) is out of reach", Units.mToMm(baseTtool1.x()), Units.mToMm(baseTtool1.y()),
+                    Units.mToMm(baseTtool1.z())));
+        checkLimits(end.get(), what + " target");
+        int n = (int) Math.min(4000, Math.max(1, Math.ceil(Math.max(lengthM / 0.005, angle / Math.toRadians(2)))));
+        double[] qi = q, prev = q;
         double jointBound = 0;
         for (int k = 1; k <= n; k++) {
             double sk = (double) k / n;
-            Pose rot = angle < 1e-12 ? Pose.IDENTITY : Pose.rotAxis(rv, angle * sk);
-            Pose pk = Pose.translation(baseTtool0.x() + sk * (baseTtool1.x() - baseTtool0.x()),
-                    baseTtool0.y() + sk * (baseTtool1.y() - baseTtool0.y()),
-                    baseTtool0.z() + sk * (baseTtool1.z() - baseTtool0.z()))
-                    .times(Pose.of(baseTtool0.times(rot).rotationRowMajor(), 0, 0, 0));
+            Pose pk = k == n ? baseTtool1 : path.baseTtool(sk);
             Optional<double[]> sol = robot.inverse(pk.times(toolTflange), qi);
             if (sol.isEmpty())
                 throw new CommsException.Refused(ErrorCode.PATH_UNREACHABLE, String.format(Locale.ROOT,
-                        "linear path leaves the workspace at %.0f %% of the way", 100 * sk));
+                        "%s path leaves the workspace at %.0f %% of the way", what, 100 * sk));
             double[] qk = sol.get();
             for (int i = 0; i < qk.length; i++) {
                 if (Math.abs(qk[i] - qi[i]) > 0.5)
                     throw new CommsException.Refused(ErrorCode.PATH_UNREACHABLE, String.format(Locale.ROOT,
-                            "linear path passes a singularity near %.0f %% of the way (joint %d jumps)", 100 * sk, i + 1));
+                            "%s path passes a singularity near %.0f %% of the way (joint %d jumps)", what, 100 * sk, i + 1));
             }
             try {
-                checkLimits(qk, "linear path");
+                checkLimits(qk, what + " path");
             } catch (CommsException.Refused e) {
                 throw new CommsException.Refused(ErrorCode.PATH_UNREACHABLE, e.getMessage().substring(e.code().toString().length() + 1));
             }
             jointBound += jointTime(qi, qk);
+            prev = qi;
             qi = qk;
         }
-        double t = Math.max(jointBound, Math.max(dist / s.tcpMPerS(), angle / s.oriRadPerS()));
-        return finishMotion(qi, t);
+        double t = Math.max(jointBound, Double.isFinite(timeS) ? timeS : Math.max(lengthM / s.tcpMPerS(), angle / s.oriRadPerS()));
+        return finishMotion(qi, t, prev);
     }
 
-    private MotionResult finishMotion(double[] target, double t) {
+    /**
+     * Ends a motion at {@code target}. Each joint's approach direction is the sign of its last
+     * change before arriving (from {@code approachFrom}, the previous path sample), kept when the
+     * joint did not move.
+     */
+    private MotionResult finishMotion(double[] target, double t, double[] approachFrom) {
         for (int i = 0; i < q.length; i++) {
-            double d = target[i] - q[i];
+            double d = target[i] - approachFrom[i];
+            if (Math.abs(d) < 1e-12) d = target[i] - q[i];
             if (Math.abs(d) > 1e-12) lastDirection[i] = d > 0 ? 1 : -1;
         }
         q = target.clone();
@@ -313,12 +378,21 @@ public final class SimulatedController implements ControllerReceiver {
 
     // ---------------------------------------------------------------- tracker
 
-    /** Laser tracker reading: the tool frame's origin (the target) on the true robot, tracker frame, with noise. */
+    /** Laser tracker reading: the target on the physical robot's tool, tracker frame, with noise. */
     @Override
-    public synchronized Vec3 measure() {
-        Vec3 p = settings.trackerTbase().times(robot.trueFlange(q, lastDirection)).times(flangeTtool).position();
-        double s = settings.trackerNoiseM();
-        return new Vec3(p.x() + s * noise.nextGaussian(), p.y() + s * noise.nextGaussian(), p.z() + s * noise.nextGaussian());
+    public synchronized Vec3 measure() { return measureReading().position(); }
+
+    /** A tracker reading with the conditions it was taken under (directions, clock, temperature, payload). */
+    @Override
+    public synchronized TrackerReading measureReading() {
+        PoseConditions c = conditions();
+        return new TrackerReading(robot.measure(q, c, noise), c);
+    }
+
+    /** The conditions now: approach directions, clock, temperature (warm-up when the robot is thermal, else NaN), payload. */
+    public synchronized PoseConditions conditions() {
+        return new PoseConditions(lastDirection.clone(), clockS, robot.thermal() ? SimEffects.warmupC(clockS) : Double.NaN,
+                settings.payloadKg());
     }
 
     /** Sign of each joint's last motion (1, -1, 0 before any motion). */
@@ -338,7 +412,7 @@ public final class SimulatedController implements ControllerReceiver {
             throw new CommsException.Refused(ErrorCode.CHECKSUM_MISMATCH, "received " + text.length + " bytes, crc "
                     + Checksums.hex(crc) + "; sender announced " + announcedLength + " bytes, crc " + Checksums.hex(announcedCrc)
                     + "; nothing stored");
-        String problem = interpreter.check(new String(text, StandardCharsets.UTF_8), robot.dof());
+        String problem = interpreter.parseProblem(new String(text, StandardCharsets.UTF_8), name);
         if (problem != null) throw new CommsException.Refused(ErrorCode.PROGRAM_SYNTAX, name + ": " + problem + "; nothing stored");
         programs.put(name, text.clone());
         return new ProgramInfo(name, text.length, crc);
@@ -381,9 +455,9 @@ public final class SimulatedController implements ControllerReceiver {
         if (text == null) throw refuse(requestId, ErrorCode.NO_SUCH_PROGRAM, "no program named '" + name + "'");
         List<ProgramInterpreter.Step> steps;
         try {
-            steps = interpreter.compile(new String(text, StandardCharsets.UTF_8), robot.dof());
+            steps = interpreter.compile(new String(text, StandardCharsets.UTF_8), name, robot.dof());
         } catch (IllegalArgumentException e) {
-            throw refuse(requestId, ErrorCode.PROGRAM_SYNTAX, name + ": " + e.getMessage());
+            throw refuse(requestId, ErrorCode.PROGRAM_NOT_SIMULATED, e.getMessage());
         }
         if (requestId > 0) outcomes.put(requestId, Boolean.TRUE);
         state = ControllerStatus.State.RUNNING;
@@ -395,25 +469,13 @@ public final class SimulatedController implements ControllerReceiver {
     }
 
     private void runSteps(String name, List<ProgramInterpreter.Step> steps) {
-        int i = 0;
+        ProgramInterpreter.Step current = null;
         try {
             for (ProgramInterpreter.Step step : steps) {
                 if (stopRequested) break;
-                i++;
+                current = step;
                 synchronized (this) {
-                    if (step.speed() != null) speed = step.speed();
-                    if (step.tool() != null) flangeTtool = step.tool();
-                    if (step.wobj() != null) baseTwobj = step.wobj();
-                    switch (step.kind()) {
-                        case ABS_JOINTS -> executeJointMove(step.joints());
-                        case JOINT_TO_POSE -> {
-                            Pose target = baseTwobj.times(step.pose()).times(flangeTtool.inverse());
-                            double[] qt = robot.inverse(target, q).orElseThrow(() -> new CommsException.Refused(
-                                    ErrorCode.UNREACHABLE, "MoveJ target out of reach"));
-                            executeJointMove(qt);
-                        }
-                        case LINEAR -> executeLinearMove(step.pose(), speed);
-                    }
+                    execute(step);
                 }
             }
             synchronized (this) {
@@ -422,9 +484,33 @@ public final class SimulatedController implements ControllerReceiver {
         } catch (RuntimeException e) {
             synchronized (this) {
                 ErrorCode code = e instanceof CommsException.Refused r ? r.code() : ErrorCode.PROGRAM_RUNTIME;
-                logError(code, name + " step " + i + ": " + e.getMessage());
+                String msg = e instanceof CommsException.Refused r ? stripCode(r) : e.toString();
+                logError(code, name + " " + (current == null ? "" : current.where()) + ": " + msg);
                 state = ControllerStatus.State.ERROR;
             }
+        }
+    }
+
+    /** One program step; the instruction's tool, work object and speed become the controller's. */
+    private void execute(ProgramInterpreter.Step step) {
+        if (step.kind() == ProgramInterpreter.Kind.WAIT) {
+            clockS += step.waitS();
+            return;
+        }
+        speed = step.speed();
+        flangeTtool = step.flangeTtool();
+        baseTwobj = step.baseTwobj();
+        switch (step.kind()) {
+            case ABS_JOINTS -> executeJointMove(step.joints(), speed, step.timeS());
+            case JOINT_TO_POSE -> {
+                double[] qt = robot.inverse(step.baseTflange(), q).orElseThrow(() -> new CommsException.Refused(
+                        ErrorCode.UNREACHABLE, "MoveJ target out of reach"));
+                executeJointMove(qt, speed, step.timeS());
+            }
+            case LINEAR -> executeLinear(step.baseTflange().times(flangeTtool), speed, step.timeS());
+            case CIRCULAR -> executeCircular(step.baseTflangeCirc().times(flangeTtool), step.baseTflange().times(flangeTtool), speed,
+                    step.timeS());
+            case WAIT -> throw new AssertionError();
         }
     }
 

@@ -1,11 +1,14 @@
 package org.robopro.comms.sim;
 
 import java.util.Optional;
+import java.util.Random;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
 
 /**
  * The robot behind the simulated controller: the controller's own (nominal) model, which it
- * uses for CRobT and inverse kinematics, and the "true" robot the laser tracker sees, which
+ * uses for CRobT and inverse kinematics, and the physical robot the laser tracker sees, which
  * differs by the errors calibration is meant to find. SI units; q are controller joint values.
  */
 public interface SimulatedRobot {
@@ -23,12 +26,15 @@ public interface SimulatedRobot {
     /** baseTflange of the controller's nominal model at q. */
     Pose nominalFlange(double[] q);
 
-    /**
-     * baseTflange of the physical robot at q, reached with the last motion of each joint in
-     * direction {@code lastDirection} (1, -1 or 0; for backlash-like effects).
-     */
-    Pose trueFlange(double[] q, int[] lastDirection);
-
     /** Joint values near {@code qSeed} reaching {@code baseTflange} in the nominal model, if any (limits unchecked). */
     Optional<double[]> inverse(Pose baseTflange, double[] qSeed);
+
+    /**
+     * A tracker reading: the target on the physical robot's tool at q, reached and measured under
+     * conditions {@code c}, in the tracker frame (m), with the instrument's noise drawn from {@code rng}.
+     */
+    Vec3 measure(double[] q, PoseConditions c, Random rng);
+
+    /** True when the physical robot depends on temperature (the controller then simulates a warm-up). */
+    default boolean thermal() { return false; }
 }

@@ -76,7 +76,11 @@ class ProtocolClientTcpTest {
         inv.execute(Commands.moveLinear(goal));
         assertEquals(0, inv.execute(Commands.readPose()).distanceTo(goal), 2e-6);
         Vec3 meas = inv.execute(Commands.measure());
-        assertEquals(0, meas.minus(sim.settings().trackerTbase().times(sim.robot().trueFlange(sim.readJoints(), new int[6])).times(tool).position()).norm(), 1e-6);
+        assertEquals(0, meas.minus(TestSupport.gantryTruePoint(sim)).norm(), 1e-6);
+        var reading = inv.execute(Commands.measureReading());
+        assertEquals(0, reading.position().minus(meas).norm(), 1e-6);
+        assertArrayEquals(sim.lastDirection(), reading.conditions().directions());
+        assertEquals(sim.clockS(), reading.conditions().timeS(), 1e-3);
 
         byte[] prog = TestSupport.squareProgram();
         ProgramInfo info = inv.execute(Commands.downloadProgram("square", prog));

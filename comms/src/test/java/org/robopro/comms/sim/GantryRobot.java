@@ -1,19 +1,31 @@
 package org.robopro.comms.sim;
 
 import java.util.Optional;
+import java.util.Random;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
 
 /**
  * A test double for {@link SimulatedRobot} with trivial kinematics: the flange position is
  * (0.8 + 0.3 q1, 0.3 q2, 1.0 + 0.3 q3) m and its orientation rotZ(q4) rotY(q5) rotX(q6), so
- * inverse kinematics is closed form. The "true" robot is shifted by {@code errorM} along x.
+ * inverse kinematics is closed form. The "true" robot is shifted by {@code errorM} along x; the
+ * tracker target sits at {@link #TARGET} on the flange, the tracker at {@link #TRACKER_T_BASE}.
  */
 final class GantryRobot implements SimulatedRobot {
+    static final Pose TRACKER_T_BASE = Pose.rotZ(Math.toRadians(160)).times(Pose.translation(-3.0, 0.4, -0.2));
+    static final Vec3 TARGET = new Vec3(0, 0, 0.1);
     private final double errorM;
+    private final double noiseM;
 
-    GantryRobot(double errorM) { this.errorM = errorM; }
+    GantryRobot(double errorM, double noiseM) {
+        this.errorM = errorM;
+        this.noiseM = noiseM;
+    }
 
-    GantryRobot() { this(0.0005); }
+    GantryRobot(double noiseM) { this(0.0005, noiseM); }
+
+    GantryRobot() { this(0.0005, 0); }
 
     @Override public String name() { return "gantry"; }
 
@@ -31,9 +43,17 @@ final class GantryRobot implements SimulatedRobot {
                 .times(Pose.rotZ(q[3])).times(Pose.rotY(q[4])).times(Pose.rotX(q[5]));
     }
 
-    @Override
-    public Pose trueFlange(double[] q, int[] lastDirection) {
+    Pose trueFlange(double[] q) {
         return Pose.translation(errorM, 0, 0).times(nominalFlange(q));
+    }
+
+    /** The tracker target's true position in the tracker frame, without noise. */
+    Vec3 truePoint(double[] q) { return TRACKER_T_BASE.times(trueFlange(q)).apply(TARGET); }
+
+    @Override
+    public Vec3 measure(double[] q, PoseConditions c, Random rng) {
+        Vec3 p = truePoint(q);
+        return new Vec3(p.x() + noiseM * rng.nextGaussian(), p.y() + noiseM * rng.nextGaussian(), p.z() + noiseM * rng.nextGaussian());
     }
 
     @Override

@@ -19,7 +19,7 @@ final class Programs {
                     MoveAbsJ home\\NoEOffs, v1000, z50, tool0;
                     MoveJ p1, v500, fine, pen;
                     MoveL p2, v200, z10, pen;
-                    TPWrite "corner";
+                    WaitTime 0.5;
                     MoveL p3, v200, z10, pen \\WObj:=wobj0;
                     MoveL [[900,100,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v200, fine, pen;
                   ENDPROC

@@ -17,7 +17,7 @@ import org.robopro.models.Vec3;
 class SimulatedControllerTest {
 
     static SimulatedController controller(double noiseM) {
-        return new SimulatedController(new GantryRobot(), SimulatedController.Settings.defaults(7).withNoise(noiseM));
+        return new SimulatedController(new GantryRobot(noiseM), SimulatedController.Settings.defaults(7));
     }
 
     @Test
@@ -87,16 +87,28 @@ class SimulatedControllerTest {
     }
 
     @Test
-    void measure_withoutNoise_isTrackerTimesTrueRobotTimesToolOrigin() {
+    void measure_withoutNoise_isTrueTargetInTrackerFrameWhateverTheTool() {
         SimulatedController c = controller(0);
         c.setTool(Pose.translation(0.01, 0.02, 0.15));
         c.moveJoints(0, new double[] {0.3, -0.2, 0.1, 0.4, -0.3, 0.2});
         Vec3 m = c.measure();
-        Vec3 expected = c.settings().trackerTbase().times(new GantryRobot().trueFlange(c.readJoints(), new int[6]))
-                .apply(new Vec3(0.01, 0.02, 0.15));
-        assertEquals(0, m.minus(expected).norm(), 1e-12);
-        Vec3 nominal = c.settings().trackerTbase().times(c.robot().nominalFlange(c.readJoints())).apply(new Vec3(0.01, 0.02, 0.15));
+        GantryRobot g = new GantryRobot();
+        assertEquals(0, m.minus(g.truePoint(c.readJoints())).norm(), 1e-12);
+        Vec3 nominal = GantryRobot.TRACKER_T_BASE.times(c.robot().nominalFlange(c.readJoints())).apply(GantryRobot.TARGET);
         assertEquals(0.0005, m.minus(nominal).norm(), 1e-9, "the tracker sees the true robot, not the nominal model");
+    }
+
+    @Test
+    void measureReading_afterMoves_reportsApproachDirectionsClockAndNoTemperature() {
+        SimulatedController c = controller(0);
+        c.moveJoints(0, new double[] {0.3, -0.2, 0, 0, 0, 0});
+        c.moveJoints(0, new double[] {0.2, -0.2, 0.1, 0, 0, 0});
+        var r = c.measureReading();
+        assertArrayEquals(new int[] {-1, -1, 1, 0, 0, 0}, r.conditions().directions());
+        assertEquals(c.clockS(), r.conditions().timeS(), 0);
+        assertTrue(r.conditions().timeS() > 0);
+        assertTrue(Double.isNaN(r.conditions().tempC()), "the gantry does not model temperature");
+        assertEquals(0, r.conditions().payloadKg(), 0);
     }
 
     @Test
@@ -130,7 +142,7 @@ class SimulatedControllerTest {
         byte[] text = "MODULE m\nPROC main()\n  MoveL [[1,2],[1,0,0,0]], v100, fine, tool0;\nENDPROC\nENDMODULE\n".getBytes(StandardCharsets.UTF_8);
         CommsException.Refused e = assertThrows(CommsException.Refused.class, () -> c.downloadProgram("bad", text));
         assertEquals(ErrorCode.PROGRAM_SYNTAX, e.code());
-        assertTrue(e.getMessage().contains("line 3"), e.getMessage());
+        assertTrue(e.getMessage().contains("bad:3:9"), "names line and column: " + e.getMessage());
         assertTrue(c.listPrograms().isEmpty());
     }
 
@@ -160,5 +172,71 @@ class SimulatedControllerTest {
         assertEquals(ControllerStatus.State.ERROR, st.state());
         assertEquals(1, c.motionsExecuted());
         assertNotNull(st.lastError());
+    }
+
+    @Test
+    void startProgram_moveC_followsArcThroughCirPointInArcLengthOverSpeed() throws Exception {
+        SimulatedController c = controller(0);
+        String prog = "MODULE arc\nPROC main()\n"
+                + "  MoveL [[800,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n"
+                + "  MoveC [[900,100,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], "
+                + "[[1000,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;\n"
+                + "ENDPROC\nENDMODULE\n";
+        c.downloadProgram("arc", prog.getBytes(StandardCharsets.UTF_8));
+        c.startProgram(0, "arc");
+        c.awaitIdle(Duration.ofSeconds(10));
+        ControllerStatus st = c.readStatus();
+        assertEquals(ControllerStatus.State.IDLE, st.state(), String.valueOf(st));
+        assertEquals(0, c.readPose().distanceTo(Pose.translation(1.0, 0, 1.0)), 1e-9);
+        // The first move starts at the zero pose, which is (0.8, 0, 1.0): no motion time; the arc
+        // is a half circle of radius 0.1 m at 0.1 m/s (a straight line would take 2 s).
+        assertEquals(Math.PI, st.clockS(), 0.01 * Math.PI);
+        // Through the CirPoint, not its mirror image: joint 2 (y) rose to 1/3 (y = 0.1 m) and came back,
+        // so its last approach was downwards.
+        assertEquals(-1, c.lastDirection()[1]);
+    }
+
+    @Test
+    void startProgram_moveCCollinearPoints_errorStatusNamesTheInstruction() throws Exception {
+        SimulatedController c = controller(0);
+        String prog = "MODULE arc\nPROC main()\n"
+                + "  MoveC [[900,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], "
+                + "[[1000,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;\n"
+                + "ENDPROC\nENDMODULE\n";
+        c.downloadProgram("arc", prog.getBytes(StandardCharsets.UTF_8));
+        c.startProgram(0, "arc");
+        c.awaitIdle(Duration.ofSeconds(10));
+        ControllerStatus st = c.readStatus();
+        assertEquals(ControllerStatus.State.ERROR, st.state());
+        assertEquals(ErrorCode.PATH_UNREACHABLE, st.lastError());
+        assertTrue(st.lastErrorMessage().contains("MoveC") && st.lastErrorMessage().contains("line 3"), st.lastErrorMessage());
+        assertEquals(0, c.motionsExecuted());
+    }
+
+    @Test
+    void startProgram_cannotBeSimulated_refusedWithLineAndNothingMoves() {
+        SimulatedController c = controller(0);
+        String prog = "MODULE m\nPROC main()\n  MoveAbsJ [[10,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;\n"
+                + "  missing;\nENDPROC\nENDMODULE\n";
+        c.downloadProgram("m", prog.getBytes(StandardCharsets.UTF_8));
+        CommsException.Refused e = assertThrows(CommsException.Refused.class, () -> c.startProgram(0, "m"));
+        assertEquals(ErrorCode.PROGRAM_NOT_SIMULATED, e.code());
+        assertTrue(e.getMessage().contains("m:4") && e.getMessage().contains("missing"), e.getMessage());
+        assertEquals(0, c.motionsExecuted());
+        assertEquals(ControllerStatus.State.IDLE, c.readStatus().state());
+    }
+
+    @Test
+    void startProgram_controlFlowLoop_runsEveryIterationsMove() throws Exception {
+        SimulatedController c = controller(0);
+        String prog = "MODULE loop\n  CONST robtarget p1 := [[800,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n"
+                + "  PROC main()\n    FOR i FROM 1 TO 3 DO\n      MoveL Offs(p1, 50 * i, 0, 0), v200, fine, tool0;\n    ENDFOR\n"
+                + "    TPWrite \"done\";\n  ENDPROC\nENDMODULE\n";
+        c.downloadProgram("loop", prog.getBytes(StandardCharsets.UTF_8));
+        c.startProgram(0, "loop");
+        c.awaitIdle(Duration.ofSeconds(10));
+        assertEquals(ControllerStatus.State.IDLE, c.readStatus().state(), String.valueOf(c.readStatus()));
+        assertEquals(3, c.motionsExecuted());
+        assertEquals(0, c.readPose().distanceTo(Pose.translation(0.95, 0, 1.0)), 1e-9);
     }
 }

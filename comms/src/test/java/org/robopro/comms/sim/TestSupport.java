@@ -12,6 +12,11 @@ public final class TestSupport {
 
     public static SimulatedRobot gantry() { return new GantryRobot(); }
 
+    /** The tracker target's true position (tracker frame, no noise) of a gantry controller at its current joints. */
+    public static org.robopro.models.Vec3 gantryTruePoint(SimulatedController c) {
+        return ((GantryRobot) c.robot()).truePoint(c.readJoints());
+    }
+
     public static byte[] squareProgram() { return Programs.square().getBytes(StandardCharsets.UTF_8); }
 
     /** A valid program of {@code moves} MoveL lines back and forth (about 75 bytes a move). */

@@ -67,6 +67,9 @@ public abstract class RobotKinematics {
     /** ABB configuration data of q. */
     public abstract ConfData confOf(double[] q);
 
+    /** The kinematics module's model (path checks need it); empty for the built-in screw model. */
+    public abstract Optional<KinematicModel> kinematicModel();
+
     /** True when every q is inside its joint limits. */
     public boolean withinLimits(double[] q) {
         List<JointDescription> js = description.joints();
@@ -116,6 +119,8 @@ public abstract class RobotKinematics {
         }
 
         @Override public ConfData confOf(double[] q) { return ik.confOf(q); }
+
+        @Override public Optional<KinematicModel> kinematicModel() { return Optional.of(model); }
     }
 
     /**
@@ -240,6 +245,9 @@ public abstract class RobotKinematics {
             }
             return x;
         }
+
+        @Override
+        public Optional<KinematicModel> kinematicModel() { return Optional.empty(); }
 
         /** ABB quadrant convention: cf = floor(q / 90 deg) for axes 1, 4, 6; cfx from wrist/elbow signs. */
         @Override

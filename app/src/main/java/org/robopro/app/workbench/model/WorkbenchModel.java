@@ -41,6 +41,11 @@ public final class WorkbenchModel {
     private volatile boolean showFrames;
     private volatile boolean showPath = true;
     private volatile boolean dirty;
+    private String activeWorkObject = Target.WOBJ0;
+    private volatile ModelPreview preview;
+    private volatile double[] ghostQ;
+    private final AtomicLong ghostVersion = new AtomicLong();
+    private ProgramRun run;
 
     public WorkbenchModel(String robotRef, RobotDescription robot) {
         setRobot(robotRef, robot);
@@ -51,6 +56,7 @@ public final class WorkbenchModel {
     public void removeListener(Listener l) { listeners.remove(l); }
 
     private void fire(Change c) {
+        if (c != Change.SELECTION && c != Change.VIEW && c != Change.JOINTS) synchronized (this) { run = null; }
         version.incrementAndGet();
         if (c != Change.SELECTION && c != Change.VIEW) dirty = true;
         for (Listener l : listeners) l.changed(c);
@@ -73,6 +79,12 @@ public final class WorkbenchModel {
             robotRef = Objects.requireNonNull(ref);
             kinematics = RobotKinematics.of(robot);
             q = new double[robot.dof()];
+            // Taught joints of another robot are only IK seeds now: keep their length right.
+            List<Target> n = new ArrayList<>();
+            for (Target t : targets)
+                n.add(t.qTaught().length == robot.dof() ? t
+                        : new Target(t.name(), t.worldTtcp(), java.util.Arrays.copyOf(t.qTaught(), robot.dof()), t.conf(), t.wobj()));
+            targets = List.copyOf(n);
         }
         jointVersion.incrementAndGet();
         fire(Change.ROBOT);
@@ -226,7 +238,7 @@ public final class WorkbenchModel {
             n.removeIf(x -> x.name().equals(name));
             targets = List.copyOf(n);
             List<Instruction> p = new ArrayList<>(program);
-            programChanged = p.removeIf(i -> i.target().equals(name));
+            programChanged = p.removeIf(i -> i.uses(name));
             program = List.copyOf(p);
             if (("target:" + name).equals(selection)) selection = null;
         }
@@ -248,11 +260,91 @@ public final class WorkbenchModel {
         setProgram(n);
     }
 
+    /**
+     * The program mapped to RAPID, stepped, checked and sampled (computed once per change of the
+     * robot, cell, tool, targets or program; callers on any thread share it).
+     */
+    public ProgramRun programRun() {
+        long v;
+        synchronized (this) {
+            if (run != null) return run;
+            v = version.get();
+        }
+        ProgramRun r = ProgramRun.of(this);
+        synchronized (this) {
+            if (version.get() == v) run = r;
+        }
+        return r;
+    }
+
+    /** A robot model under construction drawn instead of the cell's robot (the model wizard). */
+    public record ModelPreview(RobotDescription robot, Pose[] frames) { }
+
+    /** The model wizard's robot, or null when none is being built. */
+    public ModelPreview preview() { return preview; }
+
+    public void setPreview(ModelPreview p) {
+        preview = p;
+        fire(Change.VIEW);
+    }
+
+    /** Joint values read from the real controller, drawn as a ghost robot; null when none. A copy. */
+    public double[] ghostQ() { double[] g = ghostQ; return g == null ? null : g.clone(); }
+
+    public long ghostVersion() { return ghostVersion.get(); }
+
+    public void setGhostQ(double[] q) {
+        ghostQ = q == null ? null : q.clone();
+        ghostVersion.incrementAndGet();
+        for (Listener l : listeners) l.changed(Change.JOINTS);
+    }
+
+    /** The work object new targets are taught in ("wobj0": the world). */
+    public synchronized String activeWorkObject() { return activeWorkObject; }
+
+    public void setActiveWorkObject(String name) {
+        synchronized (this) {
+            if (!name.equalsIgnoreCase(Target.WOBJ0) && workObjects.stream().noneMatch(w -> w.name().equals(name)))
+                throw new IllegalArgumentException("no work object " + name);
+            activeWorkObject = name;
+        }
+        fire(Change.VIEW);
+    }
+
+    /** Replaces the tool, work objects, targets and program with an imported program's. */
+    public void replaceProgram(ProgramModule.Imported imp) {
+        synchronized (this) {
+            tool = imp.tool();
+            List<WorkObject> w = new ArrayList<>(workObjects);
+            for (WorkObject n : imp.workObjects()) {
+                w.removeIf(x -> x.name().equals(n.name()));
+                w.add(n);
+            }
+            workObjects = List.copyOf(w);
+            targets = List.copyOf(imp.targets());
+            program = List.copyOf(imp.program());
+            selection = null;
+        }
+        for (Change c : new Change[] {Change.TOOL, Change.CELL, Change.TARGETS, Change.PROGRAM}) fire(c);
+    }
+
     /** How the robot can reach {@code t} from its taught joint values (the seed keeps the configuration). */
     public TargetStatus status(Target t) {
         Optional<double[]> sol = solveTcp(t.worldTtcp(), t.qTaught());
         if (sol.isEmpty()) return TargetStatus.UNREACHABLE;
         return kinematics().withinLimits(sol.get()) ? TargetStatus.REACHABLE : TargetStatus.OUTSIDE_LIMITS;
+    }
+
+    /** Every target's status, with targets the path check names in an error marked {@link TargetStatus#PATH_PROBLEM}. */
+    public java.util.Map<String, TargetStatus> statuses() {
+        ProgramRun r = programRun();
+        java.util.Map<String, TargetStatus> out = new java.util.HashMap<>();
+        for (Target t : targets()) {
+            TargetStatus s = status(t);
+            if (s.ok() && r.badTargets().contains(t.name())) s = TargetStatus.PATH_PROBLEM;
+            out.put(t.name(), s);
+        }
+        return out;
     }
 
     public synchronized String calibrationReference() { return calibrationReference; }
@@ -291,6 +383,7 @@ public final class WorkbenchModel {
             targets = List.copyOf(p.targets());
             program = List.copyOf(p.program());
             calibrationReference = p.calibrationReference();
+            activeWorkObject = Target.WOBJ0;
             selection = null;
         }
         jointVersion.incrementAndGet();

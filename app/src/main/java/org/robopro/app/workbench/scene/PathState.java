@@ -9,10 +9,9 @@ import com.jme3.scene.Spatial;
 import com.jme3.scene.VertexBuffer;
 import com.jme3.scene.shape.Sphere;
 import com.jme3.util.BufferUtils;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.TargetStatus;
 import org.robopro.app.workbench.model.WorkbenchModel;
@@ -31,7 +30,7 @@ public final class PathState extends BaseAppState {
     private Shapes shapes;
     private long builtVersion = -1;
     private volatile Map<String, TargetStatus> statuses = Map.of();
-    private volatile ProgramPlan plan;
+    private volatile ProgramRun plan;
 
     public PathState(WorkbenchModel model, Node parent) {
         this.model = model;
@@ -41,8 +40,8 @@ public final class PathState extends BaseAppState {
     /** Target statuses as last drawn. */
     public Map<String, TargetStatus> statuses() { return statuses; }
 
-    /** The plan last drawn (may be null before the first frame). */
-    public ProgramPlan plan() { return plan; }
+    /** The program run last drawn (may be null before the first frame). */
+    public ProgramRun plan() { return plan; }
 
     @Override protected void initialize(Application app) { shapes = new Shapes(app.getAssetManager()); }
     @Override protected void cleanup(Application app) { }
@@ -56,11 +55,12 @@ public final class PathState extends BaseAppState {
         if (v == builtVersion) return;
         builtVersion = v;
         node.detachAllChildren();
-        Map<String, TargetStatus> st = new HashMap<>();
         List<Target> targets = model.targets();
+        ProgramRun p = model.programRun();
+        plan = p;
+        Map<String, TargetStatus> st = model.statuses();
         for (Target t : targets) {
-            TargetStatus s = model.status(t);
-            st.put(t.name(), s);
+            TargetStatus s = st.getOrDefault(t.name(), TargetStatus.REACHABLE);
             Node tn = new Node("target-" + t.name());
             tn.setUserData("pick", "target:" + t.name());
             Shapes.apply(t.worldTtcp(), tn);
@@ -71,8 +71,6 @@ public final class PathState extends BaseAppState {
             node.attachChild(tn);
         }
         statuses = Map.copyOf(st);
-        ProgramPlan p = ProgramPlan.of(model);
-        plan = p;
         if (p.sampleCount() >= 2) {
             float[] pts = new float[p.sampleCount() * 3];
             for (int i = 0; i < p.sampleCount(); i++) {
@@ -91,9 +89,10 @@ public final class PathState extends BaseAppState {
             node.attachChild(line);
         }
         // Straight dashes between consecutive program targets whose move failed, so the gap is visible.
-        for (ProgramPlan.Step s : p.steps()) {
-            if (s.ok() || s.index() == 0) continue;
-            var from = model.target(model.program().get(s.index() - 1).target());
+        List<org.robopro.app.workbench.model.Instruction> program = model.program();
+        for (ProgramRun.Step s : p.steps()) {
+            if (s.ok() || s.index() == 0 || s.index() >= program.size()) continue;
+            var from = model.target(program.get(s.index() - 1).target());
             var to = model.target(s.instruction().target());
             if (from.isEmpty() || to.isEmpty()) continue;
             node.attachChild(shapes.beam("path-fail", Shapes.v(from.get().worldTtcp().position()),

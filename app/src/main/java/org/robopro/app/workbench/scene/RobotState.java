@@ -40,10 +40,23 @@ public final class RobotState extends BaseAppState {
 
     /** {@code robotMeshes} resolves a robot file's mesh path (relative to the robot file), or null when it cannot. */
     public RobotState(WorkbenchModel model, Node parent, java.util.function.Function<String, java.nio.file.Path> robotMeshes) {
+        this(model, parent, robotMeshes, false);
+    }
+
+    /**
+     * With {@code ghost}, draws the joints read from the real controller ({@link WorkbenchModel#ghostQ()})
+     * as a translucent blue copy, hidden while there are none.
+     */
+    public RobotState(WorkbenchModel model, Node parent, java.util.function.Function<String, java.nio.file.Path> robotMeshes,
+                      boolean ghost) {
         this.model = model;
         this.parent = parent;
         this.robotMeshes = robotMeshes;
+        this.ghost = ghost;
+        if (ghost) robotRoot.setName("robot-ghost");
     }
+
+    private final boolean ghost;
 
     private final java.util.function.Function<String, java.nio.file.Path> robotMeshes;
 
@@ -61,21 +74,37 @@ public final class RobotState extends BaseAppState {
         Tool tool = model.tool();
         if (k != builtFor || tool != toolBuiltFor) {
             build(k, tool);
+            if (ghost) ghostify(robotRoot, shapes.ghost(0x3D7DFF));
             builtFor = k;
             toolBuiltFor = tool;
             jointVersion = -1;
         }
         Shapes.apply(model.worldTbase(), robotRoot);
-        long jv = model.jointVersion();
+        double[] ghostQ = ghost ? model.ghostQ() : null;
+        boolean hidden = model.preview() != null || (ghost && (ghostQ == null || ghostQ.length != k.dof()));
+        robotRoot.setCullHint(hidden ? Spatial.CullHint.Always : Spatial.CullHint.Inherit);
+        if (hidden) return;
+        long jv = ghost ? model.ghostVersion() : model.jointVersion();
         if (jv != jointVersion) {
             jointVersion = jv;
-            Pose[] d = k.linkDisplacements(model.q());
+            Pose[] d = k.linkDisplacements(ghost ? ghostQ : model.q());
             for (int i = 1; i < links.length; i++) Shapes.apply(d[i - 1].inverse().times(d[i]), links[i]);
         }
         if (model.showFrames() != framesShown) {
             framesShown = model.showFrames();
             framesNode.setCullHint(framesShown ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
             setFramesVisible(robotRoot, framesShown);
+        }
+    }
+
+    private static void ghostify(Spatial s, com.jme3.material.Material m) {
+        if (s instanceof com.jme3.scene.Geometry g) {
+            g.setMaterial(m);
+            g.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
+            g.setUserData("pick", null);
+        } else if (s instanceof Node n) {
+            if (n.getName() != null && n.getName().startsWith("frame")) n.removeFromParent();
+            else for (Spatial c : List.copyOf(n.getChildren())) ghostify(c, m);
         }
     }
 

@@ -76,6 +76,17 @@ public final class Shapes {
         });
     }
 
+    /** Translucent unshaded colour (the real robot's ghost). */
+    public Material ghost(int rgb) {
+        Material m = new Material(assets, "Common/MatDefs/Misc/Unshaded.j3md");
+        ColorRGBA c = color(rgb);
+        c.a = 0.35f;
+        m.setColor("Color", c);
+        m.getAdditionalRenderState().setBlendMode(com.jme3.material.RenderState.BlendMode.Alpha);
+        m.getAdditionalRenderState().setDepthWrite(false);
+        return m;
+    }
+
     public static ColorRGBA color(int rgb) {
         return new ColorRGBA(((rgb >> 16) & 255) / 255f, ((rgb >> 8) & 255) / 255f, (rgb & 255) / 255f, 1f);
     }

@@ -38,6 +38,7 @@ public final class WorkbenchApp extends SimpleApplication {
     private volatile AwtPanel panel;
     private final Node world = new Node("world");
     private final CameraState cameraState = new CameraState();
+    private volatile PreviewState previewState;
     private PathState pathState;
     private RobotState robotState;
     private volatile double fps;
@@ -72,17 +73,20 @@ public final class WorkbenchApp extends SimpleApplication {
         // robopro's scene is z-up; jME's world is y-up.
         world.rotate(-FastMath.HALF_PI, 0, 0);
         rootNode.attachChild(world);
-        robotState = new RobotState(model, world, path -> {
+        java.util.function.Function<String, Path> robotMeshes = path -> {
             // Robot meshes are relative to the robot file; shipped robots (a name, not a path) have none on disk.
             String ref = model.robotRef();
             boolean isFile = ref.contains("/") || ref.contains("\\") || ref.endsWith(".json");
             if (!isFile) return null;
             Path robotFile = meshResolver.apply(ref);
             return robotFile.toAbsolutePath().getParent().resolve(path);
-        });
+        };
+        robotState = new RobotState(model, world, robotMeshes);
+        RobotState ghostState = new RobotState(model, world, robotMeshes, true);
         pathState = new PathState(model, world);
+        previewState = new PreviewState(model, world);
         stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
-                pathState, cameraState, new SelectionState(model, world, rootNode));
+                pathState, previewState, ghostState, cameraState, new SelectionState(model, world, rootNode));
         windowStartNanos = System.nanoTime();
     }
 
@@ -143,6 +147,7 @@ public final class WorkbenchApp extends SimpleApplication {
     public Throwable error() { return error.get(); }
     public CameraState camera() { return cameraState; }
     public PathState pathState() { return pathState; }
+    public PreviewState previewState() { return previewState; }
     public RobotState robotState() { return robotState; }
     public Node world() { return world; }
 

@@ -66,7 +66,11 @@ public final class CellTree extends JTree {
             DefaultMutableTreeNode targets = new DefaultMutableTreeNode(new Item("Targets", null));
             for (Target t : model.targets()) {
                 TargetStatus s = status.get(t.name());
-                String mark = s == null || s.ok() ? "" : s == TargetStatus.UNREACHABLE ? "  (out of reach)" : "  (outside limits)";
+                String mark = s == null || s.ok() ? "" : switch (s) {
+                    case UNREACHABLE -> "  (out of reach)";
+                    case OUTSIDE_LIMITS -> "  (outside limits)";
+                    default -> "  (path problem)";
+                };
                 targets.add(new DefaultMutableTreeNode(new Item(t.name() + mark, "target:" + t.name())));
             }
             root.add(targets);

@@ -21,13 +21,14 @@ import javax.swing.table.AbstractTableModel;
 import javax.swing.table.DefaultTableCellRenderer;
 import org.robopro.app.workbench.Workbench;
 import org.robopro.app.workbench.model.Instruction;
-import org.robopro.app.workbench.model.ProgramPlan;
+import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
 
 /**
- * The program: instructions in a table (editable type, target, speed, zone; failing ones in
- * red after a check), buttons to teach, add moves, reorder and check, and a timeline to play
- * the program back.
+ * The program: instructions in a table (editable type, target, circle point, speed, zone; after
+ * a check the path checker's problems per instruction, failing ones in red), buttons to teach
+ * (in the chosen work object), add moves, reorder and check, and a timeline to play the
+ * program back (the checked run's joint values).
  */
 public final class ProgramPanel extends JPanel {
     private final Workbench wb;
@@ -38,8 +39,10 @@ public final class ProgramPanel extends JPanel {
     private final JSlider timeline = new JSlider(0, 1000, 0);
     private final JLabel time = new JLabel("0.00 s");
     private final JButton play = new JButton("Play");
+    private final JComboBox<String> wobj = new JComboBox<>();
+    private boolean updatingWobjs;
     private final Timer player;
-    private ProgramPlan plan;
+    private ProgramRun plan;
     private long playStart;
     private double playFrom;
     private boolean scrubbing;
@@ -51,12 +54,22 @@ public final class ProgramPanel extends JPanel {
         table.setDefaultRenderer(Object.class, new StatusRenderer());
         table.getColumnModel().getColumn(0).setMaxWidth(40);
         table.getColumnModel().getColumn(1).setCellEditor(new javax.swing.DefaultCellEditor(
-                new JComboBox<>(new String[] {"MoveJ", "MoveL"})));
+                new JComboBox<>(new String[] {"MoveJ", "MoveL", "MoveC"})));
+        table.getColumnModel().getColumn(6).setPreferredWidth(420);
+        table.setName("program-table");
+        wobj.setName("teach-wobj");
+        wobj.addActionListener(e -> {
+            Object w = wobj.getSelectedItem();
+            if (!updatingWobjs && w != null && !w.equals(wb.model().activeWorkObject())) wb.model().setActiveWorkObject(w.toString());
+        });
         add(new JScrollPane(table), BorderLayout.CENTER);
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
         buttons.add(button("Teach", "teach", e -> wb.teach()));
+        buttons.add(new JLabel("in"));
+        buttons.add(wobj);
         buttons.add(button("MoveJ", "add-movej", e -> addMove(Instruction.Type.MOVEJ)));
         buttons.add(button("MoveL", "add-movel", e -> addMove(Instruction.Type.MOVEL)));
+        buttons.add(button("MoveC", "add-movec", e -> addMove(Instruction.Type.MOVEC)));
         buttons.add(button("Check", "check", e -> check()));
         buttons.add(new JLabel(" speed mm/s"));
         buttons.add(speed);
@@ -99,7 +112,28 @@ public final class ProgramPanel extends JPanel {
             if (ts.isEmpty()) { wb.log("Teach a target first"); return; }
             target = ts.get(ts.size() - 1).name();
         }
-        wb.addMove(type, target, ((Number) speed.getValue()).doubleValue(), ((Number) zone.getValue()).doubleValue());
+        String via = null;
+        if (type == Instruction.Type.MOVEC) {
+            // MoveC goes through the target taught just before the end point.
+            List<Target> ts = wb.model().targets();
+            int at = -1;
+            for (int i = 0; i < ts.size(); i++) if (ts.get(i).name().equals(target)) at = i;
+            if (at < 1) { wb.log("MoveC needs a circle point: teach it before the end point"); return; }
+            via = ts.get(at - 1).name();
+        }
+        wb.addMove(type, target, via, ((Number) speed.getValue()).doubleValue(), ((Number) zone.getValue()).doubleValue());
+    }
+
+    private void refreshWobjs() {
+        updatingWobjs = true;
+        try {
+            wobj.removeAllItems();
+            wobj.addItem(Target.WOBJ0);
+            for (var w : wb.model().workObjects()) wobj.addItem(w.name());
+            wobj.setSelectedItem(wb.model().activeWorkObject());
+        } finally {
+            updatingWobjs = false;
+        }
     }
 
     private void shift(int d) {
@@ -121,7 +155,7 @@ public final class ProgramPanel extends JPanel {
     }
 
     /** Checks the program and shows the outcome per row. */
-    public ProgramPlan check() {
+    public ProgramRun check() {
         plan = wb.checkProgram();
         rows.fireTableDataChanged();
         return plan;
@@ -129,7 +163,7 @@ public final class ProgramPanel extends JPanel {
 
     private void togglePlay() {
         if (player.isRunning()) { stop(); return; }
-        plan = ProgramPlan.of(wb.model());
+        plan = wb.model().programRun();
         rows.fireTableDataChanged();
         if (plan.sampleCount() < 2) { wb.log("Nothing to play: the program needs two reachable moves"); return; }
         playFrom = timeline.getValue() >= 1000 ? 0 : plan.duration() * timeline.getValue() / 1000.0;
@@ -154,7 +188,7 @@ public final class ProgramPanel extends JPanel {
 
     /** Puts the robot where the program has it at time t (s). */
     public void showTime(double t) {
-        if (plan == null) plan = ProgramPlan.of(wb.model());
+        if (plan == null) plan = wb.model().programRun();
         if (plan.sampleCount() == 0) return;
         wb.model().setQ(plan.qAtTime(t));
         time.setText(String.format(Locale.ROOT, "%.2f / %.2f s", t, plan.duration()));
@@ -162,17 +196,18 @@ public final class ProgramPanel extends JPanel {
 
     /** The model's program changed. */
     public void refresh() {
-        if (plan != null && !player.isRunning()) plan = ProgramPlan.of(wb.model()); // keep check results live once checked
+        if (plan != null && !player.isRunning()) plan = wb.model().programRun(); // keep check results live once checked
+        refreshWobjs();
         rows.fireTableDataChanged();
     }
 
     private final class Rows extends AbstractTableModel {
-        private final String[] cols = {"#", "Move", "Target", "Speed mm/s", "Zone mm", "Check"};
+        private final String[] cols = {"#", "Move", "Target", "Via", "Speed mm/s", "Zone mm", "Check"};
 
         @Override public int getRowCount() { return wb.model().program().size(); }
         @Override public int getColumnCount() { return cols.length; }
         @Override public String getColumnName(int c) { return cols[c]; }
-        @Override public boolean isCellEditable(int r, int c) { return c >= 1 && c <= 4; }
+        @Override public boolean isCellEditable(int r, int c) { return c >= 1 && c <= 5; }
 
         @Override
         public Object getValueAt(int r, int c) {
@@ -183,9 +218,11 @@ public final class ProgramPanel extends JPanel {
                 case 0 -> r + 1;
                 case 1 -> i.type().rapid();
                 case 2 -> i.target();
-                case 3 -> i.speedMmPerS();
-                case 4 -> i.zoneMm();
-                default -> step(r) == null ? "" : (step(r).ok() ? "ok " : "FAIL: ") + step(r).message();
+                case 3 -> i.via() == null ? "" : i.via();
+                case 4 -> i.speedMmPerS();
+                case 5 -> i.zoneMm();
+                default -> step(r) == null ? "" : (!step(r).ok() ? "FAIL " : step(r).problems().isEmpty() ? "ok " : "warning ")
+                        + step(r).message();
             };
         }
 
@@ -195,10 +232,15 @@ public final class ProgramPanel extends JPanel {
             Instruction i = p.get(r);
             try {
                 Instruction n = switch (c) {
-                    case 1 -> new Instruction("MoveL".equals(v) ? Instruction.Type.MOVEL : Instruction.Type.MOVEJ, i.target(), i.speedMmPerS(), i.zoneMm());
-                    case 2 -> new Instruction(i.type(), v.toString().trim(), i.speedMmPerS(), i.zoneMm());
-                    case 3 -> new Instruction(i.type(), i.target(), Double.parseDouble(v.toString()), i.zoneMm());
-                    case 4 -> new Instruction(i.type(), i.target(), i.speedMmPerS(), Double.parseDouble(v.toString()));
+                    case 1 -> {
+                        Instruction.Type t = Instruction.Type.ofRapid(v.toString());
+                        String via = t != Instruction.Type.MOVEC ? null : i.via() != null ? i.via() : i.target();
+                        yield new Instruction(t, i.target(), i.speedMmPerS(), i.zoneMm(), via);
+                    }
+                    case 2 -> new Instruction(i.type(), v.toString().trim(), i.speedMmPerS(), i.zoneMm(), i.via());
+                    case 3 -> new Instruction(i.type(), i.target(), i.speedMmPerS(), i.zoneMm(), v.toString().trim());
+                    case 4 -> new Instruction(i.type(), i.target(), Double.parseDouble(v.toString()), i.zoneMm(), i.via());
+                    case 5 -> new Instruction(i.type(), i.target(), i.speedMmPerS(), Double.parseDouble(v.toString()), i.via());
                     default -> i;
                 };
                 p.set(r, n);
@@ -209,7 +251,7 @@ public final class ProgramPanel extends JPanel {
         }
     }
 
-    private ProgramPlan.Step step(int r) {
+    private ProgramRun.Step step(int r) {
         if (plan == null) return null;
         return plan.steps().stream().filter(s -> s.index() == r).findFirst().orElse(null);
     }
@@ -218,8 +260,11 @@ public final class ProgramPanel extends JPanel {
         @Override
         public Component getTableCellRendererComponent(JTable t, Object v, boolean sel, boolean focus, int r, int c) {
             Component comp = super.getTableCellRendererComponent(t, v, sel, focus, r, c);
-            ProgramPlan.Step s = step(r);
-            if (!sel) comp.setForeground(s != null && !s.ok() ? new Color(0xC0, 0x20, 0x20) : Color.BLACK);
+            ProgramRun.Step s = step(r);
+            if (!sel) comp.setForeground(s == null || s.problems().isEmpty() ? Color.BLACK
+                    : s.ok() ? new Color(0xA0, 0x60, 0x00) : new Color(0xC0, 0x20, 0x20));
+            if (comp instanceof javax.swing.JComponent jc && s != null && !s.problems().isEmpty())
+                jc.setToolTipText("<html>" + String.join("<br>", s.problems().stream().map(p -> p.severity() + " " + p.message()).toList()));
             return comp;
         }
     }

@@ -54,8 +54,6 @@ import org.robopro.kinematics.Pose;
  * drive the same code paths as a user.
  */
 public final class WorkbenchFrame extends JFrame {
-    private static final String NEEDS_COMMS = "Needs the controller link (comms module, issue 5), not merged into the workbench yet";
-    private static final String NEEDS_CAL = "Needs the calibration and diagnosis modules (issues 3 and 4), not merged into the workbench yet";
 
     private final Workbench wb;
     private final Map<String, Action> actions = new LinkedHashMap<>();
@@ -69,6 +67,7 @@ public final class WorkbenchFrame extends JFrame {
     private volatile boolean robotChanged;
     private volatile boolean structureChanged = true;
     private volatile boolean selectionChanged;
+    private volatile String lastError;
     private JSplitPane mainSplit;
     private JSplitPane midSplit;
 
@@ -133,6 +132,60 @@ public final class WorkbenchFrame extends JFrame {
         return a;
     }
 
+    /** The message of the last error dialog (tests read it; under robopro.test no modal dialog opens). */
+    public String lastError() { return lastError; }
+
+    /** Shows an error: a modal dialog for a user, only the log and {@link #lastError()} under tests. */
+    public void showError(String title, String message) {
+        lastError = message;
+        wb.log(title + ": " + message);
+        if (isShowing() && System.getenv("robopro.test") == null)
+            JOptionPane.showMessageDialog(this, message, title, JOptionPane.ERROR_MESSAGE);
+    }
+
+    /**
+     * File > Import RAPID: replaces the program with the module's main; a file with errors is
+     * shown in a dialog with its line and column and changes nothing.
+     */
+    public boolean importRapid(Path file) {
+        try {
+            var imp = wb.importRapid(file);
+            if (!imp.notes().isEmpty() && isShowing() && System.getenv("robopro.test") == null)
+                JOptionPane.showMessageDialog(this, String.join("\n", imp.notes()), "RAPID import", JOptionPane.INFORMATION_MESSAGE);
+            return true;
+        } catch (org.robopro.models.InputException e) {
+            showError("RAPID import failed", e.file() + "\nline " + e.line() + ", column " + e.column()
+                    + (e.field() == null || e.field().isEmpty() ? "" : " (" + e.field() + ")") + ":\n" + e.problem());
+            return false;
+        } catch (IOException e) {
+            showError("RAPID import failed", "cannot read " + file + ": " + e.getMessage());
+            return false;
+        }
+    }
+
+    private RobotWizard wizard;
+    private CalibrationPanel calibration;
+
+    /** Opens (or brings to front) the calibration panel. */
+    public CalibrationPanel openCalibration() {
+        if (calibration == null || !calibration.isDisplayable()) {
+            calibration = new CalibrationPanel(this, wb);
+            calibration.setLocationRelativeTo(this);
+        }
+        calibration.setVisible(true);
+        return calibration;
+    }
+
+    /** Opens (or brings to front) the robot model wizard, starting from the cell's robot. */
+    public RobotWizard openWizard() {
+        if (wizard == null || !wizard.isDisplayable()) {
+            wizard = new RobotWizard(this, wb);
+            wizard.setLocationRelativeTo(this);
+        }
+        wizard.setVisible(true);
+        return wizard;
+    }
+
     public JogPanel jogPanel() { return jog; }
     public ProgramPanel programPanel() { return program; }
     public CellTree cellTree() { return tree; }
@@ -169,9 +222,7 @@ public final class WorkbenchFrame extends JFrame {
         }
         selectionChanged = false;
         structureChanged = false;
-        var st = new java.util.HashMap<String, org.robopro.app.workbench.model.TargetStatus>();
-        for (var t : wb.model().targets()) st.put(t.name(), wb.model().status(t));
-        tree.rebuild(st);
+        tree.rebuild(wb.model().statuses());
         properties.refresh();
         program.refresh();
         updateTitle();
@@ -198,8 +249,7 @@ public final class WorkbenchFrame extends JFrame {
                 try {
                     body.accept(e);
                 } catch (RuntimeException ex) {
-                    wb.log(name + " failed: " + ex.getMessage());
-                    if (isShowing()) JOptionPane.showMessageDialog(WorkbenchFrame.this, ex.getMessage(), name, JOptionPane.ERROR_MESSAGE);
+                    showError(name + " failed", String.valueOf(ex.getMessage()));
                 }
             }
         };
@@ -209,11 +259,11 @@ public final class WorkbenchFrame extends JFrame {
         return a;
     }
 
-    private Action disabled(String id, String name, String tooltip) {
-        Action a = def(id, name, null, e -> { });
-        a.setEnabled(false);
-        a.putValue(Action.SHORT_DESCRIPTION, tooltip);
-        return a;
+    /** Controller actions are enabled only while connected. */
+    private void controllerChanged() {
+        boolean on = wb.controller().isPresent();
+        for (String id : new String[] {"disconnect", "download", "upload", "run", "read-position"})
+            if (actions.containsKey(id)) action(id).setEnabled(on);
     }
 
     private interface IoAction { void run() throws IOException; }
@@ -252,6 +302,10 @@ public final class WorkbenchFrame extends JFrame {
             Path p = choose(true, ".mod");
             if (p != null) io(() -> wb.exportRapid(p, true));
         });
+        def("import-rapid", "Import RAPID...", "ctrl I", e -> {
+            Path p = choose(false, null);
+            if (p != null) importRapid(p);
+        });
         def("screenshot", "Save screenshot...", null, e -> {
             Path p = choose(true, ".png");
             if (p != null) new Thread(() -> {
@@ -286,14 +340,25 @@ public final class WorkbenchFrame extends JFrame {
         def("teach", "Teach target", "ctrl T", e -> wb.teach());
         def("add-movej", "Add MoveJ", null, e -> program.addMove(Instruction.Type.MOVEJ));
         def("add-movel", "Add MoveL", null, e -> program.addMove(Instruction.Type.MOVEL));
+        def("add-movec", "Add MoveC (through the target taught before)", null, e -> program.addMove(Instruction.Type.MOVEC));
         def("check", "Check program", "ctrl K", e -> program.check());
-        disabled("connect", "Connect to controller...", NEEDS_COMMS);
-        disabled("download", "Download program", NEEDS_COMMS);
-        disabled("upload", "Upload program", NEEDS_COMMS);
-        disabled("run", "Run on controller", NEEDS_COMMS);
-        disabled("read-position", "Read robot position", NEEDS_COMMS);
-        disabled("calibration", "Calibration panel...", NEEDS_CAL);
-        disabled("robot-wizard", "Robot model wizard (Fig. 7)...", "Not built yet: robots are loaded from robot files");
+        def("connect", "Connect to controller...", null, e -> {
+            String a = JOptionPane.showInputDialog(this, "Controller address: host:port (TCP) or a serial device.\n"
+                    + "Leave empty to start the simulated controller.", "");
+            if (a != null) wb.connectController(a);
+        });
+        def("disconnect", "Disconnect", null, e -> wb.disconnectController());
+        def("download", "Download program", null, e -> wb.downloadProgram());
+        def("upload", "Upload program...", null, e -> {
+            String n = JOptionPane.showInputDialog(this, "Program name on the controller:", wb.controllerProgramName());
+            if (n != null && !n.isBlank()) wb.uploadProgram(n.trim());
+        });
+        def("run", "Run on controller", null, e -> wb.runProgram());
+        def("read-position", "Read robot position", null, e -> wb.readRobotPosition());
+        wb.addControllerListener(() -> SwingUtilities.invokeLater(this::controllerChanged));
+        controllerChanged();
+        def("calibration", "Calibration panel...", null, e -> openCalibration());
+        def("robot-wizard", "Robot model wizard (Fig. 7)...", null, e -> openWizard());
         def("about", "About", null, e -> JOptionPane.showMessageDialog(this,
                 "robopro workbench\nOff-line programming and calibration of industrial robots.\n"
                         + "Left drag: orbit, right/middle drag: pan, wheel: zoom, click: select.", "About", JOptionPane.INFORMATION_MESSAGE));
@@ -316,11 +381,11 @@ public final class WorkbenchFrame extends JFrame {
 
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
-        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
         bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
         bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
-        bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", null, "check", "export-rapid"));
-        bar.add(menu("Controller", KeyEvent.VK_R, "connect", "download", "upload", "run", "read-position"));
+        bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", "add-movec", null, "check", "import-rapid", "export-rapid"));
+        bar.add(menu("Controller", KeyEvent.VK_R, "connect", "disconnect", null, "download", "upload", "run", null, "read-position"));
         bar.add(menu("Calibration", KeyEvent.VK_A, "calibration"));
         bar.add(menu("Help", KeyEvent.VK_H, "about"));
         return bar;

@@ -1,0 +1,245 @@
+package org.robopro.app.workbench.model;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import org.robopro.kinematics.ConfData;
+import org.robopro.kinematics.IkSolution;
+import org.robopro.kinematics.InverseKinematics;
+import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Units;
+import org.robopro.models.Vec3;
+import org.robopro.programs.LoadData;
+import org.robopro.programs.Move;
+import org.robopro.programs.Quaternion;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.RapidPose;
+import org.robopro.programs.Ref;
+import org.robopro.programs.RobTarget;
+import org.robopro.programs.SpeedData;
+import org.robopro.programs.Statement;
+import org.robopro.programs.ToolData;
+import org.robopro.programs.WObjData;
+import org.robopro.programs.ZoneData;
+import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.sim.MoveStep;
+import org.robopro.programs.sim.ProgramStep;
+import org.robopro.programs.sim.WaitStep;
+
+/**
+ * The workbench program as a RAPID module ({@link RapidModule}, programs module) and back.
+ *
+ * <p>To RAPID, 1:1: the mounted tool is a {@code PERS tooldata}, each work object used by a
+ * target a {@code PERS wobjdata}, each target a {@code CONST robtarget} in its work object's
+ * frame with the confdata of the IK solution the workbench uses for it (solved next to the
+ * joints it was taught at), each instruction one {@code MoveJ/MoveL/MoveC} statement of
+ * {@code PROC main} (statement k is instruction k). The RAPID world frame is the robot base
+ * (as the programs module's interpreter takes it): work object user frames are written as
+ * {@code baseTuser = worldTbase^-1 worldTuser}.
+ *
+ * <p>From RAPID: the module's {@code main} is run by the interpreter (procedure calls inlined),
+ * each motion becomes an instruction; named robtargets keep their names, inline ones get fresh
+ * names; MoveAbsJ becomes a MoveJ to the target its joints reach; waits are dropped. What was
+ * changed is listed in {@link Imported#notes()}.
+ */
+public final class ProgramModule {
+    private ProgramModule() { }
+
+    /** The workbench program as a RAPID module named {@code name}. */
+    public static RapidModule toRapid(WorkbenchModel m, String name) { return toRapid(m, m.program(), name); }
+
+    /** The model's targets, tool and work objects with {@code program} as PROC main. */
+    public static RapidModule toRapid(WorkbenchModel m, List<Instruction> program, String name) {
+        Tool tool = m.tool();
+        Pose worldTbase = m.worldTbase();
+        RobotKinematics k = m.kinematics();
+        RapidModule.Builder b = RapidModule.builder(name);
+        b.comment(" Written by the robopro workbench for " + m.robot().displayName()
+                + "; robtargets in their work objects, world = robot base");
+        b.pers(tool.name(), toolData(tool));
+        Map<String, WorkObject> wobjs = new LinkedHashMap<>();
+        for (WorkObject w : m.workObjects()) wobjs.put(w.name(), w);
+        List<String> declared = new ArrayList<>();
+        for (Target t : m.targets())
+            if (!t.wobj().equalsIgnoreCase(Target.WOBJ0) && !declared.contains(t.wobj())) {
+                WorkObject w = wobjs.get(t.wobj());
+                if (w == null) throw new IllegalStateException("target " + t.name() + " names unknown work object " + t.wobj());
+                declared.add(t.wobj());
+                b.pers(w.name(), new WObjData(false, true, "", RapidPose.of(worldTbase.inverse().times(w.worldTuser())), RapidPose.IDENTITY));
+            }
+        for (Target t : m.targets()) {
+            Pose worldTuser = t.wobj().equalsIgnoreCase(Target.WOBJ0) ? Pose.IDENTITY : wobjs.get(t.wobj()).worldTuser();
+            b.constant(t.name(), RobTarget.of(worldTuser.inverse().times(t.worldTtcp()), confUsed(m, k, t)));
+        }
+        List<Statement> body = new ArrayList<>();
+        for (Instruction i : program) {
+            Target to = m.target(i.target()).orElseThrow(() -> new IllegalStateException("program uses unknown target " + i.target()));
+            String wobj = to.wobj().equalsIgnoreCase(Target.WOBJ0) ? null : to.wobj();
+            Ref<RobTarget> ref = Ref.to(i.target());
+            body.add(switch (i.type()) {
+                case MOVEJ -> Move.moveJ(ref, speed(i.speedMmPerS()), zone(i.zoneMm()), tool.name(), wobj);
+                case MOVEL -> Move.moveL(ref, speed(i.speedMmPerS()), zone(i.zoneMm()), tool.name(), wobj);
+                case MOVEC -> Move.moveC(circPoint(m, k, wobjs, i.via(), to.wobj()), ref, speed(i.speedMmPerS()), zone(i.zoneMm()),
+                        tool.name(), wobj);
+            });
+        }
+        b.procedure("main", body);
+        return b.build();
+    }
+
+    /**
+     * MoveC's circle point: by name when it is in the move's work object; otherwise written
+     * inline in that work object (a RAPID move has one \\WObj for both points).
+     */
+    private static Ref<RobTarget> circPoint(WorkbenchModel m, RobotKinematics k, Map<String, WorkObject> wobjs, String via, String moveWobj) {
+        Target v = m.target(via).orElseThrow(() -> new IllegalStateException("program uses unknown target " + via));
+        if (v.wobj().equalsIgnoreCase(moveWobj)) return Ref.to(via);
+        Pose worldTuser = moveWobj.equalsIgnoreCase(Target.WOBJ0) ? Pose.IDENTITY : wobjs.get(moveWobj).worldTuser();
+        return Ref.inline(RobTarget.of(worldTuser.inverse().times(v.worldTtcp()), confUsed(m, k, v)));
+    }
+
+    /** Confdata of the IK solution used for {@code t}: the one next to its taught joints; the stored one if none. */
+    static ConfData confUsed(WorkbenchModel m, RobotKinematics k, Target t) {
+        Pose baseTflange = m.worldTbase().inverse().times(t.worldTtcp()).times(m.tool().flangeTtcp().inverse());
+        return k.solveNear(baseTflange, t.qTaught()).map(k::confOf).orElse(t.conf());
+    }
+
+    static ToolData toolData(Tool t) {
+        return new ToolData(true, RapidPose.of(t.flangeTtcp()),
+                new LoadData(t.massKg(), new Vec3(0, 0, Math.max(1e-6, t.bodyLength() / 2)), Quaternion.IDENTITY, 0, 0, 0));
+    }
+
+    /** A predefined speeddata when one matches (v500), otherwise written inline. */
+    static Ref<SpeedData> speed(double mmPerS) {
+        long r = Math.round(mmPerS);
+        if (Math.abs(r - mmPerS) < 1e-9) {
+            Optional<SpeedData> p = SpeedData.predefined("v" + r);
+            if (p.isPresent()) return Ref.to("v" + r);
+        }
+        return Ref.inline(SpeedData.ofRapid(mmPerS, 500, 5000, 1000));
+    }
+
+    /** fine, a predefined zonedata (z10), or inline with the predefined data's proportions. */
+    static Ref<ZoneData> zone(double mm) {
+        if (mm == 0) return Ref.to("fine");
+        long r = Math.round(mm);
+        if (Math.abs(r - mm) < 1e-9 && ZoneData.predefined("z" + r).isPresent()) return Ref.to("z" + r);
+        return Ref.inline(ZoneData.ofRapid(false, mm, 1.5 * mm, 1.5 * mm, 0.15 * mm, 1.5 * mm, 0.15 * mm));
+    }
+
+    /** The program read from a RAPID module, in workbench terms. */
+    public record Imported(String moduleName, Tool tool, List<WorkObject> workObjects, List<Target> targets,
+                           List<Instruction> program, List<String> notes) {
+        public Imported {
+            workObjects = List.copyOf(workObjects);
+            targets = List.copyOf(targets);
+            program = List.copyOf(program);
+            notes = List.copyOf(notes);
+        }
+    }
+
+    /**
+     * Reads procedure {@code entry} of a parsed module into workbench targets and instructions
+     * for the model's robot, placement and work objects. Interpreter errors (unknown names,
+     * unsupported frames) are InputExceptions naming the file, line and column.
+     */
+    public static Imported fromRapid(ParsedModule parsed, WorkbenchModel m, String entry) {
+        List<ProgramStep> steps = MotionInterpreter.of(parsed).run(entry);
+        RobotKinematics k = m.kinematics();
+        Optional<InverseKinematics> ik = k.kinematicModel().map(InverseKinematics::of);
+        Pose worldTbase = m.worldTbase();
+        List<String> notes = new ArrayList<>();
+        Map<String, WorkObject> wobjs = new LinkedHashMap<>();
+        for (WorkObject w : m.workObjects()) wobjs.put(w.name(), w);
+        Map<String, Target> targets = new LinkedHashMap<>();
+        List<Instruction> program = new ArrayList<>();
+        Tool tool = null;
+        double[] seed = m.q();
+        int fresh = 0;
+        int waits = 0;
+        for (ProgramStep s : steps) {
+            if (s instanceof WaitStep) { waits++; continue; }
+            MoveStep mv = (MoveStep) s;
+            if (tool == null) {
+                Pose tcp = mv.tool().tframe().toPose();
+                Tool cur = m.tool();
+                tool = cur.name().equalsIgnoreCase(mv.toolName())
+                        ? new Tool(cur.name(), tcp, cur.bodyRadius(), cur.bodyLength(), Math.max(0.001, mv.tool().tload().mass()))
+                        : new Tool(mv.toolName(), tcp, 0.03, Math.max(0.05, tcp.z() * 0.55), Math.max(0.001, mv.tool().tload().mass()));
+            } else if (!tool.name().equalsIgnoreCase(mv.toolName())) {
+                notes.add(mv.label() + ": uses tool " + mv.toolName() + "; the workbench mounts one tool (" + tool.name() + ")");
+            }
+            String wobj = Target.WOBJ0;
+            if (!mv.wobjName().equalsIgnoreCase("wobj0")) {
+                wobj = mv.wobjName();
+                Pose worldTuser = worldTbase.times(mv.wobj().uframe().toPose()).times(mv.wobj().oframe().toPose());
+                wobjs.put(wobj, new WorkObject(wobj, worldTuser));
+            }
+            double speed = Math.max(1e-3, Units.mToMm(mv.speed().vTcp()));
+            double zone = mv.zone().finep() ? 0 : Units.mToMm(mv.zone().pzoneTcp());
+            if (mv.kind() == Move.Kind.MOVE_ABS_J) {
+                double[] q = java.util.Arrays.copyOf(mv.q().orElseThrow(), k.dof());
+                Pose worldTtcp = worldTbase.times(k.flange(q)).times(mv.flangeTtcp());
+                String name = uniqueName(targets, mv.targetName(), fresh++);
+                targets.put(name, new Target(name, worldTtcp, q, k.confOf(q), wobj));
+                program.add(new Instruction(Instruction.Type.MOVEJ, name, speed, zone));
+                notes.add(mv.label() + ": MoveAbsJ imported as MoveJ to " + name);
+                seed = q;
+                continue;
+            }
+            String via = null;
+            if (mv.kind() == Move.Kind.MOVE_C) {
+                Pose circTcp = worldTbase.times(mv.baseTtcpCirc().orElseThrow());
+                Target c = target(ik, targets, mv.circName().orElse("*"), circTcp, mv.baseTflangeCirc().orElseThrow(),
+                        mv.conf().orElseThrow(), seed, wobj, fresh++);
+                via = c.name();
+                targets.put(via, c);
+                seed = c.qTaught();
+            }
+            Target t = target(ik, targets, mv.targetName(), worldTbase.times(mv.baseTtcp().orElseThrow()),
+                    mv.baseTflange().orElseThrow(), mv.conf().orElseThrow(), seed, wobj, fresh++);
+            targets.put(t.name(), t);
+            seed = t.qTaught();
+            Instruction.Type type = switch (mv.kind()) {
+                case MOVE_L -> Instruction.Type.MOVEL;
+                case MOVE_C -> Instruction.Type.MOVEC;
+                default -> Instruction.Type.MOVEJ;
+            };
+            program.add(new Instruction(type, t.name(), speed, zone, via));
+        }
+        if (waits > 0) notes.add(waits + " WaitTime statement(s) dropped: the workbench program holds motions only");
+        if (tool == null) tool = m.tool();
+        return new Imported(parsed.module().name(), tool, List.copyOf(wobjs.values()), List.copyOf(targets.values()), program, notes);
+    }
+
+    /**
+     * A target for a robtarget reached at {@code worldTtcp}: the same name when it is new or the
+     * same pose (a target used twice), a fresh name otherwise; joints from IK with the target's
+     * confdata (falling back to the solution next to the previous target).
+     */
+    private static Target target(Optional<InverseKinematics> ik, Map<String, Target> targets, String name,
+                                 Pose worldTtcp, Pose baseTflange, ConfData conf, double[] seed, String wobj, int fresh) {
+        Target same = targets.get(name);
+        if (same != null && same.worldTtcp().distanceTo(worldTtcp) < 1e-9 && same.worldTtcp().angleTo(worldTtcp) < 1e-9) return same;
+        double[] q = null;
+        if (ik.isPresent()) {
+            q = ik.get().solveWithConf(baseTflange, conf).map(IkSolution::q).orElse(null);
+            if (q == null) q = ik.get().solveNear(baseTflange, seed).map(IkSolution::q).orElse(null);
+        }
+        if (q == null) q = seed.clone(); // unreachable: kept, and marked red by the check
+        return new Target(uniqueName(targets, name, fresh), worldTtcp, q, conf, wobj);
+    }
+
+    private static String uniqueName(Map<String, Target> targets, String wanted, int fresh) {
+        if (!"*".equals(wanted) && !targets.containsKey(wanted)) return wanted;
+        String base = "*".equals(wanted) ? "pImp" : wanted + "_";
+        for (int i = fresh + 1; ; i++) {
+            String n = String.format(Locale.ROOT, "%s%d", base, i);
+            if (!targets.containsKey(n)) return n;
+        }
+    }
+}

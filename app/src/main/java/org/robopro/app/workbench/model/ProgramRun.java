@@ -1,0 +1,244 @@
+package org.robopro.app.workbench.model;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Set;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
+import org.robopro.programs.Move;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.check.CheckReport;
+import org.robopro.programs.check.PathChecker;
+import org.robopro.programs.check.Problem;
+import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.sim.MoveStep;
+import org.robopro.programs.sim.ProgramStep;
+
+/**
+ * The workbench program run through the programs module: mapped to RAPID
+ * ({@link ProgramModule}), stepped by the {@link MotionInterpreter}, checked by the
+ * {@link PathChecker} (reachability at interpolated points, limits, configuration, singularity,
+ * cycle time), with the problems grouped by instruction and target, and a timeline of joint
+ * values for playback built from the checker's per-step durations and end joints (MoveJ in
+ * joint space, MoveL on the TCP line and MoveC on the TCP circle with IK next to the previous
+ * sample, as the checker does). Immutable.
+ */
+public final class ProgramRun {
+    /** The outcome for one instruction: its problems (errors and warnings) and duration. */
+    public record Step(int index, Instruction instruction, String label, List<Problem> problems, double seconds) {
+        public Step { problems = List.copyOf(problems); }
+
+        /** No errors (warnings allowed). */
+        public boolean ok() { return problems.stream().noneMatch(p -> p.severity() == Problem.Severity.ERROR); }
+
+        /** The first error's message, else the first warning's, else the duration. */
+        public String message() {
+            for (Problem.Severity s : Problem.Severity.values())
+                for (Problem p : problems) if (p.severity() == s) return p.kind().name().toLowerCase(Locale.ROOT) + ": " + p.message();
+            return String.format(Locale.ROOT, "%.2f s", seconds);
+        }
+    }
+
+    private final RapidModule module;
+    private final CheckReport report;
+    private final List<Step> steps;
+    private final Set<String> badTargets;
+    private final double[] times;
+    private final double[][] qs;
+    private final Vec3[] tcpWorld;
+
+    private ProgramRun(RapidModule module, CheckReport report, List<Step> steps, Set<String> badTargets, double[] times,
+                       double[][] qs, Vec3[] tcpWorld) {
+        this.module = module;
+        this.report = report;
+        this.steps = List.copyOf(steps);
+        this.badTargets = Set.copyOf(badTargets);
+        this.times = times;
+        this.qs = qs;
+        this.tcpWorld = tcpWorld;
+    }
+
+    public RapidModule module() { return module; }
+    /** The path checker's report; null when the robot has no kinematics-module model. */
+    public CheckReport report() { return report; }
+    public List<Step> steps() { return steps; }
+    public boolean ok() { return steps.stream().allMatch(Step::ok); }
+    /** Targets named by an error (drawn red). */
+    public Set<String> badTargets() { return badTargets; }
+    public int sampleCount() { return times.length; }
+    public double duration() { return times.length == 0 ? 0 : times[times.length - 1]; }
+    public Vec3 tcp(int i) { return tcpWorld[i]; }
+    public double[] qAt(int i) { return qs[i].clone(); }
+
+    /** Joint values at time t (s), linearly interpolated between samples. */
+    public double[] qAtTime(double t) {
+        if (times.length == 0) throw new IllegalStateException("empty program run");
+        if (t <= times[0]) return qs[0].clone();
+        int lo = 0, hi = times.length - 1;
+        if (t >= times[hi]) return qs[hi].clone();
+        while (hi - lo > 1) {
+            int mid = (lo + hi) >>> 1;
+            if (times[mid] <= t) lo = mid; else hi = mid;
+        }
+        double s = (t - times[lo]) / Math.max(1e-12, times[hi] - times[lo]);
+        double[] a = qs[lo], b = qs[hi], out = new double[a.length];
+        for (int k = 0; k < a.length; k++) out[k] = a[k] + s * (b[k] - a[k]);
+        return out;
+    }
+
+    /** Maps, steps, checks and samples the model's program. */
+    public static ProgramRun of(WorkbenchModel m) {
+        List<Instruction> program = m.program();
+        RobotKinematics k = m.kinematics();
+        List<Step> out = new ArrayList<>();
+        Set<String> bad = new HashSet<>();
+        // Instructions naming missing targets cannot be mapped: report them, run the rest.
+        List<Instruction> runnable = new ArrayList<>();
+        List<Integer> index = new ArrayList<>();
+        for (int i = 0; i < program.size(); i++) {
+            Instruction ins = program.get(i);
+            String missing = m.target(ins.target()).isEmpty() ? ins.target()
+                    : ins.via() != null && m.target(ins.via()).isEmpty() ? ins.via() : null;
+            if (missing != null) {
+                out.add(new Step(i, ins, "main#? " + ins.type().rapid() + " " + ins.target(), List.of(new Problem(Problem.Severity.ERROR,
+                        Problem.Kind.UNREACHABLE, "instruction " + (i + 1), missing, Optional.empty(), "no target named " + missing)), 0));
+                continue;
+            }
+            runnable.add(ins);
+            index.add(i);
+        }
+        RapidModule module = ProgramModule.toRapid(m, runnable, "Workbench");
+        List<ProgramStep> steps = runnable.isEmpty() ? List.of() : MotionInterpreter.of(module).run("main");
+        Optional<KinematicModel> km = k.kinematicModel();
+        CheckReport report = km.isPresent() && !steps.isEmpty() ? new PathChecker(km.get()).check(steps) : null;
+        List<double[]> qEnd = new ArrayList<>();
+        for (int s = 0; s < steps.size(); s++) {
+            MoveStep mv = (MoveStep) steps.get(s);
+            List<Problem> ps = new ArrayList<>();
+            double dur = 0;
+            double[] q = null;
+            if (report != null) {
+                for (Problem p : report.problems()) if (p.step().equals(mv.label())) ps.add(p);
+                dur = report.steps().get(s).durationS();
+                q = report.steps().get(s).qEnd();
+            } else {
+                Optional<double[]> sol = k.solveNear(mv.baseTflange().orElseThrow(), m.target(mv.targetName()).map(Target::qTaught).orElse(m.q()));
+                if (sol.isEmpty()) ps.add(new Problem(Problem.Severity.ERROR, Problem.Kind.UNREACHABLE, mv.label(), mv.targetName(),
+                        Optional.empty(), "out of reach"));
+                q = sol.orElse(null);
+            }
+            for (Problem p : ps) if (p.severity() == Problem.Severity.ERROR) bad.add(p.target());
+            out.add(new Step(index.get(s), runnable.get(s), mv.label(), ps, dur));
+            qEnd.add(q);
+        }
+        out.sort((a, b) -> Integer.compare(a.index(), b.index()));
+        for (Step st : out) if (!st.ok() && st.label().startsWith("main#?")) bad.add(st.problems().get(0).target());
+        return sample(m, module, report, out, bad, steps, qEnd);
+    }
+
+    private static ProgramRun sample(WorkbenchModel m, RapidModule module, CheckReport report, List<Step> out, Set<String> bad,
+                                     List<ProgramStep> steps, List<double[]> qEnd) {
+        RobotKinematics k = m.kinematics();
+        Pose worldTbase = m.worldTbase();
+        Pose flangeTtcp = m.tool().flangeTtcp();
+        List<Double> times = new ArrayList<>();
+        List<double[]> qs = new ArrayList<>();
+        double t = 0;
+        double[] q = null;
+        for (int s = 0; s < steps.size(); s++) {
+            double[] qe = qEnd.get(s);
+            if (qe == null) continue; // failed motion: the robot stays where it was
+            MoveStep mv = (MoveStep) steps.get(s);
+            double dur = report == null ? 1.0 : report.steps().get(s).durationS();
+            if (q == null) {
+                times.add(t);
+                qs.add(qe.clone());
+                q = qe;
+                t += dur;
+                continue;
+            }
+            List<double[]> seg = mv.kind() == Move.Kind.MOVE_L || mv.kind() == Move.Kind.MOVE_C
+                    ? cartesian(k, q, qe, mv, flangeTtcp) : null;
+            if (seg == null) {
+                seg = new ArrayList<>();
+                int n = 24;
+                for (int i = 1; i <= n; i++) {
+                    double[] qi = new double[q.length];
+                    for (int j = 0; j < qi.length; j++) qi[j] = q[j] + (qe[j] - q[j]) * i / n;
+                    seg.add(qi);
+                }
+            }
+            double d = Math.max(dur, 1e-3);
+            for (int i = 0; i < seg.size(); i++) {
+                times.add(t + d * (i + 1) / seg.size());
+                qs.add(seg.get(i));
+            }
+            t += d;
+            q = qe;
+        }
+        double[] ta = new double[times.size()];
+        Vec3[] tcp = new Vec3[times.size()];
+        for (int i = 0; i < ta.length; i++) {
+            ta[i] = times.get(i);
+            tcp[i] = worldTbase.times(k.flange(qs.get(i))).times(flangeTtcp).position();
+        }
+        return new ProgramRun(module, report, out, bad, ta, qs.toArray(new double[0][]), tcp);
+    }
+
+    /** Samples of a MoveL/MoveC from q to qEnd (every 10 mm / 3 deg), IK next to the previous sample; null if IK fails. */
+    private static List<double[]> cartesian(RobotKinematics k, double[] q, double[] qEnd, MoveStep mv, Pose flangeTtcp) {
+        Pose a = k.flange(q).times(flangeTtcp);
+        Pose b = mv.baseTtcp().orElseThrow();
+        Vec3[] circle = mv.kind() == Move.Kind.MOVE_C ? circle(a.position(), mv.baseTtcpCirc().orElseThrow().position(), b.position()) : null;
+        if (mv.kind() == Move.Kind.MOVE_C && circle == null) return null;
+        double length = circle != null ? circle[3].x() * circle[3].y() : a.distanceTo(b);
+        Vec3 w = a.inverse().times(b).rotationVector();
+        int n = Math.max(2, (int) Math.ceil(Math.max(length / 0.01, w.norm() / Math.toRadians(3))));
+        List<double[]> seg = new ArrayList<>();
+        double[] prev = q;
+        Pose toolInv = flangeTtcp.inverse();
+        for (int i = 1; i <= n; i++) {
+            double s = (double) i / n;
+            Vec3 p = circle != null ? Pose.rotAxis(circle[2], circle[3].y() * s).rotate(circle[1]).plus(circle[0])
+                    : a.position().plus(b.position().minus(a.position()).times(s));
+            Pose ori = w.norm() > 1e-12 ? a.times(Pose.rotAxis(w, w.norm() * s)) : a;
+            Pose tcp = Pose.of(ori.rotationRowMajor(), p.x(), p.y(), p.z());
+            Optional<double[]> sol = k.solveNear(tcp.times(toolInv), prev);
+            if (sol.isEmpty()) return null;
+            prev = sol.get();
+            seg.add(prev);
+        }
+        seg.set(seg.size() - 1, qEnd.clone());
+        return seg;
+    }
+
+    /** {centre, start - centre, unit normal, (radius, angle, 0)} of the arc a -> b -> c, or null when degenerate. */
+    static Vec3[] circle(Vec3 a, Vec3 b, Vec3 c) {
+        Vec3 ac = a.minus(c), bc = b.minus(c);
+        Vec3 cr = ac.cross(bc);
+        double cr2 = cr.dot(cr);
+        double scale = Math.max(ac.norm(), bc.norm());
+        if (!(scale > 1e-9) || Math.sqrt(cr2) < 1e-6 * scale * scale) return null;
+        // Circumcentre of a triangle from its edge vectors (standard vector formula).
+        Vec3 centre = c.plus(bc.times(ac.dot(ac)).minus(ac.times(bc.dot(bc))).cross(cr).times(1 / (2 * cr2)));
+        Vec3 n = b.minus(a).cross(c.minus(b)).normalized();
+        Vec3 u = a.minus(centre), v = c.minus(centre);
+        double ang = Math.atan2(u.cross(v).dot(n), u.dot(v));
+        if (ang <= 0) ang += 2 * Math.PI;
+        return new Vec3[] {centre, u, n, new Vec3(u.norm(), ang, 0)};
+    }
+
+    /** Messages for a log: one line per problem, by instruction and target. */
+    public List<String> problemLines() {
+        List<String> lines = new ArrayList<>();
+        for (Step s : steps)
+            for (Problem p : s.problems())
+                lines.add(String.format(Locale.ROOT, "instruction %d (%s), target %s: %s %s: %s", s.index() + 1,
+                        s.instruction(), p.target(), p.severity(), p.kind().name().toLowerCase(Locale.ROOT), p.message()));
+        return lines;
+    }
+}

@@ -1,0 +1,88 @@
+package org.robopro.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.diagnosis.Effect;
+import org.robopro.calibration.measurement.MeasurementWriter;
+import org.robopro.calibration.simulation.Campaign;
+import org.robopro.calibration.simulation.CampaignSimulator;
+import org.robopro.calibration.simulation.SimulationSettings;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.JointType;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+import picocli.CommandLine;
+
+/** robopro diagnose end to end: simulated backlash on joint 2, files written, effect named, compensate uses the extended model. */
+class DiagnoseCommandTest {
+    @TempDir Path dir;
+    private final StringWriter out = new StringWriter(), err = new StringWriter();
+
+    private int run(String... args) {
+        CommandLine cl = RoboproCommand.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        return cl.execute(args);
+    }
+
+    @Test
+    void diagnose_simulatedBacklashJoint2_writesReportJsonAndExtendedModel() throws Exception {
+        RobotDescription robot = RobotLibrary.shipped("irb2000");
+        KinematicModel nominal = KinematicModel.build(robot);
+        double[][] prev = {null};
+        Random cr = new Random(2);
+        CampaignSimulator.ConditionsSource src = (rng, q, i) -> {
+            int[] d = new int[q.length];
+            for (int j = 0; j < q.length; j++) d[j] = prev[0] == null ? (cr.nextBoolean() ? 1 : -1) : (q[j] >= prev[0][j] ? 1 : -1);
+            prev[0] = q.clone();
+            return new PoseConditions(d, 20.0 * i, 20 + 10 * (1 - Math.exp(-20.0 * i / 1500)), Double.NaN);
+        };
+        Campaign c = CampaignSimulator.simulate(nominal, SimulationSettings.defaults().withPoses(150).withValidatePoses(60)
+                        .withSigma(0.02e-3).withSeed(77),
+                List.of(Effect.backlash(1).truth(new double[] {Math.toRadians(0.04)})), src);
+        List<JointType> types = robot.joints().stream().map(j -> j.type()).toList();
+        Path train = dir.resolve("train.csv"), val = dir.resolve("validate.csv");
+        MeasurementWriter.write(c.measurements(), types, train, false);
+        MeasurementWriter.write(c.validation(), types, val, false);
+        Path outDir = System.getenv("ROBOPRO_KEEP_REPORT") != null ? Path.of(System.getenv("ROBOPRO_KEEP_REPORT")) : dir.resolve("out");
+        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--validate", val.toString(),
+                "--out", outDir.toString(), "--force"), err.toString());
+        assertTrue(out.toString().contains("found backlash j2"), out.toString());
+        JsonNode j = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json")));
+        for (String f : new String[] {"geometric", "effects", "final", "outliers", "not_identifiable"}) assertTrue(j.has(f), f);
+        assertEquals(1, j.get("effects").size());
+        JsonNode e = j.get("effects").get(0);
+        assertEquals("backlash", e.get("effect").asText());
+        assertEquals(2, e.get("joints").get(0).asInt());
+        assertEquals(Math.toRadians(0.04), e.get("parameters").get("b").asDouble(), Math.toRadians(0.004));
+        assertTrue(j.get("final").get("validate_rms_mm").asDouble() < 0.5 * j.get("geometric").get("validate_rms_mm").asDouble());
+        String html = Files.readString(outDir.resolve("report.html"));
+        assertTrue(html.contains("<svg") && html.contains("backlash j2"));
+        RobotDescription ext = RobotLibrary.read(outDir.resolve("extended.robot.json"));
+        assertEquals("backlash", ext.effects().get(0).effect());
+
+        // compensate reads the extended model's effects
+        Path targets = dir.resolve("targets.csv");
+        Files.writeString(targets, "# frame: base\nid,x,y,z\n1,1200,100,900\n2,1100,-300,1200\n");
+        assertEquals(0, run("compensate", "--nominal", "irb2000", "--calibrated", outDir.resolve("extended.robot.json").toString(),
+                "--targets", targets.toString(), "--out", dir.resolve("comp.csv").toString()), err.toString());
+    }
+
+    @Test
+    void diagnose_missingMeasurementFile_exitCode2() {
+        assertEquals(2, run("diagnose", "--robot", "irb2000", "--measurements", dir.resolve("none.csv").toString(), "--out",
+                dir.resolve("o").toString()));
+    }
+}

@@ -1,0 +1,905 @@
+package org.robopro.calibration.diagnosis;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import org.ejml.data.DMatrixRMaj;
+import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
+import org.ejml.interfaces.decomposition.SingularValueDecomposition_F64;
+import org.robopro.calibration.Cancellation;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.Progress;
+import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.identification.Calibrator;
+import org.robopro.calibration.identification.EffectBlock;
+import org.robopro.calibration.identification.IdentificationProblem;
+import org.robopro.calibration.identification.LevenbergMarquardt;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.RobotDescription;
+
+/**
+ * Finds the physics a geometric model left out (issue 4; method in docs/diagnosis.md):
+ * <ol>
+ * <li>geometric calibration ({@link Calibrator}): identifiability, outliers by its rule (reported,
+ *     excluded), noise estimate;</li>
+ * <li>for every candidate effect × joint ({@link Effect#candidates}), its signature S = (∂p/∂θ_j) g
+ *     (3 rows per pose), and the part the model cannot absorb, P⊥S, with P⊥ the projector onto
+ *     the orthogonal complement of the span of the current model's Jacobian (geometry, tool,
+ *     instrument and effects already selected; thin SVD of the column-scaled Jacobian). Columns
+ *     with ‖P⊥s‖/‖s‖ below {@link Options#absorbedRatio} are absorbed; a candidate with no column
+ *     left is reported as not identifiable;</li>
+ * <li>nested F-test per candidate, Holm–Bonferroni over the family (forward step s uses α/(N−s)),
+ *     AND a smaller leave-one-pose-out prediction error (PRESS from the hat matrix), AND the
+ *     physical plausibility of the estimate; among the candidates that pass, the one with the
+ *     lowest BIC is added (stepwise forward selection);</li>
+ * <li>after each addition, joint non-linear re-identification (Levenberg–Marquardt) of geometry,
+ *     tool, instrument and the selected effects; the tests are repeated on the new residuals.</li>
+ * </ol>
+ * Missing columns turn into advice: reversal-like residuals with directions inferred from the
+ * pose order ask for dir columns, a drift in pose order asks for temp_c or time_s.
+ */
+public final class Diagnoser {
+    /**
+     * @param alpha          family-wise false-positive rate
+     * @param absorbedRatio  ‖P⊥s‖/‖s‖ below which a column counts as absorbed by the geometry
+     * @param maxEffects     at most this many effects are selected
+     * @param timeTaus       warm-up time constants (s) tried when only time_s stands for temperature
+     * @param cancel         cancellation token
+     * @param progress       progress listener
+     */
+    public record Options(double alpha, double absorbedRatio, int maxEffects, double[] timeTaus, Cancellation cancel,
+                          Progress progress) {
+        public static Options defaults() {
+            return new Options(1e-3, 0.05, 4, new double[] {600, 1200, 2400, 4800}, Cancellation.NONE, Progress.NONE);
+        }
+
+        public Options withAlpha(double a) { return new Options(a, absorbedRatio, maxEffects, timeTaus, cancel, progress); }
+        public Options withProgress(Progress p) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, p); }
+        public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress); }
+    }
+
+    // Physical plausibility bounds (issue 4).
+    static final double MIN_STIFFNESS = 1e4, MAX_STIFFNESS = 1e8;        // N·m/rad
+    static final double MAX_PERIODIC_RAD = Math.toRadians(0.1);
+    static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
+    static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
+    static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
+    static final double MAX_STRAIN = 2e-3;
+
+    private static final boolean DEBUG = "1".equals(System.getenv("ROBOPRO_DIAG_DEBUG"));
+
+    private Diagnoser() { }
+
+    private static void debug(int step, List<Candidate> cs) {
+        List<Candidate> sorted = new ArrayList<>(cs);
+        sorted.sort((x, y) -> Double.compare(x.bic, y.bic));
+        for (int i = 0; i < Math.min(6, sorted.size()); i++) {
+            Candidate c = sorted.get(i);
+            System.out.printf(Locale.ROOT, "step %d %-30s F %.2f p %.2e bic %.1f press %.1f/%.1f ratio %.3f %s %s est %s sd %s%n", step,
+                    c.effect.label(), c.f, c.p, c.bic, c.pressBefore, c.pressAfter, c.ratio, c.plausible, c.plausibility,
+                    Arrays.toString(c.estimate), Arrays.toString(c.sd));
+        }
+    }
+
+    public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate) {
+        return diagnose(robot, train, validate, Options.defaults());
+    }
+
+    public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
+        long t0 = System.nanoTime();
+        Diagnosis d = run(robot, train, validate, o, null, t0);
+        if (d.effects().isEmpty()) return d;
+        // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
+        // most and misses outliers the effect's spread hides. The same rule under the extended model
+        // decides; if it differs, diagnose again with its outliers.
+        List<String> under = outliersUnder(d, train);
+        if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
+        return run(robot, train, validate, o, under, t0);
+    }
+
+    /**
+     * The calibration's outlier rule under the extended model: training poses whose position
+     * residual exceeds 5 robust sigmas (median residual norm / 1.5382, the median of a 3-D
+     * Gaussian's norm), over every training pose.
+     */
+    static List<String> outliersUnder(Diagnosis d, MeasurementSet train) {
+        ExtendedModel ext = d.model();
+        double[] norms = new double[train.size()];
+        for (int i = 0; i < train.size(); i++) {
+            Measurement m = train.rows().get(i);
+            norms[i] = d.finalInstrumentTbase().apply(ext.tool(m.q(), d.finalFlangeTtool(), PoseConditions.of(m)).position())
+                    .minus(m.position()).norm();
+        }
+        double[] sorted = norms.clone();
+        Arrays.sort(sorted);
+        int c = sorted.length;
+        if (c == 0) return List.of();
+        double med = c % 2 == 1 ? sorted[c / 2] : 0.5 * (sorted[c / 2 - 1] + sorted[c / 2]);
+        double sigma = med / 1.5381722;
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i < train.size(); i++) if (norms[i] > 5 * sigma) out.add(train.rows().get(i).poseId());
+        return out;
+    }
+
+    /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
+    private static Diagnosis run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
+                                 List<String> forcedOutliers, long t0) {
+        KinematicModel model = KinematicModel.build(robot);
+        GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
+        o.progress().update("geometric calibration", 0);
+        Set<String> forced = forcedOutliers == null ? Set.of() : new HashSet<>(forcedOutliers);
+        MeasurementSet train = forced.isEmpty() ? trainAll : trainAll.filter(m -> !forced.contains(m.poseId()));
+        Calibrator.Options co = Calibrator.Options.defaults().withCancel(o.cancel());
+        if (forcedOutliers != null) co = co.withOutliers(co.outlierK(), false);
+        CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
+        Set<String> outlierIds = new HashSet<>(forced);
+        List<String> outliers = new ArrayList<>(forced.isEmpty() ? List.of() : forcedOutliers);
+        if (forcedOutliers == null)
+            for (CalibrationResult.Outlier ol : geo.outliers())
+                if (outlierIds.add(ol.poseId())) outliers.add(ol.poseId());
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
+
+        Work w = new Work(model, rows, geo, validate, o);
+        List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
+
+        // The candidate family, from what the data can support.
+        boolean hasTemp = allFinite(rows, Measurement::tempC), hasTime = allFinite(rows, Measurement::timeS);
+        boolean hasDirs = rows.stream().allMatch(m -> m.directions() != null);
+        boolean hasPayload = allFinite(rows, Measurement::payloadKg);
+        double t0C = hasTemp ? rows.stream().mapToDouble(Measurement::tempC).average().orElse(0) : Double.NaN;
+        List<Effect> family = new ArrayList<>();
+        for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null))
+            if (e.testableOn(rows)) family.add(e);
+        if (gravity == null)
+            notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
+                    + "add a mass_model to test it");
+        if (!hasDirs) notes.add("no dir1..dir" + model.dof() + " columns: backlash was not tested directly");
+        if (!hasTemp && !hasTime) notes.add("no temp_c or time_s column: thermal expansion was not tested directly");
+        else if (!hasTemp) notes.add("no temp_c column: thermal expansion tested with time_s as a warm-up proxy");
+        if (gravity != null && !hasPayload)
+            notes.add("no payload_kg column: compliance tested with the arm's own weight only (payload taken as 0 kg)");
+
+        // Stepwise selection: forward by BIC among the candidates that pass, backward when one stops being needed.
+        List<Effect> selected = new ArrayList<>();
+        Map<Effect, boolean[]> absorbedCols = new java.util.IdentityHashMap<>();
+        List<Step> steps = new ArrayList<>();
+        Fit fit = w.fit(selected, absorbedCols, w.geoFull, null);
+        double geoTrain = fit.trainRms, geoVal = w.validateRms(fit);
+        Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
+        Map<String, Candidate> implausible = new LinkedHashMap<>();
+        List<Effect> remaining = new ArrayList<>(family);
+        int familySize = -1;
+        for (int step = 0; step < 2 * o.maxEffects() + 2 && !remaining.isEmpty(); step++) {
+            o.cancel().check();
+            o.progress().update("testing effects", Math.min(0.9, 0.2 + 0.7 * step / (o.maxEffects() + 1.0)));
+            Tester t = w.tester(fit);
+            List<Candidate> cs = new ArrayList<>();
+            for (Effect e : remaining) {
+                Candidate c = t.test(e, w.conditions);
+                if (c.keptColumns == 0) {
+                    notIdent.putIfAbsent(e.label(), new Diagnosis.NotIdentifiable(e.kind().json, e.joints1(), e.label(),
+                            c.ratio, c.ratio == 0 ? "its regressor is zero on these poses"
+                            : "the geometric model absorbs its signature on these poses"));
+                } else cs.add(c);
+            }
+            if (familySize < 0) familySize = cs.size();
+            double threshold = o.alpha() / Math.max(1, familySize - selected.size());
+            if (DEBUG) debug(step, cs);
+            Candidate best = null;
+            for (Candidate c : cs) {
+                c.threshold = threshold;
+                if (!(c.p < threshold) || !(c.pressAfter < c.pressBefore)) continue;
+                if (!c.plausible) { implausible.put(c.effect.label(), c); continue; }
+                if (best == null || c.bic < best.bic) best = c;
+            }
+            if (best == null || selected.size() >= o.maxEffects()) break;
+            implausible.clear(); // only those still significant when selection stops are reported
+            Effect chosen = best.effect;
+            selected.add(chosen);
+            absorbedCols.put(chosen, best.absorbedMask);
+            remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL));
+            notIdent.remove(chosen.label());
+            fit = w.fit(selected, absorbedCols, fit.full, best);
+            steps.add(new Step(best, fit.trainRms, w.validateRms(fit)));
+            // Backward: an effect made redundant by the new one (aliases), or implausible in the joint fit, leaves.
+            if (selected.size() >= 2) {
+                int drop = w.weakest(fit, selected, threshold);
+                if (drop >= 0) {
+                    Effect gone = selected.remove(drop);
+                    absorbedCols.remove(gone);
+                    steps.remove(drop);
+                    if (DEBUG) System.out.println("backward: dropped " + gone.label());
+                    fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
+                    if (!steps.isEmpty()) {
+                        Step last = steps.remove(steps.size() - 1);
+                        steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
+                    }
+                }
+            }
+        }
+        // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
+        for (Effect e : selected) notIdent.remove(e.label());
+
+        // Advice for columns that are missing.
+        Tester finalTester = w.tester(fit);
+        List<Object[]> probes = new ArrayList<>();
+        if (!hasDirs) {
+            List<PoseConditions> inferred = inferredDirections(train.rows(), rows);
+            for (int j = 0; j < model.dof(); j++) probes.add(new Object[] {Effect.backlash(j), inferred, "dir"});
+        }
+        if (!hasTemp && !hasTime) {
+            List<PoseConditions> order = poseOrder(rows);
+            int n = rows.size();
+            for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
+        }
+        int nProbes = probes.size();
+        boolean askedDirs = false, askedTime = false;
+        for (Object[] pr : probes) {
+            @SuppressWarnings("unchecked") List<PoseConditions> cond = (List<PoseConditions>) pr[1];
+            Candidate c = finalTester.test((Effect) pr[0], cond);
+            if (c.keptColumns == 0 || !(c.p < o.alpha() / nProbes) || !(c.pressAfter < c.pressBefore)) continue;
+            if (pr[2].equals("dir") && !askedDirs) {
+                askedDirs = true;
+                recs.add(String.format(Locale.ROOT, "The residuals change sign with the direction joint %d last moved in "
+                        + "(inferred from the pose order; F = %.1f, p = %.1e): this looks like backlash. Record the approach "
+                        + "direction of every joint (columns dir1..dir%d) so it can be identified.",
+                        ((Effect) pr[0]).joint() + 1, c.f, c.p, model.dof()));
+            } else if (pr[2].equals("time") && !askedTime) {
+                askedTime = true;
+                recs.add(String.format(Locale.ROOT, "The residuals drift with the pose order (F = %.1f, p = %.1e), as a warm-up "
+                        + "of the arm would make them: record temp_c (temperature near the robot) or at least time_s for "
+                        + "every pose so thermal expansion can be identified.", c.f, c.p));
+            }
+        }
+        for (Effect e : selected) {
+            if (e.kind() == Effect.Kind.COMPLIANCE && !hasPayload)
+                recs.add("Joint compliance was found with the arm's own weight only: record payload_kg and measure with "
+                        + "two or three payloads so the deflection is separated from the geometry more firmly.");
+            if (e.usesTimeProxy())
+                recs.add("Thermal expansion was inferred from time_s as a warm-up proxy: record temp_c to confirm it.");
+        }
+
+        // Final joint identification: values, sigmas, words, plots.
+        double[] sig = w.effectSigmas(fit);
+        Tester plotTester = selected.isEmpty() ? null : w.tester(fit);
+        List<Diagnosis.Finding> findings = new ArrayList<>();
+        List<Effect.Term> terms = new ArrayList<>();
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0);
+            double[] v = Arrays.copyOfRange(fit.effectValues(), off, off + e.size());
+            double[] s = Arrays.copyOfRange(sig, off, off + e.size());
+            Step st = steps.get(k);
+            Diagnosis.Evidence ev = st.candidate.evidence();
+            Diagnosis.Plot plot = Plots.partialResidual(plotTester, e, v);
+            findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
+                    Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
+                            k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms)));
+            terms.add(new Effect.Term(e, v));
+        }
+        List<Diagnosis.Finding> implausibleFindings = new ArrayList<>();
+        for (Candidate c : implausible.values())
+            implausibleFindings.add(new Diagnosis.Finding(c.effect, c.estimate, new double[c.effect.size()], Double.NaN,
+                    Double.NaN, c.evidence(), null, Words.implausible(c.effect, c.estimate, c.evidence())));
+        ExtendedModel ext = new ExtendedModel(fit.problem.modelOf(fit.full), terms);
+        o.progress().update("done", 1);
+        double rssFinal = 0;
+        for (double v : fit.r) rssFinal += v * v;
+        int rppF = fit.problem.rowsPerPose();
+        double posSq = 0;
+        for (int i = 0; i < fit.m; i++) if (i % rppF < 3) posSq += fit.r[i] * fit.r[i];
+        double sigmaFinal = Math.sqrt(posSq / Math.max(1, fit.m / rppF * 3.0 * (fit.m - fit.nf) / fit.m)) * w.sigmaPos;
+        return new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
+                outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
+                fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
+                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6);
+    }
+
+    private static boolean allFinite(List<Measurement> rows, java.util.function.ToDoubleFunction<Measurement> f) {
+        return !rows.isEmpty() && rows.stream().allMatch(m -> Double.isFinite(f.applyAsDouble(m)));
+    }
+
+    /** Directions from the pose order: the sign of each joint's move from the previous pose in the file. */
+    static List<PoseConditions> inferredDirections(List<Measurement> fileOrder, List<Measurement> rows) {
+        Map<String, int[]> dirs = new LinkedHashMap<>();
+        double[] prev = null;
+        for (Measurement m : fileOrder) {
+            int[] d = new int[m.dof()];
+            if (prev != null) for (int j = 0; j < d.length; j++) d[j] = (int) Math.signum(m.q(j) - prev[j]);
+            dirs.put(m.poseId(), d);
+            prev = m.q();
+        }
+        List<PoseConditions> out = new ArrayList<>();
+        for (Measurement m : rows) out.add(new PoseConditions(dirs.get(m.poseId()), m.timeS(), m.tempC(), m.payloadKg()));
+        return out;
+    }
+
+    /** Pose index as a stand-in for time. */
+    static List<PoseConditions> poseOrder(List<Measurement> rows) {
+        List<PoseConditions> out = new ArrayList<>();
+        for (int i = 0; i < rows.size(); i++) {
+            Measurement m = rows.get(i);
+            out.add(new PoseConditions(m.directions(), i, m.tempC(), m.payloadKg()));
+        }
+        return out;
+    }
+
+    // ------------------------------------------------------------------ fitting
+
+    /** A step of the forward selection. */
+    private record Step(Candidate candidate, double trainRms, double validateRms) { }
+
+    /** A fitted model: problem, full vector, weighted residuals and free Jacobian. */
+    static final class Fit {
+        IdentificationProblem problem;
+        double[] full, r, jac;
+        int m, nf, nEffects;
+        double trainRms;
+
+        double[] effectValues() {
+            if (nEffects == 0) return new double[0];
+            int off = problem.effectOffset(0);
+            return Arrays.copyOfRange(full, off, full.length);
+        }
+    }
+
+    /** Shared state of one diagnosis. */
+    static final class Work {
+        final KinematicModel model;
+        final List<Measurement> rows;
+        final List<PoseConditions> conditions = new ArrayList<>();
+        final boolean sixD, instrument;
+        final double[] geoFull;
+        final boolean[] geoFixed;
+        final double sigmaPos, sigmaRot;
+        final MeasurementSet validate;
+        final Options o;
+
+        Work(KinematicModel model, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o) {
+            this.model = model;
+            this.rows = rows;
+            for (Measurement m : rows) conditions.add(PoseConditions.of(m));
+            this.sixD = geo.sixD();
+            this.instrument = geo.instrumentTbase() != null;
+            List<CalibrationResult.ParameterEstimate> ps = geo.parameters();
+            geoFull = new double[ps.size()];
+            geoFixed = new boolean[ps.size()];
+            for (int i = 0; i < ps.size(); i++) { geoFull[i] = ps.get(i).identified(); geoFixed[i] = ps.get(i).fixed(); }
+            sigmaPos = geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5;
+            sigmaRot = sixD && geo.sigmaRotRad() > 0 ? geo.sigmaRotRad() : 1e-4;
+            this.validate = validate;
+            this.o = o;
+        }
+
+        List<EffectBlock> blocks(List<Effect> es) {
+            List<EffectBlock> b = new ArrayList<>();
+            for (Effect e : es) b.add(e.block());
+            return b;
+        }
+
+        /** LM on geometry + the effects, from {@code start} (geometry part) and the previous effect values (new ones at 0). */
+        Fit fit(List<Effect> effects, Map<Effect, boolean[]> absorbed, double[] start, Candidate added) {
+            int nBase = geoFull.length;
+            int nEff = 0;
+            for (Effect e : effects) nEff += e.size();
+            double[] full = new double[nBase + nEff];
+            System.arraycopy(start, 0, full, 0, Math.min(start.length, full.length));
+            if (added != null) {
+                // Start the new effect at its linearised estimate: fewer LM iterations.
+                int o0 = full.length - added.effect.size();
+                for (int i = 0; i < added.effect.size(); i++) full[o0 + i] = added.estimate[i];
+            }
+            IdentificationProblem p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
+            p.setSigmas(sigmaPos, sigmaRot);
+            boolean[] fix = Arrays.copyOf(geoFixed, full.length);
+            int off = nBase;
+            for (Effect e : effects) {
+                boolean[] a = absorbed.get(e);
+                for (int i = 0; i < e.size(); i++) {
+                    if (a != null && a[i]) { fix[off + i] = true; full[off + i] = 0; } // left to the geometry
+                }
+                off += e.size();
+            }
+            p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
+            p.setSigmas(sigmaPos, sigmaRot);
+            p.setFixed(fix);
+            LevenbergMarquardt.Result res = new LevenbergMarquardt(p).maxIterations(100).solve(p.freeOf(full), o.cancel());
+            Fit f = new Fit();
+            f.problem = p;
+            f.full = p.fullOf(res.x());
+            f.m = p.residualCount();
+            f.nf = p.parameterCount();
+            f.nEffects = effects.size();
+            f.r = new double[f.m];
+            f.jac = new double[f.m * f.nf];
+            p.evaluate(res.x(), f.r, f.jac);
+            f.trainRms = positionRms(f.r, p.rowsPerPose(), sigmaPos);
+            return f;
+        }
+
+        /** RMS of position error norms from weighted residuals. */
+        static double positionRms(double[] r, int rpp, double sigma) {
+            double s = 0;
+            int n = r.length / rpp;
+            for (int i = 0; i < n; i++)
+                for (int a = 0; a < 3; a++) s += r[i * rpp + a] * r[i * rpp + a];
+            return Math.sqrt(s / Math.max(1, n)) * sigma;
+        }
+
+        double validateRms(Fit f) {
+            if (validate == null || validate.size() == 0) return Double.NaN;
+            boolean six = sixD && validate.hasOrientation();
+            double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
+            List<EffectBlock> bl = f.problem.effects();
+            IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, bl, full);
+            q.setSigmas(1, 1);
+            double[] r = new double[q.residualCount()];
+            q.evaluateFull(full, r, null);
+            return positionRms(r, q.rowsPerPose(), 1);
+        }
+
+        private static double[] dropToolRotation(double[] full, int toolOff) {
+            double[] out = new double[full.length - 3];
+            System.arraycopy(full, 0, out, 0, toolOff + 3);
+            System.arraycopy(full, toolOff + 6, out, toolOff + 3, full.length - toolOff - 6);
+            return out;
+        }
+
+        /** σ of every effect parameter of the fit, from s² (JᵀJ)⁻¹ over the free parameters. */
+        double[] effectSigmas(Fit f) {
+            int n = f.nf, m = f.m;
+            int[] free = f.problem.freeIndices();
+            int nEff = f.full.length - (f.nEffects == 0 ? f.full.length : f.problem.effectOffset(0));
+            double[] out = new double[nEff];
+            if (nEff == 0) return out;
+            double[] scale = new double[n];
+            for (int c = 0; c < n; c++) {
+                double s = 0;
+                for (int i = 0; i < m; i++) s += f.jac[i * n + c] * f.jac[i * n + c];
+                scale[c] = s > 0 ? Math.sqrt(s) : 1;
+            }
+            DMatrixRMaj a = new DMatrixRMaj(n, n);
+            for (int i = 0; i < m; i++) {
+                int b = i * n;
+                for (int x = 0; x < n; x++) {
+                    double jx = f.jac[b + x] / scale[x];
+                    if (jx == 0) continue;
+                    for (int y = x; y < n; y++) a.data[x * n + y] += jx * f.jac[b + y] / scale[y];
+                }
+            }
+            for (int x = 0; x < n; x++) for (int y = 0; y < x; y++) a.data[x * n + y] = a.data[y * n + x];
+            if (!org.ejml.dense.row.CommonOps_DDRM.invert(a)) { Arrays.fill(out, Double.NaN); return out; }
+            double s2 = 0;
+            for (double v : f.r) s2 += v * v;
+            s2 /= Math.max(1, m - n);
+            int eff0 = f.problem.effectOffset(0);
+            for (int c = 0; c < n; c++) {
+                if (free[c] < eff0) continue;
+                // Residuals are weighted by 1/σ, so s² is dimensionless and the covariance is in parameter units.
+                out[free[c] - eff0] = Math.sqrt(s2 * a.get(c, c)) / scale[c];
+            }
+            return out;
+        }
+
+        /** The full vector of a fit without effect {@code k}'s parameters. */
+        double[] dropEffect(Fit f, int k) {
+            int a = f.problem.effectOffset(k), b = a + f.problem.effects().get(k).parameterNames().size();
+            double[] out = new double[f.full.length - (b - a)];
+            System.arraycopy(f.full, 0, out, 0, a);
+            System.arraycopy(f.full, b, out, a, f.full.length - b);
+            return out;
+        }
+
+        /**
+         * Backward step: the selected effect whose partial F-test (its columns against the rest of
+         * the model's Jacobian) fails {@code threshold}, or whose joint estimate is implausible
+         * beyond 3σ; the worst one, or -1 when all stay.
+         */
+        int weakest(Fit f, List<Effect> selected, double threshold) {
+            int n = f.nf, m = f.m;
+            int[] free = f.problem.freeIndices();
+            double[] sig = effectSigmas(f);
+            int eff0 = f.problem.effectOffset(0);
+            double rss = 0;
+            for (double v : f.r) rss += v * v;
+            int worst = -1;
+            double worstP = -1;
+            for (int k = 0; k < selected.size(); k++) {
+                int a = f.problem.effectOffset(k), b = a + selected.get(k).size();
+                List<Integer> mine = new ArrayList<>(), rest = new ArrayList<>();
+                for (int c = 0; c < n; c++) (free[c] >= a && free[c] < b ? mine : rest).add(c);
+                if (mine.isEmpty()) continue;
+                double[] contrib = new double[m];
+                for (int c : mine) for (int i = 0; i < m; i++) contrib[i] += f.jac[i * n + c] * f.full[free[c]];
+                double[] u = basis(f.jac, m, n, rest);
+                int rank = u.length / m;
+                double[] pc = projectOut(u, rank, m, contrib);
+                double drss = 0;
+                for (double v : pc) drss += v * v;
+                int df2 = m - n;
+                double fstat = (drss / mine.size()) / (rss / Math.max(1, df2));
+                double p = Stats.fUpperTail(fstat, mine.size(), df2);
+                Candidate c = new Candidate();
+                c.effect = selected.get(k);
+                c.estimate = Arrays.copyOfRange(f.full, a, b);
+                c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
+                plausibility(c);
+                double score = c.plausible ? p : 2;
+                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; }
+            }
+            return worst;
+        }
+
+        /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
+        Tester tester(Fit f) {
+            return new Tester(this, f);
+        }
+    }
+
+    /** A probe block: Δθ_j = v_j for every joint and a strain v_dof, to get ∂residual/∂θ and ∂residual/∂ε. */
+    static final class Probe implements EffectBlock {
+        private final int dof;
+        Probe(int dof) { this.dof = dof; }
+        @Override public String name() { return "probe"; }
+        @Override public List<String> parameterNames() {
+            List<String> n = new ArrayList<>();
+            for (int j = 0; j < dof; j++) n.add("dtheta" + (j + 1));
+            n.add("strain");
+            return n;
+        }
+        @Override public List<String> units() {
+            List<String> n = new ArrayList<>();
+            for (int j = 0; j < dof; j++) n.add("rad");
+            n.add("1");
+            return n;
+        }
+        @Override public double[] initialValues() { return new double[dof + 1]; }
+        @Override public void jointDelta(double[] v, Measurement row, double[] dTheta, double[] dThetaDv) {
+            for (int j = 0; j < dof; j++) dTheta[j] += v[j];
+            if (dThetaDv != null) {
+                Arrays.fill(dThetaDv, 0);
+                for (int j = 0; j < dof; j++) dThetaDv[j * (dof + 1) + j] = 1;
+            }
+        }
+        @Override public void positionDelta(double[] v, Measurement row, double[] pb, double[] dp, double[] dpDv, double[] dpDpoint) {
+            if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += v[dof];
+            for (int a = 0; a < 3; a++) {
+                dp[a] += v[dof] * pb[a];
+                if (dpDv != null) {
+                    for (int c = 0; c < dof; c++) dpDv[a * (dof + 1) + c] = 0;
+                    dpDv[a * (dof + 1) + dof] = pb[a];
+                }
+            }
+        }
+    }
+
+    /** One candidate's test result. */
+    static final class Candidate {
+        Effect effect;
+        int keptColumns, df1, df2;
+        double ratio, f, p = 1, bic, rssReduction, pressBefore, pressAfter, threshold = Double.NaN;
+        double[] estimate, sd;
+        boolean[] absorbedMask;
+        List<String> absorbed = new ArrayList<>();
+        boolean plausible;
+        String plausibility;
+
+        Diagnosis.Evidence evidence() {
+            return new Diagnosis.Evidence(f, df1, df2, p, threshold, rssReduction, pressBefore, pressAfter, ratio,
+                    List.copyOf(absorbed), plausibility, plausible);
+        }
+    }
+
+    /** Tests candidates against one fit. */
+    static final class Tester {
+        final Work w;
+        final Fit fit;
+        final int m, rpp, dof, rank;
+        final double[] u;        // m x rank orthonormal basis of the model Jacobian's span
+        final double[] dTheta;   // m x dof: ∂r/∂θ_j (weighted)
+        final double[] dStrain;  // m: ∂r/∂ε
+        final double[] rPerp;    // residual with any part in span(U) removed
+        final double rss0, press0;
+        final double[][] h0;     // leverage block per pose (rpp x rpp, row-major)
+
+        Tester(Work w, Fit fit) {
+            this.w = w;
+            this.fit = fit;
+            m = fit.m;
+            rpp = fit.problem.rowsPerPose();
+            dof = w.model.dof();
+            // Basis of the column-scaled Jacobian (thin SVD, relative rank tolerance 1e-10).
+            List<Integer> all = new ArrayList<>();
+            for (int c = 0; c < fit.nf; c++) all.add(c);
+            u = basis(fit.jac, m, fit.nf, all);
+            rank = u.length / m;
+            // Joint-angle and strain sensitivities through the identification chain.
+            List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
+            bl.add(new Probe(dof));
+            double[] full = Arrays.copyOf(fit.full, fit.full.length + dof + 1);
+            IdentificationProblem pp = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
+            pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
+            int nFull = pp.fullSize();
+            double[] jf = new double[m * nFull];
+            double[] rr = new double[m];
+            pp.evaluateFull(full, rr, jf);
+            int off = nFull - dof - 1;
+            dTheta = new double[m * dof];
+            dStrain = new double[m];
+            for (int i = 0; i < m; i++) {
+                for (int j = 0; j < dof; j++) dTheta[i * dof + j] = jf[i * nFull + off + j];
+                dStrain[i] = jf[i * nFull + off + dof];
+            }
+            rPerp = project(fit.r);
+            double s = 0;
+            for (double v : rPerp) s += v * v;
+            rss0 = s;
+            int poses = m / rpp;
+            h0 = new double[poses][rpp * rpp];
+            for (int i = 0; i < poses; i++)
+                for (int a1 = 0; a1 < rpp; a1++)
+                    for (int b1 = 0; b1 < rpp; b1++) {
+                        double h = 0;
+                        int ra = (i * rpp + a1) * rank, rb = (i * rpp + b1) * rank;
+                        for (int k = 0; k < rank; k++) h += u[ra + k] * u[rb + k];
+                        h0[i][a1 * rpp + b1] = h;
+                    }
+            press0 = press(rPerp, null, 0);
+        }
+
+        /** x − U Uᵀ x. */
+        double[] project(double[] x) { return projectOut(u, rank, m, x); }
+
+        /**
+         * Leave-one-pose-out prediction error sum of squares of a linear model with residual e and
+         * hat blocks h0 + Q_i Q_iᵀ (Q: m x q extra orthonormal columns, or null): Σ ‖(I − H_ii)⁻¹ e_i‖².
+         */
+        double press(double[] e, double[] qm, int q) {
+            int poses = m / rpp;
+            double total = 0;
+            double[] h = new double[rpp * rpp], b = new double[rpp];
+            for (int i = 0; i < poses; i++) {
+                for (int a1 = 0; a1 < rpp; a1++)
+                    for (int b1 = 0; b1 < rpp; b1++) {
+                        double v = -h0[i][a1 * rpp + b1];
+                        if (qm != null)
+                            for (int k = 0; k < q; k++) v -= qm[(i * rpp + a1) * q + k] * qm[(i * rpp + b1) * q + k];
+                        h[a1 * rpp + b1] = v + (a1 == b1 ? 1 : 0);
+                    }
+                for (int a1 = 0; a1 < rpp; a1++) b[a1] = e[i * rpp + a1];
+                if (!solve(h, b, rpp)) return Double.POSITIVE_INFINITY; // a pose fully determines a parameter
+                for (double v : b) total += v * v;
+            }
+            return total;
+        }
+
+        /** Tests one effect with the given per-row conditions. */
+        Candidate test(Effect e, List<PoseConditions> conds) {
+            Candidate c = new Candidate();
+            c.effect = e;
+            int k = e.size();
+            double[] s = new double[m * k];
+            double[] g = new double[k];
+            int poses = m / rpp;
+            for (int i = 0; i < poses; i++) {
+                e.regressor(w.rows.get(i).q(), conds.get(i), g);
+                for (int a = 0; a < rpp; a++) {
+                    int row = i * rpp + a;
+                    double d = e.isStrain() ? dStrain[row] : dTheta[row * dof + e.joint()];
+                    for (int col = 0; col < k; col++) s[row * k + col] = Double.isFinite(g[col]) ? d * g[col] : 0;
+                }
+            }
+            // Projection: what the current model cannot absorb, column by column.
+            List<Integer> kept = new ArrayList<>();
+            c.absorbedMask = new boolean[k];
+            double[][] sp = new double[k][];
+            double minKept = Double.POSITIVE_INFINITY, maxRatio = 0;
+            for (int col = 0; col < k; col++) {
+                double[] x = new double[m];
+                double n0 = 0;
+                for (int i = 0; i < m; i++) { x[i] = s[i * k + col]; n0 += x[i] * x[i]; }
+                double ratio = 0;
+                if (n0 > 0) {
+                    sp[col] = project(x);
+                    double n1 = 0;
+                    for (double v : sp[col]) n1 += v * v;
+                    ratio = Math.sqrt(n1 / n0);
+                }
+                maxRatio = Math.max(maxRatio, ratio);
+                if (ratio >= w.o.absorbedRatio()) { kept.add(col); minKept = Math.min(minKept, ratio); }
+                else { c.absorbed.add(e.parameterNames().get(col)); c.absorbedMask[col] = true; }
+            }
+            c.keptColumns = kept.size();
+            c.ratio = kept.isEmpty() ? maxRatio : minKept;
+            if (kept.isEmpty()) return c;
+            // Orthonormal basis of the kept projected columns and the least-squares estimate.
+            int kk = kept.size();
+            DMatrixRMaj a = new DMatrixRMaj(m, kk);
+            for (int i = 0; i < m; i++) for (int col = 0; col < kk; col++) a.data[i * kk + col] = sp[kept.get(col)][i];
+            SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(m, kk, true, true, true);
+            if (!svd.decompose(a)) throw new IllegalStateException("SVD failed for " + e.label());
+            double[] sv = svd.getSingularValues();
+            DMatrixRMaj us = svd.getU(null, false), vs = svd.getV(null, false);
+            double smax = 0;
+            for (int i = 0; i < svd.numberOfSingularValues(); i++) smax = Math.max(smax, sv[i]);
+            List<Integer> rk = new ArrayList<>();
+            for (int i = 0; i < svd.numberOfSingularValues(); i++) if (sv[i] > 1e-8 * smax) rk.add(i);
+            int q = rk.size();
+            double[] qm = new double[m * q];
+            double[] coef = new double[q];
+            for (int i = 0; i < m; i++)
+                for (int t = 0; t < q; t++) {
+                    qm[i * q + t] = us.get(i, rk.get(t));
+                    coef[t] += qm[i * q + t] * rPerp[i];
+                }
+            double drss = 0;
+            for (double v : coef) drss += v * v;
+            double[] est = new double[k];
+            for (int col = 0; col < kk; col++) {
+                double v = 0;
+                for (int t = 0; t < q; t++) v += vs.get(col, rk.get(t)) * coef[t] / sv[rk.get(t)];
+                est[kept.get(col)] = -v; // residuals are predicted - measured: r + S v = 0
+            }
+            c.estimate = est;
+            c.df1 = q;
+            c.df2 = m - rank - q;
+            double rss1 = Math.max(rss0 - drss, 1e-300);
+            double s2 = rss1 / Math.max(1, c.df2);
+            c.sd = new double[k];
+            for (int col = 0; col < kk; col++) {
+                double var = 0;
+                for (int t = 0; t < q; t++) { double x = vs.get(col, rk.get(t)) / sv[rk.get(t)]; var += x * x; }
+                c.sd[kept.get(col)] = Math.sqrt(s2 * var);
+            }
+            c.f = (drss / q) / (rss1 / Math.max(1, c.df2));
+            c.p = Stats.fUpperTail(c.f, q, c.df2);
+            c.bic = m * Math.log(rss1 / m) + q * Math.log(m);
+            c.rssReduction = rss0 > 0 ? drss / rss0 : 0;
+            double[] e1 = rPerp.clone();
+            for (int i = 0; i < m; i++) {
+                double v = 0;
+                for (int t = 0; t < q; t++) v += qm[i * q + t] * coef[t];
+                e1[i] -= v;
+            }
+            c.pressBefore = press0;
+            c.pressAfter = press(e1, qm, q);
+            plausibility(c);
+            return c;
+        }
+    }
+
+    /** Orthonormal basis (m x rank, row-major) of the column-scaled columns {@code cols} of a row-major m x n matrix. */
+    static double[] basis(double[] jac, int m, int n, List<Integer> cols) {
+        int nc = cols.size();
+        if (nc == 0) return new double[0];
+        DMatrixRMaj a = new DMatrixRMaj(m, nc);
+        for (int k = 0; k < nc; k++) {
+            int c = cols.get(k);
+            double s = 0;
+            for (int i = 0; i < m; i++) s += jac[i * n + c] * jac[i * n + c];
+            s = s > 0 ? 1 / Math.sqrt(s) : 0;
+            for (int i = 0; i < m; i++) a.data[i * nc + k] = jac[i * n + c] * s;
+        }
+        SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(m, nc, true, false, true);
+        if (!svd.decompose(a)) throw new IllegalStateException("SVD of the model Jacobian failed");
+        double[] sv = svd.getSingularValues();
+        DMatrixRMaj um = svd.getU(null, false);
+        double smax = 0;
+        for (int k = 0; k < svd.numberOfSingularValues(); k++) smax = Math.max(smax, sv[k]);
+        List<Integer> keep = new ArrayList<>();
+        for (int k = 0; k < svd.numberOfSingularValues(); k++) if (sv[k] > 1e-10 * smax) keep.add(k);
+        int rank = keep.size();
+        double[] u = new double[m * rank];
+        for (int i = 0; i < m; i++) for (int k = 0; k < rank; k++) u[i * rank + k] = um.get(i, keep.get(k));
+        return u;
+    }
+
+    /** x − U Uᵀ x for an m x rank orthonormal U. */
+    static double[] projectOut(double[] u, int rank, int m, double[] x) {
+        double[] c = new double[rank];
+        for (int i = 0; i < m; i++) {
+            double xi = x[i];
+            if (xi == 0) continue;
+            for (int k = 0; k < rank; k++) c[k] += u[i * rank + k] * xi;
+        }
+        double[] out = x.clone();
+        for (int i = 0; i < m; i++) {
+            double s = 0;
+            for (int k = 0; k < rank; k++) s += u[i * rank + k] * c[k];
+            out[i] -= s;
+        }
+        return out;
+    }
+
+    /**
+     * Physical bounds on an estimate (issue 4), in words. An estimate is implausible when its
+     * whole 3σ interval lies outside the bounds: a poorly determined estimate is not condemned
+     * for its noise, a well determined one outside the physics is.
+     */
+    static void plausibility(Candidate c) {
+        double[] v = c.estimate;
+        double[] sd = c.sd == null ? new double[v.length] : c.sd;
+        Effect e = c.effect;
+        switch (e.kind()) {
+            case COMPLIANCE -> {
+                double k = 1 / v[0];
+                c.plausible = overlaps(v[0], sd[0], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS);
+                c.plausibility = String.format(Locale.ROOT, "stiffness %.3g N·m/rad within %.0e..%.0e (positive)", k,
+                        MIN_STIFFNESS, MAX_STIFFNESS);
+            }
+            case PERIODIC -> {
+                double max = 0;
+                boolean ok = true;
+                for (int h = 0; h < Effect.HARMONICS; h++) {
+                    double amp = Math.hypot(v[2 * h], v[2 * h + 1]);
+                    max = Math.max(max, amp);
+                    if (amp - 3 * Math.max(sd[2 * h], sd[2 * h + 1]) >= MAX_PERIODIC_RAD) ok = false;
+                }
+                c.plausible = ok;
+                c.plausibility = String.format(Locale.ROOT, "largest harmonic amplitude %.4f deg < %.2f deg",
+                        Math.toDegrees(max), Math.toDegrees(MAX_PERIODIC_RAD));
+            }
+            case BACKLASH -> {
+                c.plausible = overlaps(v[0], sd[0], 0, MAX_BACKLASH_RAD);
+                c.plausibility = String.format(Locale.ROOT, "lost motion %.4f deg positive and < %.1f deg",
+                        Math.toDegrees(v[0]), Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case THERMAL -> {
+                if (e.usesTimeProxy()) {
+                    c.plausible = overlaps(v[0], sd[0], 0, MAX_STRAIN);
+                    c.plausibility = String.format(Locale.ROOT, "warm-up strain %.3g positive and < %.0e", v[0], MAX_STRAIN);
+                } else {
+                    c.plausible = overlaps(v[0], sd[0], 0, MAX_ALPHA);
+                    c.plausibility = String.format(Locale.ROOT, "expansion coefficient %.3g /K positive and < %.0e /K", v[0], MAX_ALPHA);
+                }
+            }
+            case SCALE -> {
+                c.plausible = overlaps(v[0], sd[0], -MAX_SCALE, MAX_SCALE);
+                c.plausibility = String.format(Locale.ROOT, "|scale error| %.3g < %.0e", Math.abs(v[0]), MAX_SCALE);
+            }
+            case COUPLING -> {
+                c.plausible = overlaps(v[0], sd[0], -MAX_COUPLING, MAX_COUPLING);
+                c.plausibility = String.format(Locale.ROOT, "|coupling| %.3g < %.0e", Math.abs(v[0]), MAX_COUPLING);
+            }
+        }
+    }
+
+    /** Whether [v − 3σ, v + 3σ] meets [lo, hi]. */
+    private static boolean overlaps(double v, double sd, double lo, double hi) {
+        double s = Double.isFinite(sd) ? 3 * sd : 0;
+        return v + s > lo && v - s < hi;
+    }
+
+    /** Solves a small dense system in place (Gaussian elimination, partial pivoting); false when singular. */
+    static boolean solve(double[] a, double[] b, int n) {
+        for (int col = 0; col < n; col++) {
+            int piv = col;
+            for (int r = col + 1; r < n; r++) if (Math.abs(a[r * n + col]) > Math.abs(a[piv * n + col])) piv = r;
+            if (Math.abs(a[piv * n + col]) < 1e-12) return false;
+            if (piv != col) {
+                for (int c = 0; c < n; c++) { double t = a[col * n + c]; a[col * n + c] = a[piv * n + c]; a[piv * n + c] = t; }
+                double t = b[col]; b[col] = b[piv]; b[piv] = t;
+            }
+            for (int r = col + 1; r < n; r++) {
+                double f = a[r * n + col] / a[col * n + col];
+                if (f == 0) continue;
+                for (int c = col; c < n; c++) a[r * n + c] -= f * a[col * n + c];
+                b[r] -= f * b[col];
+            }
+        }
+        for (int r = n - 1; r >= 0; r--) {
+            double s = b[r];
+            for (int c = r + 1; c < n; c++) s -= a[r * n + c] * b[c];
+            b[r] = s / a[r * n + r];
+        }
+        return true;
+    }
+}

@@ -1,0 +1,245 @@
+package org.robopro.calibration.diagnosis;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.robopro.calibration.report.Html;
+import org.robopro.calibration.report.Svg;
+import org.robopro.kinematics.Units;
+
+/** diagnosis.json and the self-contained HTML report (inline SVG, no scripts) of a {@link Diagnosis}. */
+public final class DiagnosisReport {
+    /** Where the data came from, for the report's header. */
+    public record Context(String measurements, String validation, String created) { }
+
+    private DiagnosisReport() { }
+
+    private static Double mm(double m) { return Double.isFinite(m) ? Units.mToMm(m) : null; }
+
+    private static Map<String, Object> rms(double train, double val) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("train_rms_mm", mm(train));
+        m.put("validate_rms_mm", mm(val));
+        return m;
+    }
+
+    /** The JSON tree (issue 4 fields first). */
+    public static Map<String, Object> summary(Diagnosis d, Context ctx) {
+        Map<String, Object> root = new LinkedHashMap<>();
+        root.put("robot", d.robot());
+        root.put("measurements", ctx.measurements());
+        root.put("validation", ctx.validation());
+        root.put("created", ctx.created());
+        root.put("geometric", rms(d.geometricTrainRmsM(), d.geometricValidateRmsM()));
+        List<Object> effects = new ArrayList<>();
+        for (Diagnosis.Finding f : d.effects()) effects.add(finding(f, true));
+        root.put("effects", effects);
+        root.put("final", rms(d.finalTrainRmsM(), d.finalValidateRmsM()));
+        root.put("outliers", d.outliers());
+        List<Object> ni = new ArrayList<>();
+        for (Diagnosis.NotIdentifiable n : d.notIdentifiable()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("effect", n.effect());
+            m.put("joints", n.joints());
+            m.put("unabsorbed_ratio", n.ratio());
+            m.put("reason", n.reason());
+            ni.add(m);
+        }
+        root.put("not_identifiable", ni);
+        List<Object> impl = new ArrayList<>();
+        for (Diagnosis.Finding f : d.implausible()) impl.add(finding(f, false));
+        root.put("implausible", impl);
+        root.put("recommendations", d.recommendations());
+        root.put("notes", d.notes());
+        root.put("sigma_mm", Units.mToMm(d.sigmaM()));
+        root.put("noise_floor_mm", Units.mToMm(Math.sqrt(3) * d.sigmaM()));
+        root.put("candidates_tested", d.candidatesTested());
+        root.put("family_alpha", d.alpha());
+        root.put("elapsed_ms", Math.round(d.elapsedMs()));
+        return root;
+    }
+
+    private static Map<String, Object> finding(Diagnosis.Finding f, boolean withRms) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        Effect e = f.effect();
+        m.put("effect", e.kind().json);
+        m.put("joints", e.joints1());
+        m.put("label", e.label());
+        Map<String, Object> p = new LinkedHashMap<>(), s = new LinkedHashMap<>(), u = new LinkedHashMap<>();
+        for (int i = 0; i < e.size(); i++) {
+            String n = e.parameterNames().get(i);
+            p.put(n, f.values()[i]);
+            s.put(n, Double.isFinite(f.sigmas()[i]) ? f.sigmas()[i] : null);
+            u.put(n, e.units().get(i));
+        }
+        if (e.kind() == Effect.Kind.THERMAL) p.put(e.usesTimeProxy() ? "tau_s" : "t0_c", e.usesTimeProxy() ? e.tauS() : e.t0C());
+        m.put("parameters", p);
+        m.put("parameter_sigmas", s);
+        m.put("units", u);
+        if (withRms) {
+            m.put("train_rms_mm", mm(f.trainRmsM()));
+            m.put("validate_rms_mm", mm(f.validateRmsM()));
+        }
+        Diagnosis.Evidence ev = f.evidence();
+        Map<String, Object> x = new LinkedHashMap<>();
+        x.put("f", ev.f());
+        x.put("df1", ev.df1());
+        x.put("df2", ev.df2());
+        x.put("p_value", ev.pValue());
+        x.put("holm_threshold", ev.threshold());
+        x.put("rss_reduction", ev.rssReduction());
+        x.put("press_before", ev.pressBefore());
+        x.put("press_after", ev.pressAfter());
+        x.put("unabsorbed_ratio", ev.projectionRatio());
+        x.put("absorbed_by_geometry", ev.absorbed());
+        x.put("plausibility", ev.plausibility());
+        x.put("plausible", ev.plausible());
+        m.put("evidence", x);
+        m.put("words", f.words());
+        return m;
+    }
+
+    public static String json(Diagnosis d, Context ctx) {
+        try {
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(d, ctx)) + "\n";
+        } catch (IOException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    // ------------------------------------------------------------------ HTML
+
+    public static String html(Diagnosis d, Context ctx) {
+        StringBuilder h = new StringBuilder();
+        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Diagnosis of ")
+         .append(Html.esc(d.robot())).append("</title><style>")
+         .append("body{font-family:sans-serif;max-width:780px;margin:1em auto;color:#222}")
+         .append("table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}")
+         .append("th{background:#eee}td.l,th.l{text-align:left}.finding{border-left:4px solid #2a7;padding-left:10px;margin:1.2em 0}")
+         .append(".impl{border-left:4px solid #c80;padding-left:10px}.muted{color:#666;font-size:12px}")
+         .append("</style></head><body>\n");
+        h.append("<h1>Diagnosis of ").append(Html.esc(d.robot())).append("</h1>\n<p>Measurements: <code>")
+         .append(Html.esc(ctx.measurements())).append("</code>");
+        if (ctx.validation() != null) h.append("; validation: <code>").append(Html.esc(ctx.validation())).append("</code>");
+        h.append(". Created ").append(Html.esc(ctx.created())).append(".</p>\n");
+
+        h.append("<h2>Summary</h2>\n<p>");
+        if (d.effects().isEmpty())
+            h.append("No non-geometric effect was found: the geometric model explains these measurements down to the noise.");
+        else {
+            h.append("The geometric model left out ").append(d.effects().size() == 1 ? "one effect" : d.effects().size() + " effects")
+             .append(": ");
+            List<String> names = new ArrayList<>();
+            for (Diagnosis.Finding f : d.effects()) names.add("<b>" + Html.esc(f.effect().label()) + "</b>");
+            h.append(String.join(", ", names)).append(". Each was added to the model and identified jointly with the geometry.");
+        }
+        h.append("</p>\n<table><tr><th class=\"l\">model</th><th>training RMS (mm)</th><th>validation RMS (mm)</th></tr>");
+        row(h, "geometric", d.geometricTrainRmsM(), d.geometricValidateRmsM());
+        for (Diagnosis.Finding f : d.effects()) row(h, "+ " + f.effect().label(), f.trainRmsM(), f.validateRmsM());
+        row(h, "final (joint re-identification)", d.finalTrainRmsM(), d.finalValidateRmsM());
+        h.append("</table>\n");
+        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated from the final fit's residuals: &sigma; = %.4f mm per axis "
+                + "(noise floor &radic;3&middot;&sigma; = %.4f mm). %d candidates (effect &times; joint) "
+                + "tested with a family-wise false-positive rate of %.3g; %d outlier poses excluded. %.0f ms.</p>\n",
+                Units.mToMm(d.sigmaM()), Units.mToMm(Math.sqrt(3) * d.sigmaM()), d.candidatesTested(), d.alpha(),
+                d.outliers().size(), d.elapsedMs()));
+        h.append(rmsChart(d));
+
+        if (!d.effects().isEmpty()) h.append("<h2>Findings</h2>\n");
+        for (Diagnosis.Finding f : d.effects()) {
+            h.append("<div class=\"finding\"><h3>").append(Html.esc(f.effect().label())).append("</h3>\n<p>")
+             .append(Html.esc(f.words())).append("</p>\n");
+            h.append(parameterTable(f));
+            Diagnosis.Plot p = f.plot();
+            if (p != null) {
+                h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " poses)", p.xLabel(), p.yLabel(),
+                        List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
+                                new Svg.Series("fitted " + f.effect().kind().json, p.curveX(), p.curveY(), "#d62728", true)), false));
+                if (p.periodogram() != null) {
+                    double[] hx = new double[p.periodogram().length];
+                    for (int i = 0; i < hx.length; i++) hx[i] = i + 1;
+                    h.append(Svg.plot("Periodogram of the partial residual (harmonics 1-3 are modelled)", "harmonic of q"
+                                    + (f.effect().joint() + 1), "amplitude (mdeg)",
+                            List.of(new Svg.Series("amplitude", hx, p.periodogram(), "#2ca02c", true)), false));
+                }
+            }
+            h.append("</div>\n");
+        }
+        if (!d.implausible().isEmpty()) {
+            h.append("<h2>Significant but implausible (not claimed)</h2>\n");
+            for (Diagnosis.Finding f : d.implausible()) h.append("<p class=\"impl\">").append(Html.esc(f.words())).append("</p>\n");
+        }
+        if (!d.recommendations().isEmpty()) {
+            h.append("<h2>What to record next</h2>\n<ul>");
+            for (String r : d.recommendations()) h.append("<li>").append(Html.esc(r)).append("</li>");
+            h.append("</ul>\n");
+        }
+        h.append("<h2>Outliers</h2>\n<p>");
+        if (d.outliers().isEmpty()) h.append("None (calibration rule: position residual above 5 robust sigmas).");
+        else h.append("Poses ").append(Html.esc(String.join(", ", d.outliers())))
+                .append(" were flagged by the calibration's rule (position residual above 5 robust sigmas) and left out of every fit.");
+        h.append("</p>\n");
+        if (!d.notIdentifiable().isEmpty()) {
+            h.append("<h2>Not identifiable on these data</h2>\n<table><tr><th class=\"l\">candidate</th><th>&#8214;P&#8869;S&#8214;/&#8214;S&#8214;</th><th class=\"l\">why</th></tr>");
+            for (Diagnosis.NotIdentifiable n : d.notIdentifiable())
+                h.append("<tr><td class=\"l\">").append(Html.esc(n.label())).append("</td><td>")
+                 .append(String.format(Locale.ROOT, "%.3f", n.ratio())).append("</td><td class=\"l\">").append(Html.esc(n.reason()))
+                 .append("</td></tr>");
+            h.append("</table>\n");
+        }
+        if (!d.notes().isEmpty()) {
+            h.append("<h2>Notes</h2>\n<ul>");
+            for (String n : d.notes()) h.append("<li>").append(Html.esc(n)).append("</li>");
+            h.append("</ul>\n");
+        }
+        h.append("<p class=\"muted\">Method: docs/diagnosis.md. Each candidate's signature is projected out of the span of the "
+                + "geometric Jacobian; nested F-test with Holm&ndash;Bonferroni over the family, leave-one-pose-out cross-validation "
+                + "and physical plausibility must all agree before an effect is claimed.</p>\n");
+        return h.append("</body></html>\n").toString();
+    }
+
+    private static void row(StringBuilder h, String name, double train, double val) {
+        h.append("<tr><td class=\"l\">").append(Html.esc(name)).append("</td><td>").append(fmt(train)).append("</td><td>")
+         .append(fmt(val)).append("</td></tr>");
+    }
+
+    private static String fmt(double m) { return Double.isFinite(m) ? String.format(Locale.ROOT, "%.4f", Units.mToMm(m)) : "&ndash;"; }
+
+    private static String parameterTable(Diagnosis.Finding f) {
+        StringBuilder h = new StringBuilder("<table><tr><th class=\"l\">parameter</th><th>value</th><th>&sigma;</th><th class=\"l\">unit (SI)</th></tr>");
+        Effect e = f.effect();
+        for (int i = 0; i < e.size(); i++)
+            h.append("<tr><td class=\"l\">").append(e.parameterNames().get(i)).append("</td><td>")
+             .append(String.format(Locale.ROOT, "%.4g", f.values()[i])).append("</td><td>")
+             .append(String.format(Locale.ROOT, "%.2g", f.sigmas()[i])).append("</td><td class=\"l\">")
+             .append(Html.esc(e.units().get(i))).append("</td></tr>");
+        return h.append("</table>\n").toString();
+    }
+
+    private static String rmsChart(Diagnosis d) {
+        int n = d.effects().size() + 1;
+        double[] x = new double[n], tr = new double[n], va = new double[n];
+        x[0] = 0;
+        tr[0] = Units.mToMm(d.geometricTrainRmsM());
+        va[0] = Units.mToMm(d.geometricValidateRmsM());
+        for (int i = 1; i < n; i++) {
+            x[i] = i;
+            tr[i] = Units.mToMm(d.effects().get(i - 1).trainRmsM());
+            va[i] = Units.mToMm(d.effects().get(i - 1).validateRmsM());
+        }
+        List<Svg.Series> s = new ArrayList<>();
+        s.add(new Svg.Series("training RMS", x, tr, "#1f77b4", true));
+        if (Double.isFinite(d.geometricValidateRmsM())) {
+            s.add(new Svg.Series("validation RMS", x, va, "#ff7f0e", true));
+        }
+        double[] fl = new double[n];
+        java.util.Arrays.fill(fl, Units.mToMm(Math.sqrt(3) * d.sigmaM()));
+        s.add(new Svg.Series("noise floor (final estimate)", x, fl, "#999", true));
+        return Svg.plot("RMS error: geometric model (0) and after each effect", "effects added", "RMS (mm)", s, false);
+    }
+}

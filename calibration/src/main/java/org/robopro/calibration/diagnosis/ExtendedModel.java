@@ -1,0 +1,84 @@
+package org.robopro.calibration.diagnosis;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.EffectDescription;
+import org.robopro.models.RobotDescription;
+
+/**
+ * A robot model with its non-geometric effects: the (calibrated) geometry plus identified
+ * {@link Effect} terms. Forward kinematics takes the controller values q and the conditions of
+ * the motion (approach directions, temperature, payload, time): the effects' Δθ are added to
+ * the model angles, then every length is stretched by the thermal strain about the base origin
+ * (the same rule as the campaign simulator's true robot). Written to and read from the robot
+ * file's {@code effects} section. Immutable and thread-safe.
+ */
+public final class ExtendedModel {
+    private final KinematicModel geometry;
+    private final List<Effect.Term> terms;
+
+    public ExtendedModel(KinematicModel geometry, List<Effect.Term> terms) {
+        this.geometry = geometry;
+        this.terms = List.copyOf(terms);
+    }
+
+    /**
+     * The extended model of a robot file: its geometry and its {@code effects} (none: a purely
+     * geometric model). {@code file} names the source in error messages.
+     */
+    public static ExtendedModel of(RobotDescription robot, String file) {
+        KinematicModel m = KinematicModel.build(robot);
+        GravityTorques g = robot.massModel().map(mm -> new GravityTorques(m, mm)).orElse(null);
+        List<Effect.Term> ts = new ArrayList<>();
+        for (EffectDescription d : robot.effects()) ts.add(Effect.fromDescription(d, m, g, file));
+        return new ExtendedModel(m, ts);
+    }
+
+    public KinematicModel geometry() { return geometry; }
+    public List<Effect.Term> terms() { return terms; }
+    public boolean hasEffects() { return !terms.isEmpty(); }
+
+    /** The controller values the geometry really sees at q under conditions c. */
+    public double[] effectiveQ(double[] q, PoseConditions c) {
+        if (terms.isEmpty()) return q.clone();
+        double[] theta = geometry.theta(q);
+        boolean any = false;
+        for (Effect.Term t : terms) {
+            if (t.effect().isStrain()) continue;
+            theta[t.effect().joint()] += t.effect().value(t.values(), q, c);
+            any = true;
+        }
+        return any ? geometry.q(theta) : q.clone();
+    }
+
+    /** Relative length change at conditions c. */
+    public double strain(PoseConditions c) {
+        double s = 0;
+        for (Effect.Term t : terms) if (t.effect().isStrain()) s += t.effect().value(t.values(), null, c);
+        return s;
+    }
+
+    /** baseTflange at q under conditions c. */
+    public Pose flange(double[] q, PoseConditions c) {
+        Pose p = geometry.flange(effectiveQ(q, c));
+        double s = strain(c);
+        return s == 0 ? p : Pose.translation(p.position().times(s)).times(p);
+    }
+
+    /** baseTtool at q under conditions c (the tool point is stretched with the arm). */
+    public Pose tool(double[] q, Pose flangeTtool, PoseConditions c) {
+        Pose t = geometry.flange(effectiveQ(q, c)).times(flangeTtool);
+        double s = strain(c);
+        return s == 0 ? t : Pose.translation(t.position().times(s)).times(t);
+    }
+
+    /** The robot file form: the geometry's description with the effects section filled in. */
+    public RobotDescription toDescription() {
+        List<EffectDescription> ds = new ArrayList<>();
+        for (Effect.Term t : terms) ds.add(t.effect().describe(t.values()));
+        return geometry.toDescription().withEffects(ds);
+    }
+}

@@ -1,0 +1,73 @@
+package org.robopro.calibration.diagnosis;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.simulation.Campaign;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+
+/** What the diagnosis says when a column is missing, and what it claims when it has the data. */
+class DiagnoserTest {
+    private final RobotDescription robot = RobotLibrary.shipped("irb2000");
+
+    private static MeasurementSet strip(MeasurementSet s, boolean dirs, boolean time, boolean temp) {
+        if (s == null) return null;
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : s.rows())
+            rows.add(m.withConditions(dirs ? null : m.directions(), time ? Double.NaN : m.timeS(), temp ? Double.NaN : m.tempC(),
+                    m.payloadKg()));
+        return s.withRows(rows);
+    }
+
+    @Test
+    void diagnose_backlashWithDirections_claimsBacklashOnJoint2() {
+        Campaign c = ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
+        Diagnosis d = Diagnoser.diagnose(robot, c.measurements(), c.validation());
+        assertEquals(1, d.effects().size());
+        assertEquals("backlash j2", d.effects().get(0).effect().label());
+        assertTrue(d.finalValidateRmsM() < 0.5 * d.geometricValidateRmsM());
+    }
+
+    @Test
+    void diagnose_backlashWithoutDirectionColumns_advisesRecordingThemAndClaimsNothingElse() {
+        Campaign c = ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
+        Diagnosis d = Diagnoser.diagnose(robot, strip(c.measurements(), true, false, false), strip(c.validation(), true, false, false));
+        assertTrue(d.recommendations().stream().anyMatch(r -> r.contains("dir1..dir6")), d.recommendations().toString());
+        assertTrue(d.effects().stream().noneMatch(f -> f.effect().kind() == Effect.Kind.BACKLASH));
+    }
+
+    @Test
+    void diagnose_thermalWithoutTemperatureOrTime_advisesRecordingThem() {
+        Campaign c = ConcealedEffectBenchmark.campaign("thermal-expansion", 8, 250);
+        Diagnosis d = Diagnoser.diagnose(robot, strip(c.measurements(), false, true, true), strip(c.validation(), false, true, true));
+        assertTrue(d.recommendations().stream().anyMatch(r -> r.contains("temp_c")), d.recommendations().toString());
+        assertTrue(d.effects().stream().noneMatch(f -> f.effect().kind() == Effect.Kind.THERMAL));
+    }
+
+    @Test
+    void diagnose_thermalWithTimeOnly_claimsExpansionFromTheWarmUpProxy() {
+        Campaign c = ConcealedEffectBenchmark.campaign("thermal-expansion", 8, 250);
+        Diagnosis d = Diagnoser.diagnose(robot, strip(c.measurements(), false, false, true), strip(c.validation(), false, false, true));
+        assertEquals(1, d.effects().size(), d.effects().toString());
+        assertTrue(d.effects().get(0).effect().usesTimeProxy());
+        assertTrue(d.recommendations().stream().anyMatch(r -> r.contains("temp_c")));
+    }
+
+    @Test
+    void diagnose_robotWithoutMassModel_saysComplianceWasNotTested() {
+        RobotDescription noMass = new RobotDescription(robot.name(), robot.displayName(), robot.joints(), robot.flange(),
+                robot.coupling(), Optional.empty(), robot.meshes(), robot.effects(), robot.source(), robot.provenance());
+        Campaign c = ConcealedEffectBenchmark.campaign("null (geometric errors only)", 3, 120);
+        Diagnosis d = Diagnoser.diagnose(noMass, c.measurements(), null);
+        assertTrue(d.effects().isEmpty());
+        assertTrue(d.notes().stream().anyMatch(n -> n.contains("mass model")), d.notes().toString());
+        assertTrue(Double.isNaN(d.finalValidateRmsM()));
+    }
+}

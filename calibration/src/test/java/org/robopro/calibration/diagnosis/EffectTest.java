@@ -1,0 +1,119 @@
+package org.robopro.calibration.diagnosis;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.robopro.calibration.JointEffect;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.identification.EffectBlock;
+import org.robopro.calibration.identification.IdentificationProblem;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.simulation.TrueRobot;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.EffectDescription;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+import org.robopro.models.Vec3;
+
+class EffectTest {
+    private final RobotDescription robot = RobotLibrary.shipped("irb2000");
+    private final KinematicModel model = KinematicModel.build(robot);
+    private final GravityTorques g = new GravityTorques(model, robot.massModel().orElseThrow());
+
+    private List<Effect.Term> terms() {
+        return List.of(new Effect.Term(Effect.compliance(1, g), new double[] {8e-7}),
+                new Effect.Term(Effect.periodic(2), new double[] {1e-4, -5e-5, 3e-5, 7e-5, -2e-5, 4e-5}),
+                new Effect.Term(Effect.backlash(0), new double[] {6e-4}),
+                new Effect.Term(Effect.thermal(20), new double[] {17e-6}),
+                new Effect.Term(Effect.scale(3), new double[] {2e-4}),
+                new Effect.Term(Effect.coupling(2, 1), new double[] {-6e-4}));
+    }
+
+    private List<Measurement> rows(TrueRobot truth, int n, long seed) {
+        Random r = new Random(seed);
+        List<Measurement> out = new ArrayList<>();
+        double[][] qs = model.randomConfigurations(n, seed);
+        for (int i = 0; i < n; i++) {
+            int[] dir = new int[6];
+            for (int j = 0; j < 6; j++) dir[j] = r.nextBoolean() ? 1 : -1;
+            PoseConditions c = new PoseConditions(dir, 20.0 * i, 20 + 12 * r.nextDouble(), 10 * r.nextDouble());
+            Vec3 p = truth.point(qs[i], c);
+            out.add(new Measurement("p" + i, qs[i], p, null, dir, c.timeS(), c.tempC(), c.payloadKg(), null, 0));
+        }
+        return out;
+    }
+
+    @Test
+    void block_simulatedTruthWithSameValues_zeroResidual() {
+        Pose tool = Pose.translation(0.01, -0.02, 0.1);
+        Pose inst = Pose.translation(2, 1, 0.3).times(Pose.rotZ(0.7));
+        List<JointEffect> truthEffects = new ArrayList<>();
+        List<EffectBlock> blocks = new ArrayList<>();
+        for (Effect.Term t : terms()) { truthEffects.add(t.effect().truth(t.values())); blocks.add(t.effect().block()); }
+        TrueRobot truth = new TrueRobot(model, tool, inst, 0, 0, truthEffects);
+        List<Measurement> rows = rows(truth, 12, 5);
+        double[] start = IdentificationProblem.startVector(model, tool, false, inst, blocks);
+        int off = start.length;
+        for (Effect.Term t : terms()) off -= t.values().length;
+        for (Effect.Term t : terms()) for (double v : t.values()) start[off++] = v;
+        IdentificationProblem p = new IdentificationProblem(model, rows, false, true, blocks, start);
+        p.setSigmas(1, 1);
+        double[] r = new double[p.residualCount()];
+        p.evaluateFull(start, r, null);
+        for (double v : r) assertEquals(0, v, 1e-9);
+        // and the effects matter: without them the residual is far from zero
+        double[] zero = start.clone();
+        for (int i = p.effectOffset(0); i < zero.length; i++) zero[i] = 0;
+        p.evaluateFull(zero, r, null);
+        double max = 0;
+        for (double v : r) max = Math.max(max, Math.abs(v));
+        assertEquals(true, max > 1e-4, "effects change the prediction by " + max);
+    }
+
+    @Test
+    void block_effectColumns_matchCentralDifferences() {
+        Pose tool = Pose.translation(0.0, 0.0, 0.1);
+        Pose inst = Pose.translation(2, 1, 0.3).times(Pose.rotZ(0.7));
+        List<EffectBlock> blocks = new ArrayList<>();
+        for (Effect.Term t : terms()) blocks.add(t.effect().block());
+        TrueRobot truth = new TrueRobot(model, tool, inst, 0, 0, List.of());
+        List<Measurement> rows = rows(truth, 6, 9);
+        double[] x = IdentificationProblem.startVector(model, tool, false, inst, blocks);
+        int e0 = x.length;
+        for (Effect.Term t : terms()) e0 -= t.values().length;
+        int k = e0;
+        for (Effect.Term t : terms()) for (double v : t.values()) x[k++] = v;
+        IdentificationProblem p = new IdentificationProblem(model, rows, false, true, blocks, x);
+        p.setSigmas(1, 1);
+        int m = p.residualCount(), n = p.fullSize();
+        double[] jac = new double[m * n], r = new double[m], rp = new double[m], rm = new double[m];
+        p.evaluateFull(x, r, jac);
+        for (int c = e0; c < n; c++) {
+            double h = 1e-3 * Math.max(Math.abs(x[c]), 1e-6);
+            double[] xp = x.clone(), xm = x.clone();
+            xp[c] += h;
+            xm[c] -= h;
+            p.evaluateFull(xp, rp, null);
+            p.evaluateFull(xm, rm, null);
+            for (int i = 0; i < m; i++) {
+                double fd = (rp[i] - rm[i]) / (2 * h);
+                assertEquals(fd, jac[i * n + c], 1e-6 * (1 + Math.abs(fd)), p.names().get(c) + " row " + i);
+            }
+        }
+    }
+
+    @Test
+    void describe_roundTrip_sameEffectAndValues() {
+        for (Effect.Term t : terms()) {
+            EffectDescription d = t.effect().describe(t.values());
+            Effect.Term back = Effect.fromDescription(d, model, g, "test");
+            assertEquals(t.effect().label(), back.effect().label());
+            assertArrayEquals(t.values(), back.values(), 0);
+        }
+    }
+}
