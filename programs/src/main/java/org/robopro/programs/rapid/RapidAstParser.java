@@ -407,7 +407,13 @@ final class RapidAstParser {
             Token s = peek();
             if (s.isWord("IF") || s.isWord("WHILE") || s.isWord("FOR") || s.isWord("TEST") || s.isWord("VAR") || s.isWord("PERS") || s.isWord("CONST"))
                 throw error(s, routine, "expected THEN or a simple statement after the IF condition, found " + s.describe());
-            return at(new RapidAst.CompactIf(c, stmt(routine)), h);
+            Stmt one = stmt(routine);
+            if (!(one instanceof RapidAst.Call || one instanceof RapidAst.Assign || one instanceof RapidAst.Goto
+                    || one instanceof RapidAst.Return || one instanceof RapidAst.Raise || one instanceof RapidAst.Exit
+                    || one instanceof RapidAst.Retry || one instanceof RapidAst.TryNext))
+                throw error(s, routine, "a compact IF takes one simple statement (a call, assignment, GOTO, RETURN, RAISE, EXIT, RETRY or TRYNEXT), found "
+                        + s.describe());
+            return at(new RapidAst.CompactIf(c, one), h);
         }
         Set<String> stop = Set.of("ELSEIF", "ELSE", "ENDIF");
         List<Stmt> then = stmts(routine, stop, false);

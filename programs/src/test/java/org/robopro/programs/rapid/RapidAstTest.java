@@ -57,6 +57,15 @@ class RapidAstTest {
     }
 
     @Test
+    void parse_compactIfWithLabel_refusedAtTheLabel() {
+        org.robopro.models.InputException e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> RapidParser.parseAst("MODULE M\n  PROC main()\n    IF TRUE here: WaitTime 1;\n  ENDPROC\nENDMODULE\n", "p.mod"));
+        assertEquals(3, e.line());
+        assertEquals(13, e.column());
+        assertTrue(e.getMessage().contains("compact IF"), e.getMessage());
+    }
+
+    @Test
     void parse_callWithParenthesisedCalls_helpfulMessage() {
         org.robopro.models.InputException e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
                 () -> RapidParser.parseAst("MODULE M\n  PROC main()\n    Foo(1, 2);\n  ENDPROC\nENDMODULE\n", "p.mod"));
