@@ -14,7 +14,7 @@ import org.robopro.programs.sim.MotionInterpreter;
  * a plain test run it replays the seeds in RapidParserFuzzTestInputs/.
  */
 class RapidParserFuzzTest {
-    @FuzzTest(maxDuration = "90s")
+    @FuzzTest(maxDuration = "20s")
     void parse_anyText_onlyInputException(byte[] bytes) {
         String text = new String(bytes, StandardCharsets.ISO_8859_1);
         RapidModule m;
