@@ -650,9 +650,17 @@ public final class MotionInterpreter {
             String toolName = label(pos.get(b + 3).value());
             ToolData tool = typed(eval(pos.get(b + 3).value(), f), "tooldata", ToolData.class, at, toolName);
             WObjData wobj = wobjV == null ? WObjData.WOBJ0 : typed(wobjV, "wobjdata", WObjData.class, at, wobjName);
-            if (v.isPresent() && !(v.getAsDouble() > 0)) throw error(at, "\\V must be > 0");
-            return step(proc, index, at, kind, label(pos.get(b).value()), to, b == 1 ? Optional.of(label(pos.get(0).value())) : Optional.empty(),
-                    circ, speed, v, t, zone, z, toolName, tool, wobjName, wobj);
+            if (v.isPresent() && !(v.getAsDouble() > 0 && Double.isFinite(v.getAsDouble())))
+                throw error(at, "\\V must be a finite speed > 0, got " + v.getAsDouble());
+            if (z.isPresent() && !(z.getAsDouble() >= 0 && Double.isFinite(z.getAsDouble())))
+                throw error(at, "\\Z must be a finite zone size >= 0, got " + z.getAsDouble());
+            try {
+                return step(proc, index, at, kind, label(pos.get(b).value()), to, b == 1 ? Optional.of(label(pos.get(0).value())) : Optional.empty(),
+                        circ, speed, v, t, zone, z, toolName, tool, wobjName, wobj);
+            } catch (IllegalArgumentException e) {
+                // A program value the data types reject (e.g. a non-finite pose): the user's input, located.
+                throw error(at, kind.rapidName() + ": " + e.getMessage());
+            }
         }
 
         String label(RapidAst.Expr e) {
