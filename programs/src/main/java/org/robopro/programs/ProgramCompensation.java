@@ -1,7 +1,6 @@
 package org.robopro.programs;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -84,18 +83,21 @@ public final class ProgramCompensation {
         List<MoveStep> steps = MotionInterpreter.of(module).moves(entry);
         Map<String, RobTarget> replaced = new LinkedHashMap<>();
         List<Correction> corrections = new ArrayList<>();
-        Map<String, MoveStep> firstUse = new HashMap<>();
+        // Each named robtarget is compensated once, at its first use: as a Move's to-point or as a
+        // MoveC's circle point (the circle must pass through the real point too).
+        Map<String, Use> firstUse = new LinkedHashMap<>();
         for (MoveStep s : steps) {
             if (s.kind() == Move.Kind.MOVE_ABS_J) continue;
-            firstUse.putIfAbsent(s.targetName().toLowerCase(Locale.ROOT), s);
+            firstUse.putIfAbsent(s.targetName().toLowerCase(Locale.ROOT), Use.to(s));
+            if (s.circName().isPresent() && s.baseTtcpCirc().isPresent())
+                firstUse.putIfAbsent(s.circName().get().toLowerCase(Locale.ROOT), Use.circ(s));
         }
-        for (Map.Entry<String, MoveStep> e : firstUse.entrySet()) {
+        for (Map.Entry<String, Use> e : firstUse.entrySet()) {
             String key = e.getKey();
             if (key.equals("*")) continue; // inline targets: below
-            MoveStep s = e.getValue();
             Declaration d = module.declaration(key).orElse(null);
             if (d == null || !(d.value() instanceof RobTarget t)) continue;
-            replaced.put(key, compensateOne(d.name(), t, s, ik, compensator, corrections));
+            replaced.put(key, compensateOne(d.name(), t, e.getValue(), ik, compensator, corrections));
         }
         List<ModuleItem> items = new ArrayList<>();
         for (ModuleItem it : module.items()) {
@@ -113,26 +115,46 @@ public final class ProgramCompensation {
         boolean changed = false;
         for (int k = 0; k < p.body().size(); k++) {
             Statement st = p.body().get(k);
-            if (st instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && m.toPoint() instanceof Ref.Inline<?> in) {
+            boolean inlineTo = st instanceof Move m0 && m0.toPoint() instanceof Ref.Inline<?>;
+            boolean inlineCirc = st instanceof Move m1 && m1.circPoint().isPresent() && m1.circPoint().get() instanceof Ref.Inline<?>;
+            if (st instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && (inlineTo || inlineCirc)) {
                 // Resolve the single instruction in context to get its base poses.
                 RapidModule one = RapidModule.builder("one").procedure("one", List.of(m)).build();
                 MoveStep s = MotionInterpreter.of(one, module).moves("one").get(0);
-                RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " *", (RobTarget) in.value(), s, ik, c, corrections);
-                body.add(m.withToPoint(Ref.inline(t)));
+                Move out = m;
+                if (inlineTo) {
+                    RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " *", (RobTarget) ((Ref.Inline<?>) m.toPoint()).value(),
+                            Use.to(s), ik, c, corrections);
+                    out = out.withToPoint(Ref.inline(t));
+                }
+                if (inlineCirc) {
+                    RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " circle *",
+                            (RobTarget) ((Ref.Inline<?>) m.circPoint().get()).value(), Use.circ(s), ik, c, corrections);
+                    out = out.withCircPoint(Ref.inline(t));
+                }
+                body.add(out);
                 changed = true;
             } else body.add(st);
         }
         return changed ? p.withBody(body) : p;
     }
 
-    private static RobTarget compensateOne(String name, RobTarget t, MoveStep s, InverseKinematics ik, TargetCompensator c,
+    /** Where a target is used: the base poses it commands there, and the step's tool and work object. */
+    private record Use(Pose baseTflange, Pose baseTtcp, MoveStep step) {
+        static Use to(MoveStep s) { return new Use(s.baseTflange().orElseThrow(), s.baseTtcp().orElseThrow(), s); }
+
+        static Use circ(MoveStep s) { return new Use(s.baseTflangeCirc().orElseThrow(), s.baseTtcpCirc().orElseThrow(), s); }
+    }
+
+    private static RobTarget compensateOne(String name, RobTarget t, Use use, InverseKinematics ik, TargetCompensator c,
                                            List<Correction> corrections) {
+        MoveStep s = use.step();
         if (!s.tool().robhold() || s.wobj().robhold()) {
             corrections.add(new Correction(name, 0, 0, Double.NaN, Double.NaN, "not compensated: stationary tool"));
             return t;
         }
-        Pose baseTtcp = s.baseTtcp().orElseThrow();
-        Optional<IkSolution> start = ik.solveWithConf(s.baseTflange().orElseThrow(), t.robconf());
+        Pose baseTtcp = use.baseTtcp();
+        Optional<IkSolution> start = ik.solveWithConf(use.baseTflange(), t.robconf());
         double[] seed = start.map(IkSolution::q).orElseGet(() -> new double[ik.model().dof()]);
         Result r = c.compensate(baseTtcp, s.flangeTtcp(), seed);
         Pose baseTobj = Teach.baseTobj(s.wobj());

@@ -50,4 +50,43 @@ class ProgramCompensationTest {
             assertEquals(0, reached.angleTo(intended.get(k).baseTtcp().orElseThrow()), 1e-6);
         }
     }
+
+    @Test
+    void compensate_moveC_circlePointsNamedAndInlineReachedByRealRobot() {
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        double[] p = nominal.parameterValues();
+        Random r = new Random(11);
+        for (int i = 0; i < p.length; i++) p[i] += r.nextGaussian() * 0.002;
+        KinematicModel real = nominal.withParameterValues(p);
+        ToolData torch = new ToolData(true, new RapidPose(new Vec3(0, 0, 0.15), Quaternion.IDENTITY), LoadData.LOAD0);
+        WObjData table = new WObjData(false, true, "", new RapidPose(new Vec3(0.9, -0.2, 0.5), Quaternion.IDENTITY), RapidPose.IDENTITY);
+        RobTarget start = Teach.taught(nominal, new double[] {0.1, 0.2, 0.1, 0.2, 0.7, -0.3}, torch, table);
+        RobTarget via = Teach.taught(nominal, new double[] {0.2, 0.25, 0.05, 0.2, 0.7, -0.3}, torch, table);
+        RobTarget end = Teach.taught(nominal, new double[] {0.3, 0.2, 0.1, 0.2, 0.7, -0.3}, torch, table);
+        RobTarget via2 = Teach.taught(nominal, new double[] {0.2, 0.15, 0.15, 0.2, 0.7, -0.3}, torch, table);
+        RapidModule m = RapidModule.builder("C").pers("tTorch", torch).pers("wTable", table)
+                .constant("pStart", start).constant("pVia", via).constant("pEnd", end)
+                .procedure("main", List.of(Move.moveJ(Ref.to("pStart"), Ref.to("v1000"), Ref.to("fine"), "tTorch", "wTable"),
+                        Move.moveC(Ref.to("pVia"), Ref.to("pEnd"), Ref.to("v100"), Ref.to("fine"), "tTorch", "wTable"),
+                        Move.moveC(Ref.inline(via2), Ref.to("pStart"), Ref.to("v100"), Ref.to("fine"), "tTorch", "wTable"))).build();
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, ProgramCompensation.fixedPoint(nominal, real));
+        // pStart, pVia, pEnd by name, and the inline circle point of the second MoveC.
+        assertEquals(4, out.corrections().size(), out.corrections().toString());
+        for (ProgramCompensation.Correction c : out.corrections()) assertEquals("converged", c.status(), c.toString());
+        String text = RapidWriter.export(out.module()).text();
+        List<MoveStep> intended = MotionInterpreter.of(m).moves("main");
+        List<MoveStep> commanded = MotionInterpreter.of(RapidParser.parse(text, "C.mod")).moves("main");
+        InverseKinematics ik = InverseKinematics.of(nominal);
+        // The controller reaches each commanded circle point on the branch it was taught on.
+        double[][] taught = {null, {0.2, 0.25, 0.05, 0.2, 0.7, -0.3}, {0.2, 0.15, 0.15, 0.2, 0.7, -0.3}};
+        for (int k = 1; k <= 2; k++) {
+            MoveStep cs = commanded.get(k);
+            Pose cmdCirc = cs.baseTflangeCirc().orElseThrow();
+            double[] q = ik.solveNear(cmdCirc, taught[k]).orElseThrow().q();
+            Pose reached = real.flange(q).times(cs.flangeTtcp());
+            Pose wanted = intended.get(k).baseTtcpCirc().orElseThrow();
+            assertTrue(wanted.distanceTo(cs.baseTtcpCirc().orElseThrow()) > 1e-4, "the circle point must have moved");
+            assertEquals(0, reached.distanceTo(wanted), 2e-6, "circle point of MoveC " + k);
+        }
+    }
 }

@@ -1,30 +1,45 @@
 package org.robopro.programs.project;
 
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Units;
+import org.robopro.models.AtomicFiles;
 import org.robopro.models.InputException;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 import org.robopro.programs.Comment;
+import org.robopro.programs.Declaration;
 import org.robopro.programs.ExtJoints;
 import org.robopro.programs.JointTarget;
 import org.robopro.programs.LoadData;
+import org.robopro.programs.ModuleItem;
 import org.robopro.programs.Move;
 import org.robopro.programs.ProcCall;
+import org.robopro.programs.Procedure;
 import org.robopro.programs.Quaternion;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.RapidPose;
+import org.robopro.programs.RapidValue;
 import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.SpeedData;
@@ -38,7 +53,10 @@ import org.robopro.programs.ZoneData;
 /**
  * A program project file ("robopro-program 1", JSON, docs/programs.md): module name, robot,
  * tools, work objects, speeds, zones, targets (typed poses or taught joint values) and
- * procedures. Units at this edge are mm and degrees, as in RAPID.
+ * procedures. Units at this edge are mm and degrees, as in RAPID. {@link #parse} reads one
+ * (errors name file, line, column and field); {@link #format}/{@link #write} write a module
+ * back (numbers chosen so that reading them gives the very same doubles), so
+ * {@code parse(format(parse(f)))} equals {@code parse(f)}.
  */
 public final class ProgramProject {
     private ProgramProject() { }
@@ -52,120 +70,292 @@ public final class ProgramProject {
     }
 
     public static RapidModule parse(String text, String file) {
-        JsonNode root;
-        try {
-            root = new ObjectMapper().readTree(text);
-        } catch (JsonProcessingException e) {
-            int line = e.getLocation() == null ? 0 : e.getLocation().getLineNr();
-            int col = e.getLocation() == null ? 0 : e.getLocation().getColumnNr();
-            throw new InputException(file, line, col, null, "not JSON: " + e.getOriginalMessage());
+        Located tree = Located.read(text, file);
+        return new Reader(file, tree.where).module(tree.root);
+    }
+
+    /**
+     * A JSON tree with where each value was written, keyed by field path as the reader names
+     * fields ({@code tools.tTorch.load.mass_kg}, {@code procedures.main[2].to}). Jackson's own
+     * tree keeps no locations, so it is built here from the token stream.
+     */
+    private static final class Located {
+        final JsonNode root;
+        final Map<String, JsonLocation> where = new HashMap<>();
+        private final String file;
+
+        private Located(String file, String text) {
+            this.file = file;
+            try (JsonParser p = new JsonFactory().createParser(text)) {
+                if (p.nextToken() == null) throw new InputException(file, 1, 1, null, "empty file, expected a JSON object");
+                root = value(p, "");
+                if (p.nextToken() != null)
+                    throw new InputException(file, p.currentTokenLocation().getLineNr(), p.currentTokenLocation().getColumnNr(), null,
+                            "text after the JSON object");
+            } catch (JsonProcessingException e) {
+                JsonLocation l = e.getLocation();
+                throw new InputException(file, l == null ? 0 : l.getLineNr(), l == null ? 0 : l.getColumnNr(), null,
+                        "not JSON: " + e.getOriginalMessage());
+            } catch (IOException e) {
+                throw new InputException(file, 0, 0, null, "cannot read: " + e.getMessage(), e);
+            }
         }
-        return new Reader(file).module(root);
+
+        static Located read(String text, String file) { return new Located(file, text); }
+
+        private JsonNode value(JsonParser p, String path) throws IOException {
+            JsonLocation at = p.currentTokenLocation();
+            where.putIfAbsent(path, at); // a member keeps its key's location
+            JsonNodeFactory nf = JsonNodeFactory.instance;
+            switch (p.currentToken()) {
+                case START_OBJECT -> {
+                    ObjectNode o = nf.objectNode();
+                    while (p.nextToken() == JsonToken.FIELD_NAME) {
+                        String k = p.currentName();
+                        String child = path.isEmpty() ? k : path + "." + k;
+                        JsonLocation kl = p.currentTokenLocation();
+                        if (o.has(k)) throw new InputException(file, kl.getLineNr(), kl.getColumnNr(), child, "duplicate key \"" + k + "\"");
+                        where.put(child, kl);
+                        p.nextToken();
+                        o.set(k, value(p, child));
+                    }
+                    return o;
+                }
+                case START_ARRAY -> {
+                    ArrayNode a = nf.arrayNode();
+                    for (int k = 0; p.nextToken() != JsonToken.END_ARRAY; k++) a.add(value(p, path + "[" + k + "]"));
+                    return a;
+                }
+                case VALUE_STRING -> { return nf.textNode(p.getText()); }
+                case VALUE_NUMBER_INT -> { return nf.numberNode(p.getBigIntegerValue()); }
+                case VALUE_NUMBER_FLOAT -> { return nf.numberNode(p.getDoubleValue()); }
+                case VALUE_TRUE -> { return nf.booleanNode(true); }
+                case VALUE_FALSE -> { return nf.booleanNode(false); }
+                case VALUE_NULL -> { return nf.nullNode(); }
+                default -> throw new InputException(file, at.getLineNr(), at.getColumnNr(), path, "unexpected " + p.currentToken());
+            }
+        }
     }
 
     private static final class Reader {
         final String file;
+        final Map<String, JsonLocation> where;
         KinematicModel robot;
 
-        Reader(String file) { this.file = file; }
+        Reader(String file, Map<String, JsonLocation> where) {
+            this.file = file;
+            this.where = where;
+        }
 
-        InputException bad(String field, String problem) { return new InputException(file, 0, 0, field, problem); }
+        /** An error at {@code field}; a missing field is reported where its nearest enclosing value was written. */
+        InputException bad(String field, String problem) {
+            String f = field == null ? "" : field;
+            while (!where.containsKey(f) && !f.isEmpty()) {
+                int cut = f.endsWith("]") ? f.lastIndexOf('[') : f.lastIndexOf('.');
+                f = cut < 0 ? "" : f.substring(0, cut);
+            }
+            JsonLocation l = where.get(f);
+            return new InputException(file, l == null ? 0 : l.getLineNr(), l == null ? 0 : l.getColumnNr(), field, problem);
+        }
 
         RapidModule module(JsonNode root) {
             if (root == null || !root.isObject()) throw bad(null, "expected a JSON object");
-            if (!"robopro-program".equals(text(root, "format")) || root.path("version").asInt(-1) != 1)
+            if (!"robopro-program".equals(root.path("format").asText()) || !root.path("version").isIntegralNumber() || root.path("version").asInt() != 1)
                 throw bad("format", "expected \"format\": \"robopro-program\", \"version\": 1");
-            RapidModule.Builder b = RapidModule.builder(text(root, "module"));
+            RapidModule.Builder b = RapidModule.builder(text(root, "module", ""));
             if (root.has("robot")) {
                 try {
-                    robot = KinematicModel.build(RobotLibrary.load(text(root, "robot")));
+                    robot = KinematicModel.build(RobotLibrary.load(text(root, "robot", "")));
                 } catch (InputException e) {
                     throw e;
                 } catch (RuntimeException e) {
                     throw bad("robot", "cannot load robot: " + e.getMessage());
                 }
             }
-            Map<String, ToolData> tools = new java.util.LinkedHashMap<>();
-            Map<String, WObjData> wobjs = new java.util.LinkedHashMap<>();
+            JsonNode comments = root.path("comments");
+            if (!comments.isMissingNode()) {
+                if (!comments.isArray()) throw bad("comments", "expected a list of comment lines");
+                for (int k = 0; k < comments.size(); k++) b.comment(comment(comments.get(k), "comments[" + k + "]"));
+            }
+            Map<String, ToolData> tools = new LinkedHashMap<>();
+            Map<String, WObjData> wobjs = new LinkedHashMap<>();
             for (var e : fields(root, "tools")) {
                 JsonNode t = e.getValue();
                 String f = "tools." + e.getKey();
                 JsonNode load = t.path("load");
-                LoadData ld = load.isMissingNode() ? LoadData.LOAD0 : new LoadData(num(load, "mass_kg", f + ".load"),
-                        vecMm(load.path("cog_mm"), f + ".load.cog_mm"), Quaternion.IDENTITY, 0, 0, 0);
-                ToolData td = new ToolData(t.path("robhold").asBoolean(true), pose(t.path("tframe"), f + ".tframe"), ld);
+                LoadData ld = LoadData.LOAD0;
+                if (!load.isMissingNode()) {
+                    double[] inertia = load.has("inertia_kgm2") ? array(load.path("inertia_kgm2"), 3, f + ".load.inertia_kgm2") : new double[3];
+                    ld = new LoadData(num(load, "mass_kg", f + ".load"), vecMm(load.path("cog_mm"), f + ".load.cog_mm"),
+                            load.has("aom") ? quat(load.path("aom"), f + ".load.aom") : Quaternion.IDENTITY, inertia[0], inertia[1], inertia[2]);
+                }
+                ToolData td = new ToolData(bool(t, "robhold", f, true), pose(t.path("tframe"), f + ".tframe"), ld);
                 tools.put(e.getKey(), td);
-                b.pers(e.getKey(), td);
+                b.declare(declaration(t, f, Declaration.Storage.PERS, e.getKey(), td));
             }
             for (var e : fields(root, "wobjs")) {
                 JsonNode w = e.getValue();
                 String f = "wobjs." + e.getKey();
-                WObjData wd = new WObjData(false, true, "", pose(w.path("uframe"), f + ".uframe"),
-                        w.has("oframe") ? pose(w.path("oframe"), f + ".oframe") : RapidPose.IDENTITY);
+                WObjData wd = new WObjData(bool(w, "robhold", f, false), bool(w, "ufprog", f, true), optText(w, "ufmec", f, ""),
+                        pose(w.path("uframe"), f + ".uframe"), w.has("oframe") ? pose(w.path("oframe"), f + ".oframe") : RapidPose.IDENTITY);
                 wobjs.put(e.getKey(), wd);
-                b.pers(e.getKey(), wd);
+                b.declare(declaration(w, f, Declaration.Storage.PERS, e.getKey(), wd));
             }
             for (var e : fields(root, "speeds")) {
-                JsonNode s = e.getValue();
-                b.var(e.getKey(), SpeedData.ofRapid(num(s, "tcp_mm_s", "speeds." + e.getKey()), s.path("ori_deg_s").asDouble(500), 5000, 1000));
+                JsonNode sp = e.getValue();
+                String f = "speeds." + e.getKey();
+                SpeedData sd = wrap(f, () -> SpeedData.ofRapid(num(sp, "tcp_mm_s", f), optNum(sp, "ori_deg_s", f, 500),
+                        optNum(sp, "leax_mm_s", f, 5000), optNum(sp, "reax_deg_s", f, 1000)));
+                b.declare(declaration(sp, f, Declaration.Storage.VAR, e.getKey(), sd));
             }
             for (var e : fields(root, "zones")) {
-                double r = num(e.getValue(), "tcp_mm", "zones." + e.getKey());
-                b.var(e.getKey(), ZoneData.ofRapid(false, r, 1.5 * r, 1.5 * r, 0.15 * r, 1.5 * r, 0.15 * r));
+                JsonNode z = e.getValue();
+                String f = "zones." + e.getKey();
+                double r = num(z, "tcp_mm", f);
+                // Defaults follow the predefined zones' proportions (z10: 10, 15, 15, 1.5, 15, 1.5).
+                ZoneData zd = wrap(f, () -> ZoneData.ofRapid(bool(z, "finep", f, false), r, optNum(z, "ori_mm", f, 1.5 * r),
+                        optNum(z, "eax_mm", f, 1.5 * r), optNum(z, "ori_deg", f, 0.15 * r), optNum(z, "leax_mm", f, 1.5 * r),
+                        optNum(z, "reax_deg", f, 0.15 * r)));
+                b.declare(declaration(z, f, Declaration.Storage.VAR, e.getKey(), zd));
             }
-            for (var e : fields(root, "jointtargets"))
-                b.constant(e.getKey(), JointTarget.of(Units.degToRad(array(e.getValue().path("joints_deg"), 6, "jointtargets." + e.getKey() + ".joints_deg"))));
+            for (var e : fields(root, "jointtargets")) {
+                JsonNode j = e.getValue();
+                String f = "jointtargets." + e.getKey();
+                JointTarget jt = JointTarget.of(Units.degToRad(array(j.path("joints_deg"), 6, f + ".joints_deg")), extax(j, f));
+                b.declare(declaration(j, f, Declaration.Storage.CONST, e.getKey(), jt));
+            }
             for (var e : fields(root, "targets")) {
                 JsonNode t = e.getValue();
                 String f = "targets." + e.getKey();
+                RobTarget rt;
                 if (t.has("joints_deg")) {
-                    if (robot == null) throw bad(f, "a taught target (joints_deg) needs \"robot\"");
+                    if (robot == null) throw bad(f + ".joints_deg", "a taught target (joints_deg) needs \"robot\"");
                     double[] q = Units.degToRad(array(t.path("joints_deg"), robot.dof(), f + ".joints_deg"));
-                    ToolData tool = tools.getOrDefault(t.path("tool").asText("tool0"), ToolData.TOOL0);
-                    WObjData wobj = wobjs.getOrDefault(t.path("wobj").asText("wobj0"), WObjData.WOBJ0);
-                    b.constant(e.getKey(), Teach.taught(robot, q, tool, wobj));
+                    ToolData tool = tools.getOrDefault(optText(t, "tool", f, "tool0"), ToolData.TOOL0);
+                    WObjData wobj = wobjs.getOrDefault(optText(t, "wobj", f, "wobj0"), WObjData.WOBJ0);
+                    rt = wrap(f + ".joints_deg", () -> Teach.taught(robot, q, tool, wobj));
                 } else {
                     RapidPose p = pose(t, f);
                     double[] cf = t.has("conf") ? array(t.path("conf"), 4, f + ".conf") : new double[4];
-                    b.constant(e.getKey(), new RobTarget(p.trans(), p.rot(), new ConfData((int) cf[0], (int) cf[1], (int) cf[2], (int) cf[3]), ExtJoints.NONE));
+                    for (int k = 0; k < 4; k++)
+                        if (cf[k] != Math.rint(cf[k]) || Math.abs(cf[k]) > 1e6) throw bad(f + ".conf[" + k + "]", "expected an integer");
+                    rt = new RobTarget(p.trans(), p.rot(), new ConfData((int) cf[0], (int) cf[1], (int) cf[2], (int) cf[3]), extax(t, f));
                 }
+                b.declare(declaration(t, f, Declaration.Storage.CONST, e.getKey(), rt));
             }
+            for (var e : fields(root, "data")) {
+                JsonNode d = e.getValue();
+                String f = "data." + e.getKey();
+                RapidValue v;
+                if (d.has("num")) v = new RapidValue.Num(num(d, "num", f));
+                else if (d.has("bool")) v = new RapidValue.Bool(bool(d, "bool", f, false));
+                else if (d.has("string")) {
+                    if (!d.get("string").isTextual()) throw bad(f + ".string", "expected a string");
+                    v = wrap(f + ".string", () -> new RapidValue.Str(d.get("string").asText()));
+                } else throw bad(f, "expected \"num\", \"bool\" or \"string\"");
+                b.declare(declaration(d, f, Declaration.Storage.CONST, e.getKey(), v));
+            }
+            List<Procedure> procs = new ArrayList<>();
             for (var e : fields(root, "procedures")) {
                 List<Statement> body = new ArrayList<>();
                 JsonNode list = e.getValue();
-                if (!list.isArray()) throw bad("procedures." + e.getKey(), "expected a list of statements");
-                for (int k = 0; k < list.size(); k++) body.add(statement(list.get(k), "procedures." + e.getKey() + "[" + k + "]"));
-                b.procedure(e.getKey(), body);
+                String f = "procedures." + e.getKey();
+                if (!list.isArray()) throw bad(f, "expected a list of statements");
+                for (int k = 0; k < list.size(); k++) body.add(statement(list.get(k), f + "[" + k + "]"));
+                procs.add(wrap(f, () -> new Procedure(e.getKey(), body)));
             }
-            return b.build();
+            RapidModule head = wrap("module", b::build);
+            List<ModuleItem> items = new ArrayList<>(head.items());
+            items.addAll(procs);
+            return head.withItems(items);
+        }
+
+        /** A declaration with the entry's optional "storage" (CONST, PERS, VAR) and "scope" (LOCAL, TASK). */
+        Declaration declaration(JsonNode n, String f, Declaration.Storage usual, String name, RapidValue v) {
+            Declaration.Storage st = usual;
+            Declaration.Scope sc = Declaration.Scope.GLOBAL;
+            try {
+                if (n.has("storage")) st = Declaration.Storage.valueOf(optText(n, "storage", f, ""));
+            } catch (IllegalArgumentException e) {
+                throw bad(f + ".storage", "expected CONST, PERS or VAR");
+            }
+            try {
+                if (n.has("scope")) sc = Declaration.Scope.valueOf(optText(n, "scope", f, ""));
+            } catch (IllegalArgumentException e) {
+                throw bad(f + ".scope", "expected LOCAL or TASK");
+            }
+            Declaration.Storage storage = st;
+            Declaration.Scope scope = sc;
+            return wrap(f, () -> new Declaration(scope, storage, name, v));
         }
 
         Statement statement(JsonNode s, String f) {
-            if (s.has("comment")) return new Comment(s.path("comment").asText());
-            if (s.has("call")) return new ProcCall(s.path("call").asText());
-            if (s.has("wait_s")) return new WaitTime(num(s, "wait_s", f));
-            String kind = text(s, "move");
-            String tool = s.path("tool").asText("tool0");
-            String wobj = s.has("wobj") ? s.path("wobj").asText() : null;
-            Ref<SpeedData> speed = Ref.to(s.path("speed").asText("v100"));
-            Ref<ZoneData> zone = Ref.to(s.path("zone").asText("fine"));
+            if (!s.isObject()) throw bad(f, "expected a statement object");
+            if (s.has("comment")) return new Comment(comment(s.get("comment"), f + ".comment"));
+            if (s.has("call")) return new ProcCall(text(s, "call", f));
+            if (s.has("wait_s")) {
+                double w = num(s, "wait_s", f);
+                return wrap(f + ".wait_s", () -> new WaitTime(w));
+            }
+            String kind = text(s, "move", f);
+            String tool = optText(s, "tool", f, "tool0");
+            String wobj = s.has("wobj") ? text(s, "wobj", f) : null;
+            Ref<SpeedData> speed = Ref.to(optText(s, "speed", f, "v100"));
+            Ref<ZoneData> zone = Ref.to(optText(s, "zone", f, "fine"));
+            Move m = switch (kind) {
+                case "MoveJ" -> Move.moveJ(Ref.to(text(s, "to", f)), speed, zone, tool, wobj);
+                case "MoveL" -> Move.moveL(Ref.to(text(s, "to", f)), speed, zone, tool, wobj);
+                case "MoveC" -> Move.moveC(Ref.to(text(s, "via", f)), Ref.to(text(s, "to", f)), speed, zone, tool, wobj);
+                case "MoveAbsJ" -> Move.moveAbsJ(Ref.to(text(s, "to", f)), speed, zone, tool, wobj);
+                default -> throw bad(f + ".move", "expected MoveJ, MoveL, MoveC or MoveAbsJ, found " + kind);
+            };
+            Move base = m;
+            return wrap(f, () -> {
+                Move out = base.withConc(bool(s, "conc", f, false));
+                java.util.OptionalDouble v = s.has("v_mm_s") ? java.util.OptionalDouble.of(Units.mmToM(num(s, "v_mm_s", f))) : java.util.OptionalDouble.empty();
+                java.util.OptionalDouble t = s.has("t_s") ? java.util.OptionalDouble.of(num(s, "t_s", f)) : java.util.OptionalDouble.empty();
+                out = out.withSpeedOverride(v, t);
+                if (s.has("z_mm")) out = out.withZoneOverride(java.util.OptionalDouble.of(Units.mmToM(num(s, "z_mm", f))));
+                if (bool(s, "noeoffs", f, false))
+                    out = new Move(out.kind(), out.conc(), out.circPoint(), out.toPoint(), true, out.speed(), out.v(), out.t(), out.zone(), out.z(),
+                            out.tool(), out.wobj());
+                return out;
+            });
+        }
+
+        /** Model constructors refuse bad values with IllegalArgumentException: name the field. */
+        <T> T wrap(String f, java.util.function.Supplier<T> make) {
             try {
-                return switch (kind) {
-                    case "MoveJ" -> Move.moveJ(Ref.to(text(s, "to")), speed, zone, tool, wobj);
-                    case "MoveL" -> Move.moveL(Ref.to(text(s, "to")), speed, zone, tool, wobj);
-                    case "MoveC" -> Move.moveC(Ref.to(text(s, "via")), Ref.to(text(s, "to")), speed, zone, tool, wobj);
-                    case "MoveAbsJ" -> Move.moveAbsJ(Ref.to(text(s, "to")), speed, zone, tool, wobj);
-                    default -> throw bad(f + ".move", "expected MoveJ, MoveL, MoveC or MoveAbsJ, found " + kind);
-                };
+                return make.get();
             } catch (IllegalArgumentException e) {
                 throw bad(f, e.getMessage());
             }
         }
 
-        String text(JsonNode n, String k) {
+        String comment(JsonNode n, String f) {
+            if (n == null || !n.isTextual() || n.asText().indexOf('\n') >= 0 || n.asText().indexOf('\r') >= 0)
+                throw bad(f, "expected one line of text");
+            return n.asText();
+        }
+
+        String text(JsonNode n, String k, String prefix) {
+            String f = prefix.isEmpty() ? k : prefix + "." + k;
             JsonNode v = n.get(k);
-            if (v == null || !v.isTextual() || v.asText().isEmpty()) throw bad(k, "expected a non-empty string");
+            if (v == null || !v.isTextual() || v.asText().isEmpty()) throw bad(f, "expected a non-empty string");
             return v.asText();
+        }
+
+        String optText(JsonNode n, String k, String prefix, String dflt) {
+            if (!n.has(k)) return dflt;
+            JsonNode v = n.get(k);
+            if (!v.isTextual() || (v.asText().isEmpty() && !dflt.isEmpty())) throw bad(prefix + "." + k, "expected a non-empty string");
+            return v.asText();
+        }
+
+        boolean bool(JsonNode n, String k, String prefix, boolean dflt) {
+            if (!n.has(k)) return dflt;
+            if (!n.get(k).isBoolean()) throw bad(prefix + "." + k, "expected true or false");
+            return n.get(k).asBoolean();
         }
 
         double num(JsonNode n, String k, String f) {
@@ -174,14 +364,20 @@ public final class ProgramProject {
             return v.asDouble();
         }
 
+        double optNum(JsonNode n, String k, String f, double dflt) { return n.has(k) ? num(n, k, f) : dflt; }
+
         double[] array(JsonNode n, int len, String f) {
             if (!n.isArray() || n.size() != len) throw bad(f, "expected " + len + " numbers");
             double[] a = new double[len];
             for (int i = 0; i < len; i++) {
-                if (!n.get(i).isNumber()) throw bad(f + "[" + i + "]", "expected a number");
+                if (!n.get(i).isNumber() || !Double.isFinite(n.get(i).asDouble())) throw bad(f + "[" + i + "]", "expected a number");
                 a[i] = n.get(i).asDouble();
             }
             return a;
+        }
+
+        ExtJoints extax(JsonNode n, String f) {
+            return n.has("extax") ? ExtJoints.of(array(n.path("extax"), 6, f + ".extax")) : ExtJoints.NONE;
         }
 
         Vec3 vecMm(JsonNode n, String f) {
@@ -189,22 +385,246 @@ public final class ProgramProject {
             return new Vec3(Units.mmToM(a[0]), Units.mmToM(a[1]), Units.mmToM(a[2]));
         }
 
+        /** A quaternion as written when already unit (to 1e-12), else normalised. */
+        Quaternion quat(JsonNode n, String f) {
+            double[] q = array(n, 4, f);
+            Quaternion r = new Quaternion(q[0], q[1], q[2], q[3]);
+            if (Math.abs(r.norm() - 1) <= 1e-12) return r;
+            Quaternion u = wrap(f, r::normalized);
+            // components near the double range overflow the norm: no usable direction
+            if (!(Math.abs(u.norm() - 1) <= 1e-12)) throw bad(f, "quaternion " + r + " cannot be normalised");
+            return u;
+        }
+
         RapidPose pose(JsonNode n, String f) {
             Vec3 p = vecMm(n.path("pos_mm"), f + ".pos_mm");
-            double[] q = n.has("quat") ? array(n.path("quat"), 4, f + ".quat") : new double[] {1, 0, 0, 0};
-            try {
-                return new RapidPose(p, new Quaternion(q[0], q[1], q[2], q[3]).normalized());
-            } catch (IllegalArgumentException e) {
-                throw bad(f + ".quat", e.getMessage());
-            }
+            return new RapidPose(p, n.has("quat") ? quat(n.path("quat"), f + ".quat") : Quaternion.IDENTITY);
         }
 
         Iterable<Map.Entry<String, JsonNode>> fields(JsonNode root, String k) {
             JsonNode n = root.path(k);
             if (n.isMissingNode()) return List.of();
             if (!n.isObject()) throw bad(k, "expected an object of named entries");
-            Iterator<Map.Entry<String, JsonNode>> it = n.fields();
-            return () -> it;
+            for (Iterator<Map.Entry<String, JsonNode>> it = n.fields(); it.hasNext(); ) {
+                var e = it.next();
+                if (!e.getValue().isObject() && !k.equals("procedures")) throw bad(k + "." + e.getKey(), "expected an object");
+            }
+            return () -> n.fields();
         }
+    }
+
+    // ------------------------------------------------------------------ writing
+
+    /**
+     * Writes {@code module} as a project file to {@code file} atomically (temporary file, then
+     * rename); an existing file is replaced only when {@code overwrite} is true (otherwise
+     * {@link java.nio.file.FileAlreadyExistsException}). {@code robot} (may be null) names the
+     * robot the program is for.
+     *
+     * @throws IllegalArgumentException when the module holds what a project cannot (see {@link #format})
+     */
+    public static void write(RapidModule module, String robot, Path file, boolean overwrite) throws IOException {
+        String text = format(module, robot); // before touching the file: nothing half-written
+        AtomicFiles.writeString(file, text, overwrite);
+    }
+
+    /**
+     * The project file text of {@code module}. Declarations are grouped by kind (tools, wobjs,
+     * speeds, zones, jointtargets, targets, data: num/bool/string), module comment lines come first; a storage or scope
+     * other than the kind's usual one is written out. Targets are written as poses (a taught
+     * target's joint values are not kept by the module). What a project cannot hold (routines
+     * with parameters, syntax-tree items, loaddata and pose data, inline targets, module options) is
+     * refused with an IllegalArgumentException naming the item: export RAPID instead.
+     */
+    public static String format(RapidModule module, String robot) {
+        JsonNodeFactory nf = JsonNodeFactory.instance;
+        ObjectNode root = nf.objectNode();
+        root.put("format", "robopro-program");
+        root.put("version", 1);
+        root.put("module", module.name());
+        if (robot != null) root.put("robot", robot);
+        if (!module.options().isEmpty()) throw cannot(module, "module options " + module.options());
+        ArrayNode comments = nf.arrayNode();
+        Map<String, ObjectNode> groups = new LinkedHashMap<>();
+        for (String g : List.of("tools", "wobjs", "speeds", "zones", "jointtargets", "targets", "data")) groups.put(g, nf.objectNode());
+        ObjectNode procs = nf.objectNode();
+        for (ModuleItem it : module.items()) {
+            if (it instanceof Comment c) {
+                comments.add(c.text());
+            } else if (it instanceof Declaration d) {
+                String group;
+                ObjectNode e = nf.objectNode();
+                Declaration.Storage usual;
+                RapidValue val = d.value();
+                if (val instanceof ToolData t) {
+                    group = "tools";
+                    usual = Declaration.Storage.PERS;
+                    if (!t.robhold()) e.put("robhold", false);
+                    e.set("tframe", pose(t.tframe()));
+                    if (!t.tload().equals(LoadData.LOAD0)) {
+                        ObjectNode l = e.putObject("load");
+                        l.put("mass_kg", t.tload().mass());
+                        l.set("cog_mm", mm(t.tload().cog()));
+                        if (!t.tload().aom().equals(Quaternion.IDENTITY)) l.set("aom", quat(t.tload().aom()));
+                        if (t.tload().ix() != 0 || t.tload().iy() != 0 || t.tload().iz() != 0)
+                            l.set("inertia_kgm2", nf.arrayNode().add(t.tload().ix()).add(t.tload().iy()).add(t.tload().iz()));
+                    }
+                } else if (val instanceof WObjData w) {
+                    group = "wobjs";
+                    usual = Declaration.Storage.PERS;
+                    if (w.robhold()) e.put("robhold", true);
+                    if (!w.ufprog()) e.put("ufprog", false);
+                    if (!w.ufmec().isEmpty()) e.put("ufmec", w.ufmec());
+                    e.set("uframe", pose(w.uframe()));
+                    if (!w.oframe().equals(RapidPose.IDENTITY)) e.set("oframe", pose(w.oframe()));
+                } else if (val instanceof SpeedData sp) {
+                    group = "speeds";
+                    usual = Declaration.Storage.VAR;
+                    number(e, "tcp_mm_s", mmFor(sp.vTcp()));
+                    double ori = degFor(sp.vOri()), leax = mmFor(sp.vLeax()), reax = degFor(sp.vReax());
+                    if (Units.degToRad(500.0) != sp.vOri()) number(e, "ori_deg_s", ori);
+                    if (Units.mmToM(5000.0) != sp.vLeax()) number(e, "leax_mm_s", leax);
+                    if (Units.degToRad(1000.0) != sp.vReax()) number(e, "reax_deg_s", reax);
+                } else if (val instanceof ZoneData z) {
+                    group = "zones";
+                    usual = Declaration.Storage.VAR;
+                    double r = mmFor(z.pzoneTcp());
+                    number(e, "tcp_mm", r);
+                    if (z.finep()) e.put("finep", true);
+                    if (Units.mmToM(1.5 * r) != z.pzoneOri()) number(e, "ori_mm", mmFor(z.pzoneOri()));
+                    if (Units.mmToM(1.5 * r) != z.pzoneEax()) number(e, "eax_mm", mmFor(z.pzoneEax()));
+                    if (Units.degToRad(0.15 * r) != z.zoneOri()) number(e, "ori_deg", degFor(z.zoneOri()));
+                    if (Units.mmToM(1.5 * r) != z.zoneLeax()) number(e, "leax_mm", mmFor(z.zoneLeax()));
+                    if (Units.degToRad(0.15 * r) != z.zoneReax()) number(e, "reax_deg", degFor(z.zoneReax()));
+                } else if (val instanceof JointTarget j) {
+                    group = "jointtargets";
+                    usual = Declaration.Storage.CONST;
+                    ArrayNode a = e.putArray("joints_deg");
+                    for (double q : j.robax()) a.add(plain(degFor(q)));
+                    if (!j.extax().equals(ExtJoints.NONE)) e.set("extax", numbers(j.extax().values()));
+                } else if (val instanceof RobTarget t) {
+                    group = "targets";
+                    usual = Declaration.Storage.CONST;
+                    e.set("pos_mm", mm(t.trans()));
+                    e.set("quat", quat(t.rot()));
+                    ConfData c = t.robconf();
+                    e.set("conf", nf.arrayNode().add(c.cf1()).add(c.cf4()).add(c.cf6()).add(c.cfx()));
+                    if (!t.extax().equals(ExtJoints.NONE)) e.set("extax", numbers(t.extax().values()));
+                } else if (val instanceof RapidValue.Num n) {
+                    group = "data";
+                    usual = Declaration.Storage.CONST;
+                    number(e, "num", n.value());
+                } else if (val instanceof RapidValue.Bool bo) {
+                    group = "data";
+                    usual = Declaration.Storage.CONST;
+                    e.put("bool", bo.value());
+                } else if (val instanceof RapidValue.Str str) {
+                    group = "data";
+                    usual = Declaration.Storage.CONST;
+                    e.put("string", str.value());
+                } else {
+                    throw cannot(module, d.rapidType() + " " + d.name() + " (a project holds tooldata, wobjdata, speeddata, zonedata, jointtarget, robtarget, num, bool, string)");
+                }
+                if (d.storage() != usual) e.put("storage", d.storage().name());
+                if (d.scope() != Declaration.Scope.GLOBAL) e.put("scope", d.scope().name());
+                if (groups.get(group).has(d.name())) throw cannot(module, "two " + group + " named " + d.name());
+                groups.get(group).set(d.name(), e);
+            } else if (it instanceof Procedure p) {
+                if (p.local()) throw cannot(module, "LOCAL PROC " + p.name());
+                ArrayNode body = nf.arrayNode();
+                for (Statement st : p.body()) body.add(statement(module, p, st));
+                procs.set(p.name(), body);
+            } else {
+                throw cannot(module, "a " + it.getClass().getSimpleName() + " (RAPID a project does not model)");
+            }
+        }
+        if (!comments.isEmpty()) root.set("comments", comments);
+        groups.forEach((g, o) -> { if (!o.isEmpty()) root.set(g, o); });
+        if (!procs.isEmpty()) root.set("procedures", procs);
+        try {
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root) + "\n";
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("cannot write JSON", e);
+        }
+    }
+
+    private static ObjectNode statement(RapidModule module, Procedure p, Statement st) {
+        ObjectNode o = JsonNodeFactory.instance.objectNode();
+        if (st instanceof Comment c) {
+            o.put("comment", c.text());
+        } else if (st instanceof ProcCall c) {
+            o.put("call", c.procedure());
+        } else if (st instanceof WaitTime w) {
+            o.put("wait_s", w.seconds());
+        } else if (st instanceof Move m) {
+            o.put("move", m.kind().rapidName());
+            if (m.circPoint().isPresent()) o.put("via", name(module, p, m.circPoint().get()));
+            o.put("to", name(module, p, m.toPoint()));
+            o.put("speed", name(module, p, m.speed()));
+            o.put("zone", name(module, p, m.zone()));
+            o.put("tool", m.tool());
+            m.wobj().ifPresent(w -> o.put("wobj", w));
+            if (m.conc()) o.put("conc", true);
+            if (m.noEOffs()) o.put("noeoffs", true);
+            if (m.v().isPresent()) number(o, "v_mm_s", mmFor(m.v().getAsDouble()));
+            if (m.t().isPresent()) o.put("t_s", m.t().getAsDouble());
+            if (m.z().isPresent()) number(o, "z_mm", mmFor(m.z().getAsDouble()));
+        } else {
+            throw cannot(module, "a " + st.getClass().getSimpleName() + " statement in PROC " + p.name());
+        }
+        return o;
+    }
+
+    private static String name(RapidModule module, Procedure p, Ref<?> r) {
+        if (r instanceof Ref.Named<?> n) return n.name();
+        throw cannot(module, "an inline (\"*\") target in PROC " + p.name() + " (name it first)");
+    }
+
+    private static IllegalArgumentException cannot(RapidModule m, String what) {
+        return new IllegalArgumentException("module " + m.name() + ": " + what + " cannot be written to a project file; export it as RAPID instead");
+    }
+
+    private static ObjectNode pose(RapidPose p) {
+        ObjectNode o = JsonNodeFactory.instance.objectNode();
+        o.set("pos_mm", mm(p.trans()));
+        if (!p.rot().equals(Quaternion.IDENTITY)) o.set("quat", quat(p.rot()));
+        return o;
+    }
+
+    private static ArrayNode mm(Vec3 v) { return numbers(mmFor(v.x()), mmFor(v.y()), mmFor(v.z())); }
+
+    private static ArrayNode quat(Quaternion q) { return numbers(q.q1(), q.q2(), q.q3(), q.q4()); }
+
+    private static ArrayNode numbers(double... v) {
+        ArrayNode a = JsonNodeFactory.instance.arrayNode();
+        for (double d : v) a.add(plain(d));
+        return a;
+    }
+
+    private static void number(ObjectNode o, String k, double v) { o.set(k, plain(v)); }
+
+    /** Integral values as integers (50, not 50.0); others as the shortest decimal of the double. */
+    private static JsonNode plain(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e15 && !(v == 0 && 1 / v < 0)) return JsonNodeFactory.instance.numberNode((long) v);
+        return JsonNodeFactory.instance.numberNode(v);
+    }
+
+    /** The millimetre value that reads back (mm * 1e-3) as exactly {@code m}, when there is one near m * 1e3. */
+    static double mmFor(double m) { return inverse(m, Units.mToMm(m), Units::mmToM); }
+
+    /** The degree value that reads back (Math.toRadians) as exactly {@code rad}, when there is one near. */
+    static double degFor(double rad) { return inverse(rad, Units.radToDeg(rad), Units::degToRad); }
+
+    /** Searches a few ulps around {@code guess} for x with f(x) == target; the guess when none. */
+    private static double inverse(double target, double guess, java.util.function.DoubleUnaryOperator f) {
+        if (f.applyAsDouble(guess) == target) return guess;
+        double up = guess, down = guess;
+        for (int k = 0; k < 8; k++) {
+            up = Math.nextUp(up);
+            down = Math.nextDown(down);
+            if (f.applyAsDouble(up) == target) return up;
+            if (f.applyAsDouble(down) == target) return down;
+        }
+        return guess;
     }
 }

@@ -204,10 +204,15 @@ public final class RapidAst {
 
     public sealed interface Expr permits Num, Str, Bool, Name, Component, Index, FuncCall, Aggregate, Unary, Binary { }
 
-    /** A number literal as written: decimal with optional exponent, or 0x/0b/0o integer. */
+    /**
+     * A number literal as written: decimal with optional exponent, or 0x/0b/0o integer. A
+     * leading '.' gets a 0 in front ({@code .01} is held as {@code 0.01}: same value, and
+     * rapidchecker refuses the bare form).
+     */
     public record Num(String text) implements Expr {
         public Num {
             if (text == null || text.isEmpty()) throw new IllegalArgumentException("empty number");
+            if (text.charAt(0) == '.') text = "0" + text;
         }
 
         public double value() { return numberValue(text); }

@@ -385,10 +385,17 @@ final class RapidAstParser {
         } else {
             name = ident("procedure name");
         }
-        if (peek().is("(") && name != null)
-            throw error(peek(), routine, "'" + name + "(' : a procedure call takes its arguments without parentheses");
-        List<Arg> args = args(";", routine);
-        expect(";");
+        List<Arg> args;
+        Token paren = peek();
+        try {
+            // "WaitUntil (a = b);" is a call whose first argument is in parentheses
+            args = args(";", routine);
+            expect(";");
+        } catch (InputException e) {
+            if (paren.is("(") && name != null)
+                throw error(paren, routine, "'" + name + "(' : a procedure call takes its arguments without parentheses");
+            throw e;
+        }
         return at(new RapidAst.Call(name, late, args), h);
     }
 
@@ -400,7 +407,13 @@ final class RapidAstParser {
             Token s = peek();
             if (s.isWord("IF") || s.isWord("WHILE") || s.isWord("FOR") || s.isWord("TEST") || s.isWord("VAR") || s.isWord("PERS") || s.isWord("CONST"))
                 throw error(s, routine, "expected THEN or a simple statement after the IF condition, found " + s.describe());
-            return at(new RapidAst.CompactIf(c, stmt(routine)), h);
+            Stmt one = stmt(routine);
+            if (!(one instanceof RapidAst.Call || one instanceof RapidAst.Assign || one instanceof RapidAst.Goto
+                    || one instanceof RapidAst.Return || one instanceof RapidAst.Raise || one instanceof RapidAst.Exit
+                    || one instanceof RapidAst.Retry || one instanceof RapidAst.TryNext))
+                throw error(s, routine, "a compact IF takes one simple statement (a call, assignment, GOTO, RETURN, RAISE, EXIT, RETRY or TRYNEXT), found "
+                        + s.describe());
+            return at(new RapidAst.CompactIf(c, one), h);
         }
         Set<String> stop = Set.of("ELSEIF", "ELSE", "ENDIF");
         List<Stmt> then = stmts(routine, stop, false);

@@ -218,18 +218,34 @@ public final class RapidAstWriter {
                 return "NOT " + (levelOf(u.operand()) >= 3 ? expr(u.operand()) : "(" + expr(u.operand()) + ")");
             }
             // A sign applies to the first term of a sum: a product or anything tighter.
+            if (isSign(u.operand())) return u.op() + " " + signedPrimary((Unary) u.operand());
             return u.op() + (levelOf(u.operand()) >= 5 && !(u.operand() instanceof Unary) ? expr(u.operand()) : "(" + expr(u.operand()) + ")");
         }
         Binary b = (Binary) e;
         int p = level(b.op());
         String sep = p == 1 || p == 2 || b.op().equals("DIV") || b.op().equals("MOD") ? " " + b.op() + " " : b.op();
         if (p == 1 || p == 2 || p == 3) sep = " " + b.op() + " ";
-        return operand(b.left(), b, true) + sep + operand(b.right(), b, false);
+        String right = operand(b.right(), b, false);
+        if (!sep.endsWith(" ") && (right.startsWith("-") || right.startsWith("+"))) sep += " "; // "a- -b", never "a--b"
+        return operand(b.left(), b, true) + sep + right;
     }
 
     private static String postfixBase(Expr base) {
         return base instanceof RapidAst.Name || base instanceof RapidAst.Component || base instanceof RapidAst.Index
                 || base instanceof RapidAst.FuncCall ? expr(base) : "(" + expr(base) + ")";
+    }
+
+    private static boolean isSign(Expr e) { return e instanceof Unary u && !u.op().equals("NOT"); }
+
+    /**
+     * A sign read as an operand ("a * -b", "- -b"): it applies to one primary, so the operand
+     * is a primary or in parentheses. Written so rather than "a*(-b)", the text nests no deeper
+     * than the source did (the parser bounds nesting).
+     */
+    private static String signedPrimary(Unary u) {
+        Expr x = u.operand();
+        if (isSign(x)) return u.op() + " " + signedPrimary((Unary) x);
+        return u.op() + (levelOf(x) >= 6 ? expr(x) : "(" + expr(x) + ")");
     }
 
     private static String operand(Expr e, Binary parent, boolean left) {
@@ -238,9 +254,11 @@ public final class RapidAstWriter {
         if (e instanceof Unary u && u.op().equals("NOT")) {
             // NOT starts an OR operand, or follows AND; elsewhere it needs parentheses.
             bare = p == 1 || (p == 2 && !left);
-        } else if (e instanceof Unary) {
+        } else if (e instanceof Unary u) {
             // A sign starts a sum: the left of + -, or any operand of a comparison or logical operator.
             bare = p <= 3 || (p == 4 && left);
+            // Elsewhere, on the right, it is a signed primary: "a - -b", "a * -(b + c)".
+            if (!bare && !left) return signedPrimary(u);
         } else {
             int q = levelOf(e);
             if (p == 3) bare = q > 3; // comparisons do not chain

@@ -19,9 +19,14 @@ public final class RapidNumbers {
     public static String format(double value, int decimals) {
         if (!Double.isFinite(value)) throw new IllegalArgumentException("RAPID has no " + value);
         if (value == ExtJoints.UNUSED) return "9E+09";
+        // Reading converts units (mm -> m) and writing back (m -> mm) moves a value by a few ulps;
+        // the rounding step must stay far above that, or a huge value (1e10 mm) would not write
+        // back to the same text. So at most 14 significant digits (a no-op below 1e8).
+        double a = Math.abs(value);
+        if (a >= 1) decimals = Math.min(decimals, 14 - ((int) Math.floor(Math.log10(a)) + 1));
         BigDecimal bd = new BigDecimal(value).setScale(decimals, RoundingMode.HALF_EVEN).stripTrailingZeros();
         if (bd.signum() == 0) return "0";
-        return bd.toPlainString();
+        return bd.scale() < 0 ? bd.toString() : bd.toPlainString();
     }
 
     /** A plain RAPID num (no unit conversion): the shortest text that parses back to the same double. */

@@ -63,36 +63,68 @@ public final class MotionInterpreter {
     private final List<RapidModule> libraries;
     private final String file;
     private final Map<Statement, SourcePos> positions;
-    private final ParsedAst ast;
+    /** Syntax trees of the module and its parsed libraries (positions for messages). */
+    private final List<ParsedAst> asts;
     private final int maxStatements;
+    /** Where the robot stands when the run starts (CJointT before any move); null: unknown. */
+    private final JointTarget startJoints;
 
     private MotionInterpreter(RapidModule module, List<RapidModule> libraries, String file, Map<Statement, SourcePos> positions,
-                              ParsedAst ast, int maxStatements) {
+                              List<ParsedAst> asts, int maxStatements, JointTarget startJoints) {
         this.module = module;
         this.libraries = List.copyOf(libraries);
         this.file = file;
         this.positions = positions;
-        this.ast = ast;
+        this.asts = List.copyOf(asts);
         this.maxStatements = maxStatements;
+        this.startJoints = startJoints;
     }
 
     /** An interpreter of {@code module}; {@code libraries} provide data declared elsewhere (e.g. tools in user.sys). */
     public static MotionInterpreter of(RapidModule module, RapidModule... libraries) {
-        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), null, MAX_STATEMENTS);
+        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), List.of(), MAX_STATEMENTS, null);
     }
 
     /** An interpreter of a parsed file: errors name the file, line and column. */
     public static MotionInterpreter of(ParsedModule parsed, RapidModule... libraries) {
+        return new MotionInterpreter(parsed.module(), List.of(libraries), parsed.file(), positions(List.of(parsed)),
+                List.of(parsed.ast()), MAX_STATEMENTS, null);
+    }
+
+    /**
+     * An interpreter of a task's parsed modules: {@code main} runs, {@code others} (e.g. system
+     * modules) provide data, records and routines; errors inside any of them name its file,
+     * line and column.
+     */
+    public static MotionInterpreter ofTask(ParsedModule main, List<ParsedModule> others) {
+        List<ParsedModule> all = new ArrayList<>();
+        all.add(main);
+        all.addAll(others);
+        return new MotionInterpreter(main.module(), others.stream().map(ParsedModule::module).toList(), main.file(), positions(all),
+                all.stream().map(ParsedModule::ast).toList(), MAX_STATEMENTS, null);
+    }
+
+    private static Map<Statement, SourcePos> positions(List<ParsedModule> parsed) {
         IdentityHashMap<Statement, SourcePos> pos = new IdentityHashMap<>();
-        for (Procedure p : parsed.module().procedures())
-            for (Statement s : p.body()) parsed.position(s).ifPresent(sp -> pos.put(s, sp));
-        return new MotionInterpreter(parsed.module(), List.of(libraries), parsed.file(), pos, parsed.ast(), MAX_STATEMENTS);
+        for (ParsedModule m : parsed)
+            for (Procedure p : m.module().procedures())
+                for (Statement s : p.body()) m.position(s).ifPresent(sp -> pos.put(s, sp));
+        return pos;
     }
 
     /** The same interpreter with another bound on executed statements. */
     public MotionInterpreter withMaxStatements(int max) {
         if (max < 1) throw new IllegalArgumentException("max statements must be >= 1: " + max);
-        return new MotionInterpreter(module, libraries, file, positions, ast, max);
+        return new MotionInterpreter(module, libraries, file, positions, asts, max, startJoints);
+    }
+
+    /**
+     * The same interpreter with the robot standing at {@code joints} when the run starts, so
+     * {@code CJointT()} before any move returns it (a server reads its start position this way).
+     */
+    public MotionInterpreter withStartJoints(JointTarget joints) {
+        if (joints == null) throw new IllegalArgumentException("start joints must not be null");
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, joints);
     }
 
     /** The steps of running {@code main}. */
@@ -171,6 +203,10 @@ public final class MotionInterpreter {
         int depth;
 
         Run() {
+            if (startJoints != null) {
+                currentJoint = new Typed(startJoints);
+                lastJointTarget = currentJoint;
+            }
             List<RapidModule> all = new ArrayList<>();
             all.add(module);
             all.addAll(libraries);
@@ -516,7 +552,7 @@ public final class MotionInterpreter {
                     out.add(new WaitStep(proc, index, source(at), sec));
                 }
                 case "TPWRITE", "TPERASE", "STOP", "BREAK", "CONFJ", "CONFL", "SINGAREA", "VELSET", "ACCSET", "PATHACCLIM",
-                        "ERRWRITE", "TPSHOW", "STOPMOVE", "STARTMOVE", "WAITROB" -> {
+                        "ERRWRITE", "TPSHOW", "STOPMOVE", "STARTMOVE", "CLEARPATH", "WAITROB" -> {
                     StringBuilder b = new StringBuilder(name);
                     for (RapidAst.Arg a : args)
                         if (a.value() != null) {
@@ -528,6 +564,13 @@ public final class MotionInterpreter {
                             }
                         }
                     log.add(b + " (not simulated, no motion) at " + where(at));
+                }
+                case "WAITUNTIL" -> {
+                    // Nothing else runs in the simulation: a false condition would wait forever.
+                    RapidAst.Expr cond = args.stream().filter(a -> a.kind() == RapidAst.ArgKind.POSITIONAL).map(RapidAst.Arg::value)
+                            .findFirst().orElseThrow(() -> error(at, "WaitUntil needs a condition"));
+                    if (!bool(eval(cond, f), cond)) throw error(at, "not simulated: WaitUntil at " + where(at) + " waits for a condition that is false and nothing in the simulation changes");
+                    log.add(name + " (condition true, not simulated) at " + where(at));
                 }
                 case "EXITCYCLE" -> throw new ExitSignal();
                 case "INCR", "DECR", "ADD", "CLEAR" -> {
@@ -607,9 +650,17 @@ public final class MotionInterpreter {
             String toolName = label(pos.get(b + 3).value());
             ToolData tool = typed(eval(pos.get(b + 3).value(), f), "tooldata", ToolData.class, at, toolName);
             WObjData wobj = wobjV == null ? WObjData.WOBJ0 : typed(wobjV, "wobjdata", WObjData.class, at, wobjName);
-            if (v.isPresent() && !(v.getAsDouble() > 0)) throw error(at, "\\V must be > 0");
-            return step(proc, index, at, kind, label(pos.get(b).value()), to, b == 1 ? Optional.of(label(pos.get(0).value())) : Optional.empty(),
-                    circ, speed, v, t, zone, z, toolName, tool, wobjName, wobj);
+            if (v.isPresent() && !(v.getAsDouble() > 0 && Double.isFinite(v.getAsDouble())))
+                throw error(at, "\\V must be a finite speed > 0, got " + v.getAsDouble());
+            if (z.isPresent() && !(z.getAsDouble() >= 0 && Double.isFinite(z.getAsDouble())))
+                throw error(at, "\\Z must be a finite zone size >= 0, got " + z.getAsDouble());
+            try {
+                return step(proc, index, at, kind, label(pos.get(b).value()), to, b == 1 ? Optional.of(label(pos.get(0).value())) : Optional.empty(),
+                        circ, speed, v, t, zone, z, toolName, tool, wobjName, wobj);
+            } catch (IllegalArgumentException e) {
+                // A program value the data types reject (e.g. a non-finite pose): the user's input, located.
+                throw error(at, kind.rapidName() + ": " + e.getMessage());
+            }
         }
 
         String label(RapidAst.Expr e) {
@@ -1072,7 +1123,11 @@ public final class MotionInterpreter {
 
     private SourcePos pos(Object at) {
         if (at instanceof Statement s && positions.get(s) != null) return positions.get(s);
-        if (ast != null && at != null) return ast.position(at).orElse(null);
+        if (at == null) return null;
+        for (ParsedAst a : asts) {
+            SourcePos p = a.position(at).orElse(null);
+            if (p != null) return p;
+        }
         return null;
     }
 

@@ -8,8 +8,8 @@ import org.robopro.programs.sim.MotionInterpreter;
 
 /**
  * Fuzzes the RAPID parser: whatever the text, it either returns a module or throws an
- * {@link InputException}; any other exception fails. A module that was read must export, read
- * back to the same text, and run in the interpreter (again only InputException allowed).
+ * {@link InputException}; any other exception fails. A module that was read must write its
+ * syntax tree back to text that reads as the same tree, export, read back to the same text, and run in the interpreter (again only InputException allowed).
  * With JAZZER_FUZZ=1 (the "fuzz" surefire execution) this fuzzes for a short bounded time; in
  * a plain test run it replays the seeds in RapidParserFuzzTestInputs/.
  */
@@ -23,6 +23,11 @@ class RapidParserFuzzTest {
         } catch (InputException expected) {
             return;
         }
+        // The syntax tree written back reads as the same tree.
+        RapidAst.Module tree = RapidParser.parseAst(text, "fuzz.mod").module();
+        String written = RapidAstWriter.write(tree);
+        RapidAst.Module again = RapidParser.parseAst(written, "written.mod").module();
+        if (!tree.equals(again)) throw new AssertionError("tree round trip changed:\n" + written);
         String once = RapidWriter.export(m).text();
         String twice = RapidWriter.export(RapidParser.parse(once, "again.mod")).text();
         if (!once.equals(twice)) throw new AssertionError("export is not stable:\n" + once + "\n---\n" + twice);

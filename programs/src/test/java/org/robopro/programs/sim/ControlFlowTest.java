@@ -41,6 +41,33 @@ class ControlFlowTest {
     }
 
     @Test
+    void simulate_cellServer_stopsAtSocketCreateWithPosition() {
+        String text;
+        try (java.io.InputStream in = ControlFlowTest.class.getResourceAsStream("/org/robopro/programs/rapid/CellServer.mod")) {
+            text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException(e);
+        }
+        MotionInterpreter it = MotionInterpreter.of(RapidParser.parseDetailed(text, "CellServer.mod"));
+        // without a start position, CJointT() before any move is unknown
+        InputException noStart = assertThrows(InputException.class, () -> it.simulate("main"));
+        assertTrue(noStart.getMessage().contains("CJointT"), noStart.getMessage());
+        InputException e = assertThrows(InputException.class,
+                () -> it.withStartJoints(org.robopro.programs.JointTarget.of(0, 0, 0, 0, 0, 0)).simulate("main"));
+        assertEquals(34, e.line());
+        assertTrue(e.getMessage().contains("not simulated: SocketCreate at 34:5"), e.getMessage());
+    }
+
+    @Test
+    void simulate_waitUntilFalse_stopsInsteadOfWaitingForever() {
+        String text = "MODULE M\n  VAR bool ready;\n  PROC main()\n    WaitUntil ready;\n  ENDPROC\nENDMODULE\n";
+        InputException e = assertThrows(InputException.class, () -> sim(text, 100));
+        assertTrue(e.getMessage().contains("not simulated: WaitUntil at 4:5"), e.getMessage());
+        Simulation ok = sim(text.replace("VAR bool ready;", "VAR bool ready := TRUE;"), 100);
+        assertTrue(ok.log().get(0).startsWith("WaitUntil"), ok.log().toString());
+    }
+
+    @Test
     void simulate_whileTrue_stopsWithLoopPosition() {
         String text = "MODULE M\n  PROC main()\n    WHILE TRUE DO\n      WaitTime 1;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n";
         InputException e = assertThrows(InputException.class, () -> sim(text, 1000));
