@@ -26,7 +26,8 @@ public final class RapidNumbers {
         if (a >= 1) decimals = Math.min(decimals, 14 - ((int) Math.floor(Math.log10(a)) + 1));
         BigDecimal bd = new BigDecimal(value).setScale(decimals, RoundingMode.HALF_EVEN).stripTrailingZeros();
         if (bd.signum() == 0) return "0";
-        return bd.scale() < 0 ? bd.toString() : bd.toPlainString();
+        // stripTrailingZeros makes 110 "1.1E+2": plain digits below 1e15, the exponent form only for huge values.
+        return bd.scale() < 0 && a >= 1e15 ? bd.toString() : bd.toPlainString();
     }
 
     /** A plain RAPID num (no unit conversion): the shortest text that parses back to the same double. */
