@@ -138,8 +138,8 @@ public final class CalibrationReport {
             ol.add(e);
         }
         s.put("outliers", ol);
-        if (r.instrumentTbase() != null) s.put("instrument_T_base", pose(r.instrumentTbase()));
-        s.put("flange_T_tool", pose(r.flangeTtool()));
+        if (r.instrumentTbase() != null) s.put("instrument_T_base", poseJson(r.instrumentTbase()));
+        s.put("flange_T_tool", poseJson(r.flangeTtool()));
         Map<String, Object> solver = new LinkedHashMap<>();
         solver.put("method", "Levenberg-Marquardt (robopro, scaled normal equations)");
         solver.put("nominal_fit", lm(r.nominalFit()));
@@ -159,7 +159,8 @@ public final class CalibrationReport {
         return m;
     }
 
-    static Map<String, Object> pose(Pose p) {
+    /** A pose as the JSON files write it (mm, unit quaternion w x y z): summary.json and truth.json share it. */
+    public static Map<String, Object> poseJson(Pose p) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("x_mm", Units.mToMm(p.x()));
         m.put("y_mm", Units.mToMm(p.y()));

@@ -13,6 +13,7 @@ import org.robopro.calibration.JointEffect;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.ModelParameter;
 import org.robopro.kinematics.Pose;
@@ -147,9 +148,9 @@ public final class CampaignSimulator {
         root.put("sigma_rot_deg", Units.radToDeg(c.truth().sigmaRotRad()));
         root.put("nominal_flange_rms_mm", Units.mToMm(c.nominalErrorRmsM()));
         root.put("frame", c.measurements().frame());
-        root.put("instrument_T_base", poseJson(c.truth().instrumentTbase()));
+        root.put("instrument_T_base", CalibrationReport.poseJson(c.truth().instrumentTbase()));
         root.put("target_in_flange_mm", vecMm(c.truth().flangeTtool().position()));
-        root.put("flange_T_tool", poseJson(c.truth().flangeTtool()));
+        root.put("flange_T_tool", CalibrationReport.poseJson(c.truth().flangeTtool()));
         List<Map<String, Object>> params = new ArrayList<>();
         double[] nom = c.nominal().parameterValues(), tru = c.truth().model().parameterValues();
         List<ModelParameter> ps = c.nominal().parameters();
@@ -181,19 +182,6 @@ public final class CampaignSimulator {
     /** Writes {@link #truthJson(Campaign, List)}. */
     public static void writeTruth(Campaign c, List<? extends Map<String, ?>> effectEntries, Path file, boolean overwrite) throws IOException {
         AtomicFiles.writeString(file, truthJson(c, effectEntries) + "\n", overwrite);
-    }
-
-    static Map<String, Object> poseJson(Pose p) {
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("x_mm", Units.mToMm(p.x()));
-        m.put("y_mm", Units.mToMm(p.y()));
-        m.put("z_mm", Units.mToMm(p.z()));
-        double[] q = p.quaternion();
-        m.put("qw", q[0]);
-        m.put("qx", q[1]);
-        m.put("qy", q[2]);
-        m.put("qz", q[3]);
-        return m;
     }
 
     static List<Double> vecMm(Vec3 v) {
