@@ -79,11 +79,19 @@ public final class PathChecker implements AutoCloseable {
             Map<String, TargetStatus> st = Map.copyOf(model.statuses(run));
             Result r = new Result(id, run, st, targets, program);
             checks.incrementAndGet();
+            // Listeners first, then publish: a caller of awaitCurrent (a screenshot, a test) must
+            // find the result already handed to the scene and the UI, not on its way there.
+            for (Consumer<Result> l : listeners) {
+                try {
+                    l.accept(r);
+                } catch (RuntimeException e) {
+                    LOG.log(Level.WARNING, "path check listener failed", e);
+                }
+            }
             synchronized (this) {
                 latest = r;
                 notifyAll();
             }
-            for (Consumer<Result> l : listeners) l.accept(r);
         } catch (RuntimeException e) {
             // A failing check must not stop later ones; the next edit tries again.
             LOG.log(Level.WARNING, "path check failed", e);
@@ -92,8 +100,8 @@ public final class PathChecker implements AutoCloseable {
     }
 
     /**
-     * Waits until a check has finished that started after the last request (for tests and
-     * screenshots); returns it, or null on timeout.
+     * Waits until a check has finished, and been delivered to every listener, that started after
+     * the last request (for tests and screenshots); returns it, or null on timeout.
      */
     public Result awaitCurrent(long timeoutMs) throws InterruptedException {
         long end = System.currentTimeMillis() + timeoutMs;
