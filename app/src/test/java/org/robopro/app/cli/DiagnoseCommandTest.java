@@ -5,8 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -23,19 +21,13 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
-import picocli.CommandLine;
 
 /** robopro diagnose end to end: simulated backlash on joint 2, files written, effect named, compensate uses the extended model. */
 class DiagnoseCommandTest {
     @TempDir Path dir;
-    private final StringWriter out = new StringWriter(), err = new StringWriter();
+    private final CliHarness cli = new CliHarness();
 
-    private int run(String... args) {
-        CommandLine cl = RoboproCommand.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        return cl.execute(args);
-    }
+    private int run(String... args) { return cli.run(args); }
 
     @Test
     void diagnose_simulatedBacklashJoint2_writesReportJsonAndExtendedModel() throws Exception {
@@ -58,8 +50,8 @@ class DiagnoseCommandTest {
         MeasurementWriter.write(c.validation(), types, val, false);
         Path outDir = System.getenv("ROBOPRO_KEEP_REPORT") != null ? Path.of(System.getenv("ROBOPRO_KEEP_REPORT")) : dir.resolve("out");
         assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--validate", val.toString(),
-                "--out", outDir.toString(), "--force"), err.toString());
-        assertTrue(out.toString().contains("found backlash j2"), out.toString());
+                "--out", outDir.toString(), "--force"), cli.err());
+        assertTrue(cli.out().contains("found backlash j2"), cli.out());
         JsonNode j = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json")));
         for (String f : new String[] {"geometric", "effects", "final", "outliers", "not_identifiable"}) assertTrue(j.has(f), f);
         assertEquals(1, j.get("effects").size());
@@ -77,7 +69,7 @@ class DiagnoseCommandTest {
         Path targets = dir.resolve("targets.csv");
         Files.writeString(targets, "# frame: base\nid,x,y,z\n1,1200,100,900\n2,1100,-300,1200\n");
         assertEquals(0, run("compensate", "--nominal", "irb2000", "--calibrated", outDir.resolve("extended.robot.json").toString(),
-                "--targets", targets.toString(), "--out", dir.resolve("comp.csv").toString()), err.toString());
+                "--targets", targets.toString(), "--out", dir.resolve("comp.csv").toString()), cli.err());
     }
 
     @Test

@@ -2,8 +2,6 @@ package org.robopro.app.cli;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -11,19 +9,14 @@ import picocli.CommandLine;
 
 /** The root command's help and the shared option mixins. */
 class RoboproCommandTest {
-    private final StringWriter out = new StringWriter(), err = new StringWriter();
+    private final CliHarness cli = new CliHarness();
 
-    private int run(String... args) {
-        CommandLine cl = RoboproCommand.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        return cl.execute(args);
-    }
+    private int run(String... args) { return cli.run(args); }
 
     @Test
     void help_root_commandsListedInTheOrderAUserMeetsThem() {
         assertEquals(0, run("--help"));
-        String text = out.toString();
+        String text = cli.out();
         List<String> expected = List.of("workbench", "demo", "model", "fk", "ik", "simulate", "calibrate", "diagnose", "compensate",
                 "program", "link", "controller-sim", "diagnose-benchmark", "help");
         List<String> listed = new ArrayList<>();
@@ -38,7 +31,7 @@ class RoboproCommandTest {
     @Test
     void help_ik_poseLabelPrintedOnceInUsageAndList() {
         assertEquals(0, run("ik", "--help"));
-        String text = out.toString();
+        String text = cli.out();
         assertEquals(2, text.split("X Y Z QW QX QY QZ", -1).length - 1, "once in the usage line, once in the list:\n" + text);
         assertFalse(text.contains("QZ X"), text);
     }
@@ -59,6 +52,6 @@ class RoboproCommandTest {
     @Test
     void calibrate_missingRobot_exitCode2NamingTheOption() {
         assertEquals(2, run("calibrate", "--measurements", "m.csv", "--out", "x"));
-        assertTrue(err.toString().contains("--robot"), err.toString());
+        assertTrue(cli.err().contains("--robot"), cli.err());
     }
 }

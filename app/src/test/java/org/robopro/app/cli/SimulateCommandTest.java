@@ -6,8 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -16,25 +14,19 @@ import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
-import picocli.CommandLine;
 
 /** robopro simulate --effect: condition columns, truth with the injected values, and diagnose finds the effect (issue 4). */
 class SimulateCommandTest {
     @TempDir Path dir;
-    private final StringWriter out = new StringWriter(), err = new StringWriter();
+    private final CliHarness cli = new CliHarness();
 
-    private int run(String... args) {
-        CommandLine cl = RoboproCommand.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        return cl.execute(args);
-    }
+    private int run(String... args) { return cli.run(args); }
 
     @Test
     void simulateWithGearPeriodicJoint1_thenDiagnose_namesGearPeriodicOnJoint1() throws Exception {
         Path sim = dir.resolve("sim"), diag = dir.resolve("diag");
         assertEquals(0, run("simulate", "--robot", "irb2000", "--effect", "gear-periodic:1", "--validate-poses", "100",
-                "--seed", "3", "--out", sim.toString()), err.toString());
+                "--seed", "3", "--out", sim.toString()), cli.err());
         RobotDescription irb = RobotLibrary.shipped("irb2000");
         MeasurementSet m = MeasurementReader.read(sim.resolve("measurements.csv"), irb);
         assertTrue(m.hasDirections() && m.hasTime() && m.hasTemperature(), "condition columns written");
@@ -48,7 +40,7 @@ class SimulateCommandTest {
         assertEquals("gear-periodic", RobotLibrary.read(sim.resolve("true.robot.json")).effects().get(0).effect());
 
         assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
-                "--validate", sim.resolve("validate.csv").toString(), "--out", diag.toString()), err.toString());
+                "--validate", sim.resolve("validate.csv").toString(), "--out", diag.toString()), cli.err());
         JsonNode d = new ObjectMapper().readTree(diag.resolve("diagnosis.json").toFile());
         assertEquals(1, d.get("effects").size(), d.get("effects").toString());
         assertEquals("gear-periodic", d.get("effects").get(0).get("effect").asText());
@@ -61,7 +53,7 @@ class SimulateCommandTest {
     void simulate_givenValuesAndCoupling_truthRecordsThem() throws Exception {
         Path sim = dir.resolve("sim");
         assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "30", "--effect", "backlash:3=0.04", "--effect",
-                "joint-coupling:3<-2=5e-4", "--effect", "joint-compliance:2", "--out", sim.toString()), err.toString());
+                "joint-coupling:3<-2=5e-4", "--effect", "joint-compliance:2", "--out", sim.toString()), cli.err());
         JsonNode effects = new ObjectMapper().readTree(sim.resolve("truth.json").toFile()).get("effects");
         assertEquals(3, effects.size());
         assertEquals(Math.toRadians(0.04), effects.get(0).get("parameters_si").get("b").asDouble(), 1e-15);
@@ -71,14 +63,14 @@ class SimulateCommandTest {
         assertTrue(stiffness >= 0.5e6 && stiffness <= 2e6, "drawn stiffness " + stiffness);
         assertTrue(MeasurementReader.read(sim.resolve("measurements.csv"), RobotLibrary.shipped("irb2000")).hasPayload(),
                 "compliance: payload column");
-        assertTrue(out.toString().contains("effect joint-coupling:3<-2=5.0E-4"), out.toString());
+        assertTrue(cli.out().contains("effect joint-coupling:3<-2=5.0E-4"), cli.out());
     }
 
     @Test
     void simulate_unknownEffect_exitsWithMessageAndWritesNothing() {
         Path sim = dir.resolve("sim");
         assertEquals(2, run("simulate", "--robot", "irb2000", "--effect", "backlish:2", "--out", sim.toString()));
-        assertTrue(err.toString().contains("backlish"), err.toString());
+        assertTrue(cli.err().contains("backlish"), cli.err());
         assertFalse(Files.exists(sim.resolve("measurements.csv")));
     }
 }

@@ -13,9 +13,8 @@ import java.util.Set;
 import java.util.TreeSet;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.robopro.app.cli.RoboproCommand;
+import org.robopro.app.cli.CliHarness;
 import org.robopro.comms.sim.ControllerSim;
-import picocli.CommandLine;
 
 /** The whole demo loop with a small campaign: the numbers, the files, and the controller process ended. */
 class DemoTest {
@@ -24,12 +23,9 @@ class DemoTest {
     private record Outcome(int code, String out, String err) { }
 
     private static Outcome run(String... args) {
-        StringWriter out = new StringWriter(), err = new StringWriter();
-        CommandLine cl = RoboproCommand.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        int code = cl.execute(args);
-        return new Outcome(code, out.toString(), err.toString());
+        CliHarness cli = new CliHarness();
+        int code = cli.run(args);
+        return new Outcome(code, cli.out(), cli.err());
     }
 
     private static List<ProcessHandle> demoControllers() {
