@@ -135,7 +135,7 @@ public final class PathChecker {
                         "start, circle point " + m.circName().orElse("?") + " and end do not define a circle (coincident or collinear)"));
                 return new Outcome(null, 0, 1);
             }
-            length = circle.radius * circle.angle;
+            length = circle.length();
         } else {
             length = tcpStart.distanceTo(tcpEnd);
         }
@@ -251,8 +251,11 @@ public final class PathChecker {
         return String.format(Locale.ROOT, "(%.1f, %.1f, %.1f)", p.x() * 1e3, p.y() * 1e3, p.z() * 1e3);
     }
 
-    /** A circular arc from a through b to c. */
-    static final class Circle {
+    /**
+     * The circular arc of a MoveC, from a through b to c: the one place robopro computes it (path
+     * checks here, the workbench's sampling and drawing).
+     */
+    public static final class Circle {
         final Vec3 center, u, n;
         final double radius, angle;
 
@@ -261,7 +264,7 @@ public final class PathChecker {
         }
 
         /** The circle through three points, or null when they are (nearly) collinear or coincident. */
-        static Circle through(Vec3 a, Vec3 b, Vec3 c) {
+        public static Circle through(Vec3 a, Vec3 b, Vec3 c) {
             Vec3 ac = a.minus(c), bc = b.minus(c);
             Vec3 cr = ac.cross(bc);
             double cr2 = cr.dot(cr);
@@ -276,6 +279,15 @@ public final class PathChecker {
             return new Circle(center, u, n, u.norm(), ang);
         }
 
-        Vec3 at(double s) { return center.plus(Pose.rotAxis(n, angle * s).rotate(u)); }
+        /** The point at fraction {@code s} (0 = a, 1 = c) of the arc. */
+        public Vec3 at(double s) { return center.plus(Pose.rotAxis(n, angle * s).rotate(u)); }
+
+        public Vec3 center() { return center; }
+
+        /** Radius, m. */
+        public double radius() { return radius; }
+
+        /** Arc length from a to c, m. */
+        public double length() { return radius * angle; }
     }
 }

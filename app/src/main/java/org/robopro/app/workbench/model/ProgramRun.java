@@ -193,9 +193,10 @@ public final class ProgramRun {
     private static List<double[]> cartesian(RobotKinematics k, double[] q, double[] qEnd, MoveStep mv, Pose flangeTtcp) {
         Pose a = k.flange(q).times(flangeTtcp);
         Pose b = mv.baseTtcp().orElseThrow();
-        Vec3[] circle = mv.kind() == Move.Kind.MOVE_C ? circle(a.position(), mv.baseTtcpCirc().orElseThrow().position(), b.position()) : null;
+        PathChecker.Circle circle = mv.kind() == Move.Kind.MOVE_C
+                ? PathChecker.Circle.through(a.position(), mv.baseTtcpCirc().orElseThrow().position(), b.position()) : null;
         if (mv.kind() == Move.Kind.MOVE_C && circle == null) return null;
-        double length = circle != null ? circle[3].x() * circle[3].y() : a.distanceTo(b);
+        double length = circle != null ? circle.length() : a.distanceTo(b);
         Vec3 w = a.inverse().times(b).rotationVector();
         int n = Math.max(2, (int) Math.ceil(Math.max(length / 0.01, w.norm() / Math.toRadians(3))));
         List<double[]> seg = new ArrayList<>();
@@ -203,7 +204,7 @@ public final class ProgramRun {
         Pose toolInv = flangeTtcp.inverse();
         for (int i = 1; i <= n; i++) {
             double s = (double) i / n;
-            Vec3 p = circle != null ? Pose.rotAxis(circle[2], circle[3].y() * s).rotate(circle[1]).plus(circle[0])
+            Vec3 p = circle != null ? circle.at(s)
                     : a.position().plus(b.position().minus(a.position()).times(s));
             Pose ori = w.norm() > 1e-12 ? a.times(Pose.rotAxis(w, w.norm() * s)) : a;
             Pose tcp = Pose.of(ori.rotationRowMajor(), p.x(), p.y(), p.z());
@@ -214,22 +215,6 @@ public final class ProgramRun {
         }
         seg.set(seg.size() - 1, qEnd.clone());
         return seg;
-    }
-
-    /** {centre, start - centre, unit normal, (radius, angle, 0)} of the arc a -> b -> c, or null when degenerate. */
-    static Vec3[] circle(Vec3 a, Vec3 b, Vec3 c) {
-        Vec3 ac = a.minus(c), bc = b.minus(c);
-        Vec3 cr = ac.cross(bc);
-        double cr2 = cr.dot(cr);
-        double scale = Math.max(ac.norm(), bc.norm());
-        if (!(scale > 1e-9) || Math.sqrt(cr2) < 1e-6 * scale * scale) return null;
-        // Circumcentre of a triangle from its edge vectors (standard vector formula).
-        Vec3 centre = c.plus(bc.times(ac.dot(ac)).minus(ac.times(bc.dot(bc))).cross(cr).times(1 / (2 * cr2)));
-        Vec3 n = b.minus(a).cross(c.minus(b)).normalized();
-        Vec3 u = a.minus(centre), v = c.minus(centre);
-        double ang = Math.atan2(u.cross(v).dot(n), u.dot(v));
-        if (ang <= 0) ang += 2 * Math.PI;
-        return new Vec3[] {centre, u, n, new Vec3(u.norm(), ang, 0)};
     }
 
     /** Messages for a log: one line per problem, by instruction and target. */

@@ -56,10 +56,10 @@ class ProgramRunTest {
         Vec3 a = m.target("p10").orElseThrow().worldTtcp().position();
         Vec3 v = m.target("p15").orElseThrow().worldTtcp().position();
         Vec3 c = m.target("p20").orElseThrow().worldTtcp().position();
-        Vec3[] circle = ProgramRun.circle(a, v, c);
-        for (Vec3 p : new Vec3[] {a, v, c}) assertEquals(circle[3].x(), p.minus(circle[0]).norm(), 1e-9);
+        org.robopro.programs.check.PathChecker.Circle circle = org.robopro.programs.check.PathChecker.Circle.through(a, v, c);
+        for (Vec3 p : new Vec3[] {a, v, c}) assertEquals(circle.radius(), p.minus(circle.center()).norm(), 1e-9);
         for (int i = 0; i < run.sampleCount(); i++)
-            assertEquals(circle[3].x(), run.tcp(i).minus(circle[0]).norm(), 1e-6, "sample " + i + " is off the circle");
+            assertEquals(circle.radius(), run.tcp(i).minus(circle.center()).norm(), 1e-6, "sample " + i + " is off the circle");
     }
 
     @Test
