@@ -32,7 +32,7 @@ public final class CellFile {
     }
 
     public static CellDescription read(Path file) {
-        return parse(file.toString(), RobotFile.readText(file));
+        return parse(file.toString(), TextFiles.readUtf8(file));
     }
 
     public static CellDescription parse(String fileName, String text) {

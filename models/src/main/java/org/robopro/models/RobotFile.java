@@ -1,11 +1,6 @@
 package org.robopro.models;
 
 import java.io.IOException;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -40,7 +35,7 @@ public final class RobotFile {
 
     /** Reads a robot file from disk. */
     public static RobotDescription read(Path file) {
-        return parse(file.toString(), readText(file));
+        return parse(file.toString(), TextFiles.readUtf8(file));
     }
 
     /** Parses robot-file text; {@code fileName} names it in errors. */
@@ -253,20 +248,6 @@ public final class RobotFile {
         return new EffectDescription(name, joints, params);
     }
 
-    /** Reads a UTF-8 text file, refusing malformed UTF-8; any failure is an InputException. */
-    static String readText(Path file) {
-        try {
-            byte[] bytes = Files.readAllBytes(file);
-            return StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(java.nio.ByteBuffer.wrap(bytes)).toString();
-        } catch (NoSuchFileException e) {
-            throw new InputException(file.toString(), 0, 0, null, "no such file");
-        } catch (CharacterCodingException e) {
-            throw new InputException(file.toString(), 0, 0, null, "not UTF-8 text");
-        } catch (IOException e) {
-            throw new InputException(file.toString(), 0, 0, null, "cannot read: " + e, e);
-        }
-    }
 
     // ------------------------------------------------------------------ writing
 

@@ -1,9 +1,9 @@
 package org.robopro.app.cli;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.TextFiles;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.rapid.ParsedModule;
@@ -30,7 +30,7 @@ public final class ProgramCheckCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        ParsedModule pm = RapidParser.parseDetailed(Files.readString(file), file.toString());
+        ParsedModule pm = RapidParser.parseDetailed(TextFiles.readUtf8(file), file.toString());
         KinematicModel model = robot.model();
         CheckReport r = new PathChecker(model).check(MotionInterpreter.of(pm).run(proc));
         spec.commandLine().getOut().print(r.format());

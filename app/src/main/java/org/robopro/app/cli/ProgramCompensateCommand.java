@@ -1,6 +1,5 @@
 package org.robopro.app.cli;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.robopro.calibration.PoseConditions;
@@ -10,6 +9,7 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotLibrary;
+import org.robopro.models.TextFiles;
 import org.robopro.programs.ProgramCompensation;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.rapid.RapidParser;
@@ -46,7 +46,7 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        RapidModule m = RapidParser.parse(Files.readString(file), file.toString());
+        RapidModule m = RapidParser.parse(TextFiles.readUtf8(file), file.toString());
         KinematicModel nominal = robot.model();
         RobotDescription realDesc = RobotLibrary.load(calibrated);
         KinematicModel real = KinematicModel.build(realDesc);

@@ -33,6 +33,7 @@ import org.robopro.app.workbench.scene.WorkbenchApp;
 import org.robopro.app.workbench.ui.WorkbenchFrame;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.AtomicFiles;
+import org.robopro.models.TextFiles;
 import org.robopro.models.Vec3;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.rapid.ParsedModule;
@@ -276,7 +277,7 @@ public final class Workbench {
      * line and column, and the open program is left as it was.
      */
     public ProgramModule.Imported importRapid(Path file) throws IOException {
-        String text = Files.readString(file);
+        String text = TextFiles.readUtf8(file);
         ParsedModule parsed = RapidParser.parseDetailed(text, file.toString());
         ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
         model.replaceProgram(imp);

@@ -1,7 +1,6 @@
 package org.robopro.calibration.compensation;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -13,6 +12,7 @@ import java.util.regex.Pattern;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.InputException;
+import org.robopro.models.TextFiles;
 
 /**
  * Targets for compensation (docs/calibration.md): CSV, mm, one target per line as
@@ -35,7 +35,7 @@ public final class TargetsFile {
     private TargetsFile() { }
 
     public static Targets read(Path file, Pose defaultOrientation) throws IOException {
-        return parse(file.toString(), Files.readString(file), defaultOrientation);
+        return parse(file.toString(), TextFiles.readUtf8(file), defaultOrientation);
     }
 
     /** Parses targets; positions without orientation get {@code defaultOrientation}'s rotation. */

@@ -1,10 +1,6 @@
 package org.robopro.calibration.measurement;
 
 import java.io.IOException;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -20,6 +16,7 @@ import org.robopro.kinematics.Units;
 import org.robopro.models.InputException;
 import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
+import org.robopro.models.TextFiles;
 import org.robopro.models.Vec3;
 
 /**
@@ -46,16 +43,7 @@ public final class MeasurementReader {
 
     /** Reads a file; {@code jointTypes} null means "any joint count, all revolute". */
     public static MeasurementSet read(Path file, List<JointType> jointTypes) throws IOException {
-        byte[] bytes = Files.readAllBytes(file);
-        String text;
-        try {
-            text = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT)
-                    .decode(java.nio.ByteBuffer.wrap(bytes)).toString();
-        } catch (CharacterCodingException e) {
-            throw new InputException(file.toString(), 0, 0, null, "not UTF-8 text", e);
-        }
-        return parse(file.toString(), text, jointTypes);
+        return parse(file.toString(), TextFiles.readUtf8(file), jointTypes);
     }
 
     /**

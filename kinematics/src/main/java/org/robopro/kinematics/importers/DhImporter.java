@@ -1,9 +1,5 @@
 package org.robopro.kinematics.importers;
 
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -20,7 +16,7 @@ import org.robopro.models.InputException;
 import org.robopro.models.JointDescription;
 import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
-import org.robopro.models.Vec3;
+import org.robopro.models.TextFiles;
 
 /**
  * Imports a Denavit-Hartenberg table (standard or modified/Craig) from robopro's DH text format
@@ -52,14 +48,7 @@ public final class DhImporter {
     private DhImporter() { }
 
     public static RobotDescription read(Path file, Convention convention) {
-        String text;
-        try {
-            text = Files.readString(file, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new InputException(file.toString(), 0, 0, null, "no such file");
-        } catch (IOException e) {
-            throw new InputException(file.toString(), 0, 0, null, "cannot read: " + e, e);
-        }
+        String text = TextFiles.readUtf8(file);
         String base = file.getFileName() == null ? "robot" : file.getFileName().toString();
         return parse(file.toString(), text, convention, base.replaceFirst("\\..*$", ""));
     }

@@ -2,9 +2,6 @@ package org.robopro.kinematics.importers;
 
 import java.io.IOException;
 import java.io.StringReader;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -24,6 +21,7 @@ import org.robopro.models.InputException;
 import org.robopro.models.JointDescription;
 import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
+import org.robopro.models.TextFiles;
 import org.robopro.models.Vec3;
 import org.xml.sax.Attributes;
 import org.xml.sax.InputSource;
@@ -51,14 +49,7 @@ public final class UrdfImporter {
     private UrdfImporter() { }
 
     public static RobotDescription read(Path file) {
-        String text;
-        try {
-            text = Files.readString(file, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new InputException(file.toString(), 0, 0, null, "no such file");
-        } catch (IOException e) {
-            throw new InputException(file.toString(), 0, 0, null, "cannot read: " + e, e);
-        }
+        String text = TextFiles.readUtf8(file);
         return parse(file.toString(), text);
     }
 

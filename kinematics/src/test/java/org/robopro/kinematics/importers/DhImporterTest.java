@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import org.robopro.kinematics.importers.DhImporter.Convention;
 import org.robopro.models.InputException;
 import org.robopro.models.JointDescription;
@@ -16,6 +18,7 @@ import org.robopro.models.RobotFile;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class DhImporterTest {
     static String resource(String name) throws IOException {
@@ -145,5 +148,16 @@ class DhImporterTest {
     void parse_nanOrHugeNumber_refused() {
         assertEquals("d", bad(HEAD + "j1, NaN, 0, 90, -10, 10\n", Convention.STANDARD).field());
         assertEquals("d", bad(HEAD + "j1, 1e999, 0, 90, -10, 10\n", Convention.STANDARD).field());
+    }
+
+    @Test
+    void read_missingOrNonUtf8File_inputExceptionNamingTheFile(@TempDir Path dir) throws Exception {
+        Path missing = dir.resolve("none.dh");
+        InputException e = assertThrows(InputException.class,
+                () -> DhImporter.read(missing, Convention.STANDARD));
+        assertEquals(missing.toString(), e.file());
+        Path latin1 = Files.write(dir.resolve("bad.urdf"), new byte[] {'<', (byte) 0xE9, '>'});
+        e = assertThrows(InputException.class, () -> UrdfImporter.read(latin1));
+        assertTrue(e.problem().contains("not UTF-8"), e.getMessage());
     }
 }
