@@ -3,6 +3,7 @@ package org.robopro.calibration.identification;
 import java.util.List;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
 
 /**
  * What a calibration produced. SI units inside; the report writers convert.
@@ -46,10 +47,11 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
     /**
      * Errors at one pose: position error norms (m) with the nominal model (after fitting only
      * the instrument and tool) and with the calibrated model; rotation errors (rad, NaN for
-     * position-only); whether the pose is an outlier.
+     * position-only); whether the pose is an outlier; the calibrated model's position error as a
+     * vector, measured minus predicted, in the measurement frame (m).
      */
     public record PoseError(String poseId, double nominalM, double calibratedM, double nominalRotRad,
-                            double calibratedRotRad, boolean outlier) { }
+                            double calibratedRotRad, boolean outlier, Vec3 calibratedErrorM) { }
 
     /** RMS of position errors over non-outlier poses, m. */
     public static double rms(List<PoseError> es, boolean calibratedModel) {

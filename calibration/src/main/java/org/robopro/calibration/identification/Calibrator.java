@@ -351,7 +351,7 @@ public final class Calibrator {
                 rcRot = Math.sqrt(sq(rc[b + 3]) + sq(rc[b + 4]) + sq(rc[b + 5]));
             }
             String id = set.rows().get(i).poseId();
-            out.add(new CalibrationResult.PoseError(id, en, ec, rnRot, rcRot, outliers.contains(id)));
+            out.add(new CalibrationResult.PoseError(id, en, ec, rnRot, rcRot, outliers.contains(id), new Vec3(-rc[b], -rc[b + 1], -rc[b + 2])));
         }
         return out;
     }

@@ -199,34 +199,61 @@ public final class CalibrationWorkflow {
 
         /** summary.json: a function of the data and settings only. */
         public String summaryJson() {
-            return CalibrationReport.summaryJson(result, context(), warnings);
+            return CalibrationReport.summaryJson(result, context(), crossValidation(), warnings);
         }
 
         /** report.html. */
         public String reportHtml() {
-            return CalibrationReport.html(result, context(), warnings);
+            return CalibrationReport.html(result, context(), crossValidation(), warnings);
+        }
+
+        /** The cross-validation for the reports, or null without folds. */
+        public CalibrationReport.CrossValidation crossValidation() {
+            if (folds.isEmpty()) return null;
+            return new CalibrationReport.CrossValidation(settings.foldSeed(), folds.stream().map(Fold::result).toList());
         }
 
         /**
          * residuals.csv: one row per pose (training then validation, file order): id, set, fold
-         * (empty when not cross-validated), outlier flag, error norms with the nominal and the
-         * calibrated model (mm) and, for 6-D data, rotation errors (deg).
+         * (1-based; empty when not cross-validated or for validation poses), outlier flag, the
+         * nominal model's error norm, the calibrated model's error (measured minus predicted, in
+         * the measurement frame) and its norm, in mm; for 6-D data the rotation errors in degrees;
+         * with folds, the error of the model that did not see the pose.
          */
         public String residualsCsv() {
-            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,calibrated_mm,nominal_deg,calibrated_deg\n");
-            rows(b, result.train(), "train");
-            rows(b, result.validate(), "validate");
+            boolean sixD = result.sixD(), cv = !folds.isEmpty();
+            Map<String, CalibrationResult.PoseError> heldOut = new LinkedHashMap<>();
+            for (Fold f : folds) for (CalibrationResult.PoseError e : f.result().validate()) heldOut.put(e.poseId(), e);
+            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm");
+            if (sixD) b.append(",nominal_deg,rotation_deg");
+            if (cv) b.append(",cv_dx_mm,cv_dy_mm,cv_dz_mm,cv_norm_mm").append(sixD ? ",cv_rotation_deg" : "");
+            b.append('\n');
+            for (int pass = 0; pass < 2; pass++) {
+                for (CalibrationResult.PoseError e : pass == 0 ? result.train() : result.validate()) {
+                    Integer f = pass == 0 ? foldOf.get(e.poseId()) : null;
+                    b.append(csv(e.poseId())).append(',').append(pass == 0 ? "train" : "validate").append(',')
+                     .append(f == null ? "" : Integer.toString(f + 1)).append(',').append(e.outlier()).append(',')
+                     .append(num(Units.mToMm(e.nominalM())));
+                    vector(b, e);
+                    if (sixD) b.append(',').append(num(Math.toDegrees(e.nominalRotRad()))).append(',').append(num(Math.toDegrees(e.calibratedRotRad())));
+                    if (cv) {
+                        CalibrationResult.PoseError h = pass == 0 ? heldOut.get(e.poseId()) : null;
+                        if (h == null) b.append(",,,,").append(sixD ? "," : "");
+                        else {
+                            vector(b, h);
+                            if (sixD) b.append(',').append(num(Math.toDegrees(h.calibratedRotRad())));
+                        }
+                    }
+                    b.append('\n');
+                }
+            }
             return b.toString();
         }
 
-        private void rows(StringBuilder b, List<CalibrationResult.PoseError> es, String set) {
-            for (CalibrationResult.PoseError e : es) {
-                Integer f = foldOf.get(e.poseId());
-                b.append(csv(e.poseId())).append(',').append(set).append(',').append(f == null ? "" : Integer.toString(f + 1))
-                 .append(',').append(e.outlier()).append(',').append(num(Units.mToMm(e.nominalM()))).append(',')
-                 .append(num(Units.mToMm(e.calibratedM()))).append(',').append(num(Math.toDegrees(e.nominalRotRad()))).append(',')
-                 .append(num(Math.toDegrees(e.calibratedRotRad()))).append('\n');
-            }
+        private static void vector(StringBuilder b, CalibrationResult.PoseError e) {
+            var v = e.calibratedErrorM();
+            b.append(',').append(num(Units.mToMm(v.x()))).append(',').append(num(Units.mToMm(v.y()))).append(',')
+             .append(num(Units.mToMm(v.z()))).append(',').append(num(Units.mToMm(e.calibratedM())));
         }
 
         /** Writes the four files into {@code dir}, whole or not at all; {@code overwrite} false refuses existing files. */
