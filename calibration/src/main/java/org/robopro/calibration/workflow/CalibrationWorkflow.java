@@ -169,6 +169,28 @@ public final class CalibrationWorkflow {
         return fold;
     }
 
+    /** A fit on the training part of one fold, evaluated on its held-out part. */
+    public interface FoldFit<T> {
+        T fit(int fold, MeasurementSet train, MeasurementSet heldOut);
+    }
+
+    /**
+     * K-fold cross-validation of any fit (calibration, diagnosis): the poses of {@code data} split
+     * by {@link #folds}, {@code fit} called once per fold with the other folds as training data
+     * and the fold as held-out data; the results in fold order.
+     */
+    public static <T> List<T> crossValidate(MeasurementSet data, int k, long seed, FoldFit<T> fit) {
+        List<Measurement> rows = data.rows();
+        int[] fold = folds(rows.size(), k, seed);
+        List<T> out = new ArrayList<>();
+        for (int f = 0; f < k; f++) {
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
+            out.add(fit.fit(f, data.withRows(tr), data.withRows(va)));
+        }
+        return out;
+    }
+
     /**
      * One fold of the cross-validation: the model fitted without it, and its errors.
      *
@@ -290,14 +312,9 @@ public final class CalibrationWorkflow {
             int[] fold = folds(rows.size(), s.folds(), s.foldSeed());
             for (int i = 0; i < rows.size(); i++) foldOf.put(rows.get(i).poseId(), fold[i]);
             double share = 1.0 / (s.folds() + 1);
-            for (int k = 0; k < s.folds(); k++) {
-                List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-                for (int i = 0; i < rows.size(); i++) (fold[i] == k ? va : tr).add(rows.get(i));
-                final int kk = k;
-                Progress pk = (stage, f) -> progress.update("fold " + (kk + 1) + ": " + stage, share * (kk + f));
-                CalibrationResult r = Calibrator.calibrate(nominal, c.train().withRows(tr), c.train().withRows(va), s.options(cancel, pk));
-                folds.add(new Fold(k, r));
-            }
+            List<CalibrationResult> rs = crossValidate(c.train(), s.folds(), s.foldSeed(), (k, tr, va) -> Calibrator.calibrate(nominal, tr, va,
+                    s.options(cancel, (stage, f) -> progress.update("fold " + (k + 1) + ": " + stage, share * (k + f)))));
+            for (int k = 0; k < rs.size(); k++) folds.add(new Fold(k, rs.get(k)));
             main = (stage, f) -> progress.update(stage, share * (s.folds() + f));
         }
         CalibrationResult r = Calibrator.calibrate(nominal, c.train(), c.validate(), s.options(cancel, main));
