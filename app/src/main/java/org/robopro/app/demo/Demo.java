@@ -16,6 +16,7 @@ import java.util.Map;
 import java.util.Random;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.compensation.TargetCompensator;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.workflow.CalibrationWorkflow;
 import org.robopro.calibration.Cancellation;
@@ -340,14 +341,15 @@ public final class Demo {
 
             Pose toolCal = Pose.of(weld.flangeTtcp.rotationRowMajor(), cal.flangeTtool().x(), cal.flangeTtool().y(), cal.flangeTtool().z());
             Compensator geometric = new Compensator(nominal, cal.calibrated(), weld.flangeTtcp, toolCal);
-            RapidModule calModule = compensate(weld, nominal, t -> geometric, "DemoWeldCal", out);
+            RapidModule calModule = compensate(weld, nominal, geometric, "DemoWeldCal", out);
             List<Vec3> calReadings = runAndMeasure(inv, calModule, "DemoWeldCal", targetIdx);
             Run calibratedRun = evaluate("geometric calibration", "DemoWeldCal", calReadings, targets, cal.instrumentTbase());
 
             // The extended model predicts each target under the approach directions the program reaches it with.
             List<int[]> approach = approachDirections(check, moves);
-            RapidModule diagModule = compensate(weld, nominal, t -> diag.compensator(nominal, weld.flangeTtcp,
-                    new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)), "DemoWeldDiag", out);
+            TargetCompensator withEffects = (t, tool, seed) -> diag.compensator(nominal, weld.flangeTtcp,
+                    new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)).compensate(t, tool, seed);
+            RapidModule diagModule = compensate(weld, nominal, withEffects, "DemoWeldDiag", out);
             List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
             Run diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
 
@@ -455,19 +457,12 @@ public final class Demo {
     }
 
     /** Compensates every target of the program (Fig. 5) and writes the module. */
-    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, java.util.function.Function<Pose, Compensator> forTarget,
-                                   String name, Path out) throws IOException {
-        ProgramCompensation.TargetCompensator tc = (target, tool, seed) -> {
-            if (tool.distanceTo(weld.flangeTtcp) > 1e-9 || tool.angleTo(weld.flangeTtcp) > 1e-9)
-                throw new IllegalStateException("the demo compensates only the torch; got another tool " + tool);
-            Compensator.Result r = forTarget.apply(target).compensate(target, seed);
-            return new ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
-                    r.status() == Compensator.Status.CONVERGED, r.status().name().toLowerCase(Locale.ROOT).replace('_', ' '));
-        };
-        ProgramCompensation.Outcome oc = ProgramCompensation.compensate(weld.module, "main", nominal, tc);
+    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, TargetCompensator compensator, String name, Path out)
+            throws IOException {
+        ProgramCompensation.Outcome oc = ProgramCompensation.compensate(weld.module, "main", nominal, compensator);
         double maxShift = 0;
         for (ProgramCompensation.Correction k : oc.corrections()) {
-            if (!"converged".equals(k.status())) throw new IllegalStateException("compensation of " + k.target() + ": " + k.status());
+            if (!k.ok()) throw new IllegalStateException("compensation of " + k);
             maxShift = Math.max(maxShift, k.shiftM());
         }
         String text = RapidWriter.export(oc.module()).text();

@@ -252,13 +252,12 @@ public final class Workbench {
         var nominal = model.kinematics().kinematicModel();
         if (cal != null && nominal.isPresent()) {
             var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
-                    ext != null && ext.hasEffects() ? extendedCompensator(nominal.get(), ext, compensationConditions)
-                            : org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
+                    compensator(nominal.get(), cal, ext, compensationConditions));
             module = out.module();
             double max = 0;
             for (var c : out.corrections()) {
                 max = Math.max(max, c.shiftM());
-                if (!"converged".equals(c.status())) log("Compensation: " + c);
+                if (!c.ok()) log("Compensation: " + c);
             }
             log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the %s (largest shift %.3f mm)",
                     out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
@@ -471,15 +470,13 @@ public final class Workbench {
         compensationConditions = new org.robopro.calibration.PoseConditions(null, Double.NaN, tempC, payloadKg);
     }
 
-    /** The calibration module's Compensator with an extended model, per target and tool (as `robopro program compensate`). */
-    static org.robopro.programs.ProgramCompensation.TargetCompensator extendedCompensator(org.robopro.kinematics.KinematicModel nominal,
-            org.robopro.calibration.diagnosis.ExtendedModel ext, org.robopro.calibration.PoseConditions cond) {
-        return (target, tool, seed) -> {
-            var r = new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond).compensate(target, seed);
-            return new org.robopro.programs.ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
-                    r.status() == org.robopro.calibration.compensation.Compensator.Status.CONVERGED,
-                    r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
-        };
+    /** The calibration module's Compensator on the extended model when it has effects, else on the calibrated geometry. */
+    static org.robopro.calibration.compensation.Compensator compensator(org.robopro.kinematics.KinematicModel nominal,
+            org.robopro.kinematics.KinematicModel cal, org.robopro.calibration.diagnosis.ExtendedModel ext,
+            org.robopro.calibration.PoseConditions cond) {
+        var tool = org.robopro.kinematics.Pose.IDENTITY; // the program's tools are given per target
+        return ext != null && ext.hasEffects() ? new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond)
+                : new org.robopro.calibration.compensation.Compensator(nominal, cal, tool, tool);
     }
 
     /** The applied calibrated model (RAPID export is compensated with it), if any. */
