@@ -94,6 +94,9 @@ public final class CalibrateCommand implements Callable<Integer> {
         w.printf(Locale.ROOT, "  %d parameters fixed as unidentifiable, condition number %.3g, %d outliers%s%n",
                 r.unidentifiable().size(), r.conditionNumber(), r.outliers().size(),
                 r.outliers().isEmpty() ? "" : " (" + String.join(", ", r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList()) + ")");
+        if (!oc.concerns().isEmpty())
+            w.printf(Locale.ROOT, "  not determined by these data (see the warnings): %s%n",
+                    String.join(", ", oc.concerns().stream().map(c -> c.parameter()).toList()));
         w.printf("  wrote %s%n", out.dir().toAbsolutePath());
         for (String warning : oc.warnings()) spec.commandLine().getErr().println("robopro: warning: " + warning);
         return 0;

@@ -25,13 +25,19 @@ import org.robopro.models.Vec3;
  * @param sigmaRotRad      orientation noise estimated from the residuals, rad (NaN for position-only data)
  * @param sixD             orientations were used
  * @param elapsedMs        wall time of the calibration
+ * @param correlations     pairs of identified parameters whose estimates are strongly correlated
+ *                         (|ρ| &gt; 0.9), strongest first
  */
 public record CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
                                 List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
                                 double conditionNumber, double observability, List<Outlier> outliers,
                                 List<PoseError> train, List<PoseError> validate,
                                 LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
-                                double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs) {
+                                double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs,
+                                List<Correlation> correlations) {
+
+    /** Correlation coefficient ρ of the estimates of parameters {@code a} and {@code b}. */
+    public record Correlation(String a, String b, double rho) { }
 
     /**
      * One parameter. Values in SI ({@code unitSi}); {@code sigma} NaN when fixed.

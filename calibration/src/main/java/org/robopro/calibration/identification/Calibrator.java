@@ -186,7 +186,8 @@ public final class Calibrator {
         }
 
         // 5. Uncertainty.
-        double[] sigmaFull = covarianceSigmas(p, fit.x());
+        List<CalibrationResult.Correlation> correlations = new ArrayList<>();
+        double[] sigmaFull = covariance(p, fit.x(), correlations);
         double[] sig = estimateSigmas(p, full, p.freeIndices().length);
         KinematicModel calibrated = p.modelOf(full);
         Pose tool = p.toolOf(full);
@@ -207,7 +208,7 @@ public final class Calibrator {
         o.progress().update("done", 1);
         return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
                 data.conditionNumber(), data.observability(), outliers, trainErr, valErr, r1, fit,
-                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6);
+                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6, List.copyOf(correlations));
     }
 
     static void checkData(KinematicModel model, MeasurementSet set) {
@@ -250,8 +251,15 @@ public final class Calibrator {
         return new double[] {Math.max(sigP, 1e-12), Math.max(sigR, 1e-12)};
     }
 
-    /** σ_j = sqrt(s² [(JᵀJ)⁻¹]_jj), for every full index (NaN where fixed). */
-    static double[] covarianceSigmas(IdentificationProblem p, double[] x) {
+    /** Pairs of free parameters whose estimates are correlated beyond this |ρ| are kept in the result. */
+    static final double CORRELATION_KEPT = 0.9;
+
+    /**
+     * σ_j = sqrt(s² [(JᵀJ)⁻¹]_jj), for every full index (NaN where fixed); when {@code correlations} is not null, adds the
+     * pairs of free parameters with |ρ_ij| = |C_ij| / sqrt(C_ii C_jj) above {@link #CORRELATION_KEPT}
+     * (C = (JᵀJ)⁻¹; the column scaling cancels in ρ).
+     */
+    static double[] covariance(IdentificationProblem p, double[] x, List<CalibrationResult.Correlation> correlations) {
         int m = p.residualCount(), n = p.parameterCount();
         double[] r = new double[m], j = new double[m * n];
         p.evaluate(x, r, j);
@@ -268,12 +276,24 @@ public final class Calibrator {
         Arrays.fill(out, Double.NaN);
         if (!Dense.cholesky(a, n)) return out;
         int[] free = p.freeIndices();
+        double[] inv = new double[n * n];
         double[] e = new double[n];
         for (int c = 0; c < n; c++) {
             Arrays.fill(e, 0);
             e[c] = 1;
             Dense.choleskySolve(a, n, e);
+            System.arraycopy(e, 0, inv, c * n, n);
             out[free[c]] = Math.sqrt(s2 * e[c]) / scale[c];
+        }
+        if (correlations != null) {
+            List<String> names = p.names();
+            for (int i = 0; i < n; i++)
+                for (int k = i + 1; k < n; k++) {
+                    double rho = inv[i * n + k] / Math.sqrt(inv[i * n + i] * inv[k * n + k]);
+                    if (Math.abs(rho) > CORRELATION_KEPT)
+                        correlations.add(new CalibrationResult.Correlation(names.get(free[i]), names.get(free[k]), rho));
+                }
+            correlations.sort((u, v) -> Double.compare(Math.abs(v.rho()), Math.abs(u.rho())));
         }
         return out;
     }

@@ -14,6 +14,7 @@ import org.robopro.calibration.identification.CalibrationResult.PoseError;
 import org.robopro.calibration.identification.ErrorStats;
 import org.robopro.calibration.identification.Identifiability;
 import org.robopro.calibration.identification.LevenbergMarquardt;
+import org.robopro.calibration.identification.Trust;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
@@ -131,7 +132,8 @@ public final class CalibrationReport {
      * settings only (no date, no wall time; those are in the report), so the same campaign gives
      * the same bytes whichever front end ran it.
      */
-    public static Map<String, Object> summary(CalibrationResult r, Context ctx, CrossValidation cv, List<String> warnings) {
+    public static Map<String, Object> summary(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns,
+                                              List<String> warnings) {
         Map<String, Object> s = new LinkedHashMap<>();
         s.put("robot", ctx.robot());
         s.put("measurements", ctx.measurements());
@@ -173,6 +175,8 @@ public final class CalibrationReport {
         if (r.sixD()) s.put("noise_sigma_deg", Units.radToDeg(r.sigmaRotRad()));
         s.put("condition_number", r.conditionNumber());
         s.put("observability_o1", r.observability());
+        java.util.Set<String> untrusted = new java.util.HashSet<>();
+        for (Trust.Concern c : concerns) untrusted.add(c.parameter());
         List<Map<String, Object>> ps = new ArrayList<>();
         for (ParameterEstimate p : r.parameters()) {
             Map<String, Object> e = new LinkedHashMap<>();
@@ -183,9 +187,28 @@ public final class CalibrationReport {
             e.put("sigma", p.fixed() || Double.isNaN(p.sigma()) ? null : display(p.sigma(), p.unitSi()));
             e.put("unit", displayUnit(p.unitSi()));
             e.put("fixed", p.fixed());
+            e.put("trustworthy", !p.fixed() && !untrusted.contains(p.name()));
             ps.add(e);
         }
         s.put("parameters", ps);
+        List<Map<String, Object>> cs = new ArrayList<>();
+        for (Trust.Concern c : concerns) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("parameter", c.parameter());
+            e.put("reason", c.reason());
+            e.put("advice", c.advice());
+            cs.add(e);
+        }
+        s.put("untrustworthy", cs);
+        List<Map<String, Object>> corr = new ArrayList<>();
+        for (CalibrationResult.Correlation c : r.correlations()) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("a", c.a());
+            e.put("b", c.b());
+            e.put("rho", c.rho());
+            corr.add(e);
+        }
+        s.put("correlations", corr);
         List<Map<String, Object>> un = new ArrayList<>();
         for (Identifiability.Direction d : r.unidentifiable()) {
             Map<String, Object> e = new LinkedHashMap<>();
@@ -238,9 +261,10 @@ public final class CalibrationReport {
         return m;
     }
 
-    public static String summaryJson(CalibrationResult r, Context ctx, CrossValidation cv, List<String> warnings) {
+    public static String summaryJson(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns,
+                                     List<String> warnings) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx, cv, warnings)) + "\n";
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx, cv, concerns, warnings)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }
@@ -249,7 +273,7 @@ public final class CalibrationReport {
     // ------------------------------------------------------------------ HTML
 
     /** The report with these {@code warnings} shown under the header. */
-    public static String html(CalibrationResult r, Context ctx, CrossValidation cv, List<String> warnings) {
+    public static String html(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns, List<String> warnings) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration of ")
          .append(Html.esc(ctx.robot())).append("</title><style>")
@@ -330,6 +354,18 @@ public final class CalibrationReport {
             h.append("</table>\n");
         }
 
+        if (concerns.isEmpty())
+            h.append(String.format(Locale.ROOT, "<p>Every identified parameter is determined by the data (&sigma; &le; %.0f mm or %.1f&deg;, "
+                    + "no correlation above %.2f).</p>\n", Trust.SIGMA_MM, Trust.SIGMA_DEG, Trust.CORRELATION));
+        else {
+            h.append("<p class=\"warn\">Identified, but not determined by these data (the calibrated file is reliable for this measured point "
+                    + "only, not for another tool point or orientation):</p><table><tr><th class=\"l\">parameter</th><th class=\"l\">why</th>"
+                    + "<th class=\"l\">what would fix it</th></tr>");
+            for (Trust.Concern c : concerns)
+                h.append("<tr><td class=\"l\">").append(Html.esc(c.parameter())).append("</td><td class=\"l\">").append(Html.esc(c.reason()))
+                 .append("</td><td class=\"l\">").append(Html.esc(c.advice())).append("</td></tr>");
+            h.append("</table>\n");
+        }
         h.append("<h2>Outliers</h2>\n");
         if (r.outliers().isEmpty()) h.append("<p>None: no pose exceeded the outlier rule.</p>\n");
         else {

@@ -14,6 +14,7 @@ import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.Progress;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.identification.Calibrator;
+import org.robopro.calibration.identification.Trust;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
@@ -207,12 +208,13 @@ public final class CalibrationWorkflow {
      * @param result     the calibration on every training pose
      * @param folds      per fold (empty without cross-validation)
      * @param foldOf     fold of each training pose, by pose id (empty without cross-validation)
-     * @param warnings   metadata and validation warnings, in the order shown
+     * @param concerns   identified parameters the data do not determine ({@link Trust})
+     * @param warnings   metadata, validation and identifiability warnings, in the order shown
      * @param calibrated the calibrated robot with provenance
      * @param created    when the run finished (ISO-8601, seconds), for the report and provenance
      */
     public record Outcome(Campaign campaign, Settings settings, CalibrationResult result, List<Fold> folds, Map<String, Integer> foldOf,
-                          List<String> warnings, RobotDescription calibrated, String created) {
+                          List<Trust.Concern> concerns, List<String> warnings, RobotDescription calibrated, String created) {
 
         public CalibrationReport.Context context() {
             return new CalibrationReport.Context(calibrated.provenance().getOrDefault("calibrated-nominal", calibrated.name()),
@@ -221,12 +223,12 @@ public final class CalibrationWorkflow {
 
         /** summary.json: a function of the data and settings only. */
         public String summaryJson() {
-            return CalibrationReport.summaryJson(result, context(), crossValidation(), warnings);
+            return CalibrationReport.summaryJson(result, context(), crossValidation(), concerns, warnings);
         }
 
         /** report.html. */
         public String reportHtml() {
-            return CalibrationReport.html(result, context(), crossValidation(), warnings);
+            return CalibrationReport.html(result, context(), crossValidation(), concerns, warnings);
         }
 
         /** The cross-validation for the reports, or null without folds. */
@@ -320,6 +322,8 @@ public final class CalibrationWorkflow {
         CalibrationResult r = Calibrator.calibrate(nominal, c.train(), c.validate(), s.options(cancel, main));
         List<String> warnings = new ArrayList<>(c.warnings());
         warnings.addAll(CalibrationReport.warnings(r, c.train(), c.validate()));
+        List<Trust.Concern> concerns = Trust.assess(r, c.train());
+        for (Trust.Concern k : concerns) warnings.add(k.sentence());
         Map<String, String> prov = new LinkedHashMap<>(robot.provenance());
         prov.put("calibrated-from", fileName(c.file()));
         prov.put("calibrated-on", created);
@@ -330,10 +334,11 @@ public final class CalibrationWorkflow {
         if (c.source() != null) prov.put("calibration-validated-on", c.source());
         prov.put("calibration-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.trainRmsM())));
         if (c.validate() != null) prov.put("calibration-validate-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.validateRmsM())));
+        prov.put("calibration-untrustworthy-parameters", Trust.provenance(concerns));
         var p = r.flangeTtool().position();
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
-        return new Outcome(c, s, r, List.copyOf(folds), Collections.unmodifiableMap(foldOf), List.copyOf(warnings), calibrated, created);
+        return new Outcome(c, s, r, List.copyOf(folds), Collections.unmodifiableMap(foldOf), concerns, List.copyOf(warnings), calibrated, created);
     }
 }
