@@ -18,7 +18,7 @@ import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotFile;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
@@ -95,10 +95,12 @@ public final class CalibrateCommand implements Callable<Integer> {
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
-        RobotLibrary.write(calibrated, out.file("calibrated.robot.json"), out.force());
         java.util.List<String> warnings = CalibrationReport.warnings(r, train, val);
-        AtomicFiles.writeString(out.file("summary.json"), CalibrationReport.summaryJson(r, ctx, warnings), out.force());
-        AtomicFiles.writeString(out.file("report.html"), CalibrationReport.html(r, ctx, warnings), out.force());
+        out.set()
+                .addString("calibrated.robot.json", RobotFile.format(calibrated))
+                .addString("summary.json", CalibrationReport.summaryJson(r, ctx, warnings))
+                .addString("report.html", CalibrationReport.html(r, ctx, warnings))
+                .commit();
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(), r.train().size(),
                 r.sixD() ? "6-D" : "positions", Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
