@@ -205,13 +205,12 @@ public final class WorkbenchSession implements AutoCloseable {
         var nominal = model.kinematics().kinematicModel();
         if (cal != null && nominal.isPresent()) {
             var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
-                    ext != null && ext.hasEffects() ? extendedCompensator(nominal.get(), ext, compensationConditions)
-                            : org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
+                    compensator(nominal.get(), cal, ext, compensationConditions));
             module = out.module();
             double max = 0;
             for (var c : out.corrections()) {
                 max = Math.max(max, c.shiftM());
-                if (!"converged".equals(c.status())) log("Compensation: " + c);
+                if (!c.ok()) log("Compensation: " + c);
             }
             log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the %s (largest shift %.3f mm)",
                     out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
@@ -424,48 +423,56 @@ public final class WorkbenchSession implements AutoCloseable {
         compensationConditions = new org.robopro.calibration.PoseConditions(null, Double.NaN, tempC, payloadKg);
     }
 
-    /** The calibration module's Compensator with an extended model, per target and tool (as `robopro program compensate`). */
-    static org.robopro.programs.ProgramCompensation.TargetCompensator extendedCompensator(org.robopro.kinematics.KinematicModel nominal,
-            org.robopro.calibration.diagnosis.ExtendedModel ext, org.robopro.calibration.PoseConditions cond) {
-        return (target, tool, seed) -> {
-            var r = new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond).compensate(target, seed);
-            return new org.robopro.programs.ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
-                    r.status() == org.robopro.calibration.compensation.Compensator.Status.CONVERGED,
-                    r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
-        };
+    /** The calibration module's Compensator on the extended model when it has effects, else on the calibrated geometry. */
+    static org.robopro.calibration.compensation.Compensator compensator(org.robopro.kinematics.KinematicModel nominal,
+            org.robopro.kinematics.KinematicModel cal, org.robopro.calibration.diagnosis.ExtendedModel ext,
+            org.robopro.calibration.PoseConditions cond) {
+        var tool = org.robopro.kinematics.Pose.IDENTITY; // the program's tools are given per target
+        return ext != null && ext.hasEffects() ? new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond)
+                : new org.robopro.calibration.compensation.Compensator(nominal, cal, tool, tool);
     }
 
     /** The applied calibrated model (RAPID export is compensated with it), if any. */
     public Optional<org.robopro.kinematics.KinematicModel> calibratedModel() { return Optional.ofNullable(calibratedModel); }
 
-    /** Training and validation sets of a measurement file: its set column, else every 5th pose held out. */
-    public record Measurements(Path file, org.robopro.calibration.measurement.MeasurementSet train,
-                               org.robopro.calibration.measurement.MeasurementSet validate) { }
-
-    public Measurements loadMeasurements(Path file) throws IOException {
-        var all = org.robopro.calibration.measurement.MeasurementReader.read(file, model.robot());
-        if (all.hasSplit()) {
-            var v = all.split(org.robopro.calibration.measurement.Measurement.Split.VALIDATE);
-            return new Measurements(file, all.split(org.robopro.calibration.measurement.Measurement.Split.TRAIN), v.size() == 0 ? null : v);
-        }
-        List<org.robopro.calibration.measurement.Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-        for (int i = 0; i < all.size(); i++) (i % 5 == 4 ? va : tr).add(all.rows().get(i));
-        return new Measurements(file, all.withRows(tr), va.isEmpty() ? null : all.withRows(va));
+    /**
+     * Training and validation sets of a measurement file, split by the calibration workflow: its
+     * set column, else every 5th pose held out.
+     */
+    public record Measurements(org.robopro.calibration.workflow.CalibrationWorkflow.Campaign campaign) {
+        public Path file() { return campaign.file(); }
+        public org.robopro.calibration.measurement.MeasurementSet train() { return campaign.train(); }
+        public org.robopro.calibration.measurement.MeasurementSet validate() { return campaign.validate(); }
     }
 
+    /** Fraction of the poses held out for validation when the file has no set column. */
+    public static final double HOLDOUT = 0.2;
+
+    public Measurements loadMeasurements(Path file) throws IOException {
+        return new Measurements(org.robopro.calibration.workflow.CalibrationWorkflow.load(model.robot(), file, null, HOLDOUT));
+    }
+
+    private volatile org.robopro.calibration.workflow.CalibrationWorkflow.Outcome lastCalibration;
+
+    /** The last calibration's outcome (figures, warnings, files), if any. */
+    public Optional<org.robopro.calibration.workflow.CalibrationWorkflow.Outcome> lastCalibration() { return Optional.ofNullable(lastCalibration); }
+
     /**
-     * Calibrates the cell's robot from measurements (blocking: run it off the UI thread).
+     * Calibrates the cell's robot from measurements with the calibration workflow's default
+     * settings, as {@code robopro calibrate} does (blocking: run it off the UI thread).
      * Throws CancellationException when {@code cancel} fires.
      */
     public org.robopro.calibration.identification.CalibrationResult calibrate(Measurements m, org.robopro.calibration.Cancellation cancel,
                                                                             org.robopro.calibration.Progress progress) {
-        var nominal = org.robopro.kinematics.KinematicModel.build(model.robot());
-        var o = org.robopro.calibration.identification.Calibrator.Options.defaults()
-                .withInitialTool(Pose.translation(0, 0, 0.1)).withCancel(cancel).withProgress(progress);
-        var r = org.robopro.calibration.identification.Calibrator.calibrate(nominal, m.train(), m.validate(), o);
+        var oc = org.robopro.calibration.workflow.CalibrationWorkflow.run(model.robot(), m.campaign(),
+                org.robopro.calibration.workflow.CalibrationWorkflow.Settings.defaults(),
+                java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString(), cancel, progress);
+        lastCalibration = oc;
+        var r = oc.result();
         log(String.format(java.util.Locale.ROOT, "Calibrated from %d poses: RMS %.4f mm -> %.4f mm%s", r.train().size(),
                 r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3, m.validate() == null ? ""
                         : String.format(java.util.Locale.ROOT, "; validation %.4f mm -> %.4f mm", r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3)));
+        for (String w : oc.warnings()) log("Warning: " + w);
         return r;
     }
 
@@ -475,11 +482,9 @@ public final class WorkbenchSession implements AutoCloseable {
      * exports with it from now on (seed paper Fig. 5; the controller keeps the nominal model).
      */
     public void applyCalibration(org.robopro.calibration.identification.CalibrationResult r, Path robotFile, String source, boolean overwrite) {
-        java.util.Map<String, String> prov = new java.util.LinkedHashMap<>(model.robot().provenance());
-        prov.put("calibrated-from", source);
-        prov.put("calibrated-nominal", model.robot().name());
-        prov.put("calibration-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", r.trainRmsM() * 1e3));
-        org.robopro.models.RobotLibrary.write(r.calibrated().toDescription().withProvenance(prov), robotFile, overwrite);
+        var oc = lastCalibration;
+        if (oc == null || oc.result() != r) throw new IllegalStateException("not the last calibration's result");
+        org.robopro.models.RobotLibrary.write(oc.calibrated(), robotFile, overwrite);
         calibratedModel = r.calibrated();
         extendedModel = null;
         model.setCalibrationReference(robotFile.toString());

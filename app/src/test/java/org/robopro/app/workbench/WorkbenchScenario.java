@@ -239,6 +239,12 @@ public final class WorkbenchScenario {
         r.setProperty("calNominalRmsMm", String.valueOf(p.result().nominalTrainRmsM() * 1e3));
         r.setProperty("calRmsMm", String.valueOf(p.result().trainRmsM() * 1e3));
         r.setProperty("calValidateRmsMm", String.valueOf(p.result().validateRmsM() * 1e3));
+        // The same file through robopro calibrate (the workbench holds out every 5th pose without a set column).
+        Path cli = out.resolve("calibration-cli");
+        new picocli.CommandLine(new org.robopro.app.cli.RoboproCommand()).execute("calibrate", "--robot", "irb2000",
+                "--measurements", sim.resolve("measurements.csv").toString(), "--holdout", "0.2", "--out", cli.toString(), "--force");
+        r.setProperty("calSummarySameAsCli", String.valueOf(Files.readString(cli.resolve("summary.json"))
+                .equals(wb.lastCalibration().orElseThrow().summaryJson())));
         win.screenshot(out.resolve("07-calibration.png"));
         Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");
         Files.deleteIfExists(nominalMod);

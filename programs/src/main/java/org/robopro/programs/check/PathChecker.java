@@ -44,6 +44,8 @@ public final class PathChecker {
     private final InverseKinematics ik;
     private final Options opt;
     private final double[] vMax;
+    /** Upper bound on the flange's distance from the base, m (infinite when a prismatic joint has no limit). */
+    private final double reach;
 
     public PathChecker(KinematicModel model, Options options) {
         this.model = model;
@@ -55,6 +57,34 @@ public final class PathChecker {
             double v = model.description().joints().get(i).maxSpeed();
             vMax[i] = v > 0 && Double.isFinite(v) ? v : Math.toRadians(90);
         }
+        reach = reach(model);
+    }
+
+    /**
+     * An upper bound on the flange's distance from the base over all joint values: the sum of
+     * the distances between consecutive joint origins (a revolute joint turns about an axis
+     * through its own origin, so the distance to the next origin does not change), plus the
+     * travel of prismatic joints (triangle inequality).
+     */
+    static double reach(KinematicModel model) {
+        Pose[] f = model.linkFrames(new double[model.dof()]);
+        double r = 0;
+        for (int k = 0; k + 1 < f.length; k++) r += f[k + 1].position().minus(f[k].position()).norm();
+        for (int j = 0; j < model.dof(); j++)
+            if (model.isPrismatic(j)) r += 2 * Math.max(Math.abs(model.qMin(j)), Math.abs(model.qMax(j)));
+        return Double.isFinite(r) ? r : Double.POSITIVE_INFINITY;
+    }
+
+    /** The robot's reach bound, m (see {@link #reach(KinematicModel)}). */
+    public double reach() { return reach; }
+
+    /** A problem when the flange pose lies beyond the reach bound (no IK or path sampling is tried then). */
+    private Optional<Problem> beyondReach(MoveStep m, Pose flange, String what) {
+        double d = flange.position().norm();
+        if (d <= reach * (1 + 1e-9) + 1e-9) return Optional.empty();
+        return Optional.of(new Problem(Problem.Severity.ERROR, Problem.Kind.UNREACHABLE, m.label(), m.targetName(), m.source(),
+                String.format(Locale.ROOT, "%s at %s mm (flange) is %.0f mm from the base, beyond the robot's reach of %.0f mm",
+                        what, mm(flange.position()), d * 1e3, reach * 1e3)));
     }
 
     public PathChecker(KinematicModel model) { this(model, Options.DEFAULT); }
@@ -100,6 +130,11 @@ public final class PathChecker {
     private Outcome joint(MoveStep m, double[] q, List<Problem> problems) {
         Pose flange = m.baseTflange().orElseThrow();
         ConfData conf = m.conf().orElseThrow();
+        Optional<Problem> far = beyondReach(m, flange, "the target");
+        if (far.isPresent()) {
+            problems.add(far.get());
+            return new Outcome(null, 0, 1);
+        }
         Optional<IkSolution> s = ik.solveWithConf(flange, conf);
         if (s.isEmpty()) {
             problems.add(unreachable(m, flange, conf));
@@ -114,6 +149,14 @@ public final class PathChecker {
     private Outcome cartesian(MoveStep m, double[] q, List<Problem> problems) {
         Pose flangeEnd = m.baseTflange().orElseThrow();
         ConfData conf = m.conf().orElseThrow();
+        // Far targets are refused before sampling: the path's length (and so the number of
+        // interpolated points) is then bounded by the reach.
+        Optional<Problem> far = beyondReach(m, flangeEnd, "the target");
+        if (far.isEmpty() && m.baseTflangeCirc().isPresent()) far = beyondReach(m, m.baseTflangeCirc().get(), "the circle point");
+        if (far.isPresent()) {
+            problems.add(far.get());
+            return new Outcome(null, 0, 1);
+        }
         if (q == null) { // no start: the robot is put at the target
             Optional<IkSolution> s = ik.solveWithConf(flangeEnd, conf);
             if (s.isEmpty()) {
@@ -157,7 +200,7 @@ public final class PathChecker {
                     problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.UNREACHABLE, m.label(), m.targetName(), m.source(),
                             String.format(Locale.ROOT, "path point %d of %d (%.0f%% along, at %s mm) is out of reach", k, n, 100 * s, mm(p))));
                 reported = true;
-                continue;
+                break;
             }
             double[] qk = sol.get().q();
             double dt = 0, jump = 0;

@@ -31,6 +31,14 @@ final class RapidAstParser {
     /** ENDPROC, ENDFUNC or ENDTRAP of the routine being read (for messages). */
     private String currentEnd = "ENDPROC";
     private static final int MAX_DEPTH = 200;
+    /**
+     * Binary operators in one expression: a left-associative chain nests one level per operator,
+     * and every reader of the tree (simulation, export) walks it recursively, so the chain is
+     * bounded here with a located error instead of a stack overflow later.
+     */
+    public static final int MAX_OPERATORS = 1000;
+    /** Binary operators read so far in the current top-level expression. */
+    private int operators;
 
     private RapidAstParser(String text, String file) {
         this.file = file;
@@ -499,15 +507,23 @@ final class RapidAstParser {
 
     /** expr := [NOT] and-term { (OR|XOR) [NOT] and-term } (RAPID: NOT, OR, XOR bind weakest). */
     Expr expr() {
+        if (depth == 0) operators = 0;
         if (++depth > MAX_DEPTH) throw error(peek(), null, "expression nested deeper than " + MAX_DEPTH);
         Token s = peek();
         Expr e = notOperand();
         while (peek().isWord("OR") || peek().isWord("XOR")) {
             String op = next().text().toUpperCase(Locale.ROOT);
-            e = at(new RapidAst.Binary(op, e, notOperand()), s);
+            e = binary(new RapidAst.Binary(op, e, notOperand()), s);
         }
         depth--;
         return e;
+    }
+
+    private Expr binary(RapidAst.Binary b, Token start) {
+        if (++operators > MAX_OPERATORS)
+            throw error(toks.get(Math.max(0, i - 1)), null, "expression with more than " + MAX_OPERATORS
+                    + " operators: split it over several assignments");
+        return at(b, start);
     }
 
     private Expr notOperand() {
@@ -523,7 +539,7 @@ final class RapidAstParser {
             i++;
             Token t = peek();
             Expr r = acceptWord("NOT") ? at(new RapidAst.Unary("NOT", relation()), t) : relation();
-            e = at(new RapidAst.Binary("AND", e, r), s);
+            e = binary(new RapidAst.Binary("AND", e, r), s);
         }
         return e;
     }
@@ -536,7 +552,7 @@ final class RapidAstParser {
         Token t = peek();
         if (t.kind() == Token.Kind.PUNCT && RELOPS.contains(t.text())) {
             i++;
-            e = at(new RapidAst.Binary(t.text(), e, simple()), s);
+            e = binary(new RapidAst.Binary(t.text(), e, simple()), s);
             Token u = peek();
             if (u.kind() == Token.Kind.PUNCT && RELOPS.contains(u.text()))
                 throw error(u, null, "comparisons do not chain: put one in parentheses");
@@ -555,7 +571,7 @@ final class RapidAstParser {
         }
         while (peek().is("+") || peek().is("-")) {
             String op = next().text();
-            e = at(new RapidAst.Binary(op, e, term()), s);
+            e = binary(new RapidAst.Binary(op, e, term()), s);
         }
         return e;
     }
@@ -565,7 +581,7 @@ final class RapidAstParser {
         Expr e = primary();
         while (peek().is("*") || peek().is("/") || peek().isWord("DIV") || peek().isWord("MOD")) {
             String op = next().text().toUpperCase(Locale.ROOT);
-            e = at(new RapidAst.Binary(op, e, primary()), s);
+            e = binary(new RapidAst.Binary(op, e, primary()), s);
         }
         return e;
     }
