@@ -5,6 +5,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.compensation.TargetCompensator;
 import org.robopro.calibration.compensation.TargetsFile;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
@@ -82,8 +83,7 @@ public final class CompensateCommand implements Callable<Integer> {
             q = Units.degToRad(s);
         }
         // An extended model (robopro diagnose) brings its effects, evaluated under the given conditions.
-        Compensator comp = calDesc.effects().isEmpty() ? new Compensator(nom, cal, flangeTtool, flangeTtool)
-                : Compensator.forRobotFile(nom, calDesc, calibrated, flangeTtool, flangeTtool,
+        Compensator comp = Compensator.forRobotFile(nom, calDesc, calibrated, flangeTtool, flangeTtool,
                         new PoseConditions(null, Double.NaN, tempC == null ? Double.NaN : tempC, payloadKg == null ? Double.NaN : payloadKg));
         Compensator.Batch batch = comp.batch();
         StringBuilder sb = new StringBuilder("# robopro compensated targets: ").append(f).append(" frame, mm, deg\n");
@@ -96,9 +96,9 @@ public final class CompensateCommand implements Callable<Integer> {
             Pose base = world ? worldTbase.inverse().times(t.pose()) : t.pose();
             double[] quat = base.quaternion();
             double[] seed = q.clone();
-            Compensator.Status st = batch.compensate(new double[] {base.x(), base.y(), base.z()}, quat, q, cmd, res);
-            if (st != Compensator.Status.CONVERGED) bad++;
-            boolean values = st != Compensator.Status.UNREACHABLE && allFinite(cmd) && allFinite(q);
+            TargetCompensator.Status st = batch.compensate(new double[] {base.x(), base.y(), base.z()}, quat, q, cmd, res);
+            if (!st.ok()) bad++;
+            boolean values = st != TargetCompensator.Status.UNREACHABLE && allFinite(cmd) && allFinite(q);
             sb.append(t.id());
             if (values) {
                 Pose c = Pose.fromQuaternion(cmd[3], cmd[4], cmd[5], cmd[6], cmd[0], cmd[1], cmd[2]);

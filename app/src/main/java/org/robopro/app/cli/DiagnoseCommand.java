@@ -50,7 +50,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (!(alpha > 0 && alpha < 1)) throw new IllegalArgumentException("--alpha must be in (0, 1), got " + alpha);
         RobotDescription desc = robot.description();
-        MeasurementOptions.Data data = measurements.read(desc, null);
+        org.robopro.calibration.workflow.CalibrationWorkflow.Campaign data = measurements.read(desc, null);
         MeasurementSet train = data.train(), val = data.validate();
         Cancellation cancel = new Cancellation();
         Diagnoser.Options o = Diagnoser.Options.defaults().withAlpha(alpha).withCancel(cancel)
