@@ -4,7 +4,6 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.time.temporal.ChronoUnit;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.LinkedHashMap;
@@ -22,7 +21,7 @@ import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.calibration.workflow.CalibrationWorkflow;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotFile;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
@@ -94,11 +93,13 @@ public final class DiagnoseCommand implements Callable<Integer> {
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription extended = d.model().toDescription().withProvenance(prov);
-        RobotLibrary.write(extended, out.file("extended.robot.json"), out.force());
         String json = DiagnosisReport.json(d, ctx);
         if (!cv.isEmpty()) json = withCrossValidation(json, cv);
-        AtomicFiles.writeString(out.file("diagnosis.json"), json, out.force());
-        AtomicFiles.writeString(out.file("report.html"), DiagnosisReport.html(d, ctx), out.force());
+        out.set()
+                .addString("extended.robot.json", RobotFile.format(extended))
+                .addString("diagnosis.json", json)
+                .addString("report.html", DiagnosisReport.html(d, ctx))
+                .commit();
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "diagnosed %s from %d poses: geometric RMS %.4f mm -> %.4f mm with effects (train)%n", desc.name(),
                 train.size(), Units.mToMm(d.geometricTrainRmsM()), Units.mToMm(d.finalTrainRmsM()));
@@ -140,15 +141,21 @@ public final class DiagnoseCommand implements Callable<Integer> {
         return counts;
     }
 
+    /** Puts a number, or null when it is not finite (JSON has no NaN). */
+    private static void finite(ObjectNode o, String key, double v) {
+        if (Double.isFinite(v)) o.put(key, v);
+        else o.putNull(key);
+    }
+
     /** diagnosis.json with a cross_validation section: per fold and overall held-out RMS, effects per fold. */
     private String withCrossValidation(String json, List<Diagnosis> cv) throws java.io.IOException {
-        ObjectMapper mapper = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+        ObjectMapper mapper = org.robopro.models.JsonMapper.create();
         ObjectNode root = (ObjectNode) mapper.readTree(json);
         ObjectNode c = root.putObject("cross_validation");
         c.put("folds", cv.size());
         c.put("seed", foldSeed);
-        c.put("held_out_geometric_rms_mm", Units.mToMm(pooledRms(cv, true)));
-        c.put("held_out_final_rms_mm", Units.mToMm(pooledRms(cv, false)));
+        finite(c, "held_out_geometric_rms_mm", Units.mToMm(pooledRms(cv, true)));
+        finite(c, "held_out_final_rms_mm", Units.mToMm(pooledRms(cv, false)));
         ObjectNode counts = c.putObject("effect_counts");
         effectCounts(cv).forEach(counts::put);
         ArrayNode per = c.putArray("per_fold");
@@ -158,8 +165,8 @@ public final class DiagnoseCommand implements Callable<Integer> {
             f.put("fold", k + 1);
             f.put("poses_train", d.geometric().train().size());
             f.put("poses_held_out", d.geometric().validate().size());
-            f.put("held_out_geometric_rms_mm", Units.mToMm(d.geometricValidateRmsM()));
-            f.put("held_out_final_rms_mm", Units.mToMm(d.finalValidateRmsM()));
+            finite(f, "held_out_geometric_rms_mm", Units.mToMm(d.geometricValidateRmsM()));
+            finite(f, "held_out_final_rms_mm", Units.mToMm(d.finalValidateRmsM()));
             ArrayNode e = f.putArray("effects");
             for (Diagnosis.Finding x : d.effects()) e.add(x.effect().label());
         }

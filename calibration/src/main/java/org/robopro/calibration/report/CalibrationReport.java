@@ -1,7 +1,5 @@
 package org.robopro.calibration.report;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -264,7 +262,7 @@ public final class CalibrationReport {
     public static String summaryJson(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns,
                                      List<String> warnings) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx, cv, concerns, warnings)) + "\n";
+            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(r, ctx, cv, concerns, warnings)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }

@@ -1,7 +1,6 @@
 package org.robopro.calibration.workflow;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -22,7 +21,7 @@ import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
+import org.robopro.models.OutputSet;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotFile;
 
@@ -282,12 +281,8 @@ public final class CalibrationWorkflow {
 
         /** Writes the four files into {@code dir}, whole or not at all; {@code overwrite} false refuses existing files. */
         public void write(Path dir, boolean overwrite) throws IOException {
-            Map<Path, byte[]> files = new LinkedHashMap<>();
-            files.put(dir.resolve(ROBOT_FILE), RobotFile.format(calibrated).getBytes(StandardCharsets.UTF_8));
-            files.put(dir.resolve(SUMMARY), summaryJson().getBytes(StandardCharsets.UTF_8));
-            files.put(dir.resolve(RESIDUALS), residualsCsv().getBytes(StandardCharsets.UTF_8));
-            files.put(dir.resolve(REPORT), reportHtml().getBytes(StandardCharsets.UTF_8));
-            AtomicFiles.writeAll(files, overwrite);
+            OutputSet.in(dir, overwrite).addString(ROBOT_FILE, RobotFile.format(calibrated)).addString(SUMMARY, summaryJson())
+                    .addString(RESIDUALS, residualsCsv()).addString(REPORT, reportHtml()).commit();
         }
     }
 
