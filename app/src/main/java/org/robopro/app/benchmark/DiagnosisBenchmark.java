@@ -90,16 +90,25 @@ public final class DiagnosisBenchmark {
         return out;
     }
 
+    /** A world campaign as the product reads it: training rows, and validation rows or null. */
+    public record Sets(MeasurementSet train, MeasurementSet validate) { }
+
+    /** Reads a trial's measurement text with the product's reader and splits it by its set column. */
+    public static Sets read(Scenario.Trial t) {
+        RobotDescription robot = RobotLibrary.shipped(t.scenario().robot());
+        MeasurementSet all = MeasurementReader.parse(t.scenario().name() + ".csv", t.campaign().text(),
+                robot.joints().stream().map(JointDescription::type).toList());
+        MeasurementSet validate = all.hasSplit() && all.split(Measurement.Split.VALIDATE).size() > 0
+                ? all.split(Measurement.Split.VALIDATE) : null;
+        return new Sets(all.hasSplit() ? all.split(Measurement.Split.TRAIN) : all, validate);
+    }
+
     /** One run: measure, write, read, diagnose, score. */
     public static Run run(Scenario s, long seed) {
         Scenario.Trial t = s.trial(seed);
         RobotDescription robot = RobotLibrary.shipped(s.robot());
-        MeasurementSet all = MeasurementReader.parse(s.name() + ".csv", t.campaign().text(),
-                robot.joints().stream().map(JointDescription::type).toList());
-        MeasurementSet train = all.split(Measurement.Split.TRAIN);
-        MeasurementSet validate = all.hasSplit() && all.split(Measurement.Split.VALIDATE).size() > 0
-                ? all.split(Measurement.Split.VALIDATE) : null;
-        Diagnosis d = Diagnoser.diagnose(robot, train, validate);
+        Sets sets = read(t);
+        Diagnosis d = Diagnoser.diagnose(robot, sets.train(), sets.validate());
         double floor = Math.sqrt(3) * t.campaign().plan().sigmaM();
         List<String> named = new ArrayList<>(), located = new ArrayList<>();
         Set<String> claims = new LinkedHashSet<>();
