@@ -276,22 +276,17 @@ public final class WorkbenchScenario {
     }
 
     /**
-     * Diagnosis in the calibration panel: a simulated IRB-2000 campaign with backlash injected on
-     * joint 2 (the diagnosis benchmark's case, approach directions recorded), Diagnose in the
-     * background, the finding shown in words, the extended model applied so the RAPID export is
-     * compensated with the Compensator on it.
+     * Diagnosis in the calibration panel: a campaign of the independent world simulator (an
+     * IRB-2000 with lost motion on joint 1, approach directions recorded, written as a measurement
+     * file with a train/validate set column), Diagnose in the background, the finding shown in
+     * words, the extended model applied so the RAPID export is compensated with the Compensator on it.
      */
     static void diagnosis(WorkbenchWindow win, Path out, Properties r) throws Exception {
         var wb = win.session();
         var frame = win.frame();
-        var camp = org.robopro.calibration.diagnosis.ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
-        List<org.robopro.calibration.measurement.Measurement> rows = new ArrayList<>();
-        for (var m : camp.measurements().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.TRAIN));
-        for (var m : camp.validation().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.VALIDATE));
+        var trial = org.robopro.world.Scenario.named("lost motion j1, directions recorded").trial(5);
         Path file = out.resolve("backlash-campaign.csv");
-        List<org.robopro.models.JointType> types = new ArrayList<>();
-        wb.model().robot().joints().forEach(j -> types.add(j.type()));
-        org.robopro.calibration.measurement.MeasurementWriter.write(camp.measurements().withRows(rows), types, file, true);
+        Files.writeString(file, trial.campaign().text());
         AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
         AtomicReference<Boolean> ok = new AtomicReference<>();
         WorkbenchWindow.onEdt(() -> {
