@@ -2,17 +2,16 @@ package org.robopro.app.cli;
 
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotDescription;
-import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Option;
 
 /**
- * Mixin {@code --robot ROBOT}: a shipped robot name (irb2000, irb2400, puma560) or a robot file
- * (docs/robot-file.md), loaded once; a bad file fails with the InputException naming file, line
+ * Mixin {@code --robot ROBOT}: a shipped robot name (irb2000, irb2400, puma560), a robot file
+ * (docs/robot-file.md) or a DH / modified DH table or URDF imported on the fly, loaded once; a bad file fails with the InputException naming file, line
  * and field.
  */
 public final class RobotOptions {
     @Option(names = "--robot", required = true, paramLabel = "ROBOT",
-            description = "shipped robot name (irb2000, irb2400, puma560) or robot file; the nominal model")
+            description = "shipped robot name (irb2000, irb2400, puma560), robot file, or DH (.dh), modified DH (.mdh) or URDF (.urdf) file; the nominal model")
     String robot;
 
     private RobotDescription description;
@@ -22,7 +21,7 @@ public final class RobotOptions {
     String name() { return robot; }
 
     RobotDescription description() {
-        if (description == null) description = RobotLibrary.load(robot);
+        if (description == null) description = Robots.load(robot);
         return description;
     }
 
