@@ -107,7 +107,7 @@ public final class DiagnosisReport {
 
     public static String json(Diagnosis d, Context ctx) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(d, ctx)) + "\n";
+            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(d, ctx)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }
