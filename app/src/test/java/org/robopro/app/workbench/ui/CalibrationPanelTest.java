@@ -19,7 +19,7 @@ class CalibrationPanelTest {
         assertEquals(1, d.effects().size(), "the benchmark case has one effect");
         String text = CalibrationPanel.diagnosisReport(d);
         Diagnosis.Finding f = d.effects().get(0);
-        assertTrue(text.contains("Backlash (lost motion on direction reversal) on joint 2"), text);
+        assertTrue(text.contains("Backlash (lost motion, the output lags the motor) on joint 2"), text);
         // The parameter is shown in degrees, converted from the finding's radians.
         String b = String.format(Locale.ROOT, "b = %.4f ± %.4f deg", Math.toDegrees(f.values()[0]), Math.toDegrees(f.sigmas()[0]));
         assertTrue(text.contains(b), "expected '" + b + "' in\n" + text);
