@@ -6,11 +6,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.robopro.calibration.compensation.TargetCompensator;
+import org.robopro.calibration.compensation.TargetCompensator.Status;
 import org.robopro.kinematics.IkSolution;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
-import org.robopro.models.Vec3;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 
@@ -20,24 +21,24 @@ import org.robopro.programs.sim.MoveStep;
  * model (seed paper §5, Fig. 5). Each named target is compensated with the tool and work object
  * of the first instruction that uses it; confdata comes from the nominal IK solution the
  * controller will use. Joint targets are left as they are (the controller moves the joints).
+ * The compensation itself is the calibration module's {@link TargetCompensator}.
  */
 public final class ProgramCompensation {
     private ProgramCompensation() { }
 
-    /** Compensates one TCP pose (base coordinates) for a tool flangeTtcp, starting near qSeed. */
-    @FunctionalInterface
-    public interface TargetCompensator {
-        Result compensate(Pose baseTtcp, Pose flangeTtcp, double[] qSeed);
-    }
+    /**
+     * One target's correction: how far the commanded pose moved (m, rad) and what is left.
+     * {@code status} is empty when the target was not compensated, and {@code notCompensated} says why.
+     */
+    public record Correction(String target, double shiftM, double turnRad, double residualM, double residualRad,
+                             Optional<Status> status, String notCompensated) {
+        /** Whether the target was compensated and the result may be sent to the controller. */
+        public boolean ok() { return status.isPresent() && status.get().ok(); }
 
-    /** The pose to command (base), the nominal joint values for it, the calibrated prediction's residual, and whether it converged. */
-    public record Result(Pose commandedBaseTtcp, double[] q, double residualM, double residualRad, boolean ok, String status) { }
-
-    /** One target's correction: how far the commanded pose moved (m, rad) and what is left. */
-    public record Correction(String target, double shiftM, double turnRad, double residualM, double residualRad, String status) {
         @Override public String toString() {
             return String.format(Locale.ROOT, "%-24s shift %8.3f mm  turn %7.4f deg  residual %.2e mm %.2e deg  %s", target,
-                    shiftM * 1e3, Math.toDegrees(turnRad), residualM * 1e3, Math.toDegrees(residualRad), status);
+                    shiftM * 1e3, Math.toDegrees(turnRad), residualM * 1e3, Math.toDegrees(residualRad),
+                    status.map(Status::label).orElse("not compensated: " + notCompensated));
         }
     }
 
@@ -45,36 +46,6 @@ public final class ProgramCompensation {
         public Outcome {
             corrections = List.copyOf(corrections);
         }
-    }
-
-    /**
-     * The seed paper's Fig. 5 iteration: nominal IK of the commanded pose, calibrated FK of those
-     * joints, move the commanded pose by the remaining error, until the calibrated prediction
-     * lands on the target. (The calibration module's Compensator implements the same loop.)
-     */
-    public static TargetCompensator fixedPoint(KinematicModel nominal, KinematicModel calibrated) {
-        InverseKinematics ik = InverseKinematics.of(nominal);
-        return (target, tool, seed) -> {
-            Pose comp = target;
-            double[] q = seed.clone();
-            double resP = Double.NaN, resR = Double.NaN;
-            for (int it = 0; it < 30; it++) {
-                Optional<IkSolution> s = ik.solveNear(comp.times(tool.inverse()), q);
-                if (s.isEmpty()) return new Result(comp, q, resP, resR, false, "unreachable");
-                q = s.get().q();
-                Pose actual = calibrated.flange(q).times(tool);
-                Vec3 dp = target.position().minus(actual.position());
-                Vec3 dr = target.times(actual.inverse()).rotationVector();
-                resP = dp.norm();
-                resR = dr.norm();
-                if (resP <= 1e-8 && resR <= 1e-8)
-                    return new Result(comp, q, resP, resR, nominal.withinLimits(q), nominal.withinLimits(q) ? "converged" : "out of limits");
-                Pose rot = resR > 0 ? Pose.rotAxis(dr, resR) : Pose.IDENTITY;
-                Pose rotated = rot.times(Pose.of(comp.rotationRowMajor(), 0, 0, 0));
-                comp = Pose.of(rotated.rotationRowMajor(), comp.x() + dp.x(), comp.y() + dp.y(), comp.z() + dp.z());
-            }
-            return new Result(comp, q, resP, resR, false, "not converged");
-        };
     }
 
     /** Compensates every robtarget of {@code module} run from procedure {@code entry}. */
@@ -150,18 +121,18 @@ public final class ProgramCompensation {
                                            List<Correction> corrections) {
         MoveStep s = use.step();
         if (!s.tool().robhold() || s.wobj().robhold()) {
-            corrections.add(new Correction(name, 0, 0, Double.NaN, Double.NaN, "not compensated: stationary tool"));
+            corrections.add(new Correction(name, 0, 0, Double.NaN, Double.NaN, Optional.empty(), "stationary tool"));
             return t;
         }
         Pose baseTtcp = use.baseTtcp();
         Optional<IkSolution> start = ik.solveWithConf(use.baseTflange(), t.robconf());
         double[] seed = start.map(IkSolution::q).orElseGet(() -> new double[ik.model().dof()]);
-        Result r = c.compensate(baseTtcp, s.flangeTtcp(), seed);
+        TargetCompensator.Result r = c.compensate(baseTtcp, s.flangeTtcp(), seed);
         Pose baseTobj = Teach.baseTobj(s.wobj());
-        Pose objTcommanded = baseTobj.inverse().times(r.commandedBaseTtcp());
-        corrections.add(new Correction(name, r.commandedBaseTtcp().distanceTo(baseTtcp), r.commandedBaseTtcp().angleTo(baseTtcp),
-                r.residualM(), r.residualRad(), r.status()));
-        if (!r.ok()) return t; // keep the target; the report says why
+        Pose objTcommanded = baseTobj.inverse().times(r.commanded());
+        corrections.add(new Correction(name, r.commanded().distanceTo(baseTtcp), r.commanded().angleTo(baseTtcp),
+                r.residualM(), r.residualRad(), Optional.of(r.status()), ""));
+        if (!r.status().ok()) return t; // keep the target; the report says why
         return new RobTarget(objTcommanded.position(), Quaternion.of(objTcommanded), ik.confOf(r.q()), t.extax());
     }
 }

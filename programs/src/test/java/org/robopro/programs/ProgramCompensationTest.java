@@ -4,8 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.Optional;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.compensation.TargetCompensator.Status;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
@@ -32,10 +35,10 @@ class ProgramCompensationTest {
         RapidModule m = RapidModule.builder("C").pers("tTorch", torch).pers("wTable", table).constant("pA", a)
                 .procedure("main", List.of(Move.moveJ(Ref.to("pA"), Ref.to("v1000"), Ref.to("fine"), "tTorch", "wTable"),
                         Move.moveL(Ref.inline(b), Ref.to("v100"), Ref.to("fine"), "tTorch", "wTable"))).build();
-        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, ProgramCompensation.fixedPoint(nominal, real));
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, new Compensator(nominal, real, Pose.IDENTITY, Pose.IDENTITY));
         assertEquals(2, out.corrections().size());
         for (ProgramCompensation.Correction c : out.corrections()) {
-            assertEquals("converged", c.status(), c.toString());
+            assertEquals(Optional.of(Status.CONVERGED), c.status(), c.toString());
             assertTrue(c.shiftM() > 1e-4, "the perturbation needs a visible correction: " + c);
         }
         String text = RapidWriter.export(out.module()).text();
@@ -69,10 +72,10 @@ class ProgramCompensationTest {
                 .procedure("main", List.of(Move.moveJ(Ref.to("pStart"), Ref.to("v1000"), Ref.to("fine"), "tTorch", "wTable"),
                         Move.moveC(Ref.to("pVia"), Ref.to("pEnd"), Ref.to("v100"), Ref.to("fine"), "tTorch", "wTable"),
                         Move.moveC(Ref.inline(via2), Ref.to("pStart"), Ref.to("v100"), Ref.to("fine"), "tTorch", "wTable"))).build();
-        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, ProgramCompensation.fixedPoint(nominal, real));
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, new Compensator(nominal, real, Pose.IDENTITY, Pose.IDENTITY));
         // pStart, pVia, pEnd by name, and the inline circle point of the second MoveC.
         assertEquals(4, out.corrections().size(), out.corrections().toString());
-        for (ProgramCompensation.Correction c : out.corrections()) assertEquals("converged", c.status(), c.toString());
+        for (ProgramCompensation.Correction c : out.corrections()) assertEquals(Optional.of(Status.CONVERGED), c.status(), c.toString());
         String text = RapidWriter.export(out.module()).text();
         List<MoveStep> intended = MotionInterpreter.of(m).moves("main");
         List<MoveStep> commanded = MotionInterpreter.of(RapidParser.parse(text, "C.mod")).moves("main");

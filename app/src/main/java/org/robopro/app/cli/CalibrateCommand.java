@@ -1,26 +1,16 @@
 package org.robopro.app.cli;
 
-import java.nio.file.Path;
 import java.time.Instant;
 import java.time.temporal.ChronoUnit;
-import java.util.LinkedHashMap;
 import java.util.Locale;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CancellationException;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.identification.CalibrationResult;
-import org.robopro.calibration.identification.Calibrator;
-import org.robopro.calibration.measurement.Measurement;
-import org.robopro.calibration.measurement.MeasurementReader;
-import org.robopro.calibration.measurement.MeasurementSet;
-import org.robopro.calibration.report.CalibrationReport;
-import org.robopro.kinematics.KinematicModel;
+import org.robopro.calibration.workflow.CalibrationWorkflow;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotDescription;
-import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -28,9 +18,9 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code robopro calibrate}: identifies a robot from a measurement file and writes
- * {@code DIR/calibrated.robot.json} (with provenance), {@code DIR/report.html} and
- * {@code DIR/summary.json} (docs/calibration.md). Validation data come from {@code --validate},
+ * {@code robopro calibrate}: the calibration workflow ({@link CalibrationWorkflow}) from the command
+ * line: writes {@code DIR/calibrated.robot.json} (with provenance), {@code DIR/report.html},
+ * {@code DIR/summary.json} and {@code DIR/residuals.csv} (docs/calibration.md). Validation data come from {@code --validate},
  * else from the file's {@code set} column. Ctrl-C cancels cleanly (nothing half-written).
  */
 @Command(name = "calibrate", mixinStandardHelpOptions = true,
@@ -58,57 +48,44 @@ public final class CalibrateCommand implements Callable<Integer> {
 
     @Spec CommandSpec spec;
 
+    @Option(names = "--folds", paramLabel = "K", description = "K-fold cross-validation of the training poses (K >= 2), per fold and overall")
+    Integer folds;
+
+    @Option(names = "--fold-seed", defaultValue = "1", paramLabel = "SEED", description = "seed of the fold assignment (default ${DEFAULT-VALUE})")
+    long foldSeed;
+
     @Override
     public Integer call() throws Exception {
         RobotDescription desc = robot.description();
-        KinematicModel nominal = robot.model();
-        MeasurementOptions.Data data = measurements.read(desc, holdout);
-        MeasurementSet all = data.all(), train = data.train(), val = data.validate();
-        if (all.robot() != null && !all.robot().equalsIgnoreCase(desc.name()))
-            spec.commandLine().getErr().printf("robopro: warning: %s was measured on '%s', calibrating '%s'%n", measurements.file(),
-                    all.robot(), desc.name());
         double[] t = CliSupport.numbers("--target", target, 3);
-        Cancellation cancel = new Cancellation();
-        Calibrator.Options o = Calibrator.Options.defaults()
+        CalibrationWorkflow.Settings settings = CalibrationWorkflow.Settings.defaults().withFolds(folds == null ? 0 : folds, foldSeed)
                 .withInitialTool(Pose.translation(Units.mmToM(t[0]), Units.mmToM(t[1]), Units.mmToM(t[2])))
-                .withOutliers(outlierK, !keepOutliers).withCancel(cancel)
-                .withProgress(CliSupport.progressBar(spec.commandLine().getErr()));
+                .withOutliers(outlierK, !keepOutliers);
+        CalibrationWorkflow.Campaign data = measurements.read(desc, holdout);
+        Cancellation cancel = new Cancellation();
         Thread hook = CliSupport.cancelOnInterrupt(cancel, Thread.currentThread());
-        CalibrationResult r;
+        CalibrationWorkflow.Outcome oc;
         try {
-            r = Calibrator.calibrate(nominal, train, val, o);
+            oc = CalibrationWorkflow.run(desc, data, settings, Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(), cancel,
+                    CliSupport.progressBar(spec.commandLine().getErr()));
         } catch (CancellationException e) {
             spec.commandLine().getErr().println("robopro: calibration cancelled; nothing written");
             return 130;
         } finally {
             CliSupport.removeHook(hook);
         }
-        String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
-        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), measurements.file().toString(), data.source(), created);
-        Map<String, String> prov = new LinkedHashMap<>(desc.provenance());
-        prov.put("calibrated-from", measurements.file().toString());
-        prov.put("calibrated-on", created);
-        prov.put("calibrated-nominal", desc.name());
-        prov.put("calibration-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.trainRmsM())));
-        if (val != null) prov.put("calibration-validate-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.validateRmsM())));
-        var p = r.flangeTtool().position();
-        prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
-                Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
-        RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
-        RobotLibrary.write(calibrated, out.file("calibrated.robot.json"), out.force());
-        java.util.List<String> warnings = CalibrationReport.warnings(r, train, val);
-        AtomicFiles.writeString(out.file("summary.json"), CalibrationReport.summaryJson(r, ctx, warnings), out.force());
-        AtomicFiles.writeString(out.file("report.html"), CalibrationReport.html(r, ctx, warnings), out.force());
+        oc.write(out.dir(), out.force());
+        CalibrationResult r = oc.result();
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(), r.train().size(),
                 r.sixD() ? "6-D" : "positions", Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
-        if (val != null) w.printf(Locale.ROOT, "  validation (%d poses): RMS %.4f mm -> %.4f mm, max %.4f mm%n", r.validate().size(),
+        if (data.validate() != null) w.printf(Locale.ROOT, "  validation (%d poses): RMS %.4f mm -> %.4f mm, max %.4f mm%n", r.validate().size(),
                 Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()), Units.mToMm(r.validateMaxM()));
         w.printf(Locale.ROOT, "  %d parameters fixed as unidentifiable, condition number %.3g, %d outliers%s%n",
                 r.unidentifiable().size(), r.conditionNumber(), r.outliers().size(),
                 r.outliers().isEmpty() ? "" : " (" + String.join(", ", r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList()) + ")");
         w.printf("  wrote %s%n", out.dir().toAbsolutePath());
-        for (String warning : warnings) spec.commandLine().getErr().println("robopro: warning: " + warning);
+        for (String warning : oc.warnings()) spec.commandLine().getErr().println("robopro: warning: " + warning);
         return 0;
     }
 }

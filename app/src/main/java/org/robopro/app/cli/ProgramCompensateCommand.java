@@ -4,8 +4,8 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
-import org.robopro.calibration.diagnosis.ExtendedModel;
 import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotLibrary;
@@ -49,25 +49,15 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
         RapidModule m = RapidParser.parse(TextFiles.readUtf8(file), file.toString());
         KinematicModel nominal = robot.model();
         RobotDescription realDesc = RobotLibrary.load(calibrated);
-        KinematicModel real = KinematicModel.build(realDesc);
-        ProgramCompensation.TargetCompensator tc = ProgramCompensation.fixedPoint(nominal, real);
-        if (!realDesc.effects().isEmpty()) {
-            // An extended model (robopro diagnose): the calibration Compensator predicts with its effects.
-            ExtendedModel ext = ExtendedModel.of(realDesc, calibrated);
-            PoseConditions cond = new PoseConditions(null, Double.NaN, tempC == null ? Double.NaN : tempC,
-                    payloadKg == null ? Double.NaN : payloadKg);
-            tc = (target, tool, seed) -> {
-                Compensator.Result r = new Compensator(nominal, ext, tool, tool, cond).compensate(target, seed);
-                return new ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
-                        r.status() == Compensator.Status.CONVERGED, r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
-            };
-        }
+        // An extended model (robopro diagnose) brings its effects, evaluated under the given conditions.
+        Compensator tc = Compensator.forRobotFile(nominal, realDesc, calibrated, Pose.IDENTITY, Pose.IDENTITY,
+                new PoseConditions(null, Double.NaN, tempC == null ? Double.NaN : tempC, payloadKg == null ? Double.NaN : payloadKg));
         ProgramCompensation.Outcome o = ProgramCompensation.compensate(m, proc, nominal, tc);
         AtomicFiles.writeString(out.file(), RapidWriter.export(o.module()).text(), out.force());
         boolean allOk = true;
         for (ProgramCompensation.Correction c : o.corrections()) {
             spec.commandLine().getOut().println(c);
-            allOk &= c.status().equals("converged");
+            allOk &= c.ok();
         }
         spec.commandLine().getOut().printf("wrote %s (%d targets compensated)%n", out.file(), o.corrections().size());
         return allOk ? 0 : 1;

@@ -16,11 +16,13 @@ import java.util.Map;
 import java.util.Random;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.compensation.TargetCompensator;
 import org.robopro.calibration.identification.CalibrationResult;
-import org.robopro.calibration.identification.Calibrator;
+import org.robopro.calibration.workflow.CalibrationWorkflow;
+import org.robopro.calibration.Cancellation;
+import org.robopro.calibration.Progress;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementSet;
-import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.calibration.simulation.PoseSampler;
 import org.robopro.comms.CommandInvoker;
 import org.robopro.comms.Commands;
@@ -330,23 +332,24 @@ public final class Demo {
             // -------------------------------------------------------------- 4. campaign, calibration, diagnosis, compensation
             begin(4);
             con.step(4, "Measurement campaign, calibration, diagnosis, compensation");
-            MeasurementSet[] sets = campaign(inv, nominal, desc, weld);
-            CalibrationResult cal = calibrate(nominal, desc, sets[0], sets[1], weld);
+            CalibrationWorkflow.Campaign sets = campaign(inv, nominal, desc, weld);
+            CalibrationResult cal = calibrate(desc, sets);
             double floorMm = Math.sqrt(3) * NOISE_MM;
             Run nominalRun = evaluate("nominal (off-line)", "DemoWeld", nominalReadings, targets, cal.instrumentTbase());
 
-            DiagnosisStep.Outcome diag = DiagnosisStep.run(con, desc, sets[0], sets[1], out);
+            DiagnosisStep.Outcome diag = DiagnosisStep.run(con, desc, sets.train(), sets.validate(), out);
 
             Pose toolCal = Pose.of(weld.flangeTtcp.rotationRowMajor(), cal.flangeTtool().x(), cal.flangeTtool().y(), cal.flangeTtool().z());
             Compensator geometric = new Compensator(nominal, cal.calibrated(), weld.flangeTtcp, toolCal);
-            RapidModule calModule = compensate(weld, nominal, t -> geometric, "DemoWeldCal", out);
+            RapidModule calModule = compensate(weld, nominal, geometric, "DemoWeldCal", out);
             List<Vec3> calReadings = runAndMeasure(inv, calModule, "DemoWeldCal", targetIdx);
             Run calibratedRun = evaluate("geometric calibration", "DemoWeldCal", calReadings, targets, cal.instrumentTbase());
 
             // The extended model predicts each target under the approach directions the program reaches it with.
             List<int[]> approach = approachDirections(check, moves);
-            RapidModule diagModule = compensate(weld, nominal, t -> diag.compensator(nominal, weld.flangeTtcp,
-                    new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)), "DemoWeldDiag", out);
+            TargetCompensator withEffects = (t, tool, seed) -> diag.compensator(nominal, weld.flangeTtcp,
+                    new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)).compensate(t, tool, seed);
+            RapidModule diagModule = compensate(weld, nominal, withEffects, "DemoWeldDiag", out);
             List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
             Run diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
 
@@ -410,8 +413,12 @@ public final class Demo {
         return st;
     }
 
-    /** The campaign through the link: sampled poses, tracker on the torch TCP; returns {train, validate}. */
-    private MeasurementSet[] campaign(CommandInvoker inv, KinematicModel nominal, RobotDescription desc, WeldProgram weld)
+    /**
+     * The campaign through the link: sampled poses, tracker on the torch TCP; written to
+     * measurements.csv with the workflow's hold-out rule in its set column (every 5th pose
+     * validates), and read back from there as every front end reads a campaign.
+     */
+    private CalibrationWorkflow.Campaign campaign(CommandInvoker inv, KinematicModel nominal, RobotDescription desc, WeldProgram weld)
             throws IOException {
         List<double[]> poses = new PoseSampler(nominal).sample(o.poses(), new Random(o.seed() * 31 + 7));
         inv.execute(Commands.setWorkObject(Pose.IDENTITY));
@@ -420,53 +427,42 @@ public final class Demo {
         long t0 = System.nanoTime();
         MeasurementSet all = MeasurementCampaign.run(inv, poses, desc.name(), String.format(Locale.ROOT,
                 "simulated laser tracker, reflector at the torch tip, sigma %.3f mm", NOISE_MM), bar::update);
-        List<Measurement> split = new ArrayList<>(), train = new ArrayList<>(), validate = new ArrayList<>();
-        for (int i = 0; i < all.size(); i++) {
-            boolean v = i % 5 == 4; // every 5th pose validates
-            Measurement m = all.rows().get(i).withSet(v ? Measurement.Split.VALIDATE : Measurement.Split.TRAIN);
-            split.add(m);
-            (v ? validate : train).add(m);
-        }
+        List<Measurement> split = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++)
+            split.add(all.rows().get(i).withSet(CalibrationWorkflow.heldOut(i, HOLDOUT) ? Measurement.Split.VALIDATE : Measurement.Split.TRAIN));
         List<JointType> types = desc.joints().stream().map(j -> j.type()).toList();
-        MeasurementCampaign.write(all.withRows(split), types, o.out().resolve("measurements.csv"), true);
+        Path file = o.out().resolve("measurements.csv");
+        MeasurementCampaign.write(all.withRows(split), types, file, true);
         bar.done("campaign: %d poses moved to and measured through the link in %.1f s -> measurements.csv", all.size(),
                 (System.nanoTime() - t0) / 1e9);
-        return new MeasurementSet[] {all.withRows(train), all.withRows(validate)};
+        return CalibrationWorkflow.load(desc, file, null, null);
     }
 
-    private CalibrationResult calibrate(KinematicModel nominal, RobotDescription desc, MeasurementSet train, MeasurementSet validate,
-                                        WeldProgram weld) throws IOException {
-        Calibrator.Options opts = Calibrator.Options.defaults().withInitialTool(Pose.translation(weld.flangeTtcp.position()));
-        CalibrationResult r = Calibrator.calibrate(nominal, train, validate, opts);
-        Path dir = o.out().resolve("calibration");
-        Files.createDirectories(dir);
-        CalibrationReport.Context ctx = new CalibrationReport.Context(desc.name(), "measurements.csv (set = train)",
-                "measurements.csv (set = validate)", Instant.now().truncatedTo(ChronoUnit.SECONDS).toString());
-        RobotLibrary.write(r.calibrated().toDescription(), dir.resolve("calibrated.robot.json"), true);
-        AtomicFiles.writeString(dir.resolve("summary.json"), CalibrationReport.summaryJson(r, ctx), true);
-        AtomicFiles.writeString(dir.resolve("report.html"), CalibrationReport.html(r, ctx), true);
+    /** Fraction of the campaign held out for validation. */
+    static final double HOLDOUT = 0.2;
+
+    /** The calibration workflow with its default settings, as {@code robopro calibrate} runs it, into calibration/. */
+    private CalibrationResult calibrate(RobotDescription desc, CalibrationWorkflow.Campaign c) throws IOException {
+        CalibrationWorkflow.Outcome oc = CalibrationWorkflow.run(desc, c, CalibrationWorkflow.Settings.defaults(),
+                Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(), Cancellation.NONE, Progress.NONE);
+        oc.write(o.out().resolve("calibration"), true);
+        CalibrationResult r = oc.result();
         con.line("calibrated (%d training poses): RMS %.3f mm -> %.4f mm; validation (%d poses) %.3f mm -> %.4f mm",
-                train.size(), Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()),
-                validate.size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()));
+                r.train().size(), Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()),
+                r.validate().size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()));
+        for (String w : oc.warnings()) con.line("warning: %s", w);
         con.line("tracker noise floor √3·σ = %.4f mm; what is left above it is not geometry (see the diagnosis)",
                 Math.sqrt(3) * NOISE_MM);
         return r;
     }
 
     /** Compensates every target of the program (Fig. 5) and writes the module. */
-    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, java.util.function.Function<Pose, Compensator> forTarget,
-                                   String name, Path out) throws IOException {
-        ProgramCompensation.TargetCompensator tc = (target, tool, seed) -> {
-            if (tool.distanceTo(weld.flangeTtcp) > 1e-9 || tool.angleTo(weld.flangeTtcp) > 1e-9)
-                throw new IllegalStateException("the demo compensates only the torch; got another tool " + tool);
-            Compensator.Result r = forTarget.apply(target).compensate(target, seed);
-            return new ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
-                    r.status() == Compensator.Status.CONVERGED, r.status().name().toLowerCase(Locale.ROOT).replace('_', ' '));
-        };
-        ProgramCompensation.Outcome oc = ProgramCompensation.compensate(weld.module, "main", nominal, tc);
+    private RapidModule compensate(WeldProgram weld, KinematicModel nominal, TargetCompensator compensator, String name, Path out)
+            throws IOException {
+        ProgramCompensation.Outcome oc = ProgramCompensation.compensate(weld.module, "main", nominal, compensator);
         double maxShift = 0;
         for (ProgramCompensation.Correction k : oc.corrections()) {
-            if (!"converged".equals(k.status())) throw new IllegalStateException("compensation of " + k.target() + ": " + k.status());
+            if (!k.ok()) throw new IllegalStateException("compensation of " + k);
             maxShift = Math.max(maxShift, k.shiftM());
         }
         String text = RapidWriter.export(oc.module()).text();

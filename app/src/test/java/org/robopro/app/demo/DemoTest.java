@@ -75,6 +75,15 @@ class DemoTest {
             assertTrue(Files.exists(out.resolve(f)), f);
         assertTrue(demoControllers().isEmpty(), "the controller process is ended: " + demoControllers());
 
+        // One calibration workflow: robopro calibrate on the demo's campaign (its set column) writes the same summary.json.
+        Path cli = dir.resolve("cli");
+        Outcome cal = run("calibrate", "--robot", "irb2000", "--measurements", out.resolve("measurements.csv").toString(),
+                "--out", cli.toString());
+        assertEquals(0, cal.code(), () -> cal.out() + cal.err());
+        assertEquals(Files.readString(out.resolve("calibration/summary.json")), Files.readString(cli.resolve("summary.json")),
+                "the demo and the command line give byte-identical summaries");
+        assertEquals(Files.readString(out.resolve("calibration/residuals.csv")), Files.readString(cli.resolve("residuals.csv")));
+
         // A second run into the same folder replaces the earlier demo's files.
         Outcome again = run("demo", "--seed", "3", "--poses", "40", "--passes", "1", "--out", out.toString());
         assertEquals(0, again.code(), () -> again.out() + again.err());

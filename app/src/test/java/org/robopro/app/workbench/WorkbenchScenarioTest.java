@@ -179,6 +179,7 @@ class WorkbenchScenarioTest {
         assertEquals("0", r.getProperty("simulateExit"));
         assertEquals("true", r.getProperty("calLoaded"));
         assertEquals("CancellationException", r.getProperty("calCancelled"), "Cancel stops the background calibration");
+        assertEquals("true", r.getProperty("calSummarySameAsCli"), "the workbench and robopro calibrate give the same summary.json");
         assertEquals("cancelled", r.getProperty("calStateAfterCancel"));
         assertEquals("done", r.getProperty("calState"));
         assertEquals("1000", r.getProperty("calProgress"));

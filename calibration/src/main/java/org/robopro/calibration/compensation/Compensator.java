@@ -17,24 +17,14 @@ import org.robopro.models.Vec3;
  * prediction at the commanded joint values lands on the target. The controller, which knows only
  * the nominal model, is then sent X_comp (or the joint values q). Positions and orientations
  * are both compensated. Immutable and thread-safe apart from {@link Batch}, which is one per thread.
+ *
+ * <p>The calibrated model is either geometric ({@link KinematicModel}) or extended with
+ * non-geometric effects ({@link ExtendedModel}, predicted under given {@link PoseConditions}).
  */
-public final class Compensator {
+public final class Compensator implements TargetCompensator {
     /** Convergence: position (m) and orientation (rad) residual of the calibrated prediction. */
     public static final double POSITION_TOLERANCE = 1e-8, ROTATION_TOLERANCE = 1e-8;
     public static final int MAX_ITERATIONS = 30;
-
-    /** How a compensation ended. */
-    public enum Status { CONVERGED, NOT_CONVERGED, UNREACHABLE, OUT_OF_LIMITS }
-
-    /**
-     * @param commanded  X_comp: the coordinates to send to the nominal controller (same frame as the target)
-     * @param q          the joint values the nominal controller computes for X_comp (send these instead if it takes joints)
-     * @param residualM  distance between the target and the calibrated prediction at q, m
-     * @param residualRad angle between them, rad
-     * @param iterations Fig. 5 iterations used
-     * @param status     how it ended
-     */
-    public record Result(Pose commanded, double[] q, double residualM, double residualRad, int iterations, Status status) { }
 
     private final KinematicModel nominal, calibrated;
     private final ExtendedModel extended; // null: geometry only
@@ -85,25 +75,46 @@ public final class Compensator {
     public KinematicModel calibrated() { return calibrated; }
 
     /**
-     * Reference path: compensates one target baseTtool, choosing the nominal IK solution nearest
-     * to {@code qSeed} (controller values) first and then staying on its branch.
+     * Reference path: compensates one target baseTtool (the constructor's tools), choosing the
+     * nominal IK solution nearest to {@code qSeed} (controller values) first and then staying on its branch.
      */
     public Result compensate(Pose baseTtarget, double[] qSeed) {
+        return fixedPoint(baseTtarget, toolNominal, toolCalibrated, qSeed);
+    }
+
+    /**
+     * {@inheritDoc} When {@code flangeTtool} is the nominal tool this compensator was made with,
+     * the calibrated tool stands in for it in the prediction; any other tool is taken as the
+     * program defines it (calibration identified only the one tool).
+     */
+    @Override
+    public Result compensate(Pose baseTtarget, Pose flangeTtool, double[] qSeed) {
+        boolean same = flangeTtool.distanceTo(toolNominal) <= SAME_TOOL_M && flangeTtool.angleTo(toolNominal) <= SAME_TOOL_RAD;
+        return fixedPoint(baseTtarget, flangeTtool, same ? toolCalibrated : flangeTtool, qSeed);
+    }
+
+    /** A program's tool within this of the nominal tool (m, rad; file rounding) is that tool. */
+    private static final double SAME_TOOL_M = 1e-9, SAME_TOOL_RAD = 1e-9;
+
+    /** The Fig. 5 iteration for a tool as the controller knows it and as the calibrated model predicts it. */
+    private Result fixedPoint(Pose baseTtarget, Pose flangeTtoolNominal, Pose flangeTtoolCalibrated, double[] qSeed) {
         Pose comp = baseTtarget;
         double[] q = qSeed.clone();
+        Pose toolNominalInv = flangeTtoolNominal.inverse();
         double resP = Double.NaN, resR = Double.NaN;
         for (int it = 1; it <= MAX_ITERATIONS; it++) {
-            Optional<IkSolution> s = ik.solveNear(comp.times(toolNominal.inverse()), q);
+            Optional<IkSolution> s = ik.solveNear(comp.times(toolNominalInv), q);
             if (s.isEmpty()) return new Result(comp, q, resP, resR, it, Status.UNREACHABLE);
             q = s.get().q();
-            Pose actual = extended != null ? extended.tool(q, toolCalibrated, conditions) : calibrated.flange(q).times(toolCalibrated);
+            Pose actual = extended != null ? extended.tool(q, flangeTtoolCalibrated, conditions)
+                    : calibrated.flange(q).times(flangeTtoolCalibrated);
             Vec3 dp = baseTtarget.position().minus(actual.position());
             Vec3 dr = baseTtarget.times(actual.inverse()).rotationVector(); // Log(R_t R_aᵀ), base axes
             resP = dp.norm();
             resR = dr.norm();
             if (resP <= POSITION_TOLERANCE && resR <= ROTATION_TOLERANCE)
                 return new Result(comp, q, resP, resR, it, nominal.withinLimits(q) ? Status.CONVERGED : Status.OUT_OF_LIMITS);
-            Pose rot = resR > 0 ? Pose.rotAxis(dr, resR) : Pose.IDENTITY;
+            Pose rot = resR > 1e-12 ? Pose.rotAxis(dr, resR) : Pose.IDENTITY; // below: round-off, no axis to normalise
             Pose rotated = rot.times(Pose.of(comp.rotationRowMajor(), 0, 0, 0));
             comp = Pose.of(rotated.rotationRowMajor(), comp.x() + dp.x(), comp.y() + dp.y(), comp.z() + dp.z());
         }

@@ -86,13 +86,16 @@ public final class CalibrationReport {
         return summary(r, ctx, warnings(r, null, null));
     }
 
-    /** The summary with these {@code warnings} (see {@link #warnings}). */
+    /**
+     * The summary with these {@code warnings} (see {@link #warnings}): a function of the data and
+     * settings only (no date, no wall time; those are in the report), so the same campaign gives
+     * the same bytes whichever front end ran it.
+     */
     public static Map<String, Object> summary(CalibrationResult r, Context ctx, List<String> warnings) {
         Map<String, Object> s = new LinkedHashMap<>();
         s.put("robot", ctx.robot());
         s.put("measurements", ctx.measurements());
         s.put("validation", ctx.validation());
-        s.put("created", ctx.created());
         s.put("poses_train", r.train().size());
         s.put("poses_validate", r.validate().size());
         s.put("six_d", r.sixD());
@@ -145,7 +148,6 @@ public final class CalibrationReport {
         solver.put("nominal_fit", lm(r.nominalFit()));
         solver.put("fit", lm(r.fit()));
         s.put("solver", solver);
-        s.put("elapsed_ms", r.elapsedMs());
         s.put("warnings", List.copyOf(warnings));
         return s;
     }
@@ -179,7 +181,7 @@ public final class CalibrationReport {
 
     public static String summaryJson(CalibrationResult r, Context ctx, List<String> warnings) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx, warnings)) + "\n";
+            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(r, ctx, warnings)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }

@@ -87,4 +87,33 @@ class CompensatorTest {
         // The true robot at the returned joints reaches the world target.
         assertEquals(0, worldTbase.times(c.truth().model().flange(w.q())).distanceTo(worldTarget), 1e-8);
     }
+
+    @Test
+    void compensateWithTool_nominalToolGetsCalibratedTool_otherToolsKeptAsGiven() {
+        Campaign c = CampaignSimulator.simulate(NOMINAL, SimulationSettings.defaults().withSeed(15).withBaseFrame(true));
+        KinematicModel real = c.truth().model();
+        Pose toolNominal = Pose.translation(0, 0, 0.1), toolReal = Pose.translation(0.002, -0.001, 0.103);
+        TargetCompensator comp = new Compensator(NOMINAL, real, toolNominal, toolReal);
+        double[] q0 = {0.2, 0.1, -0.1, 0.3, 0.5, -0.2};
+        Pose target = NOMINAL.flange(q0).times(toolNominal);
+        // The tool calibrated for: the real robot with the real tool reaches the target.
+        TargetCompensator.Result r = comp.compensate(target, toolNominal, q0);
+        assertEquals(TargetCompensator.Status.CONVERGED, r.status());
+        assertEquals(0, real.flange(r.q()).times(toolReal).distanceTo(target), 1e-8);
+        assertTrue(real.flange(r.q()).times(toolNominal).distanceTo(target) > 1e-3, "the calibrated tool must matter");
+        // Another tool is taken as given in both models.
+        Pose other = Pose.translation(0, 0.05, 0.2).times(Pose.rotX(0.3));
+        Pose target2 = NOMINAL.flange(q0).times(other);
+        TargetCompensator.Result r2 = comp.compensate(target2, other, q0);
+        assertEquals(TargetCompensator.Status.CONVERGED, r2.status());
+        assertEquals(0, real.flange(r2.q()).times(other).distanceTo(target2), 1e-8);
+        assertEquals(0, real.flange(r2.q()).times(other).angleTo(target2), 1e-8);
+    }
+
+    @Test
+    void status_onlyConvergedIsOk() {
+        for (TargetCompensator.Status s : TargetCompensator.Status.values())
+            assertEquals(s == TargetCompensator.Status.CONVERGED, s.ok(), s.label());
+        assertEquals("not converged", TargetCompensator.Status.NOT_CONVERGED.label());
+    }
 }

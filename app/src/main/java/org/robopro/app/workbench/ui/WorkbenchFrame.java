@@ -40,11 +40,12 @@ import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.app.workbench.scene.CameraState;
+import org.robopro.app.workbench.scene.WorkbenchApp;
 import org.robopro.kinematics.Pose;
 
 /**
@@ -55,7 +56,9 @@ import org.robopro.kinematics.Pose;
  */
 public final class WorkbenchFrame extends JFrame {
 
-    private final Workbench wb;
+    private final WorkbenchSession wb;
+    private final WorkbenchApp app;
+    private final WindowOps window;
     private final Map<String, Action> actions = new LinkedHashMap<>();
     private final CellTree tree;
     private final PropertiesPanel properties;
@@ -71,9 +74,17 @@ public final class WorkbenchFrame extends JFrame {
     private JSplitPane mainSplit;
     private JSplitPane midSplit;
 
-    public WorkbenchFrame(Workbench wb, AwtPanel view) {
+    /** What the frame asks of the window around it: a picture of itself, and closing everything. */
+    public interface WindowOps {
+        void screenshot(Path png) throws IOException, InterruptedException;
+        void close();
+    }
+
+    public WorkbenchFrame(WorkbenchSession wb, WorkbenchApp app, AwtPanel view, WindowOps window) {
         super("robopro workbench");
         this.wb = wb;
+        this.app = app;
+        this.window = window;
         setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         addWindowListener(new WindowAdapter() {
             @Override public void windowClosing(WindowEvent e) { action("exit").actionPerformed(null); }
@@ -114,7 +125,8 @@ public final class WorkbenchFrame extends JFrame {
         setContentPane(content);
 
         wb.model().addListener(this::modelChanged);
-        wb.app().pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
+        wb.addLogListener(line -> SwingUtilities.invokeLater(() -> appendLog(line)));
+        wb.pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
         new Timer(500, e -> updateStatus()).start();
     }
 
@@ -151,7 +163,7 @@ public final class WorkbenchFrame extends JFrame {
     /** Asks which procedure of an uploaded module becomes the program (main preselected); null when cancelled. */
     String chooseProcedure(java.util.List<String> procs) {
         return (String) JOptionPane.showInputDialog(this, "The module has " + procs.size() + " procedures. Which one is the program?",
-                "Upload program: PROC", JOptionPane.QUESTION_MESSAGE, null, procs.toArray(), Workbench.defaultProcedure(procs));
+                "Upload program: PROC", JOptionPane.QUESTION_MESSAGE, null, procs.toArray(), WorkbenchSession.defaultProcedure(procs));
     }
 
     public boolean importRapid(Path file) {
@@ -237,7 +249,7 @@ public final class WorkbenchFrame extends JFrame {
 
     /** Target statuses of the last background path check (none before the first). */
     private Map<String, org.robopro.app.workbench.model.TargetStatus> latestStatuses() {
-        var r = wb.app().pathChecker().latest();
+        var r = wb.pathChecker().latest();
         return r == null ? Map.of() : r.statuses();
     }
 
@@ -256,7 +268,7 @@ public final class WorkbenchFrame extends JFrame {
         Pose p = wb.model().worldTtcp();
         status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %.0f fps  |  %s",
                 wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, wb.model().targets().size(),
-                wb.model().program().size(), wb.app().fps(), wb.model().kinematics().implementation()));
+                wb.model().program().size(), app.fps(), wb.model().kinematics().implementation()));
         updateTitle();
     }
 
@@ -328,7 +340,7 @@ public final class WorkbenchFrame extends JFrame {
         def("screenshot", "Save screenshot...", null, e -> {
             Path p = choose(true, ".png");
             if (p != null) new Thread(() -> {
-                try { wb.screenshot(p); wb.log("Screenshot " + p); } catch (Exception ex) { wb.log("Screenshot failed: " + ex); }
+                try { window.screenshot(p); wb.log("Screenshot " + p); } catch (Exception ex) { wb.log("Screenshot failed: " + ex); }
             }, "screenshot").start();
         });
         def("exit", "Exit", "ctrl Q", e -> {
@@ -337,7 +349,7 @@ public final class WorkbenchFrame extends JFrame {
                 if (r == JOptionPane.CANCEL_OPTION || r == JOptionPane.CLOSED_OPTION) return;
                 if (r == JOptionPane.YES_OPTION) { action("save").actionPerformed(null); if (wb.model().dirty()) return; }
             }
-            new Thread(() -> { wb.close(); System.exit(0); }, "exit").start();
+            new Thread(() -> { window.close(); System.exit(0); }, "exit").start();
         });
         def("add-table", "Add table", null, e -> wb.addObject(CellObject.Kind.TABLE));
         def("add-fixture", "Add fixture", null, e -> wb.addObject(CellObject.Kind.FIXTURE));
@@ -350,10 +362,10 @@ public final class WorkbenchFrame extends JFrame {
         });
         def("delete", "Delete selection", "DELETE", e -> wb.deleteSelection());
         def("edit-tool", "Tool...", null, e -> wb.model().select("tool"));
-        def("view-front", "Front view", "F1", e -> wb.setView(CameraState.View.FRONT));
-        def("view-top", "Top view", "F2", e -> wb.setView(CameraState.View.TOP));
-        def("view-side", "Side view", "F3", e -> wb.setView(CameraState.View.SIDE));
-        def("view-iso", "Isometric view", "F4", e -> wb.setView(CameraState.View.ISO));
+        def("view-front", "Front view", "F1", e -> app.camera().view(CameraState.View.FRONT));
+        def("view-top", "Top view", "F2", e -> app.camera().view(CameraState.View.TOP));
+        def("view-side", "Side view", "F3", e -> app.camera().view(CameraState.View.SIDE));
+        def("view-iso", "Isometric view", "F4", e -> app.camera().view(CameraState.View.ISO));
         def("show-frames", "Show frames (joint axes)", null, e -> wb.model().setShowFrames(!wb.model().showFrames()));
         def("show-path", "Show targets and path", null, e -> wb.model().setShowPath(!wb.model().showPath()));
         def("teach", "Teach target", "ctrl T", e -> wb.teach());
@@ -460,17 +472,17 @@ public final class WorkbenchFrame extends JFrame {
                 if (Math.abs(e.getX() - px) + Math.abs(e.getY() - py) > 3) dragged = true;
                 double h = Math.max(1, view.getHeight());
                 if ((e.getModifiersEx() & (InputEvent.BUTTON3_DOWN_MASK | InputEvent.BUTTON2_DOWN_MASK)) != 0
-                        || e.isShiftDown()) wb.app().camera().pan(dx / h, dy / h);
-                else wb.app().camera().orbit(-dx * 0.01, dy * 0.01);
+                        || e.isShiftDown()) app.camera().pan(dx / h, dy / h);
+                else app.camera().orbit(-dx * 0.01, dy * 0.01);
             }
 
             @Override
             public void mouseReleased(MouseEvent e) {
                 if (dragged || e.getButton() != MouseEvent.BUTTON1) return;
-                wb.app().pick(e.getX(), e.getY()).thenAccept(k -> SwingUtilities.invokeLater(() -> wb.model().select(k)));
+                app.pick(e.getX(), e.getY()).thenAccept(k -> SwingUtilities.invokeLater(() -> wb.model().select(k)));
             }
 
-            @Override public void mouseWheelMoved(MouseWheelEvent e) { wb.app().camera().zoom(Math.pow(1.12, e.getPreciseWheelRotation())); }
+            @Override public void mouseWheelMoved(MouseWheelEvent e) { app.camera().zoom(Math.pow(1.12, e.getPreciseWheelRotation())); }
         };
         view.addMouseListener(m);
         view.addMouseMotionListener(m);

@@ -1,25 +1,15 @@
 package org.robopro.app.workbench;
 
-import com.jme3.system.AppSettings;
-import com.jme3.system.awt.AwtPanel;
-import com.jme3.system.awt.AwtPanelsContext;
-import com.jme3.system.awt.PaintMode;
-import java.awt.Dimension;
-import java.awt.Graphics2D;
-import java.awt.Point;
-import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.logging.Level;
+import java.util.function.Consumer;
 import java.util.logging.Logger;
-import javax.imageio.ImageIO;
-import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.app.workbench.model.Instruction;
@@ -27,10 +17,8 @@ import org.robopro.app.workbench.model.ProgramModule;
 import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.ProjectData;
 import org.robopro.app.workbench.model.Target;
+import org.robopro.app.workbench.model.PathChecker;
 import org.robopro.app.workbench.model.WorkbenchModel;
-import org.robopro.app.workbench.scene.CameraState;
-import org.robopro.app.workbench.scene.WorkbenchApp;
-import org.robopro.app.workbench.ui.WorkbenchFrame;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.TextFiles;
@@ -42,119 +30,84 @@ import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.rapid.RapidWriter;
 
 /**
- * The workbench: model, 3D view and Swing shell, and the operations the menus, buttons and
- * tests call (the "UI layer"). Mutations happen on the Swing thread; the 3D scene follows the
- * model on the render thread. Lengths in metres and angles in radians unless a name says mm/deg.
+ * The workbench's headless session: the cell model and every operation the menus, buttons,
+ * the command line and tests call (jog, teach, RAPID import and export, compensation, the
+ * controller link, calibration and diagnosis, cell edits, project files, the log). It knows
+ * nothing of Swing or the 3D view, so its operations are tested without a display; the window
+ * ({@code ui.WorkbenchWindow}) is a view over it. Mutations happen on the UI thread (the
+ * caller's thread when there is no window; see {@link #setUiThread}). Lengths in metres and
+ * angles in radians unless a name says mm/deg.
  */
-public final class Workbench {
-    private static final Logger LOG = Logger.getLogger(Workbench.class.getName());
+public final class WorkbenchSession implements AutoCloseable {
+    private static final Logger LOG = Logger.getLogger(WorkbenchSession.class.getName());
 
-    /** How to start. */
-    public record Options(int width, int height, Path project, boolean visible, int frameRateCap, long firstFrameTimeoutMs) {
-        public static Options defaults() { return new Options(1280, 720, null, true, 60, 20_000); }
-        public Options withSize(int w, int h) { return new Options(w, h, project, visible, frameRateCap, firstFrameTimeoutMs); }
-        public Options withProject(Path p) { return new Options(width, height, p, visible, frameRateCap, firstFrameTimeoutMs); }
-        public Options withFrameRateCap(int f) { return new Options(width, height, project, visible, f, firstFrameTimeoutMs); }
-    }
+    /** Edits closer together than this cost one path check. */
+    public static final long PATH_CHECK_DEBOUNCE_MS = 120;
 
     private final WorkbenchModel model;
-    private final WorkbenchApp app;
+    private final PathChecker pathChecker;
     private final List<String> log = new ArrayList<>();
+    private final List<Consumer<String>> logListeners = new CopyOnWriteArrayList<>();
     private volatile Path projectFile;
-    private WorkbenchFrame frame;
-    private AwtPanel panel;
+    private volatile Consumer<Runnable> uiThread = Runnable::run;
     private ProjectStore.Autosave autosave;
-    private long startNanos;
-    private long firstFrameNanos;
 
-    private Workbench(ProjectData data, Path projectFile) {
+    /** A session on a project's contents; {@code projectFile} is where it was read from (null: untitled). */
+    public WorkbenchSession(ProjectData data, Path projectFile) {
         this.model = new WorkbenchModel(data.robotRef(), data.robot());
         model.load(data);
         model.setQ(DefaultCell.readyPose().length == data.robot().dof() ? DefaultCell.readyPose() : new double[data.robot().dof()]);
         model.markSaved();
         this.projectFile = projectFile;
-        this.app = new WorkbenchApp(model, this::resolveMesh);
+        this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
+    }
+
+    /** A session on the given project, or on the IRB-2000 welding cell when {@code project} is null. */
+    public static WorkbenchSession open(Path project) throws IOException {
+        return new WorkbenchSession(project == null ? DefaultCell.irb2000Welding() : ProjectStore.read(project), project);
     }
 
     /**
-     * Opens the workbench (the given project, or the IRB-2000 welding cell) and waits for its
-     * first frame. Throws when the 3D view cannot start (no OpenGL context): callers must exit
-     * with a failure status then.
+     * Where model mutations made by background work (controller upload) run, and where a
+     * procedure chooser is asked: the window passes its Swing thread. Default: the calling thread.
      */
-    public static Workbench open(Options o) throws IOException, InterruptedException {
-        long t0 = System.nanoTime();
-        ProjectData data = o.project() == null ? DefaultCell.irb2000Welding() : ProjectStore.read(o.project());
-        Workbench w = new Workbench(data, o.project());
-        w.startNanos = t0;
-        w.start(o);
-        return w;
-    }
+    public void setUiThread(Consumer<Runnable> runAndWait) { this.uiThread = runAndWait; }
 
-    private void start(Options o) throws InterruptedException {
-        AppSettings s = new AppSettings(true);
-        s.setCustomRenderer(AwtPanelsContext.class);
-        s.setFrameRate(o.frameRateCap());
-        s.setAudioRenderer(null);
-        s.setResolution(o.width(), o.height());
-        s.setTitle("robopro workbench");
-        app.setSettings(s);
-        app.setShowSettings(false);
-        app.setPauseOnLostFocus(false);
-        app.start();
-        AwtPanelsContext ctx = (AwtPanelsContext) app.getContext();
-        panel = ctx.createPanel(PaintMode.Accelerated);
-        panel.setPreferredSize(new Dimension(800, 500));
-        ctx.setInputSource(panel);
-        onEdt(() -> {
-            frame = new WorkbenchFrame(this, panel);
-            frame.sizeTo(o.width(), o.height());
-            frame.setLocation(0, 0);
-            frame.setVisible(o.visible());
-            frame.validate();
-        });
-        app.setPanel(panel);
-        try {
-            app.awaitFirstFrame(o.firstFrameTimeoutMs());
-        } catch (IllegalStateException e) {
-            close();
-            throw e;
-        }
-        firstFrameNanos = System.nanoTime();
-        log("Ready: " + model.robot().displayName() + " (" + model.kinematics().implementation() + "), first frame after "
-                + String.format(java.util.Locale.ROOT, "%.2f s", secondsToFirstFrame()));
-        autosave = new ProjectStore.Autosave(this::autosaveTarget, model, 60_000);
+    /** Writes the model to its autosave file every {@code periodMs} while it has unsaved changes. */
+    public void startAutosave(int periodMs) {
+        if (autosave != null) return;
+        autosave = new ProjectStore.Autosave(this::autosaveTarget, model, periodMs);
         autosave.start();
     }
 
-    public static void onEdt(Runnable r) {
-        if (SwingUtilities.isEventDispatchThread()) { r.run(); return; }
-        try {
-            SwingUtilities.invokeAndWait(r);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (InvocationTargetException e) {
-            Throwable c = e.getCause();
-            if (c instanceof RuntimeException re) throw re;
-            if (c instanceof Error er) throw er;
-            throw new IllegalStateException(c);
-        }
-    }
-
     public WorkbenchModel model() { return model; }
-    public WorkbenchApp app() { return app; }
-    public WorkbenchFrame frame() { return frame; }
+    /** The background path check of the program (debounced; listeners hand results to their own thread). */
+    public PathChecker pathChecker() { return pathChecker; }
     public Optional<Path> projectFile() { return Optional.ofNullable(projectFile); }
-    public double secondsToFirstFrame() { return (firstFrameNanos - startNanos) / 1e9; }
     public synchronized List<String> log() { return List.copyOf(log); }
 
-    /** Adds a line to the log panel. */
+    /** Told (on the logging thread) about every log line. */
+    public void addLogListener(Consumer<String> l) { logListeners.add(l); }
+
+    /** Adds a line to the log. */
     public void log(String line) {
         synchronized (this) { log.add(line); }
         LOG.fine(line);
-        if (frame != null) SwingUtilities.invokeLater(() -> frame.appendLog(line));
+        for (Consumer<String> l : logListeners) l.accept(line);
     }
 
-    private Path resolveMesh(String path) {
+    /**
+     * Waits until the background path check has caught up with the model (for tests and
+     * screenshots; interactive use never waits).
+     */
+    public PathChecker.Result awaitPathCheck() throws InterruptedException {
+        var r = pathChecker.awaitCurrent(60_000);
+        if (r == null) throw new IllegalStateException("the path check did not finish within 60 s");
+        return r;
+    }
+
+    /** A mesh or robot file path as written in the project: relative ones are beside the project file. */
+    public Path resolvePath(String path) {
         Path p = Path.of(path);
         if (p.isAbsolute() || projectFile == null) return p;
         return projectFile.toAbsolutePath().getParent().resolve(p);
@@ -252,13 +205,12 @@ public final class Workbench {
         var nominal = model.kinematics().kinematicModel();
         if (cal != null && nominal.isPresent()) {
             var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
-                    ext != null && ext.hasEffects() ? extendedCompensator(nominal.get(), ext, compensationConditions)
-                            : org.robopro.programs.ProgramCompensation.fixedPoint(nominal.get(), cal));
+                    compensator(nominal.get(), cal, ext, compensationConditions));
             module = out.module();
             double max = 0;
             for (var c : out.corrections()) {
                 max = Math.max(max, c.shiftM());
-                if (!"converged".equals(c.status())) log("Compensation: " + c);
+                if (!c.ok()) log("Compensation: " + c);
             }
             log(String.format(java.util.Locale.ROOT, "Compensated %d targets with the %s (largest shift %.3f mm)",
                     out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
@@ -373,7 +325,7 @@ public final class Workbench {
 
     /** Uploads program {@code name} and makes its {@code main} (or its only procedure) the workbench program. */
     public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name) {
-        return uploadProgram(name, Workbench::defaultProcedure);
+        return uploadProgram(name, WorkbenchSession::defaultProcedure);
     }
 
     /** "main" when the module has it, else its first procedure. */
@@ -389,7 +341,7 @@ public final class Workbench {
 
     /**
      * Uploads program {@code name} and makes the procedure {@code chooseProc} picks from the
-     * module's procedures (called on the Swing thread; null cancels and changes nothing) the
+     * module's procedures (called on the UI thread; null cancels and changes nothing) the
      * workbench program. The procedure runs through the programs module's interpreter, so calls,
      * loops, MoveC and Offs are flattened into the instructions it executes.
      */
@@ -401,10 +353,10 @@ public final class Workbench {
             ParsedModule parsed = RapidParser.parseDetailed(text, "controller:" + name);
             List<String> procs = procedures(parsed);
             AtomicReference<String> proc = new AtomicReference<>();
-            onEdt(() -> proc.set(procs.size() == 1 ? procs.get(0) : chooseProc.apply(procs)));
+            uiThread.accept(() -> proc.set(procs.size() == 1 ? procs.get(0) : chooseProc.apply(procs)));
             if (proc.get() == null) throw new java.util.concurrent.CancellationException("no procedure chosen");
             ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, proc.get());
-            onEdt(() -> model.replaceProgram(imp));
+            uiThread.accept(() -> model.replaceProgram(imp));
             for (String n : imp.notes()) log("Upload: " + n);
             log("Uploaded " + name + " (" + text.length() + " bytes), PROC " + proc.get() + ": " + imp.targets().size() + " targets, "
                     + imp.program().size() + " instructions");
@@ -471,48 +423,56 @@ public final class Workbench {
         compensationConditions = new org.robopro.calibration.PoseConditions(null, Double.NaN, tempC, payloadKg);
     }
 
-    /** The calibration module's Compensator with an extended model, per target and tool (as `robopro program compensate`). */
-    static org.robopro.programs.ProgramCompensation.TargetCompensator extendedCompensator(org.robopro.kinematics.KinematicModel nominal,
-            org.robopro.calibration.diagnosis.ExtendedModel ext, org.robopro.calibration.PoseConditions cond) {
-        return (target, tool, seed) -> {
-            var r = new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond).compensate(target, seed);
-            return new org.robopro.programs.ProgramCompensation.Result(r.commanded(), r.q(), r.residualM(), r.residualRad(),
-                    r.status() == org.robopro.calibration.compensation.Compensator.Status.CONVERGED,
-                    r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
-        };
+    /** The calibration module's Compensator on the extended model when it has effects, else on the calibrated geometry. */
+    static org.robopro.calibration.compensation.Compensator compensator(org.robopro.kinematics.KinematicModel nominal,
+            org.robopro.kinematics.KinematicModel cal, org.robopro.calibration.diagnosis.ExtendedModel ext,
+            org.robopro.calibration.PoseConditions cond) {
+        var tool = org.robopro.kinematics.Pose.IDENTITY; // the program's tools are given per target
+        return ext != null && ext.hasEffects() ? new org.robopro.calibration.compensation.Compensator(nominal, ext, tool, tool, cond)
+                : new org.robopro.calibration.compensation.Compensator(nominal, cal, tool, tool);
     }
 
     /** The applied calibrated model (RAPID export is compensated with it), if any. */
     public Optional<org.robopro.kinematics.KinematicModel> calibratedModel() { return Optional.ofNullable(calibratedModel); }
 
-    /** Training and validation sets of a measurement file: its set column, else every 5th pose held out. */
-    public record Measurements(Path file, org.robopro.calibration.measurement.MeasurementSet train,
-                               org.robopro.calibration.measurement.MeasurementSet validate) { }
-
-    public Measurements loadMeasurements(Path file) throws IOException {
-        var all = org.robopro.calibration.measurement.MeasurementReader.read(file, model.robot());
-        if (all.hasSplit()) {
-            var v = all.split(org.robopro.calibration.measurement.Measurement.Split.VALIDATE);
-            return new Measurements(file, all.split(org.robopro.calibration.measurement.Measurement.Split.TRAIN), v.size() == 0 ? null : v);
-        }
-        List<org.robopro.calibration.measurement.Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-        for (int i = 0; i < all.size(); i++) (i % 5 == 4 ? va : tr).add(all.rows().get(i));
-        return new Measurements(file, all.withRows(tr), va.isEmpty() ? null : all.withRows(va));
+    /**
+     * Training and validation sets of a measurement file, split by the calibration workflow: its
+     * set column, else every 5th pose held out.
+     */
+    public record Measurements(org.robopro.calibration.workflow.CalibrationWorkflow.Campaign campaign) {
+        public Path file() { return campaign.file(); }
+        public org.robopro.calibration.measurement.MeasurementSet train() { return campaign.train(); }
+        public org.robopro.calibration.measurement.MeasurementSet validate() { return campaign.validate(); }
     }
 
+    /** Fraction of the poses held out for validation when the file has no set column. */
+    public static final double HOLDOUT = 0.2;
+
+    public Measurements loadMeasurements(Path file) throws IOException {
+        return new Measurements(org.robopro.calibration.workflow.CalibrationWorkflow.load(model.robot(), file, null, HOLDOUT));
+    }
+
+    private volatile org.robopro.calibration.workflow.CalibrationWorkflow.Outcome lastCalibration;
+
+    /** The last calibration's outcome (figures, warnings, files), if any. */
+    public Optional<org.robopro.calibration.workflow.CalibrationWorkflow.Outcome> lastCalibration() { return Optional.ofNullable(lastCalibration); }
+
     /**
-     * Calibrates the cell's robot from measurements (blocking: run it off the UI thread).
+     * Calibrates the cell's robot from measurements with the calibration workflow's default
+     * settings, as {@code robopro calibrate} does (blocking: run it off the UI thread).
      * Throws CancellationException when {@code cancel} fires.
      */
     public org.robopro.calibration.identification.CalibrationResult calibrate(Measurements m, org.robopro.calibration.Cancellation cancel,
                                                                             org.robopro.calibration.Progress progress) {
-        var nominal = org.robopro.kinematics.KinematicModel.build(model.robot());
-        var o = org.robopro.calibration.identification.Calibrator.Options.defaults()
-                .withInitialTool(Pose.translation(0, 0, 0.1)).withCancel(cancel).withProgress(progress);
-        var r = org.robopro.calibration.identification.Calibrator.calibrate(nominal, m.train(), m.validate(), o);
+        var oc = org.robopro.calibration.workflow.CalibrationWorkflow.run(model.robot(), m.campaign(),
+                org.robopro.calibration.workflow.CalibrationWorkflow.Settings.defaults(),
+                java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString(), cancel, progress);
+        lastCalibration = oc;
+        var r = oc.result();
         log(String.format(java.util.Locale.ROOT, "Calibrated from %d poses: RMS %.4f mm -> %.4f mm%s", r.train().size(),
                 r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3, m.validate() == null ? ""
                         : String.format(java.util.Locale.ROOT, "; validation %.4f mm -> %.4f mm", r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3)));
+        for (String w : oc.warnings()) log("Warning: " + w);
         return r;
     }
 
@@ -522,11 +482,9 @@ public final class Workbench {
      * exports with it from now on (seed paper Fig. 5; the controller keeps the nominal model).
      */
     public void applyCalibration(org.robopro.calibration.identification.CalibrationResult r, Path robotFile, String source, boolean overwrite) {
-        java.util.Map<String, String> prov = new java.util.LinkedHashMap<>(model.robot().provenance());
-        prov.put("calibrated-from", source);
-        prov.put("calibrated-nominal", model.robot().name());
-        prov.put("calibration-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", r.trainRmsM() * 1e3));
-        org.robopro.models.RobotLibrary.write(r.calibrated().toDescription().withProvenance(prov), robotFile, overwrite);
+        var oc = lastCalibration;
+        if (oc == null || oc.result() != r) throw new IllegalStateException("not the last calibration's result");
+        org.robopro.models.RobotLibrary.write(oc.calibrated(), robotFile, overwrite);
         calibratedModel = r.calibrated();
         extendedModel = null;
         model.setCalibrationReference(robotFile.toString());
@@ -623,8 +581,6 @@ public final class Workbench {
         }
     }
 
-    public void setView(CameraState.View v) { app.camera().view(v); }
-
     // ---- project files -----------------------------------------------------------------------
 
     public void save(Path file) throws IOException {
@@ -645,76 +601,15 @@ public final class Workbench {
         log("Opened " + file);
     }
 
-    // ---- screenshots and shutdown ------------------------------------------------------------
+    // ---- shutdown ----------------------------------------------------------------------------
 
-    /**
-     * The whole window (Swing shell and 3D view) as an image, after the 3D view has drawn a few
-     * frames showing the model's current state.
-     */
-    public BufferedImage captureWindow() throws InterruptedException {
-        awaitPathCheck();
-        app.awaitFrames(4, 10_000);
-        AtomicReference<BufferedImage> out = new AtomicReference<>();
-        onEdt(() -> {
-            var root = frame.getRootPane();
-            BufferedImage img = new BufferedImage(root.getWidth(), root.getHeight(), BufferedImage.TYPE_INT_RGB);
-            Graphics2D g = img.createGraphics();
-            root.paintAll(g);
-            Point p = SwingUtilities.convertPoint(panel, 0, 0, root);
-            Graphics2D pg = (Graphics2D) g.create(p.x, p.y, panel.getWidth(), panel.getHeight());
-            panel.paint(pg);
-            pg.dispose();
-            // Open dialogs (model wizard, calibration) are drawn where they stand over the window.
-            for (java.awt.Window w : frame.getOwnedWindows()) {
-                if (!w.isShowing() || !(w instanceof javax.swing.RootPaneContainer rc)) continue;
-                Point o = w.getLocationOnScreen(), f = root.getLocationOnScreen();
-                Graphics2D dg = (Graphics2D) g.create(o.x - f.x, o.y - f.y, w.getWidth(), w.getHeight());
-                dg.setColor(java.awt.Color.DARK_GRAY);
-                dg.fillRect(0, 0, w.getWidth(), w.getHeight());
-                rc.getRootPane().paintAll(dg);
-                dg.setColor(java.awt.Color.GRAY);
-                dg.drawRect(0, 0, rc.getRootPane().getWidth() - 1, rc.getRootPane().getHeight() - 1);
-                dg.dispose();
-            }
-            g.dispose();
-            out.set(img);
-        });
-        return out.get();
-    }
-
-    /**
-     * Waits until the background path check has caught up with the model and the 3D view and
-     * the panels show it (for tests and screenshots; interactive use never waits).
-     */
-    public void awaitPathCheck() throws InterruptedException {
-        var r = app.pathChecker().awaitCurrent(60_000);
-        if (r == null) throw new IllegalStateException("the path check did not finish within 60 s");
-        long end = System.currentTimeMillis() + 10_000;
-        while (app.pathState().shownRequest() < r.request() && System.currentTimeMillis() < end) Thread.sleep(5);
-        onEdt(() -> { }); // the Swing side's invokeLater has run
-    }
-
-    public void screenshot(Path png) throws IOException, InterruptedException {
-        BufferedImage img = captureWindow();
-        Path abs = png.toAbsolutePath();
-        if (abs.getParent() != null) Files.createDirectories(abs.getParent());
-        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
-        ImageIO.write(img, "png", bytes);
-        AtomicFiles.write(abs, bytes.toByteArray(), true);
-    }
-
-    /** Stops rendering, closes the window, removes the autosave of a saved project. */
+    /** Stops the path check, autosave and controller link; removes the autosave of a saved project. */
+    @Override
     public void close() {
         if (autosave != null) autosave.stop();
-        app.pathChecker().close();
+        pathChecker.close();
         disconnectNow();
         background.shutdownNow();
-        try {
-            app.stop(true);
-        } catch (RuntimeException e) {
-            LOG.log(Level.FINE, "stop", e);
-        }
-        if (frame != null) onEdt(() -> frame.dispose());
         if (!model.dirty() && autosave != null) {
             try {
                 Files.deleteIfExists(autosaveTarget());

@@ -1,0 +1,295 @@
+package org.robopro.calibration.workflow;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import org.robopro.calibration.Cancellation;
+import org.robopro.calibration.Progress;
+import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.identification.Calibrator;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.report.CalibrationReport;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Units;
+import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotFile;
+
+/**
+ * The calibration job from a measurement file to its output folder, the one implementation the
+ * command line, the workbench and the demo call, so the same data and settings give the same
+ * figures and byte-identical {@code summary.json}:
+ * <ol>
+ * <li>{@link #load}: read the campaign and choose the validation poses: a {@code --validate} file,
+ *     else the file's {@code set} column, else a hold-out of every n-th pose, else none;
+ *     metadata that disagree with the robot become warnings;</li>
+ * <li>{@link #run}: identification with the outlier policy of the settings
+ *     ({@link Calibrator}), and with {@code folds} &ge; 2 a K-fold cross-validation of the training
+ *     poses (folds drawn reproducibly from {@code foldSeed});</li>
+ * <li>{@link Outcome#write}: {@code calibrated.robot.json} (with provenance), {@code summary.json},
+ *     {@code residuals.csv} and {@code report.html}, written whole or not at all.</li>
+ * </ol>
+ * {@code summary.json} depends only on the data and the settings (file names, not paths; no clock):
+ * the date and the wall time are in the report and in the calibrated file's provenance.
+ */
+public final class CalibrationWorkflow {
+    private CalibrationWorkflow() { }
+
+    /** Output file names inside the output folder. */
+    public static final String ROBOT_FILE = "calibrated.robot.json", SUMMARY = "summary.json", RESIDUALS = "residuals.csv",
+            REPORT = "report.html";
+
+    /**
+     * How to calibrate (how to split is {@link #load}'s business).
+     *
+     * @param folds          K of the K-fold cross-validation of the training poses; 0 for none
+     * @param foldSeed       seed of the fold assignment (same seed, same folds)
+     * @param initialTool    start of the tool frame (origin = measured point), flange coordinates
+     * @param outlierK       outlier threshold in robust sigmas
+     * @param rejectOutliers drop flagged poses from the fit (else report them only)
+     */
+    public record Settings(int folds, long foldSeed, Pose initialTool, double outlierK, boolean rejectOutliers) {
+        public Settings {
+            if (folds < 0 || folds == 1) throw new IllegalArgumentException("--folds must be at least 2, got " + folds);
+            if (!(outlierK > 0)) throw new IllegalArgumentException("--outlier-k must be > 0, got " + outlierK);
+        }
+
+        public static Settings defaults() { return new Settings(0, 1, Pose.IDENTITY, 5.0, true); }
+
+        public Settings withFolds(int k, long seed) { return new Settings(k, seed, initialTool, outlierK, rejectOutliers); }
+        public Settings withInitialTool(Pose t) { return new Settings(folds, foldSeed, t, outlierK, rejectOutliers); }
+        public Settings withOutliers(double k, boolean reject) { return new Settings(folds, foldSeed, initialTool, k, reject); }
+
+        Calibrator.Options options(Cancellation cancel, Progress progress) {
+            return Calibrator.Options.defaults().withInitialTool(initialTool).withOutliers(outlierK, rejectOutliers)
+                    .withCancel(cancel).withProgress(progress);
+        }
+    }
+
+    /**
+     * A campaign split into training and validation poses.
+     *
+     * @param file     the measurement file
+     * @param all      every pose of the file
+     * @param validate validation poses, or null
+     * @param source   where the validation poses came from (for the reports), or null
+     * @param warnings metadata that disagree with the robot or between the files
+     */
+    public record Campaign(Path file, MeasurementSet all, MeasurementSet train, MeasurementSet validate, String source,
+                           List<String> warnings) { }
+
+    /**
+     * Reads {@code file} (and {@code validateFile}, may be null) for {@code robot} and chooses the
+     * validation poses: the validation file, else the {@code set} column, else every
+     * (1/holdout)-th pose when {@code holdout} is given, else none.
+     */
+    public static Campaign load(RobotDescription robot, Path file, Path validateFile, Double holdout) throws IOException {
+        if (holdout != null && !(holdout > 0 && holdout < 1))
+            throw new IllegalArgumentException("--holdout must be between 0 and 1, got " + holdout);
+        MeasurementSet all = MeasurementReader.read(file, robot);
+        String name = fileName(file);
+        MeasurementSet train = all, validate = null;
+        String source = null;
+        if (validateFile != null) {
+            validate = MeasurementReader.read(validateFile, robot);
+            source = fileName(validateFile);
+        } else if (all.hasSplit()) {
+            MeasurementSet v = all.split(Measurement.Split.VALIDATE);
+            train = all.split(Measurement.Split.TRAIN);
+            if (v.size() > 0) {
+                validate = v;
+                source = name + " (set=validate)";
+            }
+        } else if (holdout != null) {
+            List<Measurement>[] parts = holdout(all.rows(), holdout);
+            train = all.withRows(parts[0]);
+            validate = all.withRows(parts[1]);
+            source = name + String.format(Locale.ROOT, " (hold-out: every %d%s pose)", every(holdout), ordinal(every(holdout)));
+        }
+        List<String> warnings = new ArrayList<>();
+        metadataWarnings(robot, name, all, warnings);
+        if (validate != null && validateFile != null) metadataWarnings(robot, fileName(validateFile), validate, warnings);
+        return new Campaign(file, all, train, validate, source, List.copyOf(warnings));
+    }
+
+    /** The hold-out rule: every n-th pose (n = round(1/fraction), at least 2), the last of each n, validates. */
+    @SuppressWarnings("unchecked")
+    public static List<Measurement>[] holdout(List<Measurement> rows, double fraction) {
+        List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+        for (int i = 0; i < rows.size(); i++) (heldOut(i, fraction) ? va : tr).add(rows.get(i));
+        return new List[] {tr, va};
+    }
+
+    /** Whether the pose at {@code index} (0-based, file order) is held out by {@link #holdout}. */
+    public static boolean heldOut(int index, double fraction) {
+        int n = every(fraction);
+        return index % n == n - 1;
+    }
+
+    private static int every(double fraction) { return (int) Math.max(2, Math.round(1 / fraction)); }
+
+    private static String ordinal(int n) {
+        return n % 100 >= 11 && n % 100 <= 13 ? "th" : switch (n % 10) { case 1 -> "st"; case 2 -> "nd"; case 3 -> "rd"; default -> "th"; };
+    }
+
+    private static void metadataWarnings(RobotDescription robot, String name, MeasurementSet s, List<String> out) {
+        String measured = s.robot();
+        if (measured != null && !measured.equalsIgnoreCase(robot.name()))
+            out.add(String.format(Locale.ROOT, "%s was measured on '%s', calibrating '%s'", name, measured, robot.name()));
+    }
+
+    static String fileName(Path p) {
+        Path f = p.getFileName();
+        return f == null ? p.toString() : f.toString();
+    }
+
+    /**
+     * Fold of each training pose (0..K-1) for K-fold cross-validation: the poses shuffled with
+     * {@code new Random(seed)} (specified by the JDK, so the same on every machine), then dealt
+     * round-robin, so fold sizes differ by at most one.
+     */
+    public static int[] folds(int poses, int k, long seed) {
+        if (k < 2) throw new IllegalArgumentException("--folds must be at least 2, got " + k);
+        if (k > poses) throw new IllegalArgumentException("--folds " + k + " is more than the " + poses + " training poses");
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < poses; i++) order.add(i);
+        Collections.shuffle(order, new Random(seed));
+        int[] fold = new int[poses];
+        for (int i = 0; i < poses; i++) fold[order.get(i)] = i % k;
+        return fold;
+    }
+
+    /**
+     * One fold of the cross-validation: the model fitted without it, and its errors.
+     *
+     * @param fold   0-based fold number
+     * @param result calibration on the other folds, validated on this one
+     */
+    public record Fold(int fold, CalibrationResult result) { }
+
+    /**
+     * What a run produced.
+     *
+     * @param campaign   the data
+     * @param settings   the settings
+     * @param result     the calibration on every training pose
+     * @param folds      per fold (empty without cross-validation)
+     * @param foldOf     fold of each training pose, by pose id (empty without cross-validation)
+     * @param warnings   metadata and validation warnings, in the order shown
+     * @param calibrated the calibrated robot with provenance
+     * @param created    when the run finished (ISO-8601, seconds), for the report and provenance
+     */
+    public record Outcome(Campaign campaign, Settings settings, CalibrationResult result, List<Fold> folds, Map<String, Integer> foldOf,
+                          List<String> warnings, RobotDescription calibrated, String created) {
+
+        public CalibrationReport.Context context() {
+            return new CalibrationReport.Context(calibrated.provenance().getOrDefault("calibrated-nominal", calibrated.name()),
+                    fileName(campaign.file()), campaign.source(), created);
+        }
+
+        /** summary.json: a function of the data and settings only. */
+        public String summaryJson() {
+            return CalibrationReport.summaryJson(result, context(), warnings);
+        }
+
+        /** report.html. */
+        public String reportHtml() {
+            return CalibrationReport.html(result, context(), warnings);
+        }
+
+        /**
+         * residuals.csv: one row per pose (training then validation, file order): id, set, fold
+         * (empty when not cross-validated), outlier flag, error norms with the nominal and the
+         * calibrated model (mm) and, for 6-D data, rotation errors (deg).
+         */
+        public String residualsCsv() {
+            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,calibrated_mm,nominal_deg,calibrated_deg\n");
+            rows(b, result.train(), "train");
+            rows(b, result.validate(), "validate");
+            return b.toString();
+        }
+
+        private void rows(StringBuilder b, List<CalibrationResult.PoseError> es, String set) {
+            for (CalibrationResult.PoseError e : es) {
+                Integer f = foldOf.get(e.poseId());
+                b.append(csv(e.poseId())).append(',').append(set).append(',').append(f == null ? "" : Integer.toString(f + 1))
+                 .append(',').append(e.outlier()).append(',').append(num(Units.mToMm(e.nominalM()))).append(',')
+                 .append(num(Units.mToMm(e.calibratedM()))).append(',').append(num(Math.toDegrees(e.nominalRotRad()))).append(',')
+                 .append(num(Math.toDegrees(e.calibratedRotRad()))).append('\n');
+            }
+        }
+
+        /** Writes the four files into {@code dir}, whole or not at all; {@code overwrite} false refuses existing files. */
+        public void write(Path dir, boolean overwrite) throws IOException {
+            Map<Path, byte[]> files = new LinkedHashMap<>();
+            files.put(dir.resolve(ROBOT_FILE), RobotFile.format(calibrated).getBytes(StandardCharsets.UTF_8));
+            files.put(dir.resolve(SUMMARY), summaryJson().getBytes(StandardCharsets.UTF_8));
+            files.put(dir.resolve(RESIDUALS), residualsCsv().getBytes(StandardCharsets.UTF_8));
+            files.put(dir.resolve(REPORT), reportHtml().getBytes(StandardCharsets.UTF_8));
+            AtomicFiles.writeAll(files, overwrite);
+        }
+    }
+
+    private static String num(double v) {
+        return Double.isNaN(v) ? "" : String.format(Locale.ROOT, "%.6f", v);
+    }
+
+    private static String csv(String s) {
+        return s.contains(",") || s.contains("\"") ? '"' + s.replace("\"", "\"\"") + '"' : s;
+    }
+
+    /**
+     * Calibrates {@code robot} from the campaign; blocking (throws CancellationException when
+     * {@code cancel} fires). {@code created} is the timestamp recorded in the report and the
+     * calibrated file (ISO-8601).
+     */
+    public static Outcome run(RobotDescription robot, Campaign c, Settings s, String created, Cancellation cancel, Progress progress) {
+        KinematicModel nominal = KinematicModel.build(robot);
+        List<Fold> folds = new ArrayList<>();
+        Map<String, Integer> foldOf = new LinkedHashMap<>();
+        Progress main = progress;
+        if (s.folds() >= 2) {
+            List<Measurement> rows = c.train().rows();
+            int[] fold = folds(rows.size(), s.folds(), s.foldSeed());
+            for (int i = 0; i < rows.size(); i++) foldOf.put(rows.get(i).poseId(), fold[i]);
+            double share = 1.0 / (s.folds() + 1);
+            for (int k = 0; k < s.folds(); k++) {
+                List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+                for (int i = 0; i < rows.size(); i++) (fold[i] == k ? va : tr).add(rows.get(i));
+                final int kk = k;
+                Progress pk = (stage, f) -> progress.update("fold " + (kk + 1) + ": " + stage, share * (kk + f));
+                CalibrationResult r = Calibrator.calibrate(nominal, c.train().withRows(tr), c.train().withRows(va), s.options(cancel, pk));
+                folds.add(new Fold(k, r));
+            }
+            main = (stage, f) -> progress.update(stage, share * (s.folds() + f));
+        }
+        CalibrationResult r = Calibrator.calibrate(nominal, c.train(), c.validate(), s.options(cancel, main));
+        List<String> warnings = new ArrayList<>(c.warnings());
+        warnings.addAll(CalibrationReport.warnings(r, c.train(), c.validate()));
+        Map<String, String> prov = new LinkedHashMap<>(robot.provenance());
+        prov.put("calibrated-from", fileName(c.file()));
+        prov.put("calibrated-on", created);
+        prov.put("calibrated-nominal", robot.name());
+        if (c.all().robot() != null) prov.put("calibration-measured-robot", c.all().robot());
+        String instrument = c.all().metadata().get("instrument");
+        if (instrument != null) prov.put("calibration-instrument", instrument);
+        if (c.source() != null) prov.put("calibration-validated-on", c.source());
+        prov.put("calibration-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.trainRmsM())));
+        if (c.validate() != null) prov.put("calibration-validate-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.validateRmsM())));
+        var p = r.flangeTtool().position();
+        prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
+                Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
+        RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
+        return new Outcome(c, s, r, List.copyOf(folds), Collections.unmodifiableMap(foldOf), List.copyOf(warnings), calibrated, created);
+    }
+}
