@@ -11,7 +11,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import java.util.Optional;
+import org.robopro.calibration.compensation.Compensator;
+import org.robopro.calibration.compensation.TargetCompensator.Status;
 import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.SignalDescription;
 import org.robopro.models.Vec3;
@@ -206,10 +210,10 @@ class WeldModuleTest {
         String text = module();
         RapidModule m = RapidParser.parse(text, "WeldCell.mod");
         String before = RapidWriter.export(m).text();
-        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, ProgramCompensation.fixedPoint(nominal, real));
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(m, "main", nominal, new Compensator(nominal, real, Pose.IDENTITY, Pose.IDENTITY));
         // Nine named targets (approach, five of seam A, three of seam B) and the inline retract.
         assertEquals(10, out.corrections().size(), out.corrections().toString());
-        for (ProgramCompensation.Correction c : out.corrections()) assertEquals("converged", c.status(), c.toString());
+        for (ProgramCompensation.Correction c : out.corrections()) assertEquals(Optional.of(Status.CONVERGED), c.status(), c.toString());
         String after = RapidWriter.export(out.module()).text();
         List<String> a = before.lines().toList(), b = after.lines().toList();
         assertEquals(a.size(), b.size());
