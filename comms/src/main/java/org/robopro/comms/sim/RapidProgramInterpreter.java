@@ -41,7 +41,7 @@ public final class RapidProgramInterpreter implements ProgramInterpreter {
         List<ProgramStep> steps;
         try {
             ParsedModule parsed = RapidParser.parseDetailed(text, name);
-            steps = MotionInterpreter.of(parsed).run();
+            steps = MotionInterpreter.of(parsed).strict().run();
         } catch (InputException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }

@@ -74,10 +74,14 @@ public final class MotionInterpreter {
     private final JointTarget startJoints;
     /** The cell's I/O signals (empty: every signal a program names is taken as it comes, inputs at 0). */
     private final List<SignalDescription> signals;
+    /** Unknown instructions are errors (a controller refuses such a program) instead of notices. */
+    private final boolean strict;
 
     private MotionInterpreter(RapidModule module, List<RapidModule> libraries, String file, Map<Statement, SourcePos> positions,
-                              List<ParsedAst> asts, int maxStatements, JointTarget startJoints, List<SignalDescription> signals) {
+                              List<ParsedAst> asts, int maxStatements, JointTarget startJoints, List<SignalDescription> signals,
+                              boolean strict) {
         this.signals = List.copyOf(signals);
+        this.strict = strict;
         this.module = module;
         this.libraries = List.copyOf(libraries);
         this.file = file;
@@ -89,13 +93,13 @@ public final class MotionInterpreter {
 
     /** An interpreter of {@code module}; {@code libraries} provide data declared elsewhere (e.g. tools in user.sys). */
     public static MotionInterpreter of(RapidModule module, RapidModule... libraries) {
-        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), List.of(), MAX_STATEMENTS, null, List.of());
+        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), List.of(), MAX_STATEMENTS, null, List.of(), false);
     }
 
     /** An interpreter of a parsed file: errors name the file, line and column. */
     public static MotionInterpreter of(ParsedModule parsed, RapidModule... libraries) {
         return new MotionInterpreter(parsed.module(), List.of(libraries), parsed.file(), positions(List.of(parsed)),
-                List.of(parsed.ast()), MAX_STATEMENTS, null, List.of());
+                List.of(parsed.ast()), MAX_STATEMENTS, null, List.of(), false);
     }
 
     /**
@@ -108,7 +112,7 @@ public final class MotionInterpreter {
         all.add(main);
         all.addAll(others);
         return new MotionInterpreter(main.module(), others.stream().map(ParsedModule::module).toList(), main.file(), positions(all),
-                all.stream().map(ParsedModule::ast).toList(), MAX_STATEMENTS, null, List.of());
+                all.stream().map(ParsedModule::ast).toList(), MAX_STATEMENTS, null, List.of(), false);
     }
 
     private static Map<Statement, SourcePos> positions(List<ParsedModule> parsed) {
@@ -122,7 +126,7 @@ public final class MotionInterpreter {
     /** The same interpreter with another bound on executed statements. */
     public MotionInterpreter withMaxStatements(int max) {
         if (max < 1) throw new IllegalArgumentException("max statements must be >= 1: " + max);
-        return new MotionInterpreter(module, libraries, file, positions, asts, max, startJoints, signals);
+        return new MotionInterpreter(module, libraries, file, positions, asts, max, startJoints, signals, strict);
     }
 
     /**
@@ -131,7 +135,7 @@ public final class MotionInterpreter {
      */
     public MotionInterpreter withStartJoints(JointTarget joints) {
         if (joints == null) throw new IllegalArgumentException("start joints must not be null");
-        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, joints, signals);
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, joints, signals, strict);
     }
 
     /**
@@ -139,7 +143,16 @@ public final class MotionInterpreter {
      * their table value; a signal the program names that is not in the table is a notice.
      */
     public MotionInterpreter withSignals(List<SignalDescription> table) {
-        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, table);
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, table, strict);
+    }
+
+    /**
+     * The same interpreter refusing what it does not know, as a controller refuses to start a
+     * program naming a routine it does not have: an unknown instruction is an
+     * {@link InputException} "not simulated: X at line:col" instead of a notice.
+     */
+    public MotionInterpreter strict() {
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, signals, true);
     }
 
     /** The signal table this interpreter runs with. */
@@ -681,6 +694,8 @@ public final class MotionInterpreter {
                     assign(target, nv, f, at);
                 }
                 default -> {
+                    if (strict)
+                        throw error(at, "not simulated: " + name + " at " + where(at) + " (no such PROC in the module; sockets and other system instructions are not simulated)");
                     // Kept in the program as written; the run goes on without it.
                     notice(name, stepLabel(proc, index, name), at, "not simulated: " + name + " at " + where(at)
                             + " (no such PROC in the module and not an instruction robopro simulates; kept as written)");
