@@ -40,12 +40,15 @@ public record Scenario(String name, String family, String robot, Expected expect
     }
 
     /** Draws the robot and measures it. */
-    public Trial trial(long seed) {
+    public Trial trial(long seed) { return trial(seed, p -> p); }
+
+    /** Draws the robot and measures it with the scenario's plan changed by {@code adjust} (e.g. more poses). */
+    public Trial trial(long seed, UnaryOperator<Campaign.Plan> adjust) {
         RobotDescription nominal = RobotLibrary.shipped(robot);
         Random rng = new Random(seed * 31 + name.hashCode());
         WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1));
         WorldRobot world = effects.apply(nominal, rng).apply(base);
-        Campaign.Plan p = plan.apply(Campaign.Plan.defaults(seed));
+        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
         return new Trial(this, seed, world, Campaign.run(world, nominal, p));
     }
 

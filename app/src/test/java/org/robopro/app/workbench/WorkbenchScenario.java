@@ -166,6 +166,18 @@ public final class WorkbenchScenario {
             wb.placeObject(id, -0.2, -1.3, 0, Math.toRadians(30));
         });
         r.setProperty("objectsAfterAdd", String.valueOf(wb.model().objects().size()));
+        // Ctrl+Z takes the table back (one step: add and place were separate edits, so twice), Ctrl+Y redoes both.
+        WorkbenchWindow.onEdt(() -> {
+            r.setProperty("undoName", String.valueOf(frame.action("undo").getValue(javax.swing.Action.NAME)));
+            frame.action("undo").actionPerformed(null);
+            frame.action("undo").actionPerformed(null);
+        });
+        r.setProperty("objectsAfterUndo", String.valueOf(wb.model().objects().size()));
+        WorkbenchWindow.onEdt(() -> {
+            frame.action("redo").actionPerformed(null);
+            frame.action("redo").actionPerformed(null);
+        });
+        r.setProperty("objectsAfterRedo", String.valueOf(wb.model().objects().size()));
         win.screenshot(out.resolve("03-layout.png"));
         Path project = out.resolve("cell.robopro.json");
         Files.deleteIfExists(project);
@@ -264,22 +276,17 @@ public final class WorkbenchScenario {
     }
 
     /**
-     * Diagnosis in the calibration panel: a simulated IRB-2000 campaign with backlash injected on
-     * joint 2 (the diagnosis benchmark's case, approach directions recorded), Diagnose in the
-     * background, the finding shown in words, the extended model applied so the RAPID export is
-     * compensated with the Compensator on it.
+     * Diagnosis in the calibration panel: a campaign of the independent world simulator (an
+     * IRB-2000 with lost motion on joint 1, approach directions recorded, written as a measurement
+     * file with a train/validate set column), Diagnose in the background, the finding shown in
+     * words, the extended model applied so the RAPID export is compensated with the Compensator on it.
      */
     static void diagnosis(WorkbenchWindow win, Path out, Properties r) throws Exception {
         var wb = win.session();
         var frame = win.frame();
-        var camp = org.robopro.calibration.diagnosis.ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
-        List<org.robopro.calibration.measurement.Measurement> rows = new ArrayList<>();
-        for (var m : camp.measurements().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.TRAIN));
-        for (var m : camp.validation().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.VALIDATE));
+        var trial = org.robopro.world.Scenario.named("lost motion j1, directions recorded").trial(5);
         Path file = out.resolve("backlash-campaign.csv");
-        List<org.robopro.models.JointType> types = new ArrayList<>();
-        wb.model().robot().joints().forEach(j -> types.add(j.type()));
-        org.robopro.calibration.measurement.MeasurementWriter.write(camp.measurements().withRows(rows), types, file, true);
+        Files.writeString(file, trial.campaign().text());
         AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
         AtomicReference<Boolean> ok = new AtomicReference<>();
         WorkbenchWindow.onEdt(() -> {
