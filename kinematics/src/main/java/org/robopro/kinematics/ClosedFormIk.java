@@ -151,8 +151,8 @@ final class ClosedFormIk {
             double ac = FastTrig.acos(ck), sac = Math.sqrt(1 - ck * ck);
             // frame after joint 1 and F1
             System.arraycopy(fixedF(0), 0, frame1, 0, 12);
-            Mat34.rotate(frame1, 2, c1, s1);
-            Mat34.mulInPlace(frame1, fixedF(1));
+            Se3.rotate(frame1, 2, c1, s1);
+            Se3.mulInPlace(frame1, fixedF(1));
             for (int elbow = 0; elbow < 2; elbow++) {
                 double se = elbow == 0 ? sac : -sac; // sin(+-ac)
                 double phi3 = (elbow == 0 ? ac : -ac) - psi;
