@@ -10,7 +10,7 @@ import org.robopro.comms.ErrorCode;
 import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
-import org.robopro.comms.SpeedData;
+import org.robopro.programs.SpeedData;
 import org.robopro.comms.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
@@ -97,8 +97,8 @@ public final class ProtocolHandler {
                 r.expectCount(4, 2);
                 SpeedData old = c.speed();
                 double tcp = r.number(0, "v_tcp"), ori = r.number(1, "v_ori");
-                double leax = r.count() == 4 ? r.number(2, "v_leax") : Units.mToMm(old.leaxMPerS());
-                double reax = r.count() == 4 ? r.number(3, "v_reax") : Units.radToDeg(old.reaxRadPerS());
+                double leax = r.count() == 4 ? r.number(2, "v_leax") : Units.mToMm(old.vLeax());
+                double reax = r.count() == 4 ? r.number(3, "v_reax") : Units.radToDeg(old.vReax());
                 if (!(tcp > 0 && ori > 0 && leax >= 0 && reax >= 0) || tcp > 10_000 || ori > 10_000)
                     throw new RequestException(r.code(), ErrorCode.BAD_VALUE, "speed " + tcp + " mm/s, " + ori
                             + " deg/s: must be > 0 and <= 10000");
