@@ -246,12 +246,6 @@ final class ClosedFormIk {
 
     private double[] fixedF(int k) { return model.fixedRef(k); }
 
-    /** Wrist centre in base coordinates for flange pose m (3x4). */
-    void wristCentre(double[] m, double[] out) {
-        for (int i = 0; i < 3; i++)
-            out[i] = m[4 * i] * wInFlange[0] + m[4 * i + 1] * wInFlange[1] + m[4 * i + 2] * wInFlange[2] + m[4 * i + 3];
-    }
-
     /** ABB cfx bits: 4 = wrist centre behind axis 1, 2 = behind the lower arm (1 = axis 5 negative, added by the caller). */
     int cfxArmBits(double[] flange12, double theta1, double theta2) {
         double[] m = flange12;

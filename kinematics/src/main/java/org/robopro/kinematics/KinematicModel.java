@@ -516,9 +516,6 @@ public final class KinematicModel {
         }
     }
 
-    /** baseTflange left in the workspace by the last Jacobian call (3x4, row-major). */
-    void lastFlange(Workspace ws, double[] out12) { System.arraycopy(ws.m, 0, out12, 0, 12); }
-
     // ---------------------------------------------------------------- parameters
 
     /** The identifiable parameters (Table 1), named, in order. */

@@ -1,7 +1,6 @@
 package org.robopro.comms.sim;
 
 import java.io.ByteArrayOutputStream;
-import java.nio.charset.StandardCharsets;
 import java.util.Base64;
 import java.util.List;
 import org.robopro.comms.CommsException;
@@ -272,6 +271,4 @@ public final class ProtocolHandler {
         return OpenAbb.num(Units.mToMm(p.x()), 3) + " " + OpenAbb.num(Units.mToMm(p.y()), 3) + " " + OpenAbb.num(Units.mToMm(p.z()), 3)
                 + " " + OpenAbb.num(q[0], 6) + " " + OpenAbb.num(q[1], 6) + " " + OpenAbb.num(q[2], 6) + " " + OpenAbb.num(q[3], 6);
     }
-
-    static byte[] utf8(String s) { return s.getBytes(StandardCharsets.UTF_8); }
 }
