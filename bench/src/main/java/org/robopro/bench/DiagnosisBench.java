@@ -20,7 +20,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 
 /**
- * Speed target of issue 4: a full diagnosis (geometric calibration, ~50 candidates, stepwise
+ * Speed target (docs/performance.md): a full diagnosis (geometric calibration, ~50 candidates, stepwise
  * selection with joint re-identification) of 300 IRB-2000 poses in under 5 s on one core.
  */
 @State(Scope.Thread)

@@ -10,7 +10,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code robopro diagnose-benchmark}: the concealed-effect benchmark of issue 4
+ * {@code robopro diagnose-benchmark}: the concealed-effect benchmark
  * (docs/diagnosis-benchmark.md): simulated IRB-2000 campaigns with hidden effects, diagnosed
  * blind; prints the score table (markdown) and optionally writes it to a file. Exit code 0 when
  * the bar is met, 1 otherwise.

@@ -23,9 +23,11 @@ import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotDescription;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
- * Finds the physics a geometric model left out (issue 4; method in docs/diagnosis.md):
+ * Finds the physics a geometric model left out (method in docs/diagnosis.md):
  * <ol>
  * <li>geometric calibration ({@link Calibrator}): identifiability, outliers by its rule (reported,
  *     excluded), noise estimate;</li>
@@ -65,7 +67,7 @@ public final class Diagnoser {
         public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress); }
     }
 
-    // Physical plausibility bounds (issue 4).
+    // Physical plausibility bounds: what real joints and gears can have.
     static final double MIN_STIFFNESS = 1e4, MAX_STIFFNESS = 1e8;        // N·m/rad
     static final double MAX_PERIODIC_RAD = Math.toRadians(0.1);
     static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
@@ -73,7 +75,8 @@ public final class Diagnoser {
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     static final double MAX_STRAIN = 2e-3;
 
-    private static final boolean DEBUG = "1".equals(System.getenv("ROBOPRO_DIAG_DEBUG"));
+    /** The stepwise search's candidates and decisions, at debug level (off by default). */
+    private static final Logger LOG = LoggerFactory.getLogger(Diagnoser.class);
 
     private Diagnoser() { }
 
@@ -82,9 +85,9 @@ public final class Diagnoser {
         sorted.sort((x, y) -> Double.compare(x.bic, y.bic));
         for (int i = 0; i < Math.min(6, sorted.size()); i++) {
             Candidate c = sorted.get(i);
-            System.out.printf(Locale.ROOT, "step %d %-30s F %.2f p %.2e bic %.1f press %.1f/%.1f ratio %.3f %s %s est %s sd %s%n", step,
+            LOG.debug(String.format(Locale.ROOT, "step %d %-30s F %.2f p %.2e bic %.1f press %.1f/%.1f ratio %.3f %s %s est %s sd %s", step,
                     c.effect.label(), c.f, c.p, c.bic, c.pressBefore, c.pressAfter, c.ratio, c.plausible, c.plausibility,
-                    Arrays.toString(c.estimate), Arrays.toString(c.sd));
+                    Arrays.toString(c.estimate), Arrays.toString(c.sd)));
         }
     }
 
@@ -192,7 +195,7 @@ public final class Diagnoser {
             }
             if (familySize < 0) familySize = cs.size();
             double threshold = o.alpha() / Math.max(1, familySize - selected.size());
-            if (DEBUG) debug(step, cs);
+            if (LOG.isDebugEnabled()) debug(step, cs);
             Candidate best = null;
             for (Candidate c : cs) {
                 c.threshold = threshold;
@@ -216,7 +219,7 @@ public final class Diagnoser {
                     Effect gone = selected.remove(drop);
                     absorbedCols.remove(gone);
                     steps.remove(drop);
-                    if (DEBUG) System.out.println("backward: dropped " + gone.label());
+                    LOG.debug("backward: dropped {}", gone.label());
                     fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
                     if (!steps.isEmpty()) {
                         Step last = steps.remove(steps.size() - 1);
@@ -820,7 +823,7 @@ public final class Diagnoser {
     }
 
     /**
-     * Physical bounds on an estimate (issue 4), in words. An estimate is implausible when its
+     * Physical bounds on an estimate, in words. An estimate is implausible when its
      * whole 3σ interval lies outside the bounds: a poorly determined estimate is not condemned
      * for its noise, a well determined one outside the physics is.
      */

@@ -33,7 +33,7 @@ import org.robopro.models.InputException;
  * block ({@link #block}). Immutable and thread-safe.
  */
 public final class Effect {
-    /** The effect vocabulary (JSON names of issue 4). */
+    /** The effect vocabulary (the JSON names of docs/diagnosis.md and the robot file). */
     public enum Kind {
         COMPLIANCE("joint-compliance"), PERIODIC("gear-periodic"), BACKLASH("backlash"),
         THERMAL("thermal-expansion"), SCALE("joint-scale"), COUPLING("joint-coupling");

@@ -10,7 +10,7 @@ import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Se3;
 
 /**
- * The identification problem of issue 3 as pluggable parameter blocks, each contributing
+ * The identification problem (seed paper §5, docs/calibration.md) as pluggable parameter blocks, each contributing
  * Jacobian columns per pose:
  * <ul>
  * <li><b>geometry</b>: the kinematic model's Table-1 parameters (analytic columns from

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 
 /**
- * The concealed-effect benchmark of issue 4, small: 2 seeds per case (about 40 blind diagnoses,
+ * The concealed-effect benchmark (docs/diagnosis-benchmark.md), small: 2 seeds per case (about 40 blind diagnoses,
  * seconds). ROBOPRO_BENCH_SEEDS=N runs more. With so few seeds a single case's mean validation
  * ratio scatters by a few per cent, so the RMS bar is asserted on all runs pooled, and every
  * case's mean within 1.25; {@code robopro diagnose-benchmark} applies the per-case bar on 10 seeds.
