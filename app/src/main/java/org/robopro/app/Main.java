@@ -1,5 +1,6 @@
 package org.robopro.app;
 
+import org.robopro.app.cli.Failures;
 import org.robopro.app.cli.RoboproCommand;
 import picocli.CommandLine;
 
@@ -16,6 +17,8 @@ public final class Main {
         CommandLine cl = RoboproCommand.commandLine();
         try {
             return cl.execute(args);
+        } catch (Throwable t) { // errors (out of memory, stack) pass picocli's handler: still one line and a log
+            return Failures.report(t, cl.getErr());
         } finally {
             // main() ends with System.exit: output a command print()ed without a newline must not be lost.
             cl.getOut().flush();

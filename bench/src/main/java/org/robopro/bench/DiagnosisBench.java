@@ -12,16 +12,18 @@ import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
-import org.robopro.calibration.diagnosis.ConcealedEffectBenchmark;
 import org.robopro.calibration.diagnosis.Diagnoser;
 import org.robopro.calibration.diagnosis.Diagnosis;
-import org.robopro.calibration.simulation.Campaign;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
+import org.robopro.world.Scenario;
 
 /**
  * Speed target (docs/performance.md): a full diagnosis (geometric calibration, ~50 candidates, stepwise
- * selection with joint re-identification) of 300 IRB-2000 poses in under 5 s on one core.
+ * selection with joint re-identification) of 300 IRB-2000 poses in under 5 s on one core. The
+ * campaigns are the independent world simulator's (org.robopro.world), read as measurement text.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
@@ -30,20 +32,23 @@ import org.robopro.models.RobotLibrary;
 @Measurement(iterations = 3)
 @Fork(value = 1, jvmArgs = {"-XX:ActiveProcessorCount=1"})
 public class DiagnosisBench {
-    @Param({"null (geometric errors only)", "backlash j2 + thermal-expansion", "joint-compliance j2 + j3"})
+    @Param({"null irb2000", "lost motion j2 + thermal growth per link", "joint elasticity j3, masses off 30 %"})
     String scenario;
 
     RobotDescription robot;
-    Campaign campaign;
+    MeasurementSet train, validation;
 
     @Setup
     public void setup() {
         robot = RobotLibrary.shipped("irb2000");
-        campaign = ConcealedEffectBenchmark.campaign(scenario, 20260401L, 300);
+        var trial = Scenario.named(scenario).trial(20260401L, p -> p.withPoses(300, 100));
+        MeasurementSet all = MeasurementReader.parse(scenario, trial.campaign().text(), robot.joints().stream().map(j -> j.type()).toList());
+        train = all.split(org.robopro.calibration.measurement.Measurement.Split.TRAIN);
+        validation = all.split(org.robopro.calibration.measurement.Measurement.Split.VALIDATE);
     }
 
     @Benchmark
     public Diagnosis diagnose300Poses() {
-        return Diagnoser.diagnose(robot, campaign.measurements(), campaign.validation());
+        return Diagnoser.diagnose(robot, train, validation);
     }
 }

@@ -1,6 +1,7 @@
 package org.robopro.comms;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -11,6 +12,7 @@ import java.util.Random;
 import java.util.function.IntConsumer;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementJournal;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.calibration.measurement.MeasurementWriter;
 import org.robopro.calibration.simulation.PoseSampler;
@@ -58,8 +60,42 @@ public final class MeasurementCampaign {
      */
     public static MeasurementSet run(CommandInvoker invoker, List<double[]> poses, String robot, String instrument,
                                      IntConsumer progress) {
+        return run(invoker, poses, metadata(robot, instrument), null, null, progress);
+    }
+
+    /** The metadata of a campaign's measurement file. */
+    public static Map<String, String> metadata(String robot, String instrument) {
+        Map<String, String> meta = new LinkedHashMap<>();
+        meta.put("robot", robot.toLowerCase(Locale.ROOT));
+        meta.put("frame", "tracker");
+        meta.put("instrument", instrument);
+        return meta;
+    }
+
+    /**
+     * Moves through {@code poses} (rad) and measures at each, appending every row to
+     * {@code journal} (synced) as it arrives, so a failure or a kill keeps everything measured.
+     * {@code done} (may be null) holds the poses a resumed journal already has: they must be the
+     * first poses of {@code poses}, and measuring continues after them.
+     */
+    public static MeasurementSet run(CommandInvoker invoker, List<double[]> poses, Map<String, String> meta,
+                                     MeasurementJournal journal, MeasurementSet done, IntConsumer progress) {
         List<Measurement> rows = new ArrayList<>();
-        for (int k = 0; k < poses.size(); k++) {
+        if (done != null) {
+            if (done.size() > poses.size())
+                throw new IllegalArgumentException("the journal holds " + done.size() + " poses but the campaign has " + poses.size());
+            for (int k = 0; k < done.size(); k++) {
+                Measurement m = done.rows().get(k);
+                double[] q = poses.get(k);
+                boolean same = m.poseId().equals(Integer.toString(k + 1)) && m.dof() == q.length;
+                for (int j = 0; same && j < q.length; j++) same = Math.abs(m.q(j) - q[j]) < 1e-8;
+                if (!same)
+                    throw new IllegalArgumentException("the journal's pose " + m.poseId() + " (line " + m.line()
+                            + ") is not pose " + (k + 1) + " of this campaign; resume with the same --poses, --seed and --robot");
+                rows.add(m.withPosition(m.position()));
+            }
+        }
+        for (int k = rows.size(); k < poses.size(); k++) {
             double[] q = poses.get(k);
             TrackerReading m;
             try {
@@ -71,13 +107,18 @@ public final class MeasurementCampaign {
             PoseConditions c = m.conditions();
             int[] dirs = c.directions();
             if (dirs == null || dirs.length != q.length) dirs = null;
-            rows.add(new Measurement(Integer.toString(k + 1), q, m.position(), null, dirs, c.timeS(), c.tempC(), c.payloadKg(), null, 0));
+            Measurement row = new Measurement(Integer.toString(k + 1), q, m.position(), null, dirs, c.timeS(), c.tempC(),
+                    c.payloadKg(), null, 0);
+            if (journal != null) {
+                try {
+                    journal.append(row);
+                } catch (IOException e) {
+                    throw new UncheckedIOException("cannot append to the journal " + journal.file() + ": " + e.getMessage(), e);
+                }
+            }
+            rows.add(row);
             progress.accept(k + 1);
         }
-        Map<String, String> meta = new LinkedHashMap<>();
-        meta.put("robot", robot.toLowerCase(Locale.ROOT));
-        meta.put("frame", "tracker");
-        meta.put("instrument", instrument);
         return new MeasurementSet("campaign", meta, "tracker", rows);
     }
 

@@ -1,76 +1,142 @@
 package org.robopro.models;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Map;
+import java.nio.file.StandardOpenOption;
+import java.util.Comparator;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
 
 /**
- * Writes files atomically (temporary file in the same folder, then rename), so a crash never
- * leaves a half-written file, and refuses to replace an existing file unless asked to.
+ * Writes files atomically (temporary file in the same folder, synced, then renamed), so a crash
+ * never leaves a half-written file, and refuses to replace an existing file unless asked to.
+ * Temporary names are {@code .NAME.PID.N.tmp}; ones left by a process that no longer runs (a
+ * killed run) are deleted the next time this class writes into that folder. Files are created
+ * with the ordinary permissions (the process umask applies), not private ones.
  */
 public final class AtomicFiles {
+    private static final AtomicLong COUNTER = new AtomicLong();
+    /** Our temporary names: .NAME.PID.N.tmp; and the older .NAME.DIGITS.tmp of Files.createTempFile. */
+    private static final Pattern TEMP = Pattern.compile("\\..+\\.(\\d+)\\.(\\d+)\\.tmp");
+    private static final Pattern LEGACY_TEMP = Pattern.compile("\\..+\\.\\d{6,}\\.tmp");
+    /** Age after which a legacy temporary file (no process id in its name) counts as abandoned. */
+    private static final long LEGACY_AGE_MS = 10 * 60_000L;
+
     private AtomicFiles() { }
 
     /** Writes {@code bytes} to {@code target} atomically; {@code overwrite} false refuses an existing file. */
     public static void write(Path target, byte[] bytes, boolean overwrite) throws IOException {
         Path abs = target.toAbsolutePath();
         Path dir = abs.getParent();
-        if (dir != null) Files.createDirectories(dir);
+        if (dir != null) {
+            if (Files.exists(dir) && !Files.isDirectory(dir))
+                throw new java.nio.file.NotDirectoryException(dir + " (the folder for " + abs.getFileName() + ")");
+            Files.createDirectories(dir);
+            cleanStale(dir);
+        }
+        if (Files.isDirectory(abs)) throw new FileAlreadyExistsException(abs.toString(), null, "is a folder, not a file");
         if (!overwrite && Files.exists(abs))
             throw new FileAlreadyExistsException(abs.toString(), null, "exists; refusing to overwrite it");
-        Path tmp = Files.createTempFile(dir, "." + abs.getFileName() + ".", ".tmp");
+        Path tmp = tempPath(dir, abs.getFileName().toString());
         try {
-            Files.write(tmp, bytes);
-            try {
-                Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
-            }
+            writeSynced(tmp, bytes);
+            move(tmp, abs);
         } finally {
             Files.deleteIfExists(tmp);
         }
     }
 
     /**
-     * Writes a set of files whole or not at all: every existing target is checked first
-     * ({@code overwrite} false refuses before anything is written), every file is written to a
-     * temporary file beside its target, and only when all are written are they renamed into place.
-     * A failure while writing removes the temporary files and leaves the targets as they were.
+     * Writes a set of files in one folder whole or not at all: the same as {@link OutputSet} (which
+     * it calls) for callers holding target paths.
      */
-    public static void writeAll(Map<Path, byte[]> files, boolean overwrite) throws IOException {
-        if (!overwrite)
-            for (Path target : files.keySet())
-                if (Files.exists(target)) throw new FileAlreadyExistsException(target.toAbsolutePath().toString(), null, "exists; refusing to overwrite it");
-        List<Path[]> staged = new ArrayList<>();
-        try {
-            for (Map.Entry<Path, byte[]> e : files.entrySet()) {
-                Path abs = e.getKey().toAbsolutePath();
-                Path dir = abs.getParent();
-                if (dir != null) Files.createDirectories(dir);
-                Path tmp = Files.createTempFile(dir, "." + abs.getFileName() + ".", ".tmp");
-                staged.add(new Path[] {tmp, abs});
-                Files.write(tmp, e.getValue());
+    public static void writeAll(java.util.Map<Path, byte[]> files, boolean overwrite) throws IOException {
+        Path dir = null;
+        OutputSet set = null;
+        for (java.util.Map.Entry<Path, byte[]> e : files.entrySet()) {
+            Path abs = e.getKey().toAbsolutePath().normalize();
+            if (set == null) {
+                dir = abs.getParent();
+                set = OutputSet.in(dir, overwrite);
+            } else if (!abs.getParent().equals(dir)) {
+                throw new IllegalArgumentException("a set of files must share one folder: " + abs + " is not in " + dir);
             }
-            for (Path[] s : staged) {
-                try {
-                    Files.move(s[0], s[1], StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-                } catch (AtomicMoveNotSupportedException e) {
-                    Files.move(s[0], s[1], StandardCopyOption.REPLACE_EXISTING);
-                }
-            }
-        } finally {
-            for (Path[] s : staged) Files.deleteIfExists(s[0]);
+            set.add(abs.getFileName().toString(), e.getValue());
         }
+        if (set != null) set.commit();
     }
 
     public static void writeString(Path target, String text, boolean overwrite) throws IOException {
         write(target, text.getBytes(StandardCharsets.UTF_8), overwrite);
+    }
+
+    /** A fresh temporary path for {@code name} in {@code dir} ({@code .NAME.PID.N.tmp}); not created. */
+    static Path tempPath(Path dir, String name) {
+        return dir.resolve("." + name + "." + ProcessHandle.current().pid() + "." + COUNTER.incrementAndGet() + ".tmp");
+    }
+
+    /** Creates {@code file} (must not exist; umask applies), writes {@code bytes} and syncs them to disk. */
+    static void writeSynced(Path file, byte[] bytes) throws IOException {
+        try (FileChannel ch = FileChannel.open(file, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE)) {
+            ByteBuffer b = ByteBuffer.wrap(bytes);
+            while (b.hasRemaining()) ch.write(b);
+            ch.force(true);
+        }
+    }
+
+    /** Renames atomically where the file system can, else plainly (same folder: still one rename). */
+    static void move(Path from, Path to) throws IOException {
+        try {
+            Files.move(from, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(from, to, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    /**
+     * Deletes temporary files and folders in {@code dir} left by runs that were killed: ours whose
+     * process id no longer runs, and legacy ones older than ten minutes. Returns how many were
+     * deleted; problems (permissions, races with another process) are ignored.
+     */
+    public static int cleanStale(Path dir) {
+        int n = 0;
+        try (DirectoryStream<Path> ds = Files.newDirectoryStream(dir, ".*.tmp")) {
+            for (Path p : ds) {
+                String name = p.getFileName().toString();
+                Matcher m = TEMP.matcher(name);
+                boolean stale;
+                if (m.matches()) {
+                    long pid = Long.parseLong(m.group(1));
+                    stale = pid != ProcessHandle.current().pid() && ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true);
+                } else {
+                    stale = LEGACY_TEMP.matcher(name).matches()
+                            && System.currentTimeMillis() - Files.getLastModifiedTime(p).toMillis() > LEGACY_AGE_MS;
+                }
+                if (stale && deleteTree(p)) n++;
+            }
+        } catch (IOException | UncheckedIOException | SecurityException e) {
+            // Cleaning is a courtesy; the write itself reports real problems.
+        }
+        return n;
+    }
+
+    static boolean deleteTree(Path p) {
+        try (Stream<Path> s = Files.walk(p)) {
+            for (Path q : (Iterable<Path>) s.sorted(Comparator.reverseOrder())::iterator) Files.deleteIfExists(q);
+            return true;
+        } catch (IOException | UncheckedIOException e) {
+            return false;
+        }
     }
 }

@@ -95,20 +95,39 @@ public final class CompensateCommand implements Callable<Integer> {
         for (TargetsFile.Target t : ts.targets()) {
             Pose base = world ? worldTbase.inverse().times(t.pose()) : t.pose();
             double[] quat = base.quaternion();
+            double[] seed = q.clone();
             TargetCompensator.Status st = batch.compensate(new double[] {base.x(), base.y(), base.z()}, quat, q, cmd, res);
             if (!st.ok()) bad++;
-            Pose c = Pose.fromQuaternion(cmd[3], cmd[4], cmd[5], cmd[6], cmd[0], cmd[1], cmd[2]);
-            if (world) c = worldTbase.times(c);
-            double[] cq = c.quaternion();
-            sb.append(t.id()).append(String.format(Locale.ROOT, ",%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.9f",
-                    Units.mToMm(c.x()), Units.mToMm(c.y()), Units.mToMm(c.z()), cq[0], cq[1], cq[2], cq[3]));
-            for (double v : q) sb.append(String.format(Locale.ROOT, ",%.8f", Units.radToDeg(v)));
-            sb.append(String.format(Locale.ROOT, ",%.3e,%.3e,%s%n", Units.mToMm(res[0]), Units.radToDeg(res[1]),
-                    st.name().toLowerCase(Locale.ROOT)));
+            boolean values = st != TargetCompensator.Status.UNREACHABLE && allFinite(cmd) && allFinite(q);
+            sb.append(t.id());
+            if (values) {
+                Pose c = Pose.fromQuaternion(cmd[3], cmd[4], cmd[5], cmd[6], cmd[0], cmd[1], cmd[2]);
+                if (world) c = worldTbase.times(c);
+                double[] cq = c.quaternion();
+                sb.append(String.format(Locale.ROOT, ",%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.9f",
+                        Units.mToMm(c.x()), Units.mToMm(c.y()), Units.mToMm(c.z()), cq[0], cq[1], cq[2], cq[3]));
+                for (double v : q) sb.append(String.format(Locale.ROOT, ",%.8f", Units.radToDeg(v)));
+                sb.append(',').append(number(Units.mToMm(res[0]))).append(',').append(number(Units.radToDeg(res[1])));
+            } else {
+                // No solution for this target: empty fields, never the values left from another target.
+                sb.append(",".repeat(7 + nom.dof() + 2));
+                q = seed;
+            }
+            sb.append(',').append(st.name().toLowerCase(Locale.ROOT)).append('\n');
         }
         AtomicFiles.writeString(out.file(), sb.toString(), out.force());
         spec.commandLine().getOut().printf("compensated %d targets (%d not converged/unreachable), wrote %s%n",
                 ts.targets().size(), bad, out.file());
         return bad == 0 ? 0 : 1;
+    }
+
+    private static boolean allFinite(double[] v) {
+        for (double d : v) if (!Double.isFinite(d)) return false;
+        return true;
+    }
+
+    /** A residual, or an empty field when there is none. */
+    private static String number(double v) {
+        return Double.isFinite(v) ? String.format(Locale.ROOT, "%.3e", v) : "";
     }
 }

@@ -16,7 +16,7 @@ import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
+import org.robopro.models.RobotFile;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import picocli.CommandLine.Command;
@@ -76,9 +76,11 @@ public final class DiagnoseCommand implements Callable<Integer> {
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription extended = d.model().toDescription().withProvenance(prov);
-        RobotLibrary.write(extended, out.file("extended.robot.json"), out.force());
-        AtomicFiles.writeString(out.file("diagnosis.json"), DiagnosisReport.json(d, ctx), out.force());
-        AtomicFiles.writeString(out.file("report.html"), DiagnosisReport.html(d, ctx), out.force());
+        out.set()
+                .addString("extended.robot.json", RobotFile.format(extended))
+                .addString("diagnosis.json", DiagnosisReport.json(d, ctx))
+                .addString("report.html", DiagnosisReport.html(d, ctx))
+                .commit();
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "diagnosed %s from %d poses: geometric RMS %.4f mm -> %.4f mm with effects (train)%n", desc.name(),
                 train.size(), Units.mToMm(d.geometricTrainRmsM()), Units.mToMm(d.finalTrainRmsM()));

@@ -37,6 +37,9 @@ public final class FkCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         double x = noNegZero(Units.mToMm(p.x())), y = noNegZero(Units.mToMm(p.y())), z = noNegZero(Units.mToMm(p.z()));
         for (int i = 0; i < 4; i++) quat[i] = noNegZero(quat[i] * 1e3) / 1e3;
+        if (!Double.isFinite(x + y + z + quat[0] + quat[1] + quat[2] + quat[3]))
+            throw new IllegalArgumentException("the joint values give no finite pose for " + robot
+                    + " (a value too large for the robot's joints?); check the joint values");
         if (json)
             out.printf(Locale.ROOT, "{\"position_mm\": [%.6f, %.6f, %.6f], \"quaternion\": [%.9f, %.9f, %.9f, %.9f]}%n",
                     x, y, z, quat[0], quat[1], quat[2], quat[3]);

@@ -8,8 +8,10 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementJournal;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.comms.CommandInvoker;
 import org.robopro.comms.MeasurementCampaign;
@@ -28,6 +30,7 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.AtomicFiles;
+import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 import picocli.CommandLine.ArgGroup;
@@ -70,6 +73,8 @@ public final class LinkCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "campaign: seed of the pose choice (default ${DEFAULT-VALUE})") long seed;
 
     @Option(names = "--robot", paramLabel = "ROBOT", description = "campaign: robot name or file (default: the robot the controller reports)") String robot;
+
+    @Option(names = "--resume", description = "campaign: continue the interrupted campaign kept in FILE.journal") boolean resume;
 
     @Parameters(index = "0", paramLabel = "COMMAND") String command;
 
@@ -202,20 +207,47 @@ public final class LinkCommand implements Callable<Integer> {
         KinematicModel model = KinematicModel.build(d);
         List<double[]> qs = MeasurementCampaign.samplePoses(model, poses, seed);
         PrintWriter e = spec.commandLine().getErr();
-        MeasurementSet set;
-        try {
-            set = MeasurementCampaign.run(inv, qs, d.name(), "laser tracker via " + client.channel().describe(), k -> {
-                if (k % 25 == 0 || k == qs.size()) {
-                    e.println("measured " + k + " / " + qs.size() + " poses");
-                    e.flush();
-                }
-            });
-        } catch (MeasurementCampaign.Stopped stopped) {
-            // Keep the exit code of the cause (4 refused, 3 link), say at which pose it stopped; nothing is written.
-            if (stopped.getCause() instanceof CommsException.Refused r) throw new CommsException.Refused(r.code(), stopped.getMessage());
-            throw new CommsException.Protocol(stopped.getMessage());
+        List<JointType> types = d.joints().stream().map(j -> j.type()).toList();
+        // Every pose is appended to FILE.journal (synced) as it is measured; the journal becomes FILE at the end.
+        Path journalFile = out.resolveSibling(out.getFileName() + ".journal");
+        Map<String, String> meta = MeasurementCampaign.metadata(d.name(), "laser tracker via " + client.channel().describe());
+        meta.put("campaign", "poses " + poses + ", seed " + seed);
+        MeasurementSet done = null;
+        MeasurementJournal journal;
+        if (Files.exists(journalFile)) {
+            if (!resume)
+                throw new IllegalArgumentException(journalFile + " holds an interrupted campaign; give --resume to continue it"
+                        + " (same --poses, --seed, --robot), or delete it to start again");
+            done = MeasurementJournal.recover(journalFile, types);
+            if (done != null && !(meta.get("campaign").equals(done.metadata().get("campaign"))
+                    && meta.get("robot").equals(done.metadata().get("robot"))))
+                throw new IllegalArgumentException(journalFile + " is a campaign of " + done.metadata().get("robot") + " with "
+                        + done.metadata().get("campaign") + "; resume it with the same --poses, --seed and --robot");
+            journal = MeasurementJournal.resume(journalFile, done, types);
+            if (done == null) journal = journal.withHeader(meta, "tracker", model.dof());
+            else meta = done.metadata();
+            e.println("resuming: " + (done == null ? 0 : done.size()) + " of " + qs.size() + " poses already measured");
+        } else {
+            journal = MeasurementJournal.create(journalFile, meta, "tracker", model.dof(), types);
         }
-        MeasurementCampaign.write(set, d.joints().stream().map(j -> j.type()).toList(), out, force);
+        MeasurementSet set;
+        try (MeasurementJournal j = journal) {
+            try {
+                set = MeasurementCampaign.run(inv, qs, meta, j, done, k -> {
+                    if (k % 25 == 0 || k == qs.size()) {
+                        e.println("measured " + k + " / " + qs.size() + " poses");
+                        e.flush();
+                    }
+                });
+            } catch (MeasurementCampaign.Stopped stopped) {
+                // Keep the exit code of the cause (4 refused, 3 link), say at which pose it stopped and where the rest is.
+                String msg = stopped.getMessage() + "; the " + j.rows() + " poses measured are kept in " + journalFile
+                        + " (run the same command with --resume to continue)";
+                if (stopped.getCause() instanceof CommsException.Refused r) throw new CommsException.Refused(r.code(), msg);
+                throw new CommsException.Protocol(msg);
+            }
+            j.finish(out, force);
+        }
         Measurement last = set.rows().get(set.size() - 1);
         o.println(String.format(Locale.ROOT, "wrote %s: %d poses, %.1f s of controller time%s", out, set.size(), last.timeS(),
                 Double.isNaN(last.tempC()) ? "" : String.format(Locale.ROOT, ", temperature %.1f °C at the end", last.tempC())));

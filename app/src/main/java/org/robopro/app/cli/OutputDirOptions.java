@@ -1,6 +1,7 @@
 package org.robopro.app.cli;
 
 import java.nio.file.Path;
+import org.robopro.models.OutputSet;
 import picocli.CommandLine.Option;
 
 /**
@@ -19,6 +20,9 @@ public final class OutputDirOptions {
     Path file(String name) { return out.resolve(name); }
 
     Path dir() { return out; }
+
+    /** A result set for the folder: written whole or not at all (see {@link OutputSet}). */
+    OutputSet set() { return OutputSet.in(out, force); }
 
     boolean force() { return force; }
 }

@@ -1,7 +1,6 @@
 package org.robopro.app.cli;
 
 import java.util.concurrent.Callable;
-import org.robopro.models.InputException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -33,14 +32,7 @@ public final class RoboproCommand implements Callable<Integer> {
 
     public static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new RoboproCommand());
-        cl.setExecutionExceptionHandler((ex, cmd, parsed) -> {
-            if (ex instanceof InputException || ex instanceof java.io.IOException
-                    || ex instanceof IllegalArgumentException) {
-                cmd.getErr().println("robopro: " + ex.getMessage());
-                return 2;
-            }
-            throw ex;
-        });
+        cl.setExecutionExceptionHandler((ex, cmd, parsed) -> Failures.report(ex, cmd.getErr()));
         return cl;
     }
 

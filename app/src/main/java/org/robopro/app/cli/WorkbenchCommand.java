@@ -10,7 +10,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import javax.swing.JOptionPane;
 import org.robopro.app.workbench.ProjectStore;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.ui.WorkbenchWindow;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.models.InputException;
@@ -65,12 +65,12 @@ public final class WorkbenchCommand implements Callable<Integer> {
         boolean interactive = screenshot == null && !benchmark;
         Path open = project;
         if (interactive) open = offerRecovery(project).orElse(project);
-        Workbench.Options o = Workbench.Options.defaults().withSize(wh[0], wh[1]).withProject(open)
+        WorkbenchWindow.Options o = WorkbenchWindow.Options.defaults().withSize(wh[0], wh[1]).withProject(open)
                 .withFrameRateCap(benchmark ? -1 : 60);
-        o = new Workbench.Options(o.width(), o.height(), o.project(), o.visible(), o.frameRateCap(), (long) (firstFrameTimeout * 1000));
-        Workbench wb;
+        o = new WorkbenchWindow.Options(o.width(), o.height(), o.project(), o.visible(), o.frameRateCap(), (long) (firstFrameTimeout * 1000));
+        WorkbenchWindow wb;
         try {
-            wb = Workbench.open(o);
+            wb = WorkbenchWindow.open(o);
         } catch (IllegalStateException e) {
             spec.commandLine().getErr().println("robopro workbench: " + e.getMessage());
             return 3;
@@ -94,12 +94,12 @@ public final class WorkbenchCommand implements Callable<Integer> {
         return 0;
     }
 
-    private void benchmark(Workbench wb) throws InterruptedException {
+    private void benchmark(WorkbenchWindow wb) throws InterruptedException {
         double first = wb.secondsToFirstFrame();
         // Keep the robot moving so every frame re-poses the links, as when jogging or playing.
-        double[] q0 = wb.model().q();
+        double[] q0 = wb.session().model().q();
         List<Instruction> program = benchmarkMoves > 0 ? longProgram(wb, benchmarkMoves) : List.of();
-        long checks0 = wb.app().pathChecker().checks();
+        long checks0 = wb.session().pathChecker().checks();
         Thread.sleep(1500);
         long f0 = wb.app().frameCount();
         long t0 = System.nanoTime();
@@ -108,7 +108,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
             double t = (System.nanoTime() - t0) / 1e9;
             double[] q = q0.clone();
             q[0] += Math.toRadians(30) * Math.sin(t);
-            wb.model().setQ(q);
+            wb.session().model().setQ(q);
             long tick = (long) (2 * t);
             if (!program.isEmpty() && tick != editTick) {
                 // An edit twice a second (a speed change): each one starts a background path check.
@@ -116,7 +116,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
                 List<Instruction> p = new ArrayList<>(program);
                 Instruction i = p.get((int) (tick % p.size()));
                 p.set((int) (tick % p.size()), new Instruction(i.type(), i.target(), 100 + 50 * (tick % 5), i.zoneMm(), i.via()));
-                Workbench.onEdt(() -> wb.model().setProgram(p));
+                WorkbenchWindow.onEdt(() -> wb.session().model().setProgram(p));
             }
             Thread.sleep(16); // a jog or playback update per 60 Hz frame
         }
@@ -125,7 +125,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
         spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%s%n",
                 size, first, frames / secs, frames, secs, program.isEmpty() ? ""
                         : String.format(Locale.ROOT, "; program of %d moves, %d background path checks", program.size(),
-                        wb.app().pathChecker().checks() - checks0));
+                        wb.session().pathChecker().checks() - checks0));
     }
 
     private long editTick = -1;
@@ -137,12 +137,12 @@ public final class WorkbenchCommand implements Callable<Integer> {
      * A long program over targets on a 10 x 10 grid (±100 mm, ±150 mm) about the TCP at the ready
      * pose: MoveL between them, every fifth move a MoveC.
      */
-    private static List<Instruction> longProgram(Workbench wb, int moves) throws InterruptedException {
-        var m = wb.model();
+    private static List<Instruction> longProgram(WorkbenchWindow wb, int moves) throws InterruptedException {
+        var m = wb.session().model();
         org.robopro.kinematics.Pose tcp = m.worldTtcp();
         double[] q = m.q();
         List<Instruction> p = new ArrayList<>();
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             for (int i = 0; i < GRID; i++) {
                 org.robopro.kinematics.Pose t = org.robopro.kinematics.Pose.translation(0, -0.1 + 0.02 * (i % 10), -0.15 + 0.3 * (i / 10) / Math.max(1, GRID / 10)).times(tcp);
                 m.putTarget(new Target(String.format(Locale.ROOT, "b%03d", i), t, q, m.kinematics().confOf(q)));

@@ -7,7 +7,7 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 
 /** Indented JSON for the demo's small files (Jackson, as the calibration reports use). */
 final class Json {
-    private static final ObjectMapper MAPPER = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+    private static final ObjectMapper MAPPER = org.robopro.models.JsonMapper.create();
 
     private Json() { }
 

@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.atomic.AtomicReference;
 import org.robopro.app.workbench.model.Instruction;
+import org.robopro.app.workbench.ui.WorkbenchWindow;
 import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.kinematics.Pose;
@@ -26,9 +27,9 @@ public final class WorkbenchScenario {
         Path out = Path.of(args[0]);
         Files.createDirectories(out);
         Properties r = new Properties();
-        Workbench wb = Workbench.open(Workbench.Options.defaults().withSize(1280, 720));
+        WorkbenchWindow win = WorkbenchWindow.open(WorkbenchWindow.Options.defaults().withSize(1280, 720));
         try {
-            run(wb, out, r);
+            run(win, out, r);
             r.setProperty("status", "done");
         } catch (Throwable t) {
             r.setProperty("status", "failed: " + t);
@@ -37,7 +38,7 @@ public final class WorkbenchScenario {
             try (var w = Files.newBufferedWriter(out.resolve("results.properties"))) {
                 r.store(w, "workbench scenario");
             }
-            wb.close();
+            win.close();
         }
         System.exit(0);
     }
@@ -48,23 +49,24 @@ public final class WorkbenchScenario {
         return sb.toString().trim();
     }
 
-    static void run(Workbench wb, Path out, Properties r) throws Exception {
-        var frame = wb.frame();
-        r.setProperty("firstFrameSeconds", String.valueOf(wb.secondsToFirstFrame()));
+    static void run(WorkbenchWindow win, Path out, Properties r) throws Exception {
+        var wb = win.session();
+        var frame = win.frame();
+        r.setProperty("firstFrameSeconds", String.valueOf(win.secondsToFirstFrame()));
         r.setProperty("objects", String.valueOf(wb.model().objects().size()));
-        wb.screenshot(out.resolve("01-cell.png"));
+        win.screenshot(out.resolve("01-cell.png"));
 
         // Jog by joints through the spinners, then in Cartesian through the jog buttons.
         r.setProperty("q0", fmt(wb.model().q()));
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             frame.jogPanel().setJointDegrees(0, 10);
             frame.jogPanel().setJointDegrees(1, 30);
         });
         r.setProperty("qJointJog", fmt(wb.model().q()));
         Pose before = wb.model().worldTtcp();
         AtomicReference<Boolean> ok = new AtomicReference<>(true);
-        Workbench.onEdt(() -> {
-            frame.jogPanel().setJogFrame(Workbench.JogFrame.WORLD);
+        WorkbenchWindow.onEdt(() -> {
+            frame.jogPanel().setJogFrame(WorkbenchSession.JogFrame.WORLD);
             for (int i = 0; i < 5; i++) ok.set(ok.get() & frame.jogPanel().stepCartesian(2, -1)); // 5 x 10 mm down
         });
         Pose after = wb.model().worldTtcp();
@@ -74,19 +76,19 @@ public final class WorkbenchScenario {
         r.setProperty("cartesianAngle", String.valueOf(before.angleTo(after)));
 
         // Teach three targets (Teach action), moving between them with Cartesian jogs.
-        Workbench.onEdt(() -> frame.action("teach").actionPerformed(null));
-        Workbench.onEdt(() -> {
-            frame.jogPanel().setJogFrame(Workbench.JogFrame.WORLD);
+        WorkbenchWindow.onEdt(() -> frame.action("teach").actionPerformed(null));
+        WorkbenchWindow.onEdt(() -> {
+            frame.jogPanel().setJogFrame(WorkbenchSession.JogFrame.WORLD);
             for (int i = 0; i < 15; i++) frame.jogPanel().stepCartesian(1, 1); // +150 mm in y
             frame.action("teach").actionPerformed(null);
-            frame.jogPanel().setJogFrame(Workbench.JogFrame.TOOL);
+            frame.jogPanel().setJogFrame(WorkbenchSession.JogFrame.TOOL);
             for (int i = 0; i < 10; i++) frame.jogPanel().stepCartesian(0, 1); // 100 mm along tool x
             frame.action("teach").actionPerformed(null);
         });
         r.setProperty("targets", String.join(",", wb.model().targets().stream().map(Target::name).toList()));
 
         // Build a path: MoveJ to the first, MoveL to the others and back.
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             for (String t : new String[] {"p10", "p20", "p30", "p10"}) {
                 wb.model().select("target:" + t);
                 frame.action(t.equals("p10") && wb.model().program().isEmpty() ? "add-movej" : "add-movel").actionPerformed(null);
@@ -94,7 +96,7 @@ public final class WorkbenchScenario {
         });
         r.setProperty("program", String.join(";", wb.model().program().stream().map(Instruction::toString).toList()));
         AtomicReference<ProgramRun> plan = new AtomicReference<>();
-        Workbench.onEdt(() -> plan.set(frame.programPanel().check()));
+        WorkbenchWindow.onEdt(() -> plan.set(frame.programPanel().check()));
         r.setProperty("checkOk", String.valueOf(plan.get().ok()));
         r.setProperty("duration", String.valueOf(plan.get().duration()));
 
@@ -103,7 +105,7 @@ public final class WorkbenchScenario {
         Pose orientation = Pose.translation(cur.position().times(-1)).times(cur);
         Target far = new Target("p99", Pose.translation(3.2, 0, 1.0).times(orientation), wb.model().q(),
                 wb.model().kinematics().confOf(wb.model().q()));
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             wb.model().putTarget(far);
             wb.model().select("target:p99");
             frame.action("add-movel").actionPerformed(null);
@@ -115,12 +117,12 @@ public final class WorkbenchScenario {
                 .map(p -> p.kind() + " " + p.target()).findFirst().orElse(""));
         r.setProperty("badTargets", String.join(",", new java.util.TreeSet<>(plan.get().badTargets())));
         r.setProperty("farStatus", wb.model().status(far).name());
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             frame.programPanel().showTime(plan.get().duration() * 0.4);
             wb.model().setShowFrames(true);
         });
-        wb.screenshot(out.resolve("02-path.png"));
-        Workbench.onEdt(() -> {
+        win.screenshot(out.resolve("02-path.png"));
+        WorkbenchWindow.onEdt(() -> {
             var p = new java.util.ArrayList<>(wb.model().program());
             p.remove(p.size() - 1);
             wb.model().setProgram(p);
@@ -145,26 +147,38 @@ public final class WorkbenchScenario {
         // reported with its line and column and changes nothing.
         String programBefore = String.join(";", wb.model().program().stream().map(Instruction::toString).toList());
         AtomicReference<Boolean> imported = new AtomicReference<>();
-        Workbench.onEdt(() -> imported.set(frame.importRapid(mod)));
+        WorkbenchWindow.onEdt(() -> imported.set(frame.importRapid(mod)));
         r.setProperty("importOk", String.valueOf(imported.get()));
         r.setProperty("importSameProgram", String.valueOf(programBefore.equals(
                 String.join(";", wb.model().program().stream().map(Instruction::toString).toList()))));
         r.setProperty("importTargets", String.join(",", wb.model().targets().stream().map(Target::name).toList()));
         Path broken = out.resolve("Broken.mod");
         Files.writeString(broken, Files.readString(mod).replaceFirst("MoveL p20,", "MoveL p20 v500,"));
-        Workbench.onEdt(() -> imported.set(frame.importRapid(broken)));
+        WorkbenchWindow.onEdt(() -> imported.set(frame.importRapid(broken)));
         r.setProperty("brokenImportOk", String.valueOf(imported.get()));
         r.setProperty("brokenImportError", String.valueOf(frame.lastError()));
         r.setProperty("afterBrokenProgram", String.valueOf(wb.model().program().size()));
 
         // Cell layout: add and move a table, then save, reopen, and try a damaged copy.
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             frame.action("add-table").actionPerformed(null);
             String id = wb.model().selection().substring(7);
             wb.placeObject(id, -0.2, -1.3, 0, Math.toRadians(30));
         });
         r.setProperty("objectsAfterAdd", String.valueOf(wb.model().objects().size()));
-        wb.screenshot(out.resolve("03-layout.png"));
+        // Ctrl+Z takes the table back (one step: add and place were separate edits, so twice), Ctrl+Y redoes both.
+        WorkbenchWindow.onEdt(() -> {
+            r.setProperty("undoName", String.valueOf(frame.action("undo").getValue(javax.swing.Action.NAME)));
+            frame.action("undo").actionPerformed(null);
+            frame.action("undo").actionPerformed(null);
+        });
+        r.setProperty("objectsAfterUndo", String.valueOf(wb.model().objects().size()));
+        WorkbenchWindow.onEdt(() -> {
+            frame.action("redo").actionPerformed(null);
+            frame.action("redo").actionPerformed(null);
+        });
+        r.setProperty("objectsAfterRedo", String.valueOf(wb.model().objects().size()));
+        win.screenshot(out.resolve("03-layout.png"));
         Path project = out.resolve("cell.robopro.json");
         Files.deleteIfExists(project);
         wb.save(project);
@@ -185,11 +199,11 @@ public final class WorkbenchScenario {
         }
         r.setProperty("afterDamagedTargets", String.valueOf(wb.model().targets().size()));
         r.setProperty("projectFile", wb.projectFile().map(Path::toString).orElse(""));
-        r.setProperty("fps", String.valueOf(wb.app().fps()));
-        controller(wb, out, r);
-        calibration(wb, out, r);
-        diagnosis(wb, out, r);
-        wizard(wb, out, r);
+        r.setProperty("fps", String.valueOf(win.app().fps()));
+        controller(win, out, r);
+        calibration(win, out, r);
+        diagnosis(win, out, r);
+        wizard(win, out, r);
     }
 
     /**
@@ -197,15 +211,16 @@ public final class WorkbenchScenario {
      * the background, RMS before/after and effects shown, the calibrated model applied so the
      * RAPID export is compensated.
      */
-    static void calibration(Workbench wb, Path out, Properties r) throws Exception {
-        var frame = wb.frame();
+    static void calibration(WorkbenchWindow win, Path out, Properties r) throws Exception {
+        var wb = win.session();
+        var frame = win.frame();
         Path sim = out.resolve("campaign");
         int code = new picocli.CommandLine(new org.robopro.app.cli.RoboproCommand()).execute("simulate", "--robot", "irb2000",
                 "--poses", "60", "--sigma", "0.02", "--seed", "11", "--out", sim.toString(), "--force");
         r.setProperty("simulateExit", String.valueOf(code));
         AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
         AtomicReference<Boolean> ok = new AtomicReference<>();
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             panel.set(frame.openCalibration());
             panel.get().setBounds(frame.getX() + 500, frame.getY() + 120, 770, 590);
             ok.set(panel.get().loadMeasurements(sim.resolve("measurements.csv")));
@@ -213,7 +228,7 @@ public final class WorkbenchScenario {
         var p = panel.get();
         r.setProperty("calLoaded", String.valueOf(ok.get()));
         AtomicReference<java.util.concurrent.CompletableFuture<?>> f = new AtomicReference<>();
-        Workbench.onEdt(() -> { f.set(p.start()); p.cancel(); });
+        WorkbenchWindow.onEdt(() -> { f.set(p.start()); p.cancel(); });
         try {
             f.get().get(60, java.util.concurrent.TimeUnit.SECONDS);
             r.setProperty("calCancelled", "finished before the cancel was seen");
@@ -224,10 +239,10 @@ public final class WorkbenchScenario {
         }
         Thread.sleep(100);
         r.setProperty("calStateAfterCancel", p.state());
-        Workbench.onEdt(() -> f.set(p.start()));
+        WorkbenchWindow.onEdt(() -> f.set(p.start()));
         f.get().get(120, java.util.concurrent.TimeUnit.SECONDS);
         Thread.sleep(200);
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             r.setProperty("calState", p.state());
             r.setProperty("calRms", p.rmsText());
             r.setProperty("calEffects", p.effectsText());
@@ -242,43 +257,39 @@ public final class WorkbenchScenario {
                 "--measurements", sim.resolve("measurements.csv").toString(), "--holdout", "0.2", "--out", cli.toString(), "--force");
         r.setProperty("calSummarySameAsCli", String.valueOf(Files.readString(cli.resolve("summary.json"))
                 .equals(wb.lastCalibration().orElseThrow().summaryJson())));
-        wb.screenshot(out.resolve("07-calibration.png"));
+        win.screenshot(out.resolve("07-calibration.png"));
         Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");
         Files.deleteIfExists(nominalMod);
         Files.deleteIfExists(compensatedMod);
         wb.exportRapid(nominalMod, false);
         Path calFile = out.resolve("irb2000-calibrated.robot.json");
         Files.deleteIfExists(calFile);
-        Workbench.onEdt(() -> ok.set(p.apply(calFile, () -> false)));
+        WorkbenchWindow.onEdt(() -> ok.set(p.apply(calFile, () -> false)));
         r.setProperty("calApplied", String.valueOf(ok.get()));
         r.setProperty("calReference", String.valueOf(wb.model().calibrationReference()));
         wb.exportRapid(compensatedMod, false);
         r.setProperty("compensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("Nominal", "X")
                 .equals(Files.readString(compensatedMod).replace("Compensated", "X"))));
         r.setProperty("compensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
-        Workbench.onEdt(() -> p.dispose());
+        WorkbenchWindow.onEdt(() -> p.dispose());
         wb.clearCalibration();
     }
 
     /**
-     * Diagnosis in the calibration panel: a simulated IRB-2000 campaign with backlash injected on
-     * joint 2 (the diagnosis benchmark's case, approach directions recorded), Diagnose in the
-     * background, the finding shown in words, the extended model applied so the RAPID export is
-     * compensated with the Compensator on it.
+     * Diagnosis in the calibration panel: a campaign of the independent world simulator (an
+     * IRB-2000 with lost motion on joint 1, approach directions recorded, written as a measurement
+     * file with a train/validate set column), Diagnose in the background, the finding shown in
+     * words, the extended model applied so the RAPID export is compensated with the Compensator on it.
      */
-    static void diagnosis(Workbench wb, Path out, Properties r) throws Exception {
-        var frame = wb.frame();
-        var camp = org.robopro.calibration.diagnosis.ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
-        List<org.robopro.calibration.measurement.Measurement> rows = new ArrayList<>();
-        for (var m : camp.measurements().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.TRAIN));
-        for (var m : camp.validation().rows()) rows.add(m.withSet(org.robopro.calibration.measurement.Measurement.Split.VALIDATE));
+    static void diagnosis(WorkbenchWindow win, Path out, Properties r) throws Exception {
+        var wb = win.session();
+        var frame = win.frame();
+        var trial = org.robopro.world.Scenario.named("lost motion j1, directions recorded").trial(5);
         Path file = out.resolve("backlash-campaign.csv");
-        List<org.robopro.models.JointType> types = new ArrayList<>();
-        wb.model().robot().joints().forEach(j -> types.add(j.type()));
-        org.robopro.calibration.measurement.MeasurementWriter.write(camp.measurements().withRows(rows), types, file, true);
+        Files.writeString(file, trial.campaign().text());
         AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
         AtomicReference<Boolean> ok = new AtomicReference<>();
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             panel.set(frame.openCalibration());
             panel.get().setBounds(frame.getX() + 420, frame.getY() + 60, 850, 650);
             ok.set(panel.get().loadMeasurements(file));
@@ -286,7 +297,7 @@ public final class WorkbenchScenario {
         var p = panel.get();
         r.setProperty("diagLoaded", String.valueOf(ok.get()));
         AtomicReference<java.util.concurrent.CompletableFuture<?>> f = new AtomicReference<>();
-        Workbench.onEdt(() -> { f.set(p.startDiagnosis()); p.cancel(); });
+        WorkbenchWindow.onEdt(() -> { f.set(p.startDiagnosis()); p.cancel(); });
         try {
             f.get().get(60, java.util.concurrent.TimeUnit.SECONDS);
             r.setProperty("diagCancelled", "finished before the cancel was seen");
@@ -295,10 +306,10 @@ public final class WorkbenchScenario {
         } catch (java.util.concurrent.ExecutionException e) {
             r.setProperty("diagCancelled", e.getCause().getClass().getSimpleName());
         }
-        Workbench.onEdt(() -> f.set(p.startDiagnosis()));
+        WorkbenchWindow.onEdt(() -> f.set(p.startDiagnosis()));
         f.get().get(180, java.util.concurrent.TimeUnit.SECONDS);
         var d = p.diagnosis();
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             r.setProperty("diagState", p.state());
             r.setProperty("diagFindings", p.findingsText());
             r.setProperty("diagProgress", String.valueOf(p.progressValue()));
@@ -307,14 +318,14 @@ public final class WorkbenchScenario {
         r.setProperty("diagGeometricValidateMm", String.valueOf(d.geometricValidateRmsM() * 1e3));
         r.setProperty("diagFinalValidateMm", String.valueOf(d.finalValidateRmsM() * 1e3));
         r.setProperty("diagFloorMm", String.valueOf(Math.sqrt(3) * d.sigmaM() * 1e3));
-        wb.screenshot(out.resolve("08-diagnosis.png"));
+        win.screenshot(out.resolve("08-diagnosis.png"));
         Path nominalMod = out.resolve("NominalD.mod"), compensatedMod = out.resolve("Extended.mod");
         Files.deleteIfExists(nominalMod);
         Files.deleteIfExists(compensatedMod);
         wb.exportRapid(nominalMod, false);
         Path extFile = out.resolve("irb2000-extended.robot.json");
         Files.deleteIfExists(extFile);
-        Workbench.onEdt(() -> ok.set(p.apply(extFile, () -> false)));
+        WorkbenchWindow.onEdt(() -> ok.set(p.apply(extFile, () -> false)));
         r.setProperty("diagApplied", String.valueOf(ok.get()));
         r.setProperty("diagExtendedEffects", String.valueOf(wb.extendedModel().map(x -> x.terms().size()).orElse(0)));
         r.setProperty("diagFileHasEffects", String.valueOf(org.robopro.models.RobotLibrary.load(extFile.toString()).effects().size()));
@@ -322,7 +333,7 @@ public final class WorkbenchScenario {
         r.setProperty("diagCompensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("NominalD", "X")
                 .equals(Files.readString(compensatedMod).replace("Extended", "X"))));
         r.setProperty("diagCompensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
-        Workbench.onEdt(() -> p.dispose());
+        WorkbenchWindow.onEdt(() -> p.dispose());
         wb.clearCalibration();
     }
 
@@ -330,13 +341,14 @@ public final class WorkbenchScenario {
      * Controller menu against the simulated controller: connect (starts controller-sim),
      * download, run, read the real robot's joints (ghost), upload, disconnect.
      */
-    static void controller(Workbench wb, Path out, Properties r) throws Exception {
-        var frame = wb.frame();
+    static void controller(WorkbenchWindow win, Path out, Properties r) throws Exception {
+        var wb = win.session();
+        var frame = win.frame();
         r.setProperty("downloadEnabledBefore", String.valueOf(frame.action("download").isEnabled()));
         var s = wb.connectController(null).get(60, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("controllerRobot", s.robotName());
         Thread.sleep(200); // the enable/disable runs on the Swing thread
-        Workbench.onEdt(() -> r.setProperty("downloadEnabledAfter", String.valueOf(frame.action("download").isEnabled())));
+        WorkbenchWindow.onEdt(() -> r.setProperty("downloadEnabledAfter", String.valueOf(frame.action("download").isEnabled())));
         var info = wb.downloadProgram().get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("downloadedName", info.name());
         r.setProperty("downloadedLength", String.valueOf(info.length()));
@@ -345,11 +357,11 @@ public final class WorkbenchScenario {
         double[] ghost = wb.model().ghostQ();
         Pose last = wb.model().target(wb.model().program().get(wb.model().program().size() - 1).target()).orElseThrow().worldTtcp();
         r.setProperty("ghostToLastTargetMm", String.valueOf(1000 * wb.model().worldTtcp(ghost).distanceTo(last)));
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             frame.jogPanel().setJointDegrees(0, -35);
             frame.jogPanel().setJointDegrees(1, 0);
         });
-        wb.screenshot(out.resolve("06-controller.png"));
+        win.screenshot(out.resolve("06-controller.png"));
         var imp = wb.uploadProgram(info.name()).get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
         r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
@@ -357,7 +369,7 @@ public final class WorkbenchScenario {
 
         List<Instruction> original = wb.model().program();
         // A program with MoveC: checked, downloaded and run on the simulated controller, which ends at the arc's end.
-        Workbench.onEdt(() -> wb.model().setProgram(List.of(new Instruction(Instruction.Type.MOVEJ, "p10", 500, 10),
+        WorkbenchWindow.onEdt(() -> wb.model().setProgram(List.of(new Instruction(Instruction.Type.MOVEJ, "p10", 500, 10),
                 new Instruction(Instruction.Type.MOVEC, "p30", 200, 0, "p20"))));
         r.setProperty("moveCCheckOk", String.valueOf(wb.checkProgram().ok()));
         wb.downloadProgram().get(30, java.util.concurrent.TimeUnit.SECONDS);
@@ -380,7 +392,7 @@ public final class WorkbenchScenario {
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.CancellationException e) {
             r.setProperty("uploadCancelled", String.valueOf(wb.model().program().size()));
         }
-        Workbench.onEdt(() -> wb.model().setProgram(original));
+        WorkbenchWindow.onEdt(() -> wb.model().setProgram(original));
         wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
     }
@@ -390,10 +402,11 @@ public final class WorkbenchScenario {
      * shown, the model rebuilt), move joint 1, save the robot file (an existing file only after
      * confirmation) and use the new robot in the cell.
      */
-    static void wizard(Workbench wb, Path out, Properties r) throws Exception {
-        var frame = wb.frame();
+    static void wizard(WorkbenchWindow win, Path out, Properties r) throws Exception {
+        var wb = win.session();
+        var frame = win.frame();
         AtomicReference<org.robopro.app.workbench.ui.RobotWizard> w = new AtomicReference<>();
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             frame.action("robot-wizard").actionPerformed(null);
             w.set(frame.openWizard());
             w.get().setBounds(frame.getX() + 640, frame.getY() + 150, 630, 560);
@@ -405,13 +418,13 @@ public final class WorkbenchScenario {
         r.setProperty("wizardFirstOk", String.valueOf(wiz.result().ok()));
         Pose[] first = wiz.result().framesAtZero();
         r.setProperty("wizardFlangeZ0", String.valueOf(first[first.length - 1].z()));
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             wiz.setJointCell(2, "Axis x", "0");
             wiz.setJointCell(2, "Axis y", "0");
         });
         r.setProperty("wizardBrokenError", wiz.errorText());
         r.setProperty("wizardBrokenOk", String.valueOf(wiz.result().ok()));
-        Workbench.onEdt(() -> {
+        WorkbenchWindow.onEdt(() -> {
             wiz.setJointCell(2, "Axis y", "1");
             // Longer upper arm: joints 3.. and the flange 200 mm higher.
             for (int j = 2; j < wiz.wizardModel().jointCount(); j++)
@@ -424,32 +437,32 @@ public final class WorkbenchScenario {
         r.setProperty("wizardFlangeZ", String.valueOf(frames[frames.length - 1].z()));
         r.setProperty("wizardPreviewFrames", String.valueOf(wb.model().preview() == null ? 0 : wb.model().preview().frames().length));
         r.setProperty("wizardReportHasTable", String.valueOf(wiz.reportText().contains("identified parameters")));
-        wb.app().awaitFrames(3, 10_000);
-        r.setProperty("wizardPreviewDrawn", String.valueOf(wb.app().previewState().frameCount()));
-        wb.setView(org.robopro.app.workbench.scene.CameraState.View.SIDE);
-        wb.app().camera().focus(0.45, 0, 0.95);
-        wb.app().camera().zoom(0.75);
-        wb.screenshot(out.resolve("04-wizard.png"));
+        win.app().awaitFrames(3, 10_000);
+        r.setProperty("wizardPreviewDrawn", String.valueOf(win.app().previewState().frameCount()));
+        win.setView(org.robopro.app.workbench.scene.CameraState.View.SIDE);
+        win.app().camera().focus(0.45, 0, 0.95);
+        win.app().camera().zoom(0.75);
+        win.screenshot(out.resolve("04-wizard.png"));
         Path robotFile = out.resolve("irb2000_long.robot.json");
         Files.deleteIfExists(robotFile);
         AtomicReference<Boolean> saved = new AtomicReference<>();
-        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
+        WorkbenchWindow.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
         r.setProperty("wizardSaved", String.valueOf(saved.get()));
-        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
+        WorkbenchWindow.onEdt(() -> saved.set(wiz.save(robotFile, () -> false)));
         r.setProperty("wizardOverwriteRefused", String.valueOf(!saved.get()));
-        Workbench.onEdt(() -> saved.set(wiz.save(robotFile, () -> true)));
+        WorkbenchWindow.onEdt(() -> saved.set(wiz.save(robotFile, () -> true)));
         r.setProperty("wizardOverwriteConfirmed", String.valueOf(saved.get()));
-        Workbench.onEdt(() -> saved.set(wiz.useInCell(() -> false)));
+        WorkbenchWindow.onEdt(() -> saved.set(wiz.useInCell(() -> false)));
         r.setProperty("wizardUsed", String.valueOf(saved.get()));
         r.setProperty("cellRobot", wb.model().robot().name());
         r.setProperty("cellRobotRef", wb.model().robotRef());
         r.setProperty("previewAfterUse", String.valueOf(wb.model().preview() != null));
-        Workbench.onEdt(() -> wiz.dispose());
-        wb.setView(org.robopro.app.workbench.scene.CameraState.View.ISO);
+        WorkbenchWindow.onEdt(() -> wiz.dispose());
+        win.setView(org.robopro.app.workbench.scene.CameraState.View.ISO);
         Path project = out.resolve("long.robopro.json");
         Files.deleteIfExists(project);
         wb.save(project);
         r.setProperty("reopenedRobot", ProjectStore.read(project).robot().name());
-        wb.screenshot(out.resolve("05-new-robot.png"));
+        win.screenshot(out.resolve("05-new-robot.png"));
     }
 }

@@ -146,6 +146,9 @@ class WorkbenchScenarioTest {
         assertEquals("4", r.getProperty("afterBrokenProgram"), "a broken import leaves the program as it was");
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
+        assertTrue(r.getProperty("undoName").startsWith("Undo Move Table"), r.getProperty("undoName"));
+        assertEquals("5", r.getProperty("objectsAfterUndo"), "Edit > Undo took the table back");
+        assertEquals("6", r.getProperty("objectsAfterRedo"), "Edit > Redo put it back");
         assertEquals("3", r.getProperty("reopenedTargets"));
         assertEquals("4", r.getProperty("reopenedProgram"));
         assertEquals("6", r.getProperty("reopenedObjects"));
@@ -198,9 +201,9 @@ class WorkbenchScenarioTest {
         assertEquals("CancellationException", r.getProperty("diagCancelled"), "Cancel stops the background diagnosis");
         assertEquals("done", r.getProperty("diagState"));
         assertEquals("1000", r.getProperty("diagProgress"));
-        assertEquals("backlash j2", r.getProperty("diagEffects"), "the injected backlash on joint 2 is found, nothing else");
+        assertEquals("backlash j1", r.getProperty("diagEffects"), "the concealed lost motion on joint 1 is found, nothing else");
         String words = r.getProperty("diagFindings");
-        for (String s : new String[] {"Backlash", "on joint 2", "b = ", " deg", "RMS: training", "validation", "Evidence:", "Outliers",
+        for (String s : new String[] {"Backlash", "on joint 1", "b = ", " deg", "RMS: training", "validation", "Evidence:", "Outliers",
                 "What to record next"})
             assertTrue(words.contains(s), "the findings lack '" + s + "':\n" + words);
         double floor = Double.parseDouble(r.getProperty("diagFloorMm"));

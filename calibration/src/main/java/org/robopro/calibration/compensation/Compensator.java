@@ -115,7 +115,7 @@ public final class Compensator implements TargetCompensator {
             resR = dr.norm();
             if (resP <= POSITION_TOLERANCE && resR <= ROTATION_TOLERANCE)
                 return new Result(comp, q, resP, resR, it, nominal.withinLimits(q) ? Status.CONVERGED : Status.OUT_OF_LIMITS);
-            Pose rot = resR > 0 ? Pose.rotAxis(dr, resR) : Pose.IDENTITY;
+            Pose rot = resR > 1e-12 ? Pose.rotAxis(dr, resR) : Pose.IDENTITY; // below: round-off, no axis to normalise
             Pose rotated = rot.times(Pose.of(comp.rotationRowMajor(), 0, 0, 0));
             comp = Pose.of(rotated.rotationRowMajor(), comp.x() + dp.x(), comp.y() + dp.y(), comp.z() + dp.z());
         }

@@ -97,14 +97,17 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
-        Diagnosis d = run(robot, train, validate, o, null, t0);
+        Directions.Prepared dirs = Directions.prepare(train, validate);
+        train = dirs.train();
+        validate = dirs.validate();
+        Diagnosis d = run(robot, train, validate, o, null, t0, dirs.source());
         if (d.effects().isEmpty()) return d;
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
         List<String> under = outliersUnder(d, train);
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
-        return run(robot, train, validate, o, under, t0);
+        return run(robot, train, validate, o, under, t0, dirs.source());
     }
 
     /**
@@ -133,7 +136,7 @@ public final class Diagnoser {
 
     /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
     private static Diagnosis run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
-                                 List<String> forcedOutliers, long t0) {
+                                 List<String> forcedOutliers, long t0, Directions.Source dirSource) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
         o.progress().update("geometric calibration", 0);
@@ -164,7 +167,10 @@ public final class Diagnoser {
         if (gravity == null)
             notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
                     + "add a mass_model to test it");
-        if (!hasDirs) notes.add("no dir1..dir" + model.dof() + " columns: backlash was not tested directly");
+        if (!hasDirs) notes.add("no dir1..dir" + model.dof() + " columns: backlash was not tested");
+        else if (dirSource.inferred())
+            notes.add("no dir1..dir" + model.dof() + " columns: approach directions " + dirSource.words
+                    + ", the sign of each joint's last move before the pose was measured; backlash was tested with them");
         if (!hasTemp && !hasTime) notes.add("no temp_c or time_s column: thermal expansion was not tested directly");
         else if (!hasTemp) notes.add("no temp_c column: thermal expansion tested with time_s as a warm-up proxy");
         if (gravity != null && !hasPayload)
@@ -234,34 +240,28 @@ public final class Diagnoser {
         // Advice for columns that are missing.
         Tester finalTester = w.tester(fit);
         List<Object[]> probes = new ArrayList<>();
-        if (!hasDirs) {
-            List<PoseConditions> inferred = inferredDirections(train.rows(), rows);
-            for (int j = 0; j < model.dof(); j++) probes.add(new Object[] {Effect.backlash(j), inferred, "dir"});
-        }
         if (!hasTemp && !hasTime) {
             List<PoseConditions> order = poseOrder(rows);
             int n = rows.size();
             for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
         }
         int nProbes = probes.size();
-        boolean askedDirs = false, askedTime = false;
+        boolean askedTime = false;
         for (Object[] pr : probes) {
             @SuppressWarnings("unchecked") List<PoseConditions> cond = (List<PoseConditions>) pr[1];
             Candidate c = finalTester.test((Effect) pr[0], cond);
             if (c.keptColumns == 0 || !(c.p < o.alpha() / nProbes) || !(c.pressAfter < c.pressBefore)) continue;
-            if (pr[2].equals("dir") && !askedDirs) {
-                askedDirs = true;
-                recs.add(String.format(Locale.ROOT, "The residuals change sign with the direction joint %d last moved in "
-                        + "(inferred from the pose order; F = %.1f, p = %.1e): this looks like backlash. Record the approach "
-                        + "direction of every joint (columns dir1..dir%d) so it can be identified.",
-                        ((Effect) pr[0]).joint() + 1, c.f, c.p, model.dof()));
-            } else if (pr[2].equals("time") && !askedTime) {
+            if (pr[2].equals("time") && !askedTime) {
                 askedTime = true;
                 recs.add(String.format(Locale.ROOT, "The residuals drift with the pose order (F = %.1f, p = %.1e), as a warm-up "
                         + "of the arm would make them: record temp_c (temperature near the robot) or at least time_s for "
                         + "every pose so thermal expansion can be identified.", c.f, c.p));
             }
         }
+        if (dirSource.inferred() && selected.stream().anyMatch(e -> e.kind() == Effect.Kind.BACKLASH))
+            recs.add("Backlash was identified with approach directions " + dirSource.words + ": record the approach direction "
+                    + "of every joint (columns dir1..dir" + model.dof() + ") to confirm it, and approach each pose from a "
+                    + "known side when compensating.");
         for (Effect e : selected) {
             if (e.kind() == Effect.Kind.COMPLIANCE && !hasPayload)
                 recs.add("Joint compliance was found with the arm's own weight only: record payload_kg and measure with "
@@ -285,7 +285,7 @@ public final class Diagnoser {
             Diagnosis.Plot plot = Plots.partialResidual(plotTester, e, v);
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
-                            k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms)));
+                            k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource)));
             terms.add(new Effect.Term(e, v));
         }
         List<Diagnosis.Finding> implausibleFindings = new ArrayList<>();
@@ -303,26 +303,11 @@ public final class Diagnoser {
         return new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
-                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6);
+                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource);
     }
 
     private static boolean allFinite(List<Measurement> rows, java.util.function.ToDoubleFunction<Measurement> f) {
         return !rows.isEmpty() && rows.stream().allMatch(m -> Double.isFinite(f.applyAsDouble(m)));
-    }
-
-    /** Directions from the pose order: the sign of each joint's move from the previous pose in the file. */
-    static List<PoseConditions> inferredDirections(List<Measurement> fileOrder, List<Measurement> rows) {
-        Map<String, int[]> dirs = new LinkedHashMap<>();
-        double[] prev = null;
-        for (Measurement m : fileOrder) {
-            int[] d = new int[m.dof()];
-            if (prev != null) for (int j = 0; j < d.length; j++) d[j] = (int) Math.signum(m.q(j) - prev[j]);
-            dirs.put(m.poseId(), d);
-            prev = m.q();
-        }
-        List<PoseConditions> out = new ArrayList<>();
-        for (Measurement m : rows) out.add(new PoseConditions(dirs.get(m.poseId()), m.timeS(), m.tempC(), m.payloadKg()));
-        return out;
     }
 
     /** Pose index as a stand-in for time. */

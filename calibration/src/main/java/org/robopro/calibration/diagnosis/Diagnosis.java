@@ -25,13 +25,15 @@ import org.robopro.calibration.identification.CalibrationResult;
  * @param candidatesTested size of the tested family (for the multiple-testing correction)
  * @param alpha            family-wise false-positive rate of the test
  * @param elapsedMs        wall time
+ * @param directions       where the approach directions came from (recorded, inferred from the measuring order, none)
  */
 public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM, double geometricTrainRmsM,
                         double geometricValidateRmsM, List<Finding> effects, double finalTrainRmsM,
                         double finalValidateRmsM, List<String> outliers, List<NotIdentifiable> notIdentifiable,
                         List<Finding> implausible, List<String> recommendations, List<String> notes,
                         ExtendedModel model, org.robopro.kinematics.Pose finalFlangeTtool,
-                        org.robopro.kinematics.Pose finalInstrumentTbase, int candidatesTested, double alpha, double elapsedMs) {
+                        org.robopro.kinematics.Pose finalInstrumentTbase, int candidatesTested, double alpha, double elapsedMs,
+                        Directions.Source directions) {
 
     /**
      * One effect with its evidence.

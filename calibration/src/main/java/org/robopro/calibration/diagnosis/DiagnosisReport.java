@@ -60,6 +60,7 @@ public final class DiagnosisReport {
         root.put("noise_floor_mm", Units.mToMm(Math.sqrt(3) * d.sigmaM()));
         root.put("candidates_tested", d.candidatesTested());
         root.put("family_alpha", d.alpha());
+        root.put("directions", d.directions().words);
         root.put("elapsed_ms", Math.round(d.elapsedMs()));
         return root;
     }
@@ -106,7 +107,7 @@ public final class DiagnosisReport {
 
     public static String json(Diagnosis d, Context ctx) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(d, ctx)) + "\n";
+            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(d, ctx)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }
@@ -148,6 +149,7 @@ public final class DiagnosisReport {
                 + "tested with a family-wise false-positive rate of %.3g; %d outlier poses excluded. %.0f ms.</p>\n",
                 Units.mToMm(d.sigmaM()), Units.mToMm(Math.sqrt(3) * d.sigmaM()), d.candidatesTested(), d.alpha(),
                 d.outliers().size(), d.elapsedMs()));
+        h.append("<p class=\"muted\">Approach directions: ").append(Html.esc(d.directions().words)).append(".</p>\n");
         h.append(rmsChart(d));
 
         if (!d.effects().isEmpty()) h.append("<h2>Findings</h2>\n");

@@ -23,7 +23,13 @@ import org.robopro.models.InputException;
  * <li>{@code joint-compliance}: g = τ_j(q, payload), the gravity torque ({@link GravityTorques}); v = compliance, rad/(N·m);</li>
  * <li>{@code gear-periodic}: g = (sin q_j, cos q_j, sin 2q_j, cos 2q_j, sin 3q_j, cos 3q_j); v rad. The gear turns
  *     with the axis's own (controller) angle q_j, which differs from θ_j only on coupled axes;</li>
- * <li>{@code backlash}: g = dir_j / 2; v = lost motion b, rad;</li>
+ * <li>{@code backlash}: g = −dir_j / 2; v = lost motion b ≥ 0, rad. A driven output lags its motor-side
+ *     encoder: after a motion in direction dir the gear flanks touch on the far side of the play, so
+ *     the output angle is q − (b/2)·dir (the standard dead-band / lost-motion model of gear backlash:
+ *     Nordin &amp; Gutman, "Controlling mechanical systems with backlash — a survey", Automatica 38 (2002)
+ *     1633–1649, the dead-zone/hysteresis output x_out = x_in − (b/2)·sign(ẋ_in) once the play is taken up;
+ *     ISO 230-2 calls the same quantity "reversal value"). To reach a target the command must lead by
+ *     +(b/2)·dir, which the compensation does by inverting this model;</li>
  * <li>{@code thermal-expansion}: g = T − T0 (v = α, 1/K), or from time as a warm-up proxy
  *     g = 1 − exp(−t/τ) (v = strain at saturation);</li>
  * <li>{@code joint-scale}: g = q_j (θ_j = (1+ε) q_j); v = ε;</li>
@@ -151,7 +157,7 @@ public final class Effect {
                     g[2 * h - 1] = Math.cos(h * q[joint]);
                 }
             }
-            case BACKLASH -> g[0] = 0.5 * c.direction(joint);
+            case BACKLASH -> g[0] = -0.5 * c.direction(joint); // the output lags: θ = q − (b/2)·dir
             case THERMAL -> {
                 // Unknown conditions (a file without the column) contribute nothing.
                 double x = usesTimeProxy() ? 1 - Math.exp(-c.timeS() / tauS) : c.tempC() - t0C;

@@ -91,7 +91,7 @@ final class Plots {
                 for (int h = 1; h <= Effect.HARMONICS; h++) s += v[2 * h - 2] * Math.sin(h * q) + v[2 * h - 1] * Math.cos(h * q);
                 yield s;
             }
-            case BACKLASH -> 0.5 * v[0] * x;
+            case BACKLASH -> -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING -> v[0] * Math.toRadians(x);
         };

@@ -7,7 +7,7 @@ final class Words {
     private Words() { }
 
     static String finding(Effect e, double[] v, double[] s, Diagnosis.Evidence ev, double trainBefore, double trainAfter,
-                          double valBefore, double valAfter) {
+                          double valBefore, double valAfter, Directions.Source dirs) {
         String what = switch (e.kind()) {
             case COMPLIANCE -> String.format(Locale.ROOT, "Joint %d gives way under the arm's weight: compliance %.3g ± %.2g "
                     + "rad/(N·m), a stiffness of %.3g N·m/rad.", e.joint() + 1, v[0], s[0], 1 / v[0]);
@@ -27,8 +27,9 @@ final class Words {
                             .append(" look like geometry on these poses and were left to the geometric model.");
                 yield sb.toString();
             }
-            case BACKLASH -> String.format(Locale.ROOT, "Joint %d has lost motion (backlash): it lands %.4f ± %.4f deg apart "
-                    + "depending on the direction it last moved in.", e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(s[0]));
+            case BACKLASH -> String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
+                    + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in (directions %s).", e.joint() + 1,
+                    Math.toDegrees(v[0]), Math.toDegrees(s[0]), dirs.words);
             case THERMAL -> e.usesTimeProxy()
                     ? String.format(Locale.ROOT, "The arm grows while it warms up (thermal expansion, inferred from time): "
                     + "strain %.3g ± %.2g at saturation, time constant %.0f s.", v[0], s[0], e.tauS())

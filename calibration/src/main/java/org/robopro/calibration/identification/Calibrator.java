@@ -40,6 +40,8 @@ import org.robopro.models.Vec3;
 public final class Calibrator {
     /** Median of the norm of a 3-D standard normal vector (Maxwell distribution). */
     static final double MAXWELL_MEDIAN = 1.5381722;
+    /** Fits at most: the first and up to this many minus one trimmed refits. */
+    private static final int MAX_ROUNDS = 8;
     private static final int STRUCTURAL_POSES = 60;
 
     /**
@@ -87,9 +89,11 @@ public final class Calibrator {
         List<Measurement> rows = train.rows();
         o.progress().update("start", 0);
 
-        // 1. Starting instrument frame and tool.
+        // 1. Starting instrument frame and tool. The registration trims poses far from the
+        //    nominal prediction, so a wild reading cannot tilt the starting frame.
         Pose tool0 = sixD ? o.initialTool() : Pose.translation(o.initialTool().position());
         Pose inst0 = null;
+        Set<String> screened = new HashSet<>();
         if (instrument) {
             List<Vec3> pred = new ArrayList<>(), meas = new ArrayList<>();
             for (Measurement m : rows) {
@@ -103,24 +107,18 @@ public final class Calibrator {
                                 + "cannot be determined; add poses that move the measured point in at least two "
                                 + "directions, or write '# frame: base' if the positions are in the robot base frame",
                         spread[0] * 1e3, spread[1] * 1e3, train.frame()));
-            inst0 = Registration.rigid(pred, meas);
+            boolean[] keep = new boolean[rows.size()];
+            inst0 = Registration.trimmed(pred, meas, keep);
+            for (int i = 0; i < rows.size(); i++) if (!keep[i]) screened.add(rows.get(i).poseId());
         }
         if (sixD) tool0 = averageToolRotation(nominal, rows, tool0, inst0);
-
-        // 2. Nominal fit: geometry fixed, instrument and tool free.
         double[] start = IdentificationProblem.startVector(nominal, tool0, sixD, inst0, effects);
-        IdentificationProblem p1 = new IdentificationProblem(nominal, rows, sixD, instrument, effects, start);
-        boolean[] geoFixed = new boolean[p1.fullSize()];
-        for (int i = 0; i < p1.fullSize(); i++)
-            geoFixed[i] = p1.blocks().get(i) == IdentificationProblem.Block.GEOMETRY
-                    || p1.blocks().get(i) == IdentificationProblem.Block.EFFECT;
-        p1.setFixed(geoFixed);
-        LevenbergMarquardt.Result r1 = new LevenbergMarquardt(p1).maxIterations(o.maxIterations()).solve(p1.freeOf(start), o.cancel());
-        double[] nominalFull = p1.fullOf(r1.x());
-        if (sixD) {
-            double[] sig = estimateSigmas(p1, nominalFull, p1.freeIndices().length);
-            p1.setSigmas(sig[0], sig[1]);
-        }
+        if (!o.rejectOutliers()) screened.clear();
+
+        // 2. Nominal fit: geometry fixed, instrument and tool free (on the poses not screened out).
+        NominalFit nf = nominalFit(nominal, without(rows, screened), sixD, instrument, effects, start, o);
+        IdentificationProblem p1 = nf.problem();
+        double[] nominalFull = nf.full();
         o.progress().update("nominal fit", 0.2);
 
         // 3. Identifiability: structural (any poses) then these poses.
@@ -149,17 +147,31 @@ public final class Calibrator {
                     + " poses cannot separate the following parameter combinations:" + sb
                     + "\nadd poses that move the joints involved over a wider part of their ranges");
         }
-        p2.setFixed(fix);
         o.progress().update("identifiability", 0.3);
 
-        // 4. Full fit, re-weighting for 6-D data, outlier rounds.
-        Set<String> outlierIds = new HashSet<>();
-        List<CalibrationResult.Outlier> outliers = new ArrayList<>();
+        // 4. Full fit, re-weighting for 6-D data, then trimmed refits: the poses flagged at a fit
+        //    are left out and the fit is redone from the nominal start (not from the fit they
+        //    shaped); every pose is judged again at each fit, so a pose wrongly flagged by a
+        //    spoiled fit comes back. Ends when the flagged set no longer changes.
+        Set<String> excluded = new HashSet<>(screened);
+        List<CalibrationResult.Outlier> outliers = List.of();
         double[] full = nominalFull;
         LevenbergMarquardt.Result fit = null;
-        IdentificationProblem p = p2;
-        for (int round = 0; round < 6; round++) {
-            fit = new LevenbergMarquardt(p).maxIterations(o.maxIterations()).solve(p.freeOf(full), o.cancel());
+        IdentificationProblem p = null;
+        for (int round = 0; round < MAX_ROUNDS; round++) {
+            List<Measurement> kept = without(rows, excluded);
+            if (kept.size() * p1.rowsPerPose() <= nFree)
+                throw new InputException(train.source(), 0, 0, null, "after removing " + excluded.size()
+                        + " outlier poses too few poses remain to identify " + nFree + " parameters");
+            if (round > 0) {
+                nf = nominalFit(nominal, kept, sixD, instrument, effects, start, o);
+                p1 = nf.problem();
+                nominalFull = nf.full();
+            }
+            p = new IdentificationProblem(nominal, kept, sixD, instrument, effects, nominalFull);
+            p.setSigmas(p1.sigmaPos(), p1.sigmaRot());
+            p.setFixed(fix);
+            fit = new LevenbergMarquardt(p).maxIterations(o.maxIterations()).solve(p.freeOf(nominalFull), o.cancel());
             full = p.fullOf(fit.x());
             if (sixD) {
                 double[] sig = estimateSigmas(p, full, p.freeIndices().length);
@@ -168,22 +180,24 @@ public final class Calibrator {
                 full = p.fullOf(fit.x());
             }
             o.progress().update("fit", Math.min(0.9, 0.4 + 0.1 * round));
-            if (round == 5) break;
-            List<CalibrationResult.Outlier> fresh = findOutliers(p, full, train, outlierIds, o.outlierK());
-            if (fresh.isEmpty()) break;
-            outliers.addAll(fresh);
-            for (CalibrationResult.Outlier ol : fresh) outlierIds.add(ol.poseId());
-            if (!o.rejectOutliers()) break;
-            List<Measurement> kept = new ArrayList<>();
-            for (Measurement m : rows) if (!outlierIds.contains(m.poseId())) kept.add(m);
-            if (kept.size() * p.rowsPerPose() <= nFree)
-                throw new InputException(train.source(), 0, 0, null, "after removing " + outlierIds.size()
-                        + " outlier poses too few poses remain to identify " + nFree + " parameters");
-            IdentificationProblem next = new IdentificationProblem(nominal, kept, sixD, instrument, effects, full);
-            next.setSigmas(p.sigmaPos(), p.sigmaRot());
-            next.setFixed(fix);
-            p = next;
+            Map<String, CalibrationResult.Outlier> flagged = findOutliers(p, full, train, excluded, o.outlierK());
+            if (!o.rejectOutliers()) {
+                outliers = new ArrayList<>(flagged.values());
+                break;
+            }
+            boolean last = flagged.keySet().equals(excluded) || round == MAX_ROUNDS - 1;
+            if (last) {
+                // Report what the final fit left out, judged at that fit.
+                List<CalibrationResult.Outlier> out = new ArrayList<>();
+                Map<String, CalibrationResult.Outlier> all = findOutliers(p, full, train, excluded, 0);
+                for (Measurement m : rows) if (excluded.contains(m.poseId())) out.add(all.get(m.poseId()));
+                outliers = out;
+                break;
+            }
+            excluded = new HashSet<>(flagged.keySet());
         }
+        Set<String> outlierIds = new HashSet<>();
+        for (CalibrationResult.Outlier ol : outliers) outlierIds.add(ol.poseId());
 
         // 5. Uncertainty.
         double[] sigmaFull = covarianceSigmas(p, fit.x());
@@ -206,7 +220,7 @@ public final class Calibrator {
                 : poseErrors(p, nominal, validate, nominalFull, full, Set.of(), effects);
         o.progress().update("done", 1);
         return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
-                data.conditionNumber(), data.observability(), outliers, trainErr, valErr, r1, fit,
+                data.conditionNumber(), data.observability(), outliers, trainErr, valErr, nf.result(), fit,
                 sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6);
     }
 
@@ -216,6 +230,12 @@ public final class Calibrator {
             throw new InputException(set.source(), 0, 0, "q" + set.dof(), "the measurements have " + set.dof()
                     + " joint values per pose but robot " + model.description().name() + " has " + model.dof()
                     + " joints; use the robot the data were taken on");
+        for (Measurement m : set.rows()) {
+            String bad = m.grossField();
+            if (bad != null)
+                throw new InputException(set.source(), m.line(), 0, bad, "pose '" + m.poseId() + "': "
+                        + Measurement.grossReason(bad));
+        }
     }
 
     private static Pose averageToolRotation(KinematicModel nominal, List<Measurement> rows, Pose tool0, Pose inst0) {
@@ -278,9 +298,13 @@ public final class Calibrator {
         return out;
     }
 
-    private static List<CalibrationResult.Outlier> findOutliers(IdentificationProblem p, double[] full, MeasurementSet train,
-                                                               Set<String> known, double k) {
-        // Residuals of every training pose (the flagged ones too), at the current solution.
+    /**
+     * The poses whose residual at this solution exceeds {@code k} robust sigmas, by id in file
+     * order. The robust sigma (median residual norm / Maxwell median) comes from the poses not in
+     * {@code excluded}; every pose is judged, the excluded ones too. {@code k = 0} returns every pose.
+     */
+    private static Map<String, CalibrationResult.Outlier> findOutliers(IdentificationProblem p, double[] full,
+                                                                     MeasurementSet train, Set<String> excluded, double k) {
         IdentificationProblem all = withRows(p, train.rows(), full);
         int m = all.residualCount(), rpp = all.rowsPerPose();
         double[] r = new double[m];
@@ -291,17 +315,16 @@ public final class Calibrator {
             pos[i] = Math.sqrt(sq(r[i * rpp]) + sq(r[i * rpp + 1]) + sq(r[i * rpp + 2])) * all.sigmaPos();
             if (rpp == 6) rot[i] = Math.sqrt(sq(r[i * rpp + 3]) + sq(r[i * rpp + 4]) + sq(r[i * rpp + 5])) * all.sigmaRot();
         }
-        double sigPos = Math.max(robustSigma(pos, train, known), 1e-9);
-        double sigRot = rpp == 6 ? Math.max(robustSigma(rot, train, known), 1e-9) : 0;
-        List<CalibrationResult.Outlier> out = new ArrayList<>();
+        double sigPos = Math.max(robustSigma(pos, train, excluded), 1e-9);
+        double sigRot = rpp == 6 ? Math.max(robustSigma(rot, train, excluded), 1e-9) : 0;
+        Map<String, CalibrationResult.Outlier> out = new java.util.LinkedHashMap<>();
         for (int i = 0; i < n; i++) {
             String id = train.rows().get(i).poseId();
-            if (known.contains(id)) continue;
             if (pos[i] > k * sigPos)
-                out.add(new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
-                        "position residual %.4f mm > %.1f x robust sigma %.4f mm", pos[i] * 1e3, k, sigPos * 1e3)));
+                out.put(id, new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
+                        "position residual %.4f mm > %.1f x robust sigma %.4f mm", pos[i] * 1e3, k == 0 ? pos[i] / sigPos : k, sigPos * 1e3)));
             else if (rpp == 6 && rot[i] > k * sigRot)
-                out.add(new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
+                out.put(id, new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
                         "rotation residual %.5f deg > %.1f x robust sigma %.5f deg", Math.toDegrees(rot[i]), k, Math.toDegrees(sigRot))));
         }
         return out;
@@ -316,6 +339,35 @@ public final class Calibrator {
         double med = c % 2 == 1 ? v[c / 2] : 0.5 * (v[c / 2 - 1] + v[c / 2]);
         return med / MAXWELL_MEDIAN;
     }
+
+    /** The rows whose id is not in {@code ids}, in order. */
+    private static List<Measurement> without(List<Measurement> rows, Set<String> ids) {
+        if (ids.isEmpty()) return rows;
+        List<Measurement> kept = new ArrayList<>();
+        for (Measurement m : rows) if (!ids.contains(m.poseId())) kept.add(m);
+        return kept;
+    }
+
+    /** Nominal fit (geometry and effects fixed, instrument and tool free) from {@code start}; 6-D sigmas set. */
+    private static NominalFit nominalFit(KinematicModel nominal, List<Measurement> rows, boolean sixD, boolean instrument,
+                                         List<EffectBlock> effects, double[] start, Options o) {
+        IdentificationProblem p1 = new IdentificationProblem(nominal, rows, sixD, instrument, effects, start);
+        boolean[] geoFixed = new boolean[p1.fullSize()];
+        for (int i = 0; i < p1.fullSize(); i++)
+            geoFixed[i] = p1.blocks().get(i) == IdentificationProblem.Block.GEOMETRY
+                    || p1.blocks().get(i) == IdentificationProblem.Block.EFFECT;
+        p1.setFixed(geoFixed);
+        LevenbergMarquardt.Result r = new LevenbergMarquardt(p1).maxIterations(o.maxIterations()).solve(p1.freeOf(start), o.cancel());
+        double[] full = p1.fullOf(r.x());
+        if (sixD) {
+            double[] sig = estimateSigmas(p1, full, p1.freeIndices().length);
+            p1.setSigmas(sig[0], sig[1]);
+        }
+        return new NominalFit(p1, r, full);
+    }
+
+    /** The nominal-fit problem (its sigmas), the solver result and the full parameter vector. */
+    private record NominalFit(IdentificationProblem problem, LevenbergMarquardt.Result result, double[] full) { }
 
     private static double sq(double v) { return v * v; }
 

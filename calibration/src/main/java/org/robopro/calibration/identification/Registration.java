@@ -45,8 +45,41 @@ public final class Registration {
         return IdentificationProblem.poseOf(rm, new double[] {cb.x() - rc[0], cb.y() - rc[1], cb.z() - rc[2]});
     }
 
+    /**
+     * Rigid registration that trims points far from the rest: fit, drop the points whose residual
+     * exceeds {@code max(4 x median residual, 1 mm)}, refit, until the kept set no longer
+     * changes (at most 10 fits). A single wild point cannot tilt the result. {@code keep} (one
+     * entry per point) receives the points used for the returned pose.
+     */
+    public static Pose trimmed(List<Vec3> a, List<Vec3> b, boolean[] keep) {
+        int n = a.size();
+        java.util.Arrays.fill(keep, true);
+        Pose t = rigid(a, b);
+        for (int round = 0; round < 10; round++) {
+            double[] res = new double[n];
+            for (int i = 0; i < n; i++) res[i] = t.apply(a.get(i)).minus(b.get(i)).norm();
+            double[] sorted = res.clone();
+            java.util.Arrays.sort(sorted);
+            double limit = Math.max(4 * sorted[n / 2], 1e-3);
+            boolean changed = false;
+            List<Vec3> ka = new java.util.ArrayList<>(), kb = new java.util.ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                boolean k = res[i] <= limit;
+                changed |= k != keep[i];
+                keep[i] = k;
+                if (k) { ka.add(a.get(i)); kb.add(b.get(i)); }
+            }
+            if (!changed || ka.size() < 3) break;
+            t = rigid(ka, kb);
+        }
+        return t;
+    }
+
     /** The singular values (descending) of the centred point cloud: how well it spans 3-D, m. */
     public static double[] spread(List<Vec3> pts) {
+        for (Vec3 p : pts)
+            if (!Double.isFinite(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()))
+                throw new IllegalArgumentException("point " + p + " is not finite (or its square overflows)");
         Vec3 c = centroid(pts);
         DMatrixRMaj m = new DMatrixRMaj(3, 3);
         for (Vec3 p : pts) {
@@ -54,7 +87,7 @@ public final class Registration {
             for (int r = 0; r < 3; r++) for (int k = 0; k < 3; k++) m.add(r, k, d[r] * d[k]);
         }
         SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(3, 3, false, false, false);
-        svd.decompose(m);
+        if (!svd.decompose(m)) throw new IllegalStateException("SVD failed");
         double[] s = svd.getSingularValues().clone();
         java.util.Arrays.sort(s);
         return new double[] {Math.sqrt(s[2] / pts.size()), Math.sqrt(s[1] / pts.size()), Math.sqrt(Math.max(0, s[0]) / pts.size())};

@@ -60,6 +60,33 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
 
     public boolean hasOrientation() { return orientation != null; }
 
+    /**
+     * Largest believable coordinate of a measured point, m: beyond any industrial robot's reach
+     * seen from any instrument's range (laser trackers measure to about 80 m, Leica AT960
+     * datasheet). A value beyond it is a misread number, not a measurement.
+     */
+    public static final double GROSS_POSITION_M = 100;
+    /** Largest believable joint value, rad or m (100 m, or about 16 turns of a revolute joint). */
+    public static final double GROSS_JOINT = 100;
+
+    /** The first field (q1.., x, y, z) that is non-finite or beyond the gross limits, or null. */
+    public String grossField() {
+        for (int k = 0; k < q.length; k++) if (!(Math.abs(q[k]) <= GROSS_JOINT)) return "q" + (k + 1);
+        if (!(Math.abs(position.x()) <= GROSS_POSITION_M)) return "x";
+        if (!(Math.abs(position.y()) <= GROSS_POSITION_M)) return "y";
+        if (!(Math.abs(position.z()) <= GROSS_POSITION_M)) return "z";
+        return null;
+    }
+
+    /** Why a value of {@code field} named by {@link #grossField()} is refused, in words. */
+    public static String grossReason(String field) {
+        return field.startsWith("q")
+                ? String.format(java.util.Locale.ROOT, "joint value is not finite or beyond %.0f rad (or m): "
+                        + "not a joint position; correct or delete this row", GROSS_JOINT)
+                : String.format(java.util.Locale.ROOT, "coordinate is not finite or beyond %.0f m, outside any "
+                        + "robot's reach: a misread value; correct or delete this row", GROSS_POSITION_M);
+    }
+
     public Measurement withPosition(Vec3 p) {
         return new Measurement(poseId, q, p, orientation, directions, timeS, tempC, payloadKg, set, line);
     }

@@ -224,7 +224,12 @@ public final class MeasurementReader {
                         default -> throw error(lineNo, f.col, "set", "set must be 'train' or 'validate', not '" + f.text + "'");
                     }
                 }
-                rows.add(new Measurement(id, q, p, o, dirs, time, temp, pay, split, lineNo));
+                Measurement row = new Measurement(id, q, p, o, dirs, time, temp, pay, split, lineNo);
+                String gross = row.grossField();
+                if (gross != null)
+                    throw error(lineNo, fs.get(gross.startsWith("q") ? qIdx[Integer.parseInt(gross.substring(1)) - 1]
+                            : index.get(gross)).col, gross, Measurement.grossReason(gross));
+                rows.add(row);
             }
             if (rows.isEmpty()) throw error(headerLine, 1, null, "no measurement rows after the header row");
             String frame = meta.getOrDefault("frame", "instrument");

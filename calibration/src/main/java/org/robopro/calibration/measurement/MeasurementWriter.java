@@ -18,53 +18,74 @@ import org.robopro.models.JointType;
 public final class MeasurementWriter {
     private MeasurementWriter() { }
 
+    /** Which optional columns a file has. */
+    public record Columns(boolean orientation, boolean directions, boolean time, boolean temp, boolean payload, boolean split) {
+        /** The optional columns every row of {@code set} has. */
+        public static Columns of(MeasurementSet set) {
+            return new Columns(set.hasOrientation(), set.hasDirections(), set.hasTime(), set.hasTemperature(),
+                    set.hasPayload(), set.hasSplit());
+        }
+
+        /** The optional columns {@code m} has. */
+        public static Columns of(Measurement m) {
+            return new Columns(m.orientation() != null, m.directions() != null, !Double.isNaN(m.timeS()),
+                    !Double.isNaN(m.tempC()), !Double.isNaN(m.payloadKg()), m.set() != null);
+        }
+    }
+
     /** The file's text. {@code jointTypes} null treats every joint as revolute. */
     public static String format(MeasurementSet set, List<JointType> jointTypes) {
         StringBuilder sb = new StringBuilder();
+        Columns c = Columns.of(set);
+        header(sb, set.metadata(), set.frame(), set.dof(), c);
+        for (Measurement m : set.rows()) row(sb, m, set.dof(), jointTypes, c);
+        return sb.toString();
+    }
+
+    /** The magic line, metadata, units and the header row. */
+    static void header(StringBuilder sb, Map<String, String> metadata, String frame, int dof, Columns c) {
         sb.append("# robopro-measurements 1\n");
         boolean wroteFrame = false;
-        for (Map.Entry<String, String> e : set.metadata().entrySet()) {
+        for (Map.Entry<String, String> e : metadata.entrySet()) {
             String k = e.getKey();
             if (k.equals("length-unit") || k.equals("angle-unit") || k.equals("robopro-measurements 1")) continue;
-            if (k.equals("frame")) { wroteFrame = true; sb.append("# frame: ").append(set.frame()).append('\n'); continue; }
+            if (k.equals("frame")) { wroteFrame = true; sb.append("# frame: ").append(frame).append('\n'); continue; }
             sb.append("# ").append(k).append(": ").append(e.getValue().replace('\n', ' ')).append('\n');
         }
-        if (!wroteFrame) sb.append("# frame: ").append(set.frame()).append('\n');
+        if (!wroteFrame) sb.append("# frame: ").append(frame).append('\n');
         sb.append("# length-unit: mm\n# angle-unit: deg\n");
-        int dof = set.dof();
-        boolean o = set.hasOrientation(), d = set.hasDirections(), t = set.hasTime(), te = set.hasTemperature(),
-                p = set.hasPayload(), s = set.hasSplit();
         sb.append("pose");
         for (int k = 1; k <= dof; k++) sb.append(",q").append(k);
         sb.append(",x,y,z");
-        if (o) sb.append(",qw,qx,qy,qz");
-        if (d) for (int k = 1; k <= dof; k++) sb.append(",dir").append(k);
-        if (t) sb.append(",time_s");
-        if (te) sb.append(",temp_c");
-        if (p) sb.append(",payload_kg");
-        if (s) sb.append(",set");
+        if (c.orientation()) sb.append(",qw,qx,qy,qz");
+        if (c.directions()) for (int k = 1; k <= dof; k++) sb.append(",dir").append(k);
+        if (c.time()) sb.append(",time_s");
+        if (c.temp()) sb.append(",temp_c");
+        if (c.payload()) sb.append(",payload_kg");
+        if (c.split()) sb.append(",set");
         sb.append('\n');
-        for (Measurement m : set.rows()) {
-            String id = m.poseId();
-            if (id.contains(",") || id.contains("\n") || id.startsWith("#"))
-                throw new IllegalArgumentException("pose id '" + id + "' cannot be written (comma, newline or leading #)");
-            sb.append(id);
-            for (int k = 0; k < dof; k++) {
-                boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
-                sb.append(',').append(num(prismatic ? Units.mToMm(m.q(k)) : Units.radToDeg(m.q(k)), 9));
-            }
-            sb.append(',').append(num(Units.mToMm(m.position().x()), 6))
-              .append(',').append(num(Units.mToMm(m.position().y()), 6))
-              .append(',').append(num(Units.mToMm(m.position().z()), 6));
-            if (o) for (double v : m.orientation()) sb.append(',').append(num(v, 12));
-            if (d) for (int v : m.directions()) sb.append(',').append(v);
-            if (t) sb.append(',').append(num(m.timeS(), 3));
-            if (te) sb.append(',').append(num(m.tempC(), 3));
-            if (p) sb.append(',').append(num(m.payloadKg(), 3));
-            if (s) sb.append(',').append(m.set().fileName());
-            sb.append('\n');
+    }
+
+    /** One data row with the columns {@code c}. */
+    static void row(StringBuilder sb, Measurement m, int dof, List<JointType> jointTypes, Columns c) {
+        String id = m.poseId();
+        if (id.contains(",") || id.contains("\n") || id.startsWith("#"))
+            throw new IllegalArgumentException("pose id '" + id + "' cannot be written (comma, newline or leading #)");
+        sb.append(id);
+        for (int k = 0; k < dof; k++) {
+            boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
+            sb.append(',').append(num(prismatic ? Units.mToMm(m.q(k)) : Units.radToDeg(m.q(k)), 9));
         }
-        return sb.toString();
+        sb.append(',').append(num(Units.mToMm(m.position().x()), 6))
+          .append(',').append(num(Units.mToMm(m.position().y()), 6))
+          .append(',').append(num(Units.mToMm(m.position().z()), 6));
+        if (c.orientation()) for (double v : m.orientation()) sb.append(',').append(num(v, 12));
+        if (c.directions()) for (int v : m.directions()) sb.append(',').append(v);
+        if (c.time()) sb.append(',').append(num(m.timeS(), 3));
+        if (c.temp()) sb.append(',').append(num(m.tempC(), 3));
+        if (c.payload()) sb.append(',').append(num(m.payloadKg(), 3));
+        if (c.split()) sb.append(',').append(m.set().fileName());
+        sb.append('\n');
     }
 
     public static void write(MeasurementSet set, List<JointType> jointTypes, Path file, boolean overwrite) throws IOException {

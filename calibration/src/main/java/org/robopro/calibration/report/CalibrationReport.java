@@ -181,7 +181,7 @@ public final class CalibrationReport {
 
     public static String summaryJson(CalibrationResult r, Context ctx, List<String> warnings) {
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(summary(r, ctx, warnings)) + "\n";
+            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(r, ctx, warnings)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }

@@ -169,7 +169,7 @@ public final class CampaignSimulator {
         for (JointEffect e : c.truth().effects()) eff.add(e.name());
         root.put("effects", effectEntries != null ? effectEntries : eff);
         try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root);
+            return org.robopro.models.JsonMapper.create().writeValueAsString(root);
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }

@@ -32,15 +32,22 @@ class DiagnoserTest {
         Diagnosis d = Diagnoser.diagnose(robot, c.measurements(), c.validation());
         assertEquals(1, d.effects().size());
         assertEquals("backlash j2", d.effects().get(0).effect().label());
+        assertEquals(Directions.Source.RECORDED, d.directions());
         assertTrue(d.finalValidateRmsM() < 0.5 * d.geometricValidateRmsM());
     }
 
     @Test
-    void diagnose_backlashWithoutDirectionColumns_advisesRecordingThemAndClaimsNothingElse() {
+    void diagnose_backlashWithoutDirectionColumns_infersThemFromTheMeasuringOrder() {
         Campaign c = ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
         Diagnosis d = Diagnoser.diagnose(robot, strip(c.measurements(), true, false, false), strip(c.validation(), true, false, false));
+        assertEquals(Directions.Source.TIME_ORDER, d.directions());
+        assertTrue(d.effects().stream().anyMatch(f -> f.effect().label().equals("backlash j2")), d.effects().toString());
+        assertTrue(d.effects().stream().noneMatch(f -> f.effect().kind() == Effect.Kind.BACKLASH && f.effect().joint() != 1));
+        Diagnosis.Finding f = d.effects().stream().filter(x -> x.effect().kind() == Effect.Kind.BACKLASH).findFirst().orElseThrow();
+        assertTrue(f.values()[0] > 0, "lost motion is positive (lagging output): " + f.values()[0]);
+        assertTrue(f.words().contains("inferred"), f.words());
+        assertTrue(d.finalValidateRmsM() < 0.5 * d.geometricValidateRmsM(), d.finalValidateRmsM() + " vs " + d.geometricValidateRmsM());
         assertTrue(d.recommendations().stream().anyMatch(r -> r.contains("dir1..dir6")), d.recommendations().toString());
-        assertTrue(d.effects().stream().noneMatch(f -> f.effect().kind() == Effect.Kind.BACKLASH));
     }
 
     @Test

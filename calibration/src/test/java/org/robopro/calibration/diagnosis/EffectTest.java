@@ -116,4 +116,35 @@ class EffectTest {
             assertArrayEquals(t.values(), back.values(), 0);
         }
     }
+
+    /**
+     * Physics, not this code: a driven output lags its motor-side encoder. After a motion in
+     * direction +1 the output stands b/2 behind q, after −1 b/2 ahead (dead-band model). The truth
+     * and the block must both move the model angle by −(b/2)·dir.
+     */
+    @Test
+    void backlash_outputLagsTheEncoder() {
+        double b = Math.toRadians(0.04);
+        JointEffect truth = Effect.backlash(1).truth(new double[] {b});
+        double[] q = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6};
+        for (int dir : new int[] {1, -1, 0}) {
+            PoseConditions c = new PoseConditions(new int[] {0, dir, 0, 0, 0, 0}, 0, 20, 0);
+            double[] dTheta = new double[6];
+            truth.addDeltaTheta(model, q, c, dTheta);
+            assertEquals(-0.5 * b * dir, dTheta[1], 1e-15, "dir " + dir);
+            assertEquals(0, dTheta[0], 0);
+            double[] dv = new double[6];
+            double[] dt = new double[6];
+            Measurement row = new Measurement("p", q, Vec3.ZERO, null, c.directions(), 0, 20, 0, null, 0);
+            Effect.backlash(1).block().jointDelta(new double[] {b}, row, dt, dv);
+            assertEquals(-0.5 * b * dir, dt[1], 1e-15);
+            assertEquals(-0.5 * dir, dv[1], 1e-15, "derivative of the angle by b");
+        }
+        // The extended model's tool point is the geometry's at the lagging angle, computed here by hand.
+        ExtendedModel ext = new ExtendedModel(model, List.of(new Effect.Term(Effect.backlash(1), new double[] {b})));
+        PoseConditions up = new PoseConditions(new int[] {1, 1, 1, 1, 1, 1}, 0, 20, 0);
+        double[] lag = model.theta(q);
+        lag[1] -= b / 2;
+        assertEquals(0, ext.flange(q, up).distanceTo(model.flange(model.q(lag))), 1e-12);
+    }
 }

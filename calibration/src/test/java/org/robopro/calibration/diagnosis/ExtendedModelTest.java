@@ -75,4 +75,26 @@ class ExtendedModelTest {
         assertTrue(worstWith < 1e-7, "with effects the robot misses by " + worstWith);
         assertTrue(worstWithout > 1e-4, "the effects should matter: " + worstWithout);
     }
+
+    /**
+     * To reach a target the command must lead the lagging output: with backlash b on joint 2 and
+     * approach direction dir, the compensated joint value is the target's plus (b/2)·dir (model
+     * angle; computed here by hand, not with the effect's code).
+     */
+    @Test
+    void compensator_backlash_commandLeadsByHalfThePlay() {
+        double b = Math.toRadians(0.05);
+        ExtendedModel ext = new ExtendedModel(model, List.of(new Effect.Term(Effect.backlash(1), new double[] {b})));
+        for (int dir : new int[] {1, -1}) {
+            PoseConditions cond = new PoseConditions(new int[] {dir, dir, dir, dir, dir, dir}, 0, 20, 0);
+            Compensator comp = new Compensator(model, ext, tool, tool, cond);
+            double[] q0 = {0.3, 0.2, -0.1, 0.4, 0.5, 0.6};
+            Pose target = model.tool(q0, tool);
+            Compensator.Result r = comp.compensate(target, q0);
+            assertEquals(Compensator.Status.CONVERGED, r.status());
+            double[] th = model.theta(r.q()), th0 = model.theta(q0);
+            assertEquals(b / 2 * dir, th[1] - th0[1], 1e-9, "joint 2 leads by half the play, dir " + dir);
+            for (int j : new int[] {0, 2, 3, 4, 5}) assertEquals(th0[j], th[j], 1e-9, "joint " + (j + 1));
+        }
+    }
 }

@@ -153,6 +153,20 @@ class MeasurementReaderTest {
     }
 
     @Test
+    void parse_grossValuesBeyondAnyReach_areRefusedPerRowWithLineColumnAndField() {
+        // 1e6 mm = 1 km: a misread number, refused before any fit.
+        InputException e = fails(GOOD.replace("-204.118", "1e6"));
+        assertEquals(8, e.line());
+        assertEquals("y", e.field());
+        assertEquals(GOOD.replace("-204.118", "1e6").split("\n")[7].indexOf("1e6") + 1, e.column());
+        assertTrue(e.getMessage().contains("reach"), e.getMessage());
+        assertEquals("z", fails(GOOD.replace("1615", "1e200")).field());
+        assertEquals("q5", fails(GOOD.replace("-35.7", "1e300")).field());
+        // 99 m is still believable (a tracker far away).
+        assertEquals(2, MeasurementReader.parse("m.csv", GOOD.replace("2315.412", "99000"), SIX).size());
+    }
+
+    @Test
     void parse_duplicatePoseId_namesBothLines() {
         InputException e = fails(GOOD.replace("\n2,0,0", "\n1,0,0"));
         assertEquals(9, e.line());

@@ -151,7 +151,7 @@ public final class ControllerSim implements AutoCloseable {
         root.put("effect_specs", c.effects());
         if (robot.thermal()) root.put("warmup", Map.of("t0_c", SimEffects.T0_C, "rise_k", SimEffects.WARMUP_K, "tau_s", SimEffects.WARMUP_TAU_S));
         root.putAll(robot.truthJson());
-        AtomicFiles.writeString(c.truthFile(), new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root) + "\n", true);
+        AtomicFiles.writeString(c.truthFile(), org.robopro.models.JsonMapper.create().writeValueAsString(root) + "\n", true);
     }
 
     public SimulatedController controller() { return controller; }

@@ -48,18 +48,16 @@ public final class WorkbenchApp extends SimpleApplication {
     private long windowFrames;
     private int lastW, lastH;
 
-    public WorkbenchApp(WorkbenchModel model, Function<String, Path> meshResolver) {
+    /** A scene over {@code model} that shows the results of {@code pathChecker} (owned by the caller). */
+    public WorkbenchApp(WorkbenchModel model, PathChecker pathChecker, Function<String, Path> meshResolver) {
         super(new AppState[0]); // no fly camera, no stats overlay: navigation is CameraState
         this.model = model;
         this.meshResolver = meshResolver;
         this.pathState = new PathState(model, world);
         // Path checks run off the render thread; the scene takes each result in its own update.
-        this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
+        this.pathChecker = pathChecker;
         pathChecker.addListener(r -> enqueue(() -> pathState.show(r)));
     }
-
-    /** Edits closer together than this cost one path check. */
-    public static final long PATH_CHECK_DEBOUNCE_MS = 120;
 
     /** Hands over the Swing panel the scene is drawn into; simpleInitApp waits for it. */
     public void setPanel(AwtPanel p) {

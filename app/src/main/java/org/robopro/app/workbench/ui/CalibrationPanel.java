@@ -30,7 +30,7 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.diagnosis.Diagnosis;
 import org.robopro.calibration.diagnosis.Effect;
@@ -50,7 +50,7 @@ import org.robopro.models.InputException;
  * extended) robot file and makes RAPID export compensate targets with it.
  */
 public final class CalibrationPanel extends JDialog {
-    private final Workbench wb;
+    private final WorkbenchSession wb;
     private final JLabel file = new JLabel("no measurement file");
     private final JProgressBar progress = new JProgressBar(0, 1000);
     private final JButton run = new JButton("Calibrate");
@@ -63,13 +63,13 @@ public final class CalibrationPanel extends JDialog {
     private final JTextArea findings = new JTextArea(12, 60);
     private final RmsChart rmsChart = new RmsChart();
     private final JTabbedPane tabs = new JTabbedPane();
-    private Workbench.Measurements measurements;
+    private WorkbenchSession.Measurements measurements;
     private volatile Cancellation token;
     private volatile CalibrationResult result;
     private volatile Diagnosis diagnosis;
     private volatile String state = "idle";
 
-    public CalibrationPanel(WorkbenchFrame owner, Workbench wb) {
+    public CalibrationPanel(WorkbenchFrame owner, WorkbenchSession wb) {
         super(owner, "Calibration", false);
         this.wb = wb;
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
@@ -180,7 +180,7 @@ public final class CalibrationPanel extends JDialog {
         return background("Diagnosis", (m, c, p) -> wb.diagnose(m, c, p), this::show);
     }
 
-    private interface Job<T> { T run(Workbench.Measurements m, Cancellation c, org.robopro.calibration.Progress p); }
+    private interface Job<T> { T run(WorkbenchSession.Measurements m, Cancellation c, org.robopro.calibration.Progress p); }
 
     /** Runs a job off the Swing thread with the progress bar and Cancel; the result is shown on the Swing thread. */
     private <T> CompletableFuture<T> background(String what, Job<T> job, java.util.function.Consumer<T> show) {
@@ -191,7 +191,7 @@ public final class CalibrationPanel extends JDialog {
         progress.setValue(0);
         progress.setString(what.toLowerCase(Locale.ROOT));
         updateButtons();
-        Workbench.Measurements m = measurements;
+        WorkbenchSession.Measurements m = measurements;
         CompletableFuture<T> f = new CompletableFuture<>();
         Thread t = new Thread(() -> {
             try {

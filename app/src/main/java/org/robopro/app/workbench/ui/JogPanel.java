@@ -15,7 +15,7 @@ import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JSpinner;
 import javax.swing.SpinnerNumberModel;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.Pose;
@@ -27,18 +27,18 @@ import org.robopro.models.JointDescription;
  * pose and configuration data shown.
  */
 public final class JogPanel extends JPanel {
-    private final Workbench wb;
+    private final WorkbenchSession wb;
     private final JPanel joints = new JPanel(new GridBagLayout());
     private JSlider[] sliders = new JSlider[0];
     private JSpinner[] spinners = new JSpinner[0];
-    private final JComboBox<Workbench.JogFrame> frame = new JComboBox<>(Workbench.JogFrame.values());
+    private final JComboBox<WorkbenchSession.JogFrame> frame = new JComboBox<>(WorkbenchSession.JogFrame.values());
     private final JSpinner stepMm = new JSpinner(new SpinnerNumberModel(10.0, 0.1, 500.0, 1.0));
     private final JSpinner stepDeg = new JSpinner(new SpinnerNumberModel(5.0, 0.1, 90.0, 1.0));
     private final JLabel tcp = new JLabel();
     private final JLabel conf = new JLabel();
     private boolean updating;
 
-    public JogPanel(Workbench wb) {
+    public JogPanel(WorkbenchSession wb) {
         super(new BorderLayout(4, 4));
         this.wb = wb;
         setBorder(BorderFactory.createTitledBorder("Jog"));
@@ -88,10 +88,10 @@ public final class JogPanel extends JPanel {
         double rad = Math.toRadians(((Number) stepDeg.getValue()).doubleValue()) * sign;
         double[] d = new double[6];
         d[axis] = axis < 3 ? mm : rad;
-        return wb.jogCartesian((Workbench.JogFrame) frame.getSelectedItem(), d[0], d[1], d[2], d[3], d[4], d[5]);
+        return wb.jogCartesian((WorkbenchSession.JogFrame) frame.getSelectedItem(), d[0], d[1], d[2], d[3], d[4], d[5]);
     }
 
-    public void setJogFrame(Workbench.JogFrame f) { frame.setSelectedItem(f); }
+    public void setJogFrame(WorkbenchSession.JogFrame f) { frame.setSelectedItem(f); }
 
     /** Sets joint i's spinner as a user would; the change flows to the model. */
     public void setJointDegrees(int i, double deg) { spinners[i].setValue(deg); }

@@ -19,7 +19,7 @@ import javax.swing.SpinnerNumberModel;
 import javax.swing.Timer;
 import javax.swing.table.AbstractTableModel;
 import javax.swing.table.DefaultTableCellRenderer;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
@@ -31,7 +31,7 @@ import org.robopro.app.workbench.model.Target;
  * program back (the checked run's joint values).
  */
 public final class ProgramPanel extends JPanel {
-    private final Workbench wb;
+    private final WorkbenchSession wb;
     private final Rows rows = new Rows();
     private final JTable table = new JTable(rows);
     private final JSpinner speed = new JSpinner(new SpinnerNumberModel(500, 5, 7000, 50));
@@ -47,7 +47,7 @@ public final class ProgramPanel extends JPanel {
     private double playFrom;
     private boolean scrubbing;
 
-    public ProgramPanel(Workbench wb) {
+    public ProgramPanel(WorkbenchSession wb) {
         super(new BorderLayout(4, 4));
         this.wb = wb;
         table.setRowHeight(20);
@@ -197,7 +197,7 @@ public final class ProgramPanel extends JPanel {
     /** The model's program changed. */
     public void refresh() {
         // Keep check results live once checked, from the background check (never computed on this thread).
-        var latest = wb.app().pathChecker().latest();
+        var latest = wb.pathChecker().latest();
         if (plan != null && !player.isRunning() && latest != null && latest.program().equals(wb.model().program())) plan = latest.run();
         refreshWobjs();
         rows.fireTableDataChanged();

@@ -10,7 +10,7 @@ import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTable;
 import javax.swing.table.AbstractTableModel;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.Tool;
@@ -26,11 +26,11 @@ import org.robopro.models.Vec3;
 public final class PropertiesPanel extends JPanel {
     private record Row(String name, String value, Consumer<String> edit) { }
 
-    private final Workbench wb;
+    private final WorkbenchSession wb;
     private final List<Row> rows = new ArrayList<>();
     private final Table table = new Table();
 
-    public PropertiesPanel(Workbench wb) {
+    public PropertiesPanel(WorkbenchSession wb) {
         super(new BorderLayout());
         this.wb = wb;
         setBorder(BorderFactory.createTitledBorder("Properties"));

@@ -25,7 +25,7 @@ import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.table.AbstractTableModel;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.RobotWizardModel;
 import org.robopro.app.workbench.model.RobotWizardModel.JointRow;
 import org.robopro.app.workbench.model.WorkbenchModel;
@@ -46,7 +46,7 @@ import org.robopro.models.RobotLibrary;
 public final class RobotWizard extends JDialog {
     private static final String[] COLS = {"Joint", "Type", "X mm", "Y mm", "Z mm", "Axis x", "Axis y", "Axis z", "Min", "Max", "Speed /s"};
 
-    private final Workbench wb;
+    private final WorkbenchSession wb;
     private RobotWizardModel wm;
     private final JointTable joints = new JointTable();
     private final FlangeTable flange = new FlangeTable();
@@ -60,7 +60,7 @@ public final class RobotWizard extends JDialog {
     private RobotWizardModel.Result result;
     private Path savedTo;
 
-    public RobotWizard(WorkbenchFrame owner, Workbench wb) {
+    public RobotWizard(WorkbenchFrame owner, WorkbenchSession wb) {
         super(owner, "Robot model wizard (Fig. 7)", false);
         this.wb = wb;
         this.wm = RobotWizardModel.from(wb.model().robot());

@@ -40,11 +40,12 @@ import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
-import org.robopro.app.workbench.Workbench;
+import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.app.workbench.scene.CameraState;
+import org.robopro.app.workbench.scene.WorkbenchApp;
 import org.robopro.kinematics.Pose;
 
 /**
@@ -55,7 +56,9 @@ import org.robopro.kinematics.Pose;
  */
 public final class WorkbenchFrame extends JFrame {
 
-    private final Workbench wb;
+    private final WorkbenchSession wb;
+    private final WorkbenchApp app;
+    private final WindowOps window;
     private final Map<String, Action> actions = new LinkedHashMap<>();
     private final CellTree tree;
     private final PropertiesPanel properties;
@@ -71,9 +74,17 @@ public final class WorkbenchFrame extends JFrame {
     private JSplitPane mainSplit;
     private JSplitPane midSplit;
 
-    public WorkbenchFrame(Workbench wb, AwtPanel view) {
+    /** What the frame asks of the window around it: a picture of itself, and closing everything. */
+    public interface WindowOps {
+        void screenshot(Path png) throws IOException, InterruptedException;
+        void close();
+    }
+
+    public WorkbenchFrame(WorkbenchSession wb, WorkbenchApp app, AwtPanel view, WindowOps window) {
         super("robopro workbench");
         this.wb = wb;
+        this.app = app;
+        this.window = window;
         setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         addWindowListener(new WindowAdapter() {
             @Override public void windowClosing(WindowEvent e) { action("exit").actionPerformed(null); }
@@ -83,6 +94,7 @@ public final class WorkbenchFrame extends JFrame {
         jog = new JogPanel(wb);
         program = new ProgramPanel(wb);
         defineActions();
+        updateUndoActions();
         setJMenuBar(menus());
 
         view.setMinimumSize(new Dimension(100, 100));
@@ -114,7 +126,8 @@ public final class WorkbenchFrame extends JFrame {
         setContentPane(content);
 
         wb.model().addListener(this::modelChanged);
-        wb.app().pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
+        wb.addLogListener(line -> SwingUtilities.invokeLater(() -> appendLog(line)));
+        wb.pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
         new Timer(500, e -> updateStatus()).start();
     }
 
@@ -151,7 +164,7 @@ public final class WorkbenchFrame extends JFrame {
     /** Asks which procedure of an uploaded module becomes the program (main preselected); null when cancelled. */
     String chooseProcedure(java.util.List<String> procs) {
         return (String) JOptionPane.showInputDialog(this, "The module has " + procs.size() + " procedures. Which one is the program?",
-                "Upload program: PROC", JOptionPane.QUESTION_MESSAGE, null, procs.toArray(), Workbench.defaultProcedure(procs));
+                "Upload program: PROC", JOptionPane.QUESTION_MESSAGE, null, procs.toArray(), WorkbenchSession.defaultProcedure(procs));
     }
 
     public boolean importRapid(Path file) {
@@ -232,12 +245,13 @@ public final class WorkbenchFrame extends JFrame {
         tree.rebuild(latestStatuses());
         properties.refresh();
         program.refresh();
+        updateUndoActions();
         updateTitle();
     }
 
     /** Target statuses of the last background path check (none before the first). */
     private Map<String, org.robopro.app.workbench.model.TargetStatus> latestStatuses() {
-        var r = wb.app().pathChecker().latest();
+        var r = wb.pathChecker().latest();
         return r == null ? Map.of() : r.statuses();
     }
 
@@ -256,7 +270,7 @@ public final class WorkbenchFrame extends JFrame {
         Pose p = wb.model().worldTtcp();
         status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %.0f fps  |  %s",
                 wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, wb.model().targets().size(),
-                wb.model().program().size(), wb.app().fps(), wb.model().kinematics().implementation()));
+                wb.model().program().size(), app.fps(), wb.model().kinematics().implementation()));
         updateTitle();
     }
 
@@ -304,11 +318,40 @@ public final class WorkbenchFrame extends JFrame {
         return p;
     }
 
+    /**
+     * Before the open cell is replaced: with unsaved changes asks whether to save them; false
+     * when the user cancels (or saving failed). Under tests (no visible window) it never asks.
+     */
+    private boolean changesHandled() {
+        if (!wb.model().dirty() || !isShowing() || System.getenv("robopro.test") != null) return true;
+        int r = JOptionPane.showConfirmDialog(this, "Save changes to the open project first?", "robopro", JOptionPane.YES_NO_CANCEL_OPTION);
+        if (r == JOptionPane.CANCEL_OPTION || r == JOptionPane.CLOSED_OPTION) return false;
+        if (r == JOptionPane.YES_OPTION) { action("save").actionPerformed(null); return !wb.model().dirty(); }
+        return true;
+    }
+
+    /** Undo / Redo name the edit they act on and are enabled only when there is one. */
+    private void updateUndoActions() {
+        var h = wb.model().history();
+        Action u = action("undo"), r = action("redo");
+        u.putValue(Action.NAME, h.undoLabel().map(l -> "Undo " + l).orElse("Undo"));
+        u.setEnabled(h.undoLabel().isPresent());
+        r.putValue(Action.NAME, h.redoLabel().map(l -> "Redo " + l).orElse("Redo"));
+        r.setEnabled(h.redoLabel().isPresent());
+    }
+
     private void defineActions() {
+        def("new", "New project", "ctrl N", e -> { if (changesHandled()) wb.newProject(); });
         def("open", "Open project...", "ctrl O", e -> {
+            if (!changesHandled()) return;
             Path p = choose(false, null);
             if (p != null) io(() -> wb.openProject(p));
         });
+        def("undo", "Undo", "ctrl Z", e -> wb.undo());
+        def("redo", "Redo", "ctrl Y", e -> wb.redo());
+        // Ctrl+Shift+Z redoes as well (the other common binding).
+        getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW).put(KeyStroke.getKeyStroke("ctrl shift Z"), "redo");
+        getRootPane().getActionMap().put("redo", action("redo"));
         def("save", "Save project", "ctrl S", e -> {
             Path p = wb.projectFile().orElseGet(() -> choose(true, ".robopro.json"));
             if (p != null) io(() -> wb.save(p));
@@ -328,7 +371,7 @@ public final class WorkbenchFrame extends JFrame {
         def("screenshot", "Save screenshot...", null, e -> {
             Path p = choose(true, ".png");
             if (p != null) new Thread(() -> {
-                try { wb.screenshot(p); wb.log("Screenshot " + p); } catch (Exception ex) { wb.log("Screenshot failed: " + ex); }
+                try { window.screenshot(p); wb.log("Screenshot " + p); } catch (Exception ex) { wb.log("Screenshot failed: " + ex); }
             }, "screenshot").start();
         });
         def("exit", "Exit", "ctrl Q", e -> {
@@ -337,7 +380,7 @@ public final class WorkbenchFrame extends JFrame {
                 if (r == JOptionPane.CANCEL_OPTION || r == JOptionPane.CLOSED_OPTION) return;
                 if (r == JOptionPane.YES_OPTION) { action("save").actionPerformed(null); if (wb.model().dirty()) return; }
             }
-            new Thread(() -> { wb.close(); System.exit(0); }, "exit").start();
+            new Thread(() -> { window.close(); System.exit(0); }, "exit").start();
         });
         def("add-table", "Add table", null, e -> wb.addObject(CellObject.Kind.TABLE));
         def("add-fixture", "Add fixture", null, e -> wb.addObject(CellObject.Kind.FIXTURE));
@@ -350,10 +393,10 @@ public final class WorkbenchFrame extends JFrame {
         });
         def("delete", "Delete selection", "DELETE", e -> wb.deleteSelection());
         def("edit-tool", "Tool...", null, e -> wb.model().select("tool"));
-        def("view-front", "Front view", "F1", e -> wb.setView(CameraState.View.FRONT));
-        def("view-top", "Top view", "F2", e -> wb.setView(CameraState.View.TOP));
-        def("view-side", "Side view", "F3", e -> wb.setView(CameraState.View.SIDE));
-        def("view-iso", "Isometric view", "F4", e -> wb.setView(CameraState.View.ISO));
+        def("view-front", "Front view", "F1", e -> app.camera().view(CameraState.View.FRONT));
+        def("view-top", "Top view", "F2", e -> app.camera().view(CameraState.View.TOP));
+        def("view-side", "Side view", "F3", e -> app.camera().view(CameraState.View.SIDE));
+        def("view-iso", "Isometric view", "F4", e -> app.camera().view(CameraState.View.ISO));
         def("show-frames", "Show frames (joint axes)", null, e -> wb.model().setShowFrames(!wb.model().showFrames()));
         def("show-path", "Show targets and path", null, e -> wb.model().setShowPath(!wb.model().showPath()));
         def("teach", "Teach target", "ctrl T", e -> wb.teach());
@@ -409,7 +452,8 @@ public final class WorkbenchFrame extends JFrame {
 
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
-        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("File", KeyEvent.VK_F, "new", "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("Edit", KeyEvent.VK_E, "undo", "redo", null, "delete"));
         bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
         bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
         bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", "add-movec", null, "check", "import-rapid", "export-rapid"));
@@ -422,11 +466,12 @@ public final class WorkbenchFrame extends JFrame {
     private JToolBar toolbar() {
         JToolBar t = new JToolBar();
         t.setFloatable(false);
-        for (String id : new String[] {"open", "save", null, "view-front", "view-top", "view-side", "view-iso", null,
+        for (String id : new String[] {"open", "save", null, "undo", "redo", null, "view-front", "view-top", "view-side", "view-iso", null,
                 "add-table", "add-part", "delete", null, "teach", "add-movej", "add-movel", "check", "export-rapid", null, "connect", "calibration"}) {
             if (id == null) { t.addSeparator(); continue; }
             var b = t.add(action(id));
             b.setName("tool-" + id);
+            b.setHideActionText(true); // the short name stays when the action renames itself ("Undo Add table")
             b.setText(shortName(id));
             if (action(id).getValue(Action.SHORT_DESCRIPTION) != null) b.setToolTipText((String) action(id).getValue(Action.SHORT_DESCRIPTION));
         }
@@ -435,7 +480,7 @@ public final class WorkbenchFrame extends JFrame {
 
     private static String shortName(String id) {
         return switch (id) {
-            case "open" -> "Open"; case "save" -> "Save";
+            case "open" -> "Open"; case "save" -> "Save"; case "undo" -> "Undo"; case "redo" -> "Redo";
             case "view-front" -> "Front"; case "view-top" -> "Top"; case "view-side" -> "Side"; case "view-iso" -> "Iso";
             case "add-table" -> "+Table"; case "add-part" -> "+Part"; case "delete" -> "Delete";
             case "teach" -> "Teach"; case "add-movej" -> "MoveJ"; case "add-movel" -> "MoveL"; case "check" -> "Check";
@@ -460,17 +505,17 @@ public final class WorkbenchFrame extends JFrame {
                 if (Math.abs(e.getX() - px) + Math.abs(e.getY() - py) > 3) dragged = true;
                 double h = Math.max(1, view.getHeight());
                 if ((e.getModifiersEx() & (InputEvent.BUTTON3_DOWN_MASK | InputEvent.BUTTON2_DOWN_MASK)) != 0
-                        || e.isShiftDown()) wb.app().camera().pan(dx / h, dy / h);
-                else wb.app().camera().orbit(-dx * 0.01, dy * 0.01);
+                        || e.isShiftDown()) app.camera().pan(dx / h, dy / h);
+                else app.camera().orbit(-dx * 0.01, dy * 0.01);
             }
 
             @Override
             public void mouseReleased(MouseEvent e) {
                 if (dragged || e.getButton() != MouseEvent.BUTTON1) return;
-                wb.app().pick(e.getX(), e.getY()).thenAccept(k -> SwingUtilities.invokeLater(() -> wb.model().select(k)));
+                app.pick(e.getX(), e.getY()).thenAccept(k -> SwingUtilities.invokeLater(() -> wb.model().select(k)));
             }
 
-            @Override public void mouseWheelMoved(MouseWheelEvent e) { wb.app().camera().zoom(Math.pow(1.12, e.getPreciseWheelRotation())); }
+            @Override public void mouseWheelMoved(MouseWheelEvent e) { app.camera().zoom(Math.pow(1.12, e.getPreciseWheelRotation())); }
         };
         view.addMouseListener(m);
         view.addMouseMotionListener(m);

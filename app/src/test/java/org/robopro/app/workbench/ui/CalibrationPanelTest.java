@@ -5,21 +5,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
-import org.robopro.calibration.diagnosis.ConcealedEffectBenchmark;
+import org.robopro.app.benchmark.DiagnosisBenchmark;
 import org.robopro.calibration.diagnosis.Diagnoser;
 import org.robopro.calibration.diagnosis.Diagnosis;
 import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.models.RobotLibrary;
+import org.robopro.world.Scenario;
 
 class CalibrationPanelTest {
     @Test
     void diagnosisReport_backlashCampaign_namesJointParameterInDegreesAndRms() {
-        var c = ConcealedEffectBenchmark.campaign("backlash j2", 5, 200);
-        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.measurements(), c.validation());
-        assertEquals(1, d.effects().size(), "the benchmark case has one effect");
+        var c = DiagnosisBenchmark.read(Scenario.named("lost motion j1, directions recorded").trial(5));
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validate());
+        assertEquals(1, d.effects().size(), "the concealed lost motion is the one effect");
         String text = CalibrationPanel.diagnosisReport(d);
         Diagnosis.Finding f = d.effects().get(0);
-        assertTrue(text.contains("Backlash (lost motion on direction reversal) on joint 2"), text);
+        assertTrue(text.contains("Backlash (lost motion on direction reversal) on joint 1"), text);
         // The parameter is shown in degrees, converted from the finding's radians.
         String b = String.format(Locale.ROOT, "b = %.4f ± %.4f deg", Math.toDegrees(f.values()[0]), Math.toDegrees(f.sigmas()[0]));
         assertTrue(text.contains(b), "expected '" + b + "' in\n" + text);

@@ -1,25 +1,15 @@
 package org.robopro.app.workbench;
 
-import com.jme3.system.AppSettings;
-import com.jme3.system.awt.AwtPanel;
-import com.jme3.system.awt.AwtPanelsContext;
-import com.jme3.system.awt.PaintMode;
-import java.awt.Dimension;
-import java.awt.Graphics2D;
-import java.awt.Point;
-import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.logging.Level;
+import java.util.function.Consumer;
 import java.util.logging.Logger;
-import javax.imageio.ImageIO;
-import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.app.workbench.model.Instruction;
@@ -27,10 +17,8 @@ import org.robopro.app.workbench.model.ProgramModule;
 import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.ProjectData;
 import org.robopro.app.workbench.model.Target;
+import org.robopro.app.workbench.model.PathChecker;
 import org.robopro.app.workbench.model.WorkbenchModel;
-import org.robopro.app.workbench.scene.CameraState;
-import org.robopro.app.workbench.scene.WorkbenchApp;
-import org.robopro.app.workbench.ui.WorkbenchFrame;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.TextFiles;
@@ -42,119 +30,89 @@ import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.rapid.RapidWriter;
 
 /**
- * The workbench: model, 3D view and Swing shell, and the operations the menus, buttons and
- * tests call (the "UI layer"). Mutations happen on the Swing thread; the 3D scene follows the
- * model on the render thread. Lengths in metres and angles in radians unless a name says mm/deg.
+ * The workbench's headless session: the cell model and every operation the menus, buttons,
+ * the command line and tests call (jog, teach, RAPID import and export, compensation, the
+ * controller link, calibration and diagnosis, cell edits, project files, the log). It knows
+ * nothing of Swing or the 3D view, so its operations are tested without a display; the window
+ * ({@code ui.WorkbenchWindow}) is a view over it. Mutations happen on the UI thread (the
+ * caller's thread when there is no window; see {@link #setUiThread}). Lengths in metres and
+ * angles in radians unless a name says mm/deg.
  */
-public final class Workbench {
-    private static final Logger LOG = Logger.getLogger(Workbench.class.getName());
+public final class WorkbenchSession implements AutoCloseable {
+    private static final Logger LOG = Logger.getLogger(WorkbenchSession.class.getName());
 
-    /** How to start. */
-    public record Options(int width, int height, Path project, boolean visible, int frameRateCap, long firstFrameTimeoutMs) {
-        public static Options defaults() { return new Options(1280, 720, null, true, 60, 20_000); }
-        public Options withSize(int w, int h) { return new Options(w, h, project, visible, frameRateCap, firstFrameTimeoutMs); }
-        public Options withProject(Path p) { return new Options(width, height, p, visible, frameRateCap, firstFrameTimeoutMs); }
-        public Options withFrameRateCap(int f) { return new Options(width, height, project, visible, f, firstFrameTimeoutMs); }
-    }
+    /** Edits closer together than this cost one path check. */
+    public static final long PATH_CHECK_DEBOUNCE_MS = 120;
 
     private final WorkbenchModel model;
-    private final WorkbenchApp app;
+    private final PathChecker pathChecker;
     private final List<String> log = new ArrayList<>();
+    private final List<Consumer<String>> logListeners = new CopyOnWriteArrayList<>();
     private volatile Path projectFile;
-    private WorkbenchFrame frame;
-    private AwtPanel panel;
+    private volatile Consumer<Runnable> uiThread = Runnable::run;
     private ProjectStore.Autosave autosave;
-    private long startNanos;
-    private long firstFrameNanos;
 
-    private Workbench(ProjectData data, Path projectFile) {
+    /** A session on a project's contents; {@code projectFile} is where it was read from (null: untitled). */
+    public WorkbenchSession(ProjectData data, Path projectFile) {
         this.model = new WorkbenchModel(data.robotRef(), data.robot());
         model.load(data);
-        model.setQ(DefaultCell.readyPose().length == data.robot().dof() ? DefaultCell.readyPose() : new double[data.robot().dof()]);
+        if (data.q() == null) model.setQ(startPose(data));
         model.markSaved();
         this.projectFile = projectFile;
-        this.app = new WorkbenchApp(model, this::resolveMesh);
+        this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
+    }
+
+    /** Where a project without saved joint values puts the robot: the ready pose of the IRB-2000 cell, else all zero. */
+    private static double[] startPose(ProjectData data) {
+        return DefaultCell.readyPose().length == data.robot().dof() ? DefaultCell.readyPose() : new double[data.robot().dof()];
+    }
+
+    /** A session on the given project, or on the IRB-2000 welding cell when {@code project} is null. */
+    public static WorkbenchSession open(Path project) throws IOException {
+        return new WorkbenchSession(project == null ? DefaultCell.irb2000Welding() : ProjectStore.read(project), project);
     }
 
     /**
-     * Opens the workbench (the given project, or the IRB-2000 welding cell) and waits for its
-     * first frame. Throws when the 3D view cannot start (no OpenGL context): callers must exit
-     * with a failure status then.
+     * Where model mutations made by background work (controller upload) run, and where a
+     * procedure chooser is asked: the window passes its Swing thread. Default: the calling thread.
      */
-    public static Workbench open(Options o) throws IOException, InterruptedException {
-        long t0 = System.nanoTime();
-        ProjectData data = o.project() == null ? DefaultCell.irb2000Welding() : ProjectStore.read(o.project());
-        Workbench w = new Workbench(data, o.project());
-        w.startNanos = t0;
-        w.start(o);
-        return w;
-    }
+    public void setUiThread(Consumer<Runnable> runAndWait) { this.uiThread = runAndWait; }
 
-    private void start(Options o) throws InterruptedException {
-        AppSettings s = new AppSettings(true);
-        s.setCustomRenderer(AwtPanelsContext.class);
-        s.setFrameRate(o.frameRateCap());
-        s.setAudioRenderer(null);
-        s.setResolution(o.width(), o.height());
-        s.setTitle("robopro workbench");
-        app.setSettings(s);
-        app.setShowSettings(false);
-        app.setPauseOnLostFocus(false);
-        app.start();
-        AwtPanelsContext ctx = (AwtPanelsContext) app.getContext();
-        panel = ctx.createPanel(PaintMode.Accelerated);
-        panel.setPreferredSize(new Dimension(800, 500));
-        ctx.setInputSource(panel);
-        onEdt(() -> {
-            frame = new WorkbenchFrame(this, panel);
-            frame.sizeTo(o.width(), o.height());
-            frame.setLocation(0, 0);
-            frame.setVisible(o.visible());
-            frame.validate();
-        });
-        app.setPanel(panel);
-        try {
-            app.awaitFirstFrame(o.firstFrameTimeoutMs());
-        } catch (IllegalStateException e) {
-            close();
-            throw e;
-        }
-        firstFrameNanos = System.nanoTime();
-        log("Ready: " + model.robot().displayName() + " (" + model.kinematics().implementation() + "), first frame after "
-                + String.format(java.util.Locale.ROOT, "%.2f s", secondsToFirstFrame()));
-        autosave = new ProjectStore.Autosave(this::autosaveTarget, model, 60_000);
+    /** Writes the model to its autosave file every {@code periodMs} while it has unsaved changes. */
+    public void startAutosave(int periodMs) {
+        if (autosave != null) return;
+        autosave = new ProjectStore.Autosave(this::autosaveTarget, model, periodMs);
         autosave.start();
     }
 
-    public static void onEdt(Runnable r) {
-        if (SwingUtilities.isEventDispatchThread()) { r.run(); return; }
-        try {
-            SwingUtilities.invokeAndWait(r);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (InvocationTargetException e) {
-            Throwable c = e.getCause();
-            if (c instanceof RuntimeException re) throw re;
-            if (c instanceof Error er) throw er;
-            throw new IllegalStateException(c);
-        }
-    }
-
     public WorkbenchModel model() { return model; }
-    public WorkbenchApp app() { return app; }
-    public WorkbenchFrame frame() { return frame; }
+    /** The background path check of the program (debounced; listeners hand results to their own thread). */
+    public PathChecker pathChecker() { return pathChecker; }
     public Optional<Path> projectFile() { return Optional.ofNullable(projectFile); }
-    public double secondsToFirstFrame() { return (firstFrameNanos - startNanos) / 1e9; }
     public synchronized List<String> log() { return List.copyOf(log); }
 
-    /** Adds a line to the log panel. */
+    /** Told (on the logging thread) about every log line. */
+    public void addLogListener(Consumer<String> l) { logListeners.add(l); }
+
+    /** Adds a line to the log. */
     public void log(String line) {
         synchronized (this) { log.add(line); }
         LOG.fine(line);
-        if (frame != null) SwingUtilities.invokeLater(() -> frame.appendLog(line));
+        for (Consumer<String> l : logListeners) l.accept(line);
     }
 
-    private Path resolveMesh(String path) {
+    /**
+     * Waits until the background path check has caught up with the model (for tests and
+     * screenshots; interactive use never waits).
+     */
+    public PathChecker.Result awaitPathCheck() throws InterruptedException {
+        var r = pathChecker.awaitCurrent(60_000);
+        if (r == null) throw new IllegalStateException("the path check did not finish within 60 s");
+        return r;
+    }
+
+    /** A mesh or robot file path as written in the project: relative ones are beside the project file. */
+    public Path resolvePath(String path) {
         Path p = Path.of(path);
         if (p.isAbsolute() || projectFile == null) return p;
         return projectFile.toAbsolutePath().getParent().resolve(p);
@@ -210,7 +168,7 @@ public final class Workbench {
         String name = model.newTargetName();
         double[] q = model.q();
         Target t = new Target(name, model.worldTtcp(), q, model.kinematics().confOf(q), model.activeWorkObject());
-        model.putTarget(t);
+        model.edit("Teach " + name, () -> model.putTarget(t));
         log(String.format(java.util.Locale.ROOT, "Taught %s at (%.1f, %.1f, %.1f) mm in %s", name,
                 t.worldTtcp().x() * 1000, t.worldTtcp().y() * 1000, t.worldTtcp().z() * 1000, t.wobj()));
         return t;
@@ -222,7 +180,8 @@ public final class Workbench {
 
     /** Appends a move; {@code via} is MoveC's circle point (null for MoveJ/MoveL). */
     public void addMove(Instruction.Type type, String target, String via, double speedMmPerS, double zoneMm) {
-        model.addInstruction(new Instruction(type, target, speedMmPerS, zoneMm, via));
+        Instruction i = new Instruction(type, target, speedMmPerS, zoneMm, via);
+        model.edit("Add " + type.rapid() + " " + target, () -> model.addInstruction(i));
     }
 
     /** Checks the program with the programs module's path checker and logs every problem by instruction and target. */
@@ -279,7 +238,7 @@ public final class Workbench {
         String text = TextFiles.readUtf8(file);
         ParsedModule parsed = RapidParser.parseDetailed(text, file.toString());
         ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
-        model.replaceProgram(imp);
+        model.edit("Import RAPID " + imp.moduleName(), () -> model.replaceProgram(imp));
         for (String n : imp.notes()) log("RAPID import: " + n);
         log(String.format(java.util.Locale.ROOT, "Imported RAPID module %s from %s: %d targets, %d instructions",
                 imp.moduleName(), file, imp.targets().size(), imp.program().size()));
@@ -372,7 +331,7 @@ public final class Workbench {
 
     /** Uploads program {@code name} and makes its {@code main} (or its only procedure) the workbench program. */
     public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name) {
-        return uploadProgram(name, Workbench::defaultProcedure);
+        return uploadProgram(name, WorkbenchSession::defaultProcedure);
     }
 
     /** "main" when the module has it, else its first procedure. */
@@ -388,7 +347,7 @@ public final class Workbench {
 
     /**
      * Uploads program {@code name} and makes the procedure {@code chooseProc} picks from the
-     * module's procedures (called on the Swing thread; null cancels and changes nothing) the
+     * module's procedures (called on the UI thread; null cancels and changes nothing) the
      * workbench program. The procedure runs through the programs module's interpreter, so calls,
      * loops, MoveC and Offs are flattened into the instructions it executes.
      */
@@ -400,10 +359,10 @@ public final class Workbench {
             ParsedModule parsed = RapidParser.parseDetailed(text, "controller:" + name);
             List<String> procs = procedures(parsed);
             AtomicReference<String> proc = new AtomicReference<>();
-            onEdt(() -> proc.set(procs.size() == 1 ? procs.get(0) : chooseProc.apply(procs)));
+            uiThread.accept(() -> proc.set(procs.size() == 1 ? procs.get(0) : chooseProc.apply(procs)));
             if (proc.get() == null) throw new java.util.concurrent.CancellationException("no procedure chosen");
             ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, proc.get());
-            onEdt(() -> model.replaceProgram(imp));
+            uiThread.accept(() -> model.edit("Upload " + name, () -> model.replaceProgram(imp)));
             for (String n : imp.notes()) log("Upload: " + n);
             log("Uploaded " + name + " (" + text.length() + " bytes), PROC " + proc.get() + ": " + imp.targets().size() + " targets, "
                     + imp.program().size() + " instructions");
@@ -592,7 +551,7 @@ public final class Workbench {
         int rgb = switch (kind) { case TABLE -> 0x5A6270; case FIXTURE -> 0x2F7D3A; default -> 0xB8C4D0; };
         CellObject o = new CellObject(id, Character.toUpperCase(prefix.charAt(0)) + prefix.substring(1) + " " + id.substring(prefix.length()),
                 kind, Pose.translation(0.9, -1.2, 0), size, null, rgb);
-        model.addObject(o);
+        model.edit("Add " + o.name(), () -> model.addObject(o));
         model.select("object:" + id);
         log("Added " + o.name());
         return o;
@@ -604,7 +563,7 @@ public final class Workbench {
                 : file.toAbsolutePath().toString();
         CellObject o = new CellObject(id, file.getFileName().toString(), CellObject.Kind.MESH, Pose.translation(1, 1, 0),
                 new Vec3(scale, scale, scale), rel, 0x9AA5B1);
-        model.addObject(o);
+        model.edit("Import mesh " + o.name(), () -> model.addObject(o));
         model.select("object:" + id);
         log("Imported mesh " + file);
         return o;
@@ -613,113 +572,94 @@ public final class Workbench {
     /** Moves/rotates a cell object: position in metres, rotation about world z in radians. */
     public void placeObject(String id, double x, double y, double z, double rzRad) {
         CellObject o = model.object(id).orElseThrow(() -> new IllegalArgumentException("no object " + id));
-        model.updateObject(o.withPose(Pose.translation(x, y, z).times(Pose.rotZ(rzRad))));
+        model.edit("Move " + o.name(), () -> model.updateObject(o.withPose(Pose.translation(x, y, z).times(Pose.rotZ(rzRad)))));
     }
 
+    /** Deletes the selected object or target (and the instructions that move to that target). */
     public void deleteSelection() {
         String s = model.selection();
         if (s == null) return;
         if (s.startsWith("object:")) {
-            model.removeObject(s.substring(7));
-            log("Deleted " + s.substring(7));
+            String id = s.substring(7);
+            model.edit("Delete " + model.object(id).map(CellObject::name).orElse(id), () -> model.removeObject(id));
+            log("Deleted " + id);
         } else if (s.startsWith("target:")) {
-            model.removeTarget(s.substring(7));
+            model.edit("Delete " + s.substring(7), () -> model.removeTarget(s.substring(7)));
             log("Deleted target " + s.substring(7));
         }
     }
 
-    public void setView(CameraState.View v) { app.camera().view(v); }
+    // ---- undo and redo -----------------------------------------------------------------------
+
+    /** Takes back the last edit (cell, tool, targets, program, robot); false when there is nothing to undo. */
+    public boolean undo() {
+        var l = model.undo();
+        l.ifPresent(x -> log("Undo: " + x));
+        return l.isPresent();
+    }
+
+    /** Makes the last undone edit again; false when there is nothing to redo. */
+    public boolean redo() {
+        var l = model.redo();
+        l.ifPresent(x -> log("Redo: " + x));
+        return l.isPresent();
+    }
 
     // ---- project files -----------------------------------------------------------------------
 
+    /**
+     * Saves the project (joint values and the active work object included) and removes the
+     * autosaves of both its old and its new name, so the next start offers no recovery.
+     */
     public void save(Path file) throws IOException {
+        Path old = projectFile;
         ProjectStore.write(model.snapshot(), file, true);
         projectFile = file;
         model.markSaved();
         ProjectStore.deleteAutosave(file);
+        if (old == null || !old.toAbsolutePath().equals(file.toAbsolutePath())) ProjectStore.deleteAutosave(old);
         log("Saved " + file);
     }
 
     /** Opens a project; on a damaged file throws and leaves the current cell untouched. */
     public void openProject(Path file) throws IOException {
         ProjectData d = ProjectStore.read(file);
-        model.load(d);
-        model.setQ(new double[d.robot().dof()]);
-        model.markSaved();
-        projectFile = file;
+        load(d, file);
         log("Opened " + file);
     }
 
-    // ---- screenshots and shutdown ------------------------------------------------------------
+    /** Starts a new, untitled project: the shipped IRB-2000 welding cell with no targets and no program. */
+    public void newProject() {
+        load(DefaultCell.irb2000Welding(), null);
+        log("New project");
+    }
 
-    /**
-     * The whole window (Swing shell and 3D view) as an image, after the 3D view has drawn a few
-     * frames showing the model's current state.
-     */
-    public BufferedImage captureWindow() throws InterruptedException {
-        awaitPathCheck();
-        app.awaitFrames(4, 10_000);
-        AtomicReference<BufferedImage> out = new AtomicReference<>();
-        onEdt(() -> {
-            var root = frame.getRootPane();
-            BufferedImage img = new BufferedImage(root.getWidth(), root.getHeight(), BufferedImage.TYPE_INT_RGB);
-            Graphics2D g = img.createGraphics();
-            root.paintAll(g);
-            Point p = SwingUtilities.convertPoint(panel, 0, 0, root);
-            Graphics2D pg = (Graphics2D) g.create(p.x, p.y, panel.getWidth(), panel.getHeight());
-            panel.paint(pg);
-            pg.dispose();
-            // Open dialogs (model wizard, calibration) are drawn where they stand over the window.
-            for (java.awt.Window w : frame.getOwnedWindows()) {
-                if (!w.isShowing() || !(w instanceof javax.swing.RootPaneContainer rc)) continue;
-                Point o = w.getLocationOnScreen(), f = root.getLocationOnScreen();
-                Graphics2D dg = (Graphics2D) g.create(o.x - f.x, o.y - f.y, w.getWidth(), w.getHeight());
-                dg.setColor(java.awt.Color.DARK_GRAY);
-                dg.fillRect(0, 0, w.getWidth(), w.getHeight());
-                rc.getRootPane().paintAll(dg);
-                dg.setColor(java.awt.Color.GRAY);
-                dg.drawRect(0, 0, rc.getRootPane().getWidth() - 1, rc.getRootPane().getHeight() - 1);
-                dg.dispose();
+    private void load(ProjectData d, Path file) {
+        Path old = projectFile;
+        model.load(d);
+        if (d.q() == null) model.setQ(startPose(d));
+        model.markSaved();
+        projectFile = file;
+        // The autosave of the project left behind holds changes the user chose to leave (the
+        // window asks first); kept, it would offer a false recovery at the next start.
+        if (!java.util.Objects.equals(old, file)) {
+            try {
+                ProjectStore.deleteAutosave(old);
+            } catch (IOException ignored) {
+                // a leftover autosave only means recovery is offered once more
             }
-            g.dispose();
-            out.set(img);
-        });
-        return out.get();
+        }
     }
 
-    /**
-     * Waits until the background path check has caught up with the model and the 3D view and
-     * the panels show it (for tests and screenshots; interactive use never waits).
-     */
-    public void awaitPathCheck() throws InterruptedException {
-        var r = app.pathChecker().awaitCurrent(60_000);
-        if (r == null) throw new IllegalStateException("the path check did not finish within 60 s");
-        long end = System.currentTimeMillis() + 10_000;
-        while (app.pathState().shownRequest() < r.request() && System.currentTimeMillis() < end) Thread.sleep(5);
-        onEdt(() -> { }); // the Swing side's invokeLater has run
-    }
+    // ---- shutdown ----------------------------------------------------------------------------
 
-    public void screenshot(Path png) throws IOException, InterruptedException {
-        BufferedImage img = captureWindow();
-        Path abs = png.toAbsolutePath();
-        if (abs.getParent() != null) Files.createDirectories(abs.getParent());
-        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
-        ImageIO.write(img, "png", bytes);
-        AtomicFiles.write(abs, bytes.toByteArray(), true);
-    }
-
-    /** Stops rendering, closes the window, removes the autosave of a saved project. */
+    /** Stops the path check, autosave and controller link; removes the autosave of a saved project. */
+    @Override
     public void close() {
         if (autosave != null) autosave.stop();
-        app.pathChecker().close();
+        pathChecker.close();
         disconnectNow();
         background.shutdownNow();
-        try {
-            app.stop(true);
-        } catch (RuntimeException e) {
-            LOG.log(Level.FINE, "stop", e);
-        }
-        if (frame != null) onEdt(() -> frame.dispose());
         if (!model.dirty() && autosave != null) {
             try {
                 Files.deleteIfExists(autosaveTarget());

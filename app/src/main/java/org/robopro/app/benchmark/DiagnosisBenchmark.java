@@ -1,0 +1,185 @@
+package org.robopro.app.benchmark;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.function.Consumer;
+import org.robopro.calibration.diagnosis.Diagnoser;
+import org.robopro.calibration.diagnosis.Diagnosis;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.models.JointDescription;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+import org.robopro.world.Expected;
+import org.robopro.world.Scenario;
+
+/**
+ * The independent diagnosis benchmark (docs/diagnosis-benchmark.md): each scenario of the world
+ * simulator ({@link Scenario#catalogue()}: a real robot drawn with geometric errors and a concealed
+ * effect written in the world's own physics, or none, or one outside every family) is measured,
+ * written as a measurement file, read back by the product's reader and diagnosed blind by
+ * {@link Diagnoser} as a user's file would be. Each run is scored against the scenario's expected
+ * answer:
+ * <ul>
+ * <li><b>named right</b>: the physical families named (on their joints) are exactly the concealed ones;</li>
+ * <li><b>named wrong</b>: a family was named that is not there (wrong family or wrong joint);</li>
+ * <li><b>located only</b>: nothing wrong named, a structure located (for an outside case this is the right answer);</li>
+ * <li><b>missed</b>: nothing wrong named, the concealed effect neither named nor located;</li>
+ * <li><b>false claim</b>: on a null campaign, anything named or located;</li>
+ * <li><b>clean</b>: on a null campaign, nothing claimed (the right answer).</li>
+ * </ul>
+ * and by its validation RMS after the diagnosis over the noise floor √3 σ.
+ */
+public final class DiagnosisBenchmark {
+    private DiagnosisBenchmark() { }
+
+    /** Outcome of one run. */
+    public enum Outcome {
+        NAMED_RIGHT("named right"), NAMED_WRONG("named wrong"), LOCATED_ONLY("located only"), MISSED("missed"),
+        FALSE_CLAIM("false claim on null"), CLEAN("clean null");
+
+        public final String words;
+
+        Outcome(String words) { this.words = words; }
+    }
+
+    /**
+     * One diagnosed run.
+     *
+     * @param named       what the diagnosis named, as "family-name jN"
+     * @param located     what it located without naming
+     * @param geoRatio    validation RMS of the geometric calibration over the floor
+     * @param finalRatio  validation RMS after the diagnosis over the floor
+     */
+    public record Run(Scenario scenario, long seed, Outcome outcome, List<String> named, List<String> located, double geoRatio,
+                      double finalRatio, double ms) {
+        /** The right answer for the scenario's kind, with the validation RMS brought to the bar where it applies. */
+        public boolean correct(double bar) {
+            return switch (scenario.expected().verdict()) {
+                case NAMED -> outcome == Outcome.NAMED_RIGHT && finalRatio <= bar;
+                case NULL -> outcome == Outcome.CLEAN && finalRatio <= bar;
+                case OUTSIDE -> outcome == Outcome.LOCATED_ONLY;
+            };
+        }
+
+        public String line() {
+            return String.format(Locale.ROOT, "%-62s seed %d: %-19s named %s located %s, val/floor %.3f -> %.3f, %.0f ms",
+                    scenario.name(), seed, outcome.words, named, located, geoRatio, finalRatio, ms);
+        }
+    }
+
+    /** The validation RMS a named (or null) run must reach, times the noise floor. */
+    public static final double BAR = 1.15;
+
+    /** Runs the scenarios with {@code seeds} seeds each (seed = baseSeed + k). */
+    public static List<Run> run(List<Scenario> scenarios, int seeds, long baseSeed, Consumer<String> log) {
+        List<Run> out = new ArrayList<>();
+        for (Scenario s : scenarios)
+            for (int k = 0; k < seeds; k++) {
+                Run r = run(s, baseSeed + k);
+                if (log != null) log.accept(r.line());
+                out.add(r);
+            }
+        return out;
+    }
+
+    /** A world campaign as the product reads it: training rows, and validation rows or null. */
+    public record Sets(MeasurementSet train, MeasurementSet validate) { }
+
+    /** Reads a trial's measurement text with the product's reader and splits it by its set column. */
+    public static Sets read(Scenario.Trial t) {
+        RobotDescription robot = RobotLibrary.shipped(t.scenario().robot());
+        MeasurementSet all = MeasurementReader.parse(t.scenario().name() + ".csv", t.campaign().text(),
+                robot.joints().stream().map(JointDescription::type).toList());
+        MeasurementSet validate = all.hasSplit() && all.split(Measurement.Split.VALIDATE).size() > 0
+                ? all.split(Measurement.Split.VALIDATE) : null;
+        return new Sets(all.hasSplit() ? all.split(Measurement.Split.TRAIN) : all, validate);
+    }
+
+    /** One run: measure, write, read, diagnose, score. */
+    public static Run run(Scenario s, long seed) {
+        Scenario.Trial t = s.trial(seed);
+        RobotDescription robot = RobotLibrary.shipped(s.robot());
+        Sets sets = read(t);
+        Diagnosis d = Diagnoser.diagnose(robot, sets.train(), sets.validate());
+        double floor = Math.sqrt(3) * t.campaign().plan().sigmaM();
+        List<String> named = new ArrayList<>(), located = new ArrayList<>();
+        Set<String> claims = new LinkedHashSet<>();
+        for (Diagnosis.Finding f : d.effects()) {
+            String name = f.effect().kind().json;
+            Expected.Family fam = Expected.Family.ofDiagnosisName(name);
+            if (fam == null) { located.add(f.effect().label()); continue; }
+            named.add(f.effect().label());
+            claims.add(key(fam, f.effect().joints1()));
+        }
+        Set<String> want = new LinkedHashSet<>();
+        for (Expected.Claim c : s.expected().claims()) want.add(key(c.family(), c.joints()));
+        Outcome o = score(s.expected().verdict(), want, claims, !located.isEmpty());
+        return new Run(s, seed, o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor, d.elapsedMs());
+    }
+
+    static String key(Expected.Family f, List<Integer> joints) {
+        return f.name() + (f.jointless() ? "" : joints.toString());
+    }
+
+    static Outcome score(Expected.Verdict v, Set<String> want, Set<String> got, boolean located) {
+        if (v == Expected.Verdict.NULL) return got.isEmpty() && !located ? Outcome.CLEAN : Outcome.FALSE_CLAIM;
+        if (!want.containsAll(got)) return Outcome.NAMED_WRONG;
+        if (v == Expected.Verdict.NAMED && got.equals(want)) return Outcome.NAMED_RIGHT;
+        return located || !got.isEmpty() ? Outcome.LOCATED_ONLY : Outcome.MISSED;
+    }
+
+    /** The confusion table (rows: scenario groups; columns: outcomes) and the validation ratios, as markdown. */
+    public static String markdown(List<Run> runs) {
+        StringBuilder sb = new StringBuilder();
+        sb.append("| scenario | runs | named right | named wrong | located only | missed | false claim (null) | clean (null) "
+                + "| val RMS / floor before | after (median) | after (max) | ms (mean) |\n");
+        sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        Map<String, List<Run>> byScenario = new java.util.LinkedHashMap<>();
+        for (Run r : runs) byScenario.computeIfAbsent(r.scenario().name(), k -> new ArrayList<>()).add(r);
+        for (var e : byScenario.entrySet()) sb.append(row(e.getKey(), e.getValue()));
+        sb.append(row("**all**", runs));
+        sb.append('\n');
+        sb.append("Validation RMS after the diagnosis over the noise floor (named and null scenarios): ")
+                .append(distribution(runs.stream().filter(r -> r.scenario().expected().verdict() != Expected.Verdict.OUTSIDE)
+                        .mapToDouble(Run::finalRatio).toArray())).append('\n');
+        long correct = runs.stream().filter(r -> r.correct(BAR)).count();
+        sb.append(String.format(Locale.ROOT, "%nRight answers (named right or clean with validation RMS ≤ %.2f × floor; outside: located "
+                + "and not named): %d of %d runs.%n", BAR, correct, runs.size()));
+        return sb.toString();
+    }
+
+    static String row(String name, List<Run> rs) {
+        Map<Outcome, Integer> n = new EnumMap<>(Outcome.class);
+        for (Outcome o : Outcome.values()) n.put(o, 0);
+        for (Run r : rs) n.merge(r.outcome(), 1, Integer::sum);
+        double[] after = rs.stream().mapToDouble(Run::finalRatio).sorted().toArray();
+        double before = rs.stream().mapToDouble(Run::geoRatio).average().orElse(Double.NaN);
+        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.0f |%n", name, rs.size(),
+                n.get(Outcome.NAMED_RIGHT), n.get(Outcome.NAMED_WRONG), n.get(Outcome.LOCATED_ONLY), n.get(Outcome.MISSED),
+                n.get(Outcome.FALSE_CLAIM), n.get(Outcome.CLEAN), before, after[after.length / 2], after[after.length - 1],
+                rs.stream().mapToDouble(Run::ms).average().orElse(0));
+    }
+
+    /** How many runs fall in each bin: up to 1.05, 1.05–1.10, 1.10–1.15, 1.15–1.5, 1.5–2, above 2. */
+    static String distribution(double[] ratios) {
+        double[] edges = {1.05, 1.10, 1.15, 1.5, 2, Double.POSITIVE_INFINITY};
+        String[] names = {"≤ 1.05", "1.05–1.10", "1.10–1.15", "1.15–1.5", "1.5–2", "> 2"};
+        StringBuilder sb = new StringBuilder();
+        double lo = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < edges.length; i++) {
+            int c = 0;
+            for (double v : ratios) if (v > lo && v <= edges[i]) c++;
+            sb.append(names[i]).append(": ").append(c).append(i < edges.length - 1 ? ", " : "");
+            lo = edges[i];
+        }
+        return sb.append(" (of ").append(ratios.length).append(" runs)").toString();
+    }
+}

@@ -1,0 +1,79 @@
+package org.robopro.app.benchmark;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.robopro.world.Expected;
+import org.robopro.world.Scenario;
+
+/**
+ * The independent diagnosis benchmark at a size CI can afford: scenarios of every group (null,
+ * outside, each family, a pair, sparse and noisy campaigns), one seed each, diagnosed blind from the
+ * measurement text. A run is right when a named scenario is named exactly with validation RMS
+ * ≤ 1.15 × the noise floor, a null one claims nothing (and reaches the same bar), an outside one is
+ * located and not named. What the diagnosis does not yet achieve is listed in {@link #KNOWN_FAILURES}
+ * with what it did; the test fails when any other run goes wrong (the list may only shrink) and
+ * reports the known failures that now pass, so the list can be cut. It never relaxes the bar.
+ */
+class DiagnosisBenchmarkTest {
+    static final long SEED = 7;
+
+    static final List<String> CI = List.of(
+            "null irb2000", "null irb2000, 50 poses", "null puma560",
+            "transmission error j1, k 1-3", "transmission error j1, cycloidal k up to 40",
+            "lost motion j1, directions recorded", "lost motion j2, directions recorded", "lost motion j2, directions not recorded",
+            "thermal growth per link",
+            "joint elasticity j3, masses off 30 %",
+            "gear-ratio error j1", "cross-coupling j3<-j2",
+            "lost motion j2 + thermal growth per link",
+            "outside: bump in the angle of j3", "outside: measured point sags with reach");
+
+    /** Scenario -> what the diagnosis did on the CI seed when it was last checked. */
+    static final Map<String, String> KNOWN_FAILURES = Map.ofEntries(
+            Map.entry("transmission error j1, cycloidal k up to 40",
+                    "names gear-periodic j1 (harmonics 1-3 only): validation stays 3.3x the floor"),
+            Map.entry("lost motion j2, directions recorded",
+                    "names backlash j2 but on the model angle only; the drive's lost motion also turns theta3 = q3 - q2 back: 6.5x floor"),
+            Map.entry("lost motion j2, directions not recorded", "names backlash j2 (inferred directions), 4.9x floor: same form as above"),
+            Map.entry("lost motion j2 + thermal growth per link", "both named, 4.7x floor: the lost motion's form as above"),
+            Map.entry("outside: bump in the angle of j3", "named joint-compliance j3 and joint-scale j3: a wrong claim, 4.4x floor"),
+            Map.entry("outside: measured point sags with reach", "named gear-periodic j2 and joint-compliance j2: a wrong claim, 1.37x floor"));
+
+    @Test
+    void ciScenarios_giveTheRightAnswerOrAreKnownFailures() {
+        List<Scenario> scenarios = CI.stream().map(Scenario::named).toList();
+        List<DiagnosisBenchmark.Run> runs = DiagnosisBenchmark.run(scenarios, 1, SEED, System.out::println);
+        System.out.println(DiagnosisBenchmark.markdown(runs));
+        List<String> unexpected = new ArrayList<>(), nowPassing = new ArrayList<>();
+        for (DiagnosisBenchmark.Run r : runs) {
+            boolean known = KNOWN_FAILURES.containsKey(r.scenario().name());
+            if (!r.correct(DiagnosisBenchmark.BAR) && !known) unexpected.add(r.line());
+            if (r.correct(DiagnosisBenchmark.BAR) && known) nowPassing.add(r.scenario().name());
+        }
+        if (!nowPassing.isEmpty()) System.out.println("known failures that now pass (cut them from the list): " + nowPassing);
+        assertEquals(List.of(), unexpected, "runs that went wrong and are not known failures");
+    }
+
+    @Test
+    void scoringFollowsTheExpectedAnswer() {
+        String lm2 = DiagnosisBenchmark.key(Expected.Family.LOST_MOTION, List.of(2));
+        String lm1 = DiagnosisBenchmark.key(Expected.Family.LOST_MOTION, List.of(1));
+        String th = DiagnosisBenchmark.key(Expected.Family.THERMAL_GROWTH, List.of());
+        assertEquals(DiagnosisBenchmark.Outcome.NAMED_RIGHT, DiagnosisBenchmark.score(Expected.Verdict.NAMED, Set.of(lm2), Set.of(lm2), false));
+        assertEquals(DiagnosisBenchmark.Outcome.NAMED_WRONG, DiagnosisBenchmark.score(Expected.Verdict.NAMED, Set.of(lm2), Set.of(lm1), false));
+        assertEquals(DiagnosisBenchmark.Outcome.NAMED_WRONG, DiagnosisBenchmark.score(Expected.Verdict.NAMED, Set.of(lm2), Set.of(lm2, th), false));
+        assertEquals(DiagnosisBenchmark.Outcome.LOCATED_ONLY, DiagnosisBenchmark.score(Expected.Verdict.NAMED, Set.of(lm2, th), Set.of(th), false));
+        assertEquals(DiagnosisBenchmark.Outcome.MISSED, DiagnosisBenchmark.score(Expected.Verdict.NAMED, Set.of(lm2), Set.of(), false));
+        assertEquals(DiagnosisBenchmark.Outcome.LOCATED_ONLY, DiagnosisBenchmark.score(Expected.Verdict.OUTSIDE, Set.of(), Set.of(), true));
+        assertEquals(DiagnosisBenchmark.Outcome.NAMED_WRONG, DiagnosisBenchmark.score(Expected.Verdict.OUTSIDE, Set.of(), Set.of(th), true));
+        assertEquals(DiagnosisBenchmark.Outcome.MISSED, DiagnosisBenchmark.score(Expected.Verdict.OUTSIDE, Set.of(), Set.of(), false));
+        assertEquals(DiagnosisBenchmark.Outcome.FALSE_CLAIM, DiagnosisBenchmark.score(Expected.Verdict.NULL, Set.of(), Set.of(), true));
+        assertEquals(DiagnosisBenchmark.Outcome.CLEAN, DiagnosisBenchmark.score(Expected.Verdict.NULL, Set.of(), Set.of(), false));
+        assertTrue(DiagnosisBenchmark.distribution(new double[] {1.0, 1.12, 3}).startsWith("≤ 1.05: 1, 1.05–1.10: 0, 1.10–1.15: 1"));
+    }
+}

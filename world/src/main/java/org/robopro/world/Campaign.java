@@ -1,0 +1,225 @@
+package org.robopro.world;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Random;
+import org.robopro.models.JointDescription;
+import org.robopro.models.RobotDescription;
+
+/**
+ * A measurement campaign on a {@link WorldRobot}, as a person with an instrument would take it:
+ * poses drawn within the joint limits (the planner knows only the robot file), visited in a
+ * realistic order (nearest next pose in travel time from the home position, or as drawn), each
+ * drive's direction of approach following from that order, time stamps from the travel, settle
+ * and measuring times, the temperature following a warm-up curve, payload changes, noise. The
+ * result is the measurement file's text in the public format (shared/formats/measurements.md) so
+ * that the estimator reads it like a user's file, plus the rows and the warm-up as truth.
+ */
+public final class Campaign {
+    private Campaign() { }
+
+    /** Order in which the poses are measured. */
+    public enum Order {
+        /** From the home pose, always the next pose that is quickest to reach (what a person or a planner does). */
+        NEAREST,
+        /** In the order drawn (a scripted random sequence). */
+        AS_DRAWN
+    }
+
+    /**
+     * What to measure and write.
+     *
+     * @param poses          training poses
+     * @param validatePoses  validation poses, interleaved in the sequence, written with set = validate
+     * @param sigmaM         position noise per axis, m
+     * @param sigmaRotRad    orientation noise per axis, rad (6-D only)
+     * @param sixD           write the measured orientation (qw, qx, qy, qz)
+     * @param dirColumns     write dir1..dirN (the directions exist in the robot anyway)
+     * @param conditionColumns write time_s and temp_c
+     * @param payloadStepsKg payloads carried in turn, changed every {@link #POSES_PER_PAYLOAD} poses; empty: no payload column (0 kg)
+     * @param order          measuring order
+     * @param seed           the same seed gives the same campaign
+     */
+    public record Plan(int poses, int validatePoses, double sigmaM, double sigmaRotRad, boolean sixD, boolean dirColumns,
+                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed) {
+        public Plan {
+            if (poses < 1 || validatePoses < 0) throw new IllegalArgumentException("poses " + poses + ", validate " + validatePoses);
+            if (!(sigmaM >= 0) || !(sigmaRotRad >= 0)) throw new IllegalArgumentException("noise must be >= 0");
+            payloadStepsKg = payloadStepsKg.clone();
+        }
+
+        @Override public double[] payloadStepsKg() { return payloadStepsKg.clone(); }
+
+        /** 200 training and 100 validation poses, σ 0.02 mm, directions, time and temperature written, no payload, nearest order. */
+        public static Plan defaults(long seed) {
+            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed);
+        }
+
+        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed); }
+        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed); }
+        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed); }
+        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed); }
+        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed); }
+        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed); }
+        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed); }
+        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s); }
+    }
+
+    /** Poses between payload changes. */
+    public static final int POSES_PER_PAYLOAD = 15;
+
+    /**
+     * The temperature near the robot: T(t) = ambient + rise (1 - exp(-t/tau)), a first-order
+     * warm-up of the structure after the robot starts moving; the sensor adds noise.
+     */
+    public record Warmup(double ambientC, double riseK, double tauS, double sensorNoiseK) {
+        public double at(double tS) { return ambientC + riseK * (1 - Math.exp(-tS / tauS)); }
+
+        /** Ambient 19–22 °C, rise 6–15 K, tau 900–2400 s, sensor noise 0.05 K. */
+        public static Warmup draw(Random r) {
+            return new Warmup(19 + 3 * r.nextDouble(), 6 + 9 * r.nextDouble(), 900 + 1500 * r.nextDouble(), 0.05);
+        }
+    }
+
+    /**
+     * One measured pose.
+     *
+     * @param point       measured position, instrument frame, m (with noise)
+     * @param quaternion  measured orientation (w, x, y, z), or null
+     * @param truePoint   the position without noise, m
+     */
+    public record Row(String id, double[] q, int[] dir, double timeS, double tempC, double payloadKg, double[] point,
+                      double[] quaternion, double[] truePoint, boolean validate) { }
+
+    /** A campaign: the measurement file's text, the rows, and the warm-up the temperatures followed. */
+    public record Result(String text, List<Row> rows, Warmup warmup, Plan plan, String frame) {
+        public List<Row> train() { return rows.stream().filter(r -> !r.validate()).toList(); }
+
+        public List<Row> validation() { return rows.stream().filter(Row::validate).toList(); }
+    }
+
+    /** Measures {@code world} (planning with the robot file {@code nominal}) following {@code plan}. */
+    public static Result run(WorldRobot world, RobotDescription nominal, Plan plan) {
+        Random rng = new Random(plan.seed() * 1_000_003L + 11);
+        Random noise = new Random(plan.seed() * 7_919L + 3);
+        int total = plan.poses() + plan.validatePoses();
+        List<double[]> drawn = new PoseRule(nominal).sample(total, rng);
+        List<double[]> seq = plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn) : drawn;
+        boolean[] validate = new boolean[total];
+        List<Integer> idx = new ArrayList<>();
+        for (int i = 0; i < total; i++) idx.add(i);
+        java.util.Collections.shuffle(idx, rng);
+        for (int i = 0; i < plan.validatePoses(); i++) validate[idx.get(i)] = true;
+        Warmup warm = Warmup.draw(rng);
+
+        int n = nominal.dof();
+        double[] prev = home(nominal);
+        int[] dir = new int[n];
+        Arrays.fill(dir, 1);
+        double t = 0;
+        List<Row> rows = new ArrayList<>();
+        double[] payloads = plan.payloadStepsKg();
+        for (int i = 0; i < total; i++) {
+            double[] q = seq.get(i);
+            t += travelS(nominal, prev, q) + 3 + 5 + 4 * rng.nextDouble(); // travel, settle, measure, operator
+            for (int j = 0; j < n; j++) if (q[j] != prev[j]) dir[j] = q[j] > prev[j] ? 1 : -1;
+            double temp = warm.at(t);
+            double payload = payloads.length == 0 ? 0 : payloads[(i / POSES_PER_PAYLOAD) % payloads.length];
+            Rigid pose = world.target(q, dir, temp, t, payload);
+            double[] truth = pose.p();
+            double[] p = Rigid.plus(truth, Arm.gauss(noise, plan.sigmaM()));
+            double[] quat = null;
+            if (plan.sixD()) {
+                double[] rv = Arm.gauss(noise, plan.sigmaRotRad());
+                double a = Rigid.norm(rv);
+                Rigid turn = a > 0 ? Rigid.rotation(Rigid.unit(rv), a, new double[3]) : Rigid.IDENTITY;
+                quat = turn.times(new Rigid(pose.r(), new double[3])).quaternion();
+            }
+            double tempRead = temp + warm.sensorNoiseK() * noise.nextGaussian();
+            rows.add(new Row(Integer.toString(i + 1), q.clone(), dir.clone(), t, tempRead, payload, p, quat, truth, validate[i]));
+            prev = q;
+        }
+        boolean base = isIdentity(world.instrumentFromBase());
+        String frame = base ? "base" : "tracker";
+        return new Result(write(nominal, plan, rows, frame), rows, warm, plan, frame);
+    }
+
+    /** The measurement file text (shared/formats/measurements.md): mm and degrees. */
+    static String write(RobotDescription robot, Plan plan, List<Row> rows, String frame) {
+        int n = robot.dof();
+        boolean[] prismatic = new boolean[n];
+        for (int j = 0; j < n; j++) prismatic[j] = robot.joints().get(j).type() == org.robopro.models.JointType.PRISMATIC;
+        StringBuilder sb = new StringBuilder();
+        sb.append("# robopro-measurements 1\n# robot: ").append(robot.name()).append('\n');
+        sb.append("# length-unit: mm\n# angle-unit: deg\n# frame: ").append(frame).append('\n');
+        sb.append(String.format(Locale.ROOT, "# instrument: simulated by robopro world, sigma %.4f mm, seed %d%n", plan.sigmaM() * 1e3, plan.seed()));
+        List<String> head = new ArrayList<>(List.of("pose"));
+        for (int j = 1; j <= n; j++) head.add("q" + j);
+        head.addAll(List.of("x", "y", "z"));
+        if (plan.sixD()) head.addAll(List.of("qw", "qx", "qy", "qz"));
+        if (plan.dirColumns()) for (int j = 1; j <= n; j++) head.add("dir" + j);
+        if (plan.conditionColumns()) head.addAll(List.of("time_s", "temp_c"));
+        if (plan.payloadStepsKg().length > 0) head.add("payload_kg");
+        if (plan.validatePoses() > 0) head.add("set");
+        sb.append(String.join(",", head)).append('\n');
+        for (Row r : rows) {
+            sb.append(r.id());
+            for (int j = 0; j < n; j++) sb.append(',').append(fmt(prismatic[j] ? r.q()[j] * 1e3 : Math.toDegrees(r.q()[j]), 7));
+            for (double v : r.point()) sb.append(',').append(fmt(v * 1e3, 5));
+            if (plan.sixD()) for (double v : r.quaternion()) sb.append(',').append(fmt(v, 10));
+            if (plan.dirColumns()) for (int d : r.dir()) sb.append(',').append(d);
+            if (plan.conditionColumns()) sb.append(',').append(fmt(r.timeS(), 1)).append(',').append(fmt(r.tempC(), 2));
+            if (plan.payloadStepsKg().length > 0) sb.append(',').append(fmt(r.payloadKg(), 2));
+            if (plan.validatePoses() > 0) sb.append(',').append(r.validate() ? "validate" : "train");
+            sb.append('\n');
+        }
+        return sb.toString();
+    }
+
+    static String fmt(double v, int decimals) { return String.format(Locale.ROOT, "%." + decimals + "f", v); }
+
+    /** The home pose: zero where the limits allow it, else the middle of the range. */
+    static double[] home(RobotDescription robot) {
+        double[] h = new double[robot.dof()];
+        for (int j = 0; j < h.length; j++) {
+            JointDescription d = robot.joints().get(j);
+            if (!(d.min() <= 0 && d.max() >= 0)) h[j] = 0.5 * (d.min() + d.max());
+        }
+        return h;
+    }
+
+    /** Seconds to move from a to b at a third of each joint's top speed (the slowest joint decides), plus 1 s to accelerate. */
+    static double travelS(RobotDescription robot, double[] a, double[] b) {
+        double t = 0;
+        for (int j = 0; j < a.length; j++) {
+            double v = robot.joints().get(j).maxSpeed();
+            if (!(v > 0)) v = Math.toRadians(90);
+            t = Math.max(t, Math.abs(b[j] - a[j]) / (v / 3));
+        }
+        return t + 1;
+    }
+
+    static List<double[]> nearestOrder(RobotDescription robot, List<double[]> poses) {
+        List<double[]> left = new ArrayList<>(poses), out = new ArrayList<>();
+        double[] at = home(robot);
+        while (!left.isEmpty()) {
+            int best = 0;
+            double bestT = Double.MAX_VALUE;
+            for (int i = 0; i < left.size(); i++) {
+                double tt = travelS(robot, at, left.get(i));
+                if (tt < bestT) { bestT = tt; best = i; }
+            }
+            at = left.remove(best);
+            out.add(at);
+        }
+        return out;
+    }
+
+    static boolean isIdentity(Rigid t) {
+        double[] r = t.r(), p = t.p();
+        for (int i = 0; i < 9; i++) if (Math.abs(r[i] - (i % 4 == 0 ? 1 : 0)) > 1e-15) return false;
+        return p[0] == 0 && p[1] == 0 && p[2] == 0;
+    }
+}

@@ -1,0 +1,257 @@
+package org.robopro.world;
+
+import static org.robopro.world.Expected.Family.CROSS_COUPLING;
+import static org.robopro.world.Expected.Family.GEAR_RATIO;
+import static org.robopro.world.Expected.Family.GRAVITY_ELASTICITY;
+import static org.robopro.world.Expected.Family.LOST_MOTION;
+import static org.robopro.world.Expected.Family.THERMAL_GROWTH;
+import static org.robopro.world.Expected.Family.TRANSMISSION_ERROR;
+import static org.robopro.world.Expected.claim;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Random;
+import java.util.function.BiFunction;
+import java.util.function.UnaryOperator;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+
+/**
+ * A named situation of the real robot with the answer a diagnosis must give. Each seed draws a
+ * new robot: geometric errors (axis points ~1 mm, axis directions ~0.1°, zero offsets ~0.1°,
+ * flange frame, measured target ~100 mm off the flange), an unknown instrument 2.5–3.5 m away, and
+ * the scenario's own effects with sizes drawn from realistic ranges.
+ *
+ * @param name     short name, e.g. "lost motion j2, directions not recorded"
+ * @param family   the group it is scored in ("null", "outside", or a family's name)
+ * @param robot    shipped robot name
+ * @param expected the answer
+ * @param effects  adds the concealed effects to the base robot (nominal file, random numbers)
+ * @param plan     adjusts the default campaign plan
+ */
+public record Scenario(String name, String family, String robot, Expected expected,
+                       BiFunction<RobotDescription, Random, UnaryOperator<WorldRobot>> effects, UnaryOperator<Campaign.Plan> plan) {
+
+    /** One drawn robot and its campaign. */
+    public record Trial(Scenario scenario, long seed, WorldRobot world, Campaign.Result campaign) {
+        /** What was concealed, as JSON (mm, deg, SI where named). */
+        public String truthJson() { return Truth.json(this); }
+    }
+
+    /** Draws the robot and measures it. */
+    public Trial trial(long seed) { return trial(seed, p -> p); }
+
+    /** Draws the robot and measures it with the scenario's plan changed by {@code adjust} (e.g. more poses). */
+    public Trial trial(long seed, UnaryOperator<Campaign.Plan> adjust) {
+        RobotDescription nominal = RobotLibrary.shipped(robot);
+        Random rng = new Random(seed * 31 + name.hashCode());
+        WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1));
+        WorldRobot world = effects.apply(nominal, rng).apply(base);
+        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
+        return new Trial(this, seed, world, Campaign.run(world, nominal, p));
+    }
+
+    /**
+     * The robot file with random geometric errors and an unknown instrument pose: axis points by
+     * N(0, pointM) per component, axis directions and flange by N(0, angleRad), zero offsets
+     * N(0, angleRad), the measured target at (0, 0, 100) mm on the flange ± 2 mm (and turned a
+     * little for 6-D), the instrument 2.5–3.5 m away at any heading, tilted up to 5°.
+     */
+    public static WorldRobot baseRobot(RobotDescription nominal, Random rng, double pointM, double angleRad) {
+        int n = nominal.dof();
+        Arm arm = Arm.of(nominal).perturbed(rng, pointM, angleRad);
+        double[] offsets = new double[n];
+        for (int i = 0; i < n; i++) offsets[i] = angleRad * rng.nextGaussian();
+        double[] target = Rigid.plus(new double[] {0, 0, 0.1}, Arm.gauss(rng, 2e-3));
+        double[] tilt = Arm.gauss(rng, Math.toRadians(0.5));
+        Rigid tool = new Rigid(Rigid.rotation(Rigid.unit(tilt), Rigid.norm(tilt), new double[3]).r(), target);
+        double heading = 2 * Math.PI * rng.nextDouble(), dist = 2.5 + rng.nextDouble();
+        Rigid baseFromInstrument = Rigid.translation(dist * Math.cos(heading), dist * Math.sin(heading), rng.nextDouble())
+                .times(Rigid.rotation(new double[] {0, 0, 1}, 2 * Math.PI * rng.nextDouble(), new double[3]))
+                .times(Rigid.rotation(new double[] {1, 0, 0}, Math.toRadians(5) * (2 * rng.nextDouble() - 1), new double[3]))
+                .times(Rigid.rotation(new double[] {0, 1, 0}, Math.toRadians(5) * (2 * rng.nextDouble() - 1), new double[3]));
+        return new WorldRobot(nominal.name(), arm, nominal.couplingMatrix(), offsets, List.of(), tool,
+                baseFromInstrument.inverse(), null, null, null);
+    }
+
+    // ---- effects with realistic sizes (joints 0-based here, 1-based in names) ----
+
+    static double uniform(Random r, double lo, double hi) { return lo + (hi - lo) * r.nextDouble(); }
+
+    static double signed(Random r, double lo, double hi) { return (r.nextBoolean() ? 1 : -1) * uniform(r, lo, hi); }
+
+    /** Adds drive errors to a robot. */
+    static UnaryOperator<WorldRobot> add(JointError... e) {
+        return w -> {
+            List<JointError> all = new ArrayList<>(w.errors());
+            all.addAll(List.of(e));
+            return w.withErrors(all);
+        };
+    }
+
+    /** Transmission error of a single-stage gear train: harmonics 1..3, 0.004–0.01° each (0.02–0.05° on the wrist), random phases. */
+    public static JointError.Harmonics lowHarmonics(int joint, Random r) {
+        double lo = joint >= 3 ? 0.02 : 0.004, hi = joint >= 3 ? 0.05 : 0.01;
+        return new JointError.Harmonics(joint, new int[] {1, 2, 3},
+                new double[] {Math.toRadians(uniform(r, lo, hi)), Math.toRadians(uniform(r, lo, hi)), Math.toRadians(uniform(r, lo, hi))},
+                new double[] {2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble()});
+    }
+
+    /**
+     * Transmission error of a multi-stage or cycloidal reducer: the output's once-per-turn term
+     * plus two stage harmonics drawn from 4..40 per output turn, 0.004–0.01° each.
+     */
+    public static JointError.Harmonics highHarmonics(int joint, Random r) {
+        int k1 = 4 + r.nextInt(37);
+        int k2;
+        do { k2 = 4 + r.nextInt(37); } while (k2 == k1);
+        return new JointError.Harmonics(joint, new int[] {1, k1, k2},
+                new double[] {Math.toRadians(uniform(r, 0.002, 0.005)), Math.toRadians(uniform(r, 0.004, 0.01)), Math.toRadians(uniform(r, 0.004, 0.01))},
+                new double[] {2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble()});
+    }
+
+    /** Lost motion 0.02–0.05°. */
+    public static JointError.LostMotion lostMotion(int joint, Random r) {
+        return new JointError.LostMotion(joint, Math.toRadians(uniform(r, 0.02, 0.05)));
+    }
+
+    /** Gear-ratio error ±(1–3)·10⁻⁴. */
+    public static JointError.Scale gearRatio(int joint, Random r) { return new JointError.Scale(joint, signed(r, 1e-4, 3e-4)); }
+
+    /** Cross-coupling ±(3–10)·10⁻⁴. */
+    public static JointError.Coupling crossCoupling(int joint, int source, Random r) {
+        return new JointError.Coupling(joint, source, signed(r, 3e-4, 10e-4));
+    }
+
+    /**
+     * Thermal growth: each link's own coefficient, 10–24·10⁻⁶/K (steel to cast aluminium), and, if
+     * asked, an instrument drift of 1–3 µm/K in a random direction.
+     */
+    public static WorldRobot.Thermal thermal(RobotDescription nominal, Random r, boolean drift) {
+        double[] a = new double[nominal.dof() + 1];
+        for (int i = 0; i < a.length; i++) a[i] = uniform(r, 10e-6, 24e-6);
+        double[] d = drift ? Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 1e-6, 3e-6)) : new double[3];
+        return new WorldRobot.Thermal(20, a, d, new double[3]);
+    }
+
+    /** Joint elasticity on one drive, stiffness 0.5–2·10⁶ N·m/rad, with the file's masses off by up to ±30 % link by link. */
+    static UnaryOperator<WorldRobot> elastic(RobotDescription nominal, Random r, int... joints) {
+        WorldRobot.Compliance c = WorldRobot.Compliance.fromFile(nominal.massModel().orElseThrow(), nominal.dof(), 0.3, r);
+        for (int j : joints) c = c.withStiffness(j, uniform(r, 0.5e6, 2e6));
+        WorldRobot.Compliance cc = c;
+        return w -> w.withCompliance(cc);
+    }
+
+    private static UnaryOperator<Campaign.Plan> same() { return p -> p; }
+
+    private static Scenario s(String name, String family, String robot, Expected e,
+                              BiFunction<RobotDescription, Random, UnaryOperator<WorldRobot>> effects, UnaryOperator<Campaign.Plan> plan) {
+        return new Scenario(name, family, robot, e, effects, plan);
+    }
+
+    /** Rated payload steps of a robot (0, half, full; 10 kg when the file gives none). */
+    static UnaryOperator<Campaign.Plan> payloads(String robot) {
+        double rated = RobotLibrary.shipped(robot).massModel().map(m -> m.ratedPayloadKg()).filter(v -> v > 0).orElse(5.0);
+        return p -> p.withPayloads(0, rated / 2, rated);
+    }
+
+    /** The catalogue: every family alone and in pairs, outside cases, nulls, on every shipped robot, sparse, noisy and 6-D campaigns. */
+    public static List<Scenario> catalogue() {
+        List<Scenario> c = new ArrayList<>();
+        // nothing to find
+        c.add(s("null irb2000", "null", "irb2000", Expected.none(), (n, r) -> w -> w, same()));
+        c.add(s("null irb2000, sigma 0.05 mm", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withSigma(0.05e-3)));
+        c.add(s("null irb2000, 50 poses", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withPoses(50, 50)));
+        c.add(s("null irb2000, 6-D", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withSixD(true)));
+        c.add(s("null irb2000, payload steps", "null", "irb2000", Expected.none(), (n, r) -> w -> w, payloads("irb2000")));
+        c.add(s("null irb2400", "null", "irb2400", Expected.none(), (n, r) -> w -> w, same()));
+        c.add(s("null puma560", "null", "puma560", Expected.none(), (n, r) -> w -> w, same()));
+        // transmission error
+        c.add(s("transmission error j1, k 1-3", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 1)),
+                (n, r) -> add(lowHarmonics(0, r)), same()));
+        c.add(s("transmission error j2, k 1-3", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 2)),
+                (n, r) -> add(lowHarmonics(1, r)), same()));
+        c.add(s("transmission error j5 (wrist), k 1-3", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 5)),
+                (n, r) -> add(lowHarmonics(4, r)), same()));
+        c.add(s("transmission error j1, cycloidal k up to 40", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 1)),
+                (n, r) -> add(highHarmonics(0, r)), same()));
+        c.add(s("transmission error j3, cycloidal k up to 40", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 3)),
+                (n, r) -> add(highHarmonics(2, r)), same()));
+        c.add(s("transmission error j2 puma560, k 1-3", "transmission-error", "puma560", Expected.named(claim(TRANSMISSION_ERROR, 2)),
+                (n, r) -> add(lowHarmonics(1, r)), same()));
+        // lost motion
+        c.add(s("lost motion j1, directions recorded", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 1)),
+                (n, r) -> add(lostMotion(0, r)), same()));
+        c.add(s("lost motion j2, directions recorded", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
+                (n, r) -> add(lostMotion(1, r)), same()));
+        c.add(s("lost motion j2, directions not recorded", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
+                (n, r) -> add(lostMotion(1, r)), p -> p.withDirColumns(false)));
+        c.add(s("lost motion j3, random order, directions recorded", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 3)),
+                (n, r) -> add(lostMotion(2, r)), p -> p.withOrder(Campaign.Order.AS_DRAWN)));
+        c.add(s("lost motion j1 irb2400, directions recorded", "lost-motion", "irb2400", Expected.named(claim(LOST_MOTION, 1)),
+                (n, r) -> add(lostMotion(0, r)), same()));
+        // thermal growth
+        c.add(s("thermal growth per link", "thermal-growth", "irb2000", Expected.named(claim(THERMAL_GROWTH)),
+                (n, r) -> { var t = thermal(n, r, false); return w -> w.withThermal(t); }, same()));
+        c.add(s("thermal growth per link + instrument drift", "thermal-growth", "irb2000", Expected.named(claim(THERMAL_GROWTH)),
+                (n, r) -> { var t = thermal(n, r, true); return w -> w.withThermal(t); }, same()));
+        // gravity elasticity
+        c.add(s("joint elasticity j2, masses off 30 %", "gravity-elasticity", "irb2000", Expected.named(claim(GRAVITY_ELASTICITY, 2)),
+                (n, r) -> elastic(n, r, 1), payloads("irb2000")));
+        c.add(s("joint elasticity j3, masses off 30 %", "gravity-elasticity", "irb2000", Expected.named(claim(GRAVITY_ELASTICITY, 3)),
+                (n, r) -> elastic(n, r, 2), payloads("irb2000")));
+        c.add(s("joint elasticity j2 puma560, masses off 30 %", "gravity-elasticity", "puma560", Expected.named(claim(GRAVITY_ELASTICITY, 2)),
+                (n, r) -> elastic(n, r, 1), same()));
+        // gear ratio, coupling
+        c.add(s("gear-ratio error j1", "gear-ratio", "irb2000", Expected.named(claim(GEAR_RATIO, 1)), (n, r) -> add(gearRatio(0, r)), same()));
+        c.add(s("gear-ratio error j2", "gear-ratio", "irb2000", Expected.named(claim(GEAR_RATIO, 2)), (n, r) -> add(gearRatio(1, r)), same()));
+        c.add(s("cross-coupling j3<-j2", "cross-coupling", "irb2000", Expected.named(claim(CROSS_COUPLING, 3, 2)),
+                (n, r) -> add(crossCoupling(2, 1, r)), same()));
+        // pairs
+        c.add(s("lost motion j2 + thermal growth per link", "pair", "irb2000", Expected.named(claim(LOST_MOTION, 2), claim(THERMAL_GROWTH)),
+                (n, r) -> { var t = thermal(n, r, false); var b = lostMotion(1, r); return w -> add(b).apply(w.withThermal(t)); }, same()));
+        c.add(s("transmission error j1 + gear-ratio j3", "pair", "irb2000",
+                Expected.named(claim(TRANSMISSION_ERROR, 1), claim(GEAR_RATIO, 3)),
+                (n, r) -> add(lowHarmonics(0, r), gearRatio(2, r)), same()));
+        c.add(s("lost motion j1 + cross-coupling j3<-j2, directions not recorded", "pair", "irb2000",
+                Expected.named(claim(LOST_MOTION, 1), claim(CROSS_COUPLING, 3, 2)),
+                (n, r) -> add(lostMotion(0, r), crossCoupling(2, 1, r)), p -> p.withDirColumns(false)));
+        // sparse, noisy and 6-D campaigns with an effect
+        c.add(s("lost motion j2, 50 poses", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
+                (n, r) -> add(lostMotion(1, r)), p -> p.withPoses(50, 50)));
+        c.add(s("transmission error j1, sigma 0.05 mm", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 1)),
+                (n, r) -> add(lowHarmonics(0, r)), p -> p.withSigma(0.05e-3)));
+        c.add(s("gear-ratio error j2, 6-D", "gear-ratio", "irb2000", Expected.named(claim(GEAR_RATIO, 2)),
+                (n, r) -> add(gearRatio(1, r)), p -> p.withSixD(true)));
+        // outside every family: must be located, never named
+        c.add(s("outside: bump in the angle of j3", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    var j = n.joints().get(2);
+                    double mid = 0.5 * (j.min() + j.max()), half = 0.3 * (j.max() - j.min());
+                    return add(new JointError.Bump(2, mid + half * (2 * r.nextDouble() - 1), Math.toRadians(uniform(r, 10, 20)),
+                            Math.toRadians(signed(r, 0.02, 0.04))));
+                }, same()));
+        c.add(s("outside: j2 error depending on j2 and j4", "outside", "irb2000", Expected.outside(),
+                (n, r) -> add(new JointError.TwoJoint(1, 3, Math.toRadians(signed(r, 0.01, 0.02)))), same()));
+        c.add(s("outside: measured point sags with reach", "outside", "irb2000", Expected.outside(),
+                (n, r) -> { var sag = new WorldRobot.Sag(uniform(r, 0.1e-3, 0.2e-3), 1.5); return w -> w.withSag(sag); }, same()));
+        return c;
+    }
+
+    /** A scenario of the catalogue by name. */
+    public static Scenario named(String name) {
+        for (Scenario s : catalogue()) if (s.name.equals(name)) return s;
+        throw new IllegalArgumentException("no world scenario '" + name + "'");
+    }
+
+    /** The catalogue's scenarios of one group ("null", "outside", "lost-motion", ...). */
+    public static List<Scenario> ofFamily(String family) {
+        return catalogue().stream().filter(s -> s.family.equals(family.toLowerCase(Locale.ROOT))).toList();
+    }
+
+    /** The groups of the catalogue, in order. */
+    public static List<String> families() {
+        return catalogue().stream().map(Scenario::family).distinct().toList();
+    }
+}

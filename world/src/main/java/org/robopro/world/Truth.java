@@ -1,0 +1,117 @@
+package org.robopro.world;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/** The truth record of a trial: what was concealed, in mm and degrees (SI where a key says so). */
+final class Truth {
+    private Truth() { }
+
+    static String json(Scenario.Trial t) {
+        WorldRobot w = t.world();
+        Map<String, Object> root = new LinkedHashMap<>();
+        root.put("scenario", t.scenario().name());
+        root.put("family", t.scenario().family());
+        root.put("robot", w.robotName());
+        root.put("seed", t.seed());
+        Map<String, Object> exp = new LinkedHashMap<>();
+        exp.put("verdict", t.scenario().expected().verdict().name().toLowerCase(java.util.Locale.ROOT));
+        List<Map<String, Object>> claims = new ArrayList<>();
+        for (Expected.Claim c : t.scenario().expected().claims()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("family", c.family().words);
+            m.put("diagnosis_names", c.family().diagnosisNames.stream().sorted().toList());
+            m.put("joints", c.joints());
+            claims.add(m);
+        }
+        exp.put("claims", claims);
+        root.put("expected", exp);
+        Campaign.Plan p = t.campaign().plan();
+        root.put("sigma_mm", p.sigmaM() * 1e3);
+        root.put("sigma_rot_deg", p.sixD() ? Math.toDegrees(p.sigmaRotRad()) : 0);
+        root.put("poses", p.poses());
+        root.put("validate_poses", p.validatePoses());
+        root.put("order", p.order().name().toLowerCase(java.util.Locale.ROOT));
+        root.put("frame", t.campaign().frame());
+        Campaign.Warmup wu = t.campaign().warmup();
+        root.put("warmup", Map.of("ambient_c", wu.ambientC(), "rise_k", wu.riseK(), "tau_s", wu.tauS()));
+        root.put("instrument_from_base", rigid(w.instrumentFromBase()));
+        root.put("flange_to_target", rigid(w.flangeToTool()));
+        root.put("zero_offsets_deg", Arrays.stream(w.zeroOffsets()).map(Math::toDegrees).boxed().toList());
+        List<Map<String, Object>> joints = new ArrayList<>();
+        Arm a = w.arm();
+        for (int i = 0; i < a.dof(); i++)
+            joints.add(Map.of("point_mm", mm(a.points()[i]), "axis", List.of(a.axes()[i][0], a.axes()[i][1], a.axes()[i][2])));
+        root.put("joints", joints);
+        root.put("flange_at_zero", rigid(a.flange()));
+        List<List<Double>> c = new ArrayList<>();
+        for (double[] row : w.coupling()) c.add(Arrays.stream(row).boxed().toList());
+        root.put("coupling", c);
+        List<Map<String, Object>> errors = new ArrayList<>();
+        for (JointError e : w.errors()) errors.add(error(e));
+        root.put("drive_errors", errors);
+        if (w.thermal() != null) {
+            WorldRobot.Thermal th = w.thermal();
+            root.put("thermal", Map.of("ref_c", th.refC(), "link_alpha_per_k", Arrays.stream(th.linkAlpha()).boxed().toList(),
+                    "instrument_drift_mm_per_k", mm(th.driftPerK()), "instrument_drift_mm_per_s", mm(th.driftPerS())));
+        }
+        if (w.compliance() != null) {
+            WorldRobot.Compliance co = w.compliance();
+            List<Map<String, Object>> masses = new ArrayList<>();
+            for (WorldRobot.Mass m : co.masses())
+                masses.add(Map.of("joint", m.joint() + 1, "mass_kg", m.kg(), "centre_mm", mm(m.centre())));
+            List<Object> k = new ArrayList<>();
+            for (double s : co.stiffness()) k.add(Double.isInfinite(s) ? "rigid" : s);
+            root.put("compliance", Map.of("stiffness_nm_per_rad", k, "masses", masses));
+        }
+        if (w.sag() != null) root.put("sag", Map.of("size_mm", w.sag().sizeM() * 1e3, "ref_reach_m", w.sag().refReachM()));
+        try {
+            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    static Map<String, Object> error(JointError e) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("joint", e.joint() + 1);
+        if (e instanceof JointError.Harmonics h) {
+            m.put("type", "transmission error");
+            m.put("cycles_per_turn", Arrays.stream(h.k()).boxed().toList());
+            m.put("amplitude_deg", Arrays.stream(h.amplitude()).map(Math::toDegrees).boxed().toList());
+            m.put("phase_rad", Arrays.stream(h.phase()).boxed().toList());
+        } else if (e instanceof JointError.LostMotion b) {
+            m.put("type", "lost motion (output = q - b/2 dir)");
+            m.put("width_deg", Math.toDegrees(b.width()));
+        } else if (e instanceof JointError.Scale s) {
+            m.put("type", "gear-ratio error");
+            m.put("eps", s.eps());
+        } else if (e instanceof JointError.Coupling c) {
+            m.put("type", "cross-coupling");
+            m.put("source", c.source() + 1);
+            m.put("kappa", c.kappa());
+        } else if (e instanceof JointError.Bump b) {
+            m.put("type", "bump (outside)");
+            m.put("centre_deg", Math.toDegrees(b.centre()));
+            m.put("width_deg", Math.toDegrees(b.width()));
+            m.put("amplitude_deg", Math.toDegrees(b.amplitude()));
+        } else if (e instanceof JointError.TwoJoint tj) {
+            m.put("type", "two-joint error (outside)");
+            m.put("other", tj.other() + 1);
+            m.put("amplitude_deg", Math.toDegrees(tj.amplitude()));
+        }
+        return m;
+    }
+
+    static Map<String, Object> rigid(Rigid r) {
+        return Map.of("position_mm", mm(r.p()), "quaternion_wxyz", Arrays.stream(r.quaternion()).boxed().toList());
+    }
+
+    static List<Double> mm(double[] v) { return List.of(v[0] * 1e3, v[1] * 1e3, v[2] * 1e3); }
+}

@@ -1,0 +1,100 @@
+package org.robopro.world;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class CampaignTest {
+    @Test
+    void writesThePublicFormatAndIsReproducible() {
+        Scenario.Trial t = Scenario.named("lost motion j2, directions recorded").trial(5);
+        String text = t.campaign().text();
+        String[] lines = text.split("\n");
+        assertEquals("# robopro-measurements 1", lines[0]);
+        assertTrue(text.contains("# robot: irb2000\n") && text.contains("# length-unit: mm\n") && text.contains("# angle-unit: deg\n")
+                && text.contains("# frame: tracker\n"));
+        int h = 0;
+        while (lines[h].startsWith("#")) h++;
+        List<String> head = List.of(lines[h].split(","));
+        assertEquals(List.of("pose", "q1", "q2", "q3", "q4", "q5", "q6", "x", "y", "z", "dir1", "dir2", "dir3", "dir4", "dir5", "dir6",
+                "time_s", "temp_c", "set"), head);
+        assertEquals(300, lines.length - h - 1);
+        long validate = text.lines().filter(l -> l.endsWith(",validate")).count();
+        assertEquals(100, validate);
+        assertEquals(text, Scenario.named("lost motion j2, directions recorded").trial(5).campaign().text());
+        assertNotEquals(text, Scenario.named("lost motion j2, directions recorded").trial(6).campaign().text());
+        // Every row has every column and finite numbers.
+        for (int i = h + 1; i < lines.length; i++) {
+            String[] f = lines[i].split(",");
+            assertEquals(head.size(), f.length, lines[i]);
+            for (int k = 1; k < f.length - 1; k++) assertTrue(Double.isFinite(Double.parseDouble(f[k])), lines[i]);
+        }
+    }
+
+    @Test
+    void directionsFollowTheMeasuringOrderAndTimeAndTemperatureRise() {
+        Campaign.Result c = Scenario.named("null irb2000").trial(2).campaign();
+        List<Campaign.Row> rows = c.rows();
+        double[] prev = Campaign.home(org.robopro.models.RobotLibrary.shipped("irb2000"));
+        for (Campaign.Row r : rows) {
+            for (int j = 0; j < 6; j++) assertEquals(r.q()[j] > prev[j] ? 1 : -1, r.dir()[j]);
+            prev = r.q();
+        }
+        for (int i = 1; i < rows.size(); i++) assertTrue(rows.get(i).timeS() > rows.get(i - 1).timeS());
+        double early = rows.subList(0, 20).stream().mapToDouble(Campaign.Row::tempC).average().orElseThrow();
+        double late = rows.subList(rows.size() - 20, rows.size()).stream().mapToDouble(Campaign.Row::tempC).average().orElseThrow();
+        assertTrue(late > early + 2, early + " -> " + late);
+        // The nearest-next order travels much less than the order drawn.
+        assertTrue(travel(rows) < 0.6 * travel(Scenario.named("lost motion j3, random order, directions recorded").trial(2).campaign().rows()));
+    }
+
+    static double travel(List<Campaign.Row> rows) {
+        double s = 0;
+        for (int i = 1; i < rows.size(); i++) for (int j = 0; j < 6; j++) s += Math.abs(rows.get(i).q()[j] - rows.get(i - 1).q()[j]);
+        return s;
+    }
+
+    @Test
+    void noiseHasTheAskedSizeAndSixDWritesUnitQuaternions() {
+        Campaign.Result c = Scenario.named("null irb2000, 6-D").trial(1).campaign();
+        double ss = 0;
+        int n = 0;
+        for (Campaign.Row r : c.rows()) {
+            for (int k = 0; k < 3; k++) { ss += Math.pow(r.point()[k] - r.truePoint()[k], 2); n++; }
+            double[] q = r.quaternion();
+            assertEquals(1, Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]), 1e-9);
+        }
+        assertEquals(0.02e-3, Math.sqrt(ss / n), 0.003e-3);
+        assertTrue(c.text().contains(",qw,qx,qy,qz,"));
+    }
+
+    @Test
+    void everyScenarioRunsOnItsRobotAndStatesItsAnswer() {
+        for (Scenario s : Scenario.catalogue()) {
+            Scenario.Trial t = s.trial(1);
+            assertTrue(t.campaign().rows().size() >= 100, s.name());
+            String truth = t.truthJson();
+            assertTrue(truth.contains("\"verdict\" : \"" + s.expected().verdict().name().toLowerCase(java.util.Locale.ROOT)), s.name());
+            assertFalse(t.campaign().text().contains("NaN"), s.name());
+        }
+        assertTrue(Scenario.families().containsAll(List.of("null", "outside", "lost-motion", "transmission-error", "thermal-growth",
+                "gravity-elasticity", "gear-ratio", "cross-coupling", "pair")));
+    }
+
+    @Test
+    void concealedEffectsChangeWhatIsMeasured() {
+        // Same seed, same robot draws except the effect: the lost motion moves the measured points by its size at the reach.
+        Campaign.Result with = Scenario.named("lost motion j1, directions recorded").trial(9).campaign();
+        WorldRobot bare = Scenario.named("lost motion j1, directions recorded").trial(9).world().withErrors(List.of());
+        double max = 0;
+        for (Campaign.Row r : with.rows()) {
+            double[] p = bare.target(r.q(), r.dir(), Double.NaN, r.timeS(), r.payloadKg()).p();
+            max = Math.max(max, Rigid.norm(Rigid.minus(p, r.truePoint())));
+        }
+        assertTrue(max > 0.1e-3 && max < 2e-3, "lost motion moved the point by up to " + max + " m");
+    }
+}
