@@ -407,6 +407,11 @@ public final class SimulatedController implements ControllerReceiver {
 
     // ---------------------------------------------------------------- programs
 
+    /** Most programs the controller stores (a real controller's program memory is finite too). */
+    public static final int MAX_PROGRAMS = 256;
+    /** Most bytes of program text stored in all. */
+    public static final long MAX_STORED_BYTES = 64L * 1024 * 1024;
+
     /**
      * Stores a program if its length and CRC-32 match what the sender announced and it parses;
      * otherwise stores nothing. Replaces a stored program of the same name.
@@ -419,6 +424,14 @@ public final class SimulatedController implements ControllerReceiver {
             throw new CommsException.Refused(ErrorCode.CHECKSUM_MISMATCH, "received " + text.length + " bytes, crc "
                     + Checksums.hex(crc) + "; sender announced " + announcedLength + " bytes, crc " + Checksums.hex(announcedCrc)
                     + "; nothing stored");
+        if (!programs.containsKey(name) && programs.size() >= MAX_PROGRAMS)
+            throw new CommsException.Refused(ErrorCode.STORAGE_FULL, "the controller holds " + programs.size()
+                    + " programs, its limit; replace one (same name) or restart the controller; nothing stored");
+        long total = text.length;
+        for (var e : programs.entrySet()) if (!e.getKey().equals(name)) total += e.getValue().length;
+        if (total > MAX_STORED_BYTES)
+            throw new CommsException.Refused(ErrorCode.STORAGE_FULL, "storing " + name + " would take the programs to "
+                    + total + " bytes, over the controller's " + MAX_STORED_BYTES + "; nothing stored");
         String problem = interpreter.parseProblem(new String(text, StandardCharsets.UTF_8), name);
         if (problem != null) throw new CommsException.Refused(ErrorCode.PROGRAM_SYNTAX, name + ": " + problem + "; nothing stored");
         programs.put(name, text.clone());
