@@ -29,8 +29,8 @@ class DiagnoseCommandTest {
 
     private int run(String... args) { return cli.run(args); }
 
-    @Test
-    void diagnose_simulatedBacklashJoint2_writesReportJsonAndExtendedModel() throws Exception {
+    /** A campaign with backlash on joint 2 (approach directions recorded): {training file, validation file}. */
+    private Path[] backlashCampaign() throws Exception {
         RobotDescription robot = RobotLibrary.shipped("irb2000");
         KinematicModel nominal = KinematicModel.build(robot);
         double[][] prev = {null};
@@ -48,6 +48,13 @@ class DiagnoseCommandTest {
         Path train = dir.resolve("train.csv"), val = dir.resolve("validate.csv");
         MeasurementWriter.write(c.measurements(), types, train, false);
         MeasurementWriter.write(c.validation(), types, val, false);
+        return new Path[] {train, val};
+    }
+
+    @Test
+    void diagnose_simulatedBacklashJoint2_writesReportJsonAndExtendedModel() throws Exception {
+        Path[] files = backlashCampaign();
+        Path train = files[0], val = files[1];
         Path outDir = System.getenv("ROBOPRO_KEEP_REPORT") != null ? Path.of(System.getenv("ROBOPRO_KEEP_REPORT")) : dir.resolve("out");
         assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--validate", val.toString(),
                 "--out", outDir.toString(), "--force"), cli.err());
@@ -76,5 +83,21 @@ class DiagnoseCommandTest {
     void diagnose_missingMeasurementFile_exitCode2() {
         assertEquals(2, run("diagnose", "--robot", "irb2000", "--measurements", dir.resolve("none.csv").toString(), "--out",
                 dir.resolve("o").toString()));
+    }
+
+    @Test
+    void diagnose_folds_effectFoundInEveryFoldAndHeldOutErrorsDrop() throws Exception {
+        Path[] files = backlashCampaign();
+        Path outDir = dir.resolve("cv");
+        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", files[0].toString(), "--folds", "3",
+                "--out", outDir.toString()), cli.err());
+        JsonNode c = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json"))).get("cross_validation");
+        assertEquals(3, c.get("per_fold").size());
+        int heldOut = 0;
+        for (JsonNode f : c.get("per_fold")) heldOut += f.get("poses_held_out").asInt();
+        assertEquals(150, heldOut);
+        assertEquals(3, c.get("effect_counts").path("backlash j2").asInt(), c.toString());
+        assertTrue(c.get("held_out_final_rms_mm").asDouble() < 0.8 * c.get("held_out_geometric_rms_mm").asDouble(), c.toString());
+        assertTrue(cli.out().contains("backlash j2 found in 3 of 3 folds"), cli.out());
     }
 }

@@ -186,7 +186,7 @@ public final class ProgramModule {
         int waits = 0;
         for (ProgramStep s : steps) {
             if (s instanceof WaitStep) { waits++; continue; }
-            MoveStep mv = (MoveStep) s;
+            if (!(s instanceof MoveStep mv)) continue; // I/O and process instructions have no workbench instruction
             if (tool == null) {
                 Pose tcp = mv.tool().tframe().toPose();
                 Tool cur = m.tool();
