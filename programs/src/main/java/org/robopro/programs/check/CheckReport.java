@@ -37,8 +37,20 @@ public record CheckReport(List<Problem> problems, List<StepResult> steps, double
         }
     }
 
-    /** One step's outcome: its label, target, duration (s) and the joint values (rad) at its end (null when unreachable). */
-    public record StepResult(String step, String target, double durationS, double[] qEnd, int interpolationPoints) { }
+    /**
+     * One step's outcome: its label, target, duration (s), the joint values (rad) at its end (null
+     * when unreachable), the number of interpolated points, and the joint values at those points
+     * as checked (MoveL/MoveC; empty otherwise): playback shows exactly the path that was checked.
+     */
+    public record StepResult(String step, String target, double durationS, double[] qEnd, int interpolationPoints, List<double[]> samples) {
+        public StepResult {
+            samples = List.copyOf(samples);
+        }
+
+        public StepResult(String step, String target, double durationS, double[] qEnd, int interpolationPoints) {
+            this(step, target, durationS, qEnd, interpolationPoints, List.of());
+        }
+    }
 
     public boolean hasErrors() {
         return problems.stream().anyMatch(p -> p.severity() == Problem.Severity.ERROR);

@@ -129,12 +129,12 @@ public final class PathChecker {
                 case MOVE_J -> joint(m, q, problems);
                 case MOVE_L, MOVE_C -> cartesian(m, q, problems);
             };
-            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points, o.lengthM);
+            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points, o.lengthM, o.samples);
             moveStart = total;
             moveDuration = o.duration;
             moveLength = o.lengthM;
             total += o.duration;
-            results.add(new CheckReport.StepResult(m.label(), m.targetName(), o.duration, o.q == null ? null : o.q.clone(), o.points));
+            results.add(new CheckReport.StepResult(m.label(), m.targetName(), o.duration, o.q == null ? null : o.q.clone(), o.points, o.samples));
             if (o.q != null) q = o.q;
         }
         io.end(total);
@@ -250,8 +250,10 @@ public final class PathChecker {
         }
     }
 
-    private record Outcome(double[] q, double duration, int points, double lengthM) {
-        Outcome(double[] q, double duration, int points) { this(q, duration, points, 0); }
+    private record Outcome(double[] q, double duration, int points, double lengthM, List<double[]> samples) {
+        Outcome(double[] q, double duration, int points) { this(q, duration, points, 0, List.of()); }
+
+        Outcome(double[] q, double duration, int points, double lengthM) { this(q, duration, points, lengthM, List.of()); }
     }
 
     private Outcome absJ(MoveStep m, double[] q, List<Problem> problems) {
@@ -322,6 +324,7 @@ public final class PathChecker {
         double angle = w.norm();
         int n = Math.max(1, (int) Math.ceil(Math.max(length / opt.stepM(), angle / opt.stepRad())));
         double[] prev = q.clone();
+        List<double[]> samples = new ArrayList<>(Math.min(n, 4096));
         double jointLimitedTime = 0;
         boolean reported = false, limitReported = false, singReported = false, jumpReported = false;
         for (int k = 1; k <= n; k++) {
@@ -360,6 +363,7 @@ public final class PathChecker {
                 singReported = true;
             }
             prev = qk;
+            samples.add(qk);
         }
         if (reported) return new Outcome(null, 0, n);
         ConfData reached = ik.confOf(prev);
@@ -368,7 +372,7 @@ public final class PathChecker {
                     Problem.Kind.CONFIGURATION_MISMATCH, m.label(), m.targetName(), m.source(),
                     "the path ends in configuration " + confText(reached) + ", the target asks for " + confText(conf)));
         double t = Math.max(cartesianTime(tcpStart, tcpEnd, length, m), jointLimitedTime + opt.rampS());
-        return new Outcome(prev, t, n, length);
+        return new Outcome(prev, t, n, length, samples);
     }
 
     /** Trapezoid time of the TCP path (length m, or the straight distance when 0) and of the reorientation. */

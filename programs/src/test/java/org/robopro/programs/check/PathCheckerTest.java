@@ -57,6 +57,13 @@ class PathCheckerTest {
         Pose reached = IRB2000.flange(moveL.qEnd()).times(TORCH.tframe().toPose());
         assertEquals(0, reached.distanceTo(b.pose()), 1e-9);
         assertTrue(moveL.interpolationPoints() > 10, "MoveL is checked along its path");
+        // The checked samples (what playback shows) lie on the straight TCP line from pA to pB.
+        assertEquals(moveL.interpolationPoints(), moveL.samples().size());
+        Vec3 from = a.pose().position(), to = b.pose().position(), dir = to.minus(from).normalized();
+        for (double[] qs : moveL.samples()) {
+            Vec3 p = IRB2000.flange(qs).times(TORCH.tframe().toPose()).position().minus(from);
+            assertEquals(0, p.minus(dir.times(p.dot(dir))).norm(), 1e-9, "sample off the line");
+        }
         assertTrue(r.cycleTimeS() > 0);
     }
 
