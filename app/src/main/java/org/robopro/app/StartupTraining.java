@@ -41,8 +41,13 @@ public final class StartupTraining {
             """;
 
     public static void main(String[] args) throws IOException {
+        System.exit(run().isEmpty() ? 0 : 1);
+    }
+
+    /** Runs the training commands; returns the ones that failed (empty when all succeeded). */
+    static List<String> run() throws IOException {
+        List<String> failed = new java.util.ArrayList<>();
         Path dir = Files.createTempDirectory("robopro-cds-");
-        int failed = 0;
         try {
             String d = dir.toString();
             Files.writeString(dir.resolve("weld.json"), PROGRAM, StandardCharsets.UTF_8);
@@ -61,13 +66,13 @@ public final class StartupTraining {
                 PrintWriter sink = new PrintWriter(Writer.nullWriter());
                 cl.setOut(sink);
                 cl.setErr(sink);
-                if (cl.execute(a) != 0) failed++;
+                if (cl.execute(a) != 0) failed.add(String.join(" ", a));
             }
         } finally {
             try (Stream<Path> s = Files.walk(dir)) {
                 for (Path p : (Iterable<Path>) s.sorted(Comparator.reverseOrder())::iterator) Files.deleteIfExists(p);
             }
         }
-        System.exit(failed == 0 ? 0 : 1);
+        return failed;
     }
 }
