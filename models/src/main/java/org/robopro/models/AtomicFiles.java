@@ -57,26 +57,6 @@ public final class AtomicFiles {
         }
     }
 
-    /**
-     * Writes a set of files in one folder whole or not at all: the same as {@link OutputSet} (which
-     * it calls) for callers holding target paths.
-     */
-    public static void writeAll(java.util.Map<Path, byte[]> files, boolean overwrite) throws IOException {
-        Path dir = null;
-        OutputSet set = null;
-        for (java.util.Map.Entry<Path, byte[]> e : files.entrySet()) {
-            Path abs = e.getKey().toAbsolutePath().normalize();
-            if (set == null) {
-                dir = abs.getParent();
-                set = OutputSet.in(dir, overwrite);
-            } else if (!abs.getParent().equals(dir)) {
-                throw new IllegalArgumentException("a set of files must share one folder: " + abs + " is not in " + dir);
-            }
-            set.add(abs.getFileName().toString(), e.getValue());
-        }
-        if (set != null) set.commit();
-    }
-
     public static void writeString(Path target, String text, boolean overwrite) throws IOException {
         write(target, text.getBytes(StandardCharsets.UTF_8), overwrite);
     }

@@ -13,12 +13,20 @@ import java.util.List;
  * @param objects     tables, fixtures, parts
  * @param tools       tools that can be mounted on the flange
  * @param workObjects user frames
+ * @param signals     the I/O signals programs use (names, types, simulated inputs)
  */
 public record CellDescription(String name, String robot, PoseDescription worldTbase, List<CellObject> objects,
-                              List<ToolDescription> tools, List<WorkObjectDescription> workObjects) {
+                              List<ToolDescription> tools, List<WorkObjectDescription> workObjects, List<SignalDescription> signals) {
     public CellDescription {
         objects = List.copyOf(objects);
         tools = List.copyOf(tools);
         workObjects = List.copyOf(workObjects);
+        signals = List.copyOf(signals);
+    }
+
+    /** A cell without I/O signals. */
+    public CellDescription(String name, String robot, PoseDescription worldTbase, List<CellObject> objects,
+                           List<ToolDescription> tools, List<WorkObjectDescription> workObjects) {
+        this(name, robot, worldTbase, objects, tools, workObjects, List.of());
     }
 }

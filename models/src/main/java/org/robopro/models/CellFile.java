@@ -53,7 +53,7 @@ public final class CellFile {
 
     /** Builds a cell from a parsed tree (e.g. the cell embedded in a workbench project file). */
     public static CellDescription fromTree(LocatedJson.Node root) {
-        root.onlyFields(Set.of("format", "name", "robot", "objects", "tools", "work_objects"));
+        root.onlyFields(Set.of("format", "name", "robot", "objects", "tools", "work_objects", "signals"));
         RobotFile.checkFormat(root.get("format"), FORMAT, VERSION);
         String name = RobotFile.identifier(root.get("name"));
         LocatedJson.Node robot = root.get("robot").onlyFields(Set.of("ref", "base"));
@@ -82,7 +82,71 @@ public final class CellFile {
                 w.onlyFields(Set.of("name", "user_frame"));
                 wobjs.add(new WorkObjectDescription(unique(w.get("name"), wobjNames, "work object"), pose(w.get("user_frame"))));
             }
-        return new CellDescription(name, ref, base, objects, tools, wobjs);
+        List<SignalDescription> signals = new ArrayList<>();
+        if (root.has("signals")) signals = signals(root.get("signals"));
+        return new CellDescription(name, ref, base, objects, tools, wobjs, signals);
+    }
+
+    /**
+     * {@code [{"name": "diPart", "type": "DI", "value": 0, "script": [{"t_s": 1.5, "value": 1}]},
+     * {"name": "diClosed", "type": "DI", "follows": "doClose", "delay_s": 0.2}]}.
+     */
+    private static List<SignalDescription> signals(LocatedJson.Node list) {
+        List<SignalDescription> out = new ArrayList<>();
+        Set<String> seen = new HashSet<>();
+        for (LocatedJson.Node s : list.items()) {
+            s.onlyFields(Set.of("name", "type", "value", "script", "follows", "delay_s"));
+            LocatedJson.Node nameNode = s.get("name");
+            String name = nameNode.asNonEmptyString();
+            if (!name.matches("[A-Za-z][A-Za-z0-9_]{0,31}")) throw nameNode.error("a signal name is a RAPID identifier (letter, then letters, digits, _; at most 32)");
+            if (!seen.add(name.toLowerCase(java.util.Locale.ROOT))) throw nameNode.error("duplicate signal name '" + name + "'");
+            LocatedJson.Node typeNode = s.get("type");
+            SignalDescription.Type type = SignalDescription.Type.parse(typeNode.asString());
+            if (type == null) throw typeNode.error("unknown signal type '" + typeNode.asString() + "'; expected DI, DO, AI, AO, GI or GO");
+            double value = s.has("value") ? signalValue(s.get("value"), type) : 0;
+            List<SignalDescription.Change> script = new ArrayList<>();
+            if (s.has("script")) {
+                if (!type.input()) throw s.get("script").error("only inputs are scripted; " + name + " is an output");
+                double last = -1;
+                for (LocatedJson.Node c : s.get("script").items()) {
+                    c.onlyFields(Set.of("t_s", "value"));
+                    double t = c.get("t_s").asDouble();
+                    if (!(t >= 0) || !Double.isFinite(t)) throw c.get("t_s").error("must be a finite time >= 0");
+                    if (t <= last) throw c.get("t_s").error("script times must increase");
+                    last = t;
+                    script.add(new SignalDescription.Change(t, signalValue(c.get("value"), type)));
+                }
+            }
+            String follows = "";
+            double delay = 0;
+            if (s.has("follows")) {
+                if (!type.input()) throw s.get("follows").error("only inputs follow an output; " + name + " is an output");
+                follows = s.get("follows").asNonEmptyString();
+                if (s.has("delay_s")) {
+                    delay = s.get("delay_s").asDouble();
+                    if (!(delay >= 0) || !Double.isFinite(delay)) throw s.get("delay_s").error("must be a finite time >= 0");
+                }
+            } else if (s.has("delay_s")) throw s.get("delay_s").error("delay_s belongs to an input that follows an output");
+            out.add(new SignalDescription(name, type, value, script, follows, delay));
+        }
+        java.util.Map<String, SignalDescription> byName = new java.util.HashMap<>();
+        for (SignalDescription d : out) byName.put(d.key(), d);
+        for (int k = 0; k < out.size(); k++) {
+            if (out.get(k).follows().isEmpty()) continue;
+            SignalDescription f = byName.get(out.get(k).follows().toLowerCase(java.util.Locale.ROOT));
+            if (f == null) throw list.items().get(k).get("follows").error("no signal '" + out.get(k).follows() + "' in the cell");
+            if (f.type().input()) throw list.items().get(k).get("follows").error("an input follows an output; " + f.name() + " is an input");
+        }
+        return out;
+    }
+
+    private static double signalValue(LocatedJson.Node n, SignalDescription.Type type) {
+        double v = n.asDouble();
+        if (!Double.isFinite(v)) throw n.error("must be finite");
+        if (type.digital() && v != 0 && v != 1) throw n.error("a digital signal is 0 or 1");
+        if ((type == SignalDescription.Type.GI || type == SignalDescription.Type.GO) && (v < 0 || v != Math.rint(v)))
+            throw n.error("a group signal is a whole number >= 0");
+        return v;
     }
 
     private static String unique(LocatedJson.Node n, Set<String> seen, String what) {
@@ -194,6 +258,21 @@ public final class CellFile {
             o.endObject();
         }
         o.endArray();
+        if (!cell.signals().isEmpty()) {
+            o.beginArray("signals");
+            for (SignalDescription d : cell.signals()) {
+                o.beginObject(null).string("name", d.name()).string("type", d.type().name()).number("value", FileNumbers.formatPlain(d.value()));
+                if (!d.script().isEmpty()) {
+                    o.beginArray("script");
+                    for (SignalDescription.Change c : d.script())
+                        o.beginObject(null).number("t_s", FileNumbers.formatPlain(c.timeS())).number("value", FileNumbers.formatPlain(c.value())).endObject();
+                    o.endArray();
+                }
+                if (!d.follows().isEmpty()) o.string("follows", d.follows()).number("delay_s", FileNumbers.formatPlain(d.delayS()));
+                o.endObject();
+            }
+            o.endArray();
+        }
         return o.endObject().toString();
     }
 

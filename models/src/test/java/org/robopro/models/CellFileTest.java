@@ -139,4 +139,41 @@ class CellFileTest {
         InputException e = bad("\"colour\": [0.5, 0.5, 0.5]}", "\"colour\": [0.5, 0.5, 0.5]}, {\"name\": \"t\", \"kind\": \"mesh\", \"mesh\": \"a.stl\"}");
         assertEquals("objects[1].name", e.field());
     }
+
+    static final String SIGNALS = String.join("\n",
+            "{\"format\": \"robopro-cell 1\", \"name\": \"c\", \"robot\": {\"ref\": \"irb2000\"},", // 1
+            " \"signals\": [",                                                                        // 2
+            "  {\"name\": \"doClamp\", \"type\": \"DO\"},",                                           // 3
+            "  {\"name\": \"diClamped\", \"type\": \"DI\", \"follows\": \"doClamp\", \"delay_s\": 0.3},", // 4
+            "  {\"name\": \"diPart\", \"type\": \"di\", \"value\": 0, \"script\": [{\"t_s\": 1.5, \"value\": 1}]},", // 5
+            "  {\"name\": \"aoWire\", \"type\": \"AO\", \"value\": 2.5}",                           // 6
+            " ]}");
+
+    @Test
+    void parse_signals_tableWithScriptsAndFollowersRoundTrips() {
+        CellDescription c = CellFile.parse("c.json", SIGNALS);
+        assertEquals(4, c.signals().size());
+        SignalDescription clamped = c.signals().get(1);
+        assertEquals(SignalDescription.Type.DI, clamped.type());
+        assertEquals("doClamp", clamped.follows());
+        assertEquals(0.3, clamped.delayS(), 0);
+        assertEquals(new SignalDescription.Change(1.5, 1), c.signals().get(2).script().get(0));
+        assertEquals(2.5, c.signals().get(3).value(), 0);
+        assertEquals(c, CellFile.parse("x", CellFile.format(c)));
+    }
+
+    @Test
+    void parse_badSignals_locatedErrors() {
+        InputException e = assertThrows(InputException.class, () -> CellFile.parse("c.json", SIGNALS.replace("\"DO\"}", "\"DX\"}")));
+        assertEquals(3, e.line(), e.getMessage());
+        e = assertThrows(InputException.class, () -> CellFile.parse("c.json", SIGNALS.replace("\"follows\": \"doClamp\"", "\"follows\": \"doNone\"")));
+        assertEquals(4, e.line(), e.getMessage());
+        e = assertThrows(InputException.class, () -> CellFile.parse("c.json", SIGNALS.replace("\"value\": 1}", "\"value\": 2}")));
+        assertEquals(5, e.line(), e.getMessage());
+        assertTrue(e.getMessage().contains("digital"), e.getMessage());
+        e = assertThrows(InputException.class, () -> CellFile.parse("c.json", SIGNALS.replace("\"type\": \"DO\"}", "\"type\": \"DO\", \"script\": []}")));
+        assertEquals(3, e.line(), e.getMessage());
+        e = assertThrows(InputException.class, () -> CellFile.parse("c.json", SIGNALS.replace("\"diPart\"", "\"doclamp\"")));
+        assertTrue(e.getMessage().contains("duplicate"), e.getMessage());
+    }
 }

@@ -7,6 +7,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CancellationException;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.identification.ErrorStats;
 import org.robopro.calibration.workflow.CalibrationWorkflow;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
@@ -79,13 +80,32 @@ public final class CalibrateCommand implements Callable<Integer> {
         var w = spec.commandLine().getOut();
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(), r.train().size(),
                 r.sixD() ? "6-D" : "positions", Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
-        if (data.validate() != null) w.printf(Locale.ROOT, "  validation (%d poses): RMS %.4f mm -> %.4f mm, max %.4f mm%n", r.validate().size(),
-                Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()), Units.mToMm(r.validateMaxM()));
+        w.printf(Locale.ROOT, "  training:   %s%n", stats(ErrorStats.position(r.train(), true)));
+        if (data.validate() != null) w.printf(Locale.ROOT, "  validation (%d poses): RMS %.4f mm -> %.4f mm, max %.4f mm%n    %s%n",
+                r.validate().size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()), Units.mToMm(r.validateMaxM()),
+                stats(ErrorStats.position(r.validate(), true)));
+        var cv = oc.crossValidation();
+        if (cv != null) {
+            StringBuilder per = new StringBuilder();
+            for (CalibrationResult f : cv.folds()) per.append(per.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.4f", Units.mToMm(f.validateRmsM())));
+            w.printf(Locale.ROOT, "  %d-fold cross-validation (each pose predicted by the model that did not see it): %s%n    per fold RMS: %s mm%n",
+                    cv.folds().size(), stats(ErrorStats.position(cv.heldOut(), true)), per);
+        }
         w.printf(Locale.ROOT, "  %d parameters fixed as unidentifiable, condition number %.3g, %d outliers%s%n",
                 r.unidentifiable().size(), r.conditionNumber(), r.outliers().size(),
                 r.outliers().isEmpty() ? "" : " (" + String.join(", ", r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList()) + ")");
+        if (!oc.concerns().isEmpty())
+            w.printf(Locale.ROOT, "  not determined by these data (see the warnings): %s%n",
+                    String.join(", ", oc.concerns().stream().map(c -> c.parameter()).toList()));
         w.printf("  wrote %s%n", out.dir().toAbsolutePath());
         for (String warning : oc.warnings()) spec.commandLine().getErr().println("robopro: warning: " + warning);
         return 0;
+    }
+
+    /** RMS, mean, median, 95th percentile and max of position errors, mm. */
+    static String stats(ErrorStats st) {
+        ErrorStats v = st.scaled(1e3);
+        return String.format(Locale.ROOT, "RMS %.4f, mean %.4f, median %.4f, p95 %.4f, max %.4f mm (%d poses)",
+                v.rms(), v.mean(), v.median(), v.p95(), v.max(), v.n());
     }
 }

@@ -3,7 +3,11 @@ package org.robopro.app.cli;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.time.temporal.ChronoUnit;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
@@ -15,6 +19,7 @@ import org.robopro.calibration.diagnosis.DiagnosisReport;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.workflow.CalibrationWorkflow;
 import org.robopro.kinematics.Units;
 import org.robopro.models.RobotFile;
 import org.robopro.models.RobotDescription;
@@ -39,6 +44,13 @@ public final class DiagnoseCommand implements Callable<Integer> {
 
     @Mixin MeasurementOptions measurements;
 
+    @Option(names = "--folds", paramLabel = "K",
+            description = "also diagnose K times, each time without one of K folds of the training poses, and report the held-out errors and how often each effect is found")
+    Integer folds;
+
+    @Option(names = "--fold-seed", defaultValue = "1", paramLabel = "SEED", description = "seed of the fold assignment (default ${DEFAULT-VALUE})")
+    long foldSeed;
+
     @Option(names = "--alpha", defaultValue = "0.001", paramLabel = "A", description = "family-wise false-positive rate (default ${DEFAULT-VALUE})")
     double alpha;
 
@@ -50,14 +62,19 @@ public final class DiagnoseCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (!(alpha > 0 && alpha < 1)) throw new IllegalArgumentException("--alpha must be in (0, 1), got " + alpha);
         RobotDescription desc = robot.description();
-        org.robopro.calibration.workflow.CalibrationWorkflow.Campaign data = measurements.read(desc, null);
+        CalibrationWorkflow.Campaign data = measurements.read(desc, null);
         MeasurementSet train = data.train(), val = data.validate();
         Cancellation cancel = new Cancellation();
         Diagnoser.Options o = Diagnoser.Options.defaults().withAlpha(alpha).withCancel(cancel)
                 .withProgress(CliSupport.progressBar(spec.commandLine().getErr()));
         Thread hook = CliSupport.cancelOnInterrupt(cancel, Thread.currentThread());
         Diagnosis d;
+        List<Diagnosis> cv = List.of();
         try {
+            if (folds != null) {
+                if (folds < 2) throw new IllegalArgumentException("--folds must be at least 2, got " + folds);
+                cv = CalibrationWorkflow.crossValidate(train, folds, foldSeed, (k, tr, va) -> Diagnoser.diagnose(desc, tr, va, o));
+            }
             d = Diagnoser.diagnose(desc, train, val, o);
         } catch (CancellationException e) {
             spec.commandLine().getErr().println("robopro: diagnosis cancelled; nothing written");
@@ -76,9 +93,11 @@ public final class DiagnoseCommand implements Callable<Integer> {
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription extended = d.model().toDescription().withProvenance(prov);
+        String json = DiagnosisReport.json(d, ctx);
+        if (!cv.isEmpty()) json = withCrossValidation(json, cv);
         out.set()
                 .addString("extended.robot.json", RobotFile.format(extended))
-                .addString("diagnosis.json", DiagnosisReport.json(d, ctx))
+                .addString("diagnosis.json", json)
                 .addString("report.html", DiagnosisReport.html(d, ctx))
                 .commit();
         var w = spec.commandLine().getOut();
@@ -89,8 +108,68 @@ public final class DiagnoseCommand implements Callable<Integer> {
         if (d.effects().isEmpty()) w.println("  no non-geometric effect found");
         for (Diagnosis.Finding f : d.effects()) w.println("  found " + f.effect().label());
         for (String r : d.recommendations()) w.println("  advice: " + r);
+        if (!cv.isEmpty()) {
+            w.printf(Locale.ROOT, "  %d-fold cross-validation, held-out RMS: geometric %.4f mm -> %.4f mm with the effects of each fold%n",
+                    cv.size(), Units.mToMm(pooledRms(cv, true)), Units.mToMm(pooledRms(cv, false)));
+            Map<String, Integer> counts = effectCounts(cv);
+            if (counts.isEmpty()) w.println("    no effect found in any fold");
+            int k = cv.size();
+            counts.forEach((label, n) -> w.printf(Locale.ROOT, "    %s found in %d of %d folds%n", label, n, k));
+        }
         if (!d.outliers().isEmpty()) w.println("  outliers: " + String.join(", ", d.outliers()));
         w.printf("  wrote %s%n", out.dir().toAbsolutePath());
         return 0;
+    }
+
+    /** RMS over every held-out pose of the folds (geometric model, or with each fold's effects), m. */
+    static double pooledRms(List<Diagnosis> cv, boolean geometric) {
+        double s = 0;
+        int n = 0;
+        for (Diagnosis d : cv) {
+            int k = d.geometric().validate().size();
+            double r = geometric ? d.geometricValidateRmsM() : d.finalValidateRmsM();
+            s += k * r * r;
+            n += k;
+        }
+        return Math.sqrt(s / n);
+    }
+
+    /** How many folds named each effect, in order of first appearance. */
+    static Map<String, Integer> effectCounts(List<Diagnosis> cv) {
+        Map<String, Integer> counts = new LinkedHashMap<>();
+        for (Diagnosis d : cv) for (Diagnosis.Finding f : d.effects()) counts.merge(f.effect().label(), 1, Integer::sum);
+        return counts;
+    }
+
+    /** Puts a number, or null when it is not finite (JSON has no NaN). */
+    private static void finite(ObjectNode o, String key, double v) {
+        if (Double.isFinite(v)) o.put(key, v);
+        else o.putNull(key);
+    }
+
+    /** diagnosis.json with a cross_validation section: per fold and overall held-out RMS, effects per fold. */
+    private String withCrossValidation(String json, List<Diagnosis> cv) throws java.io.IOException {
+        ObjectMapper mapper = org.robopro.models.JsonMapper.create();
+        ObjectNode root = (ObjectNode) mapper.readTree(json);
+        ObjectNode c = root.putObject("cross_validation");
+        c.put("folds", cv.size());
+        c.put("seed", foldSeed);
+        finite(c, "held_out_geometric_rms_mm", Units.mToMm(pooledRms(cv, true)));
+        finite(c, "held_out_final_rms_mm", Units.mToMm(pooledRms(cv, false)));
+        ObjectNode counts = c.putObject("effect_counts");
+        effectCounts(cv).forEach(counts::put);
+        ArrayNode per = c.putArray("per_fold");
+        for (int k = 0; k < cv.size(); k++) {
+            Diagnosis d = cv.get(k);
+            ObjectNode f = per.addObject();
+            f.put("fold", k + 1);
+            f.put("poses_train", d.geometric().train().size());
+            f.put("poses_held_out", d.geometric().validate().size());
+            finite(f, "held_out_geometric_rms_mm", Units.mToMm(d.geometricValidateRmsM()));
+            finite(f, "held_out_final_rms_mm", Units.mToMm(d.finalValidateRmsM()));
+            ArrayNode e = f.putArray("effects");
+            for (Diagnosis.Finding x : d.effects()) e.add(x.effect().label());
+        }
+        return mapper.writeValueAsString(root) + "\n";
     }
 }

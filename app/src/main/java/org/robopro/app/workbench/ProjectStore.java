@@ -87,7 +87,7 @@ public final class ProjectStore {
             n.put("name", t.name());
             n.set("pose", pose(t.worldTtcp()));
             ArrayNode j = n.putArray("joints_deg");
-            for (double v : t.qTaught()) j.add(round(Math.toDegrees(v), 1e-6));
+            for (double v : t.qTaught()) j.add(Math.toDegrees(v)); // unrounded: the target reopens at the joints it was taught at
             ArrayNode c = n.putArray("conf");
             c.add(t.conf().cf1()).add(t.conf().cf4()).add(t.conf().cf6()).add(t.conf().cfx());
             if (!t.wobj().equals(Target.WOBJ0)) n.put("wobj", t.wobj());
@@ -106,6 +106,12 @@ public final class ProjectStore {
         }
         ObjectNode cal = root.putObject("calibration");
         if (p.calibrationReference() == null) cal.putNull("reference"); else cal.put("reference", p.calibrationReference());
+        ObjectNode state = root.putObject("workbench_state");
+        state.put("teach_in_wobj", p.activeWorkObject());
+        if (p.q() != null) {
+            ArrayNode j = state.putArray("joints_deg");
+            for (double v : p.q()) j.add(Math.toDegrees(v));
+        }
         try {
             return JSON.writeValueAsString(root) + "\n";
         } catch (JsonProcessingException e) {
@@ -453,7 +459,16 @@ public final class ProjectStore {
             }
             JsonNode cal = at("/calibration/reference");
             String calRef = cal.isTextual() ? cal.asText() : null;
-            return new ProjectData(ref, robot, placement, tool, objects, wobjs, targets, program, calRef);
+            String active = Target.WOBJ0;
+            if (!at("/workbench_state/teach_in_wobj").isMissingNode()) {
+                active = text("/workbench_state/teach_in_wobj");
+                String a = active;
+                if (!a.equalsIgnoreCase(Target.WOBJ0) && wobjs.stream().noneMatch(x -> x.name().equals(a)))
+                    throw bad("/workbench_state/teach_in_wobj", "no work object named " + a);
+            }
+            double[] q = at("/workbench_state/joints_deg").isMissingNode() ? null
+                    : Units.degToRad(numbers("/workbench_state/joints_deg", robot.dof()));
+            return new ProjectData(ref, robot, placement, tool, objects, wobjs, targets, program, calRef, active, q);
         }
     }
 

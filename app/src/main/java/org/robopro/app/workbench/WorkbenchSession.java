@@ -56,10 +56,15 @@ public final class WorkbenchSession implements AutoCloseable {
     public WorkbenchSession(ProjectData data, Path projectFile) {
         this.model = new WorkbenchModel(data.robotRef(), data.robot());
         model.load(data);
-        model.setQ(DefaultCell.readyPose().length == data.robot().dof() ? DefaultCell.readyPose() : new double[data.robot().dof()]);
+        if (data.q() == null) model.setQ(startPose(data));
         model.markSaved();
         this.projectFile = projectFile;
         this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
+    }
+
+    /** Where a project without saved joint values puts the robot: the ready pose of the IRB-2000 cell, else all zero. */
+    private static double[] startPose(ProjectData data) {
+        return DefaultCell.readyPose().length == data.robot().dof() ? DefaultCell.readyPose() : new double[data.robot().dof()];
     }
 
     /** A session on the given project, or on the IRB-2000 welding cell when {@code project} is null. */
@@ -163,7 +168,7 @@ public final class WorkbenchSession implements AutoCloseable {
         String name = model.newTargetName();
         double[] q = model.q();
         Target t = new Target(name, model.worldTtcp(), q, model.kinematics().confOf(q), model.activeWorkObject());
-        model.putTarget(t);
+        model.edit("Teach " + name, () -> model.putTarget(t));
         log(String.format(java.util.Locale.ROOT, "Taught %s at (%.1f, %.1f, %.1f) mm in %s", name,
                 t.worldTtcp().x() * 1000, t.worldTtcp().y() * 1000, t.worldTtcp().z() * 1000, t.wobj()));
         return t;
@@ -175,7 +180,8 @@ public final class WorkbenchSession implements AutoCloseable {
 
     /** Appends a move; {@code via} is MoveC's circle point (null for MoveJ/MoveL). */
     public void addMove(Instruction.Type type, String target, String via, double speedMmPerS, double zoneMm) {
-        model.addInstruction(new Instruction(type, target, speedMmPerS, zoneMm, via));
+        Instruction i = new Instruction(type, target, speedMmPerS, zoneMm, via);
+        model.edit("Add " + type.rapid() + " " + target, () -> model.addInstruction(i));
     }
 
     /** Checks the program with the programs module's path checker and logs every problem by instruction and target. */
@@ -232,7 +238,7 @@ public final class WorkbenchSession implements AutoCloseable {
         String text = TextFiles.readUtf8(file);
         ParsedModule parsed = RapidParser.parseDetailed(text, file.toString());
         ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, "main");
-        model.replaceProgram(imp);
+        model.edit("Import RAPID " + imp.moduleName(), () -> model.replaceProgram(imp));
         for (String n : imp.notes()) log("RAPID import: " + n);
         log(String.format(java.util.Locale.ROOT, "Imported RAPID module %s from %s: %d targets, %d instructions",
                 imp.moduleName(), file, imp.targets().size(), imp.program().size()));
@@ -356,7 +362,7 @@ public final class WorkbenchSession implements AutoCloseable {
             uiThread.accept(() -> proc.set(procs.size() == 1 ? procs.get(0) : chooseProc.apply(procs)));
             if (proc.get() == null) throw new java.util.concurrent.CancellationException("no procedure chosen");
             ProgramModule.Imported imp = ProgramModule.fromRapid(parsed, model, proc.get());
-            uiThread.accept(() -> model.replaceProgram(imp));
+            uiThread.accept(() -> model.edit("Upload " + name, () -> model.replaceProgram(imp)));
             for (String n : imp.notes()) log("Upload: " + n);
             log("Uploaded " + name + " (" + text.length() + " bytes), PROC " + proc.get() + ": " + imp.targets().size() + " targets, "
                     + imp.program().size() + " instructions");
@@ -545,7 +551,7 @@ public final class WorkbenchSession implements AutoCloseable {
         int rgb = switch (kind) { case TABLE -> 0x5A6270; case FIXTURE -> 0x2F7D3A; default -> 0xB8C4D0; };
         CellObject o = new CellObject(id, Character.toUpperCase(prefix.charAt(0)) + prefix.substring(1) + " " + id.substring(prefix.length()),
                 kind, Pose.translation(0.9, -1.2, 0), size, null, rgb);
-        model.addObject(o);
+        model.edit("Add " + o.name(), () -> model.addObject(o));
         model.select("object:" + id);
         log("Added " + o.name());
         return o;
@@ -557,7 +563,7 @@ public final class WorkbenchSession implements AutoCloseable {
                 : file.toAbsolutePath().toString();
         CellObject o = new CellObject(id, file.getFileName().toString(), CellObject.Kind.MESH, Pose.translation(1, 1, 0),
                 new Vec3(scale, scale, scale), rel, 0x9AA5B1);
-        model.addObject(o);
+        model.edit("Import mesh " + o.name(), () -> model.addObject(o));
         model.select("object:" + id);
         log("Imported mesh " + file);
         return o;
@@ -566,39 +572,83 @@ public final class WorkbenchSession implements AutoCloseable {
     /** Moves/rotates a cell object: position in metres, rotation about world z in radians. */
     public void placeObject(String id, double x, double y, double z, double rzRad) {
         CellObject o = model.object(id).orElseThrow(() -> new IllegalArgumentException("no object " + id));
-        model.updateObject(o.withPose(Pose.translation(x, y, z).times(Pose.rotZ(rzRad))));
+        model.edit("Move " + o.name(), () -> model.updateObject(o.withPose(Pose.translation(x, y, z).times(Pose.rotZ(rzRad)))));
     }
 
+    /** Deletes the selected object or target (and the instructions that move to that target). */
     public void deleteSelection() {
         String s = model.selection();
         if (s == null) return;
         if (s.startsWith("object:")) {
-            model.removeObject(s.substring(7));
-            log("Deleted " + s.substring(7));
+            String id = s.substring(7);
+            model.edit("Delete " + model.object(id).map(CellObject::name).orElse(id), () -> model.removeObject(id));
+            log("Deleted " + id);
         } else if (s.startsWith("target:")) {
-            model.removeTarget(s.substring(7));
+            model.edit("Delete " + s.substring(7), () -> model.removeTarget(s.substring(7)));
             log("Deleted target " + s.substring(7));
         }
     }
 
+    // ---- undo and redo -----------------------------------------------------------------------
+
+    /** Takes back the last edit (cell, tool, targets, program, robot); false when there is nothing to undo. */
+    public boolean undo() {
+        var l = model.undo();
+        l.ifPresent(x -> log("Undo: " + x));
+        return l.isPresent();
+    }
+
+    /** Makes the last undone edit again; false when there is nothing to redo. */
+    public boolean redo() {
+        var l = model.redo();
+        l.ifPresent(x -> log("Redo: " + x));
+        return l.isPresent();
+    }
+
     // ---- project files -----------------------------------------------------------------------
 
+    /**
+     * Saves the project (joint values and the active work object included) and removes the
+     * autosaves of both its old and its new name, so the next start offers no recovery.
+     */
     public void save(Path file) throws IOException {
+        Path old = projectFile;
         ProjectStore.write(model.snapshot(), file, true);
         projectFile = file;
         model.markSaved();
         ProjectStore.deleteAutosave(file);
+        if (old == null || !old.toAbsolutePath().equals(file.toAbsolutePath())) ProjectStore.deleteAutosave(old);
         log("Saved " + file);
     }
 
     /** Opens a project; on a damaged file throws and leaves the current cell untouched. */
     public void openProject(Path file) throws IOException {
         ProjectData d = ProjectStore.read(file);
+        load(d, file);
+        log("Opened " + file);
+    }
+
+    /** Starts a new, untitled project: the shipped IRB-2000 welding cell with no targets and no program. */
+    public void newProject() {
+        load(DefaultCell.irb2000Welding(), null);
+        log("New project");
+    }
+
+    private void load(ProjectData d, Path file) {
+        Path old = projectFile;
         model.load(d);
-        model.setQ(new double[d.robot().dof()]);
+        if (d.q() == null) model.setQ(startPose(d));
         model.markSaved();
         projectFile = file;
-        log("Opened " + file);
+        // The autosave of the project left behind holds changes the user chose to leave (the
+        // window asks first); kept, it would offer a false recovery at the next start.
+        if (!java.util.Objects.equals(old, file)) {
+            try {
+                ProjectStore.deleteAutosave(old);
+            } catch (IOException ignored) {
+                // a leftover autosave only means recovery is offered once more
+            }
+        }
     }
 
     // ---- shutdown ----------------------------------------------------------------------------

@@ -30,10 +30,12 @@ class CalibrationCliTest {
     @Test
     void calibrateCompensate_worldCampaignIrb2000_writesEveryOutput() throws Exception {
         // The campaign of a real robot drawn by the independent world simulator (geometric errors,
-        // unknown instrument pose, sigma 0.02 mm), one file with a train/validate set column.
+        // unknown instrument pose, sigma 0.02 mm, the measured point off the joint-6 axis at
+        // (80, 40, 150) mm on the flange), one file with a train/validate set column.
         Path cal = dir.resolve("cal"), file = dir.resolve("campaign.csv");
         var robot = org.robopro.models.RobotLibrary.shipped("irb2000");
-        var world = org.robopro.world.Scenario.baseRobot(robot, new java.util.Random(7), 1e-3, Math.toRadians(0.1));
+        var world = org.robopro.world.Scenario.baseRobot(robot, new java.util.Random(7), 1e-3, Math.toRadians(0.1),
+                new double[] {0.08, 0.04, 0.15});
         Files.writeString(file, org.robopro.world.Campaign.run(world, robot,
                 org.robopro.world.Campaign.Plan.defaults(7).withPoses(120, 80)).text());
         assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", file.toString(), "--out", cal.toString()), err.toString());
@@ -51,6 +53,7 @@ class CalibrationCliTest {
         assertTrue(html.contains("<svg") && html.contains("Parameters"));
         assertFalse(html.contains("<script") || html.contains("<link") || html.contains("src=\"http"), "report must be self-contained");
         assertTrue(Files.readString(cal.resolve("calibrated.robot.json")).contains("calibrated-from"));
+        assertTrue(Files.readString(cal.resolve("calibrated.robot.json")).contains("\"calibration-untrustworthy-parameters\": \"none\""));
 
         // Compensate a few targets with the calibrated model.
         Path targets = dir.resolve("targets.csv"), comp = dir.resolve("comp.csv");
@@ -75,8 +78,19 @@ class CalibrationCliTest {
                 "--validate", b.resolve("measurements.csv").toString(), "--out", cal.toString()), err.toString());
         JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
         assertTrue(s.get("validate_rms_mm").asDouble() > 10 * s.get("train_rms_mm").asDouble());
-        assertEquals(1, s.get("warnings").size(), s.get("warnings").toString());
-        String w = s.get("warnings").get(0).asText();
+        List<String> ws = new java.util.ArrayList<>();
+        s.get("warnings").forEach(x -> ws.add(x.asText()));
+        List<String> validation = ws.stream().filter(x -> x.startsWith("validation RMS")).toList();
+        assertEquals(1, validation.size(), ws.toString());
+        String w = validation.get(0);
+        // The simulated point sits on the joint-6 axis: the wrist offsets are named as not determined, and so marked.
+        assertTrue(ws.stream().anyMatch(x -> x.startsWith("j5.a is not determined") && x.contains("off the joint-6 axis")), ws.toString());
+        JsonNode untrusted = s.get("untrustworthy");
+        assertTrue(untrusted.toString().contains("\"j5.a\""), untrusted.toString());
+        for (JsonNode p : s.get("parameters"))
+            if (p.get("name").asText().equals("j5.a")) assertFalse(p.get("trustworthy").asBoolean());
+            else if (p.get("name").asText().equals("j2.offset")) assertTrue(p.get("trustworthy").asBoolean());
+        assertTrue(Files.readString(cal.resolve("calibrated.robot.json")).contains("j5.a"));
         assertTrue(w.contains("different instrument set-up or robot") && w.contains("seed 1") && w.contains("seed 2"), w);
         assertTrue(err.toString().contains("robopro: warning: validation RMS"), err.toString());
         assertTrue(Files.readString(cal.resolve("report.html")).contains("Warning:"));
@@ -89,5 +103,45 @@ class CalibrationCliTest {
         assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", m.toString(), "--out", dir.resolve("o").toString()));
         assertTrue(err.toString().contains("m.csv:4") && err.toString().contains("6 joints"), err.toString());
         assertFalse(Files.exists(dir.resolve("o")));
+    }
+
+    @Test
+    void calibrate_folds_crossValidationPerFoldAndOverallAgreesWithAnIndependentValidationFile() throws Exception {
+        Path sim = dir.resolve("sim"), cal = dir.resolve("cal");
+        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "150", "--validate-poses", "300", "--sigma", "0.02",
+                "--seed", "12", "--out", sim.toString()), err.toString());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
+                "--validate", sim.resolve("validate.csv").toString(), "--folds", "5", "--out", cal.toString()), err.toString());
+        JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
+        JsonNode per = s.get("cross_validation").get("per_fold");
+        assertEquals(5, per.size());
+        int heldOut = 0;
+        for (JsonNode f : per) {
+            heldOut += f.get("poses_held_out").asInt();
+            assertEquals(150, f.get("poses_held_out").asInt() + f.get("poses_train").asInt());
+        }
+        assertEquals(150, heldOut, "every training pose held out once");
+        JsonNode errors = s.get("errors");
+        double train = errors.get("train").get("calibrated").get("rms_mm").asDouble();
+        double cv = errors.get("cross_validation").get("calibrated").get("rms_mm").asDouble();
+        double val = errors.get("validate").get("calibrated").get("rms_mm").asDouble();
+        assertTrue(cv > train, "held-out errors exceed the in-sample ones: " + cv + " vs " + train);
+        assertTrue(Math.abs(cv - val) < 0.25 * val, "cross-validation estimates the error on unseen poses: " + cv + " vs " + val);
+        for (String k : List.of("n", "rms_mm", "mean_mm", "median_mm", "p95_mm", "max_mm"))
+            assertTrue(errors.get("validate").get("nominal").has(k), k);
+        JsonNode st = errors.get("validate").get("calibrated");
+        assertTrue(st.get("median_mm").asDouble() <= st.get("p95_mm").asDouble() && st.get("p95_mm").asDouble() <= st.get("max_mm").asDouble());
+        assertTrue(out.toString().contains("5-fold cross-validation") && out.toString().contains("p95"), out.toString());
+
+        List<String> rows = Files.readAllLines(cal.resolve("residuals.csv"));
+        assertEquals(1 + 150 + 300, rows.size());
+        assertTrue(rows.get(0).startsWith("pose,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm"), rows.get(0));
+        for (String row : rows.subList(1, rows.size())) {
+            String[] c = row.split(",", -1);
+            double dx = Double.parseDouble(c[5]), dy = Double.parseDouble(c[6]), dz = Double.parseDouble(c[7]), n = Double.parseDouble(c[8]);
+            assertEquals(n, Math.sqrt(dx * dx + dy * dy + dz * dz), 2e-6, row);
+            assertEquals(c[1].equals("train"), !c[2].isEmpty(), row);
+        }
+        assertTrue(Files.readString(cal.resolve("report.html")).contains("Cross-validation"));
     }
 }

@@ -21,8 +21,8 @@ import org.robopro.world.WorldRobot;
 /**
  * robopro diagnose end to end: a real IRB 2000 drawn by the independent world simulator with
  * 0.04° of lost motion on joint 1 (the output lagging its motor), measured in the nearest-next
- * order with directions recorded, written as one measurement file with a set column; files
- * written, effect named with its size, compensate uses the extended model.
+ * order with directions recorded, a validation campaign on the same robot; files written, effect
+ * named with its size, compensate uses the extended model; cross-validated folds.
  */
 class DiagnoseCommandTest {
     @TempDir Path dir;
@@ -30,16 +30,27 @@ class DiagnoseCommandTest {
 
     private int run(String... args) { return cli.run(args); }
 
-    @Test
-    void diagnose_worldLostMotionJoint1_writesReportJsonAndExtendedModel() throws Exception {
+    /**
+     * A real IRB 2000 of the world simulator with 0.04° of lost motion on joint 1, measured in the
+     * nearest-next order with directions recorded: {training file (150 poses), validation file
+     * (60 poses, a second campaign on the same robot)}.
+     */
+    private Path[] lostMotionCampaign() throws Exception {
         RobotDescription robot = RobotLibrary.shipped("irb2000");
         WorldRobot w = Scenario.baseRobot(robot, new Random(77), 1e-3, Math.toRadians(0.1))
                 .withErrors(List.of(new JointError.LostMotion(0, Math.toRadians(0.04))));
-        Campaign.Result c = Campaign.run(w, robot, Campaign.Plan.defaults(77).withPoses(150, 60));
-        Path train = dir.resolve("campaign.csv");
-        Files.writeString(train, c.text());
+        Path train = dir.resolve("train.csv"), val = dir.resolve("validate.csv");
+        Files.writeString(train, Campaign.run(w, robot, Campaign.Plan.defaults(77).withPoses(150, 0)).text());
+        Files.writeString(val, Campaign.run(w, robot, Campaign.Plan.defaults(78).withPoses(60, 0)).text());
+        return new Path[] {train, val};
+    }
+
+    @Test
+    void diagnose_worldLostMotionJoint1_writesReportJsonAndExtendedModel() throws Exception {
+        Path[] files = lostMotionCampaign();
+        Path train = files[0], val = files[1];
         Path outDir = System.getenv("ROBOPRO_KEEP_REPORT") != null ? Path.of(System.getenv("ROBOPRO_KEEP_REPORT")) : dir.resolve("out");
-        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(),
+        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--validate", val.toString(),
                 "--out", outDir.toString(), "--force"), cli.err());
         assertTrue(cli.out().contains("found backlash j1"), cli.out());
         JsonNode j = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json")));
@@ -66,5 +77,21 @@ class DiagnoseCommandTest {
     void diagnose_missingMeasurementFile_exitCode2() {
         assertEquals(2, run("diagnose", "--robot", "irb2000", "--measurements", dir.resolve("none.csv").toString(), "--out",
                 dir.resolve("o").toString()));
+    }
+
+    @Test
+    void diagnose_folds_effectFoundInEveryFoldAndHeldOutErrorsDrop() throws Exception {
+        Path[] files = lostMotionCampaign();
+        Path outDir = dir.resolve("cv");
+        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", files[0].toString(), "--folds", "3",
+                "--out", outDir.toString()), cli.err());
+        JsonNode c = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json"))).get("cross_validation");
+        assertEquals(3, c.get("per_fold").size());
+        int heldOut = 0;
+        for (JsonNode f : c.get("per_fold")) heldOut += f.get("poses_held_out").asInt();
+        assertEquals(150, heldOut);
+        assertEquals(3, c.get("effect_counts").path("backlash j1").asInt(), c.toString());
+        assertTrue(c.get("held_out_final_rms_mm").asDouble() < 0.8 * c.get("held_out_geometric_rms_mm").asDouble(), c.toString());
+        assertTrue(cli.out().contains("backlash j1 found in 3 of 3 folds"), cli.out());
     }
 }

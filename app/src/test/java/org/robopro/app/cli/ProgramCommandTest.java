@@ -38,4 +38,29 @@ class ProgramCommandTest {
                 "--out", comp.toString()));
         assertTrue(Files.readString(comp).contains("CONST robtarget pA:="));
     }
+
+    @Test
+    void check_ioProgramWithCellSignals_printsTimeLineAndWarnsOnUnsetInput(@TempDir Path dir) throws Exception {
+        Path project = dir.resolve("demo.json");
+        Files.writeString(project, PROJECT);
+        Path mod = dir.resolve("Demo.mod");
+        assertEquals(0, Main.run("program", "export", project.toString(), "--out", mod.toString()));
+        String text = Files.readString(mod).replace("  ENDPROC", "    SetDO doClamp, 1;\n    WaitDI diClamped, 1;\n    WaitDI diNever, 1;\n  ENDPROC");
+        Files.writeString(mod, text);
+        int line = (int) text.lines().takeWhile(l -> !l.contains("WaitDI diNever")).count() + 1;
+        Path cell = dir.resolve("c.cell.json");
+        Files.writeString(cell, "{\"format\": \"robopro-cell 1\", \"name\": \"c\", \"robot\": {\"ref\": \"irb2000\"},\n"
+                + " \"signals\": [{\"name\": \"doClamp\", \"type\": \"DO\"},\n"
+                + "  {\"name\": \"diClamped\", \"type\": \"DI\", \"follows\": \"doClamp\", \"delay_s\": 0.25},\n"
+                + "  {\"name\": \"diNever\", \"type\": \"DI\"}]}");
+        CliHarness cli = new CliHarness();
+        assertEquals(0, cli.run("program", "check", mod.toString(), "--robot", "irb2000", "--cell", cell.toString()), cli.err());
+        assertTrue(cli.out().contains("I/O time line"), cli.out());
+        assertTrue(cli.out().matches("(?s).*diClamped +I= 1.*".replace("I", "")), cli.out());
+        assertTrue(cli.out().contains("WARNING IO_WAIT") && cli.out().contains("Demo.mod:" + line + ":5"), cli.out());
+        Files.writeString(cell, Files.readString(cell).replace("\"DI\", \"follows", "\"DX\", \"follows"));
+        CliHarness bad = new CliHarness();
+        assertEquals(2, bad.run("program", "check", mod.toString(), "--robot", "irb2000", "--cell", cell.toString()));
+        assertTrue(bad.err().contains("c.cell.json:3"), bad.err());
+    }
 }

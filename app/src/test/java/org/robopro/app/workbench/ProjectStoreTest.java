@@ -13,6 +13,7 @@ import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.ProjectData;
 import org.robopro.app.workbench.model.Target;
+import org.robopro.app.workbench.model.WorkObject;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.Pose;
@@ -51,6 +52,50 @@ class ProjectStoreTest {
         assertEquals(d.program(), back.program());
         assertEquals("calib/irb2000-cal.robot.json", back.calibrationReference());
         assertEquals(ProjectStore.toJson(d), ProjectStore.toJson(back), "write(read(write(x))) is stable");
+    }
+
+    /** A project with every field set away from its default: each object kind, tool, work objects, each instruction type. */
+    static ProjectData everyField() {
+        ProjectData d = DefaultCell.irb2000Welding();
+        var objects = new java.util.ArrayList<>(d.objects());
+        objects.add(new org.robopro.app.workbench.model.CellObject("fixture7", "Clamp 7", org.robopro.app.workbench.model.CellObject.Kind.FIXTURE,
+                Pose.translation(0.9, -0.4, 0.7).times(Pose.rotZ(0.3)), new org.robopro.models.Vec3(0.3, 0.1, 0.12), null, 0x2F7D3A));
+        objects.add(new org.robopro.app.workbench.model.CellObject("cylinder2", "Drum", org.robopro.app.workbench.model.CellObject.Kind.CYLINDER,
+                Pose.translation(-0.5, 1.1, 0), new org.robopro.models.Vec3(0.4, 0.4, 0.9), null, 0x123456));
+        objects.add(new org.robopro.app.workbench.model.CellObject("mesh3", "bracket.stl", org.robopro.app.workbench.model.CellObject.Kind.MESH,
+                Pose.translation(1, 1, 0.2).times(Pose.rotZ(-1.1)), new org.robopro.models.Vec3(0.001, 0.001, 0.001), "meshes/bracket.stl", 0x9AA5B1));
+        var wobjs = new java.util.ArrayList<>(d.workObjects());
+        wobjs.add(new WorkObject("wobj_fixture", Pose.translation(1.1, -0.3, 0.75).times(Pose.rotZ(0.5))));
+        var tool = new org.robopro.app.workbench.model.Tool(d.tool().name(), Pose.translation(0.01, 0, 0.32).times(Pose.rotY(0.4)), 0.025, 0.28, 2.5);
+        List<Target> targets = List.of(
+                new Target("p10", Pose.translation(1.2, 0.1, 0.9).times(Pose.rotY(Math.PI)), new double[] {0, 0.4, 0.1, 0, 1.2, 0},
+                        new ConfData(0, 0, 0, 1)),
+                new Target("p20", Pose.translation(1.25, 0.0, 0.85).times(Pose.rotY(2.9)), new double[] {0.1, 0.45, 0.05, 0.1, 1.1, -0.2},
+                        new ConfData(0, -1, 1, 0), "wobj_fixture"),
+                new Target("p30", Pose.translation(1.3, -0.1, 0.85).times(Pose.rotY(3.0)), new double[] {-0.1, 0.5, 0.0, 0, 1.0, 0.3},
+                        new ConfData(-1, 0, 0, 1), "wobj_fixture"),
+                new Target("jHome", Pose.translation(1.0, 0, 1.2).times(Pose.rotY(Math.PI)), new double[] {0, 0.35, 0.17, 0, 0.87, 0},
+                        new ConfData(0, 0, 0, 0)));
+        List<Instruction> program = List.of(new Instruction(Instruction.Type.MOVEABSJ, "jHome", 1000, 0),
+                new Instruction(Instruction.Type.MOVEJ, "p10", 500, 50), new Instruction(Instruction.Type.MOVEL, "p20", 123.5, 0),
+                new Instruction(Instruction.Type.MOVEC, "p30", 20, 1.5, "p20"), new Instruction(Instruction.Type.MOVEABSJ, "jHome", 1000, 0));
+        return new ProjectData(d.robotRef(), d.robot(), Pose.translation(0.1, -0.05, 0.02).times(Pose.rotZ(0.2)), tool, objects, wobjs,
+                targets, program, "calib/irb2000-cal.robot.json", "wobj_fixture", new double[] {0.1, 0.2, 0.3, -0.4, 0.5, -0.6});
+    }
+
+    @Test
+    void writeRead_everyField_reopensExactlyAsSaved() throws Exception {
+        ProjectData d = everyField();
+        assertTrue(d.activeWorkObject().equals("wobj_fixture") && d.q() != null && d.calibrationReference() != null);
+        java.util.Set<org.robopro.app.workbench.model.CellObject.Kind> kinds = java.util.EnumSet.noneOf(org.robopro.app.workbench.model.CellObject.Kind.class);
+        d.objects().forEach(o -> kinds.add(o.kind()));
+        assertEquals(java.util.EnumSet.allOf(org.robopro.app.workbench.model.CellObject.Kind.class), kinds, "every object kind in the sample");
+        java.util.Set<Instruction.Type> types = java.util.EnumSet.noneOf(Instruction.Type.class);
+        d.program().forEach(i -> types.add(i.type()));
+        assertEquals(java.util.EnumSet.allOf(Instruction.Type.class), types, "every instruction type in the sample");
+        Path f = dir.resolve("every.robopro.json");
+        ProjectStore.write(d, f, false);
+        ProjectRoundTrip.assertSame(d, ProjectStore.read(f));
     }
 
     @Test

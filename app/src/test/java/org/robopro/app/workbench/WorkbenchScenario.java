@@ -166,6 +166,18 @@ public final class WorkbenchScenario {
             wb.placeObject(id, -0.2, -1.3, 0, Math.toRadians(30));
         });
         r.setProperty("objectsAfterAdd", String.valueOf(wb.model().objects().size()));
+        // Ctrl+Z takes the table back (one step: add and place were separate edits, so twice), Ctrl+Y redoes both.
+        WorkbenchWindow.onEdt(() -> {
+            r.setProperty("undoName", String.valueOf(frame.action("undo").getValue(javax.swing.Action.NAME)));
+            frame.action("undo").actionPerformed(null);
+            frame.action("undo").actionPerformed(null);
+        });
+        r.setProperty("objectsAfterUndo", String.valueOf(wb.model().objects().size()));
+        WorkbenchWindow.onEdt(() -> {
+            frame.action("redo").actionPerformed(null);
+            frame.action("redo").actionPerformed(null);
+        });
+        r.setProperty("objectsAfterRedo", String.valueOf(wb.model().objects().size()));
         win.screenshot(out.resolve("03-layout.png"));
         Path project = out.resolve("cell.robopro.json");
         Files.deleteIfExists(project);

@@ -146,6 +146,9 @@ class WorkbenchScenarioTest {
         assertEquals("4", r.getProperty("afterBrokenProgram"), "a broken import leaves the program as it was");
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
+        assertTrue(r.getProperty("undoName").startsWith("Undo Move Table"), r.getProperty("undoName"));
+        assertEquals("5", r.getProperty("objectsAfterUndo"), "Edit > Undo took the table back");
+        assertEquals("6", r.getProperty("objectsAfterRedo"), "Edit > Redo put it back");
         assertEquals("3", r.getProperty("reopenedTargets"));
         assertEquals("4", r.getProperty("reopenedProgram"));
         assertEquals("6", r.getProperty("reopenedObjects"));

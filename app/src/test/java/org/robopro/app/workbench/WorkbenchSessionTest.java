@@ -124,4 +124,135 @@ class WorkbenchSessionTest {
         assertEquals(1, seen.size());
         assertTrue(seen.get(0).startsWith("Added Part"), seen.toString());
     }
+
+    // ---- undo and redo -------------------------------------------------------------------
+
+    @Test
+    void undoRedo_addTable_removesAndRestoresIt() {
+        int n = s.model().objects().size();
+        CellObject t = s.addObject(CellObject.Kind.TABLE);
+        assertEquals("Add " + t.name(), s.model().history().undoLabel().orElseThrow());
+        assertTrue(s.undo());
+        assertEquals(n, s.model().objects().size());
+        assertTrue(s.model().object(t.id()).isEmpty());
+        assertEquals("Add " + t.name(), s.model().history().redoLabel().orElseThrow());
+        assertTrue(s.redo());
+        assertEquals(t, s.model().object(t.id()).orElseThrow());
+        assertFalse(s.redo(), "nothing more to redo");
+    }
+
+    @Test
+    void undo_teachAndMoves_stepByStepInReverseOrder() {
+        Target a = s.teach();
+        s.addMove(Instruction.Type.MOVEJ, a.name(), 200, 10);
+        s.addMove(Instruction.Type.MOVEL, a.name(), 100, 0);
+        assertEquals(2, s.model().program().size());
+        s.undo();
+        assertEquals(1, s.model().program().size());
+        assertEquals(Instruction.Type.MOVEJ, s.model().program().get(0).type());
+        s.undo();
+        assertTrue(s.model().program().isEmpty());
+        assertTrue(s.model().target(a.name()).isPresent());
+        s.undo();
+        assertTrue(s.model().target(a.name()).isEmpty(), "the taught target is taken back too");
+        // A new edit after undo drops the redo branch.
+        s.addObject(CellObject.Kind.PART);
+        assertFalse(s.redo());
+    }
+
+    @Test
+    void undo_deletedTargetWithItsMoves_bringsBothBack() {
+        Target a = s.teach();
+        s.addMove(Instruction.Type.MOVEJ, a.name(), 200, 10);
+        s.model().select("target:" + a.name());
+        s.deleteSelection();
+        assertTrue(s.model().program().isEmpty());
+        s.undo();
+        assertTrue(s.model().target(a.name()).isPresent());
+        assertEquals(1, s.model().program().size(), "one undo restores the target and the move that used it");
+    }
+
+    @Test
+    void placeObject_repeatedQuickly_isOneUndoStep() {
+        CellObject t = s.addObject(CellObject.Kind.TABLE);
+        Pose start = s.model().object(t.id()).orElseThrow().worldTobject();
+        for (int i = 1; i <= 10; i++) s.placeObject(t.id(), 1 + 0.01 * i, -1, 0, 0); // a spinner held down
+        s.undo();
+        assertEquals(0, start.distanceTo(s.model().object(t.id()).orElseThrow().worldTobject()), 1e-12);
+        s.undo();
+        assertTrue(s.model().object(t.id()).isEmpty());
+    }
+
+    @Test
+    void undo_editsOutsideTheSession_toolRobotProgram_areUndoableToo() {
+        var tool = s.model().tool();
+        s.model().setTool(new org.robopro.app.workbench.model.Tool("t2", Pose.translation(0, 0, 0.3), 0.02, 0.2, 1.5));
+        assertEquals("Edit tool", s.model().history().undoLabel().orElseThrow());
+        s.undo();
+        assertEquals(tool, s.model().tool());
+        var robot = s.model().robot();
+        s.model().setRobot("puma560", org.robopro.models.RobotLibrary.shipped("puma560"));
+        assertEquals("Change robot", s.model().history().undoLabel().orElseThrow());
+        s.undo();
+        assertEquals(robot, s.model().robot());
+        assertEquals(robot.dof(), s.model().q().length);
+    }
+
+    @Test
+    void undo_backToTheSavedState_isNotDirty() throws Exception {
+        s.save(dir.resolve("u.robopro.json"));
+        s.addObject(CellObject.Kind.TABLE);
+        assertTrue(s.model().dirty());
+        s.undo();
+        assertFalse(s.model().dirty(), "the cell is as saved again");
+        s.redo();
+        assertTrue(s.model().dirty());
+    }
+
+    @Test
+    void jogging_isNotAnEdit() {
+        s.jogJointDeg(0, 20);
+        assertFalse(s.undo(), "nothing to undo after jogging");
+    }
+
+    @Test
+    void openProject_forgetsTheHistory() throws Exception {
+        s.addObject(CellObject.Kind.TABLE);
+        Path p = dir.resolve("h.robopro.json");
+        s.save(p);
+        s.openProject(p);
+        assertFalse(s.undo());
+    }
+
+    // ---- autosave ------------------------------------------------------------------------
+
+    @Test
+    void save_underAName_removesTheUntitledAutosave() throws Exception {
+        Path untitled = ProjectStore.autosavePath(null);
+        Files.createDirectories(untitled.getParent());
+        s.addObject(CellObject.Kind.TABLE);
+        ProjectStore.write(s.model().snapshot(), untitled, true); // as the autosave timer would
+        assertTrue(ProjectStore.recoverable(null).isPresent());
+        s.save(dir.resolve("named.robopro.json"));
+        assertFalse(Files.exists(untitled), "no false recovery offer at the next start");
+        assertTrue(ProjectStore.recoverable(dir.resolve("named.robopro.json")).isEmpty());
+    }
+
+    // ---- project round trip ----------------------------------------------------------------
+
+    @Test
+    void saveOpen_teachInWobjAndRobotPose_reopenAsSaved() throws Exception {
+        String wobj = s.model().workObjects().get(0).name();
+        s.model().setActiveWorkObject(wobj);
+        s.jogJointDeg(0, 12.5);
+        s.jogJointDeg(4, 70);
+        double[] q = s.model().q();
+        Path p = dir.resolve("rt.robopro.json");
+        s.save(p);
+        try (WorkbenchSession other = WorkbenchSession.open(p)) {
+            assertEquals(wobj, other.model().activeWorkObject());
+            assertArrayEquals(q, other.model().q(), 1e-12);
+            ProjectRoundTrip.assertSame(s.model().snapshot(), other.model().snapshot());
+        }
+    }
 }

@@ -74,6 +74,7 @@ public final class Diagnoser {
     static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     static final double MAX_STRAIN = 2e-3;
+    static final double MAX_DRIFT_PER_K = 1e-4, MAX_DRIFT_PER_H = 1e-3; // m/K, m/h
 
     private static final Logger LOG = LoggerFactory.getLogger(Diagnoser.class);
 
@@ -302,7 +303,7 @@ public final class Diagnoser {
         return new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
-                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource);
+                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, List.of(), List.of());
     }
 
     private static boolean allFinite(List<Measurement> rows, java.util.function.ToDoubleFunction<Measurement> f) {
@@ -368,7 +369,7 @@ public final class Diagnoser {
 
         List<EffectBlock> blocks(List<Effect> es) {
             List<EffectBlock> b = new ArrayList<>();
-            for (Effect e : es) b.add(e.block());
+            for (Effect e : es) b.add(e.block(model));
             return b;
         }
 
@@ -531,38 +532,52 @@ public final class Diagnoser {
         }
     }
 
-    /** A probe block: Δθ_j = v_j for every joint and a strain v_dof, to get ∂residual/∂θ and ∂residual/∂ε. */
+    /**
+     * A probe block: q_out,j += v_j for every drive (θ = C q_out), a strain v_dof and a base-frame
+     * translation v_dof+1..3 of the point, to get ∂residual/∂q_j, ∂residual/∂ε and ∂residual/∂p.
+     */
     static final class Probe implements EffectBlock {
         private final int dof;
-        Probe(int dof) { this.dof = dof; }
+        private final double[][] c;
+        Probe(KinematicModel model) { this.dof = model.dof(); this.c = model.couplingMatrix(); }
+        private int size() { return dof + 4; }
         @Override public String name() { return "probe"; }
         @Override public List<String> parameterNames() {
             List<String> n = new ArrayList<>();
-            for (int j = 0; j < dof; j++) n.add("dtheta" + (j + 1));
+            for (int j = 0; j < dof; j++) n.add("dq" + (j + 1));
             n.add("strain");
+            n.add("dx");
+            n.add("dy");
+            n.add("dz");
             return n;
         }
         @Override public List<String> units() {
             List<String> n = new ArrayList<>();
             for (int j = 0; j < dof; j++) n.add("rad");
             n.add("1");
+            n.add("m");
+            n.add("m");
+            n.add("m");
             return n;
         }
-        @Override public double[] initialValues() { return new double[dof + 1]; }
+        @Override public double[] initialValues() { return new double[size()]; }
         @Override public void jointDelta(double[] v, Measurement row, double[] dTheta, double[] dThetaDv) {
-            for (int j = 0; j < dof; j++) dTheta[j] += v[j];
+            int k = size();
+            for (int i = 0; i < dof; i++) for (int j = 0; j < dof; j++) dTheta[i] += c[i][j] * v[j];
             if (dThetaDv != null) {
                 Arrays.fill(dThetaDv, 0);
-                for (int j = 0; j < dof; j++) dThetaDv[j * (dof + 1) + j] = 1;
+                for (int i = 0; i < dof; i++) for (int j = 0; j < dof; j++) dThetaDv[i * k + j] = c[i][j];
             }
         }
         @Override public void positionDelta(double[] v, Measurement row, double[] pb, double[] dp, double[] dpDv, double[] dpDpoint) {
+            int k = size();
             if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += v[dof];
             for (int a = 0; a < 3; a++) {
-                dp[a] += v[dof] * pb[a];
+                dp[a] += v[dof] * pb[a] + v[dof + 1 + a];
                 if (dpDv != null) {
-                    for (int c = 0; c < dof; c++) dpDv[a * (dof + 1) + c] = 0;
-                    dpDv[a * (dof + 1) + dof] = pb[a];
+                    for (int col = 0; col < k; col++) dpDv[a * k + col] = 0;
+                    dpDv[a * k + dof] = pb[a];
+                    dpDv[a * k + dof + 1 + a] = 1;
                 }
             }
         }
@@ -572,8 +587,9 @@ public final class Diagnoser {
     static final class Candidate {
         Effect effect;
         int keptColumns, df1, df2;
-        double ratio, f, p = 1, bic, rssReduction, pressBefore, pressAfter, threshold = Double.NaN;
+        double ratio, f, p = 1, bic, rssReduction, pressBefore, pressAfter, threshold = Double.NaN, drss;
         double[] estimate, sd;
+        double[] basis, coef; // orthonormal basis of its kept projected columns (m x df1) and the residual's coordinates
         boolean[] absorbedMask;
         List<String> absorbed = new ArrayList<>();
         boolean plausible;
@@ -585,14 +601,16 @@ public final class Diagnoser {
         }
     }
 
-    /** Tests candidates against one fit. */
+    /** Tests candidates (blocks of signature columns) against one fit. */
     static final class Tester {
         final Work w;
         final Fit fit;
         final int m, rpp, dof, rank;
         final double[] u;        // m x rank orthonormal basis of the model Jacobian's span
-        final double[] dTheta;   // m x dof: ∂r/∂θ_j (weighted)
+        final double[] dQ;       // m x dof: ∂r/∂q_j (drive outputs, weighted)
         final double[] dStrain;  // m: ∂r/∂ε
+        final double[] dTrans;   // m x 3: ∂r/∂p (base-frame translation of the point)
+        final double[][] pointBase; // predicted point per pose, base frame
         final double[] rPerp;    // residual with any part in span(U) removed
         final double rss0, press0;
         final double[][] h0;     // leverage block per pose (rpp x rpp, row-major)
@@ -608,22 +626,32 @@ public final class Diagnoser {
             for (int c = 0; c < fit.nf; c++) all.add(c);
             u = basis(fit.jac, m, fit.nf, all);
             rank = u.length / m;
-            // Joint-angle and strain sensitivities through the identification chain.
+            // Drive, strain and translation sensitivities through the identification chain.
             List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
-            bl.add(new Probe(dof));
-            double[] full = Arrays.copyOf(fit.full, fit.full.length + dof + 1);
+            bl.add(new Probe(w.model));
+            int np = dof + 4;
+            double[] full = Arrays.copyOf(fit.full, fit.full.length + np);
             IdentificationProblem pp = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
             pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
             int nFull = pp.fullSize();
             double[] jf = new double[m * nFull];
             double[] rr = new double[m];
             pp.evaluateFull(full, rr, jf);
-            int off = nFull - dof - 1;
-            dTheta = new double[m * dof];
+            int off = nFull - np;
+            dQ = new double[m * dof];
             dStrain = new double[m];
+            dTrans = new double[m * 3];
             for (int i = 0; i < m; i++) {
-                for (int j = 0; j < dof; j++) dTheta[i * dof + j] = jf[i * nFull + off + j];
+                for (int j = 0; j < dof; j++) dQ[i * dof + j] = jf[i * nFull + off + j];
                 dStrain[i] = jf[i * nFull + off + dof];
+                for (int a = 0; a < 3; a++) dTrans[i * 3 + a] = jf[i * nFull + off + dof + 1 + a];
+            }
+            KinematicModel geo = fit.problem.modelOf(fit.full);
+            org.robopro.models.Vec3 tp = fit.problem.toolOf(fit.full).position();
+            pointBase = new double[w.rows.size()][];
+            for (int i = 0; i < pointBase.length; i++) {
+                org.robopro.models.Vec3 p = geo.flange(w.rows.get(i).q()).apply(tp);
+                pointBase[i] = new double[] {p.x(), p.y(), p.z()};
             }
             rPerp = project(fit.r);
             double s = 0;
@@ -668,26 +696,52 @@ public final class Diagnoser {
             return total;
         }
 
-        /** Tests one effect with the given per-row conditions. */
-        Candidate test(Effect e, List<PoseConditions> conds) {
-            Candidate c = new Candidate();
-            c.effect = e;
+        /** The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose conditions. */
+        double[] signature(Effect e, List<PoseConditions> conds) {
             int k = e.size();
             double[] s = new double[m * k];
-            double[] g = new double[k];
             int poses = m / rpp;
+            Effect.Target t = e.target();
+            double[] g = new double[t == Effect.Target.POSITION ? 3 * k : k];
             for (int i = 0; i < poses; i++) {
-                e.regressor(w.rows.get(i).q(), conds.get(i), g);
+                if (t == Effect.Target.POSITION) e.positionRegressor(w.rows.get(i).q(), conds.get(i), pointBase[i], g);
+                else e.regressor(w.rows.get(i).q(), conds.get(i), g);
                 for (int a = 0; a < rpp; a++) {
                     int row = i * rpp + a;
-                    double d = e.isStrain() ? dStrain[row] : dTheta[row * dof + e.joint()];
-                    for (int col = 0; col < k; col++) s[row * k + col] = Double.isFinite(g[col]) ? d * g[col] : 0;
+                    for (int col = 0; col < k; col++) {
+                        double v;
+                        if (t == Effect.Target.POSITION)
+                            v = dTrans[row * 3] * g[col] + dTrans[row * 3 + 1] * g[k + col] + dTrans[row * 3 + 2] * g[2 * k + col];
+                        else v = (t == Effect.Target.STRAIN ? dStrain[row] : dQ[row * dof + e.joint()]) * g[col];
+                        s[row * k + col] = Double.isFinite(v) ? v : 0;
+                    }
                 }
             }
-            // Projection: what the current model cannot absorb, column by column.
-            List<Integer> kept = new ArrayList<>();
+            return s;
+        }
+
+        /** Tests one effect with the given per-row conditions. */
+        Candidate test(Effect e, List<PoseConditions> conds) {
+            Candidate c = testColumns(signature(e, conds), e.size(), e.parameterNames(), null, 0);
+            c.effect = e;
+            if (c.keptColumns > 0) plausibility(c);
+            return c;
+        }
+
+        /**
+         * Nested test of k signature columns (m x k, row-major) against the current model's span
+         * plus {@code extra} (m x nExtra orthonormal columns already in the model, or null):
+         * each column projected out of both; a column whose remaining norm (after the columns kept
+         * before it, Gram–Schmidt) is below the absorbed ratio of its own norm is dropped. F-test,
+         * least-squares estimate (v = −R⁻¹Qᵀr), σ, BIC and PRESS.
+         */
+        Candidate testColumns(double[] s, int k, List<String> names, double[] extra, int nExtra) {
+            Candidate c = new Candidate();
             c.absorbedMask = new boolean[k];
-            double[][] sp = new double[k][];
+            double[][] qs = new double[k][];
+            int[] keptIdx = new int[k];
+            double[] rr = new double[k * k]; // R, row-major upper triangular over kept columns
+            int q = 0;
             double minKept = Double.POSITIVE_INFINITY, maxRatio = 0;
             for (int col = 0; col < k; col++) {
                 double[] x = new double[m];
@@ -695,61 +749,83 @@ public final class Diagnoser {
                 for (int i = 0; i < m; i++) { x[i] = s[i * k + col]; n0 += x[i] * x[i]; }
                 double ratio = 0;
                 if (n0 > 0) {
-                    sp[col] = project(x);
+                    x = project(x);
+                    if (extra != null) x = projectOut(extra, nExtra, m, x);
+                    for (int t = 0; t < q; t++) { // Gram–Schmidt against the kept columns, twice for stability
+                        double d = 0;
+                        for (int i = 0; i < m; i++) d += qs[t][i] * x[i];
+                        rr[t * k + q] = d;
+                        for (int i = 0; i < m; i++) x[i] -= d * qs[t][i];
+                    }
+                    for (int t = 0; t < q; t++) {
+                        double d = 0;
+                        for (int i = 0; i < m; i++) d += qs[t][i] * x[i];
+                        rr[t * k + q] += d;
+                        for (int i = 0; i < m; i++) x[i] -= d * qs[t][i];
+                    }
                     double n1 = 0;
-                    for (double v : sp[col]) n1 += v * v;
+                    for (double v : x) n1 += v * v;
                     ratio = Math.sqrt(n1 / n0);
+                    if (ratio >= w.o.absorbedRatio()) {
+                        double nn = Math.sqrt(n1);
+                        for (int i = 0; i < m; i++) x[i] /= nn;
+                        qs[q] = x;
+                        rr[q * k + q] = nn;
+                        keptIdx[q] = col;
+                        q++;
+                        minKept = Math.min(minKept, ratio);
+                    }
                 }
                 maxRatio = Math.max(maxRatio, ratio);
-                if (ratio >= w.o.absorbedRatio()) { kept.add(col); minKept = Math.min(minKept, ratio); }
-                else { c.absorbed.add(e.parameterNames().get(col)); c.absorbedMask[col] = true; }
+                if (q == 0 || keptIdx[q - 1] != col) { c.absorbed.add(names.get(col)); c.absorbedMask[col] = true; }
             }
-            c.keptColumns = kept.size();
-            c.ratio = kept.isEmpty() ? maxRatio : minKept;
-            if (kept.isEmpty()) return c;
-            // Orthonormal basis of the kept projected columns and the least-squares estimate.
-            int kk = kept.size();
-            DMatrixRMaj a = new DMatrixRMaj(m, kk);
-            for (int i = 0; i < m; i++) for (int col = 0; col < kk; col++) a.data[i * kk + col] = sp[kept.get(col)][i];
-            SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(m, kk, true, true, true);
-            if (!svd.decompose(a)) throw new IllegalStateException("SVD failed for " + e.label());
-            double[] sv = svd.getSingularValues();
-            DMatrixRMaj us = svd.getU(null, false), vs = svd.getV(null, false);
-            double smax = 0;
-            for (int i = 0; i < svd.numberOfSingularValues(); i++) smax = Math.max(smax, sv[i]);
-            List<Integer> rk = new ArrayList<>();
-            for (int i = 0; i < svd.numberOfSingularValues(); i++) if (sv[i] > 1e-8 * smax) rk.add(i);
-            int q = rk.size();
+            c.keptColumns = q;
+            c.ratio = q == 0 ? maxRatio : minKept;
+            if (q == 0) return c;
             double[] qm = new double[m * q];
             double[] coef = new double[q];
-            for (int i = 0; i < m; i++)
-                for (int t = 0; t < q; t++) {
-                    qm[i * q + t] = us.get(i, rk.get(t));
-                    coef[t] += qm[i * q + t] * rPerp[i];
+            for (int t = 0; t < q; t++)
+                for (int i = 0; i < m; i++) {
+                    qm[i * q + t] = qs[t][i];
+                    coef[t] += qs[t][i] * rPerp[i];
                 }
             double drss = 0;
             for (double v : coef) drss += v * v;
-            double[] est = new double[k];
-            for (int col = 0; col < kk; col++) {
-                double v = 0;
-                for (int t = 0; t < q; t++) v += vs.get(col, rk.get(t)) * coef[t] / sv[rk.get(t)];
-                est[kept.get(col)] = -v; // residuals are predicted - measured: r + S v = 0
+            // R v = −coef (back substitution); residuals are predicted − measured: r + S v = 0
+            double[] vk = new double[q];
+            for (int a = q - 1; a >= 0; a--) {
+                double x = -coef[a];
+                for (int b = a + 1; b < q; b++) x -= rr[a * k + b] * vk[b];
+                vk[a] = x / rr[a * k + a];
             }
-            c.estimate = est;
+            // R⁻¹ for the covariance
+            double[] rinv = new double[q * q];
+            for (int col = 0; col < q; col++) {
+                for (int a = q - 1; a >= 0; a--) {
+                    double x = a == col ? 1 : 0;
+                    for (int b = a + 1; b < q; b++) x -= rr[a * k + b] * rinv[b * q + col];
+                    rinv[a * q + col] = x / rr[a * k + a];
+                }
+            }
             c.df1 = q;
-            c.df2 = m - rank - q;
+            c.df2 = m - rank - nExtra - q;
             double rss1 = Math.max(rss0 - drss, 1e-300);
             double s2 = rss1 / Math.max(1, c.df2);
+            c.estimate = new double[k];
             c.sd = new double[k];
-            for (int col = 0; col < kk; col++) {
+            for (int a = 0; a < q; a++) {
+                c.estimate[keptIdx[a]] = vk[a];
                 double var = 0;
-                for (int t = 0; t < q; t++) { double x = vs.get(col, rk.get(t)) / sv[rk.get(t)]; var += x * x; }
-                c.sd[kept.get(col)] = Math.sqrt(s2 * var);
+                for (int b = 0; b < q; b++) var += rinv[a * q + b] * rinv[a * q + b];
+                c.sd[keptIdx[a]] = Math.sqrt(s2 * var);
             }
             c.f = (drss / q) / (rss1 / Math.max(1, c.df2));
             c.p = Stats.fUpperTail(c.f, q, c.df2);
             c.bic = m * Math.log(rss1 / m) + q * Math.log(m);
             c.rssReduction = rss0 > 0 ? drss / rss0 : 0;
+            c.drss = drss;
+            c.basis = qm;
+            c.coef = coef;
             double[] e1 = rPerp.clone();
             for (int i = 0; i < m; i++) {
                 double v = 0;
@@ -758,7 +834,6 @@ public final class Diagnoser {
             }
             c.pressBefore = press0;
             c.pressAfter = press(e1, qm, q);
-            plausibility(c);
             return c;
         }
     }
@@ -817,6 +892,13 @@ public final class Diagnoser {
         Effect e = c.effect;
         switch (e.kind()) {
             case COMPLIANCE -> {
+                if (e.perMass()) {
+                    boolean ok = true;
+                    for (int i = 0; i < v.length; i++) if (!overlaps(v[i], sd[i], 0, 3 / MIN_STIFFNESS)) ok = false;
+                    c.plausible = ok;
+                    c.plausibility = "every mass's compliance coefficient positive and below " + String.format(Locale.ROOT, "%.0e", 3 / MIN_STIFFNESS);
+                    return;
+                }
                 double k = 1 / v[0];
                 c.plausible = overlaps(v[0], sd[0], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS);
                 c.plausibility = String.format(Locale.ROOT, "stiffness %.3g N·m/rad within %.0e..%.0e (positive)", k,
@@ -825,7 +907,7 @@ public final class Diagnoser {
             case PERIODIC -> {
                 double max = 0;
                 boolean ok = true;
-                for (int h = 0; h < Effect.HARMONICS; h++) {
+                for (int h = 0; h < v.length / 2; h++) {
                     double amp = Math.hypot(v[2 * h], v[2 * h + 1]);
                     max = Math.max(max, amp);
                     if (amp - 3 * Math.max(sd[2 * h], sd[2 * h + 1]) >= MAX_PERIODIC_RAD) ok = false;
@@ -847,6 +929,23 @@ public final class Diagnoser {
                     c.plausible = overlaps(v[0], sd[0], 0, MAX_ALPHA);
                     c.plausibility = String.format(Locale.ROOT, "expansion coefficient %.3g /K positive and < %.0e /K", v[0], MAX_ALPHA);
                 }
+            }
+            case THERMAL_LINK -> {
+                boolean ok = true;
+                for (int i = 0; i < v.length; i++) if (!c.absorbedMask[i] && !overlaps(v[i], sd[i], 0, MAX_ALPHA)) ok = false;
+                c.plausible = ok;
+                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_ALPHA);
+            }
+            case DRIFT -> {
+                double n = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), sn = Math.max(sd[0], Math.max(sd[1], sd[2]));
+                double max = e.usesTimeProxy() ? MAX_DRIFT_PER_H : MAX_DRIFT_PER_K;
+                c.plausible = overlaps(n, sn, 0, max);
+                c.plausibility = String.format(Locale.ROOT, "drift %.3g mm per %s < %.2g", n * 1e3, e.usesTimeProxy() ? "hour" : "K", max * 1e3);
+            }
+            case SMOOTH -> {
+                double r = Words.rmsSmooth(e, v);
+                c.plausible = r < MAX_PERIODIC_RAD * 2;
+                c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
             case SCALE -> {
                 c.plausible = overlaps(v[0], sd[0], -MAX_SCALE, MAX_SCALE);

@@ -26,6 +26,8 @@ import org.robopro.calibration.identification.CalibrationResult;
  * @param alpha            family-wise false-positive rate of the test
  * @param elapsedMs        wall time
  * @param directions       where the approach directions came from (recorded, inferred from the measuring order, none)
+ * @param located          structures found in the residuals by the locate scan, named or not
+ * @param warnings         what the report must say first (error left above the noise, what cannot be told)
  */
 public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM, double geometricTrainRmsM,
                         double geometricValidateRmsM, List<Finding> effects, double finalTrainRmsM,
@@ -33,7 +35,7 @@ public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM
                         List<Finding> implausible, List<String> recommendations, List<String> notes,
                         ExtendedModel model, org.robopro.kinematics.Pose finalFlangeTtool,
                         org.robopro.kinematics.Pose finalInstrumentTbase, int candidatesTested, double alpha, double elapsedMs,
-                        Directions.Source directions) {
+                        Directions.Source directions, List<Located> located, List<String> warnings) {
 
     /**
      * One effect with its evidence.
@@ -87,4 +89,24 @@ public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM
 
     /** A candidate the geometry absorbs: its name and how much of its signature is left (‖P⊥S‖/‖S‖). */
     public record NotIdentifiable(String effect, List<Integer> joints, String label, double ratio, String reason) { }
+
+    /**
+     * A structure the locate scan found in the residuals (after the geometric fit, or what is
+     * left after the effects), whether or not a physical effect explains it.
+     *
+     * @param variable    the variable it follows ("joint 2 angle", "direction of joint 1", "temperature", ...)
+     * @param shape       its shape in words ("7 cycles per turn of joint 2", "smooth, 7-knot spline")
+     * @param sizeM       RMS of its contribution at the measured point over the poses, m
+     * @param share       share of the unexplained sum of squares it removes
+     * @param f           F statistic of its test
+     * @param df1         its degrees of freedom
+     * @param pValue      p-value
+     * @param threshold   the Holm threshold it beat
+     * @param stage       "geometric" (in the geometric fit's residuals) or "final" (left after the effects)
+     * @param explainedBy the named effect that explains it, or null
+     * @param words       in plain words
+     * @param plot        evidence: the structure's partial residual against its variable
+     */
+    public record Located(String variable, String shape, double sizeM, double share, double f, int df1, double pValue,
+                          double threshold, String stage, String explainedBy, String words, Plot plot) { }
 }

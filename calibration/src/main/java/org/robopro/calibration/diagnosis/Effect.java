@@ -6,47 +6,72 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeSet;
 import org.robopro.calibration.JointEffect;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.identification.EffectBlock;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.kinematics.KinematicModel;
+import org.robopro.kinematics.Pose;
 import org.robopro.models.EffectDescription;
 import org.robopro.models.InputException;
+import org.robopro.models.Vec3;
 
 /**
- * One candidate non-geometric effect on one joint (docs/diagnosis.md). Every effect is linear in
- * its parameters v: it perturbs the model angle of one target joint, Δθ_target = g(q, c) · v, or
- * (thermal expansion) every length by the strain ε = g(c) · v about the base origin, with g the
- * effect's regressor at controller values q under pose conditions c:
+ * One candidate non-geometric effect (docs/diagnosis.md). Every effect is linear in its
+ * parameters v and acts in one of three places, with g its regressor at controller values q
+ * under pose conditions c:
  * <ul>
- * <li>{@code joint-compliance}: g = τ_j(q, payload), the gravity torque ({@link GravityTorques}); v = compliance, rad/(N·m);</li>
- * <li>{@code gear-periodic}: g = (sin q_j, cos q_j, sin 2q_j, cos 2q_j, sin 3q_j, cos 3q_j); v rad. The gear turns
- *     with the axis's own (controller) angle q_j, which differs from θ_j only on coupled axes;</li>
- * <li>{@code backlash}: g = −dir_j / 2; v = lost motion b ≥ 0, rad. A driven output lags its motor-side
- *     encoder: after a motion in direction dir the gear flanks touch on the far side of the play, so
- *     the output angle is q − (b/2)·dir (the standard dead-band / lost-motion model of gear backlash:
- *     Nordin &amp; Gutman, "Controlling mechanical systems with backlash — a survey", Automatica 38 (2002)
- *     1633–1649, the dead-zone/hysteresis output x_out = x_in − (b/2)·sign(ẋ_in) once the play is taken up;
- *     ISO 230-2 calls the same quantity "reversal value"). To reach a target the command must lead by
- *     +(b/2)·dir, which the compensation does by inverting this model;</li>
- * <li>{@code thermal-expansion}: g = T − T0 (v = α, 1/K), or from time as a warm-up proxy
- *     g = 1 − exp(−t/τ) (v = strain at saturation);</li>
- * <li>{@code joint-scale}: g = q_j (θ_j = (1+ε) q_j); v = ε;</li>
- * <li>{@code joint-coupling}: θ_target += κ q_source; g = q_source; v = κ.</li>
+ * <li><b>on a drive</b>: the output of drive j differs from what its motor-side encoder (the
+ *     controller's value q_j) says, q_out,j = q_j + g(q, c)·v, before the controller's coupling
+ *     θ = C q_out (a parallel-arm linkage passes a drive's error on to every model angle it feeds):
+ *     <ul>
+ *     <li>{@code joint-compliance}: g = (Cᵀτ)_j, the gravity torque on drive j (virtual work through the
+ *         linkage; {@link GravityTorques}); v = compliance, rad/(N·m). With the mass model re-estimated, one
+ *         column per mass of the robot file (and the payload), each with its own coefficient;</li>
+ *     <li>{@code gear-periodic}: g = (sin h q_j, cos h q_j) for each harmonic h of the effect (1–3 for a
+ *         single-stage gear, any h the locate scan finds for multi-stage and cycloidal reducers); v rad;</li>
+ *     <li>{@code backlash}: g = −dir_j / 2; v = lost motion b ≥ 0, rad. A driven output lags its motor-side
+ *         encoder: after a motion in direction dir the gear flanks touch on the far side of the play, so the
+ *         output is q − (b/2)·dir (the dead-band / lost-motion model of gear backlash: Nordin &amp; Gutman,
+ *         "Controlling mechanical systems with backlash — a survey", Automatica 38 (2002) 1633–1649;
+ *         ISO 230-2 calls b the reversal value). To reach a target the command leads by +(b/2)·dir,
+ *         which the compensation does by inverting this model;</li>
+ *     <li>{@code joint-scale}: g = q_j; v = ε (gear ratio); {@code joint-coupling}: g = q_source; v = κ;</li>
+ *     <li>{@code joint-smooth-error}: g = cubic B-spline basis of q_j over the joint's range
+ *         ({@link #SMOOTH_BASIS} functions, uniform knots): an angle-dependent error none of the physical
+ *         families explains (the honest fallback);</li>
+ *     </ul></li>
+ * <li><b>on every length</b> ({@code thermal-expansion}): ε = g·v about the base origin, g = T − T0
+ *     (v = α, 1/K), or from time as a warm-up proxy g = 1 − exp(−t/τ);</li>
+ * <li><b>on the measured point</b>, an additive Δp in base coordinates: {@code thermal-link}, each link
+ *     grows by its own α_i, Δp = (T − T0) Σ α_i s_i(q) with s_i the link's vector from one joint frame to
+ *     the next (the last to the measured point); {@code instrument-drift}, Δp = x·d with x = T − T0 or
+ *     the hours since the start (the instrument, or the base, moves).</li>
  * </ul>
- * The same object is the simulator's truth ({@link #truth}) and the identification's parameter
- * block ({@link #block}). Immutable and thread-safe.
+ * The same object is the identification's parameter block ({@link #block}) and an extended
+ * model's term ({@link ExtendedModel}). Immutable and thread-safe.
  */
 public final class Effect {
-    /** The effect vocabulary (JSON names of issue 4). */
+    /** The effect vocabulary (JSON names) with a title in words. */
     public enum Kind {
-        COMPLIANCE("joint-compliance"), PERIODIC("gear-periodic"), BACKLASH("backlash"),
-        THERMAL("thermal-expansion"), SCALE("joint-scale"), COUPLING("joint-coupling");
+        COMPLIANCE("joint-compliance", "Joint compliance (the joint gives way under gravity)"),
+        PERIODIC("gear-periodic", "Periodic transmission error (gear or encoder)"),
+        BACKLASH("backlash", "Backlash (lost motion, the output lags the motor)"),
+        THERMAL("thermal-expansion", "Thermal expansion (uniform)"),
+        THERMAL_LINK("thermal-link", "Thermal growth link by link"),
+        DRIFT("instrument-drift", "Drift of the instrument or base"),
+        SCALE("joint-scale", "Joint scale error (gear ratio or encoder)"),
+        COUPLING("joint-coupling", "Joint coupling"),
+        SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family");
 
         public final String json;
+        public final String title;
 
-        Kind(String json) { this.json = json; }
+        Kind(String json, String title) {
+            this.json = json;
+            this.title = title;
+        }
 
         public static Kind of(String name) {
             for (Kind k : values()) if (k.json.equals(name)) return k;
@@ -54,121 +79,295 @@ public final class Effect {
         }
     }
 
-    /** Harmonics of a gear-periodic effect. */
+    /** Where an effect acts. */
+    public enum Target { DRIVE, STRAIN, POSITION }
+
+    /** Harmonics of a default (single-stage) gear-periodic effect. */
     public static final int HARMONICS = 3;
+    private static final int[] LOW = {1, 2, 3};
+    /** Basis functions of the smooth fallback. */
+    public static final int SMOOTH_BASIS = 7;
+    /** Links shorter than this do not get their own thermal coefficient, m. */
+    static final double MIN_LINK_M = 0.05;
 
     private final Kind kind;
-    private final int joint, source;        // 0-based; joint = -1 for thermal
+    private final int joint, source;        // 0-based; -1 when none
     private final GravityTorques gravity;    // compliance only
-    private final double t0C, tauS;          // thermal: reference temperature, or time constant (time proxy)
+    private final boolean perMass;           // compliance: one coefficient per mass
+    private final double t0C, tauS;          // thermal / drift: reference temperature, or time constant (NaN)
+    private final int[] harmonics;           // periodic
+    private final double lo, hi;             // smooth: range of q_j
+    private final KinematicModel model;      // thermal-link: the frames
+    private final int[] links;               // thermal-link: frame indices i whose vector s_i (frame i -> i+1) grows
 
-    private Effect(Kind kind, int joint, int source, GravityTorques gravity, double t0C, double tauS) {
+    private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
+                   int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
         this.kind = kind;
         this.joint = joint;
         this.source = source;
         this.gravity = gravity;
+        this.perMass = perMass;
         this.t0C = t0C;
         this.tauS = tauS;
+        this.harmonics = harmonics;
+        this.lo = lo;
+        this.hi = hi;
+        this.model = model;
+        this.links = links;
     }
 
-    public static Effect compliance(int joint, GravityTorques g) { return new Effect(Kind.COMPLIANCE, joint, -1, g, Double.NaN, Double.NaN); }
-    public static Effect periodic(int joint) { return new Effect(Kind.PERIODIC, joint, -1, null, Double.NaN, Double.NaN); }
-    public static Effect backlash(int joint) { return new Effect(Kind.BACKLASH, joint, -1, null, Double.NaN, Double.NaN); }
-    public static Effect scale(int joint) { return new Effect(Kind.SCALE, joint, -1, null, Double.NaN, Double.NaN); }
-    /** θ_target += κ q_source. */
-    public static Effect coupling(int target, int source) { return new Effect(Kind.COUPLING, target, source, null, Double.NaN, Double.NaN); }
+    private static Effect drive(Kind k, int joint) {
+        return new Effect(k, joint, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
+
+    public static Effect compliance(int joint, GravityTorques g) {
+        return new Effect(Kind.COMPLIANCE, joint, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
+
+    /** Compliance with every mass of the file (and the payload) scaled by its own factor: the mass model re-estimated. */
+    public static Effect complianceRemassed(int joint, GravityTorques g) {
+        return new Effect(Kind.COMPLIANCE, joint, -1, g, true, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
+
+    /** Harmonics 1–3 of joint {@code joint}'s angle. */
+    public static Effect periodic(int joint) { return periodic(joint, LOW); }
+
+    /** The given harmonics (≥ 1, sorted, distinct) of joint {@code joint}'s angle. */
+    public static Effect periodic(int joint, int[] harmonics) {
+        int[] h = new TreeSet<>(Arrays.stream(harmonics).boxed().toList()).stream().mapToInt(Integer::intValue).toArray();
+        if (h.length == 0 || h[0] < 1) throw new IllegalArgumentException("harmonics " + Arrays.toString(harmonics));
+        return new Effect(Kind.PERIODIC, joint, -1, null, false, Double.NaN, Double.NaN, h, Double.NaN, Double.NaN, null, null);
+    }
+
+    public static Effect backlash(int joint) { return drive(Kind.BACKLASH, joint); }
+    public static Effect scale(int joint) { return drive(Kind.SCALE, joint); }
+    /** q_out,target += κ q_source. */
+    public static Effect coupling(int target, int source) {
+        return new Effect(Kind.COUPLING, target, source, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
+    /** Smooth error of drive {@code joint} over [lo, hi] (its range). */
+    public static Effect smooth(int joint, double lo, double hi) {
+        if (!(hi > lo)) throw new IllegalArgumentException("smooth error range " + lo + ".." + hi);
+        return new Effect(Kind.SMOOTH, joint, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null);
+    }
     /** ε = α (T − t0C). */
-    public static Effect thermal(double t0C) { return new Effect(Kind.THERMAL, -1, -1, null, t0C, Double.NaN); }
+    public static Effect thermal(double t0C) {
+        return new Effect(Kind.THERMAL, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
     /** ε = s (1 − exp(−t/τ)): time since the start as a proxy for the warm-up. */
-    public static Effect thermalFromTime(double tauS) { return new Effect(Kind.THERMAL, -1, -1, null, Double.NaN, tauS); }
+    public static Effect thermalFromTime(double tauS) {
+        return new Effect(Kind.THERMAL, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null);
+    }
+    /** Each link of {@code model} at least {@link #MIN_LINK_M} long (and the flange-to-point vector) grows by its own α (T − t0C). */
+    public static Effect thermalLinks(KinematicModel model, double t0C) {
+        Pose[] f = model.linkFrames(new double[model.dof()]);
+        List<Integer> ls = new ArrayList<>();
+        for (int i = 0; i + 1 < f.length; i++) if (f[i + 1].position().minus(f[i].position()).norm() >= MIN_LINK_M) ls.add(i);
+        ls.add(f.length - 1); // flange to measured point
+        return new Effect(Kind.THERMAL_LINK, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, model,
+                ls.stream().mapToInt(Integer::intValue).toArray());
+    }
+    /** Δp = (T − t0C) d, base coordinates (the instrument or the base moves with temperature). */
+    public static Effect driftWithTemperature(double t0C) {
+        return new Effect(Kind.DRIFT, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
+    /** Δp = (t / 1 h) d, base coordinates (the instrument or the base moves with time). */
+    public static Effect driftWithTime() {
+        return new Effect(Kind.DRIFT, -1, -1, null, false, Double.NaN, 3600, null, Double.NaN, Double.NaN, null, null);
+    }
 
     public Kind kind() { return kind; }
-    /** Target joint, 0-based (-1 for thermal expansion). */
+    public Target target() {
+        return switch (kind) {
+            case THERMAL -> Target.STRAIN;
+            case THERMAL_LINK, DRIFT -> Target.POSITION;
+            default -> Target.DRIVE;
+        };
+    }
+    /** Target joint (drive), 0-based (-1 for effects on lengths or the point). */
     public int joint() { return joint; }
     /** Source joint of a coupling, 0-based (-1 otherwise). */
     public int source() { return source; }
-    public boolean isStrain() { return kind == Kind.THERMAL; }
-    public boolean usesTimeProxy() { return kind == Kind.THERMAL && Double.isNaN(t0C); }
+    public boolean isStrain() { return target() == Target.STRAIN; }
+    public boolean usesTimeProxy() { return (kind == Kind.THERMAL || kind == Kind.DRIFT) && Double.isNaN(t0C); }
     public double t0C() { return t0C; }
     public double tauS() { return tauS; }
     public GravityTorques gravity() { return gravity; }
+    public boolean perMass() { return perMass; }
+    public int[] harmonics() { return harmonics == null ? null : harmonics.clone(); }
+    public double rangeLo() { return lo; }
+    public double rangeHi() { return hi; }
+    /** Whether this is the default harmonics 1-3 periodic effect. */
+    public boolean lowHarmonics() { return kind == Kind.PERIODIC && Arrays.equals(harmonics, LOW); }
 
-    /** Joints in the JSON sense (1-based): target, then source for a coupling; empty for thermal expansion. */
+    /** Joints in the JSON sense (1-based): target, then source for a coupling; empty for effects on lengths or the point. */
     public List<Integer> joints1() {
-        if (kind == Kind.THERMAL) return List.of();
+        if (joint < 0) return List.of();
         if (kind == Kind.COUPLING) return List.of(joint + 1, source + 1);
         return List.of(joint + 1);
     }
 
-    public int size() { return kind == Kind.PERIODIC ? 2 * HARMONICS : 1; }
+    public int size() {
+        return switch (kind) {
+            case PERIODIC -> 2 * harmonics.length;
+            case COMPLIANCE -> perMass ? gravity.massCount() : 1;
+            case SMOOTH -> SMOOTH_BASIS;
+            case THERMAL_LINK -> links.length;
+            case DRIFT -> 3;
+            default -> 1;
+        };
+    }
 
     public List<String> parameterNames() {
-        return switch (kind) {
-            case COMPLIANCE -> List.of("c");
-            case PERIODIC -> List.of("a1", "b1", "a2", "b2", "a3", "b3");
-            case BACKLASH -> List.of("b");
-            case THERMAL -> List.of(usesTimeProxy() ? "strain" : "alpha");
-            case SCALE -> List.of("eps");
-            case COUPLING -> List.of("kappa");
-        };
+        List<String> out = new ArrayList<>();
+        switch (kind) {
+            case COMPLIANCE -> {
+                if (!perMass) out.add("c");
+                else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
+            }
+            case PERIODIC -> { for (int h : harmonics) { out.add("a" + h); out.add("b" + h); } }
+            case BACKLASH -> out.add("b");
+            case THERMAL -> out.add(usesTimeProxy() ? "strain" : "alpha");
+            case THERMAL_LINK -> { for (int i : links) out.add("alpha_" + linkName(i)); }
+            case DRIFT -> { out.add("dx"); out.add("dy"); out.add("dz"); }
+            case SCALE -> out.add("eps");
+            case COUPLING -> out.add("kappa");
+            case SMOOTH -> { for (int k = 1; k <= SMOOTH_BASIS; k++) out.add("s" + k); }
+        }
+        return out;
+    }
+
+    private String linkName(int i) { return i == model.dof() + 1 ? "tool" : "link" + i; }
+
+    /** The link of a thermal-link parameter in words. */
+    String linkWords(int col) {
+        int i = links[col];
+        return col == links.length - 1 ? "flange to measured point" : i == 0 ? "base to joint 1" : "link " + i + " (joint " + i + " to " + (i + 1 > model.dof() ? "flange" : "joint " + (i + 1)) + ")";
     }
 
     public List<String> units() {
-        return switch (kind) {
-            case COMPLIANCE -> List.of("rad/(N·m)");
-            case PERIODIC -> List.of("rad", "rad", "rad", "rad", "rad", "rad");
-            case BACKLASH -> List.of("rad");
-            case THERMAL -> List.of(usesTimeProxy() ? "1" : "1/K");
-            case SCALE, COUPLING -> List.of("1");
+        String u = switch (kind) {
+            case COMPLIANCE -> "rad/(N·m)";
+            case PERIODIC, BACKLASH, SMOOTH -> "rad";
+            case THERMAL -> usesTimeProxy() ? "1" : "1/K";
+            case THERMAL_LINK -> "1/K";
+            case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
+            case SCALE, COUPLING -> "1";
         };
+        return java.util.Collections.nCopies(size(), u);
     }
 
-    /** A short label: "backlash j2", "joint-coupling j3<-j2", "thermal-expansion". */
+    /** A short label: "backlash j2", "joint-coupling j3<-j2", "gear-periodic j1 (h 1,7,23)", "thermal-expansion". */
     public String label() {
         return switch (kind) {
             case THERMAL -> kind.json + (usesTimeProxy() ? String.format(Locale.ROOT, " (time proxy, tau %.0f s)", tauS) : "");
+            case DRIFT -> kind.json + (usesTimeProxy() ? " (with time)" : " (with temperature)");
+            case THERMAL_LINK -> kind.json;
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
+            case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
+                    Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
+            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (perMass ? " (masses re-estimated)" : "");
             default -> kind.json + " j" + (joint + 1);
         };
     }
 
     /** Block / parameter prefix without spaces. */
-    public String id() { return label().replace(' ', '.').replace("<-", "from").replace("(", "").replace(")", "").replace(",", ""); }
+    public String id() {
+        return label().replace(' ', '.').replace("<-", "from").replace("(", "").replace(")", "").replace(",", "_");
+    }
 
     /** Whether the conditions this effect needs are present on every row. */
     public boolean testableOn(List<Measurement> rows) {
         for (Measurement m : rows) {
             switch (kind) {
                 case BACKLASH -> { if (m.directions() == null) return false; }
-                case THERMAL -> { if (Double.isNaN(usesTimeProxy() ? m.timeS() : m.tempC())) return false; }
+                case THERMAL, THERMAL_LINK, DRIFT -> { if (Double.isNaN(usesTimeProxy() ? m.timeS() : m.tempC())) return false; }
                 default -> { }
             }
         }
         return true;
     }
 
-    /** The regressor g (length {@link #size()}) at controller values q under conditions c. */
+    /** The condition variable x of a thermal or drift effect (0 when unknown: unknown conditions contribute nothing). */
+    private double conditionX(PoseConditions c) {
+        double x = switch (kind) {
+            case THERMAL -> usesTimeProxy() ? 1 - Math.exp(-c.timeS() / tauS) : c.tempC() - t0C;
+            case DRIFT -> usesTimeProxy() ? c.timeS() / tauS : c.tempC() - t0C;
+            default -> c.tempC() - t0C;
+        };
+        return Double.isFinite(x) ? x : 0;
+    }
+
+    /**
+     * The regressor g (length {@link #size()}) of a drive or strain effect at controller values q
+     * under conditions c: Δq_joint = g·v, or ε = g·v.
+     */
     public void regressor(double[] q, PoseConditions c, double[] g) {
         switch (kind) {
-            case COMPLIANCE -> g[0] = gravity.torques(q, c.payloadKg())[joint];
+            case COMPLIANCE -> {
+                if (!perMass) g[0] = gravity.driveTorques(q, c.payloadKg())[joint];
+                else gravity.driveTorquesByMass(q, c.payloadKg(), joint, g);
+            }
             case PERIODIC -> {
-                for (int h = 1; h <= HARMONICS; h++) {
-                    g[2 * h - 2] = Math.sin(h * q[joint]);
-                    g[2 * h - 1] = Math.cos(h * q[joint]);
+                for (int i = 0; i < harmonics.length; i++) {
+                    g[2 * i] = Math.sin(harmonics[i] * q[joint]);
+                    g[2 * i + 1] = Math.cos(harmonics[i] * q[joint]);
                 }
             }
-            case BACKLASH -> g[0] = -0.5 * c.direction(joint); // the output lags: θ = q − (b/2)·dir
-            case THERMAL -> {
-                // Unknown conditions (a file without the column) contribute nothing.
-                double x = usesTimeProxy() ? 1 - Math.exp(-c.timeS() / tauS) : c.tempC() - t0C;
-                g[0] = Double.isFinite(x) ? x : 0;
-            }
+            case BACKLASH -> g[0] = -0.5 * c.direction(joint); // the output lags: q_out = q − (b/2)·dir
+            case THERMAL -> g[0] = conditionX(c);
             case SCALE -> g[0] = q[joint];
             case COUPLING -> g[0] = q[source];
+            case SMOOTH -> bspline(q[joint], lo, hi, g);
+            case THERMAL_LINK, DRIFT -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
-    /** The effect's value (Δθ_target in rad, or the strain) at q, c. */
+    /**
+     * The regressor of an effect on the measured point: Δp (base, m) = G v with G 3 x size,
+     * row-major, at q under c with the predicted point {@code pointBase}.
+     */
+    public void positionRegressor(double[] q, PoseConditions c, double[] pointBase, double[] g3) {
+        double x = conditionX(c);
+        Arrays.fill(g3, 0);
+        int k = size();
+        switch (kind) {
+            case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
+            case THERMAL_LINK -> {
+                Pose[] f = model.linkFrames(q);
+                for (int col = 0; col < k; col++) {
+                    int i = links[col];
+                    Vec3 from = f[i].position();
+                    Vec3 to = i + 1 < f.length ? f[i + 1].position() : new Vec3(pointBase[0], pointBase[1], pointBase[2]);
+                    Vec3 s = to.minus(from);
+                    g3[col] = x * s.x();
+                    g3[k + col] = x * s.y();
+                    g3[2 * k + col] = x * s.z();
+                }
+            }
+            default -> throw new IllegalStateException(label() + " does not act on the measured point");
+        }
+    }
+
+    /** Uniform cubic B-spline basis (n = g.length functions) on [lo, hi] at x (clamped to the range). */
+    static void bspline(double x, double lo, double hi, double[] g) {
+        int n = g.length;
+        double h = (hi - lo) / (n - 3);
+        double xc = Math.min(hi, Math.max(lo, x));
+        for (int i = 0; i < n; i++) {
+            double u = (xc - (lo + (i - 3) * h)) / h;
+            double v;
+            if (u < 0 || u >= 4) v = 0;
+            else if (u < 1) v = u * u * u / 6;
+            else if (u < 2) v = (-3 * u * u * u + 12 * u * u - 12 * u + 4) / 6;
+            else if (u < 3) v = (3 * u * u * u - 24 * u * u + 60 * u - 44) / 6;
+            else v = (4 - u) * (4 - u) * (4 - u) / 6;
+            g[i] = v;
+        }
+        if (xc == hi) { Arrays.fill(g, 0); g[n - 3] = 1 / 6.0; g[n - 2] = 4 / 6.0; g[n - 1] = 1 / 6.0; }
+    }
+
+    /** The drive or strain value (Δq_joint in rad, or the strain) at q, c. */
     public double value(double[] v, double[] q, PoseConditions c) {
         double[] g = new double[size()];
         regressor(q, c, g);
@@ -177,16 +376,33 @@ public final class Effect {
         return s;
     }
 
-    /** This effect with fixed values, as the simulator's truth or an extended model's term. */
+    /** The point displacement (base, m) of an effect on the measured point. */
+    public Vec3 displacement(double[] v, double[] q, PoseConditions c, Vec3 pointBase) {
+        int k = size();
+        double[] g = new double[3 * k];
+        positionRegressor(q, c, new double[] {pointBase.x(), pointBase.y(), pointBase.z()}, g);
+        double[] d = new double[3];
+        for (int a = 0; a < 3; a++) for (int i = 0; i < k; i++) d[a] += g[a * k + i] * v[i];
+        return new Vec3(d[0], d[1], d[2]);
+    }
+
+    /**
+     * This effect with fixed values for the campaign simulator's true robot (drive and strain
+     * effects; that simulator has no effects on the measured point).
+     */
     public JointEffect truth(double[] values) {
         double[] v = values.clone();
         if (v.length != size()) throw new IllegalArgumentException(label() + " needs " + size() + " values, got " + v.length);
+        if (target() == Target.POSITION) throw new UnsupportedOperationException(label() + ": the campaign simulator has no point effects");
         Effect self = this;
         return new JointEffect() {
             @Override public String name() { return kind.json; }
 
-            @Override public void addDeltaTheta(KinematicModel model, double[] q, PoseConditions c, double[] dThetaOut) {
-                if (!isStrain()) dThetaOut[joint] += self.value(v, q, c);
+            @Override public void addDeltaTheta(KinematicModel m, double[] q, PoseConditions c, double[] dThetaOut) {
+                if (isStrain()) return;
+                double dq = self.value(v, q, c);
+                double[][] cm = m.couplingMatrix();
+                for (int i = 0; i < dThetaOut.length; i++) dThetaOut[i] += cm[i][joint] * dq; // θ = C q_out
             }
 
             @Override public double lengthStrain(PoseConditions c) {
@@ -197,10 +413,14 @@ public final class Effect {
         };
     }
 
-    /** This effect as an identification parameter block starting at zero. */
-    public EffectBlock block() {
+    /** This effect as an identification parameter block on {@code m} (its coupling matrix), starting at zero. */
+    public EffectBlock block(KinematicModel m) {
         Effect self = this;
         int k = size();
+        int dof = m.dof();
+        double[] cCol = new double[dof];
+        if (joint >= 0) { double[][] cm = m.couplingMatrix(); for (int i = 0; i < dof; i++) cCol[i] = cm[i][joint]; }
+        Target t = target();
         return new EffectBlock() {
             @Override public String name() { return id(); }
             @Override public List<String> parameterNames() { return self.parameterNames(); }
@@ -209,39 +429,60 @@ public final class Effect {
 
             @Override public void jointDelta(double[] values, Measurement row, double[] dTheta, double[] dThetaDv) {
                 if (dThetaDv != null) Arrays.fill(dThetaDv, 0);
-                if (isStrain()) return;
+                if (t != Target.DRIVE) return;
                 double[] g = new double[k];
                 regressor(row.q(), PoseConditions.of(row), g);
                 double s = 0;
                 for (int i = 0; i < k; i++) s += g[i] * values[i];
-                dTheta[joint] += s;
-                if (dThetaDv != null) System.arraycopy(g, 0, dThetaDv, joint * k, k);
+                for (int i = 0; i < dof; i++) {
+                    if (cCol[i] == 0) continue;
+                    dTheta[i] += cCol[i] * s;
+                    if (dThetaDv != null) for (int col = 0; col < k; col++) dThetaDv[i * k + col] = cCol[i] * g[col];
+                }
             }
 
             @Override public void positionDelta(double[] values, Measurement row, double[] pointBase, double[] dp, double[] dpDv,
                                                 double[] dpDpoint) {
                 if (dpDv != null) Arrays.fill(dpDv, 0);
-                if (!isStrain()) return;
-                double[] g = new double[1];
-                regressor(row.q(), PoseConditions.of(row), g);
-                double e = g[0] * values[0];
-                if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += e; // ∂(ε p)/∂p = ε I
-                for (int a = 0; a < 3; a++) {
-                    dp[a] += e * pointBase[a];
-                    if (dpDv != null) dpDv[a] = g[0] * pointBase[a];
+                if (t == Target.DRIVE) return;
+                PoseConditions c = PoseConditions.of(row);
+                if (t == Target.STRAIN) {
+                    double[] g = new double[1];
+                    regressor(row.q(), c, g);
+                    double e = g[0] * values[0];
+                    if (dpDpoint != null) for (int a = 0; a < 3; a++) dpDpoint[4 * a] += e; // ∂(ε p)/∂p = ε I
+                    for (int a = 0; a < 3; a++) {
+                        dp[a] += e * pointBase[a];
+                        if (dpDv != null) dpDv[a] = g[0] * pointBase[a];
+                    }
+                    return;
+                }
+                double[] g3 = new double[3 * k];
+                positionRegressor(row.q(), c, pointBase, g3);
+                for (int a = 0; a < 3; a++)
+                    for (int col = 0; col < k; col++) {
+                        dp[a] += g3[a * k + col] * values[col];
+                        if (dpDv != null) dpDv[a * k + col] = g3[a * k + col];
+                    }
+                if (kind == Kind.THERMAL_LINK && dpDpoint != null) {
+                    // the last vector ends at the point: ∂/∂p of x α_tool (p − o_flange) = x α_tool I
+                    double x = conditionX(c) * values[k - 1];
+                    for (int a = 0; a < 3; a++) dpDpoint[4 * a] += x;
                 }
             }
         };
     }
 
-    /** The robot-file form (docs/robot-file.md "effects"): parameters SI keyed by name, plus t0_c or tau_s. */
+    /** The robot-file form (docs/robot-file.md "effects"): parameters SI keyed by name, plus the effect's constants. */
     public EffectDescription describe(double[] values) {
         Map<String, Double> p = new LinkedHashMap<>();
         List<String> names = parameterNames();
         for (int i = 0; i < names.size(); i++) p.put(names.get(i), values[i]);
-        if (kind == Kind.THERMAL) {
-            if (usesTimeProxy()) p.put("tau_s", tauS);
-            else p.put("t0_c", t0C);
+        switch (kind) {
+            case THERMAL, DRIFT -> { if (usesTimeProxy()) p.put("tau_s", tauS); else p.put("t0_c", t0C); }
+            case THERMAL_LINK -> p.put("t0_c", t0C);
+            case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
+            default -> { }
         }
         return new EffectDescription(kind.json, joints1(), p);
     }
@@ -251,24 +492,33 @@ public final class Effect {
         Kind kind = Kind.of(d.effect());
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
-        int need = switch (kind) { case THERMAL -> 0; case COUPLING -> 2; default -> 1; };
+        int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT -> 0; case COUPLING -> 2; default -> 1; };
         if (js.size() != need)
             throw new InputException(file, 0, 0, "effects.joints", d.effect() + " needs " + need + " joints, got " + js);
         for (int j : js)
             if (j < 1 || j > model.dof())
                 throw new InputException(file, 0, 0, "effects.joints", "joint " + j + " outside 1.." + model.dof());
+        Map<String, Double> ps = d.parameters();
         Effect e = switch (kind) {
             case COMPLIANCE -> {
                 if (gravity == null)
                     throw new InputException(file, 0, 0, "mass_model", "joint-compliance needs the robot's mass_model");
-                yield compliance(js.get(0) - 1, gravity);
+                yield ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
-            case PERIODIC -> periodic(js.get(0) - 1);
+            case PERIODIC -> {
+                List<Integer> hs = new ArrayList<>();
+                for (String key : ps.keySet())
+                    if (key.matches("a\\d+")) hs.add(Integer.parseInt(key.substring(1)));
+                if (hs.isEmpty()) throw new InputException(file, 0, 0, "effects.gear-periodic.parameters_si", "no harmonic a1, a2, ...");
+                yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
+            }
             case BACKLASH -> backlash(js.get(0) - 1);
             case SCALE -> scale(js.get(0) - 1);
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);
-            case THERMAL -> d.parameters().containsKey("tau_s") ? thermalFromTime(d.parameters().get("tau_s"))
-                    : thermal(require(d, "t0_c", file));
+            case SMOOTH -> smooth(js.get(0) - 1, require(d, "q_min", file), require(d, "q_max", file));
+            case THERMAL -> ps.containsKey("tau_s") ? thermalFromTime(ps.get("tau_s")) : thermal(require(d, "t0_c", file));
+            case THERMAL_LINK -> thermalLinks(model, require(d, "t0_c", file));
+            case DRIFT -> ps.containsKey("tau_s") ? driftWithTime() : driftWithTemperature(require(d, "t0_c", file));
         };
         List<String> names = e.parameterNames();
         double[] v = new double[names.size()];
@@ -291,7 +541,7 @@ public final class Effect {
 
     @Override public String toString() { return label(); }
 
-    /** Every effect to test on a robot: the kinds for each joint (coupling for every ordered pair), thermal once. */
+    /** The catalogue's candidates on a robot: the kinds for each joint (coupling for every ordered pair), thermal once. */
     public static List<Effect> candidates(KinematicModel model, GravityTorques gravity, double t0C, double[] timeTaus) {
         List<Effect> out = new ArrayList<>();
         int n = model.dof();

@@ -41,11 +41,17 @@ import org.robopro.kinematics.KinematicModel;
  * @param value  the VALUE numbers as written, or null: drawn
  */
 public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value) {
+    /** The kinds this simulator can inject. */
+    public static final java.util.Set<Effect.Kind> INJECTABLE = java.util.EnumSet.of(Effect.Kind.COMPLIANCE, Effect.Kind.PERIODIC,
+            Effect.Kind.BACKLASH, Effect.Kind.THERMAL, Effect.Kind.SCALE, Effect.Kind.COUPLING);
+
     /** Reference temperature of a simulated thermal expansion, °C (the warm-up starts there). */
     public static final double AMBIENT_C = 20;
 
     public EffectSpec {
         if (kind == null) throw new IllegalArgumentException("effect kind is null");
+        if (!INJECTABLE.contains(kind))
+            throw new IllegalArgumentException(kind.json + " cannot be injected by this simulator (the world module simulates it)");
         value = value == null ? null : value.clone();
         if (kind == Effect.Kind.THERMAL ? joint != 0 : joint < 1)
             throw new IllegalArgumentException(kind.json + ": joint " + joint + (kind == Effect.Kind.THERMAL ? " (takes none)" : " (1-based)"));
@@ -103,7 +109,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
         int colon = s.indexOf(':');
         String name = (colon < 0 ? s : s.substring(0, colon)).strip();
         Effect.Kind kind = Effect.Kind.of(name);
-        if (kind == null) throw new IllegalArgumentException("effect '" + text + "': unknown effect '" + name + "'; known: " + names()
+        if (kind == null || !INJECTABLE.contains(kind)) throw new IllegalArgumentException("effect '" + text + "': unknown effect '" + name + "'; known: " + names()
                 + " (NAME[:JOINT[<-SOURCE]][=VALUE])");
         int joint = switch (kind) {
             case THERMAL -> 0;
@@ -163,7 +169,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
 
     /** The effect names, comma separated. */
     public static String names() {
-        return String.join(", ", Arrays.stream(Effect.Kind.values()).map(k -> k.json).toList());
+        return String.join(", ", INJECTABLE.stream().map(k -> k.json).toList());
     }
 
     /** Canonical text, parseable by {@link #parse}: "joint-coupling:3<-2", "backlash:2=0.03". */
@@ -199,6 +205,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
             case THERMAL -> Effect.thermal(AMBIENT_C);
             case SCALE -> Effect.scale(joint - 1);
             case COUPLING -> Effect.coupling(joint - 1, source - 1);
+            default -> throw new IllegalArgumentException(kind.json + " cannot be injected");
         };
     }
 
@@ -216,6 +223,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
             case THERMAL -> new double[] {value != null ? value[0] : uniform(rng, 12e-6, 23e-6)};
             case SCALE -> new double[] {value != null ? value[0] : signed(rng, 1e-4, 3e-4)};
             case COUPLING -> new double[] {value != null ? value[0] : signed(rng, 3e-4, 10e-4)};
+            default -> throw new IllegalArgumentException(kind.json + " cannot be injected");
         };
         return new Effect.Term(e, v);
     }
@@ -276,6 +284,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
             case PERIODIC -> "deg";
             case THERMAL -> "1/K";
             case SCALE, COUPLING -> "1";
+            default -> "";
         };
     }
 

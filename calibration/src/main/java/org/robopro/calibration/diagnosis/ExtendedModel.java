@@ -7,13 +7,14 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.EffectDescription;
 import org.robopro.models.RobotDescription;
+import org.robopro.models.Vec3;
 
 /**
  * A robot model with its non-geometric effects: the (calibrated) geometry plus identified
  * {@link Effect} terms. Forward kinematics takes the controller values q and the conditions of
- * the motion (approach directions, temperature, payload, time): the effects' Δθ are added to
- * the model angles, then every length is stretched by the thermal strain about the base origin
- * (the same rule as the campaign simulator's true robot). Written to and read from the robot
+ * the motion (approach directions, temperature, payload, time): the drive effects are added to
+ * q (before the coupling θ = C q), every length is stretched by the thermal strain about the base
+ * origin, and the effects on the measured point are added. Written to and read from the robot
  * file's {@code effects} section. Immutable and thread-safe.
  */
 public final class ExtendedModel {
@@ -41,17 +42,12 @@ public final class ExtendedModel {
     public List<Effect.Term> terms() { return terms; }
     public boolean hasEffects() { return !terms.isEmpty(); }
 
-    /** The controller values the geometry really sees at q under conditions c. */
+    /** The drive outputs the geometry really sees at controller values q under conditions c (before the coupling). */
     public double[] effectiveQ(double[] q, PoseConditions c) {
-        if (terms.isEmpty()) return q.clone();
-        double[] theta = geometry.theta(q);
-        boolean any = false;
-        for (Effect.Term t : terms) {
-            if (t.effect().isStrain()) continue;
-            theta[t.effect().joint()] += t.effect().value(t.values(), q, c);
-            any = true;
-        }
-        return any ? geometry.q(theta) : q.clone();
+        double[] out = q.clone();
+        for (Effect.Term t : terms)
+            if (t.effect().target() == Effect.Target.DRIVE) out[t.effect().joint()] += t.effect().value(t.values(), q, c);
+        return out;
     }
 
     /** Relative length change at conditions c. */
@@ -63,16 +59,22 @@ public final class ExtendedModel {
 
     /** baseTflange at q under conditions c. */
     public Pose flange(double[] q, PoseConditions c) {
-        Pose p = geometry.flange(effectiveQ(q, c));
-        double s = strain(c);
-        return s == 0 ? p : Pose.translation(p.position().times(s)).times(p);
+        return tool(q, Pose.IDENTITY, c);
     }
 
-    /** baseTtool at q under conditions c (the tool point is stretched with the arm). */
+    /**
+     * baseTtool at q under conditions c: the geometry at the drive outputs, every length stretched
+     * by the thermal strain about the base origin (the tool point too), then the effects on the
+     * measured point added (link growth, drift).
+     */
     public Pose tool(double[] q, Pose flangeTtool, PoseConditions c) {
         Pose t = geometry.flange(effectiveQ(q, c)).times(flangeTtool);
         double s = strain(c);
-        return s == 0 ? t : Pose.translation(t.position().times(s)).times(t);
+        Vec3 d = t.position().times(s);
+        Vec3 p = t.position();
+        for (Effect.Term term : terms)
+            if (term.effect().target() == Effect.Target.POSITION) d = d.plus(term.effect().displacement(term.values(), q, c, p));
+        return d.norm() == 0 ? t : Pose.translation(d).times(t);
     }
 
     /** The robot file form: the geometry's description with the effects section filled in. */

@@ -83,4 +83,50 @@ public final class GravityTorques {
         }
         return tau;
     }
+
+    /**
+     * Gravity torque on each drive: τ_q = Cᵀ τ_θ with C the coupling (θ = C q), by virtual work
+     * (δW = τ_θ·δθ = τ_θ·C δq), the torque a drive's gear and its stiffness see.
+     */
+    public double[] driveTorques(double[] q, double payloadKg) {
+        return toDrive(torques(q, payloadKg));
+    }
+
+    private double[] toDrive(double[] tauTheta) {
+        double[][] c = model.couplingMatrix();
+        int n = tauTheta.length;
+        double[] out = new double[n];
+        for (int j = 0; j < n; j++) for (int i = 0; i < n; i++) out[j] += c[i][j] * tauTheta[i];
+        return out;
+    }
+
+    /** The number of masses (the file's links, then the payload). */
+    public int massCount() { return mass.length; }
+
+    /** Name of mass k: "link3" (the mass the file puts on joint 3's link) or "payload". */
+    public String massName(int k) { return k == payloadSlot ? "payload" : "link" + frameIndex[k]; }
+
+    /** The file's value of mass k, kg (0 for the payload, which is given per pose). */
+    public double massKg(int k) { return mass[k]; }
+
+    /** Drive {@code joint}'s gravity torque split by mass: out[k] = the torque of mass k alone (file mass, payload as given). */
+    public void driveTorquesByMass(double[] q, double payloadKg, int joint, double[] out) {
+        int n = model.dof();
+        Pose[] f = model.linkFrames(q);
+        double[] m = mass.clone();
+        m[payloadSlot] = Double.isNaN(payloadKg) ? 0 : payloadKg;
+        double[][] cm = model.couplingMatrix();
+        for (int k = 0; k < mass.length; k++) {
+            Vec3 ck = f[frameIndex[k]].apply(local[k]);
+            Vec3 force = gravity.times(m[k]);
+            double s = 0;
+            for (int i = 0; i < n; i++) {
+                if (cm[i][joint] == 0 || frameIndex[k] < i + 1 || m[k] == 0) continue;
+                Vec3 o = f[i + 1].position(), z = f[i + 1].zAxis();
+                boolean prismatic = model.description().joints().get(i).type() == JointType.PRISMATIC;
+                s += cm[i][joint] * (prismatic ? force.dot(z) : ck.minus(o).cross(force).dot(z));
+            }
+            out[k] = s;
+        }
+    }
 }

@@ -18,12 +18,13 @@ final class Plots {
      * Angles in millidegrees, strains in ppm.
      */
     static Diagnosis.Plot partialResidual(Diagnoser.Tester t, Effect e, double[] v) {
+        if (e.target() == Effect.Target.POSITION) return alongDisplacement(t, e, v);
         int rpp = t.rpp, poses = t.m / rpp, dof = t.dof;
         double[] dn = new double[poses];
         for (int i = 0; i < poses; i++) {
             double s = 0;
             for (int a = 0; a < 3; a++) {
-                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dTheta[(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
                 s += d * d;
             }
             dn[i] = s;
@@ -39,7 +40,7 @@ final class Plots {
             PoseConditions c = t.w.conditions.get(i);
             double proj = 0;
             for (int a = 0; a < 3; a++) {
-                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dTheta[(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
                 proj += d * t.fit.r[i * rpp + a];
             }
             double y = e.value(v, row.q(), c) - proj / dn[i]; // residual is predicted - measured
@@ -50,22 +51,26 @@ final class Plots {
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int nc = e.kind() == Effect.Kind.PERIODIC ? 200 : 2;
+        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH ? 400 : 2;
         double[] cx = new double[nc], cy = new double[nc];
         for (int i = 0; i < nc; i++) {
             cx[i] = lo + (hi - lo) * i / (nc - 1);
             cy[i] = curve(e, v, cx[i]) * unit;
         }
+        if (nc > 0 && Double.isNaN(cy[0])) { cx = new double[0]; cy = new double[0]; } // no curve in this variable
         double[] gram = null;
-        if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, 8);
+        if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, Math.max(8, e.harmonics()[e.harmonics().length - 1] + 2));
         return new Diagnosis.Plot(xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
                 : "partial residual of joint " + (e.joint() + 1) + " angle (mdeg)", x, y, cx, cy, gram);
     }
 
     static String xLabel(Effect e) {
         return switch (e.kind()) {
-            case COMPLIANCE -> "gravity torque about joint " + (e.joint() + 1) + " (N·m)";
-            case PERIODIC, SCALE -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
+            case COMPLIANCE -> e.perMass() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
+                    : "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
+            case PERIODIC, SCALE, SMOOTH -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
+            case THERMAL_LINK -> "temperature (°C)";
+            case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case BACKLASH -> "approach direction dir" + (e.joint() + 1);
             case THERMAL -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case COUPLING -> "joint " + (e.source() + 1) + " angle q" + (e.source() + 1) + " (deg)";
@@ -74,8 +79,10 @@ final class Plots {
 
     private static double xOf(Effect e, Measurement row, PoseConditions c) {
         return switch (e.kind()) {
-            case COMPLIANCE -> e.gravity().torques(row.q(), c.payloadKg())[e.joint()];
-            case PERIODIC, SCALE -> Math.toDegrees(row.q(e.joint()));
+            case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()];
+            case PERIODIC, SCALE, SMOOTH -> Math.toDegrees(row.q(e.joint()));
+            case THERMAL_LINK -> c.tempC();
+            case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> c.direction(e.joint());
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
@@ -85,16 +92,48 @@ final class Plots {
     /** The fitted effect (rad or strain) as a function of the plot's x. */
     private static double curve(Effect e, double[] v, double x) {
         return switch (e.kind()) {
-            case COMPLIANCE -> v[0] * x;
+            case COMPLIANCE -> e.perMass() ? Double.NaN : v[0] * x;
             case PERIODIC -> {
                 double q = Math.toRadians(x), s = 0;
-                for (int h = 1; h <= Effect.HARMONICS; h++) s += v[2 * h - 2] * Math.sin(h * q) + v[2 * h - 1] * Math.cos(h * q);
+                int[] hs = e.harmonics();
+                for (int i = 0; i < hs.length; i++) s += v[2 * i] * Math.sin(hs[i] * q) + v[2 * i + 1] * Math.cos(hs[i] * q);
                 yield s;
             }
+            case SMOOTH -> {
+                double[] g = new double[Effect.SMOOTH_BASIS];
+                Effect.bspline(Math.toRadians(x), e.rangeLo(), e.rangeHi(), g);
+                double s = 0;
+                for (int i = 0; i < g.length; i++) s += g[i] * v[i];
+                yield s;
+            }
+            case THERMAL_LINK, DRIFT -> Double.NaN;
             case BACKLASH -> -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING -> v[0] * Math.toRadians(x);
         };
+    }
+
+    /**
+     * For an effect on the measured point: per pose, the effect's fitted displacement c_i (residual
+     * units) and the partial residual along it, ‖c_i‖ − ĉ_i·r_i, in mm, against the effect's variable.
+     */
+    static Diagnosis.Plot alongDisplacement(Diagnoser.Tester t, Effect e, double[] v) {
+        int rpp = t.rpp, poses = t.m / rpp, k = e.size();
+        double[] s = t.signature(e, t.w.conditions);
+        double[] x = new double[poses], y = new double[poses], fx = new double[poses], fy = new double[poses];
+        double unit = t.fit.problem.sigmaPos() * 1e3;
+        for (int i = 0; i < poses; i++) {
+            double[] c = new double[3];
+            for (int a = 0; a < 3; a++) for (int col = 0; col < k; col++) c[a] += s[(i * rpp + a) * k + col] * v[col];
+            double n = Math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+            double along = 0;
+            if (n > 0) for (int a = 0; a < 3; a++) along += c[a] / n * t.fit.r[i * rpp + a];
+            x[i] = xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
+            y[i] = (n - along) * unit;
+            fx[i] = x[i];
+            fy[i] = n * unit;
+        }
+        return new Diagnosis.Plot(xLabel(e), "partial residual along the effect's displacement (mm)", x, y, fx, fy, null);
     }
 
     /** Amplitude of harmonics 1..n of y against the angle x (deg), each fitted alone with a constant. */

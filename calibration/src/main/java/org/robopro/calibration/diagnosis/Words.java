@@ -1,5 +1,7 @@
 package org.robopro.calibration.diagnosis;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 
 /** Findings in plain words for the report. */
@@ -9,15 +11,22 @@ final class Words {
     static String finding(Effect e, double[] v, double[] s, Diagnosis.Evidence ev, double trainBefore, double trainAfter,
                           double valBefore, double valAfter, Directions.Source dirs) {
         String what = switch (e.kind()) {
-            case COMPLIANCE -> String.format(Locale.ROOT, "Joint %d gives way under the arm's weight: compliance %.3g ± %.2g "
+            case COMPLIANCE -> e.perMass()
+                    ? String.format(Locale.ROOT, "Joint %d gives way under gravity, and the robot file's masses do not match: with "
+                    + "each mass's torque on drive %d given its own coefficient (the mass model re-estimated from the data) the "
+                    + "deflection is explained; coefficients %s rad/(N·m) per N·m of the file's torque (%s).", e.joint() + 1,
+                    e.joint() + 1, fmtList(v), String.join(", ", e.parameterNames()))
+                    : String.format(Locale.ROOT, "Joint %d gives way under the arm's weight: compliance %.3g ± %.2g "
                     + "rad/(N·m), a stiffness of %.3g N·m/rad.", e.joint() + 1, v[0], s[0], 1 / v[0]);
             case PERIODIC -> {
+                int[] hs = e.harmonics();
                 StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
-                        "Joint %d has a transmission error that repeats with its angle (gear or encoder eccentricity):", e.joint() + 1));
-                for (int h = 1; h <= Effect.HARMONICS; h++)
-                    sb.append(String.format(Locale.ROOT, " harmonic %d %.4f ± %.4f deg%s", h,
-                            Math.toDegrees(Math.hypot(v[2 * h - 2], v[2 * h - 1])),
-                            Math.toDegrees(Math.max(s[2 * h - 2], s[2 * h - 1])), h < Effect.HARMONICS ? "," : "."));
+                        "Joint %d has a transmission error that repeats with its angle (%s):", e.joint() + 1,
+                        hs[hs.length - 1] > 3 ? "cycles of a multi-stage or cycloidal reducer" : "gear or encoder eccentricity"));
+                for (int i = 0; i < hs.length; i++)
+                    sb.append(String.format(Locale.ROOT, " %d cycle%s per turn %.4f ± %.4f deg%s", hs[i], hs[i] == 1 ? "" : "s",
+                            Math.toDegrees(Math.hypot(v[2 * i], v[2 * i + 1])),
+                            Math.toDegrees(Math.max(s[2 * i], s[2 * i + 1])), i < hs.length - 1 ? "," : "."));
                 if (ev.projectionRatio() < 0.3)
                     sb.append(String.format(Locale.ROOT, " Only %.0f %% of its signature is distinct from geometry on these poses, "
                             + "so the amplitudes are uncertain; a wider range of joint %d would separate them.",
@@ -27,6 +36,21 @@ final class Words {
                             .append(" look like geometry on these poses and were left to the geometric model.");
                 yield sb.toString();
             }
+            case SMOOTH -> String.format(Locale.ROOT, "Joint %d has an angle-dependent error of %.4f deg (RMS over its range) that "
+                    + "none of the known effects explains; it is modelled as a smooth curve of the joint angle (%d-function "
+                    + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
+                    Math.toDegrees(rmsSmooth(e, v)), Effect.SMOOTH_BASIS, Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()));
+            case THERMAL_LINK -> {
+                StringBuilder sb = new StringBuilder("The arm grows with temperature link by link (thermal growth):");
+                for (int i = 0; i < v.length; i++)
+                    sb.append(String.format(Locale.ROOT, " %s %.3g ± %.2g /K%s", e.linkWords(i), v[i], s[i], i < v.length - 1 ? "," : "."));
+                sb.append(String.format(Locale.ROOT, " Reference %.1f °C (steel is about 12e-6/K, aluminium 23e-6/K).", e.t0C()));
+                yield sb.toString();
+            }
+            case DRIFT -> String.format(Locale.ROOT, "The measured points drift %s: %.4f mm per %s in the base frame (%.4f, %.4f, "
+                    + "%.4f mm); the instrument or the robot's base moves. Compensation applies it only when the %s is given.",
+                    e.usesTimeProxy() ? "with time" : "with temperature", 1e3 * Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]),
+                    e.usesTimeProxy() ? "hour" : "K", 1e3 * v[0], 1e3 * v[1], 1e3 * v[2], e.usesTimeProxy() ? "time" : "temperature");
             case BACKLASH -> String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
                     + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in (directions %s).", e.joint() + 1,
                     Math.toDegrees(v[0]), Math.toDegrees(s[0]), dirs.words);
@@ -47,6 +71,26 @@ final class Words {
                 + "threshold %.2g; leave-one-out prediction error %.1f -> %.1f; %s).", ev.f(), ev.df1(), ev.df2(), ev.pValue(),
                 ev.threshold(), ev.pressBefore(), ev.pressAfter(), ev.plausibility());
         return what + fit;
+    }
+
+    static String fmtList(double[] v) {
+        List<String> out = new ArrayList<>();
+        for (double x : v) out.add(String.format(Locale.ROOT, "%.3g", x));
+        return "[" + String.join(", ", out) + "]";
+    }
+
+    /** RMS of a smooth error's curve over its range, rad. */
+    static double rmsSmooth(Effect e, double[] v) {
+        double s = 0;
+        int n = 200;
+        double[] g = new double[Effect.SMOOTH_BASIS];
+        for (int i = 0; i < n; i++) {
+            Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
+            double y = 0;
+            for (int k = 0; k < g.length; k++) y += g[k] * v[k];
+            s += y * y;
+        }
+        return Math.sqrt(s / n);
     }
 
     static String p(double p) { return p < 1e-300 ? "< 1e-300" : String.format(Locale.ROOT, "= %.2g", p); }

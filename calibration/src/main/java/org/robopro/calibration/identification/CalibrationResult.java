@@ -3,6 +3,7 @@ package org.robopro.calibration.identification;
 import java.util.List;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
 
 /**
  * What a calibration produced. SI units inside; the report writers convert.
@@ -24,13 +25,19 @@ import org.robopro.kinematics.Pose;
  * @param sigmaRotRad      orientation noise estimated from the residuals, rad (NaN for position-only data)
  * @param sixD             orientations were used
  * @param elapsedMs        wall time of the calibration
+ * @param correlations     pairs of identified parameters whose estimates are strongly correlated
+ *                         (|ρ| &gt; 0.9), strongest first
  */
 public record CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
                                 List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
                                 double conditionNumber, double observability, List<Outlier> outliers,
                                 List<PoseError> train, List<PoseError> validate,
                                 LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
-                                double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs) {
+                                double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs,
+                                List<Correlation> correlations) {
+
+    /** Correlation coefficient ρ of the estimates of parameters {@code a} and {@code b}. */
+    public record Correlation(String a, String b, double rho) { }
 
     /**
      * One parameter. Values in SI ({@code unitSi}); {@code sigma} NaN when fixed.
@@ -46,10 +53,11 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
     /**
      * Errors at one pose: position error norms (m) with the nominal model (after fitting only
      * the instrument and tool) and with the calibrated model; rotation errors (rad, NaN for
-     * position-only); whether the pose is an outlier.
+     * position-only); whether the pose is an outlier; the calibrated model's position error as a
+     * vector, measured minus predicted, in the measurement frame (m).
      */
     public record PoseError(String poseId, double nominalM, double calibratedM, double nominalRotRad,
-                            double calibratedRotRad, boolean outlier) { }
+                            double calibratedRotRad, boolean outlier, Vec3 calibratedErrorM) { }
 
     /** RMS of position errors over non-outlier poses, m. */
     public static double rms(List<PoseError> es, boolean calibratedModel) {

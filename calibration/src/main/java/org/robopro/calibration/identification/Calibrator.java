@@ -200,7 +200,8 @@ public final class Calibrator {
         for (CalibrationResult.Outlier ol : outliers) outlierIds.add(ol.poseId());
 
         // 5. Uncertainty.
-        double[] sigmaFull = covarianceSigmas(p, fit.x());
+        List<CalibrationResult.Correlation> correlations = new ArrayList<>();
+        double[] sigmaFull = covariance(p, fit.x(), correlations);
         double[] sig = estimateSigmas(p, full, p.freeIndices().length);
         KinematicModel calibrated = p.modelOf(full);
         Pose tool = p.toolOf(full);
@@ -221,7 +222,7 @@ public final class Calibrator {
         o.progress().update("done", 1);
         return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
                 data.conditionNumber(), data.observability(), outliers, trainErr, valErr, nf.result(), fit,
-                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6);
+                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6, List.copyOf(correlations));
     }
 
     static void checkData(KinematicModel model, MeasurementSet set) {
@@ -270,8 +271,15 @@ public final class Calibrator {
         return new double[] {Math.max(sigP, 1e-12), Math.max(sigR, 1e-12)};
     }
 
-    /** σ_j = sqrt(s² [(JᵀJ)⁻¹]_jj), for every full index (NaN where fixed). */
-    static double[] covarianceSigmas(IdentificationProblem p, double[] x) {
+    /** Pairs of free parameters whose estimates are correlated beyond this |ρ| are kept in the result. */
+    static final double CORRELATION_KEPT = 0.9;
+
+    /**
+     * σ_j = sqrt(s² [(JᵀJ)⁻¹]_jj), for every full index (NaN where fixed); when {@code correlations} is not null, adds the
+     * pairs of free parameters with |ρ_ij| = |C_ij| / sqrt(C_ii C_jj) above {@link #CORRELATION_KEPT}
+     * (C = (JᵀJ)⁻¹; the column scaling cancels in ρ).
+     */
+    static double[] covariance(IdentificationProblem p, double[] x, List<CalibrationResult.Correlation> correlations) {
         int m = p.residualCount(), n = p.parameterCount();
         double[] r = new double[m], j = new double[m * n];
         p.evaluate(x, r, j);
@@ -288,12 +296,24 @@ public final class Calibrator {
         Arrays.fill(out, Double.NaN);
         if (!Dense.cholesky(a, n)) return out;
         int[] free = p.freeIndices();
+        double[] inv = new double[n * n];
         double[] e = new double[n];
         for (int c = 0; c < n; c++) {
             Arrays.fill(e, 0);
             e[c] = 1;
             Dense.choleskySolve(a, n, e);
+            System.arraycopy(e, 0, inv, c * n, n);
             out[free[c]] = Math.sqrt(s2 * e[c]) / scale[c];
+        }
+        if (correlations != null) {
+            List<String> names = p.names();
+            for (int i = 0; i < n; i++)
+                for (int k = i + 1; k < n; k++) {
+                    double rho = inv[i * n + k] / Math.sqrt(inv[i * n + i] * inv[k * n + k]);
+                    if (Math.abs(rho) > CORRELATION_KEPT)
+                        correlations.add(new CalibrationResult.Correlation(names.get(free[i]), names.get(free[k]), rho));
+                }
+            correlations.sort((u, v) -> Double.compare(Math.abs(v.rho()), Math.abs(u.rho())));
         }
         return out;
     }
@@ -403,7 +423,7 @@ public final class Calibrator {
                 rcRot = Math.sqrt(sq(rc[b + 3]) + sq(rc[b + 4]) + sq(rc[b + 5]));
             }
             String id = set.rows().get(i).poseId();
-            out.add(new CalibrationResult.PoseError(id, en, ec, rnRot, rcRot, outliers.contains(id)));
+            out.add(new CalibrationResult.PoseError(id, en, ec, rnRot, rcRot, outliers.contains(id), new Vec3(-rc[b], -rc[b + 1], -rc[b + 2])));
         }
         return out;
     }

@@ -1,7 +1,5 @@
 package org.robopro.calibration.report;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -11,8 +9,10 @@ import java.util.Map;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.identification.CalibrationResult.ParameterEstimate;
 import org.robopro.calibration.identification.CalibrationResult.PoseError;
+import org.robopro.calibration.identification.ErrorStats;
 import org.robopro.calibration.identification.Identifiability;
 import org.robopro.calibration.identification.LevenbergMarquardt;
+import org.robopro.calibration.identification.Trust;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
@@ -27,6 +27,49 @@ public final class CalibrationReport {
 
     /** Where the data came from, for the report header. */
     public record Context(String robot, String measurements, String validation, String created) { }
+
+    /**
+     * A K-fold cross-validation: each fold's calibration, whose validation poses are the fold
+     * held out.
+     *
+     * @param seed  seed the folds were drawn with
+     * @param folds per fold, in fold order
+     */
+    public record CrossValidation(long seed, List<CalibrationResult> folds) {
+        /** Every held-out pose error, each training pose once (predicted by the model that did not see it). */
+        public List<PoseError> heldOut() {
+            List<PoseError> all = new ArrayList<>();
+            for (CalibrationResult f : folds) all.addAll(f.validate());
+            return all;
+        }
+    }
+
+    /** Position statistics of these poses in mm, as summary.json writes them. */
+    static Map<String, Object> statsJson(ErrorStats st, double k, String unit) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("n", st.n());
+        ErrorStats v = st.scaled(k);
+        m.put("rms_" + unit, num(v.rms()));
+        m.put("mean_" + unit, num(v.mean()));
+        m.put("median_" + unit, num(v.median()));
+        m.put("p95_" + unit, num(v.p95()));
+        m.put("max_" + unit, num(v.max()));
+        return m;
+    }
+
+    private static Double num(double v) { return Double.isNaN(v) ? null : v; }
+
+    /** Nominal and calibrated statistics (position, and rotation for 6-D) of one set of poses. */
+    static Map<String, Object> errorsJson(List<PoseError> es, boolean sixD) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("nominal", statsJson(ErrorStats.position(es, false), 1e3, "mm"));
+        m.put("calibrated", statsJson(ErrorStats.position(es, true), 1e3, "mm"));
+        if (sixD) {
+            m.put("nominal_rotation", statsJson(ErrorStats.rotation(es, false), 180 / Math.PI, "deg"));
+            m.put("calibrated_rotation", statsJson(ErrorStats.rotation(es, true), 180 / Math.PI, "deg"));
+        }
+        return m;
+    }
 
     /** A value in display units: m → mm, rad → deg, anything else as is. */
     static double display(double v, String unitSi) {
@@ -82,16 +125,13 @@ public final class CalibrationReport {
         return w;
     }
 
-    public static Map<String, Object> summary(CalibrationResult r, Context ctx) {
-        return summary(r, ctx, warnings(r, null, null));
-    }
-
     /**
      * The summary with these {@code warnings} (see {@link #warnings}): a function of the data and
      * settings only (no date, no wall time; those are in the report), so the same campaign gives
      * the same bytes whichever front end ran it.
      */
-    public static Map<String, Object> summary(CalibrationResult r, Context ctx, List<String> warnings) {
+    public static Map<String, Object> summary(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns,
+                                              List<String> warnings) {
         Map<String, Object> s = new LinkedHashMap<>();
         s.put("robot", ctx.robot());
         s.put("measurements", ctx.measurements());
@@ -106,10 +146,35 @@ public final class CalibrationReport {
         s.put("nominal_train_max_mm", mm(CalibrationResult.max(r.train(), false)));
         s.put("train_max_mm", mm(r.trainMaxM()));
         s.put("validate_max_mm", mm(r.validateMaxM()));
+        Map<String, Object> errors = new LinkedHashMap<>();
+        errors.put("train", errorsJson(r.train(), r.sixD()));
+        if (!r.validate().isEmpty()) errors.put("validate", errorsJson(r.validate(), r.sixD()));
+        if (cv != null) errors.put("cross_validation", errorsJson(cv.heldOut(), r.sixD()));
+        s.put("errors", errors);
+        if (cv != null) {
+            Map<String, Object> c = new LinkedHashMap<>();
+            c.put("folds", cv.folds().size());
+            c.put("seed", cv.seed());
+            List<Map<String, Object>> per = new ArrayList<>();
+            for (int k = 0; k < cv.folds().size(); k++) {
+                CalibrationResult f = cv.folds().get(k);
+                Map<String, Object> e = new LinkedHashMap<>();
+                e.put("fold", k + 1);
+                e.put("poses_train", f.train().size());
+                e.put("poses_held_out", f.validate().size());
+                e.put("train_rms_mm", mm(f.trainRmsM()));
+                e.put("held_out", statsJson(ErrorStats.position(f.validate(), true), 1e3, "mm"));
+                per.add(e);
+            }
+            c.put("per_fold", per);
+            s.put("cross_validation", c);
+        }
         s.put("noise_sigma_mm", mm(r.sigmaPosM()));
         if (r.sixD()) s.put("noise_sigma_deg", Units.radToDeg(r.sigmaRotRad()));
         s.put("condition_number", r.conditionNumber());
         s.put("observability_o1", r.observability());
+        java.util.Set<String> untrusted = new java.util.HashSet<>();
+        for (Trust.Concern c : concerns) untrusted.add(c.parameter());
         List<Map<String, Object>> ps = new ArrayList<>();
         for (ParameterEstimate p : r.parameters()) {
             Map<String, Object> e = new LinkedHashMap<>();
@@ -120,9 +185,28 @@ public final class CalibrationReport {
             e.put("sigma", p.fixed() || Double.isNaN(p.sigma()) ? null : display(p.sigma(), p.unitSi()));
             e.put("unit", displayUnit(p.unitSi()));
             e.put("fixed", p.fixed());
+            e.put("trustworthy", !p.fixed() && !untrusted.contains(p.name()));
             ps.add(e);
         }
         s.put("parameters", ps);
+        List<Map<String, Object>> cs = new ArrayList<>();
+        for (Trust.Concern c : concerns) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("parameter", c.parameter());
+            e.put("reason", c.reason());
+            e.put("advice", c.advice());
+            cs.add(e);
+        }
+        s.put("untrustworthy", cs);
+        List<Map<String, Object>> corr = new ArrayList<>();
+        for (CalibrationResult.Correlation c : r.correlations()) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("a", c.a());
+            e.put("b", c.b());
+            e.put("rho", c.rho());
+            corr.add(e);
+        }
+        s.put("correlations", corr);
         List<Map<String, Object>> un = new ArrayList<>();
         for (Identifiability.Direction d : r.unidentifiable()) {
             Map<String, Object> e = new LinkedHashMap<>();
@@ -175,13 +259,10 @@ public final class CalibrationReport {
         return m;
     }
 
-    public static String summaryJson(CalibrationResult r, Context ctx) {
-        return summaryJson(r, ctx, warnings(r, null, null));
-    }
-
-    public static String summaryJson(CalibrationResult r, Context ctx, List<String> warnings) {
+    public static String summaryJson(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns,
+                                     List<String> warnings) {
         try {
-            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(r, ctx, warnings)) + "\n";
+            return org.robopro.models.JsonMapper.create().writeValueAsString(summary(r, ctx, cv, concerns, warnings)) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }
@@ -189,12 +270,8 @@ public final class CalibrationReport {
 
     // ------------------------------------------------------------------ HTML
 
-    public static String html(CalibrationResult r, Context ctx) {
-        return html(r, ctx, warnings(r, null, null));
-    }
-
     /** The report with these {@code warnings} shown under the header. */
-    public static String html(CalibrationResult r, Context ctx, List<String> warnings) {
+    public static String html(CalibrationResult r, Context ctx, CrossValidation cv, List<Trust.Concern> concerns, List<String> warnings) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration of ")
          .append(Html.esc(ctx.robot())).append("</title><style>")
@@ -209,14 +286,18 @@ public final class CalibrationReport {
          .append(", ").append(r.validate().size()).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");
         for (String w : warnings) h.append("<p class=\"warn\"><b>Warning:</b> ").append(Html.esc(w)).append("</p>\n");
 
-        h.append("<h2>Result</h2><table><tr><th class=\"l\"></th><th>nominal model</th><th>calibrated</th></tr>");
-        row(h, "training RMS (mm)", r.nominalTrainRmsM(), r.trainRmsM());
-        row(h, "training max (mm)", CalibrationResult.max(r.train(), false), r.trainMaxM());
-        if (!r.validate().isEmpty()) {
-            row(h, "validation RMS (mm)", r.nominalValidateRmsM(), r.validateRmsM());
-            row(h, "validation max (mm)", CalibrationResult.max(r.validate(), false), r.validateMaxM());
+        h.append("<h2>Result</h2><table><tr><th class=\"l\">position error (mm)</th><th class=\"l\">model</th><th>poses</th>")
+         .append("<th>RMS</th><th>mean</th><th>median</th><th>95th pct</th><th>max</th></tr>");
+        statsRows(h, "training", r.train(), false);
+        if (!r.validate().isEmpty()) statsRows(h, "validation", r.validate(), false);
+        if (cv != null) statsRows(h, cv.folds().size() + "-fold cross-validation (held out)", cv.heldOut(), false);
+        if (r.sixD()) {
+            h.append("<tr><th class=\"l\">rotation error (deg)</th><th></th><th></th><th></th><th></th><th></th><th></th><th></th></tr>");
+            statsRows(h, "training", r.train(), true);
+            if (!r.validate().isEmpty()) statsRows(h, "validation", r.validate(), true);
+            if (cv != null) statsRows(h, "cross-validation (held out)", cv.heldOut(), true);
         }
-        h.append("</table>\n<p>The nominal column fits only the instrument frame and the measured point with the nominal geometry. ")
+        h.append("</table>\n<p>The nominal rows fit only the instrument frame and the measured point with the nominal geometry. ")
          .append(String.format(Locale.ROOT, "Noise estimated from the residuals: &sigma; = %.4f mm per axis", Units.mToMm(r.sigmaPosM())));
         if (r.sixD()) h.append(String.format(Locale.ROOT, ", %.5f&deg; per axis", Units.radToDeg(r.sigmaRotRad())));
         h.append(String.format(Locale.ROOT, "; the noise floor &radic;3&middot;&sigma; = %.4f mm. ", Math.sqrt(3) * Units.mToMm(r.sigmaPosM())));
@@ -228,6 +309,20 @@ public final class CalibrationReport {
         addSeries(before, r.validate(), false, "validation", "#ff7f0e");
         addSeries(after, r.train(), true, "training", "#1f77b4");
         addSeries(after, r.validate(), true, "validation", "#ff7f0e");
+        if (cv != null) {
+            h.append(String.format(Locale.ROOT, "<h2>Cross-validation</h2>\n<p>%d folds (seed %d): each fold is predicted by the model "
+                    + "fitted on the other folds; every training pose is held out once.</p><table><tr><th>fold</th><th>training poses</th>"
+                    + "<th>training RMS (mm)</th><th>held out</th><th>held-out RMS (mm)</th><th>held-out max (mm)</th></tr>",
+                    cv.folds().size(), cv.seed()));
+            for (int k = 0; k < cv.folds().size(); k++) {
+                CalibrationResult f = cv.folds().get(k);
+                ErrorStats st = ErrorStats.position(f.validate(), true);
+                h.append("<tr><td>").append(k + 1).append("</td><td>").append(f.train().size()).append("</td><td>")
+                 .append(fmt(Units.mToMm(f.trainRmsM()))).append("</td><td>").append(st.n()).append("</td><td>")
+                 .append(fmt(Units.mToMm(st.rms()))).append("</td><td>").append(fmt(Units.mToMm(st.max()))).append("</td></tr>");
+            }
+            h.append("</table>\n");
+        }
         h.append("<h2>Error per pose</h2>\n").append(Svg.plot("Before: nominal model", "pose (file order)", "position error (mm)", before, false))
          .append("\n").append(Svg.plot("After: calibrated model", "pose (file order)", "position error (mm)", after, false)).append("\n");
         List<Svg.Series> hist = new ArrayList<>();
@@ -257,6 +352,18 @@ public final class CalibrationReport {
             h.append("</table>\n");
         }
 
+        if (concerns.isEmpty())
+            h.append(String.format(Locale.ROOT, "<p>Every identified parameter is determined by the data (&sigma; &le; %.0f mm or %.1f&deg;, "
+                    + "no correlation above %.2f).</p>\n", Trust.SIGMA_MM, Trust.SIGMA_DEG, Trust.CORRELATION));
+        else {
+            h.append("<p class=\"warn\">Identified, but not determined by these data (the calibrated file is reliable for this measured point "
+                    + "only, not for another tool point or orientation):</p><table><tr><th class=\"l\">parameter</th><th class=\"l\">why</th>"
+                    + "<th class=\"l\">what would fix it</th></tr>");
+            for (Trust.Concern c : concerns)
+                h.append("<tr><td class=\"l\">").append(Html.esc(c.parameter())).append("</td><td class=\"l\">").append(Html.esc(c.reason()))
+                 .append("</td><td class=\"l\">").append(Html.esc(c.advice())).append("</td></tr>");
+            h.append("</table>\n");
+        }
         h.append("<h2>Outliers</h2>\n");
         if (r.outliers().isEmpty()) h.append("<p>None: no pose exceeded the outlier rule.</p>\n");
         else {
@@ -281,9 +388,15 @@ public final class CalibrationReport {
         return h.toString();
     }
 
-    private static void row(StringBuilder h, String label, double nominalM, double calibratedM) {
-        h.append("<tr><td class=\"l\">").append(label).append("</td><td>").append(fmt(Units.mToMm(nominalM))).append("</td><td>")
-         .append(fmt(Units.mToMm(calibratedM))).append("</td></tr>");
+    private static void statsRows(StringBuilder h, String label, List<PoseError> es, boolean rotation) {
+        for (boolean calibrated : new boolean[] {false, true}) {
+            ErrorStats st = (rotation ? ErrorStats.rotation(es, calibrated) : ErrorStats.position(es, calibrated))
+                    .scaled(rotation ? 180 / Math.PI : 1e3);
+            h.append("<tr><td class=\"l\">").append(calibrated ? "" : Html.esc(label)).append("</td><td class=\"l\">")
+             .append(calibrated ? "calibrated" : "nominal").append("</td><td>").append(st.n()).append("</td><td>").append(fmt(st.rms()))
+             .append("</td><td>").append(fmt(st.mean())).append("</td><td>").append(fmt(st.median())).append("</td><td>")
+             .append(fmt(st.p95())).append("</td><td>").append(fmt(st.max())).append("</td></tr>");
+        }
     }
 
     private static void addSeries(List<Svg.Series> out, List<PoseError> es, boolean calibrated, String name, String color) {

@@ -1,7 +1,6 @@
 package org.robopro.calibration.workflow;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -14,6 +13,7 @@ import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.Progress;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.identification.Calibrator;
+import org.robopro.calibration.identification.Trust;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
@@ -21,7 +21,7 @@ import org.robopro.calibration.report.CalibrationReport;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
+import org.robopro.models.OutputSet;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotFile;
 
@@ -169,6 +169,28 @@ public final class CalibrationWorkflow {
         return fold;
     }
 
+    /** A fit on the training part of one fold, evaluated on its held-out part. */
+    public interface FoldFit<T> {
+        T fit(int fold, MeasurementSet train, MeasurementSet heldOut);
+    }
+
+    /**
+     * K-fold cross-validation of any fit (calibration, diagnosis): the poses of {@code data} split
+     * by {@link #folds}, {@code fit} called once per fold with the other folds as training data
+     * and the fold as held-out data; the results in fold order.
+     */
+    public static <T> List<T> crossValidate(MeasurementSet data, int k, long seed, FoldFit<T> fit) {
+        List<Measurement> rows = data.rows();
+        int[] fold = folds(rows.size(), k, seed);
+        List<T> out = new ArrayList<>();
+        for (int f = 0; f < k; f++) {
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
+            out.add(fit.fit(f, data.withRows(tr), data.withRows(va)));
+        }
+        return out;
+    }
+
     /**
      * One fold of the cross-validation: the model fitted without it, and its errors.
      *
@@ -185,12 +207,13 @@ public final class CalibrationWorkflow {
      * @param result     the calibration on every training pose
      * @param folds      per fold (empty without cross-validation)
      * @param foldOf     fold of each training pose, by pose id (empty without cross-validation)
-     * @param warnings   metadata and validation warnings, in the order shown
+     * @param concerns   identified parameters the data do not determine ({@link Trust})
+     * @param warnings   metadata, validation and identifiability warnings, in the order shown
      * @param calibrated the calibrated robot with provenance
      * @param created    when the run finished (ISO-8601, seconds), for the report and provenance
      */
     public record Outcome(Campaign campaign, Settings settings, CalibrationResult result, List<Fold> folds, Map<String, Integer> foldOf,
-                          List<String> warnings, RobotDescription calibrated, String created) {
+                          List<Trust.Concern> concerns, List<String> warnings, RobotDescription calibrated, String created) {
 
         public CalibrationReport.Context context() {
             return new CalibrationReport.Context(calibrated.provenance().getOrDefault("calibrated-nominal", calibrated.name()),
@@ -199,44 +222,67 @@ public final class CalibrationWorkflow {
 
         /** summary.json: a function of the data and settings only. */
         public String summaryJson() {
-            return CalibrationReport.summaryJson(result, context(), warnings);
+            return CalibrationReport.summaryJson(result, context(), crossValidation(), concerns, warnings);
         }
 
         /** report.html. */
         public String reportHtml() {
-            return CalibrationReport.html(result, context(), warnings);
+            return CalibrationReport.html(result, context(), crossValidation(), concerns, warnings);
+        }
+
+        /** The cross-validation for the reports, or null without folds. */
+        public CalibrationReport.CrossValidation crossValidation() {
+            if (folds.isEmpty()) return null;
+            return new CalibrationReport.CrossValidation(settings.foldSeed(), folds.stream().map(Fold::result).toList());
         }
 
         /**
          * residuals.csv: one row per pose (training then validation, file order): id, set, fold
-         * (empty when not cross-validated), outlier flag, error norms with the nominal and the
-         * calibrated model (mm) and, for 6-D data, rotation errors (deg).
+         * (1-based; empty when not cross-validated or for validation poses), outlier flag, the
+         * nominal model's error norm, the calibrated model's error (measured minus predicted, in
+         * the measurement frame) and its norm, in mm; for 6-D data the rotation errors in degrees;
+         * with folds, the error of the model that did not see the pose.
          */
         public String residualsCsv() {
-            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,calibrated_mm,nominal_deg,calibrated_deg\n");
-            rows(b, result.train(), "train");
-            rows(b, result.validate(), "validate");
+            boolean sixD = result.sixD(), cv = !folds.isEmpty();
+            Map<String, CalibrationResult.PoseError> heldOut = new LinkedHashMap<>();
+            for (Fold f : folds) for (CalibrationResult.PoseError e : f.result().validate()) heldOut.put(e.poseId(), e);
+            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm");
+            if (sixD) b.append(",nominal_deg,rotation_deg");
+            if (cv) b.append(",cv_dx_mm,cv_dy_mm,cv_dz_mm,cv_norm_mm").append(sixD ? ",cv_rotation_deg" : "");
+            b.append('\n');
+            for (int pass = 0; pass < 2; pass++) {
+                for (CalibrationResult.PoseError e : pass == 0 ? result.train() : result.validate()) {
+                    Integer f = pass == 0 ? foldOf.get(e.poseId()) : null;
+                    b.append(csv(e.poseId())).append(',').append(pass == 0 ? "train" : "validate").append(',')
+                     .append(f == null ? "" : Integer.toString(f + 1)).append(',').append(e.outlier()).append(',')
+                     .append(num(Units.mToMm(e.nominalM())));
+                    vector(b, e);
+                    if (sixD) b.append(',').append(num(Math.toDegrees(e.nominalRotRad()))).append(',').append(num(Math.toDegrees(e.calibratedRotRad())));
+                    if (cv) {
+                        CalibrationResult.PoseError h = pass == 0 ? heldOut.get(e.poseId()) : null;
+                        if (h == null) b.append(",,,,").append(sixD ? "," : "");
+                        else {
+                            vector(b, h);
+                            if (sixD) b.append(',').append(num(Math.toDegrees(h.calibratedRotRad())));
+                        }
+                    }
+                    b.append('\n');
+                }
+            }
             return b.toString();
         }
 
-        private void rows(StringBuilder b, List<CalibrationResult.PoseError> es, String set) {
-            for (CalibrationResult.PoseError e : es) {
-                Integer f = foldOf.get(e.poseId());
-                b.append(csv(e.poseId())).append(',').append(set).append(',').append(f == null ? "" : Integer.toString(f + 1))
-                 .append(',').append(e.outlier()).append(',').append(num(Units.mToMm(e.nominalM()))).append(',')
-                 .append(num(Units.mToMm(e.calibratedM()))).append(',').append(num(Math.toDegrees(e.nominalRotRad()))).append(',')
-                 .append(num(Math.toDegrees(e.calibratedRotRad()))).append('\n');
-            }
+        private static void vector(StringBuilder b, CalibrationResult.PoseError e) {
+            var v = e.calibratedErrorM();
+            b.append(',').append(num(Units.mToMm(v.x()))).append(',').append(num(Units.mToMm(v.y()))).append(',')
+             .append(num(Units.mToMm(v.z()))).append(',').append(num(Units.mToMm(e.calibratedM())));
         }
 
         /** Writes the four files into {@code dir}, whole or not at all; {@code overwrite} false refuses existing files. */
         public void write(Path dir, boolean overwrite) throws IOException {
-            Map<Path, byte[]> files = new LinkedHashMap<>();
-            files.put(dir.resolve(ROBOT_FILE), RobotFile.format(calibrated).getBytes(StandardCharsets.UTF_8));
-            files.put(dir.resolve(SUMMARY), summaryJson().getBytes(StandardCharsets.UTF_8));
-            files.put(dir.resolve(RESIDUALS), residualsCsv().getBytes(StandardCharsets.UTF_8));
-            files.put(dir.resolve(REPORT), reportHtml().getBytes(StandardCharsets.UTF_8));
-            AtomicFiles.writeAll(files, overwrite);
+            OutputSet.in(dir, overwrite).addString(ROBOT_FILE, RobotFile.format(calibrated)).addString(SUMMARY, summaryJson())
+                    .addString(RESIDUALS, residualsCsv()).addString(REPORT, reportHtml()).commit();
         }
     }
 
@@ -263,19 +309,16 @@ public final class CalibrationWorkflow {
             int[] fold = folds(rows.size(), s.folds(), s.foldSeed());
             for (int i = 0; i < rows.size(); i++) foldOf.put(rows.get(i).poseId(), fold[i]);
             double share = 1.0 / (s.folds() + 1);
-            for (int k = 0; k < s.folds(); k++) {
-                List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-                for (int i = 0; i < rows.size(); i++) (fold[i] == k ? va : tr).add(rows.get(i));
-                final int kk = k;
-                Progress pk = (stage, f) -> progress.update("fold " + (kk + 1) + ": " + stage, share * (kk + f));
-                CalibrationResult r = Calibrator.calibrate(nominal, c.train().withRows(tr), c.train().withRows(va), s.options(cancel, pk));
-                folds.add(new Fold(k, r));
-            }
+            List<CalibrationResult> rs = crossValidate(c.train(), s.folds(), s.foldSeed(), (k, tr, va) -> Calibrator.calibrate(nominal, tr, va,
+                    s.options(cancel, (stage, f) -> progress.update("fold " + (k + 1) + ": " + stage, share * (k + f)))));
+            for (int k = 0; k < rs.size(); k++) folds.add(new Fold(k, rs.get(k)));
             main = (stage, f) -> progress.update(stage, share * (s.folds() + f));
         }
         CalibrationResult r = Calibrator.calibrate(nominal, c.train(), c.validate(), s.options(cancel, main));
         List<String> warnings = new ArrayList<>(c.warnings());
         warnings.addAll(CalibrationReport.warnings(r, c.train(), c.validate()));
+        List<Trust.Concern> concerns = Trust.assess(r, c.train());
+        for (Trust.Concern k : concerns) warnings.add(k.sentence());
         Map<String, String> prov = new LinkedHashMap<>(robot.provenance());
         prov.put("calibrated-from", fileName(c.file()));
         prov.put("calibrated-on", created);
@@ -286,10 +329,11 @@ public final class CalibrationWorkflow {
         if (c.source() != null) prov.put("calibration-validated-on", c.source());
         prov.put("calibration-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.trainRmsM())));
         if (c.validate() != null) prov.put("calibration-validate-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.validateRmsM())));
+        prov.put("calibration-untrustworthy-parameters", Trust.provenance(concerns));
         var p = r.flangeTtool().position();
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
         RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
-        return new Outcome(c, s, r, List.copyOf(folds), Collections.unmodifiableMap(foldOf), List.copyOf(warnings), calibrated, created);
+        return new Outcome(c, s, r, List.copyOf(folds), Collections.unmodifiableMap(foldOf), concerns, List.copyOf(warnings), calibrated, created);
     }
 }

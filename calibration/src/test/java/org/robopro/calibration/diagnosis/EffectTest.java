@@ -54,7 +54,7 @@ class EffectTest {
         Pose inst = Pose.translation(2, 1, 0.3).times(Pose.rotZ(0.7));
         List<JointEffect> truthEffects = new ArrayList<>();
         List<EffectBlock> blocks = new ArrayList<>();
-        for (Effect.Term t : terms()) { truthEffects.add(t.effect().truth(t.values())); blocks.add(t.effect().block()); }
+        for (Effect.Term t : terms()) { truthEffects.add(t.effect().truth(t.values())); blocks.add(t.effect().block(model)); }
         TrueRobot truth = new TrueRobot(model, tool, inst, 0, 0, truthEffects);
         List<Measurement> rows = rows(truth, 12, 5);
         double[] start = IdentificationProblem.startVector(model, tool, false, inst, blocks);
@@ -80,7 +80,7 @@ class EffectTest {
         Pose tool = Pose.translation(0.0, 0.0, 0.1);
         Pose inst = Pose.translation(2, 1, 0.3).times(Pose.rotZ(0.7));
         List<EffectBlock> blocks = new ArrayList<>();
-        for (Effect.Term t : terms()) blocks.add(t.effect().block());
+        for (Effect.Term t : terms()) blocks.add(t.effect().block(model));
         TrueRobot truth = new TrueRobot(model, tool, inst, 0, 0, List.of());
         List<Measurement> rows = rows(truth, 6, 9);
         double[] x = IdentificationProblem.startVector(model, tool, false, inst, blocks);
@@ -119,8 +119,9 @@ class EffectTest {
 
     /**
      * Physics, not this code: a driven output lags its motor-side encoder. After a motion in
-     * direction +1 the output stands b/2 behind q, after −1 b/2 ahead (dead-band model). The truth
-     * and the block must both move the model angle by −(b/2)·dir.
+     * direction +1 the output stands b/2 behind q, after −1 b/2 ahead (dead-band model). The error
+     * is the drive's, before the coupling θ = C q (the IRB-2000's parallel arm passes joint 2's
+     * error on to θ3): truth and block must both move θ by C·(−(b/2)·dir·e_2).
      */
     @Test
     void backlash_outputLagsTheEncoder() {
@@ -131,20 +132,22 @@ class EffectTest {
             PoseConditions c = new PoseConditions(new int[] {0, dir, 0, 0, 0, 0}, 0, 20, 0);
             double[] dTheta = new double[6];
             truth.addDeltaTheta(model, q, c, dTheta);
-            assertEquals(-0.5 * b * dir, dTheta[1], 1e-15, "dir " + dir);
-            assertEquals(0, dTheta[0], 0);
+            double[][] cm = model.couplingMatrix();
+            for (int i = 0; i < 6; i++) assertEquals(cm[i][1] * -0.5 * b * dir, dTheta[i], 1e-15, "dir " + dir + " theta " + (i + 1));
             double[] dv = new double[6];
             double[] dt = new double[6];
             Measurement row = new Measurement("p", q, Vec3.ZERO, null, c.directions(), 0, 20, 0, null, 0);
-            Effect.backlash(1).block().jointDelta(new double[] {b}, row, dt, dv);
-            assertEquals(-0.5 * b * dir, dt[1], 1e-15);
-            assertEquals(-0.5 * dir, dv[1], 1e-15, "derivative of the angle by b");
+            Effect.backlash(1).block(model).jointDelta(new double[] {b}, row, dt, dv);
+            for (int i = 0; i < 6; i++) {
+                assertEquals(cm[i][1] * -0.5 * b * dir, dt[i], 1e-15);
+                assertEquals(cm[i][1] * -0.5 * dir, dv[i], 1e-15, "derivative of theta " + (i + 1) + " by b");
+            }
         }
         // The extended model's tool point is the geometry's at the lagging angle, computed here by hand.
         ExtendedModel ext = new ExtendedModel(model, List.of(new Effect.Term(Effect.backlash(1), new double[] {b})));
         PoseConditions up = new PoseConditions(new int[] {1, 1, 1, 1, 1, 1}, 0, 20, 0);
-        double[] lag = model.theta(q);
+        double[] lag = q.clone();
         lag[1] -= b / 2;
-        assertEquals(0, ext.flange(q, up).distanceTo(model.flange(model.q(lag))), 1e-12);
+        assertEquals(0, ext.flange(q, up).distanceTo(model.flange(lag)), 1e-12);
     }
 }

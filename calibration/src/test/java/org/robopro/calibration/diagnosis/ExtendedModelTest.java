@@ -78,8 +78,8 @@ class ExtendedModelTest {
 
     /**
      * To reach a target the command must lead the lagging output: with backlash b on joint 2 and
-     * approach direction dir, the compensated joint value is the target's plus (b/2)·dir (model
-     * angle; computed here by hand, not with the effect's code).
+     * approach direction dir, the compensated controller value of drive 2 is the target's plus
+     * (b/2)·dir, every other drive unchanged (computed here by hand, not with the effect's code).
      */
     @Test
     void compensator_backlash_commandLeadsByHalfThePlay() {
@@ -92,9 +92,9 @@ class ExtendedModelTest {
             Pose target = model.tool(q0, tool);
             Compensator.Result r = comp.compensate(target, q0);
             assertEquals(Compensator.Status.CONVERGED, r.status());
-            double[] th = model.theta(r.q()), th0 = model.theta(q0);
-            assertEquals(b / 2 * dir, th[1] - th0[1], 1e-9, "joint 2 leads by half the play, dir " + dir);
-            for (int j : new int[] {0, 2, 3, 4, 5}) assertEquals(th0[j], th[j], 1e-9, "joint " + (j + 1));
+            double[] q = r.q();
+            assertEquals(b / 2 * dir, q[1] - q0[1], 1e-9, "drive 2 leads by half the play, dir " + dir);
+            for (int j : new int[] {0, 2, 3, 4, 5}) assertEquals(q0[j], q[j], 1e-9, "drive " + (j + 1));
         }
     }
 }

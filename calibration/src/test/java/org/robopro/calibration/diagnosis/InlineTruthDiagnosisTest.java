@@ -20,8 +20,8 @@ import org.robopro.models.Vec3;
 /**
  * Diagnoses campaigns whose truth is written here, by hand, without the diagnosis' own effect
  * classes: the joint angles are perturbed with the physical formula before forward kinematics.
- * Backlash: a driven output lags its motor-side encoder, θ = q − (b/2)·dir with dir the sign of
- * the joint's last move in the measuring sequence. The files carry no dir columns, so the
+ * Backlash: a driven output lags its motor-side encoder, q_out = q − (b/2)·dir with dir the sign
+ * of the joint's last move in the measuring sequence, before the coupling θ = C q_out. The files carry no dir columns, so the
  * diagnosis must infer the directions from the measuring order (time_s).
  */
 class InlineTruthDiagnosisTest {
@@ -43,9 +43,9 @@ class InlineTruthDiagnosisTest {
         for (int i = 0; i < n; i++) {
             double[] q = qs.get(i);
             if (prev != null && q[joint] != prev[joint]) lastDir = q[joint] > prev[joint] ? 1 : -1;
-            double[] theta = model.theta(q);
-            theta[joint] -= 0.5 * b * lastDir;              // the output lags the encoder
-            Vec3 p = model.flange(model.q(theta)).times(tool).position();
+            double[] out = q.clone();
+            out[joint] -= 0.5 * b * lastDir;                 // the drive's output lags its encoder (before the coupling)
+            Vec3 p = model.flange(out).times(tool).position();
             p = new Vec3(p.x() + sigma * rng.nextGaussian(), p.y() + sigma * rng.nextGaussian(), p.z() + sigma * rng.nextGaussian());
             boolean v = every > 0 && i % every == every - 1;
             Measurement m = new Measurement("p" + i, q, p, null, null, 20.0 * i, Double.NaN, Double.NaN,

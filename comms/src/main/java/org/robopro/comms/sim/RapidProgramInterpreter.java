@@ -9,6 +9,7 @@ import org.robopro.programs.Move;
 import org.robopro.programs.rapid.ParsedModule;
 import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.rapid.SourcePos;
+import org.robopro.programs.sim.IoStep;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
@@ -40,7 +41,7 @@ public final class RapidProgramInterpreter implements ProgramInterpreter {
         List<ProgramStep> steps;
         try {
             ParsedModule parsed = RapidParser.parseDetailed(text, name);
-            steps = MotionInterpreter.of(parsed).run();
+            steps = MotionInterpreter.of(parsed).strict().run();
         } catch (InputException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }
@@ -52,6 +53,8 @@ public final class RapidProgramInterpreter implements ProgramInterpreter {
     private static Step step(ProgramStep ps, String name, int dof) {
         int line = ps.source().map(SourcePos::line).orElse(0);
         if (ps instanceof WaitStep w) return Step.wait(w.seconds(), w.label(), line);
+        // I/O and process instructions: the simulated controller has no I/O, so they take no time.
+        if (ps instanceof IoStep io) return Step.wait(0, io.label(), line);
         MoveStep m = (MoveStep) ps;
         String at = name + ":" + line + ": " + m.label() + ": ";
         if (!m.tool().robhold())

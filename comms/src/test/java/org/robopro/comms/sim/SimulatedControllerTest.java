@@ -239,4 +239,21 @@ class SimulatedControllerTest {
         assertEquals(3, c.motionsExecuted());
         assertEquals(0, c.readPose().distanceTo(Pose.translation(0.95, 0, 1.0)), 1e-9);
     }
+
+    @Test
+    void startProgram_weldingWithIo_runsEveryMotion() throws Exception {
+        SimulatedController c = controller(0);
+        String prog = "MODULE weld\n  CONST robtarget p1 := [[800,0,1000],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n"
+                + "  PERS seamdata sm1:=[0.5,0.5];\n  PERS welddata wd1:=[6,0];\n  VAR triggdata gas;\n"
+                + "  PROC main()\n    SetDO doClamp, 1;\n    WaitDI diClamped, 1;\n    TriggIO gas, 0.1\\Time\\DOp:=doGas, 1;\n"
+                + "    TriggL Offs(p1, 0, 0, 20), v200, gas, fine, tool0;\n"
+                + "    ArcLStart p1, v100, sm1, wd1, fine, tool0;\n    ArcLEnd Offs(p1, 50, 0, 0), v100, sm1, wd1, fine, tool0;\n"
+                + "    PulseDO doDone;\n  ENDPROC\nENDMODULE\n";
+        c.downloadProgram("weld", prog.getBytes(StandardCharsets.UTF_8));
+        c.startProgram(0, "weld");
+        c.awaitIdle(Duration.ofSeconds(10));
+        assertEquals(ControllerStatus.State.IDLE, c.readStatus().state(), String.valueOf(c.readStatus()));
+        assertEquals(3, c.motionsExecuted());
+        assertEquals(0, c.readPose().distanceTo(Pose.translation(0.85, 0, 1.0)), 1e-9);
+    }
 }

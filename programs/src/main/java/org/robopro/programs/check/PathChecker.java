@@ -2,6 +2,8 @@ package org.robopro.programs.check;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -12,7 +14,10 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
 import org.robopro.programs.Move;
+import org.robopro.models.SignalDescription;
+import org.robopro.programs.sim.IoStep;
 import org.robopro.programs.sim.MoveStep;
+import org.robopro.programs.sim.Simulation;
 import org.robopro.programs.sim.ProgramStep;
 import org.robopro.programs.sim.WaitStep;
 
@@ -90,15 +95,32 @@ public final class PathChecker {
     public PathChecker(KinematicModel model) { this(model, Options.DEFAULT); }
 
     /** Checks the steps in order and returns every problem found and the cycle-time estimate. */
-    public CheckReport check(List<ProgramStep> steps) {
+    public CheckReport check(List<ProgramStep> steps) { return check(new Simulation(steps, List.of()), List.of()); }
+
+    /**
+     * Checks a simulation's steps in order against the robot and places its I/O on the cycle's
+     * time line with the cell's {@code signals} (inputs constant, scripted or following an
+     * output); the simulation's notices become NOT_SIMULATED warnings.
+     */
+    public CheckReport check(Simulation sim, List<SignalDescription> signals) {
         List<Problem> problems = new ArrayList<>();
+        for (Simulation.Notice n : sim.notices())
+            problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.NOT_SIMULATED, n.step(), "", n.source(), n.message()));
         List<CheckReport.StepResult> results = new ArrayList<>();
+        IoTimeline io = new IoTimeline(signals);
         double[] q = opt.qStart().map(double[]::clone).orElse(null);
         double total = 0;
-        for (ProgramStep s : steps) {
+        double moveStart = 0, moveDuration = 0, moveLength = 0;
+        for (ProgramStep s : sim.steps()) {
             if (s instanceof WaitStep w) {
                 total += w.seconds();
                 results.add(new CheckReport.StepResult(w.label(), "", w.seconds(), q == null ? null : q.clone(), 0));
+                continue;
+            }
+            if (s instanceof IoStep st) {
+                double d = io.step(st, total, moveStart, moveDuration, moveLength, problems);
+                total += d;
+                results.add(new CheckReport.StepResult(st.label(), "", d, q == null ? null : q.clone(), 0));
                 continue;
             }
             MoveStep m = (MoveStep) s;
@@ -107,17 +129,130 @@ public final class PathChecker {
                 case MOVE_J -> joint(m, q, problems);
                 case MOVE_L, MOVE_C -> cartesian(m, q, problems);
             };
-            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points);
+            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points, o.lengthM);
+            moveStart = total;
+            moveDuration = o.duration;
+            moveLength = o.lengthM;
             total += o.duration;
             results.add(new CheckReport.StepResult(m.label(), m.targetName(), o.duration, o.q == null ? null : o.q.clone(), o.points));
             if (o.q != null) q = o.q;
         }
+        io.end(total);
         String assumptions = String.format(Locale.ROOT, "trapezoidal profiles reaching full speed in %.2f s, stop at every target, "
                 + "joint speed limits from the robot description", opt.rampS());
-        return new CheckReport(problems, results, total, assumptions);
+        return new CheckReport(problems, results, total, assumptions, io.events(), io.arcTime);
     }
 
-    private record Outcome(double[] q, double duration, int points) { }
+    /**
+     * The I/O state over the cycle's time: what the program set (with delays and pulses),
+     * triggers placed along their motion, inputs from the cell's table (constant, scripted, or
+     * following an output after a delay), and the welding arc.
+     */
+    private static final class IoTimeline {
+        final Map<String, SignalDescription> table = new HashMap<>();
+        /** Changes by lower-case signal: {time, value}, in the order they were made. */
+        final Map<String, List<double[]>> changes = new HashMap<>();
+        final List<CheckReport.IoEvent> events = new ArrayList<>();
+        double arcOnAt = Double.NaN, arcTime;
+
+        IoTimeline(List<SignalDescription> signals) {
+            for (SignalDescription d : signals) {
+                table.put(d.key(), d);
+                for (SignalDescription.Change c : d.script()) changes.computeIfAbsent(d.key(), k -> new ArrayList<>()).add(new double[] {c.timeS(), c.value()});
+            }
+        }
+
+        void set(String signal, double t, double v, IoStep s) {
+            String key = signal.toLowerCase(Locale.ROOT);
+            changes.computeIfAbsent(key, k -> new ArrayList<>()).add(new double[] {t, v});
+            events.add(new CheckReport.IoEvent(t, signal, v, s.label(), s.source()));
+            for (SignalDescription d : table.values())
+                if (d.follows().equalsIgnoreCase(signal)) set(d.name(), t + d.delayS(), v, s);
+        }
+
+        double valueAt(String key, double t) {
+            SignalDescription d = table.get(key);
+            double v = d == null ? 0 : d.value(), at = Double.NEGATIVE_INFINITY;
+            for (double[] c : changes.getOrDefault(key, List.of()))
+                if (c[0] <= t && c[0] >= at) { at = c[0]; v = c[1]; }
+            return v;
+        }
+
+        /** The first time from {@code t} on when the signal has value {@code v}; NaN when never. */
+        double firstTime(String key, double t, double v) {
+            if (valueAt(key, t) == v) return t;
+            double best = Double.NaN;
+            for (double[] c : changes.getOrDefault(key, List.of()))
+                if (c[0] > t && (Double.isNaN(best) || c[0] < best) && valueAt(key, c[0]) == v) best = c[0];
+            return best;
+        }
+
+        /** Places one I/O step at time {@code t}; returns how long the program waits there, s. */
+        double step(IoStep s, double t, double moveStart, double moveDuration, double moveLength, List<Problem> problems) {
+            switch (s.kind()) {
+                case SET -> set(s.signal(), t + s.seconds(), s.value(), s);
+                case PULSE -> {
+                    set(s.signal(), t, 1, s);
+                    set(s.signal(), t + s.seconds(), 0, s);
+                }
+                case TRIGGER -> {
+                    IoStep.Trigger tr = s.trigger().orElseThrow();
+                    double end = moveStart + moveDuration;
+                    double dt = tr.time() ? s.seconds()
+                            : moveLength > 0 ? moveDuration * Math.min(1, s.seconds() / moveLength) : 0;
+                    double at = tr.fromStart() ? moveStart + Math.min(dt, moveDuration) : Math.max(moveStart, end - dt);
+                    set(s.signal(), at, s.value(), s);
+                }
+                case WAIT_SIGNAL -> {
+                    String key = s.signal().toLowerCase(Locale.ROOT);
+                    double when = firstTime(key, t, s.value());
+                    String v = s.value() == 1 ? "1" : s.value() == 0 ? "0" : String.valueOf(s.value());
+                    if (Double.isNaN(when)) {
+                        problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.IO_WAIT, s.label(), "", s.source(),
+                                s.instruction() + " waits for " + s.signal() + " = " + v + ", but nothing sets it (the program does not, the cell's "
+                                        + "signal table neither scripts it nor has it follow an output): on the controller this waits "
+                                        + (Double.isFinite(s.seconds()) ? "until \\MaxTime (" + s.seconds() + " s) raises ERR_WAIT_MAXTIME" : "forever")
+                                        + "; counted as " + (Double.isFinite(s.seconds()) ? s.seconds() : 0) + " s"));
+                        return Double.isFinite(s.seconds()) ? s.seconds() : 0;
+                    }
+                    double wait = when - t;
+                    if (wait > s.seconds()) {
+                        problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.IO_WAIT, s.label(), "", s.source(),
+                                String.format(Locale.ROOT, "%s = %s arrives after %.3f s, later than \\MaxTime %.3f s (ERR_WAIT_MAXTIME)",
+                                        s.signal(), v, wait, s.seconds())));
+                        return s.seconds();
+                    }
+                    return wait;
+                }
+                case WAIT_CONDITION -> problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.IO_WAIT, s.label(), "", s.source(),
+                        "WaitUntil " + s.text() + " is false and nothing in the simulation changes it: assumed true at once"));
+                case ARC_ON -> {
+                    if (Double.isNaN(arcOnAt)) arcOnAt = t;
+                    events.add(new CheckReport.IoEvent(t, "arc", 1, s.label(), s.source()));
+                }
+                case ARC_OFF -> {
+                    if (!Double.isNaN(arcOnAt)) arcTime += t - arcOnAt;
+                    arcOnAt = Double.NaN;
+                    events.add(new CheckReport.IoEvent(t, "arc", 0, s.label(), s.source()));
+                }
+            }
+            return 0;
+        }
+
+        void end(double t) {
+            if (!Double.isNaN(arcOnAt)) arcTime += t - arcOnAt;
+        }
+
+        List<CheckReport.IoEvent> events() {
+            List<CheckReport.IoEvent> out = new ArrayList<>(events);
+            out.sort(java.util.Comparator.comparingDouble(CheckReport.IoEvent::timeS));
+            return out;
+        }
+    }
+
+    private record Outcome(double[] q, double duration, int points, double lengthM) {
+        Outcome(double[] q, double duration, int points) { this(q, duration, points, 0); }
+    }
 
     private Outcome absJ(MoveStep m, double[] q, List<Problem> problems) {
         double[] all = m.q().orElseThrow();
@@ -142,8 +277,9 @@ public final class PathChecker {
         }
         double[] target = s.get().q();
         checkSingularity(m, target, problems);
-        double t = q == null ? 0 : Math.max(jointTime(q, target, m), cartesianTime(model.flange(q).times(m.flangeTtcp()), m.baseTtcp().get(), 0, m));
-        return new Outcome(target, t, 1);
+        Pose from = q == null ? null : model.flange(q).times(m.flangeTtcp());
+        double t = q == null ? 0 : Math.max(jointTime(q, target, m), cartesianTime(from, m.baseTtcp().get(), 0, m));
+        return new Outcome(target, t, 1, from == null ? 0 : from.distanceTo(m.baseTtcp().get()));
     }
 
     private Outcome cartesian(MoveStep m, double[] q, List<Problem> problems) {
@@ -232,7 +368,7 @@ public final class PathChecker {
                     Problem.Kind.CONFIGURATION_MISMATCH, m.label(), m.targetName(), m.source(),
                     "the path ends in configuration " + confText(reached) + ", the target asks for " + confText(conf)));
         double t = Math.max(cartesianTime(tcpStart, tcpEnd, length, m), jointLimitedTime + opt.rampS());
-        return new Outcome(prev, t, n);
+        return new Outcome(prev, t, n, length);
     }
 
     /** Trapezoid time of the TCP path (length m, or the straight distance when 0) and of the reorientation. */

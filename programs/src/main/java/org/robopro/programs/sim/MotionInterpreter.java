@@ -9,8 +9,10 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import java.util.Set;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.InputException;
+import org.robopro.models.SignalDescription;
 import org.robopro.programs.AstItem;
 import org.robopro.programs.AstStatement;
 import org.robopro.programs.Comment;
@@ -58,6 +60,8 @@ public final class MotionInterpreter {
     public static final int MAX_STEPS = 1_000_000;
     /** Default bound on executed statements per run. */
     public static final int MAX_STATEMENTS = 200_000;
+    /** RAPID functions reading a signal's value. */
+    private static final Set<String> SIGNAL_READS = Set.of("DINPUT", "DOUTPUT", "AINPUT", "AOUTPUT", "GINPUT", "GOUTPUT", "TESTDI");
 
     private final RapidModule module;
     private final List<RapidModule> libraries;
@@ -68,9 +72,16 @@ public final class MotionInterpreter {
     private final int maxStatements;
     /** Where the robot stands when the run starts (CJointT before any move); null: unknown. */
     private final JointTarget startJoints;
+    /** The cell's I/O signals (empty: every signal a program names is taken as it comes, inputs at 0). */
+    private final List<SignalDescription> signals;
+    /** Unknown instructions are errors (a controller refuses such a program) instead of notices. */
+    private final boolean strict;
 
     private MotionInterpreter(RapidModule module, List<RapidModule> libraries, String file, Map<Statement, SourcePos> positions,
-                              List<ParsedAst> asts, int maxStatements, JointTarget startJoints) {
+                              List<ParsedAst> asts, int maxStatements, JointTarget startJoints, List<SignalDescription> signals,
+                              boolean strict) {
+        this.signals = List.copyOf(signals);
+        this.strict = strict;
         this.module = module;
         this.libraries = List.copyOf(libraries);
         this.file = file;
@@ -82,13 +93,13 @@ public final class MotionInterpreter {
 
     /** An interpreter of {@code module}; {@code libraries} provide data declared elsewhere (e.g. tools in user.sys). */
     public static MotionInterpreter of(RapidModule module, RapidModule... libraries) {
-        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), List.of(), MAX_STATEMENTS, null);
+        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), List.of(), MAX_STATEMENTS, null, List.of(), false);
     }
 
     /** An interpreter of a parsed file: errors name the file, line and column. */
     public static MotionInterpreter of(ParsedModule parsed, RapidModule... libraries) {
         return new MotionInterpreter(parsed.module(), List.of(libraries), parsed.file(), positions(List.of(parsed)),
-                List.of(parsed.ast()), MAX_STATEMENTS, null);
+                List.of(parsed.ast()), MAX_STATEMENTS, null, List.of(), false);
     }
 
     /**
@@ -101,7 +112,7 @@ public final class MotionInterpreter {
         all.add(main);
         all.addAll(others);
         return new MotionInterpreter(main.module(), others.stream().map(ParsedModule::module).toList(), main.file(), positions(all),
-                all.stream().map(ParsedModule::ast).toList(), MAX_STATEMENTS, null);
+                all.stream().map(ParsedModule::ast).toList(), MAX_STATEMENTS, null, List.of(), false);
     }
 
     private static Map<Statement, SourcePos> positions(List<ParsedModule> parsed) {
@@ -115,7 +126,7 @@ public final class MotionInterpreter {
     /** The same interpreter with another bound on executed statements. */
     public MotionInterpreter withMaxStatements(int max) {
         if (max < 1) throw new IllegalArgumentException("max statements must be >= 1: " + max);
-        return new MotionInterpreter(module, libraries, file, positions, asts, max, startJoints);
+        return new MotionInterpreter(module, libraries, file, positions, asts, max, startJoints, signals, strict);
     }
 
     /**
@@ -124,8 +135,28 @@ public final class MotionInterpreter {
      */
     public MotionInterpreter withStartJoints(JointTarget joints) {
         if (joints == null) throw new IllegalArgumentException("start joints must not be null");
-        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, joints);
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, joints, signals, strict);
     }
+
+    /**
+     * The same interpreter with the cell's I/O signal table: signals read in conditions start at
+     * their table value; a signal the program names that is not in the table is a notice.
+     */
+    public MotionInterpreter withSignals(List<SignalDescription> table) {
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, table, strict);
+    }
+
+    /**
+     * The same interpreter refusing what it does not know, as a controller refuses to start a
+     * program naming a routine it does not have: an unknown instruction is an
+     * {@link InputException} "not simulated: X at line:col" instead of a notice.
+     */
+    public MotionInterpreter strict() {
+        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, signals, true);
+    }
+
+    /** The signal table this interpreter runs with. */
+    public List<SignalDescription> signals() { return signals; }
 
     /** The steps of running {@code main}. */
     public List<ProgramStep> run() { return run("main"); }
@@ -143,7 +174,7 @@ public final class MotionInterpreter {
         } catch (ExitSignal done) {
             // EXIT / ExitCycle: the program ends here
         }
-        return new Simulation(r.out, r.log);
+        return new Simulation(r.out, r.log, r.notices);
     }
 
     /** Only the motions of running {@code entry}. */
@@ -191,6 +222,18 @@ public final class MotionInterpreter {
     private final class Run {
         final List<ProgramStep> out = new ArrayList<>();
         final List<String> log = new ArrayList<>();
+        final List<Simulation.Notice> notices = new ArrayList<>();
+        /** Instructions already reported as not simulated (each once). */
+        final java.util.Set<String> noticed = new java.util.HashSet<>();
+        /** Call sites and loop iterations leading to the running statement, outermost first. */
+        final java.util.ArrayDeque<String> ctx = new java.util.ArrayDeque<>();
+        /** The cell's signals by lower-case name, and the value each has as far as the program can tell. */
+        final Map<String, SignalDescription> table = new HashMap<>();
+        final Map<String, Double> signalValues = new HashMap<>();
+        final Map<String, String> signalNames = new HashMap<>();
+        /** TriggIO/TriggEquip definitions by lower-case triggdata name. */
+        final Map<String, List<IoStep>> triggers = new HashMap<>();
+        boolean arcOn;
         final Map<String, Var> globals = new HashMap<>();
         final Map<String, List<Values.FieldDef>> records = new HashMap<>(Values.BUILTIN);
         final Map<String, String> aliases = new HashMap<>();
@@ -203,6 +246,11 @@ public final class MotionInterpreter {
         int depth;
 
         Run() {
+            for (SignalDescription d : signals) {
+                table.put(d.key(), d);
+                signalValues.put(d.key(), d.value());
+                signalNames.put(d.key(), d.name());
+            }
             if (startJoints != null) {
                 currentJoint = new Typed(startJoints);
                 lastJointTarget = currentJoint;
@@ -234,6 +282,18 @@ public final class MotionInterpreter {
         }
 
         Object routine(String name) { return routines.get(Values.lower(name)); }
+
+        String context() { return ctx.isEmpty() ? "" : String.join(" > ", ctx); }
+
+        String stepLabel(String proc, int index, String what) {
+            String c = context();
+            return (c.isEmpty() ? "" : c + " > ") + proc + "#" + (index + 1) + " " + what;
+        }
+
+        /** Reports {@code message} once per {@code key} (e.g. once per unknown instruction). */
+        void notice(String key, String step, Object at, String message) {
+            if (noticed.add(Values.lower(key))) notices.add(new Simulation.Notice(step, source(at), message));
+        }
 
         String base(String type) {
             String t = Values.lower(type);
@@ -436,7 +496,7 @@ public final class MotionInterpreter {
                 remember(step);
                 out.add(step);
             } else if (s instanceof WaitTime w) {
-                out.add(new WaitStep(proc, index, Optional.ofNullable(positions.get(s)), w.seconds()));
+                out.add(new WaitStep(proc, index, Optional.ofNullable(positions.get(s)), w.seconds(), context()));
             } else if (s instanceof ProcCall c) {
                 callNamed(c.procedure(), List.of(), f, s, proc, index);
             } else if (s instanceof AstStatement a) {
@@ -464,6 +524,16 @@ public final class MotionInterpreter {
             }
         }
 
+        /** A branch of an IF or TEST at statement {@code index}: its statements are labelled inside that statement. */
+        void nested(List<RapidAst.Stmt> body, Frame f, String proc, int index) {
+            ctx.addLast(proc + "#" + (index + 1));
+            try {
+                execAstList(body, f);
+            } finally {
+                ctx.removeLast();
+            }
+        }
+
         /** One syntax-tree statement; {@code at} locates it, {@code index} is its place in the procedure body for step labels. */
         void exec(RapidAst.Stmt s, Frame f, Object at, String proc, int index) {
             if (s instanceof RapidAst.CommentLine || s instanceof RapidAst.Label) return;
@@ -480,10 +550,10 @@ public final class MotionInterpreter {
                 return;
             }
             if (s instanceof RapidAst.If i) {
-                if (bool(eval(i.condition(), f), i.condition())) { execAstList(i.then(), f); return; }
+                if (bool(eval(i.condition(), f), i.condition())) { nested(i.then(), f, proc, index); return; }
                 for (RapidAst.ElseIf e : i.elseIfs())
-                    if (bool(eval(e.condition(), f), e.condition())) { execAstList(e.body(), f); return; }
-                if (i.otherwise() != null) execAstList(i.otherwise(), f);
+                    if (bool(eval(e.condition(), f), e.condition())) { nested(e.body(), f, proc, index); return; }
+                if (i.otherwise() != null) nested(i.otherwise(), f, proc, index);
                 return;
             }
             if (s instanceof RapidAst.CompactIf ci) {
@@ -491,10 +561,16 @@ public final class MotionInterpreter {
                 return;
             }
             if (s instanceof RapidAst.While w) {
+                int pass = 0;
                 while (bool(eval(w.condition(), f), w.condition())) {
                     lastLoop = at;
                     tick(at);
-                    execAstList(w.body(), f);
+                    ctx.addLast(proc + "#" + (index + 1) + "[pass " + (++pass) + "]");
+                    try {
+                        execAstList(w.body(), f);
+                    } finally {
+                        ctx.removeLast();
+                    }
                 }
                 return;
             }
@@ -509,7 +585,12 @@ public final class MotionInterpreter {
                         v.value = x;
                         lastLoop = at;
                         tick(at);
-                        execAstList(fo.body(), f);
+                        ctx.addLast(proc + "#" + (index + 1) + "[" + fo.variable() + "=" + fmt(x) + "]");
+                        try {
+                            execAstList(fo.body(), f);
+                        } finally {
+                            ctx.removeLast();
+                        }
                     }
                 } finally {
                     if (saved != null) f.vars.put(Values.lower(fo.variable()), saved);
@@ -521,8 +602,8 @@ public final class MotionInterpreter {
                 Object v = eval(t.value(), f);
                 for (RapidAst.Case c : t.cases())
                     for (RapidAst.Expr e : c.values())
-                        if (same(v, eval(e, f))) { execAstList(c.body(), f); return; }
-                if (t.otherwise() != null) execAstList(t.otherwise(), f);
+                        if (same(v, eval(e, f))) { nested(c.body(), f, proc, index); return; }
+                if (t.otherwise() != null) nested(t.otherwise(), f, proc, index);
                 return;
             }
             if (s instanceof RapidAst.Goto g) throw new GotoSignal(g.label(), at);
@@ -537,8 +618,17 @@ public final class MotionInterpreter {
 
         void callNamed(String name, List<RapidAst.Arg> args, Frame f, Object at, String proc, int index) {
             Object r = routine(name);
-            if (r != null) { call(r, name, args, f, at, depth + 1); return; }
+            if (r != null) {
+                ctx.addLast(proc + "#" + (index + 1));
+                try {
+                    call(r, name, args, f, at, depth + 1);
+                } finally {
+                    ctx.removeLast();
+                }
+                return;
+            }
             String up = name.toUpperCase(Locale.ROOT);
+            if (io(up, name, args, f, at, proc, index)) return;
             switch (up) {
                 case "MOVEL", "MOVEJ", "MOVEC", "MOVEABSJ" -> {
                     MoveStep step = astMove(up, args, f, at, proc, index);
@@ -549,7 +639,7 @@ public final class MotionInterpreter {
                     double sec = -1;
                     for (RapidAst.Arg a : args) if (a.kind() == RapidAst.ArgKind.POSITIONAL) sec = num(eval(a.value(), f), a.value());
                     if (!(sec >= 0)) throw error(at, "WaitTime needs a time >= 0");
-                    out.add(new WaitStep(proc, index, source(at), sec));
+                    out.add(new WaitStep(proc, index, source(at), sec, context()));
                 }
                 case "TPWRITE", "TPERASE", "STOP", "BREAK", "CONFJ", "CONFL", "SINGAREA", "VELSET", "ACCSET", "PATHACCLIM",
                         "ERRWRITE", "TPSHOW", "STOPMOVE", "STARTMOVE", "CLEARPATH", "WAITROB" -> {
@@ -569,8 +659,23 @@ public final class MotionInterpreter {
                     // Nothing else runs in the simulation: a false condition would wait forever.
                     RapidAst.Expr cond = args.stream().filter(a -> a.kind() == RapidAst.ArgKind.POSITIONAL).map(RapidAst.Arg::value)
                             .findFirst().orElseThrow(() -> error(at, "WaitUntil needs a condition"));
-                    if (!bool(eval(cond, f), cond)) throw error(at, "not simulated: WaitUntil at " + where(at) + " waits for a condition that is false and nothing in the simulation changes");
-                    log.add(name + " (condition true, not simulated) at " + where(at));
+                    if (bool(eval(cond, f), cond)) {
+                        log.add(name + " (condition true, not simulated) at " + where(at));
+                    } else {
+                        // A wait for one signal is placed on the I/O time line by the path check; any other
+                        // condition cannot change in the simulation and is reported there as assumed true.
+                        String[] sv = signalCondition(cond);
+                        double max = optionalNum(args, "MAXTIME", f, Double.POSITIVE_INFINITY);
+                        setTimeFlag(args, f, at);
+                        if (sv != null) {
+                            double value = Double.parseDouble(sv[1]);
+                            out.add(ioStep(proc, index, at, IoStep.Kind.WAIT_SIGNAL, name, signal(sv[0], null, name, at, proc, index), value, max, ""));
+                            setSignal(sv[0], value);
+                        } else {
+                            out.add(ioStep(proc, index, at, IoStep.Kind.WAIT_CONDITION, name, "", 0, max,
+                                    org.robopro.programs.rapid.RapidAstWriter.expr(cond)));
+                        }
+                    }
                 }
                 case "EXITCYCLE" -> throw new ExitSignal();
                 case "INCR", "DECR", "ADD", "CLEAR" -> {
@@ -588,8 +693,213 @@ public final class MotionInterpreter {
                     };
                     assign(target, nv, f, at);
                 }
-                default -> throw error(at, "not simulated: " + name + " at " + where(at) + " (no such PROC in the module; I/O, sockets and other system instructions are not simulated)");
+                default -> {
+                    if (strict)
+                        throw error(at, "not simulated: " + name + " at " + where(at) + " (no such PROC in the module; sockets and other system instructions are not simulated)");
+                    // Kept in the program as written; the run goes on without it.
+                    notice(name, stepLabel(proc, index, name), at, "not simulated: " + name + " at " + where(at)
+                            + " (no such PROC in the module and not an instruction robopro simulates; kept as written)");
+                    log.add(name + " (not simulated) at " + where(at));
+                }
             }
+        }
+
+        private static final Set<String> ARC_PASSIVE = Set.of("ON", "WEAVE", "TRACK", "SEAMNAME", "CORR", "PREPROCESSTRACKING", "SEAM", "DECEL");
+        private static final Set<String> TRIGG_PASSIVE = Set.of("T2", "T3", "T4", "T5", "T6", "T7", "T8", "CORR", "MODE");
+
+        /** I/O, trigger and arc-welding instructions; false when {@code up} is none of them. */
+        boolean io(String up, String name, List<RapidAst.Arg> args, Frame f, Object at, String proc, int index) {
+            List<RapidAst.Arg> pos = args.stream().filter(a -> a.kind() == RapidAst.ArgKind.POSITIONAL || a.kind() == RapidAst.ArgKind.NAMED).toList();
+            switch (up) {
+                case "SETDO", "SETAO", "SETGO" -> {
+                    if (pos.size() != 2) throw error(at, name + " needs a signal and a value");
+                    SignalDescription.Type type = up.equals("SETDO") ? SignalDescription.Type.DO
+                            : up.equals("SETAO") ? SignalDescription.Type.AO : SignalDescription.Type.GO;
+                    double v = num(eval(pos.get(1).value(), f), pos.get(1).value());
+                    if (type == SignalDescription.Type.DO && v != 0 && v != 1) throw error(at, name + " sets 0 or 1, found " + fmt(v));
+                    if (!Double.isFinite(v)) throw error(at, name + " needs a finite value");
+                    double delay = optionalNum(args, "SDELAY", f, 0);
+                    if (!(delay >= 0) || !Double.isFinite(delay)) throw error(at, "\\SDelay must be a finite time >= 0");
+                    String sig = signal(signalName(pos.get(0), at), type, name, at, proc, index);
+                    out.add(ioStep(proc, index, at, IoStep.Kind.SET, name, sig, v, delay, ""));
+                    setSignal(sig, v);
+                }
+                case "SET", "RESET", "INVERTDO" -> {
+                    if (pos.size() != 1) throw error(at, name + " needs a signal");
+                    String sig = signal(signalName(pos.get(0), at), SignalDescription.Type.DO, name, at, proc, index);
+                    double v = up.equals("SET") ? 1 : up.equals("RESET") ? 0 : 1 - signalValues.getOrDefault(Values.lower(sig), 0.0);
+                    out.add(ioStep(proc, index, at, IoStep.Kind.SET, name, sig, v, 0, ""));
+                    setSignal(sig, v);
+                }
+                case "PULSEDO" -> {
+                    if (pos.size() != 1) throw error(at, name + " needs a signal");
+                    // ABB RAPID reference, PulseDO: \PLength 0.001..2000 s, default 0.2 s.
+                    double length = optionalNum(args, "PLENGTH", f, 0.2);
+                    if (!(length > 0) || !Double.isFinite(length)) throw error(at, "\\PLength must be a finite time > 0");
+                    String sig = signal(signalName(pos.get(0), at), SignalDescription.Type.DO, name, at, proc, index);
+                    out.add(ioStep(proc, index, at, IoStep.Kind.PULSE, name, sig, 1, length, ""));
+                }
+                case "WAITDI", "WAITDO" -> {
+                    if (pos.size() != 2) throw error(at, name + " needs a signal and a value");
+                    double v = num(eval(pos.get(1).value(), f), pos.get(1).value());
+                    if (v != 0 && v != 1) throw error(at, name + " waits for 0 or 1, found " + fmt(v));
+                    double max = optionalNum(args, "MAXTIME", f, Double.POSITIVE_INFINITY);
+                    String sig = signal(signalName(pos.get(0), at), up.equals("WAITDI") ? SignalDescription.Type.DI : SignalDescription.Type.DO,
+                            name, at, proc, index);
+                    setTimeFlag(args, f, at);
+                    out.add(ioStep(proc, index, at, IoStep.Kind.WAIT_SIGNAL, name, sig, v, max, ""));
+                    setSignal(sig, v);
+                }
+                case "TRIGGIO", "TRIGGEQUIP" -> {
+                    int need = up.equals("TRIGGIO") ? 3 : 4;
+                    if (pos.size() != need) throw error(at, name + " needs " + need + " arguments, found " + pos.size());
+                    String data = signalName(pos.get(0), at);
+                    double amount = num(eval(pos.get(1).value(), f), pos.get(1).value());
+                    double value = num(eval(pos.get(need - 1).value(), f), pos.get(need - 1).value());
+                    boolean time = false, start = false;
+                    String sig = null;
+                    SignalDescription.Type type = SignalDescription.Type.DO;
+                    for (RapidAst.Arg a : args) {
+                        if (a.kind() == RapidAst.ArgKind.POSITIONAL || a.kind() == RapidAst.ArgKind.NAMED) continue;
+                        String n = a.name().toUpperCase(Locale.ROOT);
+                        if (n.equals("TIME")) time = true;
+                        else if (n.equals("START")) start = true;
+                        else if (n.equals("DOP") || n.equals("GOP") || n.equals("AOP")) {
+                            sig = signalName(a, at);
+                            type = n.equals("DOP") ? SignalDescription.Type.DO : n.equals("GOP") ? SignalDescription.Type.GO : SignalDescription.Type.AO;
+                        }
+                    }
+                    if (sig == null) {
+                        notice(name + " without signal", stepLabel(proc, index, name), at, "not simulated: " + name + " at " + where(at)
+                                + " without \\DOp, \\GOp or \\AOp (a process trigger); kept as written");
+                        triggers.put(Values.lower(data), List.of());
+                        return true;
+                    }
+                    if (!(amount >= 0) || !Double.isFinite(amount)) throw error(at, name + " distance/time must be finite and >= 0");
+                    if (time && start) throw error(at, name + ": \\Time counts back from the end, it does not go with \\Start");
+                    sig = signal(sig, type, name, at, proc, index);
+                    String lag = up.equals("TRIGGEQUIP") ? "EquipLag " + fmt(num(eval(pos.get(2).value(), f), pos.get(2).value())) + " s" : "";
+                    // A definition only: it fires when a TriggL/TriggJ/TriggC names it.
+                    triggers.put(Values.lower(data), List.of(new IoStep(proc, index, source(at), context(), IoStep.Kind.TRIGGER, name, sig, value,
+                            time ? amount : amount / 1000, Optional.of(new IoStep.Trigger(start, time)), lag)));
+                }
+                case "TRIGGL", "TRIGGJ", "TRIGGC" -> {
+                    Move.Kind kind = up.equals("TRIGGL") ? Move.Kind.MOVE_L : up.equals("TRIGGJ") ? Move.Kind.MOVE_J : Move.Kind.MOVE_C;
+                    List<RapidAst.Arg> extra = new ArrayList<>();
+                    MoveStep step = motion(name, kind, 1, TRIGG_PASSIVE, args, f, at, proc, index, extra);
+                    remember(step);
+                    out.add(step);
+                    for (RapidAst.Arg a : extra) {
+                        if (a.value() == null || a.name() != null && !a.name().toUpperCase(Locale.ROOT).matches("T[2-8]")
+                                && a.kind() != RapidAst.ArgKind.POSITIONAL && a.kind() != RapidAst.ArgKind.NAMED) continue;
+                        String data = signalName(a, at);
+                        List<IoStep> defs = triggers.get(Values.lower(data));
+                        if (defs == null) {
+                            notice("trigger " + data, step.label(), at, "trigger data " + data + " is used at " + where(at)
+                                    + " before any TriggIO or TriggEquip defines it: nothing fires");
+                            continue;
+                        }
+                        for (IoStep d : defs) {
+                            out.add(new IoStep(proc, index, source(at), context(), IoStep.Kind.TRIGGER, name, d.signal(), d.value(), d.seconds(),
+                                    d.trigger(), (data + " " + d.text()).trim()));
+                            setSignal(d.signal(), d.value());
+                        }
+                    }
+                }
+                case "ARCLSTART", "ARCL", "ARCLEND", "ARCCSTART", "ARCC", "ARCCEND" -> {
+                    Move.Kind kind = up.startsWith("ARCC") ? Move.Kind.MOVE_C : Move.Kind.MOVE_L;
+                    List<RapidAst.Arg> extra = new ArrayList<>();
+                    MoveStep step = motion(name, kind, 2, ARC_PASSIVE, args, f, at, proc, index, extra);
+                    String data = extra.stream().filter(a -> a.kind() == RapidAst.ArgKind.POSITIONAL || a.kind() == RapidAst.ArgKind.NAMED)
+                            .map(a -> label(a.value())).collect(java.util.stream.Collectors.joining(", "));
+                    boolean flyingStart = extra.stream().anyMatch(a -> a.name() != null && a.name().equalsIgnoreCase("On"));
+                    boolean start = up.endsWith("START"), end = up.endsWith("END");
+                    if (flyingStart && !arcOn) {
+                        out.add(ioStep(proc, index, at, IoStep.Kind.ARC_ON, name, "", 1, 0, data));
+                        arcOn = true;
+                    }
+                    if (!start && !arcOn)
+                        notice("arc off " + where(at), step.label(), at, name + " at " + where(at) + " runs with the arc off (no ArcLStart, ArcCStart or \\On before it)");
+                    remember(step);
+                    out.add(step);
+                    if (start) {
+                        if (arcOn) notice("arc on " + where(at), step.label(), at, name + " at " + where(at) + " starts an arc that is already burning");
+                        out.add(ioStep(proc, index, at, IoStep.Kind.ARC_ON, name, "", 1, 0, data));
+                        arcOn = true;
+                    } else if (end) {
+                        out.add(ioStep(proc, index, at, IoStep.Kind.ARC_OFF, name, "", 0, 0, data));
+                        arcOn = false;
+                    }
+                }
+                default -> { return false; }
+            }
+            return true;
+        }
+
+        IoStep ioStep(String proc, int index, Object at, IoStep.Kind kind, String instruction, String signal, double value, double seconds, String text) {
+            return new IoStep(proc, index, source(at), context(), kind, instruction, signal, value, seconds, Optional.empty(), text);
+        }
+
+        /** The signal an argument names (signals are system data, not RAPID variables: never evaluated). */
+        String signalName(RapidAst.Arg a, Object at) {
+            if (a.value() instanceof RapidAst.Name n) return n.name();
+            throw error(at, "a signal name is needed, found " + (a.value() == null ? "nothing" : org.robopro.programs.rapid.RapidAstWriter.expr(a.value())));
+        }
+
+        /**
+         * Registers a signal the program uses and returns its name as the cell table writes it;
+         * one notice per signal that is not in a given table or is used against its type.
+         */
+        String signal(String name, SignalDescription.Type type, String instruction, Object at, String proc, int index) {
+            String key = Values.lower(name);
+            SignalDescription d = table.get(key);
+            if (d == null) {
+                if (!table.isEmpty())
+                    notice("signal " + key, stepLabel(proc, index, instruction), at, "signal " + name + " (" + instruction + " at " + where(at)
+                            + ") is not in the cell's signal table" + (type == null ? "" : "; taken as a " + type));
+                signalNames.putIfAbsent(key, name);
+                signalValues.putIfAbsent(key, 0.0);
+                return signalNames.get(key);
+            }
+            if (type != null && !type.input() && d.type().input())
+                notice("input " + key, stepLabel(proc, index, instruction), at, instruction + " at " + where(at) + " writes " + d.name()
+                        + ", which is an input (" + d.type() + "): the controller refuses this");
+            return d.name();
+        }
+
+        /** The program's view of a signal after it set or waited for it; inputs that follow an output take its value. */
+        void setSignal(String name, double v) {
+            String key = Values.lower(name);
+            signalValues.put(key, v);
+            for (SignalDescription d : table.values()) if (d.follows().equalsIgnoreCase(name)) signalValues.put(d.key(), v);
+        }
+
+        double optionalNum(List<RapidAst.Arg> args, String name, Frame f, double otherwise) {
+            for (RapidAst.Arg a : args)
+                if (a.kind() != RapidAst.ArgKind.POSITIONAL && a.kind() != RapidAst.ArgKind.NAMED && a.name().equalsIgnoreCase(name) && a.value() != null)
+                    return num(eval(a.value(), f), a.value());
+            return otherwise;
+        }
+
+        /** \TimeFlag:=flag: the simulation assumes the wait ends in time, so the flag is FALSE. */
+        void setTimeFlag(List<RapidAst.Arg> args, Frame f, Object at) {
+            for (RapidAst.Arg a : args)
+                if (a.kind() != RapidAst.ArgKind.POSITIONAL && a.kind() != RapidAst.ArgKind.NAMED && a.name().equalsIgnoreCase("TimeFlag")
+                        && a.value() != null)
+                    assign(a.value(), false, f, at);
+        }
+
+        /** {signal, value} of a condition "signal = value" or "DInput(signal) = value" or "TestDI(signal)"; null otherwise. */
+        String[] signalCondition(RapidAst.Expr cond) {
+            if (cond instanceof RapidAst.FuncCall fc && fc.name().equalsIgnoreCase("TestDI") && fc.args().size() == 1
+                    && fc.args().get(0).value() instanceof RapidAst.Name n)
+                return new String[] {n.name(), "1"};
+            if (!(cond instanceof RapidAst.Binary b) || !b.op().equals("=") || !(b.right() instanceof RapidAst.Num v)) return null;
+            String sig = null;
+            if (b.left() instanceof RapidAst.Name n && signalValues.containsKey(Values.lower(n.name()))) sig = n.name();
+            if (b.left() instanceof RapidAst.FuncCall fc && SIGNAL_READS.contains(fc.name().toUpperCase(Locale.ROOT)) && fc.args().size() == 1
+                    && fc.args().get(0).value() instanceof RapidAst.Name n) sig = n.name();
+            return sig == null ? null : new String[] {sig, String.valueOf(v.value())};
         }
 
         void remember(MoveStep step) {
@@ -611,7 +921,7 @@ public final class MotionInterpreter {
             Object to = ref(m.toPoint(), f, m);
             Object circ = m.circPoint().map(c -> ref(c, f, m)).orElse(null);
             return step(proc, index, m, m.kind(), m.toPoint().label(), to, m.circPoint().map(Ref::label), circ, speed, m.v(), m.t(), zone,
-                    m.z(), m.tool(), tool, wobjName, wobj);
+                    m.z(), m.tool(), tool, wobjName, wobj, m.kind().rapidName());
         }
 
         MoveStep astMove(String up, List<RapidAst.Arg> args, Frame f, Object at, String proc, int index) {
@@ -621,6 +931,17 @@ public final class MotionInterpreter {
                 case "MOVEC" -> Move.Kind.MOVE_C;
                 default -> Move.Kind.MOVE_ABS_J;
             };
+            return motion(kind.rapidName(), kind, 0, Set.of(), args, f, at, proc, index, new ArrayList<>());
+        }
+
+        /**
+         * A motion instruction whose arguments are [CirPoint,] ToPoint, Speed, {@code extras}
+         * process arguments (seam and weld data, trigger data: kept unevaluated in
+         * {@code extraOut}), Zone, Tool. Optional arguments in {@code passive} are kept in the
+         * program and do not change the motion.
+         */
+        MoveStep motion(String instruction, Move.Kind kind, int extras, Set<String> passive, List<RapidAst.Arg> args, Frame f, Object at,
+                        String proc, int index, List<RapidAst.Arg> extraOut) {
             List<RapidAst.Arg> pos = new ArrayList<>();
             OptionalDouble v = OptionalDouble.empty(), t = OptionalDouble.empty(), z = OptionalDouble.empty();
             String wobjName = "wobj0";
@@ -628,6 +949,7 @@ public final class MotionInterpreter {
             for (RapidAst.Arg a : args) {
                 if (a.kind() == RapidAst.ArgKind.POSITIONAL || a.kind() == RapidAst.ArgKind.NAMED) { pos.add(a); continue; }
                 String n = a.name().toUpperCase(Locale.ROOT);
+                if (passive.contains(n)) { extraOut.add(a); continue; }
                 switch (n) {
                     case "CONC", "NOEOFFS", "ID", "INPOS", "TLOAD" -> { }
                     case "V" -> v = OptionalDouble.of(num(eval(a.value(), f), a.value()) / 1000);
@@ -637,18 +959,24 @@ public final class MotionInterpreter {
                         wobjName = a.value() instanceof RapidAst.Name nm ? nm.name() : "*";
                         wobjV = eval(a.value(), f);
                     }
-                    default -> throw error(at, "not simulated: " + kind.rapidName() + " \\" + a.name() + " at " + where(at));
+                    default -> {
+                        if (passive.isEmpty()) throw error(at, "not simulated: " + instruction + " \\" + a.name() + " at " + where(at));
+                        notice(instruction + "\\" + a.name(), stepLabel(proc, index, instruction), at,
+                                "not simulated: " + instruction + " \\" + a.name() + " at " + where(at) + " (kept as written)");
+                    }
                 }
             }
-            int need = kind == Move.Kind.MOVE_C ? 5 : 4;
-            if (pos.size() != need) throw error(at, kind.rapidName() + " needs " + need + " arguments, found " + pos.size());
             int b = kind == Move.Kind.MOVE_C ? 1 : 0;
+            int need = b + 4 + extras;
+            if (pos.size() != need) throw error(at, instruction + " needs " + need + " arguments, found " + pos.size());
             Object circ = b == 1 ? eval(pos.get(0).value(), f) : null;
             Object to = eval(pos.get(b).value(), f);
             SpeedData speed = typed(eval(pos.get(b + 1).value(), f), "speeddata", SpeedData.class, at, label(pos.get(b + 1).value()));
-            ZoneData zone = typed(eval(pos.get(b + 2).value(), f), "zonedata", ZoneData.class, at, label(pos.get(b + 2).value()));
-            String toolName = label(pos.get(b + 3).value());
-            ToolData tool = typed(eval(pos.get(b + 3).value(), f), "tooldata", ToolData.class, at, toolName);
+            for (int k = 0; k < extras; k++) extraOut.add(pos.get(b + 2 + k));
+            int zi = b + 2 + extras;
+            ZoneData zone = typed(eval(pos.get(zi).value(), f), "zonedata", ZoneData.class, at, label(pos.get(zi).value()));
+            String toolName = label(pos.get(zi + 1).value());
+            ToolData tool = typed(eval(pos.get(zi + 1).value(), f), "tooldata", ToolData.class, at, toolName);
             WObjData wobj = wobjV == null ? WObjData.WOBJ0 : typed(wobjV, "wobjdata", WObjData.class, at, wobjName);
             if (v.isPresent() && !(v.getAsDouble() > 0 && Double.isFinite(v.getAsDouble())))
                 throw error(at, "\\V must be a finite speed > 0, got " + v.getAsDouble());
@@ -656,10 +984,10 @@ public final class MotionInterpreter {
                 throw error(at, "\\Z must be a finite zone size >= 0, got " + z.getAsDouble());
             try {
                 return step(proc, index, at, kind, label(pos.get(b).value()), to, b == 1 ? Optional.of(label(pos.get(0).value())) : Optional.empty(),
-                        circ, speed, v, t, zone, z, toolName, tool, wobjName, wobj);
+                        circ, speed, v, t, zone, z, toolName, tool, wobjName, wobj, instruction);
             } catch (IllegalArgumentException e) {
                 // A program value the data types reject (e.g. a non-finite pose): the user's input, located.
-                throw error(at, kind.rapidName() + ": " + e.getMessage());
+                throw error(at, instruction + ": " + e.getMessage());
             }
         }
 
@@ -671,7 +999,7 @@ public final class MotionInterpreter {
 
         MoveStep step(String proc, int index, Object at, Move.Kind kind, String toLabel, Object toV, Optional<String> circName, Object circV,
                       SpeedData speed, OptionalDouble v, OptionalDouble t, ZoneData zone, OptionalDouble z, String toolName, ToolData tool,
-                      String wobjName, WObjData wobj) {
+                      String wobjName, WObjData wobj, String instruction) {
             if (v.isPresent()) speed = new SpeedData(v.getAsDouble(), speed.vOri(), speed.vLeax(), speed.vReax());
             if (z.isPresent())
                 zone = new ZoneData(zone.finep(), z.getAsDouble(), Math.max(zone.pzoneOri(), z.getAsDouble()),
@@ -683,7 +1011,7 @@ public final class MotionInterpreter {
                 currentJoint = new Typed(jt);
                 return new MoveStep(proc, index, src, kind, toLabel, Optional.empty(), Optional.empty(), Optional.empty(),
                         Optional.empty(), Optional.empty(), Optional.empty(), Optional.of(jt.robax()), speed, t, zone,
-                        toolName, tool, wobjName, wobj, flangeTtcp);
+                        toolName, tool, wobjName, wobj, flangeTtcp, context(), instruction);
             }
             RobTarget to = typed(toV, "robtarget", RobTarget.class, at, toLabel);
             currentRob = new Typed(to);
@@ -697,7 +1025,7 @@ public final class MotionInterpreter {
             }
             return new MoveStep(proc, index, src, kind, toLabel, circName, Optional.of(toPoses[0]), Optional.of(toPoses[1]),
                     circFlange, circTcp, Optional.of(to.robconf()), Optional.empty(), speed, t, zone, toolName, tool, wobjName, wobj,
-                    flangeTtcp);
+                    flangeTtcp, context(), instruction);
         }
 
         /**
@@ -866,6 +1194,8 @@ public final class MotionInterpreter {
                     return v.value;
                 }
                 if (n.name().equalsIgnoreCase("pi")) return Math.PI;
+                Double sig = signalValues.get(Values.lower(n.name()));
+                if (sig != null) return sig;
                 RapidValue pre = predefined(n.name());
                 if (pre != null) return new Typed(pre);
                 if (f != null && f.optionalParams.contains(Values.lower(n.name()))) throw error(e, "optional parameter " + n.name() + " is not present");
@@ -953,6 +1283,13 @@ public final class MotionInterpreter {
                 return coerce(v, rt.returnType(), List.of(), fc);
             }
             String up = fc.name().toUpperCase(Locale.ROOT);
+            if (SIGNAL_READS.contains(up)) {
+                if (fc.args().size() != 1 || !(fc.args().get(0).value() instanceof RapidAst.Name n))
+                    throw error(fc, fc.name() + " needs one signal name");
+                String key = Values.lower(signal(n.name(), null, fc.name(), fc, f == null ? module.name() : f.routine, 0));
+                double v = signalValues.getOrDefault(key, 0.0);
+                return up.startsWith("TEST") ? (Object) (v == 1) : (Object) v;
+            }
             List<Object> pos = new ArrayList<>();
             Map<String, Object> opt = new HashMap<>();
             if (!up.equals("PRESENT"))

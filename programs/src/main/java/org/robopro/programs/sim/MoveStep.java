@@ -28,18 +28,21 @@ import org.robopro.programs.rapid.SourcePos;
  * @param time          \T: the motion's time (s)
  * @param zone          zonedata with \Z applied to the TCP zone
  * @param flangeTtcp    the tool frame in the flange (for a robot-held tool)
+ * @param context       call path and loop iteration ("main#4[i=2] > weld#3"), empty at the top level
+ * @param instruction   the instruction as written (MoveL, ArcL, TriggL, ...); {@code kind} is its geometry
  */
 public record MoveStep(String procedure, int statementIndex, Optional<SourcePos> source, Move.Kind kind,
                        String targetName, Optional<String> circName,
                        Optional<Pose> baseTflange, Optional<Pose> baseTtcp,
                        Optional<Pose> baseTflangeCirc, Optional<Pose> baseTtcpCirc,
                        Optional<ConfData> conf, Optional<double[]> q, SpeedData speed, OptionalDouble time,
-                       ZoneData zone, String toolName, ToolData tool, String wobjName, WObjData wobj, Pose flangeTtcp)
+                       ZoneData zone, String toolName, ToolData tool, String wobjName, WObjData wobj, Pose flangeTtcp,
+                       String context, String instruction)
         implements ProgramStep {
 
     @Override public Optional<double[]> q() { return q.map(double[]::clone); }
 
     @Override public String label() {
-        return procedure + "#" + (statementIndex + 1) + " " + kind.rapidName() + " " + targetName;
+        return (context.isEmpty() ? "" : context + " > ") + procedure + "#" + (statementIndex + 1) + " " + instruction + " " + targetName;
     }
 }

@@ -3,8 +3,8 @@ package org.robopro.programs.sim;
 import java.util.Optional;
 import org.robopro.programs.rapid.SourcePos;
 
-/** One step of a program run: a motion or a wait. */
-public sealed interface ProgramStep permits MoveStep, WaitStep {
+/** One step of a program run: a motion, a wait or an I/O or process instruction. */
+public sealed interface ProgramStep permits MoveStep, WaitStep, IoStep {
     /** The procedure the statement is in. */
     String procedure();
 
@@ -14,6 +14,9 @@ public sealed interface ProgramStep permits MoveStep, WaitStep {
     /** Where the statement was written, when the program came from a file. */
     Optional<SourcePos> source();
 
-    /** A human label: "main#3 MoveL p10" (procedure, statement number from 1, instruction, target). */
+    /** Call path and loop iteration leading to the statement ("main#4[i=2] > weld#3"), empty at the top level. */
+    String context();
+
+    /** A human label: "main#3 MoveL p10" (procedure, statement number from 1, instruction, target), after the context. */
     String label();
 }

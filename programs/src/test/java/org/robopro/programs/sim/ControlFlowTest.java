@@ -41,7 +41,7 @@ class ControlFlowTest {
     }
 
     @Test
-    void simulate_cellServer_stopsAtSocketCreateWithPosition() {
+    void simulate_cellServer_socketsNotSimulatedServerLoopStopsWithPosition() {
         String text;
         try (java.io.InputStream in = ControlFlowTest.class.getResourceAsStream("/org/robopro/programs/rapid/CellServer.mod")) {
             text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
@@ -52,17 +52,19 @@ class ControlFlowTest {
         // without a start position, CJointT() before any move is unknown
         InputException noStart = assertThrows(InputException.class, () -> it.simulate("main"));
         assertTrue(noStart.getMessage().contains("CJointT"), noStart.getMessage());
+        // Socket instructions are kept and passed over (each reported once); the server's WHILE TRUE is bounded.
         InputException e = assertThrows(InputException.class,
-                () -> it.withStartJoints(org.robopro.programs.JointTarget.of(0, 0, 0, 0, 0, 0)).simulate("main"));
-        assertEquals(34, e.line());
-        assertTrue(e.getMessage().contains("not simulated: SocketCreate at 34:5"), e.getMessage());
+                () -> it.withStartJoints(org.robopro.programs.JointTarget.of(0, 0, 0, 0, 0, 0)).withMaxStatements(2000).simulate("main"));
+        assertTrue(e.getMessage().contains("stopped after 2000 statements") && e.getMessage().contains("loop at 38:5"), e.getMessage());
     }
 
     @Test
-    void simulate_waitUntilFalse_stopsInsteadOfWaitingForever() {
+    void simulate_waitUntilFalse_recordedAsAWaitInsteadOfWaitingForever() {
         String text = "MODULE M\n  VAR bool ready;\n  PROC main()\n    WaitUntil ready;\n  ENDPROC\nENDMODULE\n";
-        InputException e = assertThrows(InputException.class, () -> sim(text, 100));
-        assertTrue(e.getMessage().contains("not simulated: WaitUntil at 4:5"), e.getMessage());
+        IoStep w = (IoStep) sim(text, 100).steps().get(0);
+        assertEquals(IoStep.Kind.WAIT_CONDITION, w.kind());
+        assertEquals("ready", w.text());
+        assertEquals(4, w.source().orElseThrow().line());
         Simulation ok = sim(text.replace("VAR bool ready;", "VAR bool ready := TRUE;"), 100);
         assertTrue(ok.log().get(0).startsWith("WaitUntil"), ok.log().toString());
     }
@@ -76,11 +78,18 @@ class ControlFlowTest {
     }
 
     @Test
-    void simulate_ioInstruction_notSimulatedWithPosition() {
+    void simulate_ioInstructions_recordedWithPositionUnknownOnesNoticedOnce() {
         String text = "MODULE M\n  PROC main()\n    MoveL Offs([[1,2,3],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],0,0,1), v100, z10, tool0;\n    SetDO do1, 1;\n  ENDPROC\nENDMODULE\n";
-        InputException e = assertThrows(InputException.class, () -> sim(text, 1000));
-        assertTrue(e.getMessage().contains("not simulated: SetDO at 4:5"), e.getMessage());
-        assertEquals(4, e.line());
+        Simulation s = sim(text, 1000);
+        IoStep set = (IoStep) s.steps().get(1);
+        assertEquals(IoStep.Kind.SET, set.kind());
+        assertEquals("do1", set.signal());
+        assertEquals(1.0, set.value(), 0);
+        assertEquals(4, set.source().orElseThrow().line());
+        String twice = text.replace("SetDO do1, 1;", "FOR i FROM 1 TO 3 DO\n      SpotL p, v100, gun1, tool0;\n    ENDFOR");
+        Simulation u = sim(twice, 1000);
+        assertEquals(1, u.notices().size(), u.notices().toString());
+        assertTrue(u.notices().get(0).message().contains("not simulated: SpotL at 5:7"), u.notices().toString());
     }
 
     @Test

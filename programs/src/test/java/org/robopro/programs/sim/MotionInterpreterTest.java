@@ -32,8 +32,8 @@ class MotionInterpreterTest {
         ParsedModule pm = RapidParser.parseDetailed(fixture(), "PickPlace.mod");
         List<ProgramStep> steps = MotionInterpreter.of(pm).run();
         List<String> labels = steps.stream().map(ProgramStep::label).toList();
-        assertEquals(List.of("main#1 MoveAbsJ jHome", "pick#1 MoveJ pPickAbove", "pick#3 MoveL pPick", "pick#4 WaitTime",
-                "pick#5 MoveL pPickAbove", "main#4 MoveC *", "main#5 MoveL *", "main#6 WaitTime", "main#7 MoveAbsJ jHome"), labels);
+        assertEquals(List.of("main#1 MoveAbsJ jHome", "main#2 > pick#1 MoveJ pPickAbove", "main#2 > pick#3 MoveL pPick", "main#2 > pick#4 WaitTime",
+                "main#2 > pick#5 MoveL pPickAbove", "main#4 MoveC *", "main#5 MoveL *", "main#6 WaitTime", "main#7 MoveAbsJ jHome"), labels);
         MoveStep pick = (MoveStep) steps.get(2);
         // wobjConveyor: user frame at (800,-200,400) mm turned 90 deg about z; pPick (100,50,20) mm in it.
         Vec3 tcp = pick.baseTtcp().orElseThrow().position();

@@ -5,15 +5,18 @@ import java.util.Objects;
 /**
  * One motion instruction of the workbench's program, one RAPID statement each
  * ({@link ProgramModule} maps the program 1:1 to a RAPID module): MoveJ, MoveL or MoveC to a
- * named target (MoveC through {@code via}), with speed (mm/s) and zone (mm; 0 = fine).
+ * named target (MoveC through {@code via}), or MoveAbsJ to the target's joint values (a
+ * jointtarget), with speed (mm/s) and zone (mm; 0 = fine).
  */
 public record Instruction(Type type, String target, double speedMmPerS, double zoneMm, String via) {
-    public enum Type { MOVEJ, MOVEL, MOVEC;
-        public String rapid() { return switch (this) { case MOVEJ -> "MoveJ"; case MOVEL -> "MoveL"; case MOVEC -> "MoveC"; }; }
+    public enum Type { MOVEJ, MOVEL, MOVEC, MOVEABSJ;
+        public String rapid() {
+            return switch (this) { case MOVEJ -> "MoveJ"; case MOVEL -> "MoveL"; case MOVEC -> "MoveC"; case MOVEABSJ -> "MoveAbsJ"; };
+        }
 
         public static Type ofRapid(String s) {
             for (Type t : values()) if (t.rapid().equalsIgnoreCase(s.trim())) return t;
-            throw new IllegalArgumentException("expected MoveJ, MoveL or MoveC, got " + s);
+            throw new IllegalArgumentException("expected MoveJ, MoveL, MoveC or MoveAbsJ, got " + s);
         }
     }
 

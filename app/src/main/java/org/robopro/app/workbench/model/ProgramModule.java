@@ -36,15 +36,18 @@ import org.robopro.programs.sim.WaitStep;
  * <p>To RAPID, 1:1: the mounted tool is a {@code PERS tooldata}, each work object used by a
  * target a {@code PERS wobjdata}, each target a {@code CONST robtarget} in its work object's
  * frame with the confdata of the IK solution the workbench uses for it (solved next to the
- * joints it was taught at), each instruction one {@code MoveJ/MoveL/MoveC} statement of
+ * joints it was taught at) — a target only MoveAbsJ goes to is a {@code CONST jointtarget} of its
+ * joints instead — each instruction one {@code MoveJ/MoveL/MoveC/MoveAbsJ} statement of
  * {@code PROC main} (statement k is instruction k). The RAPID world frame is the robot base
  * (as the programs module's interpreter takes it): work object user frames are written as
  * {@code baseTuser = worldTbase^-1 worldTuser}.
  *
  * <p>From RAPID: the module's {@code main} is run by the interpreter (procedure calls inlined),
- * each motion becomes an instruction; named robtargets keep their names, inline ones get fresh
- * names; MoveAbsJ becomes a MoveJ to the target its joints reach; waits are dropped. What was
- * changed is listed in {@link Imported#notes()}.
+ * each motion becomes an instruction; a target or work object equal in value to one the cell
+ * has already (same frame, same pose) is that one, so importing twice adds nothing; named
+ * robtargets and jointtargets keep their names, inline ones get fresh names; MoveAbsJ stays
+ * MoveAbsJ (its target holds the joints); waits are dropped. What was changed is listed in
+ * {@link Imported#notes()}.
  */
 public final class ProgramModule {
     private ProgramModule() { }
@@ -64,6 +67,11 @@ public final class ProgramModule {
         Map<String, WorkObject> wobjs = new LinkedHashMap<>();
         for (WorkObject w : m.workObjects()) wobjs.put(w.name(), w);
         List<String> declared = new ArrayList<>();
+        java.util.Set<String> absJ = new java.util.HashSet<>(), cartesian = new java.util.HashSet<>();
+        for (Instruction i : program) {
+            (i.type() == Instruction.Type.MOVEABSJ ? absJ : cartesian).add(i.target());
+            if (i.via() != null) cartesian.add(i.via());
+        }
         for (Target t : m.targets())
             if (!t.wobj().equalsIgnoreCase(Target.WOBJ0) && !declared.contains(t.wobj())) {
                 WorkObject w = wobjs.get(t.wobj());
@@ -72,6 +80,10 @@ public final class ProgramModule {
                 b.pers(w.name(), new WObjData(false, true, "", RapidPose.of(worldTbase.inverse().times(w.worldTuser())), RapidPose.IDENTITY));
             }
         for (Target t : m.targets()) {
+            if (absJ.contains(t.name()) && !cartesian.contains(t.name())) {
+                b.constant(t.name(), jointTarget(t));
+                continue;
+            }
             Pose worldTuser = t.wobj().equalsIgnoreCase(Target.WOBJ0) ? Pose.IDENTITY : wobjs.get(t.wobj()).worldTuser();
             b.constant(t.name(), RobTarget.of(worldTuser.inverse().times(t.worldTtcp()), confUsed(m, k, t)));
         }
@@ -85,10 +97,18 @@ public final class ProgramModule {
                 case MOVEL -> Move.moveL(ref, speed(i.speedMmPerS()), zone(i.zoneMm()), tool.name(), wobj);
                 case MOVEC -> Move.moveC(circPoint(m, k, wobjs, i.via(), to.wobj()), ref, speed(i.speedMmPerS()), zone(i.zoneMm()),
                         tool.name(), wobj);
+                // A target also reached by Cartesian moves is a robtarget by its name: its joints go inline.
+                case MOVEABSJ -> Move.moveAbsJ(cartesian.contains(i.target()) ? Ref.inline(jointTarget(to)) : Ref.to(i.target()),
+                        speed(i.speedMmPerS()), zone(i.zoneMm()), tool.name(), wobj);
             });
         }
         b.procedure("main", body);
         return b.build();
+    }
+
+    /** A target's joints as a jointtarget (six robot axes; a robot with fewer joints writes 0 for the rest). */
+    static org.robopro.programs.JointTarget jointTarget(Target t) {
+        return org.robopro.programs.JointTarget.of(java.util.Arrays.copyOf(t.qTaught(), 6));
     }
 
     /**
@@ -155,7 +175,10 @@ public final class ProgramModule {
         List<String> notes = new ArrayList<>();
         Map<String, WorkObject> wobjs = new LinkedHashMap<>();
         for (WorkObject w : m.workObjects()) wobjs.put(w.name(), w);
+        // The cell's targets come first: an imported target equal to one of them is that one.
         Map<String, Target> targets = new LinkedHashMap<>();
+        for (Target t : m.targets()) targets.put(t.name(), t);
+        Map<String, String> wobjRenamed = new LinkedHashMap<>();
         List<Instruction> program = new ArrayList<>();
         Tool tool = null;
         double[] seed = m.q();
@@ -163,7 +186,7 @@ public final class ProgramModule {
         int waits = 0;
         for (ProgramStep s : steps) {
             if (s instanceof WaitStep) { waits++; continue; }
-            MoveStep mv = (MoveStep) s;
+            if (!(s instanceof MoveStep mv)) continue; // I/O and process instructions have no workbench instruction
             if (tool == null) {
                 Pose tcp = mv.tool().tframe().toPose();
                 Tool cur = m.tool();
@@ -175,19 +198,20 @@ public final class ProgramModule {
             }
             String wobj = Target.WOBJ0;
             if (!mv.wobjName().equalsIgnoreCase("wobj0")) {
-                wobj = mv.wobjName();
                 Pose worldTuser = worldTbase.times(mv.wobj().uframe().toPose()).times(mv.wobj().oframe().toPose());
-                wobjs.put(wobj, new WorkObject(wobj, worldTuser));
+                wobj = workObject(wobjs, mv.wobjName(), worldTuser, wobjRenamed, notes);
             }
             double speed = Math.max(1e-3, Units.mToMm(mv.speed().vTcp()));
             double zone = mv.zone().finep() ? 0 : Units.mToMm(mv.zone().pzoneTcp());
             if (mv.kind() == Move.Kind.MOVE_ABS_J) {
                 double[] q = java.util.Arrays.copyOf(mv.q().orElseThrow(), k.dof());
-                Pose worldTtcp = worldTbase.times(k.flange(q)).times(mv.flangeTtcp());
-                String name = uniqueName(targets, mv.targetName(), fresh++);
-                targets.put(name, new Target(name, worldTtcp, q, k.confOf(q), wobj));
-                program.add(new Instruction(Instruction.Type.MOVEJ, name, speed, zone));
-                notes.add(mv.label() + ": MoveAbsJ imported as MoveJ to " + name);
+                Target same = sameJoints(targets, mv.targetName(), q);
+                if (same == null) {
+                    Pose worldTtcp = worldTbase.times(k.flange(q)).times(mv.flangeTtcp());
+                    same = new Target(uniqueName(targets, mv.targetName(), fresh++), worldTtcp, q, k.confOf(q), wobj);
+                    targets.put(same.name(), same);
+                }
+                program.add(new Instruction(Instruction.Type.MOVEABSJ, same.name(), speed, zone));
                 seed = q;
                 continue;
             }
@@ -216,15 +240,55 @@ public final class ProgramModule {
         return new Imported(parsed.module().name(), tool, List.copyOf(wobjs.values()), List.copyOf(targets.values()), program, notes);
     }
 
+    /** Poses closer than this (m, rad) are the same target or work object frame. */
+    static final double SAME_POSE = 1e-6;
+
+    private static boolean samePose(Pose a, Pose b) { return a.distanceTo(b) < SAME_POSE && a.angleTo(b) < SAME_POSE; }
+
     /**
-     * A target for a robtarget reached at {@code worldTtcp}: the same name when it is new or the
-     * same pose (a target used twice), a fresh name otherwise; joints from IK with the target's
+     * The name an imported work object goes by: the cell's work object with the same frame (any
+     * name), else its own name (made unique when the cell uses it for another frame).
+     */
+    private static String workObject(Map<String, WorkObject> wobjs, String name, Pose worldTuser, Map<String, String> renamed,
+                                     List<String> notes) {
+        for (WorkObject w : wobjs.values()) {
+            if (!samePose(w.worldTuser(), worldTuser)) continue;
+            if (!w.name().equals(name) && renamed.put(name, w.name()) == null)
+                notes.add("work object " + name + " is the cell's " + w.name() + " (same frame)");
+            return w.name();
+        }
+        String n = name;
+        for (int i = 2; wobjs.containsKey(n); i++) n = name + "_" + i;
+        if (!n.equals(name)) notes.add("work object " + name + " differs from the cell's " + name + ": imported as " + n);
+        wobjs.put(n, new WorkObject(n, worldTuser));
+        return n;
+    }
+
+    /** A known target with these joints: the named one first, else any with the same joints (MoveAbsJ twice to home). */
+    private static Target sameJoints(Map<String, Target> targets, String name, double[] q) {
+        Target named = targets.get(name);
+        if (named != null && sameJoints(named.qTaught(), q)) return named;
+        for (Target t : targets.values()) if (sameJoints(t.qTaught(), q)) return t;
+        return null;
+    }
+
+    private static boolean sameJoints(double[] a, double[] b) {
+        if (a.length != b.length) return false;
+        for (int i = 0; i < a.length; i++) if (Math.abs(a[i] - b[i]) > SAME_POSE) return false;
+        return true;
+    }
+
+    /**
+     * A target for a robtarget reached at {@code worldTtcp}: a known target with the same pose and
+     * work object (the named one first: a target used twice, or imported again), else a new one
+     * under its own name (a fresh name when that is taken); joints from IK with the target's
      * confdata (falling back to the solution next to the previous target).
      */
     private static Target target(Optional<InverseKinematics> ik, Map<String, Target> targets, String name,
                                  Pose worldTtcp, Pose baseTflange, ConfData conf, double[] seed, String wobj, int fresh) {
         Target same = targets.get(name);
-        if (same != null && same.worldTtcp().distanceTo(worldTtcp) < 1e-9 && same.worldTtcp().angleTo(worldTtcp) < 1e-9) return same;
+        if (same != null && samePose(same.worldTtcp(), worldTtcp) && same.wobj().equals(wobj)) return same;
+        for (Target t : targets.values()) if (samePose(t.worldTtcp(), worldTtcp) && t.wobj().equals(wobj)) return t;
         double[] q = null;
         if (ik.isPresent()) {
             q = ik.get().solveWithConf(baseTflange, conf).map(IkSolution::q).orElse(null);

@@ -6,15 +6,31 @@ import org.robopro.models.RobotDescription;
 
 /**
  * Everything a project file holds (docs/project-file.md): which robot and where it stands, the
- * tool, the cell objects, work objects, targets, the program and the calibration reference.
+ * tool, the cell objects, work objects, targets, the program, the calibration reference, the
+ * work object new targets are taught in and the robot's joint values (null: the ready pose).
  */
 public record ProjectData(String robotRef, RobotDescription robot, Pose worldTbase, Tool tool,
                           List<CellObject> objects, List<WorkObject> workObjects, List<Target> targets,
-                          List<Instruction> program, String calibrationReference) {
+                          List<Instruction> program, String calibrationReference, String activeWorkObject, double[] q) {
     public ProjectData {
         objects = List.copyOf(objects);
         workObjects = List.copyOf(workObjects);
         targets = List.copyOf(targets);
         program = List.copyOf(program);
+        activeWorkObject = activeWorkObject == null || activeWorkObject.isBlank() ? Target.WOBJ0 : activeWorkObject;
+        q = q == null ? null : q.clone();
+    }
+
+    /** A project taught in wobj0 with the robot at its ready pose. */
+    public ProjectData(String robotRef, RobotDescription robot, Pose worldTbase, Tool tool, List<CellObject> objects,
+                       List<WorkObject> workObjects, List<Target> targets, List<Instruction> program, String calibrationReference) {
+        this(robotRef, robot, worldTbase, tool, objects, workObjects, targets, program, calibrationReference, null, null);
+    }
+
+    @Override public double[] q() { return q == null ? null : q.clone(); }
+
+    /** The same project with the given active work object and joint values. */
+    public ProjectData withState(String active, double[] joints) {
+        return new ProjectData(robotRef, robot, worldTbase, tool, objects, workObjects, targets, program, calibrationReference, active, joints);
     }
 }

@@ -46,10 +46,19 @@ public final class WorkbenchModel {
     private volatile double[] ghostQ;
     private final AtomicLong ghostVersion = new AtomicLong();
     private ProgramRun run;
+    private final EditHistory history = new EditHistory();
+    /** The edit state after the last recorded command: the "before" of the next one. */
+    private ProjectData committed;
+    /** The edit state when last saved (or opened). */
+    private ProjectData savedState;
+    private int editDepth;
+    private volatile boolean restoring;
 
     public WorkbenchModel(String robotRef, RobotDescription robot) {
         setRobot(robotRef, robot);
         dirty = false;
+        synchronized (this) { committed = editState(); savedState = committed; }
+        history.clear();
     }
 
     public void addListener(Listener l) { listeners.add(l); }
@@ -59,7 +68,98 @@ public final class WorkbenchModel {
         if (c != Change.SELECTION && c != Change.VIEW && c != Change.JOINTS) synchronized (this) { run = null; }
         version.incrementAndGet();
         if (c != Change.SELECTION && c != Change.VIEW) dirty = true;
+        if (!restoring) {
+            if (c == Change.PROJECT) synchronized (this) { committed = editState(); }
+            else if (c != Change.SELECTION && c != Change.VIEW && c != Change.JOINTS) record(defaultLabel(c));
+        }
         for (Listener l : listeners) l.changed(c);
+    }
+
+    // ---- undo and redo -------------------------------------------------------------------
+
+    /** What the undo history saves and restores: the project without the joint values and the active work object. */
+    private synchronized ProjectData editState() { return snapshot().withState(null, null); }
+
+    private static String defaultLabel(Change c) {
+        return switch (c) {
+            case ROBOT -> "Change robot";
+            case CELL -> "Edit cell";
+            case TOOL -> "Edit tool";
+            case TARGETS -> "Edit targets";
+            case PROGRAM -> "Edit program";
+            default -> "Edit";
+        };
+    }
+
+    /** Records the change since the last command as one undoable command (inside {@link #edit}: at its end). */
+    private synchronized void record(String label) {
+        if (editDepth > 0 || committed == null) return;
+        ProjectData now = editState();
+        if (now.equals(committed)) return;
+        history.push(label, committed, now, System.currentTimeMillis());
+        committed = now;
+    }
+
+    /**
+     * Runs {@code body} (any number of mutations) as one undoable command named {@code label}
+     * ("Add table", "Move p20"); nested edits belong to the outermost one.
+     */
+    public void edit(String label, Runnable body) {
+        synchronized (this) { editDepth++; }
+        try {
+            body.run();
+        } finally {
+            synchronized (this) { editDepth--; }
+            record(label);
+        }
+    }
+
+    /** The undo history (labels for the Edit menu). */
+    public EditHistory history() { return history; }
+
+    /** Takes back the last edit; returns its label, empty when there was none. */
+    public Optional<String> undo() { return history.popUndo().map(c -> { restore(c.before()); return c.label(); }); }
+
+    /** Makes the last undone edit again; returns its label, empty when there was none. */
+    public Optional<String> redo() { return history.popRedo().map(c -> { restore(c.after()); return c.label(); }); }
+
+    /** Puts an edit state back: the robot keeps its joint values when the robot stays; the calibration reference is kept. */
+    private void restore(ProjectData s) {
+        boolean robotChanged;
+        synchronized (this) {
+            robotChanged = !robotRef.equals(s.robotRef()) || !kinematics.description().equals(s.robot());
+            if (robotChanged) {
+                robotRef = s.robotRef();
+                kinematics = RobotKinematics.of(s.robot());
+                if (q.length != s.robot().dof()) q = new double[s.robot().dof()];
+            }
+            worldTbase = s.worldTbase();
+            tool = s.tool();
+            objects = s.objects();
+            workObjects = s.workObjects();
+            targets = s.targets();
+            program = s.program();
+            if (!activeWorkObject.equalsIgnoreCase(Target.WOBJ0) && workObjects.stream().noneMatch(w -> w.name().equals(activeWorkObject)))
+                activeWorkObject = Target.WOBJ0;
+            if (selection != null && !selectionExists(selection)) selection = null;
+        }
+        restoring = true;
+        try {
+            if (robotChanged) { jointVersion.incrementAndGet(); fire(Change.ROBOT); }
+            for (Change c : new Change[] {Change.CELL, Change.TOOL, Change.TARGETS, Change.PROGRAM}) fire(c);
+        } finally {
+            restoring = false;
+        }
+        synchronized (this) {
+            committed = editState();
+            dirty = !committed.equals(savedState);
+        }
+    }
+
+    private boolean selectionExists(String sel) {
+        if (sel.startsWith("object:")) return objects.stream().anyMatch(o -> o.id().equals(sel.substring(7)));
+        if (sel.startsWith("target:")) return targets.stream().anyMatch(t -> t.name().equals(sel.substring(7)));
+        return true;
     }
 
     /** Incremented by every change; scene states rebuild when it moved. */
@@ -70,7 +170,11 @@ public final class WorkbenchModel {
 
     /** True when there are changes not yet saved. */
     public boolean dirty() { return dirty; }
-    public void markSaved() { dirty = false; }
+
+    public void markSaved() {
+        synchronized (this) { savedState = editState(); }
+        dirty = false;
+    }
 
     // ---- robot ---------------------------------------------------------------------------
 
@@ -372,7 +476,10 @@ public final class WorkbenchModel {
     public boolean showPath() { return showPath; }
     public void setShowPath(boolean b) { showPath = b; fire(Change.VIEW); }
 
-    /** Replaces everything with the content of a loaded project (one change event per part). */
+    /**
+     * Replaces everything with the content of a loaded project (one change event per part; the
+     * joint values when the project has them) and forgets the undo history.
+     */
     public void load(ProjectData p) {
         synchronized (this) {
             robotRef = p.robotRef();
@@ -385,18 +492,28 @@ public final class WorkbenchModel {
             targets = List.copyOf(p.targets());
             program = List.copyOf(p.program());
             calibrationReference = p.calibrationReference();
-            activeWorkObject = Target.WOBJ0;
+            activeWorkObject = p.activeWorkObject().equalsIgnoreCase(Target.WOBJ0)
+                    || workObjects.stream().anyMatch(w -> w.name().equals(p.activeWorkObject())) ? p.activeWorkObject() : Target.WOBJ0;
+            double[] pq = p.q();
+            if (pq != null && pq.length == q.length) q = pq;
             selection = null;
         }
         jointVersion.incrementAndGet();
-        for (Change c : new Change[] {Change.ROBOT, Change.CELL, Change.TOOL, Change.TARGETS, Change.PROGRAM, Change.PROJECT})
-            fire(c);
+        restoring = true;
+        try {
+            for (Change c : new Change[] {Change.ROBOT, Change.CELL, Change.TOOL, Change.TARGETS, Change.PROGRAM, Change.PROJECT})
+                fire(c);
+        } finally {
+            restoring = false;
+        }
+        history.clear();
+        synchronized (this) { committed = editState(); savedState = committed; }
         dirty = false;
     }
 
     /** A snapshot of everything a project file holds. */
     public synchronized ProjectData snapshot() {
         return new ProjectData(robotRef, kinematics.description(), worldTbase, tool, objects, workObjects, targets,
-                program, calibrationReference);
+                program, calibrationReference, activeWorkObject, q);
     }
 }

@@ -312,14 +312,7 @@ public final class CalibrationPanel extends JDialog {
     }
 
     static String effectName(Effect e) {
-        return switch (e.kind()) {
-            case COMPLIANCE -> "Joint compliance (the joint gives way under gravity)";
-            case PERIODIC -> "Periodic transmission error (gear or encoder)";
-            case BACKLASH -> "Backlash (lost motion on direction reversal)";
-            case THERMAL -> "Thermal expansion";
-            case SCALE -> "Joint scale error (gear ratio or encoder)";
-            case COUPLING -> "Joint coupling";
-        };
+        return e.kind().title;
     }
 
     private static String joinInts(List<Integer> js) {

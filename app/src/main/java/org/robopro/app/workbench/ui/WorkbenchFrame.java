@@ -94,6 +94,7 @@ public final class WorkbenchFrame extends JFrame {
         jog = new JogPanel(wb);
         program = new ProgramPanel(wb);
         defineActions();
+        updateUndoActions();
         setJMenuBar(menus());
 
         view.setMinimumSize(new Dimension(100, 100));
@@ -244,6 +245,7 @@ public final class WorkbenchFrame extends JFrame {
         tree.rebuild(latestStatuses());
         properties.refresh();
         program.refresh();
+        updateUndoActions();
         updateTitle();
     }
 
@@ -316,11 +318,40 @@ public final class WorkbenchFrame extends JFrame {
         return p;
     }
 
+    /**
+     * Before the open cell is replaced: with unsaved changes asks whether to save them; false
+     * when the user cancels (or saving failed). Under tests (no visible window) it never asks.
+     */
+    private boolean changesHandled() {
+        if (!wb.model().dirty() || !isShowing() || System.getenv("robopro.test") != null) return true;
+        int r = JOptionPane.showConfirmDialog(this, "Save changes to the open project first?", "robopro", JOptionPane.YES_NO_CANCEL_OPTION);
+        if (r == JOptionPane.CANCEL_OPTION || r == JOptionPane.CLOSED_OPTION) return false;
+        if (r == JOptionPane.YES_OPTION) { action("save").actionPerformed(null); return !wb.model().dirty(); }
+        return true;
+    }
+
+    /** Undo / Redo name the edit they act on and are enabled only when there is one. */
+    private void updateUndoActions() {
+        var h = wb.model().history();
+        Action u = action("undo"), r = action("redo");
+        u.putValue(Action.NAME, h.undoLabel().map(l -> "Undo " + l).orElse("Undo"));
+        u.setEnabled(h.undoLabel().isPresent());
+        r.putValue(Action.NAME, h.redoLabel().map(l -> "Redo " + l).orElse("Redo"));
+        r.setEnabled(h.redoLabel().isPresent());
+    }
+
     private void defineActions() {
+        def("new", "New project", "ctrl N", e -> { if (changesHandled()) wb.newProject(); });
         def("open", "Open project...", "ctrl O", e -> {
+            if (!changesHandled()) return;
             Path p = choose(false, null);
             if (p != null) io(() -> wb.openProject(p));
         });
+        def("undo", "Undo", "ctrl Z", e -> wb.undo());
+        def("redo", "Redo", "ctrl Y", e -> wb.redo());
+        // Ctrl+Shift+Z redoes as well (the other common binding).
+        getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW).put(KeyStroke.getKeyStroke("ctrl shift Z"), "redo");
+        getRootPane().getActionMap().put("redo", action("redo"));
         def("save", "Save project", "ctrl S", e -> {
             Path p = wb.projectFile().orElseGet(() -> choose(true, ".robopro.json"));
             if (p != null) io(() -> wb.save(p));
@@ -421,7 +452,8 @@ public final class WorkbenchFrame extends JFrame {
 
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
-        bar.add(menu("File", KeyEvent.VK_F, "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("File", KeyEvent.VK_F, "new", "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
+        bar.add(menu("Edit", KeyEvent.VK_E, "undo", "redo", null, "delete"));
         bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
         bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
         bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", "add-movec", null, "check", "import-rapid", "export-rapid"));
@@ -434,11 +466,12 @@ public final class WorkbenchFrame extends JFrame {
     private JToolBar toolbar() {
         JToolBar t = new JToolBar();
         t.setFloatable(false);
-        for (String id : new String[] {"open", "save", null, "view-front", "view-top", "view-side", "view-iso", null,
+        for (String id : new String[] {"open", "save", null, "undo", "redo", null, "view-front", "view-top", "view-side", "view-iso", null,
                 "add-table", "add-part", "delete", null, "teach", "add-movej", "add-movel", "check", "export-rapid", null, "connect", "calibration"}) {
             if (id == null) { t.addSeparator(); continue; }
             var b = t.add(action(id));
             b.setName("tool-" + id);
+            b.setHideActionText(true); // the short name stays when the action renames itself ("Undo Add table")
             b.setText(shortName(id));
             if (action(id).getValue(Action.SHORT_DESCRIPTION) != null) b.setToolTipText((String) action(id).getValue(Action.SHORT_DESCRIPTION));
         }
@@ -447,7 +480,7 @@ public final class WorkbenchFrame extends JFrame {
 
     private static String shortName(String id) {
         return switch (id) {
-            case "open" -> "Open"; case "save" -> "Save";
+            case "open" -> "Open"; case "save" -> "Save"; case "undo" -> "Undo"; case "redo" -> "Redo";
             case "view-front" -> "Front"; case "view-top" -> "Top"; case "view-side" -> "Side"; case "view-iso" -> "Iso";
             case "add-table" -> "+Table"; case "add-part" -> "+Part"; case "delete" -> "Delete";
             case "teach" -> "Teach"; case "add-movej" -> "MoveJ"; case "add-movel" -> "MoveL"; case "check" -> "Check";

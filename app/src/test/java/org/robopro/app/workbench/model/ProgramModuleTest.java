@@ -60,7 +60,10 @@ class ProgramModuleTest {
     void fromRapid_exportedProgram_roundTripsTargetsAndInstructions() {
         WorkbenchModel m = model();
         String text = RapidWriter.export(ProgramModule.toRapid(m, "Weld")).text();
-        ProgramModule.Imported imp = ProgramModule.fromRapid(RapidParser.parseDetailed(text, "Weld.mod"), m, "main");
+        // Into a cell without targets, so every target is read from the module (not found among the cell's).
+        WorkbenchModel empty = model();
+        for (Target t : empty.targets()) empty.removeTarget(t.name());
+        ProgramModule.Imported imp = ProgramModule.fromRapid(RapidParser.parseDetailed(text, "Weld.mod"), empty, "main");
         assertEquals(m.program().size(), imp.program().size());
         for (int i = 0; i < m.program().size(); i++) {
             Instruction a = m.program().get(i), b = imp.program().get(i);
@@ -95,16 +98,16 @@ class ProgramModuleTest {
                 "ENDMODULE", "");
         ProgramModule.Imported imp = ProgramModule.fromRapid(RapidParser.parseDetailed(text, "Other.mod"), m, "main");
         assertEquals(2, imp.program().size());
-        assertEquals(Instruction.Type.MOVEJ, imp.program().get(0).type());
+        assertEquals(Instruction.Type.MOVEABSJ, imp.program().get(0).type(), "MoveAbsJ stays MoveAbsJ");
         assertEquals(Instruction.Type.MOVEL, imp.program().get(1).type());
         assertEquals("tool0", imp.tool().name());
-        Target t = imp.targets().get(1);
+        Target t = imp.targets().stream().filter(x -> x.name().equals(imp.program().get(1).target())).findFirst().orElseThrow();
         assertEquals(1.1, t.worldTtcp().x(), 1e-9);
         assertEquals(0.9, t.worldTtcp().z(), 1e-9);
-        assertTrue(imp.notes().stream().anyMatch(n -> n.contains("MoveAbsJ")), imp.notes().toString());
         assertTrue(imp.notes().stream().anyMatch(n -> n.contains("WaitTime")), imp.notes().toString());
-        // MoveAbsJ's target is where its joints put the TCP.
-        Target abs = imp.targets().get(0);
+        // MoveAbsJ's target holds its joints and is where they put the TCP.
+        Target abs = imp.targets().stream().filter(x -> x.name().equals(imp.program().get(0).target())).findFirst().orElseThrow();
+        assertEquals(Math.toRadians(20), abs.qTaught()[1], 1e-12);
         assertEquals(0, m.kinematics().flange(abs.qTaught()).distanceTo(abs.worldTtcp()), 1e-9);
     }
 

@@ -20,7 +20,7 @@ class CalibrationPanelTest {
         assertEquals(1, d.effects().size(), "the concealed lost motion is the one effect");
         String text = CalibrationPanel.diagnosisReport(d);
         Diagnosis.Finding f = d.effects().get(0);
-        assertTrue(text.contains("Backlash (lost motion on direction reversal) on joint 1"), text);
+        assertTrue(text.contains("Backlash (lost motion, the output lags the motor) on joint 1"), text);
         // The parameter is shown in degrees, converted from the finding's radians.
         String b = String.format(Locale.ROOT, "b = %.4f ± %.4f deg", Math.toDegrees(f.values()[0]), Math.toDegrees(f.sigmas()[0]));
         assertTrue(text.contains(b), "expected '" + b + "' in\n" + text);
