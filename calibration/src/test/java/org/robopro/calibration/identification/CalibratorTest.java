@@ -17,10 +17,10 @@ import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
 /**
- * The proof of issue 3: campaigns of the independent world simulator (its own kinematics and
- * geometric errors, written as measurement files and read back) are calibrated down to the noise
- * floor, and the calibrated model predicts the world's noise-free truth. The truth is not in this
- * module's parameterisation, so it is compared through predictions, not parameter by parameter.
+ * Campaigns of the independent world simulator (its own kinematics and geometric errors, written
+ * as measurement files and read back) are calibrated down to the noise floor, and the calibrated
+ * model predicts the world's noise-free truth. The truth is not in this module's
+ * parameterisation, so it is compared through predictions, not parameter by parameter.
  */
 class CalibratorTest {
     static KinematicModel model(String name) { return KinematicModel.build(RobotLibrary.load(name)); }

@@ -42,7 +42,7 @@ import org.robopro.models.InputException;
  * the calibration in the background with a progress bar and a Cancel button, then see the RMS
  * error before and after (training and validation poses), a plot of every pose's error with the
  * nominal and the calibrated model, and the effects found: the largest parameter corrections
- * and what the data could not identify. "Diagnose" runs the diagnosis of issue 4 (geometric
+ * and what the data could not identify. "Diagnose" runs the diagnosis (docs/diagnosis.md: geometric
  * calibration, then the non-geometric effects: compliance, gear errors, backlash, thermal
  * expansion, scale, coupling) in the background and shows each finding in words with its
  * parameters, RMS improvement and evidence, the outliers, what could not be identified and what
