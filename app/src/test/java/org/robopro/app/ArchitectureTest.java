@@ -55,7 +55,10 @@ class ArchitectureTest {
         forbid("org.robopro.calibration..", "org.robopro.world..", "org.robopro.programs..", "org.robopro.comms..",
                 "org.robopro.app..");
         forbid("org.robopro.programs..", "org.robopro.world..", "org.robopro.comms..", "org.robopro.app..");
-        forbid("org.robopro.comms..", "org.robopro.world..", "org.robopro.app..");
+        // The simulated controller may stand on the world's truth; nothing that estimates may.
+        forbid("org.robopro.comms..", "org.robopro.app..");
+        noClasses().that().resideInAPackage("org.robopro.comms..").and().resideOutsideOfPackage("org.robopro.comms.sim..")
+                .should().dependOnClassesThat().resideInAPackage("org.robopro.world..").check(classes);
     }
 
     @Test
