@@ -101,7 +101,8 @@ public final class ClearanceChecker {
         };
     }
 
-    static Pose pose(PoseDescription d) {
+    /** A cell file's pose as a transform. */
+    public static Pose pose(PoseDescription d) {
         return Pose.fromQuaternion(d.qw(), d.qx(), d.qy(), d.qz(), d.position().x(), d.position().y(), d.position().z());
     }
 
