@@ -56,6 +56,15 @@ public final class Calibrator {
      */
     public record Options(Pose initialTool, double outlierK, boolean rejectOutliers, double tolerance, int maxIterations,
                           List<EffectBlock> effects, Cancellation cancel, Progress progress) {
+        public Options {
+            // Infinity is allowed: "never flag"; NaN would silently turn rejection off.
+            if (!(outlierK > 0))
+                throw new IllegalArgumentException("the outlier threshold must be a positive number of robust sigmas, got " + outlierK);
+            if (!(tolerance > 0 && tolerance < 1))
+                throw new IllegalArgumentException("the identifiability tolerance must be in (0, 1), got " + tolerance);
+            if (maxIterations < 1) throw new IllegalArgumentException("the iteration limit must be at least 1, got " + maxIterations);
+        }
+
         public static Options defaults() {
             return new Options(Pose.IDENTITY, 5.0, true, Identifiability.DEFAULT_TOLERANCE, 100, List.of(),
                     Cancellation.NONE, Progress.NONE);
