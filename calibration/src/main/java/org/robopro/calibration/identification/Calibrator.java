@@ -470,6 +470,7 @@ public final class Calibrator {
             double[] q = new double[js.size()];
             for (int k = 0; k < q.length; k++) {
                 double lo = js.get(k).min(), hi = js.get(k).max();
+                if (lo == hi && Double.isFinite(lo)) { q[k] = lo; continue; } // a locked joint
                 if (!(hi > lo) || !Double.isFinite(lo) || !Double.isFinite(hi) || hi - lo > 2 * Math.PI) {
                     double mid = Double.isFinite(lo + hi) ? 0.5 * (lo + hi) : 0;
                     lo = mid - Math.PI; hi = mid + Math.PI;
