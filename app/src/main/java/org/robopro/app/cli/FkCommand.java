@@ -29,7 +29,7 @@ public final class FkCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        KinematicModel m = Robots.model(robot);
+        KinematicModel m = KinematicModel.build(RobotOptions.load(robot));
         double[] q = toSi(m, joints, robot);
         Pose p = m.flange(q);
         double[] quat = p.quaternion();

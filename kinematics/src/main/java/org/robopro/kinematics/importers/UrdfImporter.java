@@ -187,7 +187,7 @@ public final class UrdfImporter {
                 // A mimic joint has no controller value of its own: its q is held at 0 (limits 0..0) and the
                 // coupling gives theta = q + multiplier * q_source; the offset is its angle (or travel) at q = 0.
                 boolean mimic = next.mimic != null;
-                out.add(new JointDescription(next.name, type, t.position(), t.rotate(next.axis), mimic ? 0 : next.lower,
+                out.add(CleanNumbers.joint(next.name, type, t.position(), t.rotate(next.axis), mimic ? 0 : next.lower,
                         mimic ? 0 : next.upper, next.velocity));
                 movable.add(next);
                 if (mimic && next.offset != 0)
@@ -210,7 +210,7 @@ public final class UrdfImporter {
             coupling.add(new CouplingTerm(k + 1, src + 1, u.multiplier));
         }
         String name = DhImporter.sanitize(robotName);
-        FrameDescription flange = new FrameDescription(t.position(), t.xAxis(), t.zAxis());
+        FrameDescription flange = CleanNumbers.frame(t.position(), t.xAxis(), t.zAxis());
         return new RobotDescription(name, robotName, out, flange, coupling, Optional.empty(), List.of(), List.of(),
                 "imported from " + file + " (URDF)", Map.of("imported-from", file, "importer", "urdf"));
     }
