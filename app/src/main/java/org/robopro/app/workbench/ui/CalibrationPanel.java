@@ -19,7 +19,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.BooleanSupplier;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
-import javax.swing.JDialog;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JOptionPane;
@@ -49,7 +48,7 @@ import org.robopro.models.InputException;
  * to record next. "Apply" writes the calibrated (or, after a diagnosis that found effects, the
  * extended) robot file and makes RAPID export compensate targets with it.
  */
-public final class CalibrationPanel extends JDialog {
+public final class CalibrationPanel extends JPanel {
     private final WorkbenchSession wb;
     private final JLabel file = new JLabel("no measurement file");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -63,6 +62,7 @@ public final class CalibrationPanel extends JDialog {
     private final JTextArea findings = new JTextArea(12, 60);
     private final RmsChart rmsChart = new RmsChart();
     private final JTabbedPane tabs = new JTabbedPane();
+    private final WorkbenchFrame owner;
     private WorkbenchSession.Measurements measurements;
     private volatile Cancellation token;
     private volatile CalibrationResult result;
@@ -70,9 +70,10 @@ public final class CalibrationPanel extends JDialog {
     private volatile String state = "idle";
 
     public CalibrationPanel(WorkbenchFrame owner, WorkbenchSession wb) {
-        super(owner, "Calibration", false);
+        super(new BorderLayout());
         this.wb = wb;
-        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+        this.owner = owner;
+        setName("calibration-panel");
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 4));
         JButton load = new JButton("Load measurements...");
         load.setName("cal-load");
@@ -135,8 +136,7 @@ public final class CalibrationPanel extends JDialog {
         JPanel content = new JPanel(new BorderLayout());
         content.add(head, BorderLayout.NORTH);
         content.add(tabs, BorderLayout.CENTER);
-        setContentPane(content);
-        setSize(760, 600);
+        add(content, BorderLayout.CENTER);
         updateButtons();
     }
 
@@ -162,7 +162,7 @@ public final class CalibrationPanel extends JDialog {
             updateButtons();
             return true;
         } catch (InputException | java.io.IOException | IllegalArgumentException e) {
-            ((WorkbenchFrame) getOwner()).showError("Measurement file", e.getMessage());
+            owner.showError("Measurement file", e.getMessage());
             return false;
         }
     }
@@ -210,7 +210,7 @@ public final class CalibrationPanel extends JDialog {
                     progress.setString("failed");
                     updateButtons();
                     f.completeExceptionally(e);
-                    ((WorkbenchFrame) getOwner()).showError(what + " failed", e.getMessage());
+                    owner.showError(what + " failed", e.getMessage());
                 });
             }
         }, what.toLowerCase(Locale.ROOT));
@@ -230,11 +230,16 @@ public final class CalibrationPanel extends JDialog {
         state = "done";
         progress.setValue(1000);
         progress.setString("done");
-        rms.setText(String.format(Locale.ROOT, "RMS %.4f mm -> %.4f mm (%d training poses)%s", r.nominalTrainRmsM() * 1e3,
-                r.trainRmsM() * 1e3, r.train().size(), r.validate().isEmpty() ? ""
-                        : String.format(Locale.ROOT, ";  validation %.4f mm -> %.4f mm (max %.4f mm)", r.nominalValidateRmsM() * 1e3,
-                        r.validateRmsM() * 1e3, r.validateMaxM() * 1e3)));
-        effects.setText(effectsReport(r));
+        rms.setText(rmsLines(r));
+        // The calibration workflow's warnings (outliers and what they suggest, identifiability, validation), as the CLI prints them.
+        StringBuilder w = new StringBuilder();
+        wb.lastCalibration().filter(o -> o.result() == r).ifPresent(o -> {
+            for (String x : o.warnings()) w.append("Warning: ").append(x).append("\n");
+        });
+        if (w.length() > 0) w.append('\n');
+        effects.setLineWrap(w.length() > 0);
+        effects.setWrapStyleWord(true);
+        effects.setText(w + effectsReport(r));
         effects.setCaretPosition(0);
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
         all.addAll(r.validate());
@@ -252,6 +257,15 @@ public final class CalibrationPanel extends JDialog {
         findings.setCaretPosition(0);
         rmsChart.set(d);
         tabs.setSelectedIndex(1);
+    }
+
+    /** The calibration's figures, one label each, on two lines (training, then validation). */
+    static String rmsLines(CalibrationResult r) {
+        String train = String.format(Locale.ROOT, "Training RMS %.4f mm → %.4f mm (%d poses)", r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3,
+                r.train().size());
+        if (r.validate().isEmpty()) return "<html>" + train + "<br>No validation poses</html>";
+        return "<html>" + train + String.format(Locale.ROOT, "<br>Validation RMS %.4f mm → %.4f mm (%d poses, largest %.4f mm)</html>",
+                r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3, r.validate().size(), r.validateMaxM() * 1e3);
     }
 
     /** A diagnosis in plain words: findings (effect, joints, parameters with units, RMS, evidence), outliers, the rest. */
