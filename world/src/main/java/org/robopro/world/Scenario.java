@@ -36,7 +36,7 @@ public record Scenario(String name, String family, String robot, Expected expect
     /** One drawn robot and its campaign. */
     public record Trial(Scenario scenario, long seed, WorldRobot world, Campaign.Result campaign) {
         /** What was concealed, as JSON (mm, deg, SI where named). */
-        public String truthJson() { return Truth.json(this); }
+        public String truthJson() { return Truth.json(scenario, seed, world, campaign); }
     }
 
     /** Draws the robot and measures it. */
@@ -44,13 +44,24 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     /** Draws the robot and measures it with the scenario's plan changed by {@code adjust} (e.g. more poses). */
     public Trial trial(long seed, UnaryOperator<Campaign.Plan> adjust) {
+        WorldRobot world = robot(seed, new double[] {0, 0, 0.1});
+        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
+        return new Trial(this, seed, world, Campaign.run(world, RobotLibrary.shipped(robot), p));
+    }
+
+    /**
+     * The scenario's real robot of a seed, without a campaign (e.g. for a simulated controller),
+     * its measured target nominally at {@code targetInFlangeM} on the flange (off by ~2 mm).
+     */
+    public WorldRobot robot(long seed, double[] targetInFlangeM) {
         RobotDescription nominal = RobotLibrary.shipped(robot);
         Random rng = new Random(seed * 31 + name.hashCode());
-        WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1));
-        WorldRobot world = effects.apply(nominal, rng).apply(base);
-        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
-        return new Trial(this, seed, world, Campaign.run(world, nominal, p));
+        WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1), targetInFlangeM);
+        return effects.apply(nominal, rng).apply(base);
     }
+
+    /** What a robot of this scenario conceals, as JSON (the truth record without a campaign). */
+    public String truthJson(long seed, WorldRobot world) { return Truth.json(this, seed, world, null); }
 
     /**
      * The robot file with random geometric errors and an unknown instrument pose: axis points by
@@ -59,11 +70,16 @@ public record Scenario(String name, String family, String robot, Expected expect
      * little for 6-D), the instrument 2.5–3.5 m away at any heading, tilted up to 5°.
      */
     public static WorldRobot baseRobot(RobotDescription nominal, Random rng, double pointM, double angleRad) {
+        return baseRobot(nominal, rng, pointM, angleRad, new double[] {0, 0, 0.1});
+    }
+
+    /** {@link #baseRobot(RobotDescription, Random, double, double)} with the measured target nominally elsewhere on the flange. */
+    public static WorldRobot baseRobot(RobotDescription nominal, Random rng, double pointM, double angleRad, double[] targetInFlangeM) {
         int n = nominal.dof();
         Arm arm = Arm.of(nominal).perturbed(rng, pointM, angleRad);
         double[] offsets = new double[n];
         for (int i = 0; i < n; i++) offsets[i] = angleRad * rng.nextGaussian();
-        double[] target = Rigid.plus(new double[] {0, 0, 0.1}, Arm.gauss(rng, 2e-3));
+        double[] target = Rigid.plus(targetInFlangeM, Arm.gauss(rng, 2e-3));
         double[] tilt = Arm.gauss(rng, Math.toRadians(0.5));
         Rigid tool = new Rigid(Rigid.rotation(Rigid.unit(tilt), Rigid.norm(tilt), new double[3]).r(), target);
         double heading = 2 * Math.PI * rng.nextDouble(), dist = 2.5 + rng.nextDouble();
@@ -165,6 +181,7 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("null irb2000, 50 poses", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withPoses(50, 50)));
         c.add(s("null irb2000, 6-D", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withSixD(true)));
         c.add(s("null irb2000, payload steps", "null", "irb2000", Expected.none(), (n, r) -> w -> w, payloads("irb2000")));
+        c.add(s("null irb2000, 5 gross outliers", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withOutliers(5)));
         c.add(s("null irb2400", "null", "irb2400", Expected.none(), (n, r) -> w -> w, same()));
         c.add(s("null puma560", "null", "puma560", Expected.none(), (n, r) -> w -> w, same()));
         // transmission error
@@ -218,6 +235,8 @@ public record Scenario(String name, String family, String robot, Expected expect
                 Expected.named(claim(LOST_MOTION, 1), claim(CROSS_COUPLING, 3, 2)),
                 (n, r) -> add(lostMotion(0, r), crossCoupling(2, 1, r)), p -> p.withDirColumns(false)));
         // sparse, noisy and 6-D campaigns with an effect
+        c.add(s("lost motion j1, 4 gross outliers", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 1)),
+                (n, r) -> add(lostMotion(0, r)), p -> p.withOutliers(4)));
         c.add(s("lost motion j2, 50 poses", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
                 (n, r) -> add(lostMotion(1, r)), p -> p.withPoses(50, 50)));
         c.add(s("transmission error j1, sigma 0.05 mm", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 1)),

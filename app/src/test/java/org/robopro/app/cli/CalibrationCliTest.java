@@ -28,14 +28,17 @@ class CalibrationCliTest {
     }
 
     @Test
-    void simulateCalibrateCompensate_irb2000_writesEveryOutput() throws Exception {
-        Path sim = dir.resolve("sim"), cal = dir.resolve("cal");
-        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "120", "--validate-poses", "80", "--sigma", "0.02",
-                "--target", "80,40,150", "--seed", "7", "--out", sim.toString()), err.toString());
-        for (String f : List.of("measurements.csv", "validate.csv", "truth.json", "true.robot.json"))
-            assertTrue(Files.exists(sim.resolve(f)), f);
-        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
-                "--validate", sim.resolve("validate.csv").toString(), "--out", cal.toString()), err.toString());
+    void calibrateCompensate_worldCampaignIrb2000_writesEveryOutput() throws Exception {
+        // The campaign of a real robot drawn by the independent world simulator (geometric errors,
+        // unknown instrument pose, sigma 0.02 mm, the measured point off the joint-6 axis at
+        // (80, 40, 150) mm on the flange), one file with a train/validate set column.
+        Path cal = dir.resolve("cal"), file = dir.resolve("campaign.csv");
+        var robot = org.robopro.models.RobotLibrary.shipped("irb2000");
+        var world = org.robopro.world.Scenario.baseRobot(robot, new java.util.Random(7), 1e-3, Math.toRadians(0.1),
+                new double[] {0.08, 0.04, 0.15});
+        Files.writeString(file, org.robopro.world.Campaign.run(world, robot,
+                org.robopro.world.Campaign.Plan.defaults(7).withPoses(120, 80)).text());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", file.toString(), "--out", cal.toString()), err.toString());
         JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
         for (String k : List.of("nominal_train_rms_mm", "train_rms_mm", "nominal_validate_rms_mm", "validate_rms_mm",
                 "train_max_mm", "validate_max_mm", "parameters", "unidentifiable", "outliers"))
@@ -62,8 +65,7 @@ class CalibrationCliTest {
         assertTrue(lines.get(2).endsWith("converged"), lines.get(2));
 
         // Existing outputs are not overwritten without --force.
-        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
-                "--out", cal.toString()));
+        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", file.toString(), "--out", cal.toString()));
     }
 
     @Test
