@@ -44,7 +44,7 @@ public final class WorldProbe {
         Set<String> want = new HashSet<>();
         for (Expected.Claim c : s.expected().claims()) want.add(c.family() + (c.family().jointless() ? "" : " " + c.joints()));
         for (String g : got) if (!want.contains(g)) wrong = true;
-        int located = d.located().size();
+        int located = (int) d.located().stream().filter(l -> l.explainedBy() == null).count();
         String verdict = switch (s.expected().verdict()) {
             case NULL -> got.isEmpty() ? "right" : "false";
             case OUTSIDE -> !got.isEmpty() ? "wrong" : located > 0 ? "located" : "missed";
