@@ -20,7 +20,7 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotLibrary;
 
 /**
- * Issue 3 target: identification of the IRB-2000 from 200 position measurements (σ 0.02 mm,
+ * Target (docs/performance.md): identification of the IRB-2000 from 200 position measurements (σ 0.02 mm,
  * 10 mm of initial error, unknown instrument frame) in ≤ 25 ms warm, single thread. Measures the
  * whole {@link Calibrator#calibrate} (nominal fit, identifiability, LM, outlier check, σ, per-pose
  * errors); the structural identifiability analysis is cached per model after the first call.

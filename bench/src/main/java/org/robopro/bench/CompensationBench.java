@@ -24,7 +24,7 @@ import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotLibrary;
 
 /**
- * Issue 3 target: compensation (seed paper Fig. 5, iterated to 1e-8 m / 1e-8 rad) of at least
+ * Target (docs/performance.md): compensation (seed paper Fig. 5, iterated to 1e-8 m / 1e-8 rad) of at least
  * 100,000 targets per second, single thread, IRB-2000 with a 10 mm-error calibrated model.
  * Throughput in targets per second = 1 / (time per target).
  */

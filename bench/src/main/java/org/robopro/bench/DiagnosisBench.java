@@ -21,7 +21,7 @@ import org.robopro.models.RobotLibrary;
 import org.robopro.world.Scenario;
 
 /**
- * Speed target of issue 4: a full diagnosis (geometric calibration, ~50 candidates, stepwise
+ * Speed target (docs/performance.md): a full diagnosis (geometric calibration, ~50 candidates, stepwise
  * selection with joint re-identification) of 300 IRB-2000 poses in under 5 s on one core. The
  * campaigns are the independent world simulator's (org.robopro.world), read as measurement text.
  */

@@ -24,7 +24,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 
 /**
- * Speed targets of issue 2 on the IRB-2000 (single thread): FK <= 150 ns, identification
+ * Speed targets (docs/performance.md) on the IRB-2000 (single thread): FK <= 150 ns, identification
  * Jacobian (all parameters, position) <= 2 us, closed-form IK all solutions <= 1.5 us,
  * numerical IK <= 30 us. The robot is built here from robots.md so the benchmark does not
  * depend on the robot files. {@code IkSolver} benchmarks are the allocation-free paths; the

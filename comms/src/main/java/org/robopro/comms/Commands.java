@@ -7,6 +7,7 @@ import java.util.stream.Collectors;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.Vec3;
+import org.robopro.programs.SpeedData;
 
 /**
  * The concrete commands (seed paper §2.1, Fig. 3) and factories for them. Each is a small
@@ -133,8 +134,8 @@ public final class Commands {
         @Override public Void execute(ControllerReceiver r) { r.setSpeed(speed); return null; }
 
         @Override protected String arguments() {
-            return String.format(Locale.ROOT, "%.1f mm/s %.1f deg/s", Units.mToMm(speed.tcpMPerS()),
-                    Units.radToDeg(speed.oriRadPerS()));
+            return String.format(Locale.ROOT, "%.1f mm/s %.1f deg/s", Units.mToMm(speed.vTcp()),
+                    Units.radToDeg(speed.vOri()));
         }
     }
 

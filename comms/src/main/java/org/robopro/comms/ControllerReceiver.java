@@ -4,6 +4,7 @@ import java.time.Duration;
 import java.util.List;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
+import org.robopro.programs.SpeedData;
 
 /**
  * The Receiver of the seed paper's Command pattern (§2.1, Fig. 3): the controller as the

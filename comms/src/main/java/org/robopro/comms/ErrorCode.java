@@ -12,6 +12,8 @@ public enum ErrorCode {
     BAD_MESSAGE(100, "malformed request or wrong number of parameters"),
     UNKNOWN_INSTRUCTION(101, "unknown instruction number"),
     BAD_VALUE(102, "parameter not finite or out of range"),
+    /** robopro protocol, checksum mode on TCP: the request arrived damaged and was not executed; send it again. */
+    LINK_CHECKSUM(103, "request failed its link checksum (not executed)"),
     JOINT_LIMIT(110, "target outside the joint limits"),
     UNREACHABLE(111, "cartesian target not reachable"),
     PATH_UNREACHABLE(112, "linear path leaves the workspace or the joint limits"),
@@ -24,6 +26,8 @@ public enum ErrorCode {
     PROGRAM_SYNTAX(205, "program does not parse"),
     PROGRAM_NOT_SIMULATED(206, "program cannot be simulated"),
     PROGRAM_RUNTIME(210, "program stopped with an error"),
+    STORAGE_FULL(207, "program storage full (count or bytes)"),
+    TOO_MANY_CONNECTIONS(121, "too many connections"),
     INTERNAL(300, "internal controller error");
 
     private final int number;

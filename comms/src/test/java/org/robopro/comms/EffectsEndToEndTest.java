@@ -18,7 +18,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 
 /**
- * Issues 4 and 5 end to end: the simulated controller as a process with {@code --effect backlash:2},
+ * Diagnosis through the controller link, end to end: the simulated controller as a process with {@code --effect backlash:2},
  * a campaign through the link (directions are the controller's real approach directions), and the
  * diagnosis names backlash on joint 2 with the size the simulator drew.
  */

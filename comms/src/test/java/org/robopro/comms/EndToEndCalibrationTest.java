@@ -26,7 +26,7 @@ import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 
 /**
- * Issue 5 end to end: the simulated IRB-2000 in its own process on loopback TCP, a measurement
+ * Calibration through the controller link, end to end: the simulated IRB-2000 in its own process on loopback TCP, a measurement
  * campaign through the Command pattern, the file written and read in the measurement format,
  * calibration, and compensated program targets measured on the simulated real robot.
  */

@@ -151,8 +151,8 @@ final class ClosedFormIk {
             double ac = FastTrig.acos(ck), sac = Math.sqrt(1 - ck * ck);
             // frame after joint 1 and F1
             System.arraycopy(fixedF(0), 0, frame1, 0, 12);
-            Mat34.rotate(frame1, 2, c1, s1);
-            Mat34.mulInPlace(frame1, fixedF(1));
+            Se3.rotate(frame1, 2, c1, s1);
+            Se3.mulInPlace(frame1, fixedF(1));
             for (int elbow = 0; elbow < 2; elbow++) {
                 double se = elbow == 0 ? sac : -sac; // sin(+-ac)
                 double phi3 = (elbow == 0 ? ac : -ac) - psi;
@@ -245,12 +245,6 @@ final class ClosedFormIk {
     double manipulability(double detFactor) { return detFactor * detScale; }
 
     private double[] fixedF(int k) { return model.fixedRef(k); }
-
-    /** Wrist centre in base coordinates for flange pose m (3x4). */
-    void wristCentre(double[] m, double[] out) {
-        for (int i = 0; i < 3; i++)
-            out[i] = m[4 * i] * wInFlange[0] + m[4 * i + 1] * wInFlange[1] + m[4 * i + 2] * wInFlange[2] + m[4 * i + 3];
-    }
 
     /** ABB cfx bits: 4 = wrist centre behind axis 1, 2 = behind the lower arm (1 = axis 5 negative, added by the caller). */
     int cfxArmBits(double[] flange12, double theta1, double theta2) {

@@ -25,6 +25,12 @@ public record Elementary(Op op, String name, double value, boolean identified) {
         public String symbol() { return (isRotation() ? "R_" : "T_") + "XYZ".charAt(axis()); }
     }
 
+    /** m = m E: applies the transformation {@code op} of {@code value} (rotations by their cosine c and sine s) to a 3x4 transform. */
+    static void apply(double[] m, Op op, double value, double c, double s) {
+        if (op.isRotation()) Se3.rotate(m, op.axis(), c, s);
+        else Se3.translate(m, op.axis(), value);
+    }
+
     Elementary withValue(double v) { return new Elementary(op, name, v, identified); }
 
     Elementary withIdentified(boolean id) { return new Elementary(op, name, value, id); }

@@ -75,7 +75,7 @@ public final class InverseKinematics {
      */
     public List<IkSolution> solveAll(Pose baseTflange) {
         double[] target = new double[12];
-        Mat34.fromPose(baseTflange, target);
+        Se3.fromPose(baseTflange, target);
         IkSolver solver = solvers.get();
         solver.solveAll(target);
         return solver.solutions();
@@ -89,7 +89,7 @@ public final class InverseKinematics {
     public Optional<IkSolution> solveNear(Pose baseTflange, double[] qSeed) {
         if (qSeed.length != model.dof()) throw new IllegalArgumentException("seed needs " + model.dof() + " values");
         double[] target = new double[12];
-        Mat34.fromPose(baseTflange, target);
+        Se3.fromPose(baseTflange, target);
         double[] q = new double[model.dof()];
         IkSolver solver = solvers.get();
         if (!solver.solveNear(target, qSeed, q)) return Optional.empty();
@@ -155,7 +155,7 @@ public final class InverseKinematics {
     public NumericalOutcome solveNumerical(Pose baseTflange, double[] qSeed) {
         if (qSeed.length != model.dof()) throw new IllegalArgumentException("seed needs " + model.dof() + " values");
         double[] target = new double[12];
-        Mat34.fromPose(baseTflange, target);
+        Se3.fromPose(baseTflange, target);
         double[] q = new double[model.dof()];
         IkSolver solver = solvers.get();
         boolean ok = solver.solveNumerical(target, qSeed, q);

@@ -120,13 +120,13 @@ public final class KinematicModel {
         for (Transformation t : transformations) {
             trStart[t.index()] = e;
             double[] f = fixed[t.index()];
-            Mat34.identity(f);
+            Se3.identity(f);
             for (Elementary el : t.elements()) {
                 elOp[e] = el.op().ordinal();
                 elVal[e] = el.value();
                 elCos[e] = Math.cos(el.value());
                 elSin[e] = Math.sin(el.value());
-                Mat34.apply(f, el.op(), el.value(), elCos[e], elSin[e]);
+                Elementary.apply(f, el.op(), el.value(), elCos[e], elSin[e]);
                 if (el.identified()) {
                     elParam[e] = params.size();
                     params.add(new ModelParameter(el.name(), el.kind(), t.index(), el.value()));
@@ -147,9 +147,9 @@ public final class KinematicModel {
             // R_Z(theta) R_Z(offset) = R_Z(theta + offset): one rotation instead of a 3x4 product's worth
             boolean fold = !prismatic[k - 1] && first < end && elOp[first] == Elementary.Op.RZ.ordinal();
             double[] f = new double[12];
-            Mat34.identity(f);
+            Se3.identity(f);
             for (int e2 = fold ? first + 1 : first; e2 < end; e2++)
-                Mat34.apply(f, Elementary.Op.values()[elOp[e2]], elVal[e2], elCos[e2], elSin[e2]);
+                Elementary.apply(f, Elementary.Op.values()[elOp[e2]], elVal[e2], elCos[e2], elSin[e2]);
             jointOffset[k - 1] = fold ? elVal[first] : 0;
             fastFixed[k] = f;
             // exact structure only (it comes from the element list, not from the values): a DH row
@@ -302,7 +302,7 @@ public final class KinematicModel {
     public Pose flange(double[] q) {
         double[] out = new double[12];
         flange(q, newWorkspace(), out);
-        return Mat34.toPose(out);
+        return Se3.toPose(out);
     }
 
     /** baseTtool = baseTflange(q) * flangeTtool. */
@@ -409,21 +409,21 @@ public final class KinematicModel {
      */
     double[] flangeReference(double[] q) {
         double[] th = theta(q), m = new double[12];
-        Mat34.identity(m);
+        Se3.identity(m);
         for (int k = 0; k <= n; k++) {
             if (k > 0) {
-                if (prismatic[k - 1]) Mat34.translate(m, 2, th[k - 1]);
-                else Mat34.rotate(m, 2, Math.cos(th[k - 1]), Math.sin(th[k - 1]));
+                if (prismatic[k - 1]) Se3.translate(m, 2, th[k - 1]);
+                else Se3.rotate(m, 2, Math.cos(th[k - 1]), Math.sin(th[k - 1]));
             }
             for (int e = trStart[k], end = trStart[k + 1]; e < end; e++)
-                Mat34.apply(m, Elementary.Op.values()[elOp[e]], elVal[e], elCos[e], elSin[e]);
+                Elementary.apply(m, Elementary.Op.values()[elOp[e]], elVal[e], elCos[e], elSin[e]);
         }
         return m;
     }
 
     private void joint(double[] m, int k, double t) {
-        if (prismatic[k]) Mat34.translate(m, 2, t);
-        else Mat34.rotate(m, 2, FastTrig.cos(t), FastTrig.sin(t)); // pure Java: the reduction is shared
+        if (prismatic[k]) Se3.translate(m, 2, t);
+        else Se3.rotate(m, 2, FastTrig.cos(t), FastTrig.sin(t)); // pure Java: the reduction is shared
     }
 
     /**
@@ -438,10 +438,10 @@ public final class KinematicModel {
         double[] m = fixed[0].clone();
         for (int k = 0; k < n; k++) {
             joint(m, k, th[k]);
-            frames[k + 1] = Mat34.toPose(m);
-            Mat34.mulInPlace(m, fixed[k + 1]);
+            frames[k + 1] = Se3.toPose(m);
+            Se3.mulInPlace(m, fixed[k + 1]);
         }
-        frames[n + 1] = Mat34.toPose(m);
+        frames[n + 1] = Se3.toPose(m);
         return frames;
     }
 
@@ -455,7 +455,7 @@ public final class KinematicModel {
         for (int k = 0; k < n; k++) {
             out[k] = m.clone();
             joint(m, k, th[k]);
-            Mat34.mulInPlace(m, fixed[k + 1]);
+            Se3.mulInPlace(m, fixed[k + 1]);
         }
         out[n] = m;
         return out;
@@ -491,7 +491,7 @@ public final class KinematicModel {
             ax[3 * k] = m[2]; ax[3 * k + 1] = m[6]; ax[3 * k + 2] = m[10];
             org[3 * k] = m[3]; org[3 * k + 1] = m[7]; org[3 * k + 2] = m[11];
             joint(m, k, th[k]);
-            Mat34.mulInPlace(m, fixed[k + 1]);
+            Se3.mulInPlace(m, fixed[k + 1]);
         }
         double px = m[3], py = m[7], pz = m[11];
         Arrays.fill(out, 0, 6 * n, 0.0);
@@ -515,9 +515,6 @@ public final class KinematicModel {
             }
         }
     }
-
-    /** baseTflange left in the workspace by the last Jacobian call (3x4, row-major). */
-    void lastFlange(Workspace ws, double[] out12) { System.arraycopy(ws.m, 0, out12, 0, 12); }
 
     // ---------------------------------------------------------------- parameters
 
@@ -581,7 +578,7 @@ public final class KinematicModel {
      */
     private void walk(Workspace ws, boolean all) {
         double[] m = ws.m, th = ws.theta, ax = ws.axes, org = ws.origins;
-        Mat34.identity(m);
+        Se3.identity(m);
         for (int k = 0; k <= n; k++) {
             if (k > 0) joint(m, k - 1, th[k - 1]);
             for (int e = trStart[k], end = trStart[k + 1]; e < end; e++) {
@@ -591,8 +588,8 @@ public final class KinematicModel {
                     ax[3 * e] = m[a]; ax[3 * e + 1] = m[4 + a]; ax[3 * e + 2] = m[8 + a];
                     org[3 * e] = m[3]; org[3 * e + 1] = m[7]; org[3 * e + 2] = m[11];
                 }
-                if (op >= 3) Mat34.rotate(m, a, elCos[e], elSin[e]);
-                else Mat34.translate(m, a, elVal[e]);
+                if (op >= 3) Se3.rotate(m, a, elCos[e], elSin[e]);
+                else Se3.translate(m, a, elVal[e]);
             }
         }
     }
@@ -661,9 +658,9 @@ public final class KinematicModel {
             return;
         }
         double[] t = new double[12];
-        Mat34.fromPose(tool, t);
+        Se3.fromPose(tool, t);
         System.arraycopy(m, 0, out, 0, 12);
-        Mat34.mulInPlace(out, t);
+        Se3.mulInPlace(out, t);
     }
 
     private void columns(Workspace ws, double[] pose12, int[] elems, double[] jacOut) {

@@ -50,7 +50,7 @@ public final class ParameterizationCheck {
                 use[i] = t.index() == 0 ? !e.name().endsWith(".r0") : t.index() == n ? e.identified() : true;
             }
             double[] m = new double[12];
-            Mat34.identity(m);
+            Se3.identity(m);
             List<double[]> axes = new ArrayList<>(), origins = new ArrayList<>();
             List<Boolean> rot = new ArrayList<>();
             List<String> names = new ArrayList<>();
@@ -63,7 +63,7 @@ public final class ParameterizationCheck {
                     rot.add(e.op().isRotation());
                     names.add(e.name());
                 }
-                Mat34.apply(m, e.op(), e.value(), Math.cos(e.value()), Math.sin(e.value()));
+                Elementary.apply(m, e.op(), e.value(), Math.cos(e.value()), Math.sin(e.value()));
             }
             int k = names.size();
             double[][] j = new double[6][k];

@@ -64,25 +64,16 @@ public final class Pose {
 
     /** Rotation of {@code angle} about the unit {@code axis} (Rodrigues). */
     public static Pose rotAxis(Vec3 axis, double angle) {
-        Vec3 u = axis.normalized();
-        double c = Math.cos(angle), s = Math.sin(angle), t = 1 - c;
-        double ux = u.x(), uy = u.y(), uz = u.z();
-        return new Pose(new double[] {
-                t * ux * ux + c, t * ux * uy - s * uz, t * ux * uz + s * uy,
-                t * ux * uy + s * uz, t * uy * uy + c, t * uy * uz - s * ux,
-                t * ux * uz - s * uy, t * uy * uz + s * ux, t * uz * uz + c}, 0, 0, 0);
+        Vec3 w = axis.normalized().times(angle);
+        double[] m = new double[9];
+        Se3.rotExp(w.x(), w.y(), w.z(), m);
+        return new Pose(m, 0, 0, 0);
     }
 
     /** A pose from a unit quaternion (w, x, y, z; normalised here) and a translation. */
     public static Pose fromQuaternion(double qw, double qx, double qy, double qz, double x, double y, double z) {
-        double n = Math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
-        if (!(n > 1e-9) || !Double.isFinite(n))
-            throw new IllegalArgumentException("quaternion (" + qw + ", " + qx + ", " + qy + ", " + qz + ") has no direction");
-        qw /= n; qx /= n; qy /= n; qz /= n;
-        double[] m = {
-                1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw),
-                2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw),
-                2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)};
+        double[] m = new double[9];
+        Se3.rotFromQuaternion(qw, qx, qy, qz, m);
         return new Pose(m, x, y, z);
     }
 
@@ -149,42 +140,18 @@ public final class Pose {
     /** Copy of the row-major rotation matrix. */
     public double[] rotationRowMajor() { return r.clone(); }
 
-    /** Unit quaternion (w, x, y, z) with w >= 0 (Shepperd's method). */
+    /** Unit quaternion (w, x, y, z) with w >= 0 (Shepperd's method, {@link Se3#rotQuaternion}). */
     public double[] quaternion() {
-        double t = r[0] + r[4] + r[8];
-        double w, qx, qy, qz;
-        if (t > 0) {
-            double s = Math.sqrt(t + 1) * 2;
-            w = 0.25 * s; qx = (r[7] - r[5]) / s; qy = (r[2] - r[6]) / s; qz = (r[3] - r[1]) / s;
-        } else if (r[0] > r[4] && r[0] > r[8]) {
-            double s = Math.sqrt(1 + r[0] - r[4] - r[8]) * 2;
-            w = (r[7] - r[5]) / s; qx = 0.25 * s; qy = (r[1] + r[3]) / s; qz = (r[2] + r[6]) / s;
-        } else if (r[4] > r[8]) {
-            double s = Math.sqrt(1 + r[4] - r[0] - r[8]) * 2;
-            w = (r[2] - r[6]) / s; qx = (r[1] + r[3]) / s; qy = 0.25 * s; qz = (r[5] + r[7]) / s;
-        } else {
-            double s = Math.sqrt(1 + r[8] - r[0] - r[4]) * 2;
-            w = (r[3] - r[1]) / s; qx = (r[2] + r[6]) / s; qy = (r[5] + r[7]) / s; qz = 0.25 * s;
-        }
-        double n = Math.sqrt(w * w + qx * qx + qy * qy + qz * qz);
-        if (w < 0) n = -n;
-        return new double[] {w / n, qx / n, qy / n, qz / n};
+        double[] q = new double[4];
+        Se3.rotQuaternion(r, q, 0);
+        return q;
     }
 
-    /** Rotation vector (axis * angle, rad) of this pose's rotation: the log map. */
+    /** Rotation vector (axis * angle, rad) of this pose's rotation: the log map ({@link Se3#rotLog}, exact near 180°). */
     public Vec3 rotationVector() {
-        double c = Math.max(-1, Math.min(1, (r[0] + r[4] + r[8] - 1) / 2));
-        double angle = Math.acos(c);
-        double vx = r[7] - r[5], vy = r[2] - r[6], vz = r[3] - r[1];
-        double s = Math.sin(angle);
-        if (angle < 1e-7) return new Vec3(vx / 2, vy / 2, vz / 2);
-        if (Math.PI - angle < 1e-6) {
-            double[] q = quaternion();
-            Vec3 axis = new Vec3(q[1], q[2], q[3]).normalized();
-            return axis.times(angle);
-        }
-        double k = angle / (2 * s);
-        return new Vec3(vx * k, vy * k, vz * k);
+        double[] w = new double[3];
+        Se3.rotLog(r, w, 0);
+        return new Vec3(w[0], w[1], w[2]);
     }
 
     /** Angle (rad) of the rotation taking this orientation to {@code o}'s. */

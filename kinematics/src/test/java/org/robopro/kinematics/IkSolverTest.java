@@ -115,7 +115,7 @@ class IkSolverTest {
         double[] target = new double[12];
         for (double[] q0 : m.randomConfigurations(20, 32)) {
             m.flange(q0, m.newWorkspace(), target);
-            List<IkSolution> api = ik.solveAll(Mat34.toPose(target));
+            List<IkSolution> api = ik.solveAll(Se3.toPose(target));
             assertEquals(solver.solveAll(target), api.size());
             for (int i = 0; i < api.size(); i++) {
                 IkSolution s = solver.solution(i);
@@ -157,7 +157,7 @@ class IkSolverTest {
             assertTrue(solver.solveNumerical(target, seed, q), "from " + Arrays.toString(seed));
             assertTrue(solver.positionError() < 1e-9 && solver.orientationError() < 1e-9);
             maxIterations = Math.max(maxIterations, solver.iterations());
-            Pose reached = m.flange(q), wanted = Mat34.toPose(target);
+            Pose reached = m.flange(q), wanted = Se3.toPose(target);
             assertTrue(reached.distanceTo(wanted) < 1e-9 && reached.angleTo(wanted) < 1e-9);
             InverseKinematics.NumericalOutcome o = ik.solveNumerical(wanted, seed);
             assertTrue(o.diagnostics().converged());
@@ -183,8 +183,8 @@ class IkSolverTest {
             double[] seed = q0.clone();
             for (int i = 0; i < 6; i++) seed[i] += 0.5 * rnd.nextGaussian(); // often nearer another branch
             // reference: every refined branch with every turn variant, plus DLS from the seed
-            List<IkSolution> candidates = new ArrayList<>(ik.solveAll(Mat34.toPose(target)));
-            ik.solveNumerical(Mat34.toPose(target), seed).solution().ifPresent(candidates::add);
+            List<IkSolution> candidates = new ArrayList<>(ik.solveAll(Se3.toPose(target)));
+            ik.solveNumerical(Se3.toPose(target), seed).solution().ifPresent(candidates::add);
             double[] best = null;
             double bestD = Double.POSITIVE_INFINITY;
             for (IkSolution s : candidates) {

@@ -53,7 +53,7 @@ class InverseKinematicsTest {
         java.util.Set<ConfData> confs = new java.util.HashSet<>();
         for (int i = 0; i < 8; i++) {
             double[] q = m.q(th[i]);
-            assertReaches(m, Mat34.toPose(t), q, 1e-9, "solution " + i);
+            assertReaches(m, Se3.toPose(t), q, 1e-9, "solution " + i);
             confs.add(new ConfData(0, 0, 0, ik.confOf(q).cfx()));
         }
         assertEquals(8, confs.size(), "the 8 solutions have the 8 cfx values");

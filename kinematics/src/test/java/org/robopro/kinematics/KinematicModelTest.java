@@ -127,7 +127,7 @@ class KinematicModelTest {
         double[] out = new double[12], pos = new double[3], jac = new double[3 * 30];
         for (double[] q : m.randomConfigurations(20, 6)) {
             m.flange(q, ws, out);
-            Pose fast = Mat34.toPose(out);
+            Pose fast = Se3.toPose(out);
             Pose[] frames = m.linkFrames(q);
             assertEquals(8, frames.length);
             assertPoseEquals(frames[7], fast, 1e-14, 1e-14, "link frames");
@@ -237,7 +237,7 @@ class KinematicModelTest {
             double[] p0 = m.parameterValues();
             for (double[] q : m.randomConfigurations(3, 9)) {
                 m.poseJacobian(q, tool, ws, pose, jac);
-                assertPoseEquals(m.flange(q).times(tool), Mat34.toPose(pose), 1e-13, 1e-13, "tool pose");
+                assertPoseEquals(m.flange(q).times(tool), Se3.toPose(pose), 1e-13, 1e-13, "tool pose");
                 double h = 1e-7;
                 for (int c = 0; c < np; c++) {
                     double[] pp = p0.clone(), pm = p0.clone();

@@ -34,4 +34,36 @@ class TextFilesTest {
         InputException e = assertThrows(InputException.class, () -> TextFiles.readUtf8(f));
         assertTrue(e.problem().contains("not UTF-8"), e.getMessage());
     }
+
+    @Test
+    void readUtf8_folder_saysSoNamingIt_withoutJavaText() throws Exception {
+        InputException e = assertThrows(InputException.class, () -> TextFiles.readUtf8(dir));
+        assertEquals(dir.toString(), e.file());
+        assertTrue(e.problem().contains("is a folder"), e.getMessage());
+        assertTrue(!e.getMessage().contains("Exception"), e.getMessage());
+    }
+
+    @Test
+    void readUtf8_byteOrderMark_isDropped() throws Exception {
+        Path f = dir.resolve("bom.json");
+        Files.write(f, new byte[] {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF, '{', '}'});
+        assertEquals("{}", TextFiles.readUtf8(f));
+    }
+
+    @Test
+    void readBytes_endlessDevice_isRefusedAfterTheLimitWithoutReadingOn() {
+        Path zero = Path.of("/dev/zero");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(zero));
+        long t0 = System.nanoTime();
+        InputException e = assertThrows(InputException.class, () -> TextFiles.readBytes(zero, 1 << 20, "mesh file"));
+        assertTrue(e.problem().contains("without end") && e.problem().contains("mesh file"), e.getMessage());
+        assertTrue(System.nanoTime() - t0 < 5e9);
+    }
+
+    @Test
+    void readBytes_fileOverTheLimit_isRefusedBySize() throws Exception {
+        Path f = Files.write(dir.resolve("big.stl"), new byte[2000]);
+        InputException e = assertThrows(InputException.class, () -> TextFiles.readBytes(f, 1000, "mesh file"));
+        assertTrue(e.problem().contains("more than"), e.getMessage());
+    }
 }

@@ -9,7 +9,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code robopro demo}: the whole loop, headless (issue 8): a simulated IRB-2000 controller in its
+ * {@code robopro demo}: the whole loop, headless: a simulated IRB-2000 controller in its
  * own process, an off-line welding program, its error, a measurement campaign through the link,
  * calibration, diagnosis, the compensated program and its error. Exit code 0, or 1 when a step
  * fails (the controller process is stopped in every case), 2 for bad arguments.

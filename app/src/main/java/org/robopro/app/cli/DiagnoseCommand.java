@@ -32,7 +32,7 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code robopro diagnose}: after geometric calibration, finds the non-geometric effects the
- * model left out (issue 4, docs/diagnosis.md) and writes {@code DIR/report.html},
+ * model left out (docs/diagnosis.md) and writes {@code DIR/report.html},
  * {@code DIR/diagnosis.json} and the extended model {@code DIR/extended.robot.json} (geometry plus
  * its {@code effects} section, which {@code robopro compensate} uses). Validation data come from
  * {@code --validate}, else from the file's {@code set} column.

@@ -39,6 +39,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import org.robopro.models.RobotLibrary;
 
 /**
  * {@code robopro link --tcp HOST:PORT | --serial DEVICE COMMAND [ARGS]}: one command to a
@@ -202,7 +203,7 @@ public final class LinkCommand implements Callable<Integer> {
         String robotName = robot != null ? robot : client.robotName();
         if (robotName == null || robotName.isBlank())
             throw new IllegalArgumentException("the controller does not say which robot it is; give --robot ROBOT");
-        RobotDescription d = Robots.load(robotName);
+        RobotDescription d = RobotLibrary.load(robotName);
         KinematicModel model = KinematicModel.build(d);
         List<double[]> qs = MeasurementCampaign.samplePoses(model, poses, seed);
         PrintWriter e = spec.commandLine().getErr();

@@ -9,6 +9,7 @@ import org.robopro.models.RobotDescription;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
+import org.robopro.models.RobotLibrary;
 
 /**
  * {@code robopro model check FILE}: reads a robot file and checks its parameterization for
@@ -27,7 +28,7 @@ public final class ModelCheckCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
-        RobotDescription d = Robots.load(file);
+        RobotDescription d = RobotLibrary.load(file);
         ParameterizationCheck.Result r = ParameterizationCheck.check(KinematicModel.build(d));
         out.printf(Locale.ROOT, "%s: %d joints, model read and built.%n%n", d.name(), d.dof());
         print(out, "robopro model (seed paper Table 1)", r);

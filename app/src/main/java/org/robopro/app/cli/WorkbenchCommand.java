@@ -15,7 +15,9 @@ import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.models.InputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code robopro workbench}: opens the desktop workbench (also what {@code robopro} with no
@@ -50,11 +52,13 @@ public final class WorkbenchCommand implements Callable<Integer> {
             description = "Fail when no frame is drawn within S seconds (default ${DEFAULT-VALUE}).")
     double firstFrameTimeout;
 
+    @Spec CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
         int[] wh = parseSize(size);
         if (java.awt.GraphicsEnvironment.isHeadless()) {
-            System.err.println("robopro workbench: no display (DISPLAY is unset or java.awt.headless is true); "
+            spec.commandLine().getErr().println("robopro workbench: no display (DISPLAY is unset or java.awt.headless is true); "
                     + "run under a desktop or Xvfb (e.g. xvfb-run ./robopro workbench ...)");
             return 3;
         }
@@ -68,7 +72,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
         try {
             wb = WorkbenchWindow.open(o);
         } catch (IllegalStateException e) {
-            System.err.println("robopro workbench: " + e.getMessage());
+            spec.commandLine().getErr().println("robopro workbench: " + e.getMessage());
             return 3;
         }
         if (interactive) {
@@ -79,10 +83,10 @@ public final class WorkbenchCommand implements Callable<Integer> {
             if (benchmark) benchmark(wb);
             if (screenshot != null) {
                 wb.screenshot(screenshot);
-                System.out.println("robopro workbench: saved " + screenshot.toAbsolutePath());
+                spec.commandLine().getOut().println("robopro workbench: saved " + screenshot.toAbsolutePath());
             }
         } catch (IllegalStateException e) {
-            System.err.println("robopro workbench: " + e.getMessage());
+            spec.commandLine().getErr().println("robopro workbench: " + e.getMessage());
             return 3;
         } finally {
             wb.close();
@@ -118,7 +122,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
         }
         long frames = wb.app().frameCount() - f0;
         double secs = (System.nanoTime() - t0) / 1e9;
-        System.out.printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%s%n",
+        spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%s%n",
                 size, first, frames / secs, frames, secs, program.isEmpty() ? ""
                         : String.format(Locale.ROOT, "; program of %d moves, %d background path checks", program.size(),
                         wb.session().pathChecker().checks() - checks0));

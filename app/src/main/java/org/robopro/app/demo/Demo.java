@@ -55,7 +55,7 @@ import org.robopro.programs.sim.MoveStep;
 
 /**
  * {@code robopro demo}: the seed paper's whole loop, headless, on a simulated IRB-2000 controller
- * running as its own process (issue 8). An off-line welding program misses its targets by the
+ * running as its own process. An off-line welding program misses its targets by the
  * robot's real inaccuracy; a measurement campaign through the controller link, calibration and
  * diagnosis model that inaccuracy; the compensated program hits the targets.
  *
@@ -120,7 +120,7 @@ public final class Demo {
 
     private static int pick(int[] joints, Random rng) { return joints[rng.nextInt(joints.length)]; }
 
-    /** The true robot's RMS geometric flange error of a seed, mm: uniform in 5-15 mm (issue 8). */
+    /** The true robot's RMS geometric flange error of a seed, mm: uniform in 5-15 mm, the spread of uncalibrated industrial arms the demo shows. */
     static double errorMm(long seed) {
         return 5 + 10 * new Random(seed * 7_919L + 3).nextDouble();
     }

@@ -42,7 +42,7 @@ final class DemoReport {
 
     private static Double round(double mm) { return Double.isFinite(mm) ? Math.round(mm * 1e5) / 1e5 : null; }
 
-    /** {@code demo.json}: exactly the table's numbers and the effects (issue 8). */
+    /** {@code demo.json}: exactly the table's numbers and the effects. */
     static String json(Demo.Result r) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("nominal_mean_mm", round(r.nominal().meanMm()));

@@ -24,7 +24,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 
 /**
- * Step 4's diagnosis (issue 4, {@link Diagnoser}): names the effect the geometric model left out,
+ * Step 4's diagnosis ({@link Diagnoser}, docs/diagnosis.md): names the effect the geometric model left out,
  * writes its report, and gives the extended model's compensator and tracker registration.
  */
 final class DiagnosisStep {

@@ -26,7 +26,6 @@ import javax.swing.Timer;
 import org.robopro.app.workbench.model.CellObject;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.ProjectData;
-import org.robopro.app.workbench.model.Robots;
 import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.Tool;
 import org.robopro.app.workbench.model.WorkObject;
@@ -46,6 +45,7 @@ import org.robopro.models.WorkObjectDescription;
 import org.robopro.models.InputException;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
+import org.robopro.models.RobotLibrary;
 
 /**
  * Reads and writes workbench project files (docs/project-file.md): JSON, mm and degrees /
@@ -365,7 +365,7 @@ public final class ProjectStore {
             RobotDescription robot;
             try {
                 boolean isPath = ref.contains("/") || ref.contains("\\") || ref.endsWith(".json");
-                robot = Robots.load(isPath && baseDir != null ? baseDir.resolve(ref).toString() : ref);
+                robot = RobotLibrary.load(isPath && baseDir != null ? baseDir.resolve(ref).toString() : ref);
             } catch (InputException e) {
                 throw e;
             } catch (RuntimeException e) {

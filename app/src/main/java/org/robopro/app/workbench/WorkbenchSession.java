@@ -498,7 +498,7 @@ public final class WorkbenchSession implements AutoCloseable {
     }
 
     /**
-     * Diagnoses the cell's robot from measurements (issue 4: geometric calibration, then the
+     * Diagnoses the cell's robot from measurements (docs/diagnosis.md: geometric calibration, then the
      * non-geometric effects one by one; blocking: run it off the UI thread). Throws
      * CancellationException when {@code cancel} fires.
      */

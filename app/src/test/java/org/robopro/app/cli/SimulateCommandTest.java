@@ -15,7 +15,7 @@ import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 
-/** robopro simulate --effect: condition columns, truth with the injected values, and diagnose finds the effect (issue 4). */
+/** robopro simulate --effect: condition columns, truth with the injected values, and diagnose finds the effect. */
 class SimulateCommandTest {
     @TempDir Path dir;
     private final CliHarness cli = new CliHarness();
@@ -36,7 +36,7 @@ class SimulateCommandTest {
         assertEquals("gear-periodic", e.get("effect").asText());
         assertEquals(1, e.get("joints").get(0).asInt());
         double a1 = Math.toDegrees(Math.hypot(e.get("parameters_si").get("a1").asDouble(), e.get("parameters_si").get("b1").asDouble()));
-        assertTrue(a1 >= 0.004 && a1 <= 0.01, "harmonic-1 amplitude in the issue-4 range: " + a1);
+        assertTrue(a1 >= 0.004 && a1 <= 0.01, "harmonic-1 amplitude in EffectSpec's range: " + a1);
         assertEquals("gear-periodic", RobotLibrary.read(sim.resolve("true.robot.json")).effects().get(0).effect());
 
         assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),

@@ -43,6 +43,14 @@ public final class WorkbenchScenario {
         System.exit(0);
     }
 
+    /** Records what is clipped in the window now (LayoutCheck), one entry per component. */
+    static void clipped(java.awt.Container frame, Properties r, String key) {
+        WorkbenchWindow.onEdt(() -> {
+            frame.validate();
+            r.setProperty(key, String.join("; ", org.robopro.app.workbench.ui.LayoutCheck.clipped(frame)));
+        });
+    }
+
     private static String fmt(double[] q) {
         StringBuilder sb = new StringBuilder();
         for (double v : q) sb.append(String.format(Locale.ROOT, "%.6f ", Math.toDegrees(v)));
@@ -55,6 +63,7 @@ public final class WorkbenchScenario {
         r.setProperty("firstFrameSeconds", String.valueOf(win.secondsToFirstFrame()));
         r.setProperty("objects", String.valueOf(wb.model().objects().size()));
         win.screenshot(out.resolve("01-cell.png"));
+        clipped(frame, r, "clippedMain");
 
         // Jog by joints through the spinners, then in Cartesian through the jog buttons.
         r.setProperty("q0", fmt(wb.model().q()));
@@ -204,6 +213,18 @@ public final class WorkbenchScenario {
         calibration(win, out, r);
         diagnosis(win, out, r);
         wizard(win, out, r);
+        // Escape closes a docked panel (the calibration panel here), as it would a dialog.
+        WorkbenchWindow.onEdt(() -> {
+            var cal = frame.openCalibration();
+            frame.getRootPane().getActionMap().get("close-dock").actionPerformed(null);
+            r.setProperty("escapeClosedDock", String.valueOf(!frame.isDocked(cal)));
+        });
+        // The same window at 1920 x 1080, with the wizard docked.
+        WorkbenchWindow.onEdt(() -> { frame.sizeTo(1920, 1080); frame.openWizard(); });
+        Thread.sleep(300);
+        clipped(frame, r, "clippedLarge");
+        win.screenshot(out.resolve("09-large.png"));
+        WorkbenchWindow.onEdt(() -> { frame.closeDock(frame.openWizard()); frame.sizeTo(1280, 720); });
     }
 
     /**
@@ -222,7 +243,6 @@ public final class WorkbenchScenario {
         AtomicReference<Boolean> ok = new AtomicReference<>();
         WorkbenchWindow.onEdt(() -> {
             panel.set(frame.openCalibration());
-            panel.get().setBounds(frame.getX() + 500, frame.getY() + 120, 770, 590);
             ok.set(panel.get().loadMeasurements(sim.resolve("measurements.csv")));
         });
         var p = panel.get();
@@ -258,6 +278,7 @@ public final class WorkbenchScenario {
         r.setProperty("calSummarySameAsCli", String.valueOf(Files.readString(cli.resolve("summary.json"))
                 .equals(wb.lastCalibration().orElseThrow().summaryJson())));
         win.screenshot(out.resolve("07-calibration.png"));
+        clipped(frame, r, "clippedCalibration");
         Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");
         Files.deleteIfExists(nominalMod);
         Files.deleteIfExists(compensatedMod);
@@ -271,7 +292,7 @@ public final class WorkbenchScenario {
         r.setProperty("compensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("Nominal", "X")
                 .equals(Files.readString(compensatedMod).replace("Compensated", "X"))));
         r.setProperty("compensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
-        WorkbenchWindow.onEdt(() -> p.dispose());
+        WorkbenchWindow.onEdt(() -> frame.closeDock(p));
         wb.clearCalibration();
     }
 
@@ -291,7 +312,6 @@ public final class WorkbenchScenario {
         AtomicReference<Boolean> ok = new AtomicReference<>();
         WorkbenchWindow.onEdt(() -> {
             panel.set(frame.openCalibration());
-            panel.get().setBounds(frame.getX() + 420, frame.getY() + 60, 850, 650);
             ok.set(panel.get().loadMeasurements(file));
         });
         var p = panel.get();
@@ -333,7 +353,7 @@ public final class WorkbenchScenario {
         r.setProperty("diagCompensatedDiffers", String.valueOf(!Files.readString(nominalMod).replace("NominalD", "X")
                 .equals(Files.readString(compensatedMod).replace("Extended", "X"))));
         r.setProperty("diagCompensationLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Compensated")).toList()));
-        WorkbenchWindow.onEdt(() -> p.dispose());
+        WorkbenchWindow.onEdt(() -> frame.closeDock(p));
         wb.clearCalibration();
     }
 
@@ -409,7 +429,6 @@ public final class WorkbenchScenario {
         WorkbenchWindow.onEdt(() -> {
             frame.action("robot-wizard").actionPerformed(null);
             w.set(frame.openWizard());
-            w.get().setBounds(frame.getX() + 640, frame.getY() + 150, 630, 560);
             w.get().startFrom("irb2000");
             w.get().setRobotName("irb2000_long", "IRB 2000, longer upper arm");
         });
@@ -443,6 +462,7 @@ public final class WorkbenchScenario {
         win.app().camera().focus(0.45, 0, 0.95);
         win.app().camera().zoom(0.75);
         win.screenshot(out.resolve("04-wizard.png"));
+        clipped(frame, r, "clippedWizard");
         Path robotFile = out.resolve("irb2000_long.robot.json");
         Files.deleteIfExists(robotFile);
         AtomicReference<Boolean> saved = new AtomicReference<>();
@@ -457,7 +477,7 @@ public final class WorkbenchScenario {
         r.setProperty("cellRobot", wb.model().robot().name());
         r.setProperty("cellRobotRef", wb.model().robotRef());
         r.setProperty("previewAfterUse", String.valueOf(wb.model().preview() != null));
-        WorkbenchWindow.onEdt(() -> wiz.dispose());
+        WorkbenchWindow.onEdt(() -> frame.closeDock(wiz));
         win.setView(org.robopro.app.workbench.scene.CameraState.View.ISO);
         Path project = out.resolve("long.robopro.json");
         Files.deleteIfExists(project);

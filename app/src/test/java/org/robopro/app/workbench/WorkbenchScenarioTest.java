@@ -146,6 +146,10 @@ class WorkbenchScenarioTest {
         assertEquals("4", r.getProperty("afterBrokenProgram"), "a broken import leaves the program as it was");
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
+        // Nothing a user needs is clipped at 1280 x 720 (toolbar buttons, table columns, labels, tree rows), nor at 1920 x 1080.
+        for (String k : new String[] {"clippedMain", "clippedCalibration", "clippedWizard", "clippedLarge"})
+            assertEquals("", r.getProperty(k), k);
+        assertEquals("true", r.getProperty("escapeClosedDock"), "Escape closes a docked panel");
         assertTrue(r.getProperty("undoName").startsWith("Undo Move Table"), r.getProperty("undoName"));
         assertEquals("5", r.getProperty("objectsAfterUndo"), "Edit > Undo took the table back");
         assertEquals("6", r.getProperty("objectsAfterRedo"), "Edit > Redo put it back");
@@ -190,7 +194,7 @@ class WorkbenchScenarioTest {
         assertTrue(before > 1, "the simulated robot has millimetres of error: " + before);
         assertTrue(after < 0.1, "calibration reaches the noise floor: " + after);
         assertTrue(Double.parseDouble(r.getProperty("calValidateRmsMm")) < 0.1, r.getProperty("calValidateRmsMm"));
-        assertTrue(r.getProperty("calRms").startsWith("RMS ") && r.getProperty("calRms").contains("validation"), r.getProperty("calRms"));
+        assertTrue(r.getProperty("calRms").contains("Training RMS ") && r.getProperty("calRms").contains("Validation RMS "), r.getProperty("calRms"));
         assertTrue(r.getProperty("calEffects").contains("correction"), r.getProperty("calEffects"));
         assertEquals("true", r.getProperty("calApplied"));
         assertTrue(r.getProperty("calReference").endsWith("irb2000-calibrated.robot.json"), r.getProperty("calReference"));

@@ -34,7 +34,7 @@ final class XvfbDisplay implements AutoCloseable {
         }
         for (int n = 91; n < 140; n++) {
             if (Files.exists(Path.of("/tmp/.X11-unix/X" + n)) || Files.exists(Path.of("/tmp/.X" + n + "-lock"))) continue;
-            Process p = new ProcessBuilder(exe, ":" + n, "-screen", "0", "1600x1000x24", "-nolisten", "tcp")
+            Process p = new ProcessBuilder(exe, ":" + n, "-screen", "0", "1920x1200x24", "-nolisten", "tcp")
                     .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
             for (int i = 0; i < 100 && p.isAlive(); i++) {
                 if (Files.exists(Path.of("/tmp/.X11-unix/X" + n))) return new XvfbDisplay(":" + n, p);

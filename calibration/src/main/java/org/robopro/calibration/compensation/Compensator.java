@@ -7,6 +7,7 @@ import org.robopro.kinematics.IkSolution;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Se3;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 
@@ -145,14 +146,14 @@ public final class Compensator implements TargetCompensator {
         private final int n = nominal.dof();
         private final double[][] th = new double[8][Math.max(6, n)];
         private final double[] f = new double[12], act = new double[12], tn = new double[12], tc = new double[12],
-                tnInv = new double[12], target = new double[12], flangeCmd = new double[12], tmp = new double[9],
+                tnInv = new double[12], target = new double[12], flangeCmd = new double[12],
                 jac = new double[6 * n], a = new double[36], e = new double[6], w = new double[3], qWork = new double[n],
                 thetaSeed = new double[n];
 
         private Batch() {
-            toArray(toolNominal, tn);
-            toArray(toolCalibrated, tc);
-            toArray(toolNominal.inverse(), tnInv);
+            Se3.fromPose(toolNominal, tn);
+            Se3.fromPose(toolCalibrated, tc);
+            Se3.fromPose(toolNominal.inverse(), tnInv);
         }
 
         /**
@@ -163,13 +164,13 @@ public final class Compensator implements TargetCompensator {
          */
         public Status compensate(double[] pos, double[] quat, double[] qInOut, double[] commandedOut, double[] residualOut) {
             if (n != 6 || extended != null) return reference(pos, quat, qInOut, commandedOut, residualOut); // effects: reference path
-            quatTo12(quat, pos, target);
+            Se3.fromQuaternion(quat, pos, target);
             System.arraycopy(qInOut, 0, qWork, 0, n);
             nominal.flange(qWork, wsN, f);
-            mul12(f, tn, act);
+            Se3.mul(f, tn, act);
             if (error(target, act) > SEED_RADIUS_M || Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) > SEED_ANGLE_RAD) {
                 if (!ik.hasClosedForm()) return reference(pos, quat, qInOut, commandedOut, residualOut);
-                mul12(target, tnInv, flangeCmd);
+                Se3.mul(target, tnInv, flangeCmd);
                 int count = ik.closedFormThetas(flangeCmd, th);
                 if (count == 0) return finish(qInOut, commandedOut, residualOut, Double.NaN, Double.NaN, Status.UNREACHABLE);
                 // The branch nearest to the seed (in q, on the seed's turn), preferring ones inside the limits.
@@ -192,13 +193,13 @@ public final class Compensator implements TargetCompensator {
             double rp = Double.NaN, rr = Double.NaN;
             for (int it = 0; it <= MAX_ITERATIONS; it++) {
                 calibrated.flange(qWork, wsC, f);
-                mul12(f, tc, act);
+                Se3.mul(f, tc, act);
                 rp = error(target, act);
                 rr = Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
                 if (rp <= POSITION_TOLERANCE && rr <= ROTATION_TOLERANCE) {
                     System.arraycopy(qWork, 0, qInOut, 0, n);
                     nominal.flange(qWork, wsN, f);
-                    mul12(f, tn, act);
+                    Se3.mul(f, tn, act);
                     return finish(qInOut, commandedOut, residualOut, rp, rr,
                             nominal.withinLimits(qWork) ? Status.CONVERGED : Status.OUT_OF_LIMITS);
                 }
@@ -224,10 +225,7 @@ public final class Compensator implements TargetCompensator {
         /** Position error |target - actual| (m); leaves the rotation error Log(R_t R_aᵀ) in w. */
         private double error(double[] t, double[] a) {
             double dx = t[3] - a[3], dy = t[7] - a[7], dz = t[11] - a[11];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    tmp[3 * i + j] = t[4 * i] * a[4 * j] + t[4 * i + 1] * a[4 * j + 1] + t[4 * i + 2] * a[4 * j + 2];
-            log(tmp, w);
+            Se3.rotationLogBetween(t, a, w, 0);
             return Math.sqrt(dx * dx + dy * dy + dz * dz);
         }
 
@@ -245,7 +243,7 @@ public final class Compensator implements TargetCompensator {
         /** Writes X_comp (the nominal tool pose left in {@code act}) and residuals. */
         private Status finish(double[] q, double[] commandedOut, double[] residualOut, double rp, double rr, Status s) {
             commandedOut[0] = act[3]; commandedOut[1] = act[7]; commandedOut[2] = act[11];
-            quaternion(act, commandedOut);
+            Se3.quaternion(act, commandedOut, 3);
             residualOut[0] = rp;
             residualOut[1] = rr;
             return s;
@@ -280,61 +278,7 @@ public final class Compensator implements TargetCompensator {
         return true;
     }
 
-    /** Unit quaternion (w, x, y, z), w >= 0, of the rotation in a 3x4 matrix, written at out[3..6]. */
-    static void quaternion(double[] m, double[] out) {
-        double r00 = m[0], r01 = m[1], r02 = m[2], r10 = m[4], r11 = m[5], r12 = m[6], r20 = m[8], r21 = m[9], r22 = m[10];
-        double t = r00 + r11 + r22, qw, qx, qy, qz;
-        if (t > 0) {
-            double s = Math.sqrt(t + 1) * 2;
-            qw = 0.25 * s; qx = (r21 - r12) / s; qy = (r02 - r20) / s; qz = (r10 - r01) / s;
-        } else if (r00 > r11 && r00 > r22) {
-            double s = Math.sqrt(1 + r00 - r11 - r22) * 2;
-            qw = (r21 - r12) / s; qx = 0.25 * s; qy = (r01 + r10) / s; qz = (r02 + r20) / s;
-        } else if (r11 > r22) {
-            double s = Math.sqrt(1 + r11 - r00 - r22) * 2;
-            qw = (r02 - r20) / s; qx = (r01 + r10) / s; qy = 0.25 * s; qz = (r12 + r21) / s;
-        } else {
-            double s = Math.sqrt(1 + r22 - r00 - r11) * 2;
-            qw = (r10 - r01) / s; qx = (r02 + r20) / s; qy = (r12 + r21) / s; qz = 0.25 * s;
-        }
-        double nrm = Math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz) * (qw < 0 ? -1 : 1);
-        out[3] = qw / nrm; out[4] = qx / nrm; out[5] = qy / nrm; out[6] = qz / nrm;
-    }
-
-    // ------------------------------------------------------------------ small 3x4 helpers
-
-    static void toArray(Pose p, double[] m) {
-        for (int i = 0; i < 3; i++) for (int j = 0; j < 3; j++) m[4 * i + j] = p.rot(i, j);
-        m[3] = p.x(); m[7] = p.y(); m[11] = p.z();
-    }
-
-    static void quatTo12(double[] q, double[] p, double[] m) {
-        double n = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
-        m[0] = 1 - 2 * (y * y + z * z); m[1] = 2 * (x * y - z * w); m[2] = 2 * (x * z + y * w); m[3] = p[0];
-        m[4] = 2 * (x * y + z * w); m[5] = 1 - 2 * (x * x + z * z); m[6] = 2 * (y * z - x * w); m[7] = p[1];
-        m[8] = 2 * (x * z - y * w); m[9] = 2 * (y * z + x * w); m[10] = 1 - 2 * (x * x + y * y); m[11] = p[2];
-    }
-
-    static void mul12(double[] a, double[] b, double[] out) {
-        for (int i = 0; i < 3; i++) {
-            double a0 = a[4 * i], a1 = a[4 * i + 1], a2 = a[4 * i + 2];
-            out[4 * i] = a0 * b[0] + a1 * b[4] + a2 * b[8];
-            out[4 * i + 1] = a0 * b[1] + a1 * b[5] + a2 * b[9];
-            out[4 * i + 2] = a0 * b[2] + a1 * b[6] + a2 * b[10];
-            out[4 * i + 3] = a0 * b[3] + a1 * b[7] + a2 * b[11] + a[4 * i + 3];
-        }
-    }
-
     static double wrap(double a) {
         return a - 2 * Math.PI * Math.rint(a / (2 * Math.PI));
-    }
-
-    static void log(double[] r, double[] w) {
-        double c = Math.max(-1, Math.min(1, (r[0] + r[4] + r[8] - 1) / 2));
-        double th = Math.acos(c);
-        double vx = r[7] - r[5], vy = r[2] - r[6], vz = r[3] - r[1];
-        double k = th < 1e-6 ? 0.5 : th / (2 * Math.sin(th));
-        w[0] = vx * k; w[1] = vy * k; w[2] = vz * k;
     }
 }

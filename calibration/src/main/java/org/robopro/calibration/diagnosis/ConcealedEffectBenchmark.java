@@ -17,7 +17,7 @@ import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
 /**
- * The concealed-effect benchmark of issue 4: simulated IRB-2000 campaigns with random geometric
+ * The concealed-effect benchmark (docs/diagnosis-benchmark.md): simulated IRB-2000 campaigns with random geometric
  * errors, one or two injected effects of realistic size (or none, or outliers), realistic extra
  * columns (approach directions from the pose sequence, a warm-up temperature curve with time,
  * payload changes when compliance is tested), random noise σ 0.01–0.05 mm and 100–300 poses;
@@ -38,7 +38,7 @@ public final class ConcealedEffectBenchmark {
     /** Result of a benchmark run: rows per case and totals. */
     public record Result(List<Row> rows, int seedsPerCase, double namedRightPct, double jointsRightPct, int nullFalse,
                          int nullRuns, double worstCaseMeanValRatio, double meanValRatio, double maxMs300) {
-        /** The bar of issue 4: ≥ 95 % named (and joints) right, no false effect on null cases, RMS ≤ 1.15 floor. */
+        /** The bar the diagnosis must clear: ≥ 95 % named (and joints) right, no false effect on null cases, RMS ≤ 1.15 floor. */
         public boolean meetsBar() {
             return jointsRightPct >= 95 && nullFalse == 0 && worstCaseMeanValRatio <= 1.15;
         }
@@ -64,7 +64,7 @@ public final class ConcealedEffectBenchmark {
 
     static double uniform(Random r, double lo, double hi) { return EffectSpec.uniform(r, lo, hi); }
 
-    // Effects with sizes drawn from issue 4's ranges (EffectSpec), joints 0-based here as in the case list.
+    // Effects with sizes drawn from EffectSpec's realistic ranges, joints 0-based here as in the case list.
     private static EffectSpec compliance(int joint) { return EffectSpec.of(Effect.Kind.COMPLIANCE, joint + 1); }
     private static EffectSpec periodic(int joint) { return EffectSpec.of(Effect.Kind.PERIODIC, joint + 1); }
     private static EffectSpec backlash(int joint) { return EffectSpec.of(Effect.Kind.BACKLASH, joint + 1); }

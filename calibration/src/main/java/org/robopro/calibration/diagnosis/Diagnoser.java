@@ -27,7 +27,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Finds the physics a geometric model left out (issue 4; method in docs/diagnosis.md):
+ * Finds the physics a geometric model left out (method in docs/diagnosis.md):
  * <ol>
  * <li>geometric calibration ({@link Calibrator}): identifiability, outliers by its rule (reported,
  *     excluded), noise estimate;</li>
@@ -67,7 +67,7 @@ public final class Diagnoser {
         public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress); }
     }
 
-    // Physical plausibility bounds (issue 4).
+    // Physical plausibility bounds: what real joints and gears can have.
     static final double MIN_STIFFNESS = 1e4, MAX_STIFFNESS = 1e8;        // N·m/rad
     static final double MAX_PERIODIC_RAD = Math.toRadians(0.1);
     static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
@@ -76,6 +76,7 @@ public final class Diagnoser {
     static final double MAX_STRAIN = 2e-3;
     static final double MAX_DRIFT_PER_K = 1e-4, MAX_DRIFT_PER_H = 1e-3; // m/K, m/h
 
+    /** The stepwise search's candidates and decisions, at debug level (off by default). */
     private static final Logger LOG = LoggerFactory.getLogger(Diagnoser.class);
     /** Stage times at debug level. */
     static final class Timer {
@@ -1201,7 +1202,7 @@ public final class Diagnoser {
     }
 
     /**
-     * Physical bounds on an estimate (issue 4), in words. An estimate is implausible when its
+     * Physical bounds on an estimate, in words. An estimate is implausible when its
      * whole 3σ interval lies outside the bounds: a poorly determined estimate is not condemned
      * for its noise, a well determined one outside the physics is.
      */

@@ -4,7 +4,7 @@ import java.util.List;
 import org.robopro.calibration.identification.CalibrationResult;
 
 /**
- * What a diagnosis found (issue 4). SI units inside (m, rad); the report writers convert.
+ * What a diagnosis found (docs/diagnosis.md). SI units inside (m, rad); the report writers convert.
  *
  * @param robot            robot name
  * @param geometric        the geometric calibration the diagnosis started from

@@ -28,7 +28,7 @@ public final class DiagnosisReport {
         return m;
     }
 
-    /** The JSON tree (issue 4 fields first). */
+    /** The JSON tree (docs/diagnosis.md; the documented fields first). */
     public static Map<String, Object> summary(Diagnosis d, Context ctx) {
         Map<String, Object> root = new LinkedHashMap<>();
         root.put("robot", d.robot());

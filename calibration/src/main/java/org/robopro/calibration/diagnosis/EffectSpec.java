@@ -19,11 +19,11 @@ import org.robopro.kinematics.KinematicModel;
  *
  * <p>Without a joint the controller simulator's defaults apply: gear-periodic 1, joint-scale and
  * joint-coupling 3 (coupling from the joint before), backlash and joint-compliance 2.
- * Without a value the size is drawn from the realistic ranges of issue 4 with the caller's random
+ * Without a value the size is drawn from the realistic ranges in the table below with the caller's random
  * generator ({@link #draw}); a VALUE is in the units a user thinks in:
  * <table>
  * <caption>values</caption>
- * <tr><th>effect</th><th>VALUE</th><th>drawn (issue 4)</th></tr>
+ * <tr><th>effect</th><th>VALUE</th><th>drawn from the range</th></tr>
  * <tr><td>backlash</td><td>lost motion, deg (the full play; ± half of it by direction)</td><td>0.02–0.05°</td></tr>
  * <tr><td>gear-periodic</td><td>amplitude of each of harmonics 1–3, deg (phases drawn), or six values
  *     a1,b1,a2,b2,a3,b3 in deg (Δθ = Σ a_h sin hq + b_h cos hq)</td>
@@ -211,7 +211,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
 
     /**
      * The effect with its values (SI, in the order of {@link Effect#parameterNames()}): the VALUE
-     * converted, or drawn from the issue-4 ranges with {@code rng} (the draw takes the same numbers
+     * converted, or drawn from the ranges of the class table with {@code rng} (the draw takes the same numbers
      * from {@code rng} whatever the robot, so a seed gives the same sizes).
      */
     public Effect.Term draw(KinematicModel model, GravityTorques gravity, Random rng) {
@@ -234,7 +234,7 @@ public record EffectSpec(Effect.Kind kind, int joint, int source, double[] value
             for (int i = 0; i < v.length; i++) v[i] = Math.toRadians(value[i]);
             return v;
         }
-        boolean wrist = joint >= 4; // transmission errors are larger on the wrist (issue 4)
+        boolean wrist = joint >= 4; // the table: a larger range on wrist axes 4-6
         for (int h = 0; h < Effect.HARMONICS; h++) {
             double a = Math.toRadians(value != null ? value[0] : wrist ? uniform(rng, 0.02, 0.05) : uniform(rng, 0.004, 0.01));
             double ph = 2 * Math.PI * rng.nextDouble();

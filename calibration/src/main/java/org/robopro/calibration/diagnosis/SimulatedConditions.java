@@ -43,7 +43,7 @@ public final class SimulatedConditions implements CampaignSimulator.ConditionsSo
     }
 
     /**
-     * Conditions with a warm-up drawn from issue 4's range (ΔT 10–15 K, τ 900–2400 s; two numbers
+     * Conditions with a warm-up drawn from a realistic range (ΔT 10–15 K, τ 900–2400 s; two numbers
      * taken from {@code sizes}).
      */
     public static SimulatedConditions realistic(Random sizes, long seed, double ratedPayloadKg) {

@@ -21,7 +21,7 @@ import org.robopro.models.JointDescription;
 import org.robopro.models.Vec3;
 
 /**
- * Calibrates a robot from measurements (issue 3, seed paper §5):
+ * Calibrates a robot from measurements (seed paper §5):
  * <ol>
  * <li>check the data (joint count, enough poses, an instrument frame the data can determine);</li>
  * <li>start the instrument frame by rigid registration of nominal predictions, then fit only

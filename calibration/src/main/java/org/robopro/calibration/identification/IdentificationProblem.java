@@ -7,9 +7,10 @@ import org.robopro.calibration.measurement.Measurement;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.ModelParameter;
 import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Se3;
 
 /**
- * The identification problem of issue 3 as pluggable parameter blocks, each contributing
+ * The identification problem (seed paper §5, docs/calibration.md) as pluggable parameter blocks, each contributing
  * Jacobian columns per pose:
  * <ul>
  * <li><b>geometry</b>: the kinematic model's Table-1 parameters (analytic columns from
@@ -238,7 +239,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         int k2 = Arrays.binarySearch(free, fullIdx + 2);
         if (k0 < 0 || k1 < 0 || k2 < 0) return; // a partly fixed rotation stays additive (tiny steps only)
         double[] w = {x[k0], x[k1], x[k2]}, d = {step[k0], step[k1], step[k2]}, o = new double[3];
-        Rotations.leftCompose(w, 0, d, 0, o, 0);
+        Se3.rotLeftCompose(w, 0, d, 0, o, 0, new double[27]);
         out[k0] = o[0]; out[k1] = o[1]; out[k2] = o[2];
     }
 
@@ -254,7 +255,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         double[] rft = new double[9];
         Pose flangeTtool;
         if (sixD) {
-            Rotations.exp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], rft);
+            Se3.rotExp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], rft);
             flangeTtool = poseOf(rft, tool);
         } else {
             rft[0] = rft[4] = rft[8] = 1;
@@ -263,7 +264,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         double[] rib = new double[9];
         double[] tib = new double[3];
         if (instrument) {
-            Rotations.exp(full[instOff + 3], full[instOff + 4], full[instOff + 5], rib);
+            Se3.rotExp(full[instOff + 3], full[instOff + 4], full[instOff + 5], rib);
             tib[0] = full[instOff]; tib[1] = full[instOff + 1]; tib[2] = full[instOff + 2];
         } else rib[0] = rib[4] = rib[8] = 1;
         double wp = 1 / sigmaPos, wr = 1 / sigmaRot;
@@ -305,7 +306,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
             rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
             rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
-            Rotations.mulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
+            Se3.rotMulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
             double[][] dpDv = null;
             double[] dpDpoint = null;
             if (!effects.isEmpty()) {
@@ -330,11 +331,11 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             res[r0 + 1] = (py - meas.y()) * wp;
             res[r0 + 2] = (pz - meas.z()) * wp;
             if (sixD) {
-                Rotations.mul(rib, rbt, rpred);
+                Se3.rotMul(rib, rbt, rpred);
                 double[] oq = row.orientation();
-                quatToMatrix(oq, rmeas);
-                Rotations.mulT(rpred, rmeas, err);
-                Rotations.log(err, e, 0);
+                Se3.rotFromQuaternion(oq[0], oq[1], oq[2], oq[3], rmeas);
+                Se3.rotMulT(rpred, rmeas, err);
+                Se3.rotLog(err, e, 0);
                 res[r0 + 3] = e[0] * wr;
                 res[r0 + 4] = e[1] * wr;
                 res[r0 + 5] = e[2] * wr;
@@ -354,7 +355,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 }
             }
             // tool point: ∂p/∂t_ft = R_ib R_bf; tool rotation (6-D): ∂ε/∂φ = R_ib R_bf
-            Rotations.mul(rib, rbf, rib_rbf);
+            Se3.rotMul(rib, rbf, rib_rbf);
             for (int a = 0; a < 3; a++)
                 for (int b = 0; b < 3; b++) {
                     jac[(r0 + a) * nFull + toolOff + b] = rib_rbf[3 * a + b] * wp;
@@ -379,8 +380,8 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                     double[] a = new double[9], t = new double[9], ribT = new double[9];
                     for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
                     // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
-                    Rotations.mul(rib, a, t);
-                    Rotations.mulT(t, rib, ribT);
+                    Se3.rotMul(rib, a, t);
+                    Se3.rotMulT(t, rib, ribT);
                     int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
                     double[] col = new double[3];
                     for (int cIdx = 0; cIdx < effOff; cIdx++) {
@@ -395,7 +396,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             if (sixD) {
                 // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
                 double[] jinv = new double[9];
-                leftJacobianInverse(e, jinv);
+                Se3.rotLeftJacobianInverse(e, jinv);
                 double[] col = new double[3];
                 for (int cIdx = 0; cIdx < nFull; cIdx++) {
                     for (int u = 0; u < 3; u++) col[u] = jac[(r0 + 3 + u) * nFull + cIdx];
@@ -404,16 +405,6 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 }
             }
         }
-    }
-
-    /** J_l⁻¹(e) = I − ½[e]x + (1/θ² − (1 + cos θ)/(2 θ sin θ)) [e]x² (SO(3) left Jacobian inverse). */
-    static void leftJacobianInverse(double[] e, double[] out) {
-        double th2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], th = Math.sqrt(th2);
-        double c = th < 1e-4 ? 1.0 / 12 + th2 / 720 : 1 / th2 - (1 + Math.cos(th)) / (2 * th * Math.sin(th));
-        double[] k = {0, -e[2], e[1], e[2], 0, -e[0], -e[1], e[0], 0};
-        double[] k2 = new double[9];
-        Rotations.mul(k, k, k2);
-        for (int u = 0; u < 9; u++) out[u] = (u % 4 == 0 ? 1 : 0) - 0.5 * k[u] + c * k2[u];
     }
 
     private void effectColumns(KinematicModel mdl, double[] qEff, Pose flangeTtool, double[] pb, double[] rib,
@@ -470,7 +461,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         double[] t = {full[toolOff], full[toolOff + 1], full[toolOff + 2]};
         if (!sixD) return Pose.translation(t[0], t[1], t[2]);
         double[] r = new double[9];
-        Rotations.exp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], r);
+        Se3.rotExp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], r);
         return poseOf(r, t);
     }
 
@@ -478,7 +469,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     public Pose instrumentOf(double[] full) {
         if (!instrument) return Pose.IDENTITY;
         double[] r = new double[9];
-        Rotations.exp(full[instOff + 3], full[instOff + 4], full[instOff + 5], r);
+        Se3.rotExp(full[instOff + 3], full[instOff + 4], full[instOff + 5], r);
         return poseOf(r, new double[] {full[instOff], full[instOff + 1], full[instOff + 2]});
     }
 
@@ -497,12 +488,5 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         for (int i = 0; i < 3; i++) y[i] /= ny;
         double[] z = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
         return new double[] {x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]};
-    }
-
-    static void quatToMatrix(double[] q, double[] m) {
-        double w = q[0], x = q[1], y = q[2], z = q[3];
-        m[0] = 1 - 2 * (y * y + z * z); m[1] = 2 * (x * y - z * w); m[2] = 2 * (x * z + y * w);
-        m[3] = 2 * (x * y + z * w); m[4] = 1 - 2 * (x * x + z * z); m[5] = 2 * (y * z - x * w);
-        m[6] = 2 * (x * z - y * w); m[7] = 2 * (y * z + x * w); m[8] = 1 - 2 * (x * x + y * y);
     }
 }

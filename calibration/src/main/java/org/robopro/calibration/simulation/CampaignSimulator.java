@@ -22,7 +22,7 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.models.Vec3;
 
 /**
- * Simulates a calibration campaign (issue 3): a "true" robot is the nominal model with random
+ * Simulates a calibration campaign: a "true" robot is the nominal model with random
  * errors on its identifiable parameter vector (so the truth is exactly representable and
  * parameters compare one to one), scaled so the nominal model's RMS flange error is
  * {@link SimulationSettings#errorM()}; a measured point on the flange with its own error; an

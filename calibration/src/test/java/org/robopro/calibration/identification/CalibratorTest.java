@@ -19,7 +19,7 @@ import org.robopro.models.InputException;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
-/** The proof of issue 3: simulated campaigns are calibrated down to the noise floor. */
+/** Simulated campaigns are calibrated down to the noise floor. */
 class CalibratorTest {
     static KinematicModel model(String name) { return KinematicModel.build(RobotLibrary.load(name)); }
 

@@ -15,7 +15,7 @@ import org.robopro.comms.ErrorCode;
 import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
-import org.robopro.comms.SpeedData;
+import org.robopro.programs.SpeedData;
 import org.robopro.comms.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
@@ -169,8 +169,8 @@ public final class ProtocolClient implements ControllerReceiver {
 
     @Override
     public void setSpeed(SpeedData s) {
-        call(OpenAbb.SET_SPEED, "set speed", OpenAbb.num(Units.mToMm(s.tcpMPerS()), 3), deg(s.oriRadPerS()),
-                OpenAbb.num(Units.mToMm(s.leaxMPerS()), 3), deg(s.reaxRadPerS()));
+        call(OpenAbb.SET_SPEED, "set speed", OpenAbb.num(Units.mToMm(s.vTcp()), 3), deg(s.vOri()),
+                OpenAbb.num(Units.mToMm(s.vLeax()), 3), deg(s.vReax()));
     }
 
     @Override

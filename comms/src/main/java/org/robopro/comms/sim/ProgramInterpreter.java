@@ -1,7 +1,7 @@
 package org.robopro.comms.sim;
 
 import java.util.List;
-import org.robopro.comms.SpeedData;
+import org.robopro.programs.SpeedData;
 import org.robopro.kinematics.Pose;
 
 /**

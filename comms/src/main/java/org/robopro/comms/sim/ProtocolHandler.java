@@ -1,7 +1,6 @@
 package org.robopro.comms.sim;
 
 import java.io.ByteArrayOutputStream;
-import java.nio.charset.StandardCharsets;
 import java.util.Base64;
 import java.util.List;
 import org.robopro.comms.CommsException;
@@ -10,7 +9,7 @@ import org.robopro.comms.ErrorCode;
 import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
-import org.robopro.comms.SpeedData;
+import org.robopro.programs.SpeedData;
 import org.robopro.comms.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
@@ -97,8 +96,8 @@ public final class ProtocolHandler {
                 r.expectCount(4, 2);
                 SpeedData old = c.speed();
                 double tcp = r.number(0, "v_tcp"), ori = r.number(1, "v_ori");
-                double leax = r.count() == 4 ? r.number(2, "v_leax") : Units.mToMm(old.leaxMPerS());
-                double reax = r.count() == 4 ? r.number(3, "v_reax") : Units.radToDeg(old.reaxRadPerS());
+                double leax = r.count() == 4 ? r.number(2, "v_leax") : Units.mToMm(old.vLeax());
+                double reax = r.count() == 4 ? r.number(3, "v_reax") : Units.radToDeg(old.vReax());
                 if (!(tcp > 0 && ori > 0 && leax >= 0 && reax >= 0) || tcp > 10_000 || ori > 10_000)
                     throw new RequestException(r.code(), ErrorCode.BAD_VALUE, "speed " + tcp + " mm/s, " + ori
                             + " deg/s: must be > 0 and <= 10000");
@@ -272,6 +271,4 @@ public final class ProtocolHandler {
         return OpenAbb.num(Units.mToMm(p.x()), 3) + " " + OpenAbb.num(Units.mToMm(p.y()), 3) + " " + OpenAbb.num(Units.mToMm(p.z()), 3)
                 + " " + OpenAbb.num(q[0], 6) + " " + OpenAbb.num(q[1], 6) + " " + OpenAbb.num(q[2], 6) + " " + OpenAbb.num(q[3], 6);
     }
-
-    static byte[] utf8(String s) { return s.getBytes(StandardCharsets.UTF_8); }
 }

@@ -2,7 +2,7 @@ package org.robopro.comms.sim;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.robopro.comms.SpeedData;
+import org.robopro.programs.SpeedData;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.InputException;
 import org.robopro.programs.Move;
@@ -80,9 +80,9 @@ public final class RapidProgramInterpreter implements ProgramInterpreter {
                 m.flangeTtcp(), wobj, 0, m.label(), line);
     }
 
-    private static SpeedData speed(org.robopro.programs.SpeedData s, String at) {
+    private static SpeedData speed(SpeedData s, String at) {
         if (!(s.vTcp() > 0 && s.vOri() > 0))
             throw new IllegalArgumentException(at + "speeddata must have TCP and reorientation speeds > 0");
-        return new SpeedData(s.vTcp(), s.vOri(), s.vLeax(), s.vReax());
+        return s;
     }
 }

@@ -17,7 +17,7 @@ import org.robopro.models.RobotDescription;
  * made into diagnosis' own {@link Effect}s, so the controller's real robot and the diagnosis share
  * one definition of every effect (docs/diagnosis.md): joint-compliance deflects by the real gravity
  * torque of the robot's mass model ({@link GravityTorques}, with the controller's payload), and so on.
- * Sizes without a VALUE are drawn from issue 4's realistic ranges with the simulator's seed.
+ * Sizes without a VALUE are drawn from {@link EffectSpec}'s realistic ranges with the simulator's seed.
  * Thermal expansion is referred to {@link EffectSpec#AMBIENT_C}; the controller then reports the
  * warm-up {@link #warmupC} on its clock.
  */

@@ -19,7 +19,7 @@ import org.robopro.comms.ControllerStatus;
 import org.robopro.comms.ErrorCode;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
-import org.robopro.comms.SpeedData;
+import org.robopro.programs.SpeedData;
 import org.robopro.comms.TrackerReading;
 import org.robopro.comms.ZoneData;
 import org.robopro.comms.protocol.Checksums;
@@ -44,6 +44,8 @@ import org.slf4j.LoggerFactory;
 public final class SimulatedController implements ControllerReceiver {
     private static final Logger LOG = LoggerFactory.getLogger(SimulatedController.class);
     private static final int DEDUP_WINDOW = 50_000;
+    /** SERVER.mod's speed after Initialize: 100 mm/s, 50 deg/s (not RAPID's predefined v100). */
+    static final SpeedData INITIAL_SPEED = SpeedData.ofRapid(100, 50, 0, 0);
 
     /**
      * Settings of the simulated controller (the tracker's pose and noise belong to the robot).
@@ -73,7 +75,7 @@ public final class SimulatedController implements ControllerReceiver {
     private final int[] lastDirection;
     private Pose flangeTtool = Pose.IDENTITY;
     private Pose baseTwobj = Pose.IDENTITY;
-    private SpeedData speed = SpeedData.DEFAULT;
+    private SpeedData speed = INITIAL_SPEED;
     private ZoneData zone = ZoneData.FINE;
     private double clockS;
     private final Map<String, byte[]> programs = new TreeMap<>();
@@ -132,7 +134,12 @@ public final class SimulatedController implements ControllerReceiver {
 
     @Override public synchronized void setWorkObject(Pose w) { baseTwobj = w; }
 
-    @Override public synchronized void setSpeed(SpeedData s) { speed = s; }
+    @Override
+    public synchronized void setSpeed(SpeedData s) {
+        if (!(s.vTcp() > 0 && s.vOri() > 0))
+            throw new IllegalArgumentException("the controller moves at TCP and reorientation speeds > 0, not " + s);
+        speed = s;
+    }
 
     @Override public synchronized void setZone(ZoneData z) { zone = z; }
 
@@ -224,7 +231,7 @@ public final class SimulatedController implements ControllerReceiver {
         checkLimits(target, "joint target");
         double t = jointTime(q, target);
         double tcp = robot.nominalFlange(q).times(flangeTtool).distanceTo(robot.nominalFlange(target).times(flangeTtool));
-        t = Math.max(t, Double.isFinite(timeS) ? timeS : tcp / s.tcpMPerS());
+        t = Math.max(t, Double.isFinite(timeS) ? timeS : tcp / s.vTcp());
         return finishMotion(target, t, q);
     }
 
@@ -324,7 +331,7 @@ public final class SimulatedController implements ControllerReceiver {
             prev = qi;
             qi = qk;
         }
-        double t = Math.max(jointBound, Double.isFinite(timeS) ? timeS : Math.max(lengthM / s.tcpMPerS(), angle / s.oriRadPerS()));
+        double t = Math.max(jointBound, Double.isFinite(timeS) ? timeS : Math.max(lengthM / s.vTcp(), angle / s.vOri()));
         return finishMotion(qi, t, prev);
     }
 
@@ -400,6 +407,11 @@ public final class SimulatedController implements ControllerReceiver {
 
     // ---------------------------------------------------------------- programs
 
+    /** Most programs the controller stores (a real controller's program memory is finite too). */
+    public static final int MAX_PROGRAMS = 256;
+    /** Most bytes of program text stored in all. */
+    public static final long MAX_STORED_BYTES = 64L * 1024 * 1024;
+
     /**
      * Stores a program if its length and CRC-32 match what the sender announced and it parses;
      * otherwise stores nothing. Replaces a stored program of the same name.
@@ -412,6 +424,14 @@ public final class SimulatedController implements ControllerReceiver {
             throw new CommsException.Refused(ErrorCode.CHECKSUM_MISMATCH, "received " + text.length + " bytes, crc "
                     + Checksums.hex(crc) + "; sender announced " + announcedLength + " bytes, crc " + Checksums.hex(announcedCrc)
                     + "; nothing stored");
+        if (!programs.containsKey(name) && programs.size() >= MAX_PROGRAMS)
+            throw new CommsException.Refused(ErrorCode.STORAGE_FULL, "the controller holds " + programs.size()
+                    + " programs, its limit; replace one (same name) or restart the controller; nothing stored");
+        long total = text.length;
+        for (var e : programs.entrySet()) if (!e.getKey().equals(name)) total += e.getValue().length;
+        if (total > MAX_STORED_BYTES)
+            throw new CommsException.Refused(ErrorCode.STORAGE_FULL, "storing " + name + " would take the programs to "
+                    + total + " bytes, over the controller's " + MAX_STORED_BYTES + "; nothing stored");
         String problem = interpreter.parseProblem(new String(text, StandardCharsets.UTF_8), name);
         if (problem != null) throw new CommsException.Refused(ErrorCode.PROGRAM_SYNTAX, name + ": " + problem + "; nothing stored");
         programs.put(name, text.clone());

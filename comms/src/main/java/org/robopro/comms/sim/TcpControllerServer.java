@@ -14,7 +14,9 @@ import java.time.format.DateTimeFormatter;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.robopro.comms.ErrorCode;
 import org.robopro.comms.link.FaultInjector;
+import org.robopro.comms.protocol.LinkChecksum;
 import org.robopro.comms.protocol.OpenAbb;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
@@ -36,9 +38,16 @@ public final class TcpControllerServer implements AutoCloseable {
 
     private final ProtocolHandler handler;
     private final FaultInjector faults;
+    private final FaultInjector requestFaults;
     private final ServerSocket motion;
     private final ServerSocket logger;
     private final Set<Socket> clients = ConcurrentHashMap.newKeySet();
+    /** One thread per open connection, at most {@link #MAX_CONNECTIONS} (plus the two accept loops). */
+    private final java.util.concurrent.ExecutorService connections = java.util.concurrent.Executors.newFixedThreadPool(MAX_CONNECTIONS, r -> {
+        Thread t = new Thread(r, "robopro-sim-conn-" + THREADS.incrementAndGet());
+        t.setDaemon(true);
+        return t;
+    });
     private final AtomicInteger cutAfterChunks = new AtomicInteger(-1);
     private final AtomicInteger requests = new AtomicInteger();
     private volatile boolean closed;
@@ -49,8 +58,18 @@ public final class TcpControllerServer implements AutoCloseable {
      * finds a free pair.
      */
     public TcpControllerServer(ProtocolHandler handler, InetAddress host, int port, FaultInjector faults) throws IOException {
+        this(handler, host, port, faults, null);
+    }
+
+    /**
+     * As above, with faults also on the requests as they arrive ({@code requestFaults}: dropped,
+     * corrupted, duplicated, delayed, or the connection cut), for soak tests of both directions.
+     */
+    public TcpControllerServer(ProtocolHandler handler, InetAddress host, int port, FaultInjector faults,
+                               FaultInjector requestFaults) throws IOException {
         this.handler = handler;
         this.faults = faults == null ? FaultInjector.none() : faults;
+        this.requestFaults = requestFaults == null ? FaultInjector.none() : requestFaults;
         ServerSocket m = null, l = null;
         for (int attempt = 0; attempt < 50 && l == null; attempt++) {
             m = new ServerSocket();
@@ -104,13 +123,20 @@ public final class TcpControllerServer implements AutoCloseable {
 
     private interface Serve { void serve(Socket s) throws IOException; }
 
+    /** Most connections served at once (motion and logger together); more are refused with a reply. */
+    public static final int MAX_CONNECTIONS = 64;
+
     private void acceptLoop(ServerSocket server, Serve serve) {
         while (!closed) {
             try {
                 Socket s = server.accept();
                 s.setTcpNoDelay(true);
+                if (clients.size() >= MAX_CONNECTIONS) {
+                    refuse(s);
+                    continue;
+                }
                 clients.add(s);
-                daemon("robopro-sim-conn", () -> {
+                connections.execute(() -> {
                     try {
                         serve.serve(s);
                     } catch (IOException e) {
@@ -123,10 +149,24 @@ public final class TcpControllerServer implements AutoCloseable {
                             // already closing
                         }
                     }
-                }).start();
-            } catch (IOException e) {
+                });
+            } catch (IOException | java.util.concurrent.RejectedExecutionException e) {
                 if (!closed) LOG.warn("accept failed: {}", e.getMessage());
             }
+        }
+    }
+
+    /** Answers a connection over the limit with one error reply and closes it. */
+    private void refuse(Socket s) {
+        LOG.warn("refusing a connection from {}: {} connections open (limit {})", s.getRemoteSocketAddress(), clients.size(),
+                MAX_CONNECTIONS);
+        try (s) {
+            s.setSoTimeout(100);
+            s.getOutputStream().write((org.robopro.comms.protocol.Reply.error(0, ErrorCode.TOO_MANY_CONNECTIONS,
+                    "the controller serves at most " + MAX_CONNECTIONS + " connections; close one and connect again") + "\n")
+                    .getBytes(StandardCharsets.ISO_8859_1));
+        } catch (IOException ignored) {
+            // the refused client left already
         }
     }
 
@@ -134,6 +174,7 @@ public final class TcpControllerServer implements AutoCloseable {
         InputStream in = s.getInputStream();
         OutputStream out = s.getOutputStream();
         ProtocolHandler.Session session = handler.newSession();
+        boolean[] checksums = {false};
         StringBuilder pending = new StringBuilder();
         byte[] buf = new byte[8192];
         while (!closed) {
@@ -144,19 +185,42 @@ public final class TcpControllerServer implements AutoCloseable {
             while ((hash = pending.indexOf("#")) >= 0) {
                 String request = pending.substring(0, hash + 1);
                 pending.delete(0, hash + 1);
-                if (!serveOne(s, out, session, request)) return;
+                if (!serveFaulty(s, out, session, request, checksums)) return;
             }
             if (pending.length() > OpenAbb.MAX_REQUEST_CHARS) {
                 // No '#' in sight: answer once and drop the garbage rather than buffer forever.
                 String reply = handler.handle(session, pending.substring(0, 64) + "...");
                 pending.setLength(0);
-                send(out, reply);
+                send(out, checksums[0] ? LinkChecksum.seal(reply, "") : reply);
             }
         }
     }
 
-    /** Serves one request; false when the connection must end. */
-    private boolean serveOne(Socket s, OutputStream out, ProtocolHandler.Session session, String request) throws IOException {
+    /** Applies the request-side faults, then serves; false when the connection must end. */
+    private boolean serveFaulty(Socket s, OutputStream out, ProtocolHandler.Session session, String request,
+                                boolean[] checksums) throws IOException {
+        switch (requestFaults.next()) {
+            case DROP -> { return true; }
+            case CORRUPT -> {
+                return serveOne(s, out, session, new String(requestFaults.corrupt(request.getBytes(StandardCharsets.ISO_8859_1)),
+                        StandardCharsets.ISO_8859_1), checksums);
+            }
+            case DUPLICATE -> {
+                return serveOne(s, out, session, request, checksums) && serveOne(s, out, session, request, checksums);
+            }
+            case DELAY -> { pause(requestFaults.delayMs()); return serveOne(s, out, session, request, checksums); }
+            case DISCONNECT -> { s.close(); return false; }
+            default -> { return serveOne(s, out, session, request, checksums); }
+        }
+    }
+
+    /**
+     * Serves one request; false when the connection must end. In checksum mode (robopro protocol,
+     * switched on per connection by "40 crc #") a request must carry its CRC-32 and every reply
+     * carries one (see {@link LinkChecksum}); a damaged request is answered E103 and not executed.
+     */
+    private boolean serveOne(Socket s, OutputStream out, ProtocolHandler.Session session, String request,
+                             boolean[] checksums) throws IOException {
         requests.incrementAndGet();
         if (request.strip().startsWith(Integer.toString(OpenAbb.DOWNLOAD_CHUNK) + " ") && cutAfterChunks.get() > 0
                 && cutAfterChunks.decrementAndGet() == 0) {
@@ -164,16 +228,30 @@ public final class TcpControllerServer implements AutoCloseable {
             s.close();
             return false;
         }
-        String reply = handler.handle(session, request);
+        String reply;
+        String key = "";
+        if (LinkChecksum.isHello(request)) {
+            reply = handler.handle(session, OpenAbb.request(OpenAbb.HELLO)) + " " + LinkChecksum.MODE;
+            checksums[0] = true;
+        } else if (checksums[0]) {
+            String plain = LinkChecksum.open(request);
+            key = plain == null ? "" : LinkChecksum.key(request);
+            reply = plain == null ? org.robopro.comms.protocol.Reply.error(LinkChecksum.instruction(request), ErrorCode.LINK_CHECKSUM,
+                    "request failed its checksum, not executed; send it again") : handler.handle(session, plain);
+        } else {
+            reply = handler.handle(session, request);
+        }
         if (session.closeRequested()) {
             s.close(); // SERVER.mod's instruction 99: close without a reply, serve the next client
             return false;
         }
+        if (checksums[0]) reply = LinkChecksum.seal(reply, key);
         switch (faults.next()) {
             case DROP -> { return true; }
             case CORRUPT -> out.write(faults.corrupt((reply + "\n").getBytes(StandardCharsets.ISO_8859_1)));
             case DUPLICATE -> { send(out, reply); send(out, reply); }
             case DELAY -> { pause(faults.delayMs()); send(out, reply); }
+            case DISCONNECT -> { s.close(); return false; } // executed, but the reply never arrives
             case NONE -> send(out, reply);
         }
         out.flush();
@@ -232,5 +310,6 @@ public final class TcpControllerServer implements AutoCloseable {
             // closing anyway
         }
         dropClients();
+        connections.shutdownNow();
     }
 }

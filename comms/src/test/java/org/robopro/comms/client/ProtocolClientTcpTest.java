@@ -63,7 +63,7 @@ class ProtocolClientTcpTest {
         Pose tool = Pose.translation(0.01, 0, 0.12);
         inv.execute(Commands.setTool(tool));
         inv.execute(Commands.setWorkObject(Pose.translation(0.1, 0, 0)));
-        inv.execute(Commands.setSpeed(new org.robopro.comms.SpeedData(0.25, 1, 0, 0)));
+        inv.execute(Commands.setSpeed(new org.robopro.programs.SpeedData(0.25, 1, 0, 0)));
         inv.execute(Commands.setZone(org.robopro.comms.ZoneData.FINE));
         double[] target = {0.1, -0.2, 0.3, 0.2, -0.1, 0.05};
         MotionResult m = inv.execute(Commands.moveJoints(target));

@@ -119,7 +119,7 @@ class ControllerSimProcessTest {
             double playRad = robot.effects().get(0).values()[0];
             assertEquals(playRad, e.get("parameters_si").get("b").asDouble(), 1e-15, e.toString());
             double deg = Math.toDegrees(playRad);
-            assertTrue(deg >= 0.02 && deg <= 0.05, "drawn in issue 4's range: " + deg);
+            assertTrue(deg >= 0.02 && deg <= 0.05, "drawn in EffectSpec's range: " + deg);
             // The recorded spec reproduces the robot exactly.
             TrueSimulatedRobot again = TrueSimulatedRobot.create(RobotLibrary.load("irb2000"), 9,
                     TrueSimulatedRobot.Options.defaults().withEffects(List.of(e.get("spec").asText())));

@@ -106,41 +106,120 @@ public final class PathChecker {
         List<Problem> problems = new ArrayList<>();
         for (Simulation.Notice n : sim.notices())
             problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.NOT_SIMULATED, n.step(), "", n.source(), n.message()));
-        List<CheckReport.StepResult> results = new ArrayList<>();
-        IoTimeline io = new IoTimeline(signals);
+        List<ProgramStep> steps = sim.steps();
+        int count = steps.size();
+        // 1. Every motion checked along its path, timed as from and to a stop.
+        Outcome[] outcomes = new Outcome[count];
+        double[][] qBefore = new double[count][];
         double[] q = opt.qStart().map(double[]::clone).orElse(null);
-        double total = 0;
-        double moveStart = 0, moveDuration = 0, moveLength = 0;
-        for (ProgramStep s : sim.steps()) {
-            if (s instanceof WaitStep w) {
-                total += w.seconds();
-                results.add(new CheckReport.StepResult(w.label(), "", w.seconds(), q == null ? null : q.clone(), 0));
-                continue;
-            }
-            if (s instanceof IoStep st) {
-                double d = io.step(st, total, moveStart, moveDuration, moveLength, problems);
-                total += d;
-                results.add(new CheckReport.StepResult(st.label(), "", d, q == null ? null : q.clone(), 0));
-                continue;
-            }
-            MoveStep m = (MoveStep) s;
+        for (int i = 0; i < count; i++) {
+            qBefore[i] = q;
+            if (!(steps.get(i) instanceof MoveStep m)) continue;
             Outcome o = switch (m.kind()) {
                 case MOVE_ABS_J -> absJ(m, q, problems);
                 case MOVE_J -> joint(m, q, problems);
                 case MOVE_L, MOVE_C -> cartesian(m, q, problems);
             };
-            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points, o.lengthM);
-            moveStart = total;
-            moveDuration = o.duration;
-            moveLength = o.lengthM;
-            total += o.duration;
-            results.add(new CheckReport.StepResult(m.label(), m.targetName(), o.duration, o.q == null ? null : o.q.clone(), o.points));
+            if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points, o.lengthM, o.samples);
+            outcomes[i] = o;
             if (o.q != null) q = o.q;
         }
+        // 2. Fly-by points: corners blended within the zone, speed kept through them.
+        double[] stopDur = new double[count], blendDur = new double[count], deviation = new double[count];
+        for (int i = 0; i < count; i++) if (outcomes[i] != null) stopDur[i] = blendDur[i] = outcomes[i].duration;
+        for (int i = 0; i < count; i++) blend(steps, outcomes, qBefore, i, blendDur, deviation);
+        // 3. The time line with the blended durations (and once more with stops, for the comparison).
+        IoTimeline io = new IoTimeline(signals);
+        List<CheckReport.StepResult> results = new ArrayList<>();
+        double total = timeLine(steps, blendDur, io, problems, qBefore, outcomes, results);
+        double totalStops = timeLine(steps, stopDur, new IoTimeline(signals), new ArrayList<>(), qBefore, outcomes, null);
+        for (int i = 0; i < count; i++)
+            if (deviation[i] > 0) {
+                CheckReport.StepResult r = results.get(i);
+                results.set(i, new CheckReport.StepResult(r.step(), r.target(), r.durationS(), r.qEnd(), r.interpolationPoints(), r.samples(),
+                        deviation[i]));
+            }
         io.end(total);
-        String assumptions = String.format(Locale.ROOT, "trapezoidal profiles reaching full speed in %.2f s, stop at every target, "
-                + "joint speed limits from the robot description", opt.rampS());
-        return new CheckReport(problems, results, total, assumptions, io.events(), io.arcTime);
+        String assumptions = String.format(Locale.ROOT, "trapezoidal profiles reaching full speed in %.2f s, fly-by points blended "
+                + "(parabolic corner within the zone, speed kept), joint speed limits from the robot description", opt.rampS());
+        return new CheckReport(problems, results, total, assumptions, io.events(), io.arcTime, totalStops);
+    }
+
+    /** Places waits and I/O on the time line with the motions' durations {@code dur}; returns the cycle time. */
+    private double timeLine(List<ProgramStep> steps, double[] dur, IoTimeline io, List<Problem> problems, double[][] qBefore,
+                            Outcome[] outcomes, List<CheckReport.StepResult> results) {
+        double total = 0, moveStart = 0, moveDuration = 0, moveLength = 0;
+        for (int i = 0; i < steps.size(); i++) {
+            ProgramStep s = steps.get(i);
+            double[] qNow = qBefore[i] == null ? null : qBefore[i].clone();
+            if (s instanceof WaitStep w) {
+                total += w.seconds();
+                if (results != null) results.add(new CheckReport.StepResult(w.label(), "", w.seconds(), qNow, 0));
+            } else if (s instanceof IoStep st) {
+                double d = io.step(st, total, moveStart, moveDuration, moveLength, problems);
+                total += d;
+                if (results != null) results.add(new CheckReport.StepResult(st.label(), "", d, qNow, 0));
+            } else {
+                MoveStep m = (MoveStep) s;
+                Outcome o = outcomes[i];
+                moveStart = total;
+                moveDuration = dur[i];
+                moveLength = o.lengthM;
+                total += dur[i];
+                if (results != null)
+                    results.add(new CheckReport.StepResult(m.label(), m.targetName(), dur[i], o.q == null ? null : o.q.clone(), o.points, o.samples));
+            }
+        }
+        return total;
+    }
+
+    /**
+     * Blends the corner at motion {@code i}'s target with the next motion when the target is a
+     * fly-by point (zone, no \T) and nothing between the two makes the program wait. The corner
+     * path leaves the incoming segment at min(zone, half its length) before the target and joins
+     * the outgoing one as far after it (the controller shrinks zones that overlap the same way), a
+     * parabola with the target as its control point; the speed is kept through it, so neither
+     * motion ramps down or up there (half a ramp saved on each side) and the corner is shorter
+     * than the two legs.
+     */
+    private void blend(List<ProgramStep> steps, Outcome[] outcomes, double[][] qBefore, int i, double[] dur, double[] deviation) {
+        if (!(steps.get(i) instanceof MoveStep m) || m.zone().finep() || m.zone().pzoneTcp() <= 0 || m.time().isPresent()) return;
+        int j = i + 1;
+        while (j < steps.size() && steps.get(j) instanceof IoStep io
+                && io.kind() != IoStep.Kind.WAIT_SIGNAL && io.kind() != IoStep.Kind.WAIT_CONDITION) j++;
+        if (j >= steps.size() || !(steps.get(j) instanceof MoveStep n) || n.time().isPresent()) return;
+        Outcome a = outcomes[i], b = outcomes[j];
+        if (a == null || b == null || a.q == null || b.q == null || qBefore[i] == null) return;
+        Vec3 p0 = model.flange(qBefore[i]).times(m.flangeTtcp()).position();
+        Vec3 p1 = model.flange(a.q).times(m.flangeTtcp()).position();
+        Vec3 p2 = model.flange(b.q).times(n.flangeTtcp()).position();
+        double lin = p1.minus(p0).norm(), lout = p2.minus(p1).norm();
+        if (lin < 1e-9 || lout < 1e-9) return;
+        double din = Math.min(m.zone().pzoneTcp(), lin / 2), dout = Math.min(m.zone().pzoneTcp(), lout / 2);
+        Vec3 entry = p1.minus(p1.minus(p0).times(din / lin)), exit = p1.plus(p2.minus(p1).times(dout / lout));
+        // Quadratic Bezier entry -> (p1) -> exit: its point nearest p1 is at t = 1/2 for equal arms.
+        deviation[i] = entry.minus(p1).times(0.25).plus(exit.minus(p1).times(0.25)).norm();
+        double corner = 0;
+        Vec3 prev = entry;
+        for (int k = 1; k <= 32; k++) {
+            double t = k / 32.0;
+            Vec3 pt = entry.times((1 - t) * (1 - t)).plus(p1.times(2 * t * (1 - t))).plus(exit.times(t * t));
+            corner += pt.minus(prev).norm();
+            prev = pt;
+        }
+        double v = Math.max(1e-9, Math.min(m.speed().vTcp(), n.speed().vTcp()));
+        double shorter = Math.max(0, din + dout - corner) / v;
+        dur[i] = Math.max(0, dur[i] - rampSaving(outcomes[i].duration) - shorter / 2);
+        dur[j] = Math.max(0, dur[j] - rampSaving(outcomes[j].duration) - shorter / 2);
+    }
+
+    /**
+     * Time saved by not stopping at one end of a motion of stop-to-stop duration {@code d}: half a
+     * ramp when full speed is reached (d >= 2 rampS), else the triangle's share (one-sided
+     * acceleration over the same distance takes d / sqrt 2).
+     */
+    private double rampSaving(double d) {
+        return d >= 2 * opt.rampS() ? opt.rampS() / 2 : d * (1 - 1 / Math.sqrt(2)) / 2;
     }
 
     /**
@@ -250,8 +329,10 @@ public final class PathChecker {
         }
     }
 
-    private record Outcome(double[] q, double duration, int points, double lengthM) {
-        Outcome(double[] q, double duration, int points) { this(q, duration, points, 0); }
+    private record Outcome(double[] q, double duration, int points, double lengthM, List<double[]> samples) {
+        Outcome(double[] q, double duration, int points) { this(q, duration, points, 0, List.of()); }
+
+        Outcome(double[] q, double duration, int points, double lengthM) { this(q, duration, points, lengthM, List.of()); }
     }
 
     private Outcome absJ(MoveStep m, double[] q, List<Problem> problems) {
@@ -322,6 +403,7 @@ public final class PathChecker {
         double angle = w.norm();
         int n = Math.max(1, (int) Math.ceil(Math.max(length / opt.stepM(), angle / opt.stepRad())));
         double[] prev = q.clone();
+        List<double[]> samples = new ArrayList<>(Math.min(n, 4096));
         double jointLimitedTime = 0;
         boolean reported = false, limitReported = false, singReported = false, jumpReported = false;
         for (int k = 1; k <= n; k++) {
@@ -360,6 +442,7 @@ public final class PathChecker {
                 singReported = true;
             }
             prev = qk;
+            samples.add(qk);
         }
         if (reported) return new Outcome(null, 0, n);
         ConfData reached = ik.confOf(prev);
@@ -368,7 +451,7 @@ public final class PathChecker {
                     Problem.Kind.CONFIGURATION_MISMATCH, m.label(), m.targetName(), m.source(),
                     "the path ends in configuration " + confText(reached) + ", the target asks for " + confText(conf)));
         double t = Math.max(cartesianTime(tcpStart, tcpEnd, length, m), jointLimitedTime + opt.rampS());
-        return new Outcome(prev, t, n, length);
+        return new Outcome(prev, t, n, length, samples);
     }
 
     /** Trapezoid time of the TCP path (length m, or the straight distance when 0) and of the reorientation. */

@@ -9,7 +9,6 @@ import java.util.Set;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
-import org.robopro.programs.Move;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
@@ -152,7 +151,6 @@ public final class ProgramRun {
         for (int s = 0; s < steps.size(); s++) {
             double[] qe = qEnd.get(s);
             if (qe == null) continue; // failed motion: the robot stays where it was
-            MoveStep mv = (MoveStep) steps.get(s);
             double dur = report == null ? 1.0 : report.steps().get(s).durationS();
             if (q == null) {
                 times.add(t);
@@ -161,8 +159,9 @@ public final class ProgramRun {
                 t += dur;
                 continue;
             }
-            List<double[]> seg = mv.kind() == Move.Kind.MOVE_L || mv.kind() == Move.Kind.MOVE_C
-                    ? cartesian(k, q, qe, mv, flangeTtcp) : null;
+            // MoveL/MoveC: the joint values the checker solved along the path (one sampler for check and playback).
+            List<double[]> seg = report != null && !report.steps().get(s).samples().isEmpty()
+                    ? new ArrayList<>(report.steps().get(s).samples()) : null;
             if (seg == null) {
                 seg = new ArrayList<>();
                 int n = 24;
@@ -187,34 +186,6 @@ public final class ProgramRun {
             tcp[i] = worldTbase.times(k.flange(qs.get(i))).times(flangeTtcp).position();
         }
         return new ProgramRun(module, report, out, bad, ta, qs.toArray(new double[0][]), tcp);
-    }
-
-    /** Samples of a MoveL/MoveC from q to qEnd (every 10 mm / 3 deg), IK next to the previous sample; null if IK fails. */
-    private static List<double[]> cartesian(RobotKinematics k, double[] q, double[] qEnd, MoveStep mv, Pose flangeTtcp) {
-        Pose a = k.flange(q).times(flangeTtcp);
-        Pose b = mv.baseTtcp().orElseThrow();
-        PathChecker.Circle circle = mv.kind() == Move.Kind.MOVE_C
-                ? PathChecker.Circle.through(a.position(), mv.baseTtcpCirc().orElseThrow().position(), b.position()) : null;
-        if (mv.kind() == Move.Kind.MOVE_C && circle == null) return null;
-        double length = circle != null ? circle.length() : a.distanceTo(b);
-        Vec3 w = a.inverse().times(b).rotationVector();
-        int n = Math.max(2, (int) Math.ceil(Math.max(length / 0.01, w.norm() / Math.toRadians(3))));
-        List<double[]> seg = new ArrayList<>();
-        double[] prev = q;
-        Pose toolInv = flangeTtcp.inverse();
-        for (int i = 1; i <= n; i++) {
-            double s = (double) i / n;
-            Vec3 p = circle != null ? circle.at(s)
-                    : a.position().plus(b.position().minus(a.position()).times(s));
-            Pose ori = w.norm() > 1e-12 ? a.times(Pose.rotAxis(w, w.norm() * s)) : a;
-            Pose tcp = Pose.of(ori.rotationRowMajor(), p.x(), p.y(), p.z());
-            Optional<double[]> sol = k.solveNear(tcp.times(toolInv), prev);
-            if (sol.isEmpty()) return null;
-            prev = sol.get();
-            seg.add(prev);
-        }
-        seg.set(seg.size() - 1, qEnd.clone());
-        return seg;
     }
 
     /** Messages for a log: one line per problem, by instruction and target. */

@@ -135,7 +135,7 @@ public final class RobotWizardModel {
                 new Vec3(Units.mmToM(flangeOriginMm[0]), Units.mmToM(flangeOriginMm[1]), Units.mmToM(flangeOriginMm[2])),
                 new Vec3(flangeX[0], flangeX[1], flangeX[2]), new Vec3(flangeZ[0], flangeZ[1], flangeZ[2]));
         return new RobotDescription(name, displayName.isEmpty() ? name : displayName, js, flange, coupling, Optional.empty(),
-                List.of(), List.of(), "robopro workbench model wizard (seed paper Fig. 7 inputs)", Map.of());
+                List.of(), List.of(), "robopro workbench robot model wizard", Map.of());
     }
 
     /**

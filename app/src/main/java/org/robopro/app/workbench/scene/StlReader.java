@@ -21,8 +21,13 @@ import org.robopro.models.InputException;
 public final class StlReader {
     private StlReader() { }
 
+    /** Largest mesh file read (about 5 million triangles binary); an endless file stops here. */
+    static final long MAX_BYTES = 256L << 20;
+
     public static Mesh read(Path file, float scale) throws IOException {
-        byte[] b = Files.readAllBytes(file);
+        if (Files.exists(file) && !Files.isDirectory(file) && !Files.isRegularFile(file))
+            throw new InputException(file.toString(), 0, 0, null, "is not a regular file (a device or a pipe?); not a mesh file");
+        byte[] b = org.robopro.models.TextFiles.readBytes(file, MAX_BYTES, "mesh file");
         float[] tri = isBinary(b) ? binary(b, file) : ascii(new String(b, StandardCharsets.US_ASCII), file);
         int nv = tri.length / 3;
         float[] pos = new float[nv * 3];

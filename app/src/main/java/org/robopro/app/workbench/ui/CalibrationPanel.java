@@ -19,7 +19,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.BooleanSupplier;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
-import javax.swing.JDialog;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JOptionPane;
@@ -42,14 +41,14 @@ import org.robopro.models.InputException;
  * the calibration in the background with a progress bar and a Cancel button, then see the RMS
  * error before and after (training and validation poses), a plot of every pose's error with the
  * nominal and the calibrated model, and the effects found: the largest parameter corrections
- * and what the data could not identify. "Diagnose" runs the diagnosis of issue 4 (geometric
+ * and what the data could not identify. "Diagnose" runs the diagnosis (docs/diagnosis.md: geometric
  * calibration, then the non-geometric effects: compliance, gear errors, backlash, thermal
  * expansion, scale, coupling) in the background and shows each finding in words with its
  * parameters, RMS improvement and evidence, the outliers, what could not be identified and what
  * to record next. "Apply" writes the calibrated (or, after a diagnosis that found effects, the
  * extended) robot file and makes RAPID export compensate targets with it.
  */
-public final class CalibrationPanel extends JDialog {
+public final class CalibrationPanel extends JPanel {
     private final WorkbenchSession wb;
     private final JLabel file = new JLabel("no measurement file");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -63,6 +62,7 @@ public final class CalibrationPanel extends JDialog {
     private final JTextArea findings = new JTextArea(12, 60);
     private final RmsChart rmsChart = new RmsChart();
     private final JTabbedPane tabs = new JTabbedPane();
+    private final WorkbenchFrame owner;
     private WorkbenchSession.Measurements measurements;
     private volatile Cancellation token;
     private volatile CalibrationResult result;
@@ -70,9 +70,10 @@ public final class CalibrationPanel extends JDialog {
     private volatile String state = "idle";
 
     public CalibrationPanel(WorkbenchFrame owner, WorkbenchSession wb) {
-        super(owner, "Calibration", false);
+        super(new BorderLayout());
         this.wb = wb;
-        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+        this.owner = owner;
+        setName("calibration-panel");
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 4));
         JButton load = new JButton("Load measurements...");
         load.setName("cal-load");
@@ -135,8 +136,7 @@ public final class CalibrationPanel extends JDialog {
         JPanel content = new JPanel(new BorderLayout());
         content.add(head, BorderLayout.NORTH);
         content.add(tabs, BorderLayout.CENTER);
-        setContentPane(content);
-        setSize(760, 600);
+        add(content, BorderLayout.CENTER);
         updateButtons();
     }
 
@@ -162,7 +162,7 @@ public final class CalibrationPanel extends JDialog {
             updateButtons();
             return true;
         } catch (InputException | java.io.IOException | IllegalArgumentException e) {
-            ((WorkbenchFrame) getOwner()).showError("Measurement file", e.getMessage());
+            owner.showError("Measurement file", e.getMessage());
             return false;
         }
     }
@@ -210,7 +210,7 @@ public final class CalibrationPanel extends JDialog {
                     progress.setString("failed");
                     updateButtons();
                     f.completeExceptionally(e);
-                    ((WorkbenchFrame) getOwner()).showError(what + " failed", e.getMessage());
+                    owner.showError(what + " failed", e.getMessage());
                 });
             }
         }, what.toLowerCase(Locale.ROOT));
@@ -230,10 +230,7 @@ public final class CalibrationPanel extends JDialog {
         state = "done";
         progress.setValue(1000);
         progress.setString("done");
-        rms.setText(String.format(Locale.ROOT, "RMS %.4f mm -> %.4f mm (%d training poses)%s", r.nominalTrainRmsM() * 1e3,
-                r.trainRmsM() * 1e3, r.train().size(), r.validate().isEmpty() ? ""
-                        : String.format(Locale.ROOT, ";  validation %.4f mm -> %.4f mm (max %.4f mm)", r.nominalValidateRmsM() * 1e3,
-                        r.validateRmsM() * 1e3, r.validateMaxM() * 1e3)));
+        rms.setText(rmsLines(r));
         effects.setText(effectsReport(r));
         effects.setCaretPosition(0);
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
@@ -252,6 +249,15 @@ public final class CalibrationPanel extends JDialog {
         findings.setCaretPosition(0);
         rmsChart.set(d);
         tabs.setSelectedIndex(1);
+    }
+
+    /** The calibration's figures, one label each, on two lines (training, then validation). */
+    static String rmsLines(CalibrationResult r) {
+        String train = String.format(Locale.ROOT, "Training RMS %.4f mm → %.4f mm (%d poses)", r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3,
+                r.train().size());
+        if (r.validate().isEmpty()) return "<html>" + train + "<br>No validation poses</html>";
+        return "<html>" + train + String.format(Locale.ROOT, "<br>Validation RMS %.4f mm → %.4f mm (%d poses, largest %.4f mm)</html>",
+                r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3, r.validate().size(), r.validateMaxM() * 1e3);
     }
 
     /** A diagnosis in plain words: findings (effect, joints, parameters with units, RMS, evidence), outliers, the rest. */

@@ -46,16 +46,14 @@ public final class CellTree extends JTree {
         updating = true;
         try {
             DefaultMutableTreeNode root = new DefaultMutableTreeNode(new Item("Cell", null));
-            DefaultMutableTreeNode robot = new DefaultMutableTreeNode(new Item("Robot: " + model.robot().displayName(), "link:0"));
+            String shown = model.robot().displayName().length() <= 22 ? model.robot().displayName() : model.robot().name();
+            DefaultMutableTreeNode robot = new DefaultMutableTreeNode(new Item("Robot: " + shown, "link:0"));
             root.add(robot);
-            DefaultMutableTreeNode prev = new DefaultMutableTreeNode(new Item("base", "link:0"));
-            robot.add(prev);
-            for (int i = 1; i <= model.robot().dof(); i++) {
-                DefaultMutableTreeNode n = new DefaultMutableTreeNode(new Item("link " + i + " (" + model.robot().joints().get(i - 1).name() + ")", "link:" + i));
-                prev.add(n);
-                prev = n;
-            }
-            prev.add(new DefaultMutableTreeNode(new Item("tool: " + model.tool().name(), "tool")));
+            // The links in chain order, one level deep (a nested chain pushes the last links' labels off the column).
+            robot.add(new DefaultMutableTreeNode(new Item("base", "link:0")));
+            for (int i = 1; i <= model.robot().dof(); i++)
+                robot.add(new DefaultMutableTreeNode(new Item("link " + i + " (" + model.robot().joints().get(i - 1).name() + ")", "link:" + i)));
+            robot.add(new DefaultMutableTreeNode(new Item("tool: " + model.tool().name(), "tool")));
             DefaultMutableTreeNode objs = new DefaultMutableTreeNode(new Item("Objects", null));
             for (CellObject o : model.objects()) objs.add(new DefaultMutableTreeNode(new Item(o.name() + " [" + o.id() + "]", "object:" + o.id())));
             root.add(objs);
@@ -67,15 +65,17 @@ public final class CellTree extends JTree {
             for (Target t : model.targets()) {
                 TargetStatus s = status.get(t.name());
                 String mark = s == null || s.ok() ? "" : switch (s) {
-                    case UNREACHABLE -> "  (out of reach)";
-                    case OUTSIDE_LIMITS -> "  (outside limits)";
-                    default -> "  (path problem)";
+                    case UNREACHABLE -> " (out of reach)";
+                    case OUTSIDE_LIMITS -> " (outside limits)";
+                    default -> " (path problem)";
                 };
                 targets.add(new DefaultMutableTreeNode(new Item(t.name() + mark, "target:" + t.name())));
             }
             root.add(targets);
             DefaultMutableTreeNode prog = new DefaultMutableTreeNode(new Item("Program main", null));
-            for (Instruction i : model.program()) prog.add(new DefaultMutableTreeNode(new Item(i.toString(), "target:" + i.target())));
+            for (Instruction i : model.program())
+                prog.add(new DefaultMutableTreeNode(new Item(i.type().rapid() + " " + (i.via() != null ? i.via() + ", " : "") + i.target(),
+                        "target:" + i.target())));
             root.add(prog);
             ((DefaultTreeModel) getModel()).setRoot(root);
             for (int r = 0; r < getRowCount() && r < 60; r++) expandRow(r);

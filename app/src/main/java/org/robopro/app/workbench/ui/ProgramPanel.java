@@ -33,7 +33,7 @@ import org.robopro.app.workbench.model.Target;
 public final class ProgramPanel extends JPanel {
     private final WorkbenchSession wb;
     private final Rows rows = new Rows();
-    private final JTable table = new JTable(rows);
+    private final FittingTable table = new FittingTable(rows);
     private final JSpinner speed = new JSpinner(new SpinnerNumberModel(500, 5, 7000, 50));
     private final JSpinner zone = new JSpinner(new SpinnerNumberModel(10, 0, 200, 5));
     private final JSlider timeline = new JSlider(0, 1000, 0);
@@ -54,8 +54,8 @@ public final class ProgramPanel extends JPanel {
         table.setDefaultRenderer(Object.class, new StatusRenderer());
         table.getColumnModel().getColumn(0).setMaxWidth(40);
         table.getColumnModel().getColumn(1).setCellEditor(new javax.swing.DefaultCellEditor(
-                new JComboBox<>(new String[] {"MoveJ", "MoveL", "MoveC"})));
-        table.getColumnModel().getColumn(6).setPreferredWidth(420);
+                new JComboBox<>(new String[] {"MoveJ", "MoveL", "MoveC", "MoveAbsJ"})));
+        table.getColumnModel().getColumn(6).setPreferredWidth(260);
         table.setName("program-table");
         wobj.setName("teach-wobj");
         wobj.addActionListener(e -> {
@@ -63,7 +63,7 @@ public final class ProgramPanel extends JPanel {
             if (!updatingWobjs && w != null && !w.equals(wb.model().activeWorkObject())) wb.model().setActiveWorkObject(w.toString());
         });
         add(new JScrollPane(table), BorderLayout.CENTER);
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
+        JPanel buttons = new JPanel(new WrapLayout(FlowLayout.LEFT, 4, 2));
         buttons.add(button("Teach", "teach", e -> wb.teach()));
         buttons.add(new JLabel("in"));
         buttons.add(wobj);

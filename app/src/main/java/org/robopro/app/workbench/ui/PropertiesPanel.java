@@ -34,7 +34,7 @@ public final class PropertiesPanel extends JPanel {
         super(new BorderLayout());
         this.wb = wb;
         setBorder(BorderFactory.createTitledBorder("Properties"));
-        JTable t = new JTable(table);
+        JTable t = new FittingTable(table);
         t.setName("properties");
         t.setRowHeight(19);
         add(new JScrollPane(t), BorderLayout.CENTER);
@@ -58,7 +58,7 @@ public final class PropertiesPanel extends JPanel {
         String sel = m.selection();
         if (sel == null) {
             rows.add(new Row("robot", m.robot().displayName(), null));
-            rows.add(new Row("kinematics", m.kinematics().implementation(), null));
+            rows.add(new Row("joints", String.valueOf(m.robot().dof()), null));
             rows.add(new Row("objects", String.valueOf(m.objects().size()), null));
             rows.add(new Row("targets", String.valueOf(m.targets().size()), null));
         } else if (sel.startsWith("object:")) {

@@ -6,15 +6,12 @@ import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.GridLayout;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 import javax.swing.BorderFactory;
 import javax.swing.DefaultCellEditor;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
-import javax.swing.JDialog;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JOptionPane;
@@ -43,14 +40,15 @@ import org.robopro.models.RobotLibrary;
  * is saved as a robot file (atomically; an existing file only after confirmation) and can then
  * replace the cell's robot.
  */
-public final class RobotWizard extends JDialog {
+public final class RobotWizard extends JPanel {
     private static final String[] COLS = {"Joint", "Type", "X mm", "Y mm", "Z mm", "Axis x", "Axis y", "Axis z", "Min", "Max", "Speed /s"};
 
     private final WorkbenchSession wb;
+    private final WorkbenchFrame owner;
     private RobotWizardModel wm;
     private final JointTable joints = new JointTable();
     private final FlangeTable flange = new FlangeTable();
-    private final JTable jointTable = new JTable(joints);
+    private final JTable jointTable = new FittingTable(joints);
     private final JTextField name = new JTextField(12);
     private final JTextField display = new JTextField(18);
     private final JLabel error = new JLabel(" ");
@@ -61,26 +59,30 @@ public final class RobotWizard extends JDialog {
     private Path savedTo;
 
     public RobotWizard(WorkbenchFrame owner, WorkbenchSession wb) {
-        super(owner, "Robot model wizard (Fig. 7)", false);
+        super(new BorderLayout());
         this.wb = wb;
+        this.owner = owner;
         this.wm = RobotWizardModel.from(wb.model().robot());
-        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
-        addWindowListener(new WindowAdapter() {
-            @Override public void windowClosed(WindowEvent e) { wb.model().setPreview(null); }
-        });
+        setName("robot-wizard");
 
-        JPanel head = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 4));
+        JPanel head = new JPanel(new java.awt.GridLayout(0, 1, 0, 0));
+        JPanel head1 = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 2));
+        JPanel head2 = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 2));
+        JPanel head3 = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 2));
+        head.add(head1);
+        head.add(head2);
+        head.add(head3);
         template.addItem("current robot");
         for (String n : RobotLibrary.shippedNames()) template.addItem(n);
         template.addItem("empty (one joint)");
         template.setName("wizard-template");
         template.addActionListener(e -> { if (!loading) startFrom(String.valueOf(template.getSelectedItem())); });
-        head.add(new JLabel("Start from"));
-        head.add(template);
-        head.add(new JLabel("  Name"));
-        head.add(name);
-        head.add(new JLabel("Display name"));
-        head.add(display);
+        head1.add(new JLabel("Start from"));
+        head1.add(template);
+        head2.add(new JLabel("Name"));
+        head2.add(name);
+        head3.add(new JLabel("Display name"));
+        head3.add(display);
         name.setName("wizard-name");
         name.addActionListener(e -> rebuild());
         name.addFocusListener(new java.awt.event.FocusAdapter() {
@@ -91,14 +93,14 @@ public final class RobotWizard extends JDialog {
         jointTable.setName("wizard-joints");
         jointTable.setRowHeight(20);
         jointTable.getColumnModel().getColumn(1).setCellEditor(new DefaultCellEditor(new JComboBox<>(new String[] {"revolute", "prismatic"})));
-        JPanel jointButtons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
+        JPanel jointButtons = new JPanel(new WrapLayout(FlowLayout.LEFT, 4, 2));
         jointButtons.add(button("Add joint", "wizard-add", () -> { wm.addJoint(); rebuild(); }));
         jointButtons.add(button("Remove joint", "wizard-remove", () -> {
             int r = jointTable.getSelectedRow();
             if (r >= 0 && r < wm.jointCount()) { wm.removeJoint(r); rebuild(); }
         }));
-        jointButtons.add(new JLabel("  revolute: limits deg, speed deg/s; prismatic: mm, mm/s. Base coordinates, all joints at zero."));
-        JTable flangeTable = new JTable(flange);
+        jointButtons.add(new JLabel("revolute: deg, deg/s; prismatic: mm, mm/s; base coordinates, joints at zero"));
+        JTable flangeTable = new FittingTable(flange);
         flangeTable.setName("wizard-flange");
         flangeTable.setRowHeight(20);
         JScrollPane fs = new JScrollPane(flangeTable);
@@ -121,14 +123,14 @@ public final class RobotWizard extends JDialog {
         report.setName("wizard-report");
         report.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 11));
         JScrollPane rs = new JScrollPane(report);
-        rs.setBorder(BorderFactory.createTitledBorder("Model report (parameters as in Table 1; Fig. 8 frames)"));
+        rs.setBorder(BorderFactory.createTitledBorder("Model report: joint parameters and frames"));
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tables, rs);
         split.setResizeWeight(0.55);
 
         JPanel bottom = new JPanel(new GridLayout(1, 0, 6, 0));
         bottom.add(button("Save robot file...", "wizard-save", this::saveInteractive));
         bottom.add(button("Use in cell", "wizard-use", () -> useInCell(() -> true)));
-        bottom.add(button("Close", "wizard-close", this::dispose));
+        bottom.add(button("Close", "wizard-close", () -> owner.closeDock(this)));
         JPanel bp = new JPanel(new FlowLayout(FlowLayout.RIGHT));
         bp.add(bottom);
 
@@ -137,10 +139,12 @@ public final class RobotWizard extends JDialog {
         content.add(head, BorderLayout.NORTH);
         content.add(split, BorderLayout.CENTER);
         content.add(bp, BorderLayout.SOUTH);
-        setContentPane(content);
-        setSize(940, 640);
+        add(content, BorderLayout.CENTER);
         load();
     }
+
+    /** The panel was closed: the cell's robot is drawn again instead of the model being built. */
+    void closed() { wb.model().setPreview(null); }
 
     private JButton button(String text, String id, Runnable r) {
         JButton b = new JButton(text);

@@ -73,6 +73,8 @@ public final class WorkbenchFrame extends JFrame {
     private volatile String lastError;
     private JSplitPane mainSplit;
     private JSplitPane midSplit;
+    private final JTabbedPane dock = new JTabbedPane();
+    private final Map<javax.swing.JComponent, Runnable> docked = new LinkedHashMap<>();
 
     /** What the frame asks of the window around it: a picture of itself, and closing everything. */
     public interface WindowOps {
@@ -111,8 +113,20 @@ public final class WorkbenchFrame extends JFrame {
         treeScroll.setPreferredSize(new Dimension(210, 400));
         JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, properties, jog);
         right.setResizeWeight(0.35);
-        right.setPreferredSize(new Dimension(330, 400));
-        JSplitPane mid = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, right);
+        dock.setName("dock");
+        dock.addTab("Properties", right);
+        dock.setPreferredSize(new Dimension(330, 400));
+        // Tool panels (calibration, robot wizard) dock here beside the 3D view, with a close button on their tab.
+        dock.putClientProperty("JTabbedPane.tabCloseCallback", (java.util.function.IntConsumer) i -> {
+            if (dock.getComponentAt(i) instanceof javax.swing.JComponent c) closeDock(c);
+        });
+        getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW).put(KeyStroke.getKeyStroke("ESCAPE"), "close-dock");
+        getRootPane().getActionMap().put("close-dock", new AbstractAction() {
+            @Override public void actionPerformed(ActionEvent e) {
+                if (dock.getSelectedIndex() > 0 && dock.getSelectedComponent() instanceof javax.swing.JComponent c) closeDock(c);
+            }
+        });
+        JSplitPane mid = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, dock);
         mid.setResizeWeight(1);
         JSplitPane main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, treeScroll, mid);
         mainSplit = main;
@@ -134,11 +148,48 @@ public final class WorkbenchFrame extends JFrame {
     /** Sizes the window and places the split panes: tree 17 %, properties/jog 27 % of the width. */
     public void sizeTo(int width, int height) {
         setSize(width, height);
+        validate(); // the split panes take divider locations only once they have their new size
         int tree = Math.max(170, (int) (width * 0.17));
         mainSplit.setDividerLocation(tree);
-        midSplit.setDividerLocation(Math.max(300, width - tree - Math.max(300, (int) (width * 0.27))));
+        placeDock();
         validate();
     }
+
+    /** The dock's width: 27 % of the window for properties and jogging, 46 % while a tool panel is open. */
+    private void placeDock() {
+        int width = getWidth();
+        int tree = mainSplit.getDividerLocation();
+        int dockW = docked.isEmpty() ? Math.max(300, (int) (width * 0.27)) : Math.max(560, (int) (width * 0.46));
+        midSplit.setDividerLocation(Math.max(300, width - tree - dockW));
+    }
+
+    /**
+     * Shows {@code panel} as a tab of the dock beside the 3D view (added once, then selected);
+     * {@code onClose} runs when it is closed (its tab's close button, Escape, or its own Close).
+     */
+    public void openDock(String title, javax.swing.JComponent panel, Runnable onClose) {
+        if (!docked.containsKey(panel)) {
+            docked.put(panel, onClose);
+            panel.putClientProperty("JTabbedPane.tabClosable", true);
+            dock.addTab(title, panel);
+            placeDock();
+        }
+        dock.setSelectedComponent(panel);
+        dock.revalidate();
+    }
+
+    /** Closes a docked panel; the dock narrows again when none is left. */
+    public void closeDock(javax.swing.JComponent panel) {
+        Runnable r = docked.remove(panel);
+        if (r == null) return;
+        dock.remove(panel);
+        r.run();
+        placeDock();
+        dock.revalidate();
+    }
+
+    /** True while {@code panel} is docked. */
+    public boolean isDocked(javax.swing.JComponent panel) { return docked.containsKey(panel); }
 
     public Action action(String id) {
         Action a = actions.get(id);
@@ -186,23 +237,21 @@ public final class WorkbenchFrame extends JFrame {
     private RobotWizard wizard;
     private CalibrationPanel calibration;
 
-    /** Opens (or brings to front) the calibration panel. */
+    /** Opens (or brings to front) the calibration panel, docked beside the 3D view. */
     public CalibrationPanel openCalibration() {
-        if (calibration == null || !calibration.isDisplayable()) {
-            calibration = new CalibrationPanel(this, wb);
-            calibration.setLocationRelativeTo(this);
-        }
-        calibration.setVisible(true);
+        if (calibration == null || !isDocked(calibration)) calibration = new CalibrationPanel(this, wb);
+        openDock("Calibration", calibration, () -> { });
         return calibration;
     }
 
-    /** Opens (or brings to front) the robot model wizard, starting from the cell's robot. */
+    /** Opens (or brings to front) the robot model wizard, docked beside the 3D view whose preview it drives. */
     public RobotWizard openWizard() {
-        if (wizard == null || !wizard.isDisplayable()) {
-            wizard = new RobotWizard(this, wb);
-            wizard.setLocationRelativeTo(this);
+        if (wizard == null || !isDocked(wizard)) {
+            RobotWizard w = new RobotWizard(this, wb);
+            wizard = w;
+            openDock("Robot model", w, w::closed);
         }
-        wizard.setVisible(true);
+        openDock("Robot model", wizard, wizard::closed);
         return wizard;
     }
 
@@ -268,9 +317,9 @@ public final class WorkbenchFrame extends JFrame {
 
     private void updateStatus() {
         Pose p = wb.model().worldTtcp();
-        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %.0f fps  |  %s",
+        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %.0f fps",
                 wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, wb.model().targets().size(),
-                wb.model().program().size(), app.fps(), wb.model().kinematics().implementation()));
+                wb.model().program().size(), app.fps()));
         updateTitle();
     }
 
@@ -429,7 +478,7 @@ public final class WorkbenchFrame extends JFrame {
         wb.addControllerListener(() -> SwingUtilities.invokeLater(this::controllerChanged));
         controllerChanged();
         def("calibration", "Calibration panel...", null, e -> openCalibration());
-        def("robot-wizard", "Robot model wizard (Fig. 7)...", null, e -> openWizard());
+        def("robot-wizard", "Robot model wizard...", null, e -> openWizard());
         def("about", "About", null, e -> JOptionPane.showMessageDialog(this,
                 "robopro workbench\nOff-line programming and calibration of industrial robots.\n"
                         + "Left drag: orbit, right/middle drag: pan, wheel: zoom, click: select.", "About", JOptionPane.INFORMATION_MESSAGE));

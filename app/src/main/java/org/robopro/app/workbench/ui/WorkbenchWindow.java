@@ -82,6 +82,7 @@ public final class WorkbenchWindow {
         ctx.setInputSource(panel);
         session.setUiThread(WorkbenchWindow::onEdt);
         onEdt(() -> {
+            com.formdev.flatlaf.FlatLightLaf.setup();
             frame = new WorkbenchFrame(session, app, panel, new WorkbenchFrame.WindowOps() {
                 @Override public void screenshot(Path png) throws IOException, InterruptedException { WorkbenchWindow.this.screenshot(png); }
                 @Override public void close() { WorkbenchWindow.this.close(); }
@@ -99,8 +100,8 @@ public final class WorkbenchWindow {
             throw e;
         }
         firstFrameNanos = System.nanoTime();
-        session.log("Ready: " + session.model().robot().displayName() + " (" + session.model().kinematics().implementation()
-                + "), first frame after " + String.format(Locale.ROOT, "%.2f s", secondsToFirstFrame()));
+        session.log("Ready: " + session.model().robot().displayName() + ", first frame after "
+                + String.format(Locale.ROOT, "%.2f s", secondsToFirstFrame()));
         session.startAutosave(60_000);
     }
 

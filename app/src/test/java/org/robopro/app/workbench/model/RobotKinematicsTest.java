@@ -8,13 +8,14 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
 
 class RobotKinematicsTest {
-    private final RobotDescription irb = Robots.irb2000();
+    private final RobotDescription irb = RobotLibrary.load("irb2000");
 
     @Test
     void flange_zeroJoints_isTheDescribedFlange() {
-        for (RobotKinematics k : new RobotKinematics[] {RobotKinematics.of(irb), RobotKinematics.screwModel(irb)}) {
+        for (RobotKinematics k : new RobotKinematics[] {RobotKinematics.of(irb), new ScrewKinematics(irb)}) {
             Pose f = k.flange(new double[6]);
             Pose expected = Pose.fromFrame(irb.flange());
             assertEquals(0, f.distanceTo(expected), 1e-9, k.implementation());
@@ -25,7 +26,7 @@ class RobotKinematicsTest {
     @Test
     void flange_q2Forward_movesWristForwardAndDown() {
         // Positive q2 tilts the upper arm forward (robots.md); the parallel linkage keeps the forearm level.
-        RobotKinematics k = RobotKinematics.screwModel(irb);
+        RobotKinematics k = new ScrewKinematics(irb);
         double[] q = {0, Math.toRadians(30), 0, 0, 0, 0};
         Pose f = k.flange(q);
         double l = 1.490 - 0.780;
@@ -37,7 +38,7 @@ class RobotKinematicsTest {
     @Test
     void solveNear_randomReachablePoses_roundTrips() {
         Random rnd = new Random(7);
-        for (RobotKinematics k : new RobotKinematics[] {RobotKinematics.of(irb), RobotKinematics.screwModel(irb)}) {
+        for (RobotKinematics k : new RobotKinematics[] {RobotKinematics.of(irb), new ScrewKinematics(irb)}) {
             for (int i = 0; i < 20; i++) {
                 double[] q = new double[6];
                 for (int j = 0; j < 6; j++) q[j] = (rnd.nextDouble() - 0.5) * Math.toRadians(80);
@@ -55,7 +56,7 @@ class RobotKinematicsTest {
 
     @Test
     void solveNear_farOutside_isEmpty() {
-        RobotKinematics k = RobotKinematics.screwModel(irb);
+        RobotKinematics k = new ScrewKinematics(irb);
         assertTrue(k.solveNear(Pose.translation(4, 0, 1).times(Pose.fromFrame(irb.flange()).inverse()
                 .times(Pose.fromFrame(irb.flange())).times(Pose.rotY(Math.PI / 2))), new double[6]).isEmpty());
     }
