@@ -36,7 +36,7 @@ public record Scenario(String name, String family, String robot, Expected expect
     /** One drawn robot and its campaign. */
     public record Trial(Scenario scenario, long seed, WorldRobot world, Campaign.Result campaign) {
         /** What was concealed, as JSON (mm, deg, SI where named). */
-        public String truthJson() { return Truth.json(this); }
+        public String truthJson() { return Truth.json(scenario, seed, world, campaign); }
     }
 
     /** Draws the robot and measures it. */
@@ -44,13 +44,24 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     /** Draws the robot and measures it with the scenario's plan changed by {@code adjust} (e.g. more poses). */
     public Trial trial(long seed, UnaryOperator<Campaign.Plan> adjust) {
+        WorldRobot world = robot(seed, new double[] {0, 0, 0.1});
+        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
+        return new Trial(this, seed, world, Campaign.run(world, RobotLibrary.shipped(robot), p));
+    }
+
+    /**
+     * The scenario's real robot of a seed, without a campaign (e.g. for a simulated controller),
+     * its measured target nominally at {@code targetInFlangeM} on the flange (off by ~2 mm).
+     */
+    public WorldRobot robot(long seed, double[] targetInFlangeM) {
         RobotDescription nominal = RobotLibrary.shipped(robot);
         Random rng = new Random(seed * 31 + name.hashCode());
-        WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1));
-        WorldRobot world = effects.apply(nominal, rng).apply(base);
-        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
-        return new Trial(this, seed, world, Campaign.run(world, nominal, p));
+        WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1), targetInFlangeM);
+        return effects.apply(nominal, rng).apply(base);
     }
+
+    /** What a robot of this scenario conceals, as JSON (the truth record without a campaign). */
+    public String truthJson(long seed, WorldRobot world) { return Truth.json(this, seed, world, null); }
 
     /**
      * The robot file with random geometric errors and an unknown instrument pose: axis points by
@@ -59,11 +70,16 @@ public record Scenario(String name, String family, String robot, Expected expect
      * little for 6-D), the instrument 2.5–3.5 m away at any heading, tilted up to 5°.
      */
     public static WorldRobot baseRobot(RobotDescription nominal, Random rng, double pointM, double angleRad) {
+        return baseRobot(nominal, rng, pointM, angleRad, new double[] {0, 0, 0.1});
+    }
+
+    /** {@link #baseRobot(RobotDescription, Random, double, double)} with the measured target nominally elsewhere on the flange. */
+    public static WorldRobot baseRobot(RobotDescription nominal, Random rng, double pointM, double angleRad, double[] targetInFlangeM) {
         int n = nominal.dof();
         Arm arm = Arm.of(nominal).perturbed(rng, pointM, angleRad);
         double[] offsets = new double[n];
         for (int i = 0; i < n; i++) offsets[i] = angleRad * rng.nextGaussian();
-        double[] target = Rigid.plus(new double[] {0, 0, 0.1}, Arm.gauss(rng, 2e-3));
+        double[] target = Rigid.plus(targetInFlangeM, Arm.gauss(rng, 2e-3));
         double[] tilt = Arm.gauss(rng, Math.toRadians(0.5));
         Rigid tool = new Rigid(Rigid.rotation(Rigid.unit(tilt), Rigid.norm(tilt), new double[3]).r(), target);
         double heading = 2 * Math.PI * rng.nextDouble(), dist = 2.5 + rng.nextDouble();

@@ -13,17 +13,17 @@ import java.util.Map;
 final class Truth {
     private Truth() { }
 
-    static String json(Scenario.Trial t) {
-        WorldRobot w = t.world();
+    /** The truth of a scenario's robot, and of its campaign when one is given (else null). */
+    static String json(Scenario scenario, long seed, WorldRobot w, Campaign.Result campaign) {
         Map<String, Object> root = new LinkedHashMap<>();
-        root.put("scenario", t.scenario().name());
-        root.put("family", t.scenario().family());
+        root.put("scenario", scenario.name());
+        root.put("family", scenario.family());
         root.put("robot", w.robotName());
-        root.put("seed", t.seed());
+        root.put("seed", seed);
         Map<String, Object> exp = new LinkedHashMap<>();
-        exp.put("verdict", t.scenario().expected().verdict().name().toLowerCase(java.util.Locale.ROOT));
+        exp.put("verdict", scenario.expected().verdict().name().toLowerCase(java.util.Locale.ROOT));
         List<Map<String, Object>> claims = new ArrayList<>();
-        for (Expected.Claim c : t.scenario().expected().claims()) {
+        for (Expected.Claim c : scenario.expected().claims()) {
             Map<String, Object> m = new LinkedHashMap<>();
             m.put("family", c.family().words);
             m.put("diagnosis_names", c.family().diagnosisNames.stream().sorted().toList());
@@ -32,15 +32,17 @@ final class Truth {
         }
         exp.put("claims", claims);
         root.put("expected", exp);
-        Campaign.Plan p = t.campaign().plan();
-        root.put("sigma_mm", p.sigmaM() * 1e3);
-        root.put("sigma_rot_deg", p.sixD() ? Math.toDegrees(p.sigmaRotRad()) : 0);
-        root.put("poses", p.poses());
-        root.put("validate_poses", p.validatePoses());
-        root.put("order", p.order().name().toLowerCase(java.util.Locale.ROOT));
-        root.put("frame", t.campaign().frame());
-        Campaign.Warmup wu = t.campaign().warmup();
-        root.put("warmup", Map.of("ambient_c", wu.ambientC(), "rise_k", wu.riseK(), "tau_s", wu.tauS()));
+        if (campaign != null) {
+            Campaign.Plan p = campaign.plan();
+            root.put("sigma_mm", p.sigmaM() * 1e3);
+            root.put("sigma_rot_deg", p.sixD() ? Math.toDegrees(p.sigmaRotRad()) : 0);
+            root.put("poses", p.poses());
+            root.put("validate_poses", p.validatePoses());
+            root.put("order", p.order().name().toLowerCase(java.util.Locale.ROOT));
+            root.put("frame", campaign.frame());
+            Campaign.Warmup wu = campaign.warmup();
+            root.put("warmup", Map.of("ambient_c", wu.ambientC(), "rise_k", wu.riseK(), "tau_s", wu.tauS()));
+        }
         root.put("instrument_from_base", rigid(w.instrumentFromBase()));
         root.put("flange_to_target", rigid(w.flangeToTool()));
         root.put("zero_offsets_deg", Arrays.stream(w.zeroOffsets()).map(Math::toDegrees).boxed().toList());

@@ -55,13 +55,34 @@ public final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--fold-seed", defaultValue = "1", paramLabel = "SEED", description = "seed of the fold assignment (default ${DEFAULT-VALUE})")
     long foldSeed;
 
+    @Option(names = "--base", paramLabel = "POSE|FILE",
+            description = "known pose of the robot base in the instrument frame (a tracker registration): x,y,z mm[,qw,qx,qy,qz], "
+                    + "or a JSON file with instrument_T_base (a summary.json or truth.json); kept fixed unless --free-base")
+    String base;
+
+    @Option(names = "--free-base", description = "with --base: start from the given pose but identify it")
+    boolean freeBase;
+
+    @Option(names = "--tool", paramLabel = "POSE|FILE",
+            description = "known tool frame on the flange (origin = measured point; a hand-eye result): x,y,z mm[,qw,qx,qy,qz], "
+                    + "or a JSON file with flange_T_tool; kept fixed unless --free-tool (replaces --target)")
+    String tool;
+
+    @Option(names = "--free-tool", description = "with --tool: start from the given frame but identify it")
+    boolean freeTool;
+
     @Override
     public Integer call() throws Exception {
         RobotDescription desc = robot.description();
         double[] t = CliSupport.numbers("--target", target, 3);
+        if (freeBase && base == null) throw new IllegalArgumentException("--free-base needs --base");
+        if (freeTool && tool == null) throw new IllegalArgumentException("--free-tool needs --tool");
+        if (tool != null && !"0,0,0".equals(target)) throw new IllegalArgumentException("give either --tool or --target, not both");
         CalibrationWorkflow.Settings settings = CalibrationWorkflow.Settings.defaults().withFolds(folds == null ? 0 : folds, foldSeed)
                 .withInitialTool(Pose.translation(Units.mmToM(t[0]), Units.mmToM(t[1]), Units.mmToM(t[2])))
                 .withOutliers(outlierK, !keepOutliers);
+        if (base != null) settings = settings.withInstrument(pose("--base", base, "instrument_T_base"), !freeBase);
+        if (tool != null) settings = settings.withTool(pose("--tool", tool, "flange_T_tool"), !freeTool);
         CalibrationWorkflow.Campaign data = measurements.read(desc, holdout);
         Cancellation cancel = new Cancellation();
         Thread hook = CliSupport.cancelOnInterrupt(cancel, Thread.currentThread());
@@ -100,6 +121,44 @@ public final class CalibrateCommand implements Callable<Integer> {
         w.printf("  wrote %s%n", out.dir().toAbsolutePath());
         for (String warning : oc.warnings()) spec.commandLine().getErr().println("robopro: warning: " + warning);
         return 0;
+    }
+
+    /**
+     * A pose given on the command line: "x,y,z" or "x,y,z,qw,qx,qy,qz" (mm, unit quaternion), or
+     * a JSON file holding {@code key} (as summary.json and truth.json write it: x_mm, y_mm, z_mm,
+     * qw, qx, qy, qz) or those fields at its top level.
+     */
+    static Pose pose(String option, String spec, String key) throws java.io.IOException {
+        java.nio.file.Path f = java.nio.file.Path.of(spec);
+        if (!spec.contains(",") && java.nio.file.Files.isRegularFile(f)) {
+            com.fasterxml.jackson.databind.JsonNode root;
+            try {
+                root = new com.fasterxml.jackson.databind.ObjectMapper().readTree(org.robopro.models.TextFiles.readUtf8(f));
+            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+                throw new org.robopro.models.InputException(spec, e.getLocation() == null ? 0 : e.getLocation().getLineNr(),
+                        e.getLocation() == null ? 0 : e.getLocation().getColumnNr(), null, "not JSON: " + e.getOriginalMessage());
+            }
+            com.fasterxml.jackson.databind.JsonNode n = root != null && root.has(key) ? root.get(key) : root;
+            double[] v = new double[7];
+            String[] fields = {"x_mm", "y_mm", "z_mm", "qw", "qx", "qy", "qz"};
+            for (int i = 0; i < 7; i++) {
+                if (n == null || !n.has(fields[i]) || !n.get(fields[i]).isNumber())
+                    throw new org.robopro.models.InputException(spec, 0, 0, key + "." + fields[i], "missing number; " + option
+                            + " reads '" + key + "' {x_mm, y_mm, z_mm, qw, qx, qy, qz} as summary.json writes it");
+                v[i] = n.get(fields[i]).asDouble();
+            }
+            return quaternionPose(option, v);
+        }
+        double[] v = CliSupport.numbers(option, spec, 3, 7);
+        if (v.length == 3) return Pose.translation(Units.mmToM(v[0]), Units.mmToM(v[1]), Units.mmToM(v[2]));
+        return quaternionPose(option, v);
+    }
+
+    private static Pose quaternionPose(String option, double[] v) {
+        double norm = Math.sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
+        if (Math.abs(norm - 1) > 1e-3)
+            throw new IllegalArgumentException(option + ": the quaternion qw,qx,qy,qz must have length 1, got " + norm);
+        return Pose.fromQuaternion(v[3], v[4], v[5], v[6], Units.mmToM(v[0]), Units.mmToM(v[1]), Units.mmToM(v[2]));
     }
 
     /** RMS, mean, median, 95th percentile and max of position errors, mm. */

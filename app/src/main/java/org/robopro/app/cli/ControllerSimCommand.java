@@ -7,6 +7,7 @@ import java.util.concurrent.Callable;
 import org.robopro.calibration.diagnosis.EffectSpec;
 import org.robopro.comms.sim.ControllerSim;
 import org.robopro.comms.sim.TrueSimulatedRobot;
+import org.robopro.comms.sim.WorldSimulatedRobot;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -56,6 +57,10 @@ public final class ControllerSimCommand implements Callable<Integer> {
     @Option(names = "--truth-file", paramLabel = "FILE", description = "write what the real robot is (error size, parameters, "
             + "injected effects with their sizes, noise, seed) to FILE once at start, as JSON (docs/controller-link.md)") Path truthFile;
 
+    @Option(names = "--world", paramLabel = "SCENARIO", description = "the real robot is a scenario of the independent world simulator "
+            + "(docs/diagnosis-benchmark.md; e.g. \"outside: bump in the angle of j3\"), drawn with --seed; replaces --error-mm and --effect")
+    String world;
+
     @Option(names = "--realtime", description = "take the motion time in real time (default: simulated time, answer at once)") boolean realtime;
 
     @Option(names = "--fault-rate", defaultValue = "0", description = "inject faults into this share of replies/frames (testing)") double faultRate;
@@ -65,13 +70,15 @@ public final class ControllerSimCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         try (ControllerSim sim = ControllerSim.start(new ControllerSim.Config(where.tcp, where.serial, baud, robot, seed, errorMm,
-                effects, noiseMm, ControllerSim.parseTargetMm(target), payloadKg, portFile, realtime, faultRate, truthFile))) {
+                effects, noiseMm, ControllerSim.parseTargetMm(target), payloadKg, portFile, realtime, faultRate, truthFile, world))) {
             spec.commandLine().getOut().println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where()
                     + "; stop with Ctrl-C");
             if (sim.controller().robot() instanceof TrueSimulatedRobot t)
                 for (var e : t.effects())
                     spec.commandLine().getOut().println("  effect " + EffectSpec.of(e.effect()).withSize(e.values())
                             + " (" + EffectSpec.valueUnit(e.effect().kind()) + ")");
+            if (sim.controller().robot() instanceof WorldSimulatedRobot w)
+                spec.commandLine().getOut().println("  world scenario '" + w.scenario().name() + "' (concealed)");
             spec.commandLine().getOut().flush();
             Thread.currentThread().join();
         }

@@ -26,6 +26,11 @@ public final class DemoCommand implements Callable<Integer> {
             completionCandidates = EffectNames.class)
     String effect;
 
+    @Option(names = "--conceal", paramLabel = "GROUP", completionCandidates = ConcealGroups.class,
+            description = "instead of --effect, conceal a scenario of the independent world simulator from this group: "
+                    + "${COMPLETION-CANDIDATES} (\"outside\": a structure no diagnosis family holds; the scenario is drawn from --seed)")
+    String conceal;
+
     @Option(names = "--poses", defaultValue = "200", paramLabel = "N",
             description = "poses of the measurement campaign, every 5th for validation (default ${DEFAULT-VALUE})")
     int poses;
@@ -39,6 +44,12 @@ public final class DemoCommand implements Callable<Integer> {
 
     @Spec CommandSpec spec;
 
+    static final class ConcealGroups extends java.util.ArrayList<String> {
+        private static final long serialVersionUID = 1L;
+
+        ConcealGroups() { super(Demo.concealGroups()); }
+    }
+
     static final class EffectNames extends java.util.ArrayList<String> {
         private static final long serialVersionUID = 1L;
 
@@ -47,7 +58,7 @@ public final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Demo.Options o = new Demo.Options(seed, effect, poses, passes, out);
+        Demo.Options o = new Demo.Options(seed, effect, poses, passes, out, conceal);
         var w = spec.commandLine().getOut();
         w.println("robopro demo: the off-line programming and calibration loop on a simulated IRB-2000 (seed " + seed + ")");
         try {

@@ -10,7 +10,6 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import org.robopro.models.RobotLibrary;
 
 /** {@code robopro fk ROBOT q1 ... qn [--json]}: flange pose for controller joint values (deg / mm). */
 @Command(name = "fk", mixinStandardHelpOptions = true,
@@ -30,7 +29,7 @@ public final class FkCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        KinematicModel m = KinematicModel.build(RobotLibrary.load(robot));
+        KinematicModel m = KinematicModel.build(RobotOptions.load(robot));
         double[] q = toSi(m, joints, robot);
         Pose p = m.flange(q);
         double[] quat = p.quaternion();

@@ -13,7 +13,6 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import org.robopro.models.RobotLibrary;
 
 /** {@code robopro ik ROBOT x y z qw qx qy qz [--json]}: every joint solution with ABB confdata. */
 @Command(name = "ik", mixinStandardHelpOptions = true,
@@ -40,7 +39,7 @@ public final class IkCommand implements Callable<Integer> {
     public Integer call() {
         if (pose == null || pose.length != 7) throw new IllegalArgumentException("ik needs x y z qw qx qy qz");
         for (double v : pose) if (!Double.isFinite(v)) throw new IllegalArgumentException("pose values must be finite");
-        KinematicModel m = KinematicModel.build(RobotLibrary.load(robot));
+        KinematicModel m = KinematicModel.build(RobotOptions.load(robot));
         Pose target = Pose.fromQuaternion(pose[3], pose[4], pose[5], pose[6],
                 Units.mmToM(pose[0]), Units.mmToM(pose[1]), Units.mmToM(pose[2]));
         List<IkSolution> sols = InverseKinematics.of(m).solveAll(target).stream().filter(s -> all || s.withinLimits()).toList();

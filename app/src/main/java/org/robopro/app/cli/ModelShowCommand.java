@@ -5,7 +5,6 @@ import org.robopro.kinematics.ModelReport;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
-import org.robopro.models.RobotLibrary;
 import org.robopro.kinematics.KinematicModel;
 
 /** {@code robopro model show ROBOT}: the frames and Table 1 parameters (the paper's Fig. 8). */
@@ -20,7 +19,7 @@ public final class ModelShowCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        spec.commandLine().getOut().print(ModelReport.of(KinematicModel.build(RobotLibrary.load(robot))));
+        spec.commandLine().getOut().print(ModelReport.of(KinematicModel.build(RobotOptions.load(robot))));
         spec.commandLine().getOut().flush();
         return 0;
     }

@@ -132,12 +132,36 @@ public final class Demo {
      * @param passes welding passes of the program
      * @param out    output folder
      */
-    public record Options(long seed, String effect, int poses, int passes, Path out) {
+    public record Options(long seed, String effect, int poses, int passes, Path out, String conceal) {
         public Options {
             if (poses < 40) throw new IllegalArgumentException("--poses must be at least 40 (the calibration needs more equations than its ~30 unknowns), got " + poses);
             if (passes < 1 || passes > 4) throw new IllegalArgumentException("passes must be 1..4, got " + passes);
-            concealedSpec(effect, seed); // fails early, naming the choices
+            if (conceal == null) concealedSpec(effect, seed); // fails early, naming the choices
+            else concealedScenario(conceal, seed);
         }
+
+        /** Concealing {@code effect} (the controller simulator's own effects). */
+        public Options(long seed, String effect, int poses, int passes, Path out) { this(seed, effect, poses, passes, out, null); }
+    }
+
+    /** The groups of world scenarios the demo can conceal with {@code --conceal} (those on the IRB-2000). */
+    public static List<String> concealGroups() {
+        return org.robopro.world.Scenario.families().stream()
+                .filter(f -> org.robopro.world.Scenario.ofFamily(f).stream().anyMatch(s -> s.robot().equals("irb2000"))).toList();
+    }
+
+    /**
+     * The world scenario the demo conceals for {@code --conceal GROUP}: one of the group's IRB-2000
+     * scenarios, drawn from the seed (the independent world simulator's robot, docs/diagnosis-benchmark.md).
+     *
+     * @throws IllegalArgumentException for an unknown group, naming the choices
+     */
+    static String concealedScenario(String group, long seed) {
+        List<org.robopro.world.Scenario> ss = org.robopro.world.Scenario.ofFamily(group.strip()).stream()
+                .filter(s -> s.robot().equals("irb2000")).toList();
+        if (ss.isEmpty())
+            throw new IllegalArgumentException("--conceal: unknown group '" + group + "'; choose one of " + String.join(", ", concealGroups()));
+        return ss.get(new Random(seed * 1_000_003L + 11).nextInt(ss.size())).name();
     }
 
     /** Per-target errors of one program run, mm. */
@@ -212,12 +236,13 @@ public final class Demo {
         try {
             work = Files.createTempDirectory("robopro-demo");
             truthFile = work.resolve("truth.json");
-            String spec = concealedSpec(o.effect(), o.seed());
+            String spec = o.conceal() == null ? concealedSpec(o.effect(), o.seed()) : null;
             // The tracker's reflector sits at the torch tip (nominally; the real one is off by ~2 mm).
             Vec3 tipMm = WeldProgram.torch(CellFile.shipped("irb2000-welding")).position().times(1e3);
             ControllerSim.Config cfg = ControllerSim.Config.tcp("127.0.0.1:0").withSeed(o.seed()).withErrorMm(errorMm(o.seed()))
                     .withNoiseMm(NOISE_MM).withTargetMm(tipMm).withEffects(spec == null ? List.of() : List.of(spec))
                     .withTruthFile(truthFile);
+            if (o.conceal() != null) cfg = cfg.withWorld(concealedScenario(o.conceal(), o.seed()));
             sim = ControllerConnection.startSimulator(cfg, Duration.ofSeconds(60),
                     CommandInvoker.Options.DEFAULT.withReplyTimeout(Duration.ofSeconds(20)));
         } catch (IOException | RuntimeException e) {
@@ -226,7 +251,11 @@ public final class Demo {
         }
         try (sim) {
             con.line("%s (robopro controller-sim: its own JVM, open_abb protocol), started in %.1f s", sim.description(), con.stepS());
-            con.line("true robot: seeded geometric errors of 5-15 mm and one concealed effect (--effect %s)", o.effect());
+            if (o.conceal() == null)
+                con.line("true robot: seeded geometric errors of 5-15 mm and one concealed effect (--effect %s)", o.effect());
+            else
+                con.line("true robot: the independent world simulator's, with geometric errors and a concealed %s scenario (--conceal)",
+                        o.conceal());
             try {
                 return loop(sim, truthFile);
             } finally {

@@ -28,14 +28,17 @@ class CalibrationCliTest {
     }
 
     @Test
-    void simulateCalibrateCompensate_irb2000_writesEveryOutput() throws Exception {
-        Path sim = dir.resolve("sim"), cal = dir.resolve("cal");
-        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "120", "--validate-poses", "80", "--sigma", "0.02",
-                "--target", "80,40,150", "--seed", "7", "--out", sim.toString()), err.toString());
-        for (String f : List.of("measurements.csv", "validate.csv", "truth.json", "true.robot.json"))
-            assertTrue(Files.exists(sim.resolve(f)), f);
-        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
-                "--validate", sim.resolve("validate.csv").toString(), "--out", cal.toString()), err.toString());
+    void calibrateCompensate_worldCampaignIrb2000_writesEveryOutput() throws Exception {
+        // The campaign of a real robot drawn by the independent world simulator (geometric errors,
+        // unknown instrument pose, sigma 0.02 mm, the measured point off the joint-6 axis at
+        // (80, 40, 150) mm on the flange), one file with a train/validate set column.
+        Path cal = dir.resolve("cal"), file = dir.resolve("campaign.csv");
+        var robot = org.robopro.models.RobotLibrary.shipped("irb2000");
+        var world = org.robopro.world.Scenario.baseRobot(robot, new java.util.Random(7), 1e-3, Math.toRadians(0.1),
+                new double[] {0.08, 0.04, 0.15});
+        Files.writeString(file, org.robopro.world.Campaign.run(world, robot,
+                org.robopro.world.Campaign.Plan.defaults(7).withPoses(120, 80)).text());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", file.toString(), "--out", cal.toString()), err.toString());
         JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
         for (String k : List.of("nominal_train_rms_mm", "train_rms_mm", "nominal_validate_rms_mm", "validate_rms_mm",
                 "train_max_mm", "validate_max_mm", "parameters", "unidentifiable", "outliers"))
@@ -62,8 +65,7 @@ class CalibrationCliTest {
         assertTrue(lines.get(2).endsWith("converged"), lines.get(2));
 
         // Existing outputs are not overwritten without --force.
-        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
-                "--out", cal.toString()));
+        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", file.toString(), "--out", cal.toString()));
     }
 
     @Test
@@ -141,5 +143,41 @@ class CalibrationCliTest {
             assertEquals(c[1].equals("train"), !c[2].isEmpty(), row);
         }
         assertTrue(Files.readString(cal.resolve("report.html")).contains("Cross-validation"));
+    }
+
+    @Test
+    void calibrate_knownBaseAndTool_keptFixedOrUsedAsStart() throws Exception {
+        Path sim = dir.resolve("sim"), free = dir.resolve("free"), known = dir.resolve("known"), wrong = dir.resolve("wrong"),
+                start = dir.resolve("start");
+        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "100", "--target", "80,40,150", "--seed", "5",
+                "--out", sim.toString()), err.toString());
+        String m = sim.resolve("measurements.csv").toString();
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", m, "--out", free.toString()), err.toString());
+        ObjectMapper om = new ObjectMapper();
+        JsonNode f = om.readTree(free.resolve("summary.json").toFile());
+        // A registration known from elsewhere (here: the free fit's) is kept as given.
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", m, "--base", free.resolve("summary.json").toString(),
+                "--tool", free.resolve("summary.json").toString(), "--out", known.toString()), err.toString());
+        JsonNode k = om.readTree(known.resolve("summary.json").toFile());
+        for (JsonNode p : k.get("parameters"))
+            if (p.get("block").asText().equals("instrument") || p.get("block").asText().equals("tool"))
+                assertTrue(p.get("fixed").asBoolean(), p.toString());
+        for (String c : List.of("x_mm", "y_mm", "z_mm", "qw"))
+            assertEquals(f.get("instrument_T_base").get(c).asDouble(), k.get("instrument_T_base").get(c).asDouble(), 1e-9, c);
+        double freeRms = f.get("train_rms_mm").asDouble();
+        assertEquals(freeRms, k.get("train_rms_mm").asDouble(), 0.05 * freeRms);
+        assertTrue(Files.readString(known.resolve("calibrated.robot.json")).contains("given, kept fixed"));
+
+        // A base 5 mm off, kept fixed, spoils the fit (the option really fixes it); as a start only, the fit recovers.
+        JsonNode b = f.get("instrument_T_base");
+        String off = String.format(java.util.Locale.ROOT, "%.9f,%.9f,%.9f,%.12f,%.12f,%.12f,%.12f", b.get("x_mm").asDouble() + 5,
+                b.get("y_mm").asDouble(), b.get("z_mm").asDouble(), b.get("qw").asDouble(), b.get("qx").asDouble(), b.get("qy").asDouble(),
+                b.get("qz").asDouble());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", m, "--base", off, "--out", wrong.toString()), err.toString());
+        assertTrue(om.readTree(wrong.resolve("summary.json").toFile()).get("train_rms_mm").asDouble() > 10 * freeRms);
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", m, "--base", off, "--free-base", "--out", start.toString()),
+                err.toString());
+        assertEquals(freeRms, om.readTree(start.resolve("summary.json").toFile()).get("train_rms_mm").asDouble(), 0.05 * freeRms);
+        assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", m, "--base", "1,2", "--out", dir.resolve("bad").toString()));
     }
 }

@@ -11,64 +11,58 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.robopro.calibration.PoseConditions;
-import org.robopro.calibration.diagnosis.Effect;
-import org.robopro.calibration.measurement.MeasurementWriter;
-import org.robopro.calibration.simulation.Campaign;
-import org.robopro.calibration.simulation.CampaignSimulator;
-import org.robopro.calibration.simulation.SimulationSettings;
-import org.robopro.kinematics.KinematicModel;
-import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
+import org.robopro.world.Campaign;
+import org.robopro.world.JointError;
+import org.robopro.world.Scenario;
+import org.robopro.world.WorldRobot;
 
-/** robopro diagnose end to end: simulated backlash on joint 2, files written, effect named, compensate uses the extended model. */
+/**
+ * robopro diagnose end to end: a real IRB 2000 drawn by the independent world simulator with
+ * 0.04° of lost motion on joint 1 (the output lagging its motor), measured in the nearest-next
+ * order with directions recorded, a validation campaign on the same robot; files written, effect
+ * named with its size, compensate uses the extended model; cross-validated folds.
+ */
 class DiagnoseCommandTest {
     @TempDir Path dir;
     private final CliHarness cli = new CliHarness();
 
     private int run(String... args) { return cli.run(args); }
 
-    /** A campaign with backlash on joint 2 (approach directions recorded): {training file, validation file}. */
-    private Path[] backlashCampaign() throws Exception {
+    /**
+     * A real IRB 2000 of the world simulator with 0.04° of lost motion on joint 1, measured in the
+     * nearest-next order with directions recorded: {training file (150 poses), validation file
+     * (60 poses, a second campaign on the same robot)}.
+     */
+    private Path[] lostMotionCampaign() throws Exception {
         RobotDescription robot = RobotLibrary.shipped("irb2000");
-        KinematicModel nominal = KinematicModel.build(robot);
-        double[][] prev = {null};
-        Random cr = new Random(2);
-        CampaignSimulator.ConditionsSource src = (rng, q, i) -> {
-            int[] d = new int[q.length];
-            for (int j = 0; j < q.length; j++) d[j] = prev[0] == null ? (cr.nextBoolean() ? 1 : -1) : (q[j] >= prev[0][j] ? 1 : -1);
-            prev[0] = q.clone();
-            return new PoseConditions(d, 20.0 * i, 20 + 10 * (1 - Math.exp(-20.0 * i / 1500)), Double.NaN);
-        };
-        Campaign c = CampaignSimulator.simulate(nominal, SimulationSettings.defaults().withPoses(150).withValidatePoses(60)
-                        .withSigma(0.02e-3).withSeed(77),
-                List.of(Effect.backlash(1).truth(new double[] {Math.toRadians(0.04)})), src);
-        List<JointType> types = robot.joints().stream().map(j -> j.type()).toList();
+        WorldRobot w = Scenario.baseRobot(robot, new Random(77), 1e-3, Math.toRadians(0.1))
+                .withErrors(List.of(new JointError.LostMotion(0, Math.toRadians(0.04))));
         Path train = dir.resolve("train.csv"), val = dir.resolve("validate.csv");
-        MeasurementWriter.write(c.measurements(), types, train, false);
-        MeasurementWriter.write(c.validation(), types, val, false);
+        Files.writeString(train, Campaign.run(w, robot, Campaign.Plan.defaults(77).withPoses(150, 0)).text());
+        Files.writeString(val, Campaign.run(w, robot, Campaign.Plan.defaults(78).withPoses(60, 0)).text());
         return new Path[] {train, val};
     }
 
     @Test
-    void diagnose_simulatedBacklashJoint2_writesReportJsonAndExtendedModel() throws Exception {
-        Path[] files = backlashCampaign();
+    void diagnose_worldLostMotionJoint1_writesReportJsonAndExtendedModel() throws Exception {
+        Path[] files = lostMotionCampaign();
         Path train = files[0], val = files[1];
         Path outDir = System.getenv("ROBOPRO_KEEP_REPORT") != null ? Path.of(System.getenv("ROBOPRO_KEEP_REPORT")) : dir.resolve("out");
         assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--validate", val.toString(),
                 "--out", outDir.toString(), "--force"), cli.err());
-        assertTrue(cli.out().contains("found backlash j2"), cli.out());
+        assertTrue(cli.out().contains("found backlash j1"), cli.out());
         JsonNode j = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json")));
         for (String f : new String[] {"geometric", "effects", "final", "outliers", "not_identifiable"}) assertTrue(j.has(f), f);
         assertEquals(1, j.get("effects").size());
         JsonNode e = j.get("effects").get(0);
         assertEquals("backlash", e.get("effect").asText());
-        assertEquals(2, e.get("joints").get(0).asInt());
+        assertEquals(1, e.get("joints").get(0).asInt());
         assertEquals(Math.toRadians(0.04), e.get("parameters").get("b").asDouble(), Math.toRadians(0.004));
         assertTrue(j.get("final").get("validate_rms_mm").asDouble() < 0.5 * j.get("geometric").get("validate_rms_mm").asDouble());
         String html = Files.readString(outDir.resolve("report.html"));
-        assertTrue(html.contains("<svg") && html.contains("backlash j2"));
+        assertTrue(html.contains("<svg") && html.contains("backlash j1"));
         RobotDescription ext = RobotLibrary.read(outDir.resolve("extended.robot.json"));
         assertEquals("backlash", ext.effects().get(0).effect());
 
@@ -87,7 +81,7 @@ class DiagnoseCommandTest {
 
     @Test
     void diagnose_folds_effectFoundInEveryFoldAndHeldOutErrorsDrop() throws Exception {
-        Path[] files = backlashCampaign();
+        Path[] files = lostMotionCampaign();
         Path outDir = dir.resolve("cv");
         assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", files[0].toString(), "--folds", "3",
                 "--out", outDir.toString()), cli.err());
@@ -96,8 +90,8 @@ class DiagnoseCommandTest {
         int heldOut = 0;
         for (JsonNode f : c.get("per_fold")) heldOut += f.get("poses_held_out").asInt();
         assertEquals(150, heldOut);
-        assertEquals(3, c.get("effect_counts").path("backlash j2").asInt(), c.toString());
+        assertEquals(3, c.get("effect_counts").path("backlash j1").asInt(), c.toString());
         assertTrue(c.get("held_out_final_rms_mm").asDouble() < 0.8 * c.get("held_out_geometric_rms_mm").asDouble(), c.toString());
-        assertTrue(cli.out().contains("backlash j2 found in 3 of 3 folds"), cli.out());
+        assertTrue(cli.out().contains("backlash j1 found in 3 of 3 folds"), cli.out());
     }
 }

@@ -53,19 +53,32 @@ public final class Calibrator {
      * @param effects          extra parameter blocks (diagnosis)
      * @param cancel           cancellation token
      * @param progress         progress listener
+     * @param knownInstrument  a known instrument pose (instrument_T_base, e.g. a tracker registration) to start
+     *                         from instead of the registration of the nominal predictions; null for none
+     * @param fixInstrument    keep {@code knownInstrument} fixed (not identified)
+     * @param fixTool          keep {@code initialTool} fixed (a known tool, e.g. a hand-eye result)
      */
     public record Options(Pose initialTool, double outlierK, boolean rejectOutliers, double tolerance, int maxIterations,
-                          List<EffectBlock> effects, Cancellation cancel, Progress progress) {
-        public static Options defaults() {
-            return new Options(Pose.IDENTITY, 5.0, true, Identifiability.DEFAULT_TOLERANCE, 100, List.of(),
-                    Cancellation.NONE, Progress.NONE);
+                          List<EffectBlock> effects, Cancellation cancel, Progress progress, Pose knownInstrument,
+                          boolean fixInstrument, boolean fixTool) {
+        public Options {
+            if (fixInstrument && knownInstrument == null) throw new IllegalArgumentException("a fixed instrument pose needs its value");
         }
 
-        public Options withInitialTool(Pose t) { return new Options(t, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, progress); }
-        public Options withEffects(List<EffectBlock> e) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, e, cancel, progress); }
-        public Options withCancel(Cancellation c) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, c, progress); }
-        public Options withProgress(Progress p) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, p); }
-        public Options withOutliers(double k, boolean reject) { return new Options(initialTool, k, reject, tolerance, maxIterations, effects, cancel, progress); }
+        public static Options defaults() {
+            return new Options(Pose.IDENTITY, 5.0, true, Identifiability.DEFAULT_TOLERANCE, 100, List.of(),
+                    Cancellation.NONE, Progress.NONE, null, false, false);
+        }
+
+        public Options withInitialTool(Pose t) { return new Options(t, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, progress, knownInstrument, fixInstrument, fixTool); }
+        public Options withEffects(List<EffectBlock> e) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, e, cancel, progress, knownInstrument, fixInstrument, fixTool); }
+        public Options withCancel(Cancellation c) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, c, progress, knownInstrument, fixInstrument, fixTool); }
+        public Options withProgress(Progress p) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, p, knownInstrument, fixInstrument, fixTool); }
+        public Options withOutliers(double k, boolean reject) { return new Options(initialTool, k, reject, tolerance, maxIterations, effects, cancel, progress, knownInstrument, fixInstrument, fixTool); }
+        /** Starts from (or, with {@code fix}, keeps) this instrument pose. */
+        public Options withInstrument(Pose instrumentTbase, boolean fix) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, progress, instrumentTbase, fix, fixTool); }
+        /** Keeps the tool frame at {@link #initialTool} (not identified). */
+        public Options withToolFixed(boolean fix) { return new Options(initialTool, outlierK, rejectOutliers, tolerance, maxIterations, effects, cancel, progress, knownInstrument, fixInstrument, fix); }
     }
 
     private Calibrator() { }
@@ -110,8 +123,11 @@ public final class Calibrator {
             boolean[] keep = new boolean[rows.size()];
             inst0 = Registration.trimmed(pred, meas, keep);
             for (int i = 0; i < rows.size(); i++) if (!keep[i]) screened.add(rows.get(i).poseId());
-        }
-        if (sixD) tool0 = averageToolRotation(nominal, rows, tool0, inst0);
+            if (o.knownInstrument() != null) inst0 = o.knownInstrument();
+        } else if (o.knownInstrument() != null)
+            throw new InputException(train.source(), 0, 0, "frame", "the measurements are in the robot base frame ('# frame: base'), "
+                    + "so there is no instrument pose to give");
+        if (sixD && !o.fixTool()) tool0 = averageToolRotation(nominal, rows, tool0, inst0);
         double[] start = IdentificationProblem.startVector(nominal, tool0, sixD, inst0, effects);
         if (!o.rejectOutliers()) screened.clear();
 
@@ -125,6 +141,7 @@ public final class Calibrator {
         Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance());
         boolean[] fix = new boolean[p1.fullSize()];
         for (int j : structural.fixed()) fix[j] = true;
+        for (int j : known(p1, o)) fix[j] = true;
         int nFree = 0;
         for (boolean b : fix) if (!b) nFree++;
         int eq = rows.size() * p1.rowsPerPose();
@@ -376,14 +393,32 @@ public final class Calibrator {
         for (int i = 0; i < p1.fullSize(); i++)
             geoFixed[i] = p1.blocks().get(i) == IdentificationProblem.Block.GEOMETRY
                     || p1.blocks().get(i) == IdentificationProblem.Block.EFFECT;
+        for (int j : known(p1, o)) geoFixed[j] = true;
         p1.setFixed(geoFixed);
-        LevenbergMarquardt.Result r = new LevenbergMarquardt(p1).maxIterations(o.maxIterations()).solve(p1.freeOf(start), o.cancel());
+        LevenbergMarquardt.Result r;
+        if (p1.parameterCount() == 0) {
+            // Instrument and tool both given and kept: nothing to fit with the nominal geometry.
+            double[] res = new double[p1.residualCount()];
+            p1.evaluateFull(start, res, null);
+            double cost = 0.5 * Dense.dot(res, res, res.length);
+            r = new LevenbergMarquardt.Result(new double[0], cost, 0, 1, new double[] {cost}, LevenbergMarquardt.Reason.COST_CONVERGED);
+        } else r = new LevenbergMarquardt(p1).maxIterations(o.maxIterations()).solve(p1.freeOf(start), o.cancel());
         double[] full = p1.fullOf(r.x());
         if (sixD) {
             double[] sig = estimateSigmas(p1, full, p1.freeIndices().length);
             p1.setSigmas(sig[0], sig[1]);
         }
         return new NominalFit(p1, r, full);
+    }
+
+    /** Full indices of the parameters the options keep at known values (instrument, tool). */
+    private static List<Integer> known(IdentificationProblem p, Options o) {
+        List<Integer> out = new ArrayList<>();
+        for (int i = 0; i < p.fullSize(); i++) {
+            IdentificationProblem.Block b = p.blocks().get(i);
+            if (o.fixInstrument() && b == IdentificationProblem.Block.INSTRUMENT || o.fixTool() && b == IdentificationProblem.Block.TOOL) out.add(i);
+        }
+        return out;
     }
 
     /** The nominal-fit problem (its sigmas), the solver result and the full parameter vector. */

@@ -52,27 +52,37 @@ public final class CalibrationWorkflow {
     /**
      * How to calibrate (how to split is {@link #load}'s business).
      *
-     * @param folds          K of the K-fold cross-validation of the training poses; 0 for none
-     * @param foldSeed       seed of the fold assignment (same seed, same folds)
-     * @param initialTool    start of the tool frame (origin = measured point), flange coordinates
-     * @param outlierK       outlier threshold in robust sigmas
-     * @param rejectOutliers drop flagged poses from the fit (else report them only)
+     * @param folds           K of the K-fold cross-validation of the training poses; 0 for none
+     * @param foldSeed        seed of the fold assignment (same seed, same folds)
+     * @param initialTool     start of the tool frame (origin = measured point), flange coordinates
+     * @param outlierK        outlier threshold in robust sigmas
+     * @param rejectOutliers  drop flagged poses from the fit (else report them only)
+     * @param knownInstrument a known instrument pose (instrument_T_base) to start from; null for none
+     * @param fixInstrument   keep {@code knownInstrument} (a trusted registration) instead of identifying it
+     * @param fixTool         keep {@code initialTool} (a trusted tool, e.g. from hand-eye calibration)
      */
-    public record Settings(int folds, long foldSeed, Pose initialTool, double outlierK, boolean rejectOutliers) {
+    public record Settings(int folds, long foldSeed, Pose initialTool, double outlierK, boolean rejectOutliers,
+                           Pose knownInstrument, boolean fixInstrument, boolean fixTool) {
         public Settings {
             if (folds < 0 || folds == 1) throw new IllegalArgumentException("--folds must be at least 2, got " + folds);
             if (!(outlierK > 0)) throw new IllegalArgumentException("--outlier-k must be > 0, got " + outlierK);
+            if (fixInstrument && knownInstrument == null) throw new IllegalArgumentException("a fixed instrument pose needs its value");
         }
 
-        public static Settings defaults() { return new Settings(0, 1, Pose.IDENTITY, 5.0, true); }
+        public static Settings defaults() { return new Settings(0, 1, Pose.IDENTITY, 5.0, true, null, false, false); }
 
-        public Settings withFolds(int k, long seed) { return new Settings(k, seed, initialTool, outlierK, rejectOutliers); }
-        public Settings withInitialTool(Pose t) { return new Settings(folds, foldSeed, t, outlierK, rejectOutliers); }
-        public Settings withOutliers(double k, boolean reject) { return new Settings(folds, foldSeed, initialTool, k, reject); }
+        public Settings withFolds(int k, long seed) { return new Settings(k, seed, initialTool, outlierK, rejectOutliers, knownInstrument, fixInstrument, fixTool); }
+        public Settings withInitialTool(Pose t) { return new Settings(folds, foldSeed, t, outlierK, rejectOutliers, knownInstrument, fixInstrument, fixTool); }
+        public Settings withOutliers(double k, boolean reject) { return new Settings(folds, foldSeed, initialTool, k, reject, knownInstrument, fixInstrument, fixTool); }
+        /** Starts from, or with {@code fix} keeps, a known instrument pose. */
+        public Settings withInstrument(Pose instrumentTbase, boolean fix) { return new Settings(folds, foldSeed, initialTool, outlierK, rejectOutliers, instrumentTbase, fix, fixTool); }
+        /** Starts from, or with {@code fix} keeps, a known tool frame. */
+        public Settings withTool(Pose flangeTtool, boolean fix) { return new Settings(folds, foldSeed, flangeTtool, outlierK, rejectOutliers, knownInstrument, fixInstrument, fix); }
 
         Calibrator.Options options(Cancellation cancel, Progress progress) {
-            return Calibrator.Options.defaults().withInitialTool(initialTool).withOutliers(outlierK, rejectOutliers)
-                    .withCancel(cancel).withProgress(progress);
+            Calibrator.Options o = Calibrator.Options.defaults().withInitialTool(initialTool).withOutliers(outlierK, rejectOutliers)
+                    .withCancel(cancel).withProgress(progress).withToolFixed(fixTool);
+            return knownInstrument == null ? o : o.withInstrument(knownInstrument, fixInstrument);
         }
     }
 
@@ -330,6 +340,8 @@ public final class CalibrationWorkflow {
         prov.put("calibration-train-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.trainRmsM())));
         if (c.validate() != null) prov.put("calibration-validate-rms-mm", String.format(Locale.ROOT, "%.5f", Units.mToMm(r.validateRmsM())));
         prov.put("calibration-untrustworthy-parameters", Trust.provenance(concerns));
+        if (s.knownInstrument() != null) prov.put("calibration-instrument-pose", s.fixInstrument() ? "given, kept fixed" : "given as the start");
+        if (s.fixTool()) prov.put("calibration-tool", "given, kept fixed");
         var p = r.flangeTtool().position();
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));

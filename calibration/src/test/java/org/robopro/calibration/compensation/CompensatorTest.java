@@ -7,13 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.WorldCampaigns;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.identification.Calibrator;
-import org.robopro.calibration.simulation.Campaign;
-import org.robopro.calibration.simulation.CampaignSimulator;
 import org.robopro.calibration.simulation.PoseSampler;
-import org.robopro.calibration.simulation.SimulationSettings;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotLibrary;
@@ -21,13 +18,23 @@ import org.robopro.models.RobotLibrary;
 class CompensatorTest {
     static final KinematicModel NOMINAL = KinematicModel.build(RobotLibrary.load("irb2000"));
 
+    /** A real IRB 2000 drawn by the independent world simulator, measured in the base frame. */
+    static WorldCampaigns.Sim world(long seed) {
+        return WorldCampaigns.geometric(NOMINAL.description(), seed, true, p -> p.withPoses(200, 0));
+    }
+
+    /** A model other than the nominal one: the calibration of a world robot (for the compensator's own consistency). */
+    static KinematicModel calibrated(long seed) {
+        WorldCampaigns.Sim c = world(seed);
+        return Calibrator.calibrate(NOMINAL, c.train(), null).calibrated();
+    }
+
     @Test
     void compensate_calibratedModel_landsOnTrueRobotWithinNoiseFloor() {
-        SimulationSettings s = SimulationSettings.defaults().withSeed(12).withBaseFrame(true);
-        Campaign c = CampaignSimulator.simulate(NOMINAL, s);
-        CalibrationResult r = Calibrator.calibrate(NOMINAL, c.measurements(), null);
+        WorldCampaigns.Sim c = world(12);
+        CalibrationResult r = Calibrator.calibrate(NOMINAL, c.train(), null);
         // The controller knows the nominal model and the nominal measured point; calibration knows better.
-        Pose toolNominal = Pose.translation(s.nominalTarget());
+        Pose toolNominal = Pose.translation(0, 0, 0.1);
         Compensator comp = new Compensator(NOMINAL, r.calibrated(), toolNominal, r.flangeTtool());
         List<double[]> qs = new PoseSampler(NOMINAL).sample(100, new Random(4));
         double sumBefore = 0, sumAfter = 0;
@@ -35,24 +42,23 @@ class CompensatorTest {
             Pose target = NOMINAL.flange(qTrue).times(toolNominal); // reachable target poses
             // Uncompensated: the controller goes to q = IK_nominal(target).
             var plain = org.robopro.kinematics.InverseKinematics.of(NOMINAL).solveNear(target.times(toolNominal.inverse()), qTrue).orElseThrow();
-            sumBefore += Math.pow(c.truth().tool(plain.q(), PoseConditions.NONE).position().minus(target.position()).norm(), 2);
+            sumBefore += Math.pow(c.truePose(plain.q()).position().minus(target.position()).norm(), 2);
             Compensator.Result res = comp.compensate(target, qTrue);
             assertEquals(Compensator.Status.CONVERGED, res.status());
             assertTrue(res.residualM() < 1e-8);
-            Pose reached = c.truth().tool(res.q(), PoseConditions.NONE);
+            Pose reached = c.truePose(res.q()); // where the world's robot really puts the target
             sumAfter += Math.pow(reached.position().minus(target.position()).norm(), 2);
         }
         double before = Math.sqrt(sumBefore / qs.size()), after = Math.sqrt(sumAfter / qs.size());
-        System.out.printf("compensation: %.3f mm -> %.4f mm (noise floor %.4f mm)%n", before * 1e3, after * 1e3, Math.sqrt(3) * s.sigmaM() * 1e3);
+        System.out.printf("compensation: %.3f mm -> %.4f mm (noise floor %.4f mm)%n", before * 1e3, after * 1e3, c.floorM() * 1e3);
         assertTrue(before > 3e-3, "uncompensated error " + before);
-        assertTrue(after < Math.sqrt(3) * s.sigmaM(), "compensated error " + after);
+        assertTrue(after < c.floorM(), "compensated error " + after);
     }
 
     @Test
     void batch_fastPath_matchesReferencePath() {
-        Campaign c = CampaignSimulator.simulate(NOMINAL, SimulationSettings.defaults().withSeed(13).withBaseFrame(true));
         Pose tool = Pose.translation(0, 0, 0.1);
-        Compensator comp = new Compensator(NOMINAL, c.truth().model(), tool, tool);
+        Compensator comp = new Compensator(NOMINAL, calibrated(13), tool, tool);
         Compensator.Batch batch = comp.batch();
         List<double[]> qs = new PoseSampler(NOMINAL).sample(50, new Random(5));
         for (int i = 0; i < qs.size(); i++) {
@@ -76,22 +82,21 @@ class CompensatorTest {
 
     @Test
     void compensateWorld_robotPlacedInCell_returnsWorldCoordinates() {
-        Campaign c = CampaignSimulator.simulate(NOMINAL, SimulationSettings.defaults().withSeed(14).withBaseFrame(true));
-        Compensator comp = new Compensator(NOMINAL, c.truth().model(), Pose.IDENTITY, Pose.IDENTITY);
+        KinematicModel real = calibrated(14);
+        Compensator comp = new Compensator(NOMINAL, real, Pose.IDENTITY, Pose.IDENTITY);
         Pose worldTbase = Pose.translation(2, 1, 0.5).times(Pose.rotZ(0.7));
         double[] q = {0.2, 0.1, -0.1, 0.3, 0.5, -0.2};
         Pose worldTarget = worldTbase.times(NOMINAL.flange(q));
         Compensator.Result w = comp.compensateWorld(worldTarget, worldTbase, q);
         Compensator.Result b = comp.compensate(worldTbase.inverse().times(worldTarget), q);
         assertEquals(0, w.commanded().distanceTo(worldTbase.times(b.commanded())), 1e-12);
-        // The true robot at the returned joints reaches the world target.
-        assertEquals(0, worldTbase.times(c.truth().model().flange(w.q())).distanceTo(worldTarget), 1e-8);
+        // The corrected model at the returned joints reaches the world target.
+        assertEquals(0, worldTbase.times(real.flange(w.q())).distanceTo(worldTarget), 1e-8);
     }
 
     @Test
     void compensateWithTool_nominalToolGetsCalibratedTool_otherToolsKeptAsGiven() {
-        Campaign c = CampaignSimulator.simulate(NOMINAL, SimulationSettings.defaults().withSeed(15).withBaseFrame(true));
-        KinematicModel real = c.truth().model();
+        KinematicModel real = calibrated(15);
         Pose toolNominal = Pose.translation(0, 0, 0.1), toolReal = Pose.translation(0.002, -0.001, 0.103);
         TargetCompensator comp = new Compensator(NOMINAL, real, toolNominal, toolReal);
         double[] q0 = {0.2, 0.1, -0.1, 0.3, 0.5, -0.2};
@@ -121,8 +126,7 @@ class CompensatorTest {
     void batch_targetTurned180DegreesFromSeed_reachesTargetOrientation() {
         // The seed's nominal tool pose differs from the target by a half turn about the tool axis:
         // the rotation error's log is at 180°, where Log(R) cannot be read from the skew part.
-        Campaign c = CampaignSimulator.simulate(NOMINAL, SimulationSettings.defaults().withSeed(16).withBaseFrame(true));
-        KinematicModel real = c.truth().model();
+        KinematicModel real = calibrated(16);
         Pose tool = Pose.translation(0, 0, 0.1);
         Compensator.Batch batch = new Compensator(NOMINAL, real, tool, tool).batch();
         List<double[]> qs = new PoseSampler(NOMINAL).sample(20, new Random(6));

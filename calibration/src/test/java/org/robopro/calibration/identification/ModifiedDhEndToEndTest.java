@@ -11,9 +11,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.calibration.measurement.MeasurementWriter;
-import org.robopro.calibration.simulation.Campaign;
-import org.robopro.calibration.simulation.CampaignSimulator;
-import org.robopro.calibration.simulation.SimulationSettings;
+import org.robopro.calibration.WorldCampaigns;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.importers.DhImporter;
 import org.robopro.models.JointType;
@@ -41,22 +39,23 @@ class ModifiedDhEndToEndTest {
     void calibrate_sixDMeasurementsOfImportedArm_reachNoiseFloor() throws Exception {
         RobotDescription desc = DhImporter.parse("arm.mdh", MDH, DhImporter.Convention.MODIFIED, "mdh-arm");
         KinematicModel nominal = KinematicModel.build(desc);
-        SimulationSettings s = SimulationSettings.defaults().withSixD(true).withSeed(31).withValidatePoses(300);
-        Campaign c = CampaignSimulator.simulate(nominal, s);
+        // The true arm and its campaign come from the independent world simulator, which reads the
+        // imported arm's axes (not its DH table) and writes the measurement file.
+        WorldCampaigns.Sim c = WorldCampaigns.geometric(desc, 31, false, p -> p.withSixD(true).withPoses(200, 300));
+        Path train = dir.resolve("m.csv"), val = dir.resolve("v.csv");
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
-        Path train = dir.resolve("m.csv"), val = dir.resolve("v.csv");
-        MeasurementWriter.write(c.measurements(), types, train, false);
+        MeasurementWriter.write(c.train(), types, train, false);
         MeasurementWriter.write(c.validation(), types, val, false);
         MeasurementSet t = MeasurementReader.read(train, desc), v = MeasurementReader.read(val, desc);
         assertTrue(t.hasOrientation());
         CalibrationResult r = Calibrator.calibrate(nominal, t, v);
         CalibratorTest.report("mdh 6-D", c, r);
-        double floor = Math.sqrt(3) * s.sigmaM();
+        double floor = c.floorM();
         assertTrue(r.sixD());
         assertEquals(1.0, r.validateRmsM() / floor, 0.10, "validation RMS / noise floor");
-        assertTrue(CalibratorTest.modelErrorRms(c, r) < 0.5 * floor);
-        assertTrue(CalibratorTest.modelAngleRms(c, r) < 0.5 * Math.sqrt(3) * s.sigmaRotRad());
-        assertEquals(s.sigmaRotRad(), r.sigmaRotRad(), 0.15 * s.sigmaRotRad(), "estimated orientation noise");
+        assertTrue(WorldCampaigns.modelErrorRms(c, r) < 0.5 * floor);
+        assertTrue(WorldCampaigns.modelAngleRms(c, r) < 0.5 * Math.sqrt(3) * c.sigmaRotRad());
+        assertEquals(c.sigmaRotRad(), r.sigmaRotRad(), 0.15 * c.sigmaRotRad(), "estimated orientation noise");
     }
 }

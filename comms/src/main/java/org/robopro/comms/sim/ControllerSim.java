@@ -38,10 +38,12 @@ public final class ControllerSim implements AutoCloseable {
      * @param realtime   sleep for the motion time
      * @param faultRate  probability of a fault per reply/frame (tests and demos), 0 for none
      * @param truthFile  file to write what the real robot is to, once at start (the reveal of a demo), or null
+     * @param world      a scenario of the independent world simulator (org.robopro.world.Scenario) whose robot is the
+     *                   physical robot instead of the seeded errors and {@code effects}, or null
      */
     public record Config(String tcp, String serial, int baud, String robot, long seed, double errorMm, List<String> effects,
                          double noiseMm, Vec3 targetMm, double payloadKg, Path portFile, boolean realtime, double faultRate,
-                         Path truthFile) {
+                         Path truthFile, String world) {
         public Config {
             if ((tcp == null) == (serial == null)) throw new IllegalArgumentException("give exactly one of --tcp HOST:PORT and --serial DEVICE");
             if (!(errorMm >= 0 && noiseMm >= 0 && faultRate >= 0 && faultRate < 1))
@@ -49,28 +51,30 @@ public final class ControllerSim implements AutoCloseable {
             effects = List.copyOf(effects);
             if (targetMm == null) targetMm = new Vec3(0, 0, 100);
             if (!targetMm.isFinite() || !(payloadKg >= 0)) throw new IllegalArgumentException("--target must be finite and --payload-kg >= 0");
+            if (world != null && !effects.isEmpty()) throw new IllegalArgumentException("give either --world SCENARIO or --effect, not both");
         }
 
         /** Without a truth file. */
         public Config(String tcp, String serial, int baud, String robot, long seed, double errorMm, List<String> effects,
                       double noiseMm, Vec3 targetMm, double payloadKg, Path portFile, boolean realtime, double faultRate) {
-            this(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, null);
+            this(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, null, null);
         }
 
         /** Defaults for a TCP simulator of the IRB-2000 (seed 1, 0.5 mm error, 0.02 mm noise, no effects). */
         public static Config tcp(String hostPort) {
-            return new Config(hostPort, null, 115200, "irb2000", 1, 0.5, List.of(), 0.02, null, 0, null, false, 0, null);
+            return new Config(hostPort, null, 115200, "irb2000", 1, 0.5, List.of(), 0.02, null, 0, null, false, 0, null, null);
         }
 
-        public Config withSeed(long s) { return new Config(tcp, serial, baud, robot, s, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
-        public Config withRobot(String r) { return new Config(tcp, serial, baud, r, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
-        public Config withErrorMm(double e) { return new Config(tcp, serial, baud, robot, seed, e, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
-        public Config withNoiseMm(double n) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, n, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
-        public Config withEffects(List<String> e) { return new Config(tcp, serial, baud, robot, seed, errorMm, e, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile); }
-        public Config withPortFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, f, realtime, faultRate, truthFile); }
-        public Config withFaultRate(double r) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, r, truthFile); }
-        public Config withTargetMm(Vec3 t) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, t, payloadKg, portFile, realtime, faultRate, truthFile); }
-        public Config withTruthFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, f); }
+        public Config withSeed(long s) { return new Config(tcp, serial, baud, robot, s, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile, world); }
+        public Config withRobot(String r) { return new Config(tcp, serial, baud, r, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile, world); }
+        public Config withErrorMm(double e) { return new Config(tcp, serial, baud, robot, seed, e, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile, world); }
+        public Config withNoiseMm(double n) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, n, targetMm, payloadKg, portFile, realtime, faultRate, truthFile, world); }
+        public Config withEffects(List<String> e) { return new Config(tcp, serial, baud, robot, seed, errorMm, e, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile, world); }
+        public Config withPortFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, f, realtime, faultRate, truthFile, world); }
+        public Config withFaultRate(double r) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, r, truthFile, world); }
+        public Config withTargetMm(Vec3 t) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, t, payloadKg, portFile, realtime, faultRate, truthFile, world); }
+        public Config withWorld(String scenario) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, truthFile, scenario); }
+        public Config withTruthFile(Path f) { return new Config(tcp, serial, baud, robot, seed, errorMm, effects, noiseMm, targetMm, payloadKg, portFile, realtime, faultRate, f, world); }
 
         /** The stand-alone command line for these settings (for {@link ControllerSim#main}). */
         public List<String> toArgs() {
@@ -83,6 +87,7 @@ public final class ControllerSim implements AutoCloseable {
             if (portFile != null) { a.add("--port-file"); a.add(portFile.toString()); }
             if (realtime) a.add("--realtime");
             if (truthFile != null) { a.add("--truth-file"); a.add(truthFile.toString()); }
+            if (world != null) { a.add("--world"); a.add(world); }
             return a;
         }
     }
@@ -109,8 +114,10 @@ public final class ControllerSim implements AutoCloseable {
     }
 
     public static ControllerSim start(Config c) throws IOException {
-        TrueSimulatedRobot robot = TrueSimulatedRobot.create(RobotLibrary.load(c.robot()), c.seed(),
-                new TrueSimulatedRobot.Options(Units.mmToM(c.errorMm()), Units.mmToM(c.noiseMm()), c.targetMm().times(1e-3), c.effects()));
+        SimulatedRobot robot = c.world() != null
+                ? WorldSimulatedRobot.create(RobotLibrary.load(c.robot()), c.world(), c.seed(), Units.mmToM(c.noiseMm()), c.targetMm().times(1e-3))
+                : TrueSimulatedRobot.create(RobotLibrary.load(c.robot()), c.seed(),
+                        new TrueSimulatedRobot.Options(Units.mmToM(c.errorMm()), Units.mmToM(c.noiseMm()), c.targetMm().times(1e-3), c.effects()));
         SimulatedController controller = new SimulatedController(robot,
                 SimulatedController.Settings.defaults(c.seed()).withRealtime(c.realtime()).withPayload(c.payloadKg()));
         if (c.truthFile() != null) writeTruth(c, robot);
@@ -142,7 +149,7 @@ public final class ControllerSim implements AutoCloseable {
      * {@code error_mm} as asked, {@code noise_mm}, {@code payload_kg}, the warm-up when thermal.
      * Written once, before the simulator listens; an existing file is replaced (it is the simulator's own output).
      */
-    private static void writeTruth(Config c, TrueSimulatedRobot robot) throws IOException {
+    private static void writeTruth(Config c, SimulatedRobot robot) throws IOException {
         Map<String, Object> root = new LinkedHashMap<>();
         root.put("format", "robopro-controller-sim-truth 1");
         root.put("error_mm", c.errorMm());
@@ -150,7 +157,8 @@ public final class ControllerSim implements AutoCloseable {
         root.put("payload_kg", c.payloadKg());
         root.put("effect_specs", c.effects());
         if (robot.thermal()) root.put("warmup", Map.of("t0_c", SimEffects.T0_C, "rise_k", SimEffects.WARMUP_K, "tau_s", SimEffects.WARMUP_TAU_S));
-        root.putAll(robot.truthJson());
+        if (c.world() != null) root.put("world_scenario", c.world());
+        root.putAll(robot instanceof WorldSimulatedRobot w ? w.truthJson() : ((TrueSimulatedRobot) robot).truthJson());
         AtomicFiles.writeString(c.truthFile(), org.robopro.models.JsonMapper.create().writeValueAsString(root) + "\n", true);
     }
 
@@ -171,7 +179,7 @@ public final class ControllerSim implements AutoCloseable {
     /**
      * Stand-alone entry: {@code --tcp HOST:PORT | --serial DEVICE [--baud N] [--robot NAME] [--seed N]
      * [--error-mm X] [--effect NAME[:joint]]... [--noise-mm X] [--target X,Y,Z] [--payload-kg M] [--port-file FILE]
-     * [--realtime] [--fault-rate R] [--truth-file FILE] [--stop-on-stdin-eof]}.
+     * [--realtime] [--fault-rate R] [--truth-file FILE] [--world SCENARIO] [--stop-on-stdin-eof]}.
      * Runs until killed; with {@code --stop-on-stdin-eof} also until its standard input ends, so
      * that a simulator started by another JVM ({@code ControllerConnection.startSimulator}) dies
      * with it even when that JVM is killed outright.
@@ -184,6 +192,7 @@ public final class ControllerSim implements AutoCloseable {
         Vec3 target = null;
         List<String> effects = new ArrayList<>();
         Path portFile = null, truthFile = null;
+        String world = null;
         boolean realtime = false, stopOnEof = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
@@ -207,13 +216,14 @@ public final class ControllerSim implements AutoCloseable {
                         case "--payload-kg" -> payload = Double.parseDouble(v);
                         case "--fault-rate" -> faultRate = Double.parseDouble(v);
                         case "--truth-file" -> truthFile = Path.of(v);
+                        case "--world" -> world = v;
                         default -> throw new IllegalArgumentException("unknown option " + a);
                     }
                 }
             }
         }
         ControllerSim sim = start(new Config(tcp, serial, baud, robot, seed, error, effects, noise, target, payload, portFile, realtime,
-                faultRate, truthFile));
+                faultRate, truthFile, world));
         System.out.println("robopro controller-sim: " + sim.controller().robot().name() + " on " + sim.where());
         System.out.flush();
         if (stopOnEof) {

@@ -160,14 +160,14 @@ public final class DhImporter {
             double theta = number(fileName, row, c, "theta", false, i) * angleToRad;
             double scale = type == JointType.REVOLUTE ? angleToRad : lengthToM;
             double min = c.containsKey("min") && !c.get("min").text.isEmpty()
-                    ? number(fileName, row, c, "min", true, i) * scale : Double.NEGATIVE_INFINITY;
+                    ? exact(fileName, row, c, "min", i, scale) : Double.NEGATIVE_INFINITY;
             double max = c.containsKey("max") && !c.get("max").text.isEmpty()
-                    ? number(fileName, row, c, "max", true, i) * scale : Double.POSITIVE_INFINITY;
+                    ? exact(fileName, row, c, "max", i, scale) : Double.POSITIVE_INFINITY;
             if (min > max)
                 throw new InputException(fileName, row.line, c.get("min").column, "min", "minimum greater than maximum in joint " + (i + 1));
             double speed = Double.POSITIVE_INFINITY;
             if (c.containsKey("max_speed") && !c.get("max_speed").text.isEmpty()) {
-                speed = number(fileName, row, c, "max_speed", true, i) * scale;
+                speed = exact(fileName, row, c, "max_speed", i, scale);
                 if (!(speed > 0))
                     throw new InputException(fileName, row.line, c.get("max_speed").column, "max_speed",
                             "must be greater than zero in joint " + (i + 1));
@@ -182,9 +182,9 @@ public final class DhImporter {
                         .times(Pose.translation(0, 0, d));
                 axisFrame = t;
             }
-            joints.add(new JointDescription(name, type, axisFrame.position(), axisFrame.zAxis(), min, max, speed));
+            joints.add(CleanNumbers.joint(name, type, axisFrame.position(), axisFrame.zAxis(), min, max, speed));
         }
-        FrameDescription flange = new FrameDescription(t.position(), t.xAxis(), t.zAxis());
+        FrameDescription flange = CleanNumbers.frame(t.position(), t.xAxis(), t.zAxis());
         String robotName = directives.getOrDefault("name", sanitize(defaultName));
         if (!robotName.matches("[A-Za-z0-9_.\\-]+")) {
             int[] l = directiveLines.getOrDefault("name", new int[] {1, 1});
@@ -213,6 +213,12 @@ public final class DhImporter {
         if (!Double.isFinite(v))
             throw new InputException(file, row.line, cell.column, column, "number out of range (joint " + (i + 1) + ")");
         return v;
+    }
+
+    /** A required number converted to SI exactly from its decimal text ({@code factor}: the column's unit in SI). */
+    private static double exact(String file, Row row, Map<String, Cell> c, String column, int i, double factor) {
+        number(file, row, c, column, true, i);
+        return CleanNumbers.fromFile(c.get(column).text, factor);
     }
 
     private record Cell(String text, int column) { }

@@ -182,7 +182,7 @@ public final class UrdfImporter {
             t = t.times(next.origin);
             if (!next.type.equals("fixed")) {
                 JointType type = next.type.equals("prismatic") ? JointType.PRISMATIC : JointType.REVOLUTE;
-                out.add(new JointDescription(next.name, type, t.position(), t.rotate(next.axis), next.lower, next.upper,
+                out.add(CleanNumbers.joint(next.name, type, t.position(), t.rotate(next.axis), next.lower, next.upper,
                         next.velocity));
                 movable.add(next);
             }
@@ -200,7 +200,7 @@ public final class UrdfImporter {
             coupling.add(new CouplingTerm(k + 1, src + 1, u.multiplier));
         }
         String name = DhImporter.sanitize(robotName);
-        FrameDescription flange = new FrameDescription(t.position(), t.xAxis(), t.zAxis());
+        FrameDescription flange = CleanNumbers.frame(t.position(), t.xAxis(), t.zAxis());
         return new RobotDescription(name, robotName, out, flange, coupling, Optional.empty(), List.of(), List.of(),
                 "imported from " + file + " (URDF)", Map.of("imported-from", file, "importer", "urdf"));
     }
