@@ -205,18 +205,38 @@ public final class Diagnoser {
         if (hMax < Locator.WANTED_HARMONIC)
             notes.add(String.format(Locale.ROOT, "with %d poses the scan can tell apart harmonics up to %d cycles per turn of a "
                     + "joint (%d poses per cycle); gear stages up to %d cycles per turn need at least %d poses",
-                    rows.size(), hMax, Locator.POSES_PER_HARMONIC, Locator.WANTED_HARMONIC,
-                    Locator.WANTED_HARMONIC * Locator.POSES_PER_HARMONIC));
+                    rows.size(), hMax, 3, Locator.WANTED_HARMONIC, Locator.WANTED_HARMONIC * 3));
         Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
         Map<String, Candidate> implausible = new LinkedHashMap<>();
         List<Effect> remaining = new ArrayList<>(family);
         List<String> aliasNotes = new ArrayList<>();
+        Tester scanned = null;
+        Fit scannedFit = null;
         int aliasRounds = 0;
         int familySize = -1;
         for (int step = 0; step < 2 * o.maxEffects() + 2 && !remaining.isEmpty(); step++) {
             o.cancel().check();
             o.progress().update("testing effects", Math.min(0.9, 0.2 + 0.7 * step / (o.maxEffects() + 1.0)));
-            Tester t = w.tester(fit);
+            Tester t = scanned != null && scannedFit == fit ? scanned : w.tester(fit);
+            if (step > 0 && scannedFit != fit) {
+                // Locate again after each accepted effect: what is left may call for other families or harmonics.
+                List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource), o.alpha(), MAX_LOCATED);
+                for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
+                    Effect merged = e;
+                    if (e.kind() == Effect.Kind.PERIODIC)
+                        for (Effect sel : selected)
+                            if (sel.kind() == Effect.Kind.PERIODIC && sel.joint() == e.joint()) {
+                                java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+                                for (int h : sel.harmonics()) hs.add(h);
+                                for (int h : e.harmonics()) hs.add(h);
+                                merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray());
+                            }
+                    String label = merged.label();
+                    if (family.stream().noneMatch(f -> f.label().equals(label))) { family.add(merged); remaining.add(merged); }
+                }
+                scanned = t;
+                scannedFit = fit;
+            }
             List<Candidate> cs = new ArrayList<>();
             for (Effect e : remaining) {
                 Candidate c = t.test(e, w.conditions);
@@ -385,6 +405,17 @@ public final class Diagnoser {
         for (Locator.Found f : foundFinal) { rssLeft -= f.c.drss; dfLeft -= f.c.df1; }
         timer.mark("final locate");
         List<String> warnings = warnings(foundFinal, selected, fit, w, rssLeft, dfLeft, rows.size(), model.dof());
+        double valFinal = w.validateRms(fit);
+        if (Double.isFinite(valFinal)) {
+            // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
+            double predicted = fit.trainRms * Math.sqrt((double) fit.m / Math.max(1, fit.m - fit.nf)) * Math.sqrt(1 + (double) fit.nf / fit.m);
+            if (valFinal > 1.2 * predicted)
+                warnings.add(0, String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what the training fit "
+                        + "predicts (%.4f mm): the model does not carry over to new poses. Something the scan cannot resolve on "
+                        + "these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints at once, "
+                        + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
+                        + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
+        }
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
@@ -419,13 +450,16 @@ public final class Diagnoser {
     static Diagnosis.Located located(Locator.Found f, Tester t, String stage, Effect by, boolean left) {
         String words = String.format(Locale.ROOT, "%s: %.4f mm RMS at the measured point, %.0f %% of the %s sum of squares "
                 + "(F = %.1f on %d degrees of freedom, p %s below the corrected threshold %.2g)", capital(f.probe.shape),
-                f.sizeM * 1e3, 100 * f.c.rssReduction, stage.equals("geometric") ? "geometric fit's unexplained" : "remaining",
+                f.sizeM * 1e3, 100 * share(f, t), stage.equals("geometric") ? "geometric fit's unexplained" : "remaining",
                 f.c.f, f.c.df1, Words.p(f.c.p), f.c.threshold);
         if (by != null) words += "; explained by " + by.label() + ".";
         else if (left) words += "; no named effect explains it.";
-        return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, f.c.rssReduction, f.c.f, f.c.df1, f.c.p, f.c.threshold,
+        return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, share(f, t), f.c.f, f.c.df1, f.c.p, f.c.threshold,
                 stage, by == null ? null : by.label(), words, Locator.plot(t, f));
     }
+
+    /** Share of the scanned fit's unexplained sum of squares a structure removes. */
+    private static double share(Locator.Found f, Tester t) { return t.rss0 > 0 ? Math.min(1, f.c.drss / t.rss0) : 0; }
 
     private static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
 

@@ -27,7 +27,10 @@ import org.robopro.models.Vec3;
  * leave-one-pose-out error, and a backward step that drops a structure the others made redundant.
  */
 final class Locator {
-    /** Fewest poses per harmonic: harmonics above n/5 of a joint cannot be told apart from noise. */
+    /**
+     * Poses per harmonic: up to n/5 harmonics are scanned, and at least 40 (gear stages) while
+     * there are 3 poses per cycle; above that a joint's harmonics cannot be told apart.
+     */
     static final int POSES_PER_HARMONIC = 5;
     /** Harmonics scanned at most (a gear stage up to 40 cycles per turn and its neighbours). */
     static final int MAX_HARMONIC = 60;
@@ -56,7 +59,9 @@ final class Locator {
     }
 
     /** The harmonics of each joint a campaign of {@code poses} poses can resolve. */
-    static int harmonicsFor(int poses) { return Math.max(1, Math.min(MAX_HARMONIC, poses / POSES_PER_HARMONIC)); }
+    static int harmonicsFor(int poses) {
+        return Math.max(1, Math.min(MAX_HARMONIC, Math.max(poses / POSES_PER_HARMONIC, Math.min(WANTED_HARMONIC, poses / 3))));
+    }
 
     private Locator() { }
 
