@@ -33,6 +33,19 @@ public final class RoboproCommand implements Callable<Integer> {
     public static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new RoboproCommand());
         cl.setExecutionExceptionHandler((ex, cmd, parsed) -> Failures.report(ex, cmd.getErr()));
+        // Every number an option takes must be finite: NaN or an overflow (1e400) is refused by name.
+        CommandLine.ITypeConverter<Double> finite = v -> {
+            double d;
+            try {
+                d = Double.parseDouble(v.strip());
+            } catch (NumberFormatException e) {
+                throw new CommandLine.TypeConversionException("'" + v + "' is not a number");
+            }
+            if (!Double.isFinite(d)) throw new CommandLine.TypeConversionException("'" + v + "' is not a finite number");
+            return d;
+        };
+        cl.registerConverter(Double.class, finite);
+        cl.registerConverter(double.class, finite);
         return cl;
     }
 

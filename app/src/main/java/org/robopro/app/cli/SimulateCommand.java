@@ -78,7 +78,10 @@ public final class SimulateCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (poses < 1) throw new IllegalArgumentException("--poses must be at least 1");
-        if (sigmaMm < 0 || errorMm < 0) throw new IllegalArgumentException("--sigma and --error-mm must not be negative");
+        if (!(sigmaMm >= 0 && sigmaMm <= 100)) throw new IllegalArgumentException("--sigma must be in 0 .. 100 mm, got " + sigmaMm);
+        if (!(errorMm >= 0 && errorMm <= 1000))
+            throw new IllegalArgumentException("--error-mm must be in 0 .. 1000 mm (a robot more than a metre off its model is not "
+                    + "a calibration case), got " + errorMm);
         RobotDescription desc = robot.description();
         KinematicModel nominal = robot.model();
         double[] t = CliSupport.numbers("--target", target, 3);

@@ -62,6 +62,12 @@ public final class Calibrator {
                           List<EffectBlock> effects, Cancellation cancel, Progress progress, Pose knownInstrument,
                           boolean fixInstrument, boolean fixTool) {
         public Options {
+            // Infinity is allowed: "never flag"; NaN would silently turn rejection off.
+            if (!(outlierK > 0))
+                throw new IllegalArgumentException("the outlier threshold must be a positive number of robust sigmas, got " + outlierK);
+            if (!(tolerance > 0 && tolerance < 1))
+                throw new IllegalArgumentException("the identifiability tolerance must be in (0, 1), got " + tolerance);
+            if (maxIterations < 1) throw new IllegalArgumentException("the iteration limit must be at least 1, got " + maxIterations);
             if (fixInstrument && knownInstrument == null) throw new IllegalArgumentException("a fixed instrument pose needs its value");
         }
 
@@ -496,6 +502,7 @@ public final class Calibrator {
             double[] q = new double[js.size()];
             for (int k = 0; k < q.length; k++) {
                 double lo = js.get(k).min(), hi = js.get(k).max();
+                if (lo == hi && Double.isFinite(lo)) { q[k] = lo; continue; } // a locked joint
                 if (!(hi > lo) || !Double.isFinite(lo) || !Double.isFinite(hi) || hi - lo > 2 * Math.PI) {
                     double mid = Double.isFinite(lo + hi) ? 0.5 * (lo + hi) : 0;
                     lo = mid - Math.PI; hi = mid + Math.PI;

@@ -53,6 +53,7 @@ public final class PoseSampler {
         for (int i = 0; i < q.length; i++) {
             JointDescription j = js.get(i);
             double lo = j.min(), hi = j.max();
+            if (lo == hi && Double.isFinite(lo)) { q[i] = lo; continue; } // a locked joint (a URDF mimic joint's own value)
             if (!(hi > lo) || !Double.isFinite(lo) || !Double.isFinite(hi)) { lo = -Math.PI; hi = Math.PI; }
             double mid = 0.5 * (lo + hi), half = 0.45 * (hi - lo);
             q[i] = mid + half * (2 * rng.nextDouble() - 1);

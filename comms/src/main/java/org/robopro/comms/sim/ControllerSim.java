@@ -46,8 +46,8 @@ public final class ControllerSim implements AutoCloseable {
                          Path truthFile, String world) {
         public Config {
             if ((tcp == null) == (serial == null)) throw new IllegalArgumentException("give exactly one of --tcp HOST:PORT and --serial DEVICE");
-            if (!(errorMm >= 0 && noiseMm >= 0 && faultRate >= 0 && faultRate < 1))
-                throw new IllegalArgumentException("--error-mm and --noise-mm must be >= 0, --fault-rate in [0, 1)");
+            if (!(errorMm >= 0 && errorMm <= 1000 && noiseMm >= 0 && noiseMm <= 100 && faultRate >= 0 && faultRate < 1))
+                throw new IllegalArgumentException("--error-mm must be in 0 .. 1000, --noise-mm in 0 .. 100 (mm), --fault-rate in [0, 1)");
             effects = List.copyOf(effects);
             if (targetMm == null) targetMm = new Vec3(0, 0, 100);
             if (!targetMm.isFinite() || !(payloadKg >= 0)) throw new IllegalArgumentException("--target must be finite and --payload-kg >= 0");

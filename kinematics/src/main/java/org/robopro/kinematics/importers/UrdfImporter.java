@@ -36,8 +36,10 @@ import org.xml.sax.helpers.DefaultHandler;
  * joints. Fixed joints are folded into the neighbouring frames; the chain is followed from the
  * root link to the last movable joint and on through fixed joints to the flange (a child link
  * named {@code tool0} or {@code flange} is preferred where fixed branches split). Joint axes and
- * points are the joint frames at q = 0 seen from the root link. Mimic joints become coupling terms
- * (theta_k = multiplier * q_j; a non-zero offset is refused). URDF units are SI already.
+ * points are the joint frames at q = 0 seen from the root link. A mimic joint k of joint j
+ * (theta_k = multiplier * theta_j + offset in URDF) stays a joint of the model whose own
+ * controller value is held at 0 (limits 0..0), coupled as theta_k = q_k + multiplier * q_j, with
+ * the offset folded into its frame at q = 0. URDF units are SI already.
  *
  * <p>Branching trees with movable joints on more than one branch, floating and planar joints are
  * refused with an {@link InputException} naming file, line and column. DOCTYPEs are refused
@@ -119,7 +121,7 @@ public final class UrdfImporter {
     // ------------------------------------------------------------------ URDF
 
     private record UJoint(El el, String name, String type, String parent, String child, Pose origin, Vec3 axis,
-                          double lower, double upper, double velocity, String mimic, double multiplier) { }
+                          double lower, double upper, double velocity, String mimic, double multiplier, double offset) { }
 
     public static RobotDescription parse(String file, String text) {
         El robot = parseXml(file, text);
@@ -182,9 +184,15 @@ public final class UrdfImporter {
             t = t.times(next.origin);
             if (!next.type.equals("fixed")) {
                 JointType type = next.type.equals("prismatic") ? JointType.PRISMATIC : JointType.REVOLUTE;
-                out.add(CleanNumbers.joint(next.name, type, t.position(), t.rotate(next.axis), next.lower, next.upper,
-                        next.velocity));
+                // A mimic joint has no controller value of its own: its q is held at 0 (limits 0..0) and the
+                // coupling gives theta = q + multiplier * q_source; the offset is its angle (or travel) at q = 0.
+                boolean mimic = next.mimic != null;
+                out.add(CleanNumbers.joint(next.name, type, t.position(), t.rotate(next.axis), mimic ? 0 : next.lower,
+                        mimic ? 0 : next.upper, next.velocity));
                 movable.add(next);
+                if (mimic && next.offset != 0)
+                    t = t.times(type == JointType.PRISMATIC ? Pose.translation(next.axis.times(next.offset))
+                            : Pose.rotAxis(next.axis, next.offset));
             }
             link = next.child;
         }
@@ -197,6 +205,8 @@ public final class UrdfImporter {
             int src = -1;
             for (int s = 0; s < movable.size(); s++) if (movable.get(s).name.equals(u.mimic)) src = s;
             if (src < 0) throw err(file, u.el, "mimic.joint", "mimics '" + u.mimic + "', which is not a movable joint of the chain");
+            if (src == k) throw err(file, u.el, "mimic.joint", "joint '" + u.name + "' mimics itself");
+            coupling.add(new CouplingTerm(k + 1, k + 1, 1));
             coupling.add(new CouplingTerm(k + 1, src + 1, u.multiplier));
         }
         String name = DhImporter.sanitize(robotName);
@@ -259,15 +269,16 @@ public final class UrdfImporter {
             if (velocity == 0) velocity = Double.POSITIVE_INFINITY; // 0 is common in generated URDFs: unknown
         }
         String mimic = null;
-        double multiplier = 1;
+        double multiplier = 1, offset = 0;
         El m = single(file, j, "mimic", false, name);
         if (m != null && !type.equals("fixed")) {
             mimic = attr(file, m, "joint");
             multiplier = scalar(file, m, "multiplier", name, 1);
-            if (scalar(file, m, "offset", name, 0) != 0)
-                throw err(file, m, "mimic.offset", "joint '" + name + "': mimic offsets are not supported");
+            offset = scalar(file, m, "offset", name, 0);
+            if (!Double.isFinite(multiplier) || !Double.isFinite(offset))
+                throw err(file, m, "mimic", "joint '" + name + "': mimic multiplier and offset must be finite");
         }
-        return new UJoint(j, name, type, parent, child, origin, axis, lower, upper, velocity, mimic, multiplier);
+        return new UJoint(j, name, type, parent, child, origin, axis, lower, upper, velocity, mimic, multiplier, offset);
     }
 
     private static String linkRef(String file, El j, String tag, Map<String, El> links, String joint) {
