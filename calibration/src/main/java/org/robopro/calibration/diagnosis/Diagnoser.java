@@ -141,8 +141,22 @@ public final class Diagnoser {
         double med = c % 2 == 1 ? sorted[c / 2] : 0.5 * (sorted[c / 2 - 1] + sorted[c / 2]);
         double sigma = med / 1.5381722;
         List<String> out = new ArrayList<>();
-        for (int i = 0; i < train.size(); i++) if (norms[i] > 5 * sigma) out.add(train.rows().get(i).poseId());
+        for (int i = 0; i < train.size(); i++)
+            if (norms[i] > 5 * sigma && !unknownBacklashSide(d, train.rows().get(i))) out.add(train.rows().get(i).poseId());
         return out;
+    }
+
+    /**
+     * Whether a pose's direction is unknown (0: the first pose of an inferred measuring order) on a
+     * joint with backlash: its lost motion may sit on either side, so its residual is no sign of a
+     * bad measurement.
+     */
+    static boolean unknownBacklashSide(Diagnosis d, Measurement m) {
+        int[] dir = m.directions();
+        if (dir == null) return false;
+        for (Diagnosis.Finding f : d.effects())
+            if (f.effect().kind() == Effect.Kind.BACKLASH && dir[f.effect().joint()] == 0) return true;
+        return false;
     }
 
     /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
