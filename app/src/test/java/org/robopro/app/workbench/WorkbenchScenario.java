@@ -277,6 +277,11 @@ public final class WorkbenchScenario {
                 "--measurements", sim.resolve("measurements.csv").toString(), "--holdout", "0.2", "--out", cli.toString(), "--force");
         r.setProperty("calSummarySameAsCli", String.valueOf(Files.readString(cli.resolve("summary.json"))
                 .equals(wb.lastCalibration().orElseThrow().summaryJson())));
+        // The figures the panel shows are the CLI's: training and validation RMS as summary.json has them.
+        var cliSummary = new com.fasterxml.jackson.databind.ObjectMapper().readTree(cli.resolve("summary.json").toFile());
+        r.setProperty("calCliFigures", String.format(Locale.ROOT, "Training RMS %.4f mm → %.4f mm|Validation RMS %.4f mm → %.4f mm",
+                cliSummary.get("nominal_train_rms_mm").asDouble(), cliSummary.get("train_rms_mm").asDouble(),
+                cliSummary.get("nominal_validate_rms_mm").asDouble(), cliSummary.get("validate_rms_mm").asDouble()));
         win.screenshot(out.resolve("07-calibration.png"));
         clipped(frame, r, "clippedCalibration");
         Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");

@@ -195,6 +195,8 @@ class WorkbenchScenarioTest {
         assertTrue(after < 0.1, "calibration reaches the noise floor: " + after);
         assertTrue(Double.parseDouble(r.getProperty("calValidateRmsMm")) < 0.1, r.getProperty("calValidateRmsMm"));
         assertTrue(r.getProperty("calRms").contains("Training RMS ") && r.getProperty("calRms").contains("Validation RMS "), r.getProperty("calRms"));
+        for (String fig : r.getProperty("calCliFigures").split("\\|"))
+            assertTrue(r.getProperty("calRms").contains(fig), "the panel shows robopro calibrate's figure '" + fig + "': " + r.getProperty("calRms"));
         assertTrue(r.getProperty("calEffects").contains("correction"), r.getProperty("calEffects"));
         assertEquals("true", r.getProperty("calApplied"));
         assertTrue(r.getProperty("calReference").endsWith("irb2000-calibrated.robot.json"), r.getProperty("calReference"));

@@ -329,6 +329,7 @@ public final class CalibrationWorkflow {
         warnings.addAll(CalibrationReport.warnings(r, c.train(), c.validate()));
         List<Trust.Concern> concerns = Trust.assess(r, c.train());
         for (Trust.Concern k : concerns) warnings.add(k.sentence());
+        OutlierHint.sentence(r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList(), c.train().rows()).ifPresent(warnings::add);
         Map<String, String> prov = new LinkedHashMap<>(robot.provenance());
         prov.put("calibrated-from", fileName(c.file()));
         prov.put("calibrated-on", created);

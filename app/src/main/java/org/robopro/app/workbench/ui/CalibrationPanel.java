@@ -231,7 +231,15 @@ public final class CalibrationPanel extends JPanel {
         progress.setValue(1000);
         progress.setString("done");
         rms.setText(rmsLines(r));
-        effects.setText(effectsReport(r));
+        // The calibration workflow's warnings (outliers and what they suggest, identifiability, validation), as the CLI prints them.
+        StringBuilder w = new StringBuilder();
+        wb.lastCalibration().filter(o -> o.result() == r).ifPresent(o -> {
+            for (String x : o.warnings()) w.append("Warning: ").append(x).append("\n");
+        });
+        if (w.length() > 0) w.append('\n');
+        effects.setLineWrap(w.length() > 0);
+        effects.setWrapStyleWord(true);
+        effects.setText(w + effectsReport(r));
         effects.setCaretPosition(0);
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
         all.addAll(r.validate());
