@@ -41,11 +41,14 @@ public final class Campaign {
      * @param payloadStepsKg payloads carried in turn, changed every {@link #POSES_PER_PAYLOAD} poses; empty: no payload column (0 kg)
      * @param order          measuring order
      * @param seed           the same seed gives the same campaign
+     * @param outliers       training poses whose reading is grossly wrong (target knocked, beam broken and re-locked):
+     *                       moved by 0.5–3 mm in a random direction
      */
     public record Plan(int poses, int validatePoses, double sigmaM, double sigmaRotRad, boolean sixD, boolean dirColumns,
-                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed) {
+                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers) {
         public Plan {
             if (poses < 1 || validatePoses < 0) throw new IllegalArgumentException("poses " + poses + ", validate " + validatePoses);
+            if (outliers < 0 || outliers > poses / 10) throw new IllegalArgumentException("outliers " + outliers + " of " + poses + " poses");
             if (!(sigmaM >= 0) || !(sigmaRotRad >= 0)) throw new IllegalArgumentException("noise must be >= 0");
             payloadStepsKg = payloadStepsKg.clone();
         }
@@ -54,17 +57,18 @@ public final class Campaign {
 
         /** 200 training and 100 validation poses, σ 0.02 mm, directions, time and temperature written, no payload, nearest order. */
         public static Plan defaults(long seed) {
-            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed);
+            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0);
         }
 
-        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed); }
-        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed); }
-        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed); }
-        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed); }
-        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed); }
-        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed); }
-        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed); }
-        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s); }
+        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers); }
+        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers); }
+        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers); }
+        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers); }
+        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers); }
+        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers); }
+        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers); }
+        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n); }
+        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers); }
     }
 
     /** Poses between payload changes. */
@@ -89,9 +93,10 @@ public final class Campaign {
      * @param point       measured position, instrument frame, m (with noise)
      * @param quaternion  measured orientation (w, x, y, z), or null
      * @param truePoint   the position without noise, m
+     * @param outlier     the reading is grossly wrong (an injected outlier)
      */
     public record Row(String id, double[] q, int[] dir, double timeS, double tempC, double payloadKg, double[] point,
-                      double[] quaternion, double[] truePoint, boolean validate) { }
+                      double[] quaternion, double[] truePoint, boolean validate, boolean outlier) { }
 
     /** A campaign: the measurement file's text, the rows, and the warm-up the temperatures followed. */
     public record Result(String text, List<Row> rows, Warmup warmup, Plan plan, String frame) {
@@ -113,6 +118,8 @@ public final class Campaign {
         java.util.Collections.shuffle(idx, rng);
         for (int i = 0; i < plan.validatePoses(); i++) validate[idx.get(i)] = true;
         Warmup warm = Warmup.draw(rng);
+        boolean[] outlier = new boolean[total];
+        for (int i = plan.validatePoses(), k = 0; k < plan.outliers(); i++, k++) outlier[idx.get(i)] = true;
 
         int n = nominal.dof();
         double[] prev = home(nominal);
@@ -130,6 +137,7 @@ public final class Campaign {
             Rigid pose = world.target(q, dir, temp, t, payload);
             double[] truth = pose.p();
             double[] p = Rigid.plus(truth, Arm.gauss(noise, plan.sigmaM()));
+            if (outlier[i]) p = Rigid.plus(p, Rigid.scale(Rigid.unit(Arm.gauss(rng, 1)), 0.5e-3 + 2.5e-3 * rng.nextDouble()));
             double[] quat = null;
             if (plan.sixD()) {
                 double[] rv = Arm.gauss(noise, plan.sigmaRotRad());
@@ -138,7 +146,7 @@ public final class Campaign {
                 quat = turn.times(new Rigid(pose.r(), new double[3])).quaternion();
             }
             double tempRead = temp + warm.sensorNoiseK() * noise.nextGaussian();
-            rows.add(new Row(Integer.toString(i + 1), q.clone(), dir.clone(), t, tempRead, payload, p, quat, truth, validate[i]));
+            rows.add(new Row(Integer.toString(i + 1), q.clone(), dir.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
             prev = q;
         }
         boolean base = isIdentity(world.instrumentFromBase());

@@ -181,6 +181,7 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("null irb2000, 50 poses", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withPoses(50, 50)));
         c.add(s("null irb2000, 6-D", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withSixD(true)));
         c.add(s("null irb2000, payload steps", "null", "irb2000", Expected.none(), (n, r) -> w -> w, payloads("irb2000")));
+        c.add(s("null irb2000, 5 gross outliers", "null", "irb2000", Expected.none(), (n, r) -> w -> w, p -> p.withOutliers(5)));
         c.add(s("null irb2400", "null", "irb2400", Expected.none(), (n, r) -> w -> w, same()));
         c.add(s("null puma560", "null", "puma560", Expected.none(), (n, r) -> w -> w, same()));
         // transmission error
@@ -234,6 +235,8 @@ public record Scenario(String name, String family, String robot, Expected expect
                 Expected.named(claim(LOST_MOTION, 1), claim(CROSS_COUPLING, 3, 2)),
                 (n, r) -> add(lostMotion(0, r), crossCoupling(2, 1, r)), p -> p.withDirColumns(false)));
         // sparse, noisy and 6-D campaigns with an effect
+        c.add(s("lost motion j1, 4 gross outliers", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 1)),
+                (n, r) -> add(lostMotion(0, r)), p -> p.withOutliers(4)));
         c.add(s("lost motion j2, 50 poses", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
                 (n, r) -> add(lostMotion(1, r)), p -> p.withPoses(50, 50)));
         c.add(s("transmission error j1, sigma 0.05 mm", "transmission-error", "irb2000", Expected.named(claim(TRANSMISSION_ERROR, 1)),

@@ -40,6 +40,7 @@ final class Truth {
             root.put("validate_poses", p.validatePoses());
             root.put("order", p.order().name().toLowerCase(java.util.Locale.ROOT));
             root.put("frame", campaign.frame());
+            root.put("outlier_poses", campaign.rows().stream().filter(Campaign.Row::outlier).map(Campaign.Row::id).toList());
             Campaign.Warmup wu = campaign.warmup();
             root.put("warmup", Map.of("ambient_c", wu.ambientC(), "rise_k", wu.riseK(), "tau_s", wu.tauS()));
         }

@@ -86,6 +86,19 @@ class CampaignTest {
     }
 
     @Test
+    void grossOutliersAreTrainingPosesMovedByHalfAMillimetreToThree() {
+        Campaign.Result c = Scenario.named("null irb2000, 5 gross outliers").trial(4).campaign();
+        List<Campaign.Row> out = c.rows().stream().filter(Campaign.Row::outlier).toList();
+        assertEquals(5, out.size());
+        for (Campaign.Row r : out) {
+            assertFalse(r.validate());
+            double d = Rigid.norm(Rigid.minus(r.point(), r.truePoint()));
+            assertTrue(d > 0.45e-3 && d < 3.1e-3, "moved by " + d);
+        }
+        assertTrue(Scenario.named("null irb2000, 5 gross outliers").trial(4).truthJson().contains("\"outlier_poses\""));
+    }
+
+    @Test
     void concealedEffectsChangeWhatIsMeasured() {
         // Same seed, same robot draws except the effect: the lost motion moves the measured points by its size at the reach.
         Campaign.Result with = Scenario.named("lost motion j1, directions recorded").trial(9).campaign();

@@ -57,11 +57,18 @@ public final class DiagnosisBenchmark {
      * @param located     what it located without naming
      * @param geoRatio    validation RMS of the geometric calibration over the floor
      * @param finalRatio  validation RMS after the diagnosis over the floor
+     * @param outliersInjected gross outliers in the campaign
+     * @param outliersFound    of those, reported as outliers
+     * @param cleanFlagged     clean poses reported as outliers
      */
     public record Run(Scenario scenario, long seed, Outcome outcome, List<String> named, List<String> located, double geoRatio,
-                      double finalRatio, double ms) {
-        /** The right answer for the scenario's kind, with the validation RMS brought to the bar where it applies. */
+                      double finalRatio, double ms, int outliersInjected, int outliersFound, int cleanFlagged) {
+        /**
+         * The right answer for the scenario's kind, with the validation RMS brought to the bar where
+         * it applies, every injected outlier reported and no clean pose reported as one.
+         */
         public boolean correct(double bar) {
+            if (outliersFound < outliersInjected || cleanFlagged > 0) return false;
             return switch (scenario.expected().verdict()) {
                 case NAMED -> outcome == Outcome.NAMED_RIGHT && finalRatio <= bar;
                 case NULL -> outcome == Outcome.CLEAN && finalRatio <= bar;
@@ -70,8 +77,9 @@ public final class DiagnosisBenchmark {
         }
 
         public String line() {
-            return String.format(Locale.ROOT, "%-62s seed %d: %-19s named %s located %s, val/floor %.3f -> %.3f, %.0f ms",
-                    scenario.name(), seed, outcome.words, named, located, geoRatio, finalRatio, ms);
+            return String.format(Locale.ROOT, "%-62s seed %d: %-19s named %s located %s, val/floor %.3f -> %.3f, outliers %d/%d "
+                            + "(+%d clean flagged), %.0f ms", scenario.name(), seed, outcome.words, named, located, geoRatio, finalRatio,
+                    outliersFound, outliersInjected, cleanFlagged, ms);
         }
     }
 
@@ -122,7 +130,12 @@ public final class DiagnosisBenchmark {
         Set<String> want = new LinkedHashSet<>();
         for (Expected.Claim c : s.expected().claims()) want.add(key(c.family(), c.joints()));
         Outcome o = score(s.expected().verdict(), want, claims, !located.isEmpty());
-        return new Run(s, seed, o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor, d.elapsedMs());
+        Set<String> injected = new LinkedHashSet<>();
+        for (var r : t.campaign().rows()) if (r.outlier()) injected.add(r.id());
+        int found = 0, clean = 0;
+        for (String id : d.outliers()) if (injected.contains(id)) found++; else clean++;
+        return new Run(s, seed, o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor, d.elapsedMs(),
+                injected.size(), found, clean);
     }
 
     static String key(Expected.Family f, List<Integer> joints) {
@@ -140,8 +153,8 @@ public final class DiagnosisBenchmark {
     public static String markdown(List<Run> runs) {
         StringBuilder sb = new StringBuilder();
         sb.append("| scenario | runs | named right | named wrong | located only | missed | false claim (null) | clean (null) "
-                + "| val RMS / floor before | after (median) | after (max) | ms (mean) |\n");
-        sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                + "| val RMS / floor before | after (median) | after (max) | outliers found | clean flagged | ms (mean) |\n");
+        sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         Map<String, List<Run>> byScenario = new java.util.LinkedHashMap<>();
         for (Run r : runs) byScenario.computeIfAbsent(r.scenario().name(), k -> new ArrayList<>()).add(r);
         for (var e : byScenario.entrySet()) sb.append(row(e.getKey(), e.getValue()));
@@ -152,7 +165,7 @@ public final class DiagnosisBenchmark {
                         .mapToDouble(Run::finalRatio).toArray())).append('\n');
         long correct = runs.stream().filter(r -> r.correct(BAR)).count();
         sb.append(String.format(Locale.ROOT, "%nRight answers (named right or clean with validation RMS ≤ %.2f × floor; outside: located "
-                + "and not named): %d of %d runs.%n", BAR, correct, runs.size()));
+                + "and not named; every injected outlier reported, no clean pose reported): %d of %d runs.%n", BAR, correct, runs.size()));
         return sb.toString();
     }
 
@@ -162,9 +175,11 @@ public final class DiagnosisBenchmark {
         for (Run r : rs) n.merge(r.outcome(), 1, Integer::sum);
         double[] after = rs.stream().mapToDouble(Run::finalRatio).sorted().toArray();
         double before = rs.stream().mapToDouble(Run::geoRatio).average().orElse(Double.NaN);
-        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.0f |%n", name, rs.size(),
+        int inj = rs.stream().mapToInt(Run::outliersInjected).sum(), found = rs.stream().mapToInt(Run::outliersFound).sum();
+        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %s | %d | %.0f |%n", name, rs.size(),
                 n.get(Outcome.NAMED_RIGHT), n.get(Outcome.NAMED_WRONG), n.get(Outcome.LOCATED_ONLY), n.get(Outcome.MISSED),
                 n.get(Outcome.FALSE_CLAIM), n.get(Outcome.CLEAN), before, after[after.length / 2], after[after.length - 1],
+                inj == 0 ? "-" : found + "/" + inj, rs.stream().mapToInt(Run::cleanFlagged).sum(),
                 rs.stream().mapToDouble(Run::ms).average().orElse(0));
     }
 

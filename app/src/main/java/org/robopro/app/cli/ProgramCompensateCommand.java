@@ -10,7 +10,7 @@ import org.robopro.models.RobotDescription;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.TextFiles;
-import org.robopro.programs.ProgramCompensation;
+import org.robopro.programs.compensation.ProgramCompensation;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.rapid.RapidWriter;

@@ -24,7 +24,7 @@ class DiagnosisBenchmarkTest {
     static final long SEED = 7;
 
     static final List<String> CI = List.of(
-            "null irb2000", "null irb2000, 50 poses", "null puma560",
+            "null irb2000", "null irb2000, 50 poses", "null irb2000, 5 gross outliers", "null puma560",
             "transmission error j1, k 1-3", "transmission error j1, cycloidal k up to 40",
             "lost motion j1, directions recorded", "lost motion j2, directions recorded", "lost motion j2, directions not recorded",
             "thermal growth per link",

@@ -49,7 +49,7 @@ class ProgramCommandTest {
         Files.writeString(mod, text);
         int line = (int) text.lines().takeWhile(l -> !l.contains("WaitDI diNever")).count() + 1;
         Path cell = dir.resolve("c.cell.json");
-        Files.writeString(cell, "{\"format\": \"robopro-cell 1\", \"name\": \"c\", \"robot\": {\"ref\": \"irb2000\"},\n"
+        Files.writeString(cell, "{\"format\": \"robopro-cell 1\", \"name\": \"c\", \"robot\": {\"ref\": \"irb2000\"}, \"objects\": [{\"name\": \"crate\", \"kind\": \"box\", \"pose\": {\"position\": [0, 1800, 300]}, \"size\": [200, 200, 200]}],\n"
                 + " \"signals\": [{\"name\": \"doClamp\", \"type\": \"DO\"},\n"
                 + "  {\"name\": \"diClamped\", \"type\": \"DI\", \"follows\": \"doClamp\", \"delay_s\": 0.25},\n"
                 + "  {\"name\": \"diNever\", \"type\": \"DI\"}]}");
@@ -58,6 +58,7 @@ class ProgramCommandTest {
         assertTrue(cli.out().contains("I/O time line"), cli.out());
         assertTrue(cli.out().matches("(?s).*diClamped +I= 1.*".replace("I", "")), cli.out());
         assertTrue(cli.out().contains("WARNING IO_WAIT") && cli.out().contains("Demo.mod:" + line + ":5"), cli.out());
+        assertTrue(cli.out().matches("(?s).*clearance main#3 MoveL pB +[0-9.]+ mm .*"), cli.out());
         Files.writeString(cell, Files.readString(cell).replace("\"DI\", \"follows", "\"DX\", \"follows"));
         CliHarness bad = new CliHarness();
         assertEquals(2, bad.run("program", "check", mod.toString(), "--robot", "irb2000", "--cell", cell.toString()));

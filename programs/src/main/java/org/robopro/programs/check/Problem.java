@@ -16,7 +16,7 @@ import org.robopro.programs.rapid.SourcePos;
 public record Problem(Severity severity, Kind kind, String step, String target, Optional<SourcePos> source, String message) {
     public enum Severity { ERROR, WARNING }
 
-    public enum Kind { UNREACHABLE, CONFIGURATION_MISMATCH, JOINT_LIMIT, CONFIGURATION_CHANGE, NEAR_SINGULARITY, BAD_CIRCLE, UNSUPPORTED, NOT_SIMULATED, IO_WAIT }
+    public enum Kind { UNREACHABLE, CONFIGURATION_MISMATCH, JOINT_LIMIT, CONFIGURATION_CHANGE, NEAR_SINGULARITY, BAD_CIRCLE, UNSUPPORTED, NOT_SIMULATED, IO_WAIT, COLLISION }
 
     @Override public String toString() {
         return severity + " " + kind + " at " + step + source.map(s -> " (" + s + ")").orElse("") + (target.isEmpty() ? "" : ", target " + target)
