@@ -22,6 +22,7 @@ import picocli.CommandLine.Command;
                 CalibrateCommand.class,
                 DiagnoseCommand.class,
                 CompensateCommand.class,
+                MeasurementsCommand.class,
                 ProgramCommand.class,
                 LinkCommand.class,
                 ControllerSimCommand.class,
