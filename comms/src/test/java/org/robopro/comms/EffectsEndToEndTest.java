@@ -16,6 +16,7 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Units;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
+import org.robopro.comms.connection.ControllerConnection;
 
 /**
  * Diagnosis through the controller link, end to end: the simulated controller as a process with {@code --effect backlash:2},

@@ -24,6 +24,7 @@ import org.robopro.models.RobotLibrary;
 import org.robopro.programs.rapid.RapidParser;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
+import org.robopro.comms.connection.ControllerConnection;
 
 /**
  * Calibration through the controller link, end to end: the simulated IRB-2000 in its own process on loopback TCP, a measurement

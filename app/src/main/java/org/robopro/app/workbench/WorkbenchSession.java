@@ -210,7 +210,7 @@ public final class WorkbenchSession implements AutoCloseable {
         var ext = extendedModel;
         var nominal = model.kinematics().kinematicModel();
         if (cal != null && nominal.isPresent()) {
-            var out = org.robopro.programs.ProgramCompensation.compensate(module, "main", nominal.get(),
+            var out = org.robopro.programs.compensation.ProgramCompensation.compensate(module, "main", nominal.get(),
                     compensator(nominal.get(), cal, ext, compensationConditions));
             module = out.module();
             double max = 0;

@@ -22,7 +22,7 @@ import org.robopro.models.Vec3;
 import org.robopro.programs.JointTarget;
 import org.robopro.programs.LoadData;
 import org.robopro.programs.Move;
-import org.robopro.programs.ProgramCompensation;
+import org.robopro.programs.compensation.ProgramCompensation;
 import org.robopro.programs.Quaternion;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.RapidPose;

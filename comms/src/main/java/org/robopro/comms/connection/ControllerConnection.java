@@ -1,4 +1,4 @@
-package org.robopro.comms;
+package org.robopro.comms.connection;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -7,6 +7,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import org.robopro.comms.CommandInvoker;
 import org.robopro.comms.client.ProtocolClient;
 import org.robopro.comms.client.SerialRequestChannel;
 import org.robopro.comms.client.TcpRequestChannel;

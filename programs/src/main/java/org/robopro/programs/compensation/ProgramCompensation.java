@@ -1,4 +1,4 @@
-package org.robopro.programs;
+package org.robopro.programs.compensation;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -9,6 +9,16 @@ import java.util.Optional;
 import org.robopro.calibration.compensation.TargetCompensator;
 import org.robopro.calibration.compensation.TargetCompensator.Status;
 import org.robopro.kinematics.IkSolution;
+import org.robopro.programs.Declaration;
+import org.robopro.programs.ModuleItem;
+import org.robopro.programs.Move;
+import org.robopro.programs.Procedure;
+import org.robopro.programs.Quaternion;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.Ref;
+import org.robopro.programs.RobTarget;
+import org.robopro.programs.Statement;
+import org.robopro.programs.Teach;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;

@@ -1,4 +1,4 @@
-package org.robopro.programs;
+package org.robopro.programs.compensation;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -10,6 +10,16 @@ import org.junit.jupiter.api.Test;
 import org.robopro.calibration.compensation.Compensator;
 import org.robopro.calibration.compensation.TargetCompensator.Status;
 import org.robopro.kinematics.InverseKinematics;
+import org.robopro.programs.LoadData;
+import org.robopro.programs.Move;
+import org.robopro.programs.Quaternion;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.RapidPose;
+import org.robopro.programs.Ref;
+import org.robopro.programs.RobTarget;
+import org.robopro.programs.Teach;
+import org.robopro.programs.ToolData;
+import org.robopro.programs.WObjData;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotLibrary;

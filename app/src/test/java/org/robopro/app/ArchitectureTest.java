@@ -1,0 +1,78 @@
+package org.robopro.app;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
+
+import com.tngtech.archunit.core.domain.JavaClass;
+import com.tngtech.archunit.core.domain.JavaClasses;
+import com.tngtech.archunit.core.importer.ClassFileImporter;
+import com.tngtech.archunit.core.importer.ImportOption;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The architecture of docs/architecture.md as rules over the main classes of every module on this
+ * module's class path (all but the benchmarks): no cycle between packages, modules depend one
+ * way, and the third-party toolkits stay in the one module that owns them.
+ */
+class ArchitectureTest {
+    private static JavaClasses classes;
+
+    @BeforeAll
+    static void importMainClasses() {
+        classes = new ClassFileImporter().withImportOption(ImportOption.Predefined.DO_NOT_INCLUDE_TESTS)
+                .withImportOption(ImportOption.Predefined.DO_NOT_INCLUDE_JARS).importPackages("org.robopro");
+    }
+
+    @Test
+    void importedEveryModule() {
+        // Guards the rules below against passing on an empty or partial import.
+        for (String p : new String[] {"models", "world", "kinematics", "calibration", "programs", "comms", "app"})
+            org.junit.jupiter.api.Assertions.assertTrue(
+                    classes.stream().anyMatch(c -> c.getPackageName().startsWith("org.robopro." + p)), "no classes of " + p);
+    }
+
+    @Test
+    void packages_haveNoCycles() {
+        slices().matching("org.robopro.(**)").should().beFreeOfCycles()
+                // Known and owned: the program model's AstItem/AstStatement wrap the syntax tree of the
+                // rapid package, which builds the model (programs <-> programs.rapid). It goes when the
+                // syntax tree becomes the program model itself (one program model); nothing else may.
+                .ignoreDependency(JavaClass.Predicates.resideInAPackage("org.robopro.programs")
+                                .and(JavaClass.Predicates.simpleNameStartingWith("Ast")),
+                        JavaClass.Predicates.resideInAPackage("org.robopro.programs.rapid"))
+                .check(classes);
+    }
+
+    @Test
+    void modules_dependOneWay() {
+        forbid("org.robopro.models..", "org.robopro.world..", "org.robopro.kinematics..", "org.robopro.calibration..",
+                "org.robopro.programs..", "org.robopro.comms..", "org.robopro.app..");
+        forbid("org.robopro.world..", "org.robopro.kinematics..", "org.robopro.calibration..", "org.robopro.programs..",
+                "org.robopro.comms..", "org.robopro.app..");
+        forbid("org.robopro.kinematics..", "org.robopro.world..", "org.robopro.calibration..", "org.robopro.programs..",
+                "org.robopro.comms..", "org.robopro.app..");
+        forbid("org.robopro.calibration..", "org.robopro.world..", "org.robopro.programs..", "org.robopro.comms..",
+                "org.robopro.app..");
+        forbid("org.robopro.programs..", "org.robopro.world..", "org.robopro.comms..", "org.robopro.app..");
+        // The simulated controller may stand on the world's truth; nothing that estimates may.
+        forbid("org.robopro.comms..", "org.robopro.app..");
+        noClasses().that().resideInAPackage("org.robopro.comms..").and().resideOutsideOfPackage("org.robopro.comms.sim..")
+                .should().dependOnClassesThat().resideInAPackage("org.robopro.world..").check(classes);
+    }
+
+    @Test
+    void toolkits_stayInTheirModule() {
+        // Only the application draws (jMonkeyEngine, Swing, AWT); only comms opens serial ports.
+        noClasses().that().resideOutsideOfPackage("org.robopro.app..")
+                .should().dependOnClassesThat().resideInAnyPackage("com.jme3..", "javax.swing..", "java.awt..")
+                .check(classes);
+        noClasses().that().resideOutsideOfPackage("org.robopro.comms..")
+                .should().dependOnClassesThat().resideInAnyPackage("com.fazecast..")
+                .check(classes);
+    }
+
+    private static void forbid(String module, String... below) {
+        noClasses().that().resideInAPackage(module).should().dependOnClassesThat().resideInAnyPackage(below).check(classes);
+    }
+}
