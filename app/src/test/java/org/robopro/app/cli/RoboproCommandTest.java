@@ -17,7 +17,7 @@ class RoboproCommandTest {
     void help_root_commandsListedInTheOrderAUserMeetsThem() {
         assertEquals(0, run("--help"));
         String text = cli.out();
-        List<String> expected = List.of("workbench", "demo", "model", "fk", "ik", "simulate", "calibrate", "diagnose", "compensate",
+        List<String> expected = List.of("workbench", "demo", "model", "fk", "ik", "simulate", "measurements", "calibrate", "diagnose", "compensate",
                 "program", "link", "controller-sim", "diagnose-benchmark", "help");
         List<String> listed = new ArrayList<>();
         boolean in = false;
@@ -39,7 +39,7 @@ class RoboproCommandTest {
     @Test
     void mixins_calibrateDiagnoseSimulate_shareRobotOutAndForceOptions() {
         CommandLine root = RoboproCommand.commandLine();
-        for (String name : List.of("simulate", "calibrate", "diagnose")) {
+        for (String name : List.of("simulate", "measurements", "calibrate", "diagnose")) {
             var spec = root.getSubcommands().get(name).getCommandSpec();
             assertTrue(spec.mixins().containsKey("robot") && spec.mixins().containsKey("out"), name + ": " + spec.mixins().keySet());
             assertTrue(spec.findOption("--robot").required() && spec.findOption("--out").required(), name);
