@@ -219,7 +219,27 @@ public final class LocatedJson {
         int nl = msg.indexOf('\n');
         if (nl > 0) msg = msg.substring(0, nl);
         return new InputException(file, l == null ? 0 : Math.max(0, l.getLineNr()),
-                l == null ? 0 : Math.max(0, l.getColumnNr()), null, "malformed JSON: " + msg, e);
+                l == null ? 0 : Math.max(0, l.getColumnNr()), null, "malformed JSON: " + plain(msg), e);
+    }
+
+    /** Jackson's parse message in plain words: no parser options to enable, no character codes. */
+    static String plain(String msg) {
+        String m = msg;
+        for (String cut : new String[] {": enable", "; enable", " to allow", " (for Object starting", " (for root starting"}) {
+            int i = m.indexOf(cut);
+            if (i > 0) m = m.substring(0, i);
+        }
+        m = m.replaceAll(" \\(code \\d+\\)", "")
+             .replaceAll("\\(CTRL-CHAR, code \\d+\\)", "(a control character)")
+             .replace("(JSON String, Number, Array, Object or token 'null', 'true' or 'false')", "(a JSON value)")
+             .replace("Non-standard token", "not a JSON value:")
+             .replace("Unrecognized token", "unrecognized word")
+             .replace("Unexpected character", "unexpected character")
+             .replace("Unexpected end-of-input", "the file ends too early")
+             .replace("expected double-quote to start field name", "a field name must be in double quotes");
+        if (m.contains("'NaN'") || m.contains("'Infinity'") || m.contains("'-Infinity'"))
+            m = m + " (JSON has no NaN or infinity; write a finite number or null)";
+        return m.strip();
     }
 
     private static Node read(JsonParser p, JsonToken t, String file, String key, String path) throws IOException {

@@ -25,6 +25,11 @@ public record RobotDescription(String name, String displayName, List<JointDescri
                                Optional<MassModel> massModel, List<MeshRef> meshes,
                                List<EffectDescription> effects, String source,
                                Map<String, String> provenance) {
+    /** Most joints a robot may have (serial arms have 4 to 7; with a track and positioner a dozen). */
+    public static final int MAX_JOINTS = 64;
+    /** Largest coordinate in a robot or cell file, m: a kilometre is beyond any cell. */
+    public static final double MAX_COORDINATE_M = 1000;
+
     public RobotDescription {
         joints = List.copyOf(joints);
         coupling = List.copyOf(coupling);

@@ -54,6 +54,8 @@ public final class RobotFile {
 
         LocatedJson.Node jointsNode = root.get("joints");
         if (jointsNode.items().isEmpty()) throw jointsNode.error("a robot needs at least one joint");
+        if (jointsNode.items().size() > RobotDescription.MAX_JOINTS)
+            throw jointsNode.error(jointsNode.items().size() + " joints; a robot may have at most " + RobotDescription.MAX_JOINTS);
         List<JointDescription> joints = new ArrayList<>();
         Map<String, Integer> index = new HashMap<>();
         for (LocatedJson.Node j : jointsNode.items()) {
@@ -132,7 +134,14 @@ public final class RobotFile {
     /** A point [x, y, z] in millimetres, returned in metres. */
     static Vec3 pointMm(LocatedJson.Node n) {
         List<LocatedJson.Node> c = n.items(3);
-        return new Vec3(FileNumbers.mmToM(c.get(0)), FileNumbers.mmToM(c.get(1)), FileNumbers.mmToM(c.get(2)));
+        double[] v = new double[3];
+        for (int k = 0; k < 3; k++) {
+            v[k] = FileNumbers.mmToM(c.get(k));
+            if (!(Math.abs(v[k]) <= RobotDescription.MAX_COORDINATE_M))
+                throw c.get(k).error("coordinate " + c.get(k).numberText() + " mm is beyond "
+                        + (long) (RobotDescription.MAX_COORDINATE_M * 1000) + " mm: not a dimension of a robot or its cell");
+        }
+        return new Vec3(v[0], v[1], v[2]);
     }
 
     /** A plain 3-vector (no unit conversion). */

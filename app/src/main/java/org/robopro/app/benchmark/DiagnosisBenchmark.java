@@ -127,6 +127,8 @@ public final class DiagnosisBenchmark {
             named.add(f.effect().label());
             claims.add(key(fam, f.effect().joints1()));
         }
+        // Structures the locate scan found that no named effect explains.
+        for (Diagnosis.Located l : d.located()) if (l.explainedBy() == null && !located.contains(l.shape())) located.add(l.shape());
         Set<String> want = new LinkedHashSet<>();
         for (Expected.Claim c : s.expected().claims()) want.add(key(c.family(), c.joints()));
         Outcome o = score(s.expected().verdict(), want, claims, !located.isEmpty());

@@ -85,6 +85,7 @@ public final class Failures {
         if (e instanceof NotDirectoryException) return e.getMessage() != null && e.getMessage().contains(" ")
                 ? e.getMessage().substring(e.getMessage().indexOf(' ') + 1) : "not a folder";
         if (e instanceof DirectoryNotEmptyException) return "folder is not empty";
+        if (e instanceof java.nio.charset.CharacterCodingException) return "not UTF-8 text";
         if (e instanceof FileAlreadyExistsException f)
             return f.getReason() != null ? f.getReason() : "exists; refusing to overwrite it (use --force to replace it)";
         if (e instanceof FileSystemException f && f.getReason() != null) return lower(f.getReason());

@@ -49,17 +49,31 @@ public final class ProgramCompensateCommand implements Callable<Integer> {
         RapidModule m = RapidParser.parse(TextFiles.readUtf8(file), file.toString());
         KinematicModel nominal = robot.model();
         RobotDescription realDesc = RobotLibrary.load(calibrated);
+        String nominalName = nominal.description().name();
+        // Which robot the model is of: its calibration, diagnosis or simulation provenance, else its name.
+        String of = realDesc.name();
+        for (String k : new String[] {"simulated-from", "diagnosed-nominal", "calibrated-nominal"})
+            of = realDesc.provenance().getOrDefault(k, of);
+        if (realDesc.joints().size() != nominal.dof() || !of.equalsIgnoreCase(nominalName))
+            throw new IllegalArgumentException("--calibrated " + calibrated + " is a model of " + of + " (" + realDesc.joints().size()
+                    + " joints), not of " + nominalName + "; give the calibrated robot file of " + nominalName + "; nothing written");
         // An extended model (robopro diagnose) brings its effects, evaluated under the given conditions.
         Compensator tc = Compensator.forRobotFile(nominal, realDesc, calibrated, Pose.IDENTITY, Pose.IDENTITY,
                 new PoseConditions(null, Double.NaN, tempC == null ? Double.NaN : tempC, payloadKg == null ? Double.NaN : payloadKg));
         ProgramCompensation.Outcome o = ProgramCompensation.compensate(m, proc, nominal, tc);
-        AtomicFiles.writeString(out.file(), RapidWriter.export(o.module()).text(), out.force());
-        boolean allOk = true;
+        int failed = 0;
         for (ProgramCompensation.Correction c : o.corrections()) {
             spec.commandLine().getOut().println(c);
-            allOk &= c.ok();
+            if (!c.ok()) failed++;
         }
+        if (failed > 0) {
+            // A program with some targets left uncompensated would look done: write nothing.
+            spec.commandLine().getErr().printf("robopro: %d of %d targets could not be compensated (listed above); nothing written%n",
+                    failed, o.corrections().size());
+            return 1;
+        }
+        AtomicFiles.writeString(out.file(), RapidWriter.export(o.module()).text(), out.force());
         spec.commandLine().getOut().printf("wrote %s (%d targets compensated)%n", out.file(), o.corrections().size());
-        return allOk ? 0 : 1;
+        return 0;
     }
 }

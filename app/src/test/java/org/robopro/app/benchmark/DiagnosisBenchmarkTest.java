@@ -35,12 +35,6 @@ class DiagnosisBenchmarkTest {
 
     /** Scenario -> what the diagnosis did on the CI seed when it was last checked. */
     static final Map<String, String> KNOWN_FAILURES = Map.ofEntries(
-            Map.entry("transmission error j1, cycloidal k up to 40",
-                    "names gear-periodic j1 (harmonics 1-3 only): validation stays 3.3x the floor"),
-            Map.entry("lost motion j2, directions recorded",
-                    "names backlash j2 but on the model angle only; the drive's lost motion also turns theta3 = q3 - q2 back: 6.5x floor"),
-            Map.entry("lost motion j2, directions not recorded", "names backlash j2 (inferred directions), 4.9x floor: same form as above"),
-            Map.entry("lost motion j2 + thermal growth per link", "both named, 4.7x floor: the lost motion's form as above"),
             Map.entry("outside: bump in the angle of j3", "named joint-compliance j3 and joint-scale j3: a wrong claim, 4.4x floor"),
             Map.entry("outside: measured point sags with reach", "named gear-periodic j2 and joint-compliance j2: a wrong claim, 1.37x floor"));
 

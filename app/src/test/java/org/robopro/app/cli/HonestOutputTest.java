@@ -59,4 +59,26 @@ class HonestOutputTest {
             else assertEquals(1, h.err().lines().count(), h.err());
         }
     }
+
+    @Test
+    void programCompensate_calibratedModelOfAnotherRobot_isRefusedAndWritesNothing() throws Exception {
+        Path mod = dir.resolve("P.mod"), out = dir.resolve("PC.mod");
+        Files.writeString(mod, """
+                MODULE P
+                  CONST robtarget p1 := [[1200,100,900],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+                  PROC main()
+                    MoveL p1, v100, fine, tool0;
+                  ENDPROC
+                ENDMODULE
+                """);
+        CliHarness h = new CliHarness(true);
+        int code = h.run("program", "compensate", mod.toString(), "--robot", "irb2000", "--calibrated", "puma560", "--out", out.toString());
+        assertEquals(2, code, h.out() + h.err());
+        assertFalse(h.out().contains("wrote"), h.out());
+        assertTrue(h.err().contains("puma560") && h.err().contains("nothing written"), h.err());
+        assertFalse(Files.exists(out));
+        assertEquals(0, h.run("program", "compensate", mod.toString(), "--robot", "irb2000", "--calibrated", "irb2000", "--out",
+                out.toString()), h.err());
+        assertTrue(h.out().contains("wrote") && Files.exists(out));
+    }
 }

@@ -104,6 +104,23 @@ class WorkbenchScenarioTest {
         return hit;
     }
 
+    /** The scenario's screenshots and the docs/images names they are published under. */
+    static final String[][] DOC_IMAGES = {{"01-cell.png", "workbench-cell.png"}, {"02-path.png", "workbench-program.png"},
+            {"03-layout.png", "workbench-layout.png"}, {"04-wizard.png", "workbench-wizard.png"},
+            {"06-controller.png", "workbench-controller.png"}, {"07-calibration.png", "workbench-calibration.png"},
+            {"08-diagnosis.png", "workbench-diagnosis.png"}};
+
+    /**
+     * With {@code -Drobopro.docImages=DIR} (e.g. {@code ../docs/images}) the screenshots, taken at
+     * 1280 x 720, replace the documentation's pictures.
+     */
+    static void copyToDocs(Path out) throws java.io.IOException {
+        String dir = System.getProperty("robopro.docImages");
+        if (dir == null || dir.isBlank()) return;
+        for (String[] m : DOC_IMAGES)
+            Files.copy(out.resolve(m[0]), Path.of(dir).resolve(m[1]), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+    }
+
     @Test
     void scenario_loadJogTeachCheckExport_resultsAndPicturesAsExpected() throws Exception {
         Path out = SHOTS.resolve("scenario").toAbsolutePath();
@@ -114,6 +131,7 @@ class WorkbenchScenarioTest {
         Properties r = new Properties();
         try (var in = Files.newBufferedReader(out.resolve("results.properties"))) { r.load(in); }
         assertEquals("done", r.getProperty("status"), "scenario failed; see " + out.resolve("scenario.log") + "\n" + log);
+        copyToDocs(out);
 
         assertEquals("5", r.getProperty("objects"), "the shipped irb2000-welding cell has five objects");
         assertNotEquals(r.getProperty("q0"), r.getProperty("qJointJog"));

@@ -78,6 +78,16 @@ public final class Diagnoser {
 
     /** The stepwise search's candidates and decisions, at debug level (off by default). */
     private static final Logger LOG = LoggerFactory.getLogger(Diagnoser.class);
+    /** Stage times at debug level. */
+    static final class Timer {
+        private long t = System.nanoTime();
+
+        void mark(String what) {
+            long n = System.nanoTime();
+            if (LOG.isDebugEnabled()) LOG.debug(String.format(Locale.ROOT, "%s %.0f ms", what, (n - t) / 1e6));
+            t = n;
+        }
+    }
 
     private Diagnoser() { }
 
@@ -131,8 +141,22 @@ public final class Diagnoser {
         double med = c % 2 == 1 ? sorted[c / 2] : 0.5 * (sorted[c / 2 - 1] + sorted[c / 2]);
         double sigma = med / 1.5381722;
         List<String> out = new ArrayList<>();
-        for (int i = 0; i < train.size(); i++) if (norms[i] > 5 * sigma) out.add(train.rows().get(i).poseId());
+        for (int i = 0; i < train.size(); i++)
+            if (norms[i] > 5 * sigma && !unknownBacklashSide(d, train.rows().get(i))) out.add(train.rows().get(i).poseId());
         return out;
+    }
+
+    /**
+     * Whether a pose's direction is unknown (0: the first pose of an inferred measuring order) on a
+     * joint with backlash: its lost motion may sit on either side, so its residual is no sign of a
+     * bad measurement.
+     */
+    static boolean unknownBacklashSide(Diagnosis d, Measurement m) {
+        int[] dir = m.directions();
+        if (dir == null) return false;
+        for (Diagnosis.Finding f : d.effects())
+            if (f.effect().kind() == Effect.Kind.BACKLASH && dir[f.effect().joint()] == 0) return true;
+        return false;
     }
 
     /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
@@ -183,14 +207,50 @@ public final class Diagnoser {
         List<Step> steps = new ArrayList<>();
         Fit fit = w.fit(selected, absorbedCols, w.geoFull, null);
         double geoTrain = fit.trainRms, geoVal = w.validateRms(fit);
+        // Locate: where does what the geometry leaves live? Structures found bring the families that can fit them.
+        Timer timer = new Timer();
+        timer.mark("geometric");
+        Tester geoTester = w.tester(fit);
+        List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
+        List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
+        family.addAll(fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime));
+        timer.mark("locate");
+        int hMax = Locator.harmonicsFor(rows.size());
+        if (hMax < Locator.WANTED_HARMONIC)
+            notes.add(String.format(Locale.ROOT, "with %d poses the scan can tell apart harmonics up to %d cycles per turn of a "
+                    + "joint (%d poses per cycle); gear stages up to %d cycles per turn need at least %d poses",
+                    rows.size(), hMax, 3, Locator.WANTED_HARMONIC, Locator.WANTED_HARMONIC * 3));
         Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
         Map<String, Candidate> implausible = new LinkedHashMap<>();
         List<Effect> remaining = new ArrayList<>(family);
+        List<String> aliasNotes = new ArrayList<>();
+        Tester scanned = null;
+        Fit scannedFit = null;
+        int aliasRounds = 0;
         int familySize = -1;
         for (int step = 0; step < 2 * o.maxEffects() + 2 && !remaining.isEmpty(); step++) {
             o.cancel().check();
             o.progress().update("testing effects", Math.min(0.9, 0.2 + 0.7 * step / (o.maxEffects() + 1.0)));
-            Tester t = w.tester(fit);
+            Tester t = scanned != null && scannedFit == fit ? scanned : w.tester(fit);
+            if (step > 0 && scannedFit != fit) {
+                // Locate again after each accepted effect: what is left may call for other families or harmonics.
+                List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource), o.alpha(), MAX_LOCATED);
+                for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
+                    Effect merged = e;
+                    if (e.kind() == Effect.Kind.PERIODIC)
+                        for (Effect sel : selected)
+                            if (sel.kind() == Effect.Kind.PERIODIC && sel.joint() == e.joint()) {
+                                java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+                                for (int h : sel.harmonics()) hs.add(h);
+                                for (int h : e.harmonics()) hs.add(h);
+                                merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray());
+                            }
+                    String label = merged.label();
+                    if (family.stream().noneMatch(f -> f.label().equals(label))) { family.add(merged); remaining.add(merged); }
+                }
+                scanned = t;
+                scannedFit = fit;
+            }
             List<Candidate> cs = new ArrayList<>();
             for (Effect e : remaining) {
                 Candidate c = t.test(e, w.conditions);
@@ -235,6 +295,50 @@ public final class Diagnoser {
                 }
             }
         }
+        timer.mark("stepwise");
+        // Held-out rule: a named effect must beat its aliases on the leave-one-pose-out error; when the
+        // smooth fallback or another family predicts better, the effect is replaced.
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            if (e.kind() == Effect.Kind.SMOOTH) continue;
+            Tester at = w.tester(fit);
+            double own = at.pressReplacing(k, null, null);
+            Effect best = null;
+            double bestPress = own;
+            for (Effect a : aliases(e, family, selected)) {
+                double pa = at.pressReplacing(k, a, w.conditions);
+                if (pa < bestPress * (1 - ALIAS_MARGIN)) { bestPress = pa; best = a; }
+            }
+            if (best == null) continue;
+            LOG.debug("alias: {} replaced by {} (PRESS {} -> {})", e.label(), best.label(), own, bestPress);
+            aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
+                    + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
+            selected.remove(k);
+            absorbedCols.remove(e);
+            Fit without = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+            Candidate bc = w.tester(without).test(best, w.conditions);
+            selected.add(best);
+            absorbedCols.put(best, bc.absorbedMask);
+            Step old = steps.remove(k);
+            fit = w.fit(selected, absorbedCols, without.full, bc);
+            bc.threshold = old.candidate.threshold;
+            steps.add(new Step(bc, fit.trainRms, w.validateRms(fit)));
+            k = -1; // re-check from the start with the new set
+            if (++aliasRounds > 4) break;
+        }
+        // With validation data, an effect whose addition did not lower the validation error is not claimed.
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
+            if (Double.isFinite(before) && Double.isFinite(after) && !(after < before) && selected.get(k).kind() != Effect.Kind.SMOOTH) {
+                Effect gone = selected.remove(k);
+                absorbedCols.remove(gone);
+                steps.remove(k);
+                aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
+                        + "so it is not claimed");
+                fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+            }
+        }
+        timer.mark("aliases");
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
 
@@ -294,6 +398,38 @@ public final class Diagnoser {
             implausibleFindings.add(new Diagnosis.Finding(c.effect, c.estimate, new double[c.effect.size()], Double.NaN,
                     Double.NaN, c.evidence(), null, Words.implausible(c.effect, c.estimate, c.evidence())));
         ExtendedModel ext = new ExtendedModel(fit.problem.modelOf(fit.full), terms);
+        notes.addAll(aliasNotes);
+
+        timer.mark("final fit");
+        // Locate what is left, and report every structure found (named or not).
+        Tester lastTester = plotTester != null ? plotTester : geoTester;
+        List<Locator.Found> foundFinal = selected.isEmpty() ? foundGeo
+                : Locator.scan(lastTester, Locator.probes(lastTester, dirSource), o.alpha(), MAX_LOCATED);
+        List<Diagnosis.Located> located = new ArrayList<>();
+        for (Locator.Found f : foundGeo) {
+            boolean left = foundFinal.stream().anyMatch(g -> g.probe.variable.equals(f.probe.variable) && g.probe.shape.equals(f.probe.shape));
+            Effect by = left ? null : explainer(f, selected);
+            located.add(located(f, geoTester, "geometric", by, left));
+        }
+        if (!selected.isEmpty())
+            for (Locator.Found f : foundFinal) located.add(located(f, lastTester, "final", null, true));
+        // The noise floor without every structure still located; above 1.2x it the report says so first.
+        double rssLeft = lastTester.rss0;
+        int dfLeft = lastTester.m - lastTester.rank;
+        for (Locator.Found f : foundFinal) { rssLeft -= f.c.drss; dfLeft -= f.c.df1; }
+        timer.mark("final locate");
+        List<String> warnings = warnings(foundFinal, selected, fit, w, rssLeft, dfLeft, rows.size(), model.dof());
+        double valFinal = w.validateRms(fit);
+        if (Double.isFinite(valFinal)) {
+            // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
+            double predicted = fit.trainRms * Math.sqrt((double) fit.m / Math.max(1, fit.m - fit.nf)) * Math.sqrt(1 + (double) fit.nf / fit.m);
+            if (valFinal > 1.2 * predicted)
+                warnings.add(0, String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what the training fit "
+                        + "predicts (%.4f mm): the model does not carry over to new poses. Something the scan cannot resolve on "
+                        + "these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints at once, "
+                        + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
+                        + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
+        }
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
@@ -304,7 +440,139 @@ public final class Diagnoser {
         return new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
-                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, List.of(), List.of());
+                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
+    }
+
+    /** The selected effect that explains a structure found after the geometric fit, or null. */
+    static Effect explainer(Locator.Found f, List<Effect> selected) {
+        for (Effect e : selected) {
+            Effect.Kind k = e.kind();
+            boolean thermal = k == Effect.Kind.THERMAL || k == Effect.Kind.THERMAL_LINK || k == Effect.Kind.DRIFT;
+            switch (f.probe.var) {
+                case ANGLE_PERIODIC, ANGLE_SMOOTH -> {
+                    if (e.target() == Effect.Target.DRIVE && e.joint() == f.probe.joint && k != Effect.Kind.BACKLASH) return e;
+                }
+                case DIRECTION -> { if (k == Effect.Kind.BACKLASH && e.joint() == f.probe.joint) return e; }
+                case TIME, TEMPERATURE -> { if (thermal) return e; }
+                case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE) return e; }
+                case REACH, HEIGHT -> { return e; }
+            }
+        }
+        return null;
+    }
+
+    static Diagnosis.Located located(Locator.Found f, Tester t, String stage, Effect by, boolean left) {
+        String words = String.format(Locale.ROOT, "%s: %.4f mm RMS at the measured point, %.0f %% of the %s sum of squares "
+                + "(F = %.1f on %d degrees of freedom, p %s below the corrected threshold %.2g)", capital(f.probe.shape),
+                f.sizeM * 1e3, 100 * share(f, t), stage.equals("geometric") ? "geometric fit's unexplained" : "remaining",
+                f.c.f, f.c.df1, Words.p(f.c.p), f.c.threshold);
+        if (by != null) words += "; explained by " + by.label() + ".";
+        else if (left) words += "; no named effect explains it.";
+        return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, share(f, t), f.c.f, f.c.df1, f.c.p, f.c.threshold,
+                stage, by == null ? null : by.label(), words, Locator.plot(t, f));
+    }
+
+    /** Share of the scanned fit's unexplained sum of squares a structure removes. */
+    private static double share(Locator.Found f, Tester t) { return t.rss0 > 0 ? Math.min(1, f.c.drss / t.rss0) : 0; }
+
+    private static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
+
+    /** What the report says first when the model leaves error above the noise: what, where, what to measure next. */
+    static List<String> warnings(List<Locator.Found> left, List<Effect> selected, Fit fit, Work w, double rssLeft, int dfLeft,
+                                 int poses, int dof) {
+        List<String> out = new ArrayList<>();
+        double sigmaW = Math.sqrt(Math.max(rssLeft, 0) / Math.max(1, dfLeft)); // residual units (1 = the fit's σ)
+        double floor = Math.sqrt(3) * sigmaW * w.sigmaPos;
+        double rms = fit.trainRms;
+        List<Locator.Found> unexplained = left;
+        if (rms > 1.2 * floor || !unexplained.isEmpty()) {
+            StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "The model still leaves %.4f mm RMS on the training poses "
+                    + "against a noise floor of about %.4f mm (%.2f x)", rms * 1e3, floor * 1e3, rms / floor));
+            if (unexplained.isEmpty()) sb.append(", and no structure could be located in what is left.");
+            else {
+                sb.append(". It lives in: ");
+                List<String> where = new ArrayList<>();
+                for (Locator.Found f : unexplained) where.add(String.format(Locale.ROOT, "%s (%.4f mm)", f.probe.shape, f.sizeM * 1e3));
+                sb.append(String.join("; ", where)).append('.');
+            }
+            out.add(sb.toString());
+            for (Locator.Found f : unexplained) out.add("To tell what it is: " + nextMeasurement(f, poses));
+        }
+        return out;
+    }
+
+    private static String nextMeasurement(Locator.Found f, int poses) {
+        return switch (f.probe.var) {
+            case ANGLE_PERIODIC -> String.format(Locale.ROOT, "measure joint %d over its whole range in small steps with the "
+                    + "other joints still (at least %d poses per cycle of the %d-cycle error); a periodic error that stays is in "
+                    + "the joint's transmission.", f.probe.joint + 1, Locator.POSES_PER_HARMONIC, f.probe.harmonic);
+            case ANGLE_SMOOTH -> String.format(Locale.ROOT, "sweep joint %d slowly through its range with the other joints still, "
+                    + "in both directions, and look for a place-bound error (a damaged gear stretch, a cable or hose pulling).",
+                    f.probe.joint + 1);
+            case DIRECTION -> String.format(Locale.ROOT, "approach each pose of joint %d from both directions and record "
+                    + "dir1..dirN.", f.probe.joint + 1);
+            case TIME, TEMPERATURE -> "record temp_c near the arm and near the instrument, and re-measure a fixed reference "
+                    + "point every few poses to separate the instrument's drift from the arm's growth.";
+            case PAYLOAD -> "measure with two or three payloads at the same poses to separate deflection from geometry.";
+            case REACH, HEIGHT -> "measure the same poses with the arm stretched and folded and at several heights; check the "
+                    + "instrument's scale and levelling, and sag of the arm or the measured point's holder.";
+        };
+    }
+
+    /** At most this many structures are located per scan. */
+    static final int MAX_LOCATED = 8;
+    /** An alias replaces a named effect when its leave-one-pose-out error is lower by this fraction. */
+    static final double ALIAS_MARGIN = 0.02;
+
+    /** Families the located structures call for: harmonics found on a joint, the smooth fallback, and the wider families. */
+    static List<Effect> fromLocated(List<Locator.Found> found, KinematicModel model, List<Measurement> rows, GravityTorques gravity,
+                                    double t0C, boolean hasTemp, boolean hasTime) {
+        List<Effect> out = new ArrayList<>();
+        int dof = model.dof();
+        for (int j = 0; j < dof; j++) {
+            java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+            boolean any = false;
+            for (Locator.Found f : found) {
+                if (f.probe.joint != j) continue;
+                if (f.probe.var == Locator.Var.ANGLE_PERIODIC) { hs.add(f.probe.harmonic); any = true; }
+                if (f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
+            }
+            if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
+                int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
+                out.add(Effect.periodic(j, h));
+                java.util.TreeSet<Integer> withLow = new java.util.TreeSet<>(hs);
+                for (int i = 1; i <= Effect.HARMONICS; i++) withLow.add(i);
+                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray()));
+            }
+            if (any) {
+                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+                if (hi > lo) out.add(Effect.smooth(j, lo, hi));
+            }
+            if (gravity != null) out.add(Effect.complianceRemassed(j, gravity));
+        }
+        if (hasTemp) {
+            out.add(Effect.thermalLinks(model, t0C));
+            out.add(Effect.driftWithTemperature(t0C));
+        }
+        if (hasTime) out.add(Effect.driftWithTime());
+        return out;
+    }
+
+    /** The candidates that could explain the same structure as {@code e}: other families on its drive, or other thermal forms. */
+    static List<Effect> aliases(Effect e, List<Effect> family, List<Effect> selected) {
+        List<Effect> out = new ArrayList<>();
+        for (Effect a : family) {
+            if (a == e || selected.contains(a)) continue;
+            boolean thermalE = e.kind() == Effect.Kind.THERMAL || e.kind() == Effect.Kind.THERMAL_LINK || e.kind() == Effect.Kind.DRIFT;
+            boolean thermalA = a.kind() == Effect.Kind.THERMAL || a.kind() == Effect.Kind.THERMAL_LINK || a.kind() == Effect.Kind.DRIFT;
+            if (thermalE && thermalA) out.add(a);
+            else if (!thermalE && !thermalA && e.joint() >= 0 && a.joint() == e.joint() && a.kind() != e.kind()) out.add(a);
+            else if (!thermalE && !thermalA && e.kind() == a.kind() && a.joint() == e.joint()
+                    && (e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.COMPLIANCE || e.kind() == Effect.Kind.COUPLING)
+                    && !a.label().equals(e.label())) out.add(a);
+        }
+        return out;
     }
 
     private static boolean allFinite(List<Measurement> rows, java.util.function.ToDoubleFunction<Measurement> f) {
@@ -697,6 +965,57 @@ public final class Diagnoser {
             return total;
         }
 
+        /**
+         * Leave-one-pose-out error (PRESS) of the linearised joint model with selected effect
+         * {@code k} taken out and {@code alias} (or nothing) put in its place: its free columns are
+         * dropped and its fitted contribution returned to the residual.
+         */
+        double pressReplacing(int k, Effect alias, List<PoseConditions> conds) {
+            int n = fit.nf;
+            int[] free = fit.problem.freeIndices();
+            int a = fit.problem.effectOffset(k), b = a + fit.problem.effects().get(k).parameterNames().size();
+            List<Integer> keep = new ArrayList<>();
+            double[] r = fit.r.clone();
+            for (int c = 0; c < n; c++) {
+                if (free[c] >= a && free[c] < b) { for (int i = 0; i < m; i++) r[i] += fit.jac[i * n + c] * fit.full[free[c]]; }
+                else keep.add(c);
+            }
+            if (alias == null) return pressOf(fit.jac, n, keep, null, 0, fit.r);
+            double[] s = signature(alias, conds);
+            return pressOf(fit.jac, n, keep, s, alias.size(), r);
+        }
+
+        /** PRESS of the linear model spanned by columns {@code cols} of jac plus {@code extra} (m x k), with residual r. */
+        double pressOf(double[] jac, int n, List<Integer> cols, double[] extra, int k, double[] r) {
+            int nc = cols.size() + k;
+            double[] all = new double[m * nc];
+            for (int i = 0; i < m; i++) {
+                for (int c = 0; c < cols.size(); c++) all[i * nc + c] = jac[i * n + cols.get(c)];
+                for (int c = 0; c < k; c++) all[i * nc + cols.size() + c] = extra[i * k + c];
+            }
+            List<Integer> idx = new ArrayList<>();
+            for (int c = 0; c < nc; c++) idx.add(c);
+            double[] ub = basis(all, m, nc, idx);
+            int rk = ub.length / m;
+            double[] e = projectOut(ub, rk, m, r);
+            int poses = m / rpp;
+            double total = 0;
+            double[] h = new double[rpp * rpp], bb = new double[rpp];
+            for (int i = 0; i < poses; i++) {
+                for (int a1 = 0; a1 < rpp; a1++)
+                    for (int b1 = 0; b1 < rpp; b1++) {
+                        double v = 0;
+                        int ra = (i * rpp + a1) * rk, rb = (i * rpp + b1) * rk;
+                        for (int t = 0; t < rk; t++) v += ub[ra + t] * ub[rb + t];
+                        h[a1 * rpp + b1] = (a1 == b1 ? 1 : 0) - v;
+                    }
+                for (int a1 = 0; a1 < rpp; a1++) bb[a1] = e[i * rpp + a1];
+                if (!solve(h, bb, rpp)) return Double.POSITIVE_INFINITY;
+                for (double v : bb) total += v * v;
+            }
+            return total;
+        }
+
         /** The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose conditions. */
         double[] signature(Effect e, List<PoseConditions> conds) {
             int k = e.size();
@@ -737,6 +1056,29 @@ public final class Diagnoser {
          * least-squares estimate (v = −R⁻¹Qᵀr), σ, BIC and PRESS.
          */
         Candidate testColumns(double[] s, int k, List<String> names, double[] extra, int nExtra) {
+            double[] proj = new double[m * k], n0 = new double[k], x = new double[m];
+            for (int col = 0; col < k; col++) {
+                double n = 0;
+                for (int i = 0; i < m; i++) { x[i] = s[i * k + col]; n += x[i] * x[i]; }
+                n0[col] = Math.sqrt(n);
+                if (n == 0) continue;
+                double[] px = project(x);
+                for (int i = 0; i < m; i++) proj[i * k + col] = px[i];
+            }
+            return testProjected(proj, n0, k, names, extra, nExtra);
+        }
+
+        /** {@link #testColumns} for columns already projected out of the model's span, with their norms before. */
+        Candidate testProjected(double[] sp, double[] n0s, int k, List<String> names, double[] extra, int nExtra) {
+            return testProjected(sp, n0s, k, names, extra, nExtra, 1);
+        }
+
+        // The residual and PRESS with the last extra columns seen (the locate scan tests many probes on the same ones).
+        private double[] cacheExtra, cacheRes;
+        private double cacheRss, cachePress = Double.NaN;
+
+        /** As above; the leave-one-out error is only computed when p is below {@code pGate} (else it stays infinite). */
+        Candidate testProjected(double[] sp, double[] n0s, int k, List<String> names, double[] extra, int nExtra, double pGate) {
             Candidate c = new Candidate();
             c.absorbedMask = new boolean[k];
             double[][] qs = new double[k][];
@@ -746,12 +1088,11 @@ public final class Diagnoser {
             double minKept = Double.POSITIVE_INFINITY, maxRatio = 0;
             for (int col = 0; col < k; col++) {
                 double[] x = new double[m];
-                double n0 = 0;
-                for (int i = 0; i < m; i++) { x[i] = s[i * k + col]; n0 += x[i] * x[i]; }
+                double n0 = n0s[col] * n0s[col];
+                for (int i = 0; i < m; i++) x[i] = sp[i * k + col];
                 double ratio = 0;
                 if (n0 > 0) {
-                    x = project(x);
-                    if (extra != null) x = projectOut(extra, nExtra, m, x);
+                    if (extra != null && nExtra > 0) x = projectOut(extra, nExtra, m, x);
                     for (int t = 0; t < q; t++) { // Gram–Schmidt against the kept columns, twice for stability
                         double d = 0;
                         for (int i = 0; i < m; i++) d += qs[t][i] * x[i];
@@ -785,10 +1126,23 @@ public final class Diagnoser {
             if (q == 0) return c;
             double[] qm = new double[m * q];
             double[] coef = new double[q];
+            double[] res = rPerp;
+            double rssBase = rss0;
+            if (extra != null && nExtra > 0) {
+                if (cacheExtra != extra) {
+                    cacheExtra = extra;
+                    cacheRes = projectOut(extra, nExtra, m, rPerp);
+                    cacheRss = 0;
+                    for (double v : cacheRes) cacheRss += v * v;
+                    cachePress = Double.NaN;
+                }
+                res = cacheRes;
+                rssBase = cacheRss;
+            }
             for (int t = 0; t < q; t++)
                 for (int i = 0; i < m; i++) {
                     qm[i * q + t] = qs[t][i];
-                    coef[t] += qs[t][i] * rPerp[i];
+                    coef[t] += qs[t][i] * res[i];
                 }
             double drss = 0;
             for (double v : coef) drss += v * v;
@@ -810,7 +1164,7 @@ public final class Diagnoser {
             }
             c.df1 = q;
             c.df2 = m - rank - nExtra - q;
-            double rss1 = Math.max(rss0 - drss, 1e-300);
+            double rss1 = Math.max(rssBase - drss, 1e-300);
             double s2 = rss1 / Math.max(1, c.df2);
             c.estimate = new double[k];
             c.sd = new double[k];
@@ -823,18 +1177,31 @@ public final class Diagnoser {
             c.f = (drss / q) / (rss1 / Math.max(1, c.df2));
             c.p = Stats.fUpperTail(c.f, q, c.df2);
             c.bic = m * Math.log(rss1 / m) + q * Math.log(m);
-            c.rssReduction = rss0 > 0 ? drss / rss0 : 0;
+            c.rssReduction = rssBase > 0 ? drss / rssBase : 0;
             c.drss = drss;
             c.basis = qm;
             c.coef = coef;
-            double[] e1 = rPerp.clone();
+            if (!(c.p < pGate)) { c.pressBefore = press0; c.pressAfter = Double.POSITIVE_INFINITY; return c; }
+            double[] e1 = res.clone();
             for (int i = 0; i < m; i++) {
                 double v = 0;
                 for (int t = 0; t < q; t++) v += qm[i * q + t] * coef[t];
                 e1[i] -= v;
             }
-            c.pressBefore = press0;
-            c.pressAfter = press(e1, qm, q);
+            if (extra != null && nExtra > 0) {
+                // PRESS with and without the candidate, both on top of the extra columns
+                double[] both = new double[m * (nExtra + q)];
+                for (int i = 0; i < m; i++) {
+                    System.arraycopy(extra, i * nExtra, both, i * (nExtra + q), nExtra);
+                    System.arraycopy(qm, i * q, both, i * (nExtra + q) + nExtra, q);
+                }
+                if (Double.isNaN(cachePress)) cachePress = press(res, extra, nExtra);
+                c.pressBefore = cachePress;
+                c.pressAfter = press(e1, both, nExtra + q);
+            } else {
+                c.pressBefore = press0;
+                c.pressAfter = press(e1, qm, q);
+            }
             return c;
         }
     }
@@ -933,7 +1300,8 @@ public final class Diagnoser {
             }
             case THERMAL_LINK -> {
                 boolean ok = true;
-                for (int i = 0; i < v.length; i++) if (!c.absorbedMask[i] && !overlaps(v[i], sd[i], 0, MAX_ALPHA)) ok = false;
+                for (int i = 0; i < v.length; i++)
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, MAX_ALPHA)) ok = false;
                 c.plausible = ok;
                 c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_ALPHA);
             }

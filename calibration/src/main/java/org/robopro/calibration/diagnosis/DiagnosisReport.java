@@ -35,11 +35,29 @@ public final class DiagnosisReport {
         root.put("measurements", ctx.measurements());
         root.put("validation", ctx.validation());
         root.put("created", ctx.created());
+        root.put("warnings", d.warnings());
         root.put("geometric", rms(d.geometricTrainRmsM(), d.geometricValidateRmsM()));
         List<Object> effects = new ArrayList<>();
         for (Diagnosis.Finding f : d.effects()) effects.add(finding(f, true));
         root.put("effects", effects);
         root.put("final", rms(d.finalTrainRmsM(), d.finalValidateRmsM()));
+        List<Object> loc = new ArrayList<>();
+        for (Diagnosis.Located l : d.located()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("variable", l.variable());
+            m.put("shape", l.shape());
+            m.put("size_mm", mm(l.sizeM()));
+            m.put("share_of_unexplained_ss", l.share());
+            m.put("f", l.f());
+            m.put("df1", l.df1());
+            m.put("p_value", l.pValue());
+            m.put("holm_threshold", l.threshold());
+            m.put("stage", l.stage());
+            m.put("explained_by", l.explainedBy());
+            m.put("words", l.words());
+            loc.add(m);
+        }
+        root.put("located", loc);
         root.put("outliers", d.outliers());
         List<Object> ni = new ArrayList<>();
         for (Diagnosis.NotIdentifiable n : d.notIdentifiable()) {
@@ -122,13 +140,18 @@ public final class DiagnosisReport {
          .append("body{font-family:sans-serif;max-width:780px;margin:1em auto;color:#222}")
          .append("table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}")
          .append("th{background:#eee}td.l,th.l{text-align:left}.finding{border-left:4px solid #2a7;padding-left:10px;margin:1.2em 0}")
-         .append(".impl{border-left:4px solid #c80;padding-left:10px}.muted{color:#666;font-size:12px}")
+         .append(".warn{border-left:4px solid #c22;padding-left:10px;background:#fff4f4}.impl{border-left:4px solid #c80;padding-left:10px}.muted{color:#666;font-size:12px}")
          .append("</style></head><body>\n");
         h.append("<h1>Diagnosis of ").append(Html.esc(d.robot())).append("</h1>\n<p>Measurements: <code>")
          .append(Html.esc(ctx.measurements())).append("</code>");
         if (ctx.validation() != null) h.append("; validation: <code>").append(Html.esc(ctx.validation())).append("</code>");
         h.append(". Created ").append(Html.esc(ctx.created())).append(".</p>\n");
 
+        if (!d.warnings().isEmpty()) {
+            h.append("<div class=\"warn\"><h2>Error left above the noise</h2>\n<ul>");
+            for (String w : d.warnings()) h.append("<li>").append(Html.esc(w)).append("</li>");
+            h.append("</ul></div>\n");
+        }
         h.append("<h2>Summary</h2>\n<p>");
         if (d.effects().isEmpty())
             h.append("No non-geometric effect was found: the geometric model explains these measurements down to the noise.");
@@ -171,6 +194,20 @@ public final class DiagnosisReport {
                 }
             }
             h.append("</div>\n");
+        }
+        if (!d.located().isEmpty()) {
+            h.append("<h2>Located structures</h2>\n<p class=\"muted\">Where the residuals have structure, tested against every "
+                    + "variable the data offer (joint angles periodic and smooth, directions, time, temperature, payload, reach, height), "
+                    + "whether or not a named effect explains it.</p>\n");
+            for (Diagnosis.Located l : d.located()) {
+                h.append("<div class=\"finding\"><p>").append(Html.esc(l.words())).append("</p>\n");
+                Diagnosis.Plot p = l.plot();
+                if (p != null && p.x().length > 0)
+                    h.append(Svg.plot("Evidence: " + l.shape(), p.xLabel(), p.yLabel(),
+                            List.of(new Svg.Series("residual along it", p.x(), p.y(), "#1f77b4", false),
+                                    new Svg.Series("located structure", p.curveX(), p.curveY(), "#d62728", false)), false));
+                h.append("</div>\n");
+            }
         }
         if (!d.implausible().isEmpty()) {
             h.append("<h2>Significant but implausible (not claimed)</h2>\n");

@@ -106,6 +106,7 @@ public final class Calibrator {
         boolean instrument = !train.inBaseFrame();
         List<EffectBlock> effects = o.effects();
         List<Measurement> rows = train.rows();
+        checkMemory(train, nominal, sixD, effects, validate == null ? 0 : validate.size());
         o.progress().update("start", 0);
 
         // 1. Starting instrument frame and tool. The registration trims poses far from the
@@ -246,6 +247,23 @@ public final class Calibrator {
         return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
                 data.conditionNumber(), data.observability(), outliers, trainErr, valErr, nf.result(), fit,
                 sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6, List.copyOf(correlations));
+    }
+
+    /**
+     * Refuses, before any work, a campaign whose dense Jacobians (three copies of poses x rows x
+     * parameters doubles: the fit, the identifiability analysis, the covariance) would not fit the
+     * heap, instead of running out of memory after minutes.
+     */
+    static void checkMemory(MeasurementSet train, KinematicModel nominal, boolean sixD, List<EffectBlock> effects, int validate) {
+        long params = 6L * nominal.dof() + 12;
+        for (EffectBlock e : effects) params += e.parameterNames().size();
+        long need = 3L * (train.size() + validate) * (sixD ? 6 : 3) * params * Double.BYTES;
+        long max = Runtime.getRuntime().maxMemory();
+        if (need > 0.7 * max)
+            throw new InputException(train.source(), 0, 0, null, String.format(Locale.ROOT,
+                    "%d poses need about %d MB for the fit, more than the %d MB of memory available; use fewer poses "
+                            + "(a few hundred to a few thousand suffice: the precision grows only with their square root) "
+                            + "or give Java more memory (-Xmx)", train.size() + validate, need >> 20, max >> 20));
     }
 
     static void checkData(KinematicModel model, MeasurementSet set) {

@@ -35,6 +35,12 @@ class InlineTruthDiagnosisTest {
      * validation pose of the same file (set column) when {@code every > 0}.
      */
     private MeasurementSet[] campaign(int n, int joint, double b, double sigma, int every, long seed) {
+        return campaign(n, joint, b, sigma, every, seed, q -> 0);
+    }
+
+    /** As above, plus an error of drive 1 (rad) written by {@code drive1} as a function of the controller values. */
+    private MeasurementSet[] campaign(int n, int joint, double b, double sigma, int every, long seed,
+                                      java.util.function.ToDoubleFunction<double[]> drive1) {
         Random rng = new Random(seed);
         List<double[]> qs = new PoseSampler(model).sample(n, rng);
         List<Measurement> train = new ArrayList<>(), val = new ArrayList<>();
@@ -45,6 +51,7 @@ class InlineTruthDiagnosisTest {
             if (prev != null && q[joint] != prev[joint]) lastDir = q[joint] > prev[joint] ? 1 : -1;
             double[] out = q.clone();
             out[joint] -= 0.5 * b * lastDir;                 // the drive's output lags its encoder (before the coupling)
+            out[0] += drive1.applyAsDouble(q);
             Vec3 p = model.flange(out).times(tool).position();
             p = new Vec3(p.x() + sigma * rng.nextGaussian(), p.y() + sigma * rng.nextGaussian(), p.z() + sigma * rng.nextGaussian());
             boolean v = every > 0 && i % every == every - 1;
@@ -99,5 +106,38 @@ class InlineTruthDiagnosisTest {
             Diagnosis d = Diagnoser.diagnose(robot, c[0], c[1]);
             assertTrue(d.effects().isEmpty(), "seed " + seed + ": " + d.effects());
         }
+    }
+
+    /**
+     * A two-stage reducer on joint 1: once per turn plus 17 cycles per turn (0.008°), outside the
+     * default harmonics 1-3. The scan must locate "17 cycles per turn of joint 1" and the
+     * diagnosis name a periodic error with that harmonic, down to the noise on validation.
+     */
+    @Test
+    void highHarmonicOnJoint1_locatedAndNamedWithItsHarmonic() {
+        double a1 = Math.toRadians(0.004), a17 = Math.toRadians(0.008), sigma = 2e-5;
+        MeasurementSet[] c = campaign(300, 0, 0, sigma, 4, 21, q -> a1 * Math.sin(q[0] + 0.3) + a17 * Math.sin(17 * q[0] + 1.1));
+        Diagnosis d = Diagnoser.diagnose(robot, c[0], c[1]);
+        assertTrue(d.located().stream().anyMatch(l -> l.shape().equals("17 cycles per turn of joint 1") && l.explainedBy() != null),
+                d.located().stream().map(Diagnosis.Located::words).toList().toString());
+        assertEquals(1, d.effects().size(), d.effects().toString());
+        Effect e = d.effects().get(0).effect();
+        assertEquals(Effect.Kind.PERIODIC, e.kind());
+        assertEquals(0, e.joint());
+        assertTrue(java.util.Arrays.stream(e.harmonics()).anyMatch(h -> h == 17), e.label());
+        double floor = Math.sqrt(3) * sigma;
+        assertTrue(d.finalValidateRmsM() < 1.15 * floor, "validation " + d.finalValidateRmsM() / floor + " x floor");
+        assertTrue(d.warnings().isEmpty(), d.warnings().toString());
+        String json = DiagnosisReport.json(d, new DiagnosisReport.Context("m.csv", null, "now"));
+        assertTrue(json.contains("\"located\"") && json.contains("17 cycles per turn of joint 1"), json);
+    }
+
+    @Test
+    void nullCampaign_locatesNothingAndWarnsOfNothing() {
+        MeasurementSet[] c = campaign(200, 0, 0, 2e-5, 4, 33);
+        Diagnosis d = Diagnoser.diagnose(robot, c[0], c[1]);
+        assertTrue(d.effects().isEmpty(), d.effects().toString());
+        assertTrue(d.located().isEmpty(), d.located().stream().map(Diagnosis.Located::words).toList().toString());
+        assertTrue(d.warnings().isEmpty(), d.warnings().toString());
     }
 }

@@ -35,6 +35,7 @@ public final class TcpRequestChannel implements RequestChannel {
     private final Duration quietTime;
     private final boolean checksums;
     private Boolean crcMode; // null until the connection's handshake
+    private boolean serverChecksums; // the controller accepted checksum mode once: it must on every connection
     private Socket socket;
     private InputStream in;
     private OutputStream out;
@@ -138,9 +139,12 @@ public final class TcpRequestChannel implements RequestChannel {
         String plain = LinkChecksum.unseal(reply, "");
         if (plain != null && plain.startsWith(OpenAbb.HELLO + " 1 ") && plain.endsWith(" " + LinkChecksum.MODE)) {
             crcMode = true;
-        } else if (reply.startsWith(OpenAbb.HELLO + " 0")) {
-            crcMode = false; // plain open_abb: no checksum mode
+            serverChecksums = true;
+        } else if (reply.equals(OpenAbb.HELLO + " 0") && !serverChecksums) {
+            crcMode = false; // plain open_abb (SERVER.mod answers exactly "40 0"): no checksum mode
         } else {
+            // Anything else is damage (a robopro controller that refused a damaged "40 crc #", or one
+            // that spoke checksums before): never fall back to unchecked text, ask again.
             disconnect();
             throw new CommsException.Protocol("the checksum handshake with " + host + ":" + port + " was garbled");
         }

@@ -103,6 +103,9 @@ public final class DhImporter {
         }
         if (header == null) throw new InputException(fileName, lines.length, 1, null, "no column header and no table");
         if (rows.isEmpty()) throw new InputException(fileName, lines.length, 1, null, "the table has no joints");
+        if (rows.size() > RobotDescription.MAX_JOINTS)
+            throw new InputException(fileName, rows.get(RobotDescription.MAX_JOINTS).line(), 1, null, "the table has "
+                    + rows.size() + " joints; a robot may have at most " + RobotDescription.MAX_JOINTS);
 
         // units: length=mm|m, angle=deg|rad
         int[] uLoc = directiveLines.getOrDefault("units", new int[] {1, 1});

@@ -197,6 +197,9 @@ public final class UrdfImporter {
             link = next.child;
         }
         if (out.isEmpty()) throw err(file, robot, "robot", "no revolute, continuous or prismatic joint");
+        if (out.size() > RobotDescription.MAX_JOINTS)
+            throw err(file, movable.get(RobotDescription.MAX_JOINTS).el, "joint", "the chain has " + out.size()
+                    + " movable joints; a robot may have at most " + RobotDescription.MAX_JOINTS);
 
         List<CouplingTerm> coupling = new ArrayList<>();
         for (int k = 0; k < movable.size(); k++) {

@@ -22,7 +22,9 @@ import org.robopro.programs.sim.ProgramStep;
  * check solved (MoveL/MoveC, 5 mm / 2 deg) and at joint steps of at most
  * {@link Options#maxJointStepRad} for MoveJ/MoveAbsJ. Self-collision between links that are not
  * within two joints of each other and are not already within a link radius in the zero pose
- * (structural closeness, as an SRDF's "default" pairs). The base link is not compared with the cell (it stands on its pedestal).
+ * (structural closeness, as an SRDF's "default" pairs). The base link is not compared with the
+ * cell, nor the first link with an object the robot stands on (one touching the base or first
+ * link in the zero pose: its pedestal).
  * Thread-safe.
  */
 public final class ClearanceChecker {
@@ -60,6 +62,8 @@ public final class ClearanceChecker {
     private final List<Obstacle> obstacles;
     private final Options opt;
     private final boolean[][] allowedSelf;
+    /** Per obstacle: the robot stands on it (its base or first link touches it in the zero pose), so those two links are not compared with it. */
+    private final boolean[] stand;
 
     /**
      * @param worldTbase where the robot stands in the cell
@@ -76,6 +80,9 @@ public final class ClearanceChecker {
         }
         this.obstacles = List.copyOf(obs);
         Convex[] home = robot(new double[model.dof()], Pose.IDENTITY);
+        stand = new boolean[obstacles.size()];
+        for (int k = 0; k < obstacles.size(); k++)
+            stand[k] = Gjk.distance(home[0], obstacles.get(k).shape()) <= 0 || Gjk.distance(home[1], obstacles.get(k).shape()) <= 0;
         allowedSelf = new boolean[home.length][home.length];
         for (int i = 0; i < home.length; i++)
             for (int j = 0; j < home.length; j++)
@@ -125,7 +132,9 @@ public final class ClearanceChecker {
         String pair = "";
         List<String> hits = new ArrayList<>();
         for (int k = 1; k < r.length; k++)
-            for (Obstacle o : obstacles) {
+            for (int n = 0; n < obstacles.size(); n++) {
+                if (stand[n] && k <= 1) continue;
+                Obstacle o = obstacles.get(n);
                 double d = Gjk.distance(r[k], o.shape());
                 if (d < best) { best = d; pair = name(k, r.length) + " - " + o.name(); }
                 if (d <= 0) hits.add(name(k, r.length) + " - " + o.name());

@@ -86,6 +86,10 @@ public final class PathState extends BaseAppState {
             tn.attachChild(ball);
             tn.attachChild(shapes.axes("target-" + t.name() + "-axes", 0.07f));
             node.attachChild(tn);
+            // The target's name beside it, facing the camera.
+            Node label = shapes.label("label-" + t.name(), t.name(), 0.05f, s.ok() ? 0x1B3A1F : 0x8B1A1A);
+            label.setLocalTranslation(Shapes.v(t.worldTtcp().position()).add(0.025f, 0, 0.03f));
+            node.attachChild(label);
         }
         statuses = Map.copyOf(st);
         if (p.sampleCount() >= 2) {

@@ -137,13 +137,16 @@ public final class RobotState extends BaseAppState {
         // Base: a plinth and a pedestal around axis 1.
         Vector3f a1 = Shapes.v(js.get(0).point());
         float plinthH = (float) Math.min(0.22, 0.25 * Math.max(0.2, js.size() > 1 ? js.get(1).point().z() : 0.5));
-        if (!d.meshes().stream().anyMatch(m -> m.link() == 0)) links[0].attachChild(shapes.box("base-plinth", new Vector3f(a1.x - 2.1f * r1, a1.y - 2.1f * r1, 0),
-                new Vector3f(a1.x + 2.1f * r1, a1.y + 2.1f * r1, plinthH * 0.35f), housing));
-        if (!d.meshes().stream().anyMatch(m -> m.link() == 0)) links[0].attachChild(shapes.beam("base-pedestal", new Vector3f(a1.x, a1.y, plinthH * 0.35f),
-                new Vector3f(a1.x, a1.y, plinthH), 1.5f * r1, orange));
         java.util.Set<Integer> meshed = attachMeshes(d);
+        if (!meshed.contains(0)) links[0].attachChild(shapes.box("base-plinth", new Vector3f(a1.x - 2.1f * r1, a1.y - 2.1f * r1, 0),
+                new Vector3f(a1.x + 2.1f * r1, a1.y + 2.1f * r1, plinthH * 0.35f), housing));
+        if (!meshed.contains(0)) links[0].attachChild(shapes.beam("base-pedestal", new Vector3f(a1.x, a1.y, plinthH * 0.35f),
+                new Vector3f(a1.x, a1.y, plinthH), 1.5f * r1, orange));
         for (int i = 1; i <= n; i++) {
-            if (meshed.contains(i)) continue;
+            if (meshed.contains(i)) {
+                if (i < n) links[i].attachChild(frameAxes("frame-j" + (i + 1), Shapes.v(js.get(i).point()), js.get(i).axis(), r1 * 3.2f));
+                continue;
+            }
             float r = r1 * (float) Math.max(0.38, 1 - 0.15 * (i - 1));
             Vector3f a = i == 1 ? new Vector3f(a1.x, a1.y, plinthH) : Shapes.v(js.get(i - 1).point());
             Vector3f b = i < n ? Shapes.v(js.get(i).point()) : Shapes.v(flangeZero.position());
@@ -217,6 +220,36 @@ public final class RobotState extends BaseAppState {
             } catch (java.io.IOException | RuntimeException e) {
                 java.util.logging.Logger.getLogger(RobotState.class.getName())
                         .warning("robot mesh " + m.path() + " not drawn (built-in shape instead): " + e.getMessage());
+            }
+        }
+        if (done.isEmpty()) done.addAll(attachShippedMeshes(d));
+        return done;
+    }
+
+    /** Robots whose link meshes robopro ships (resources beside their licence and attribution), by robot-name prefix. */
+    private static final java.util.Map<String, String[]> SHIPPED_MESHES = java.util.Map.of(
+            "irb2400", new String[] {"base_link", "link_1", "link_2", "link_3", "link_4", "link_5", "link_6"});
+
+    /**
+     * The shipped meshes of a robot whose file names none (the IRB 2400 from ROS-Industrial,
+     * meshes/irb2400/ATTRIBUTION.md), in base coordinates at the zero position like a robot
+     * file's own meshes; also drawn for its calibrated variants. Returns the links that got one.
+     */
+    private java.util.Set<Integer> attachShippedMeshes(RobotDescription d) {
+        java.util.Set<Integer> done = new java.util.HashSet<>();
+        for (var e : SHIPPED_MESHES.entrySet()) {
+            if (!d.name().toLowerCase(java.util.Locale.ROOT).startsWith(e.getKey()) || e.getValue().length != d.dof() + 1) continue;
+            for (int link = 0; link < e.getValue().length; link++) {
+                String res = "/org/robopro/app/workbench/meshes/" + e.getKey() + "/" + e.getValue()[link] + ".stl";
+                try (java.io.InputStream in = RobotState.class.getResourceAsStream(res)) {
+                    if (in == null) continue;
+                    Geometry g = new Geometry("mesh-" + e.getValue()[link], StlReader.read(in.readAllBytes(), java.nio.file.Path.of(res), 1f));
+                    g.setMaterial(shapes.lit(DefaultCell.ABB_ORANGE));
+                    links[link].attachChild(g);
+                    done.add(link);
+                } catch (java.io.IOException | RuntimeException ex) {
+                    java.util.logging.Logger.getLogger(RobotState.class.getName()).warning("shipped mesh " + res + " not drawn: " + ex.getMessage());
+                }
             }
         }
         return done;

@@ -140,4 +140,25 @@ public final class Shapes {
         }
         return n;
     }
+
+    /**
+     * A text label in the 3D scene that always faces the camera, {@code height} metres tall,
+     * its bottom-left corner at the node's origin.
+     */
+    public Node label(String name, String text, float height, int rgb) {
+        com.jme3.font.BitmapFont font = assets.loadFont("Interface/Fonts/Default.fnt");
+        com.jme3.font.BitmapText t = new com.jme3.font.BitmapText(font);
+        t.setName(name + "-text");
+        t.setText(text);
+        t.setSize(height);
+        t.setColor(new com.jme3.math.ColorRGBA(((rgb >> 16) & 255) / 255f, ((rgb >> 8) & 255) / 255f, (rgb & 255) / 255f, 1));
+        t.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
+        Node n = new Node(name);
+        Node face = new Node(name + "-billboard");
+        face.addControl(new com.jme3.scene.control.BillboardControl());
+        face.attachChild(t);
+        t.setLocalTranslation(0, t.getLineHeight(), 0);
+        n.attachChild(face);
+        return n;
+    }
 }

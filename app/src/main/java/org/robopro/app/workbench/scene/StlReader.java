@@ -28,6 +28,11 @@ public final class StlReader {
         if (Files.exists(file) && !Files.isDirectory(file) && !Files.isRegularFile(file))
             throw new InputException(file.toString(), 0, 0, null, "is not a regular file (a device or a pipe?); not a mesh file");
         byte[] b = org.robopro.models.TextFiles.readBytes(file, MAX_BYTES, "mesh file");
+        return read(b, file, scale);
+    }
+
+    /** A mesh from an STL file's bytes (binary or ASCII); {@code file} names it in error messages. */
+    public static Mesh read(byte[] b, Path file, float scale) {
         float[] tri = isBinary(b) ? binary(b, file) : ascii(new String(b, StandardCharsets.US_ASCII), file);
         int nv = tri.length / 3;
         float[] pos = new float[nv * 3];

@@ -80,6 +80,16 @@ public final class WorkbenchApp extends SimpleApplication {
         // robopro's scene is z-up; jME's world is y-up.
         world.rotate(-FastMath.HALF_PI, 0, 0);
         rootNode.attachChild(world);
+        // The world frame: a triad with X, Y, Z at the origin of the cell.
+        Shapes sh = new Shapes(assetManager);
+        world.attachChild(sh.axes("frame-world", 0.5f));
+        String[] names = {"X", "Y", "Z"};
+        int[] colours = {0xC62828, 0x2E7D32, 0x1565C0};
+        for (int i = 0; i < 3; i++) {
+            Node l = sh.label("frame-world-" + names[i], names[i], 0.09f, colours[i]);
+            l.setLocalTranslation(i == 0 ? 0.53f : 0, i == 1 ? 0.53f : 0, i == 2 ? 0.53f : 0);
+            world.attachChild(l);
+        }
         java.util.function.Function<String, Path> robotMeshes = path -> {
             // Robot meshes are relative to the robot file; shipped robots (a name, not a path) have none on disk.
             String ref = model.robotRef();
@@ -108,11 +118,18 @@ public final class WorkbenchApp extends SimpleApplication {
     @Override
     public void simpleRender(com.jme3.renderer.RenderManager rm) {
         long n = frames.incrementAndGet();
-        if (n == 1) firstFrame.countDown();
-        windowFrames++;
         long now = System.nanoTime();
+        if (n == 1) {
+            // The rate counts from the first frame drawn, not from the start-up before it.
+            windowStartNanos = now;
+            windowFrames = 0;
+            firstFrame.countDown();
+            return;
+        }
+        windowFrames++;
+        // The first half second reports as it goes (the status bar shows a rate from the first view on), then per window.
+        if (fps == 0 || now - windowStartNanos > 500_000_000L) fps = windowFrames * 1e9 / Math.max(1, now - windowStartNanos);
         if (now - windowStartNanos > 500_000_000L) {
-            fps = windowFrames * 1e9 / (now - windowStartNanos);
             windowFrames = 0;
             windowStartNanos = now;
         }

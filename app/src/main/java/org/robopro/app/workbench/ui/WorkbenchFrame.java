@@ -142,7 +142,9 @@ public final class WorkbenchFrame extends JFrame {
         wb.model().addListener(this::modelChanged);
         wb.addLogListener(line -> SwingUtilities.invokeLater(() -> appendLog(line)));
         wb.pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
-        new Timer(500, e -> updateStatus()).start();
+        Timer statusTimer = new Timer(500, e -> updateStatus());
+        statusTimer.setInitialDelay(50);
+        statusTimer.start();
     }
 
     /** Sizes the window and places the split panes: tree 17 %, properties/jog 27 % of the width. */
@@ -315,11 +317,15 @@ public final class WorkbenchFrame extends JFrame {
         setTitle((wb.model().dirty() ? "* " : "") + name + " - robopro workbench");
     }
 
+    /** Updates the status line now (screenshots; otherwise a timer does it twice a second). */
+    public void refreshStatus() { updateStatus(); }
+
     private void updateStatus() {
         Pose p = wb.model().worldTtcp();
-        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %.0f fps",
+        double fps = app.fps();
+        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %s",
                 wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, wb.model().targets().size(),
-                wb.model().program().size(), app.fps()));
+                wb.model().program().size(), fps > 0 ? String.format(Locale.ROOT, "%.0f fps", fps) : "3D view starting"));
         updateTitle();
     }
 

@@ -136,6 +136,7 @@ public final class WorkbenchWindow {
         app.awaitFrames(4, 10_000);
         AtomicReference<BufferedImage> out = new AtomicReference<>();
         onEdt(() -> {
+            frame.refreshStatus(); // the picture shows this moment's status line, not the last timer tick's
             var root = frame.getRootPane();
             BufferedImage img = new BufferedImage(root.getWidth(), root.getHeight(), BufferedImage.TYPE_INT_RGB);
             Graphics2D g = img.createGraphics();

@@ -1,0 +1,102 @@
+package org.robopro.bench;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.CellDescription;
+import org.robopro.models.CellFile;
+import org.robopro.models.RobotLibrary;
+import org.robopro.models.Vec3;
+import org.robopro.programs.JointTarget;
+import org.robopro.programs.LoadData;
+import org.robopro.programs.Move;
+import org.robopro.programs.Quaternion;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.RapidPose;
+import org.robopro.programs.Ref;
+import org.robopro.programs.Statement;
+import org.robopro.programs.Teach;
+import org.robopro.programs.ToolData;
+import org.robopro.programs.WObjData;
+import org.robopro.programs.check.CheckReport;
+import org.robopro.programs.check.PathChecker;
+import org.robopro.programs.collision.ClearanceChecker;
+import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.sim.ProgramStep;
+
+/**
+ * Speed target (docs/performance.md): the path check of a 200-move program with collisions in
+ * under 1 s. The program: 200 moves (MoveJ / MoveL / MoveC mixed, fly-by zones) over taught
+ * targets in front of the IRB-2000 in the shipped welding cell; collisions against its table,
+ * plates, cabinet and pedestal plus self-collision.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+public class ProgramCheckBench {
+    KinematicModel model;
+    RapidModule module;
+    CellDescription cell;
+    List<ProgramStep> steps;
+    CheckReport report;
+    ClearanceChecker clearance;
+
+    @Setup
+    public void setup() {
+        model = KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        cell = CellFile.shipped("irb2000-welding");
+        ToolData torch = new ToolData(true, new RapidPose(new Vec3(0, 0, 0.15), Quaternion.IDENTITY), LoadData.LOAD0);
+        RapidModule.Builder b = RapidModule.builder("Bench").pers("tTorch", torch).constant("jHome", JointTarget.of(0, 0, 0, 0, 0.5, 0));
+        List<Statement> body = new ArrayList<>();
+        body.add(Move.moveAbsJ(Ref.to("jHome"), Ref.to("v1000"), Ref.to("fine"), "tTorch", null));
+        for (int k = 0; k < 200; k++) {
+            double s = k / 200.0;
+            double[] q = {-0.6 + 1.2 * s, 0.25 + 0.1 * Math.sin(7 * s), 0.05 + 0.05 * Math.cos(5 * s), 0.15, 0.9 + 0.1 * Math.sin(3 * s), 0.25};
+            b.constant("p" + k, Teach.taught(model, q, torch, WObjData.WOBJ0));
+            String zone = k % 5 == 4 ? "fine" : "z10";
+            if (k % 10 == 9) {
+                // circle point half way in joint 1, raised in joint 2: off the chord
+                double h = (k - 0.5) / 200.0;
+                double[] c = {-0.6 + 1.2 * h, 0.3 + 0.1 * Math.sin(7 * h), 0.05 + 0.05 * Math.cos(5 * h), 0.15, 0.9 + 0.1 * Math.sin(3 * h), 0.25};
+                b.constant("c" + k, Teach.taught(model, c, torch, WObjData.WOBJ0));
+                body.add(Move.moveC(Ref.to("c" + k), Ref.to("p" + k), Ref.to("v200"), Ref.to(zone), "tTorch", null));
+            }
+            else if (k % 3 == 0) body.add(Move.moveJ(Ref.to("p" + k), Ref.to("v1000"), Ref.to(zone), "tTorch", null));
+            else body.add(Move.moveL(Ref.to("p" + k), Ref.to("v200"), Ref.to(zone), "tTorch", null));
+        }
+        module = b.procedure("main", body).build();
+        steps = MotionInterpreter.of(module).run();
+        report = new PathChecker(model).check(steps);
+        clearance = new ClearanceChecker(model, ClearanceChecker.pose(cell.worldTbase()), cell.objects(), ClearanceChecker.Options.forRobot(model));
+    }
+
+    /** Interpreter + path check (IK along every path, limits, configuration, blending, cycle time). */
+    @Benchmark
+    public CheckReport pathCheck200Moves() {
+        return new PathChecker(model).check(MotionInterpreter.of(module).run());
+    }
+
+    /** The collision sweep alone over the checked path. */
+    @Benchmark
+    public ClearanceChecker.Result clearance200Moves() {
+        return clearance.check(steps, report, Optional.empty());
+    }
+
+    /** Everything a `program check --cell` does: interpreter, path check, collision sweep. */
+    @Benchmark
+    public ClearanceChecker.Result pathCheckWithCollisions200Moves() {
+        List<ProgramStep> s = MotionInterpreter.of(module).run();
+        CheckReport r = new PathChecker(model).check(s);
+        return new ClearanceChecker(model, ClearanceChecker.pose(cell.worldTbase()), cell.objects(), ClearanceChecker.Options.forRobot(model))
+                .check(s, r, Optional.empty());
+    }
+}

@@ -1,0 +1,332 @@
+package org.robopro.calibration.diagnosis;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.kinematics.Pose;
+import org.robopro.models.Vec3;
+
+/**
+ * The locate scan (docs/diagnosis.md "Locate"): where does what the model leaves live? The
+ * residual is tested against every variable the data offer, each as a block of signature
+ * columns projected out of the current model's span (closed form, no fit):
+ * <ul>
+ * <li>each joint angle, periodic: harmonics h = 1..H of q_j acting on drive j (H from the number
+ *     of poses, {@link #harmonicsFor}), each harmonic its own 2-column test;</li>
+ * <li>each joint angle, non-periodic: a cubic B-spline of q_j over its sampled range ({@link Effect#SMOOTH_BASIS} functions);</li>
+ * <li>each joint's approach direction (recorded or inferred);</li>
+ * <li>time, temperature: a point translation and a length change, each a 4-function spline of the variable;</li>
+ * <li>payload: its torque on each drive, and a point translation proportional to it;</li>
+ * <li>reach and height of the measured point: a point translation as a 4-function spline of each.</li>
+ * </ul>
+ * Structures are accepted greedily (lowest BIC among those that pass) with the same
+ * false-positive control as the effects: Holm over the family (step s uses α/(N − s)), a smaller
+ * leave-one-pose-out error, and a backward step that drops a structure the others made redundant.
+ */
+final class Locator {
+    /**
+     * Poses per harmonic: up to n/5 harmonics are scanned, and at least 40 (gear stages) while
+     * there are 3 poses per cycle; above that a joint's harmonics cannot be told apart.
+     */
+    static final int POSES_PER_HARMONIC = 5;
+    /** Harmonics scanned at most (a gear stage up to 40 cycles per turn and its neighbours). */
+    static final int MAX_HARMONIC = 60;
+    /** Harmonics the scan should reach to cover gear stages. */
+    static final int WANTED_HARMONIC = 40;
+
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, DIRECTION, TIME, TEMPERATURE, PAYLOAD, REACH, HEIGHT }
+
+    /** One probe: a block of signature columns. */
+    static final class Probe {
+        Var var;
+        int joint = -1, harmonic;
+        String variable, shape, detail;
+        double[] s;   // m x k, projected out of the model's span
+        double[] n0;  // unprojected column norms
+        int k;
+        double[] x;   // per pose, the variable (plots)
+        String xLabel;
+    }
+
+    /** A structure found. */
+    static final class Found {
+        Probe probe;
+        Diagnoser.Candidate c;
+        double sizeM;
+    }
+
+    /** The harmonics of each joint a campaign of {@code poses} poses can resolve. */
+    static int harmonicsFor(int poses) {
+        return Math.max(1, Math.min(MAX_HARMONIC, Math.max(poses / POSES_PER_HARMONIC, Math.min(WANTED_HARMONIC, poses / 3))));
+    }
+
+    private Locator() { }
+
+    /** The probes the data offer at this fit. */
+    static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs) {
+        Diagnoser.Work w = t.w;
+        int dof = t.dof, poses = w.rows.size(), m = t.m, rpp = t.rpp;
+        List<Probe> out = new ArrayList<>();
+        int hMax = harmonicsFor(poses);
+        for (int j = 0; j < dof; j++) {
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (Measurement r : w.rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+            if (!(hi - lo > 1e-6) || w.model.isPrismatic(j)) continue;
+            double[] qx = new double[poses];
+            for (int i = 0; i < poses; i++) qx[i] = Math.toDegrees(w.rows.get(i).q(j));
+            for (int h = 1; h <= hMax; h++) {
+                final int hh = h, jj = j;
+                Probe p = drive(t, j, 2, (i, g) -> {
+                    double q = w.rows.get(i).q(jj);
+                    g[0] = Math.sin(hh * q);
+                    g[1] = Math.cos(hh * q);
+                });
+                p.var = Var.ANGLE_PERIODIC;
+                p.joint = j;
+                p.harmonic = h;
+                p.variable = "joint " + (j + 1) + " angle";
+                p.shape = h + (h == 1 ? " cycle" : " cycles") + " per turn of joint " + (j + 1);
+                p.x = qx;
+                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+                out.add(p);
+            }
+            final double l0 = lo, h0 = hi;
+            final int jj = j;
+            Probe p = drive(t, j, Effect.SMOOTH_BASIS, (i, g) -> Effect.bspline(w.rows.get(i).q(jj), l0, h0, g));
+            p.var = Var.ANGLE_SMOOTH;
+            p.joint = j;
+            p.variable = "joint " + (j + 1) + " angle";
+            p.shape = String.format(Locale.ROOT, "a smooth, non-periodic function of joint %d's angle over %.0f..%.0f deg", j + 1,
+                    Math.toDegrees(lo), Math.toDegrees(hi));
+            p.x = qx;
+            p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+            out.add(p);
+            if (dirs != Directions.Source.NONE && w.rows.stream().allMatch(r -> r.directions() != null)) {
+                Probe d = drive(t, j, 1, (i, g) -> g[0] = -0.5 * w.conditions.get(i).direction(jj));
+                d.var = Var.DIRECTION;
+                d.joint = j;
+                d.variable = "direction of joint " + (j + 1);
+                d.shape = "changes sign with the direction joint " + (j + 1) + " last moved in (directions " + dirs.words + ")";
+                d.x = new double[poses];
+                for (int i = 0; i < poses; i++) d.x[i] = w.conditions.get(i).direction(j);
+                d.xLabel = "approach direction dir" + (j + 1);
+                out.add(d);
+            }
+        }
+        double[] time = column(w, c -> c.timeS()), temp = column(w, c -> c.tempC()), pay = column(w, c -> c.payloadKg());
+        if (varies(time, 1)) {
+            out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", true));
+            out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", false));
+        }
+        if (varies(temp, 0.5)) {
+            out.add(scalar(t, Var.TEMPERATURE, temp, "temperature", "temperature (°C)", true));
+            out.add(scalar(t, Var.TEMPERATURE, temp, "temperature", "temperature (°C)", false));
+        }
+        if (varies(pay, 0.1)) {
+            double[][] tau = payloadTorques(t, pay);
+            for (int j = 0; j < dof; j++) {
+                final int jj = j;
+                Probe p = drive(t, j, 1, (i, g) -> g[0] = tau[i][jj]);
+                p.var = Var.PAYLOAD;
+                p.joint = j;
+                p.variable = "payload";
+                p.shape = "joint " + (j + 1) + " gives way in proportion to the payload's torque on it";
+                p.x = pay;
+                p.xLabel = "payload (kg)";
+                out.add(p);
+            }
+        }
+        double[] reach = new double[poses], height = new double[poses];
+        for (int i = 0; i < poses; i++) {
+            reach[i] = Math.hypot(t.pointBase[i][0], t.pointBase[i][1]);
+            height[i] = t.pointBase[i][2];
+        }
+        if (varies(reach, 0.05)) out.add(scalar(t, Var.REACH, reach, "reach of the measured point", "reach (m)", true));
+        if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
+        return out;
+    }
+
+    private interface Reg { void at(int pose, double[] g); }
+
+    private static Probe drive(Diagnoser.Tester t, int j, int k, Reg reg) {
+        int m = t.m, rpp = t.rpp, poses = m / rpp;
+        double[] s = new double[m * k], g = new double[k];
+        for (int i = 0; i < poses; i++) {
+            reg.at(i, g);
+            for (int a = 0; a < rpp; a++) {
+                double d = t.dQ[(i * rpp + a) * t.dof + j];
+                for (int c = 0; c < k; c++) s[(i * rpp + a) * k + c] = d * g[c];
+            }
+        }
+        return finish(t, s, k);
+    }
+
+    /** A translation of the point (3 x 4 columns) or a length change (4 columns) following a spline of x. */
+    private static Probe scalar(Diagnoser.Tester t, Var var, double[] x, String name, String xLabel, boolean translation) {
+        int m = t.m, rpp = t.rpp, poses = m / rpp, nb = 4;
+        double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
+        int k = translation ? 3 * nb : nb;
+        double[] s = new double[m * k], g = new double[nb];
+        for (int i = 0; i < poses; i++) {
+            Effect.bspline(x[i], lo, hi, g);
+            for (int a = 0; a < rpp; a++) {
+                int row = i * rpp + a;
+                for (int b = 0; b < nb; b++) {
+                    if (translation) for (int ax = 0; ax < 3; ax++) s[row * k + b * 3 + ax] = t.dTrans[row * 3 + ax] * g[b];
+                    else s[row * k + b] = t.dStrain[row] * g[b];
+                }
+            }
+        }
+        Probe p = finish(t, s, k);
+        p.var = var;
+        p.variable = name;
+        p.shape = translation ? "the measured point moves with " + name : "every length changes with " + name;
+        p.x = x;
+        p.xLabel = xLabel;
+        return p;
+    }
+
+    private static Probe finish(Diagnoser.Tester t, double[] s, int k) {
+        Probe p = new Probe();
+        p.k = k;
+        p.n0 = new double[k];
+        int m = t.m;
+        double[] col = new double[m];
+        double[] proj = new double[m * k];
+        for (int c = 0; c < k; c++) {
+            double n = 0;
+            for (int i = 0; i < m; i++) { col[i] = s[i * k + c]; n += col[i] * col[i]; }
+            p.n0[c] = Math.sqrt(n);
+            double[] pc = t.project(col);
+            for (int i = 0; i < m; i++) proj[i * k + c] = pc[i];
+        }
+        p.s = proj;
+        return p;
+    }
+
+    private static double[] column(Diagnoser.Work w, java.util.function.ToDoubleFunction<PoseConditions> f) {
+        double[] out = new double[w.rows.size()];
+        for (int i = 0; i < out.length; i++) out[i] = f.applyAsDouble(w.conditions.get(i));
+        return out;
+    }
+
+    private static boolean varies(double[] x, double minRange) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (double v : x) { if (!Double.isFinite(v)) return false; lo = Math.min(lo, v); hi = Math.max(hi, v); }
+        return hi - lo >= minRange;
+    }
+
+    /** Torque of the payload (a point mass at the flange, gravity −z) on each drive: τ_q = Cᵀ τ_θ. */
+    static double[][] payloadTorques(Diagnoser.Tester t, double[] payload) {
+        int dof = t.dof;
+        double[][] c = t.w.model.couplingMatrix();
+        double[][] out = new double[payload.length][dof];
+        for (int i = 0; i < payload.length; i++) {
+            Pose[] f = t.w.model.linkFrames(t.w.rows.get(i).q());
+            Vec3 pf = f[f.length - 1].position(), force = new Vec3(0, 0, -9.80665 * payload[i]);
+            double[] th = new double[dof];
+            for (int a = 0; a < dof; a++)
+                th[a] = t.w.model.isPrismatic(a) ? force.dot(f[a + 1].zAxis()) : pf.minus(f[a + 1].position()).cross(force).dot(f[a + 1].zAxis());
+            for (int j = 0; j < dof; j++) for (int a = 0; a < dof; a++) out[i][j] += c[a][j] * th[a];
+        }
+        return out;
+    }
+
+    /**
+     * Greedy scan: accept structures one by one (lowest BIC among the probes that pass Holm at
+     * step s and lower the leave-one-pose-out error), each conditional on those before; then the
+     * backward step.
+     */
+    static List<Found> scan(Diagnoser.Tester t, List<Probe> probes, double alpha, int maxFound) {
+        int n = probes.size();
+        List<Found> found = new ArrayList<>();
+        double[] q = new double[0];
+        int nq = 0;
+        boolean[] used = new boolean[n];
+        for (int step = 0; step < maxFound; step++) {
+            double thr = alpha / Math.max(1, n - step);
+            Found best = null;
+            for (int pi = 0; pi < n; pi++) {
+                if (used[pi]) continue;
+                Diagnoser.Candidate c = test(t, probes.get(pi), q, nq, thr);
+                if (c == null || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
+                c.threshold = thr;
+                if (best == null || c.bic < best.c.bic) { best = new Found(); best.probe = probes.get(pi); best.c = c; }
+            }
+            if (best == null) break;
+            used[probes.indexOf(best.probe)] = true;
+            found.add(best);
+            int add = best.c.df1;
+            double[] nqArr = new double[t.m * (nq + add)];
+            for (int i = 0; i < t.m; i++) {
+                System.arraycopy(q, i * nq, nqArr, i * (nq + add), nq);
+                System.arraycopy(best.c.basis, i * add, nqArr, i * (nq + add) + nq, add);
+            }
+            q = nqArr;
+            nq += add;
+        }
+        // Backward: a structure the later ones made redundant leaves.
+        for (int k = found.size() - 1; k >= 0 && found.size() > 1; k--) {
+            Found f = found.get(k);
+            List<double[]> others = new ArrayList<>();
+            int no = 0;
+            for (Found g : found) if (g != f) { others.add(g.c.basis); no += g.c.df1; }
+            double[] qo = new double[t.m * no];
+            int off = 0;
+            for (Found g : found) {
+                if (g == f) continue;
+                for (int i = 0; i < t.m; i++) System.arraycopy(g.c.basis, i * g.c.df1, qo, i * no + off, g.c.df1);
+                off += g.c.df1;
+            }
+            double thr = alpha / Math.max(1, n - found.size() + 1);
+            Diagnoser.Candidate c = test(t, f.probe, qo, no, thr);
+            if (c == null || !(c.p < thr)) found.remove(k);
+        }
+        for (Found f : found) f.sizeM = size(t, f);
+        return found;
+    }
+
+    /** A probe's test against the model plus the already located columns (q, m x nq). */
+    static Diagnoser.Candidate test(Diagnoser.Tester t, Probe p, double[] q, int nq, double pGate) {
+        List<String> names = new ArrayList<>();
+        for (int c = 0; c < p.k; c++) names.add("c" + c);
+        Diagnoser.Candidate c = t.testProjected(p.s, p.n0, p.k, names, q, nq, pGate);
+        return c.keptColumns == 0 ? null : c;
+    }
+
+    /** RMS over the poses of the structure's fitted displacement at the measured point, m. */
+    static double size(Diagnoser.Tester t, Found f) {
+        int rpp = t.rpp, poses = t.m / rpp, q = f.c.df1;
+        double s = 0;
+        for (int i = 0; i < poses; i++)
+            for (int a = 0; a < 3; a++) {
+                double v = 0;
+                for (int k = 0; k < q; k++) v += f.c.basis[(i * rpp + a) * q + k] * f.c.coef[k];
+                s += v * v;
+            }
+        return Math.sqrt(s / Math.max(1, poses)) * t.fit.problem.sigmaPos();
+    }
+
+    /** Evidence plot: per pose, the structure's fitted displacement along its own direction plus the residual along it (mm), against the variable. */
+    static Diagnosis.Plot plot(Diagnoser.Tester t, Found f) {
+        int rpp = t.rpp, poses = t.m / rpp, q = f.c.df1;
+        double unit = t.fit.problem.sigmaPos() * 1e3;
+        List<double[]> pts = new ArrayList<>();
+        double[] fy = new double[poses];
+        for (int i = 0; i < poses; i++) {
+            double[] c = new double[3];
+            for (int a = 0; a < 3; a++) for (int k = 0; k < q; k++) c[a] += f.c.basis[(i * rpp + a) * q + k] * f.c.coef[k];
+            double n = Math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+            if (n == 0) continue;
+            double along = 0;
+            for (int a = 0; a < 3; a++) along += c[a] / n * t.rPerp[i * rpp + a];
+            pts.add(new double[] {f.probe.x[i], along * unit, n * unit});
+        }
+        double[] x = new double[pts.size()], y = new double[pts.size()], cy = new double[pts.size()];
+        for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; cy[i] = pts.get(i)[2]; }
+        return new Diagnosis.Plot(f.probe.xLabel, "residual along the structure's displacement (mm)", x, y, x.clone(), cy, null);
+    }
+}
