@@ -213,6 +213,12 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var t = thermal(n, r, false); return w -> w.withThermal(t); }, same()));
         c.add(s("thermal growth per link + instrument drift", "thermal-growth", "irb2000", Expected.named(claim(THERMAL_GROWTH)),
                 (n, r) -> { var t = thermal(n, r, true); return w -> w.withThermal(t); }, same()));
+        c.add(s("instrument drift with time", "thermal-growth", "irb2000", Expected.named(claim(THERMAL_GROWTH)),
+                (n, r) -> {
+                    double[] d = Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 0.5e-6, 1e-6) / 60); // 0.5-1 µm per minute
+                    var t = new WorldRobot.Thermal(20, new double[n.dof() + 1], new double[3], d);
+                    return w -> w.withThermal(t);
+                }, same()));
         // gravity elasticity
         c.add(s("joint elasticity j2, masses off 30 %", "gravity-elasticity", "irb2000", Expected.named(claim(GRAVITY_ELASTICITY, 2)),
                 (n, r) -> elastic(n, r, 1), payloads("irb2000")));
@@ -234,6 +240,9 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("lost motion j1 + cross-coupling j3<-j2, directions not recorded", "pair", "irb2000",
                 Expected.named(claim(LOST_MOTION, 1), claim(CROSS_COUPLING, 3, 2)),
                 (n, r) -> add(lostMotion(0, r), crossCoupling(2, 1, r)), p -> p.withDirColumns(false)));
+        c.add(s("joint elasticity j2 + transmission error j1, masses off 30 %", "pair", "irb2000",
+                Expected.named(claim(GRAVITY_ELASTICITY, 2), claim(TRANSMISSION_ERROR, 1)),
+                (n, r) -> { var e = elastic(n, r, 1); var h = lowHarmonics(0, r); return w -> add(h).apply(e.apply(w)); }, payloads("irb2000")));
         // sparse, noisy and 6-D campaigns with an effect
         c.add(s("lost motion j1, 4 gross outliers", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 1)),
                 (n, r) -> add(lostMotion(0, r)), p -> p.withOutliers(4)));
@@ -253,6 +262,9 @@ public record Scenario(String name, String family, String robot, Expected expect
                 }, same()));
         c.add(s("outside: j2 error depending on j2 and j4", "outside", "irb2000", Expected.outside(),
                 (n, r) -> add(new JointError.TwoJoint(1, 3, Math.toRadians(signed(r, 0.01, 0.02)))), same()));
+        c.add(s("outside: bump in the angle of j2 puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> add(new JointError.Bump(1, Math.toRadians(uniform(r, 20, 160)), Math.toRadians(uniform(r, 10, 20)),
+                        Math.toRadians(signed(r, 0.02, 0.04)))), same()));
         c.add(s("outside: measured point sags with reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var sag = new WorldRobot.Sag(uniform(r, 0.1e-3, 0.2e-3), 1.5); return w -> w.withSag(sag); }, same()));
         return c;

@@ -1,5 +1,5 @@
 /**
- * The independent diagnosis benchmark: world-simulator scenarios measured, written as measurement
- * files, read back and diagnosed blind, then scored (docs/diagnosis-benchmark.md).
+ * The independent diagnosis benchmark: world-simulator campaigns read as measurement files and
+ * diagnosed blind, scored against each scenario's expected answer (docs/diagnosis-benchmark.md).
  */
 package org.robopro.app.benchmark;

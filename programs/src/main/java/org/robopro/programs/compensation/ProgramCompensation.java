@@ -80,6 +80,7 @@ public final class ProgramCompensation {
             if (d == null || !(d.value() instanceof RobTarget t)) continue;
             replaced.put(key, compensateOne(d.name(), t, e.getValue(), ik, compensator, corrections));
         }
+        reportUnrewritten(module, steps, corrections);
         List<ModuleItem> items = new ArrayList<>();
         for (ModuleItem it : module.items()) {
             if (it instanceof Declaration d && replaced.containsKey(d.name().toLowerCase(Locale.ROOT)))
@@ -88,6 +89,34 @@ public final class ProgramCompensation {
             else items.add(it);
         }
         return new Outcome(module.withItems(items), corrections);
+    }
+
+    /**
+     * Targets robopro cannot rewrite are named in the corrections rather than passed over
+     * silently: a target computed by an expression ({@code Offs(p1, ...)}, {@code RelTool}) or
+     * written inline in a statement inside a loop, branch or process instruction.
+     */
+    private static void reportUnrewritten(RapidModule module, List<MoveStep> steps, List<Correction> corrections) {
+        java.util.Set<String> seen = new java.util.HashSet<>();
+        for (MoveStep s : steps) {
+            if (s.kind() == Move.Kind.MOVE_ABS_J) continue;
+            List<String> names = new ArrayList<>(List.of(s.targetName()));
+            s.circName().ifPresent(names::add);
+            for (String n : names) {
+                String where = (s.context().isEmpty() ? "" : s.context() + " > ") + s.procedure() + "#" + (s.statementIndex() + 1)
+                        + s.source().map(p -> " (line " + p.line() + ")").orElse("");
+                if (n.equals("*")) {
+                    boolean typed = s.context().isEmpty() && module.procedures().stream().anyMatch(p -> p.name().equalsIgnoreCase(s.procedure())
+                            && s.statementIndex() < p.body().size() && p.body().get(s.statementIndex()) instanceof Move);
+                    if (!typed && seen.add(where + " *"))
+                        corrections.add(new Correction(where + " *", 0, 0, Double.NaN, Double.NaN, Optional.empty(),
+                                "inline target of " + s.instruction() + " in a loop, branch or process instruction (not rewritten: name it)"));
+                } else if (module.declaration(n.toLowerCase(Locale.ROOT)).filter(d -> d.value() instanceof RobTarget).isEmpty()
+                        && seen.add(n.toLowerCase(Locale.ROOT)))
+                    corrections.add(new Correction(n, 0, 0, Double.NaN, Double.NaN, Optional.empty(),
+                            "computed at run time (" + where + "); only its named robtargets are compensated"));
+            }
+        }
     }
 
     private static Procedure inlineCompensated(RapidModule module, Procedure p, KinematicModel nominal, InverseKinematics ik,

@@ -102,4 +102,28 @@ class ProgramCompensationTest {
             assertEquals(0, reached.distanceTo(wanted), 2e-6, "circle point of MoveC " + k);
         }
     }
+
+    @Test
+    void compensate_targetsItCannotRewrite_namedNotPassedOverSilently() {
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        String text = "MODULE M\n"
+                + "  CONST robtarget p1:=[[900,0,900],[0,0,1,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]];\n"
+                + "  PROC main()\n"
+                + "    MoveJ p1, v1000, fine, tool0;\n"
+                + "    FOR i FROM 1 TO 2 DO\n"
+                + "      MoveL Offs(p1, 0, 20 * i, 0), v100, fine, tool0;\n"
+                + "    ENDFOR\n"
+                + "    IF TRUE THEN\n"
+                + "      MoveL [[900,50,850],[0,0,1,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]], v100, fine, tool0;\n"
+                + "    ENDIF\n"
+                + "  ENDPROC\n"
+                + "ENDMODULE\n";
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(RapidParser.parse(text, "M.mod"), "main", nominal,
+                new Compensator(nominal, nominal, Pose.IDENTITY, Pose.IDENTITY));
+        List<ProgramCompensation.Correction> not = out.corrections().stream().filter(c -> c.status().isEmpty()).toList();
+        assertEquals(2, not.size(), out.corrections().toString());
+        assertTrue(not.get(0).target().startsWith("Offs(p1") && not.get(0).notCompensated().contains("main#2[i=1] > main#1"), not.toString());
+        assertTrue(not.get(1).notCompensated().contains("inline target") && not.get(1).target().startsWith("main#3 > main#1"), not.toString());
+        assertTrue(out.corrections().stream().anyMatch(c -> c.target().equals("p1") && c.ok()), out.corrections().toString());
+    }
 }
