@@ -326,6 +326,19 @@ public final class Diagnoser {
             k = -1; // re-check from the start with the new set
             if (++aliasRounds > 4) break;
         }
+        // Where the smooth fallback was needed on a joint, the angle-dependent error there is not one
+        // family's: another family's claim on the same drive's angle is withdrawn (the fallback models it).
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            Effect e = selected.get(k);
+            boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH;
+            if (!angleFamily || selected.stream().noneMatch(x -> x.kind() == Effect.Kind.SMOOTH && x.joint() == e.joint())) continue;
+            selected.remove(k);
+            absorbedCols.remove(e);
+            steps.remove(k);
+            aliasNotes.add(e.label() + " is not claimed: the angle-dependent error of joint " + (e.joint() + 1)
+                    + " needed the smooth fallback as well, so it is not that family's alone");
+            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+        }
         // With validation data, an effect whose addition did not lower the validation error is not claimed.
         for (int k = selected.size() - 1; k >= 0; k--) {
             double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
@@ -450,7 +463,8 @@ public final class Diagnoser {
             boolean thermal = k == Effect.Kind.THERMAL || k == Effect.Kind.THERMAL_LINK || k == Effect.Kind.DRIFT;
             switch (f.probe.var) {
                 case ANGLE_PERIODIC, ANGLE_SMOOTH -> {
-                    if (e.target() == Effect.Target.DRIVE && e.joint() == f.probe.joint && k != Effect.Kind.BACKLASH) return e;
+                    if (e.target() == Effect.Target.DRIVE && k != Effect.Kind.BACKLASH
+                            && (e.joint() == f.probe.joint || (k == Effect.Kind.COUPLING && e.source() == f.probe.joint))) return e;
                 }
                 case DIRECTION -> { if (k == Effect.Kind.BACKLASH && e.joint() == f.probe.joint) return e; }
                 case TIME, TEMPERATURE -> { if (thermal) return e; }
