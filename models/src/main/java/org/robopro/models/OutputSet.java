@@ -90,7 +90,16 @@ public final class OutputSet {
         Path stage = AtomicFiles.tempPath(stageHome, fresh ? dir.getFileName().toString() : "robopro-output");
         Files.createDirectory(stage);
         try {
-            for (Map.Entry<String, byte[]> e : files.entrySet()) writer.write(stage.resolve(e.getKey()), e.getValue());
+            for (Map.Entry<String, byte[]> e : files.entrySet()) {
+                try {
+                    writer.write(stage.resolve(e.getKey()), e.getValue());
+                } catch (IOException x) {
+                    String why = x.getMessage() == null ? "input/output error" : x.getMessage();
+                    if (x instanceof java.nio.file.FileSystemException f && f.getReason() != null) why = f.getReason();
+                    throw new IOException(dir.resolve(e.getKey()) + ": cannot write: " + why.toLowerCase(java.util.Locale.ROOT)
+                            + "; nothing was written", x);
+                }
+            }
             if (fresh) {
                 AtomicFiles.move(stage, dir);
             } else {

@@ -65,7 +65,9 @@ class OutputSetTest {
                     if (++calls[0] == 2) throw new IOException("No space left on device");
                     AtomicFiles.writeSynced(f, b);
                 });
-        assertThrows(IOException.class, set::commit);
+        IOException e = assertThrows(IOException.class, set::commit);
+        assertTrue(e.getMessage().contains("summary.json") && e.getMessage().contains("no space left")
+                && e.getMessage().contains("nothing was written"), e.getMessage());
         assertEquals(List.of("summary.json"), list(out), "nothing of the new set, no temporary folder");
         assertEquals("old", Files.readString(out.resolve("summary.json")));
 

@@ -92,15 +92,17 @@ public final class SimulateCommand implements Callable<Integer> {
         Campaign c = ec != null ? ec.campaign() : CampaignSimulator.simulate(nominal, s);
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
-        MeasurementWriter.write(c.measurements(), types, out.file("measurements.csv"), out.force());
-        if (c.validation() != null) MeasurementWriter.write(c.validation(), types, out.file("validate.csv"), out.force());
-        CampaignSimulator.writeTruth(c, ec != null ? ec.truthEntries() : null, out.file("truth.json"), out.force());
         RobotDescription trueDesc = c.truth().model().toDescription()
                 .withProvenance(Map.of("simulated-from", desc.name(), "seed", Long.toString(seed),
                         "error-mm", Double.toString(errorMm)));
         // The injected effects in the robot file's effects section, so the truth can be compensated with too.
         if (ec != null) trueDesc = trueDesc.withEffects(ec.injected().stream().map(e -> e.effect().describe(e.values())).toList());
-        RobotLibrary.write(trueDesc, out.file("true.robot.json"), out.force());
+        // The four files as one set: whole or not at all.
+        var set = out.set().addString("measurements.csv", MeasurementWriter.format(c.measurements(), types));
+        if (c.validation() != null) set.addString("validate.csv", MeasurementWriter.format(c.validation(), types));
+        set.addString("truth.json", CampaignSimulator.truthJson(c, ec != null ? ec.truthEntries() : null) + "\n")
+                .addString("true.robot.json", org.robopro.models.RobotFile.format(trueDesc))
+                .commit();
         spec.commandLine().getOut().printf(Locale.ROOT,
                 "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, frame %s%n  wrote %s%n",
                 desc.name(), poses, validatePoses > 0 ? " + " + validatePoses + " validation" : "", sigmaMm,
