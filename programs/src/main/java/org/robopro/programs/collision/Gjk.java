@@ -49,86 +49,85 @@ public final class Gjk {
     private static final class Simplex {
         Vec3 last;
 
-    /**
-     * Reduces simplex {@code s[0..n)} to the smallest sub-simplex holding its point closest to the
-     * origin, stores that point in {@code last}; returns the new size (4: the origin is inside).
-     */
-    private int closest(Vec3[] s, int n) {
-        switch (n) {
-            case 2 -> { return segment(s, s[0], s[1]); }
-            case 3 -> { return triangle(s, s[0], s[1], s[2]); }
-            default -> { return tetrahedron(s); }
+        /**
+         * Reduces simplex {@code s[0..n)} to the smallest sub-simplex holding its point closest to the
+         * origin, stores that point in {@code last}; returns the new size (4: the origin is inside).
+         */
+        private int closest(Vec3[] s, int n) {
+            switch (n) {
+                case 2 -> { return segment(s, s[0], s[1]); }
+                case 3 -> { return triangle(s, s[0], s[1], s[2]); }
+                default -> { return tetrahedron(s); }
+            }
         }
-    }
 
-    private int segment(Vec3[] s, Vec3 a, Vec3 b) {
-        Vec3 ab = b.minus(a);
-        double t = -a.dot(ab) / Math.max(ab.dot(ab), 1e-300);
-        if (t <= 0) { s[0] = a; last = a; return 1; }
-        if (t >= 1) { s[0] = b; last = b; return 1; }
-        s[0] = a; s[1] = b;
-        last = a.plus(ab.times(t));
-        return 2;
-    }
-
-    /** Ericson's ClosestPtPointTriangle with p = origin, keeping the vertices of the region found. */
-    private int triangle(Vec3[] s, Vec3 a, Vec3 b, Vec3 c) {
-        Vec3 ab = b.minus(a), ac = c.minus(a), ap = a.times(-1);
-        double d1 = ab.dot(ap), d2 = ac.dot(ap);
-        if (d1 <= 0 && d2 <= 0) { s[0] = a; last = a; return 1; }
-        Vec3 bp = b.times(-1);
-        double d3 = ab.dot(bp), d4 = ac.dot(bp);
-        if (d3 >= 0 && d4 <= d3) { s[0] = b; last = b; return 1; }
-        double vc = d1 * d4 - d3 * d2;
-        if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-            double v = d1 / (d1 - d3);
-            s[0] = a; s[1] = b; last = a.plus(ab.times(v));
+        private int segment(Vec3[] s, Vec3 a, Vec3 b) {
+            Vec3 ab = b.minus(a);
+            double t = -a.dot(ab) / Math.max(ab.dot(ab), 1e-300);
+            if (t <= 0) { s[0] = a; last = a; return 1; }
+            if (t >= 1) { s[0] = b; last = b; return 1; }
+            s[0] = a; s[1] = b;
+            last = a.plus(ab.times(t));
             return 2;
         }
-        Vec3 cp = c.times(-1);
-        double d5 = ab.dot(cp), d6 = ac.dot(cp);
-        if (d6 >= 0 && d5 <= d6) { s[0] = c; last = c; return 1; }
-        double vb = d5 * d2 - d1 * d6;
-        if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-            double w = d2 / (d2 - d6);
-            s[0] = a; s[1] = c; last = a.plus(ac.times(w));
-            return 2;
-        }
-        double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-            double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-            s[0] = b; s[1] = c; last = b.plus(c.minus(b).times(w));
-            return 2;
-        }
-        double denom = 1 / (va + vb + vc);
-        double v = vb * denom, w = vc * denom;
-        s[0] = a; s[1] = b; s[2] = c;
-        last = a.plus(ab.times(v)).plus(ac.times(w));
-        return 3;
-    }
 
-    /** Ericson §5.1.6: the origin inside (4), else the closest of the faces it lies outside of. */
-    private int tetrahedron(Vec3[] s) {
-        Vec3 a = s[0], b = s[1], c = s[2], d = s[3];
-        int[][] faces = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
-        double best = Double.POSITIVE_INFINITY;
-        Vec3[] bestS = null;
-        int bestN = 4;
-        Vec3 bestP = null;
-        Vec3[] v = {a, b, c, d};
-        for (int[] f : faces) {
-            if (!outside(v[f[0]], v[f[1]], v[f[2]], v[f[3]])) continue;
-            Vec3[] t = new Vec3[4];
-            int m = triangle(t, v[f[0]], v[f[1]], v[f[2]]);
-            double dd = last.dot(last);
-            if (dd < best) { best = dd; bestS = t; bestN = m; bestP = last; }
+        /** Ericson's ClosestPtPointTriangle with p = origin, keeping the vertices of the region found. */
+        private int triangle(Vec3[] s, Vec3 a, Vec3 b, Vec3 c) {
+            Vec3 ab = b.minus(a), ac = c.minus(a), ap = a.times(-1);
+            double d1 = ab.dot(ap), d2 = ac.dot(ap);
+            if (d1 <= 0 && d2 <= 0) { s[0] = a; last = a; return 1; }
+            Vec3 bp = b.times(-1);
+            double d3 = ab.dot(bp), d4 = ac.dot(bp);
+            if (d3 >= 0 && d4 <= d3) { s[0] = b; last = b; return 1; }
+            double vc = d1 * d4 - d3 * d2;
+            if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+                double v = d1 / (d1 - d3);
+                s[0] = a; s[1] = b; last = a.plus(ab.times(v));
+                return 2;
+            }
+            Vec3 cp = c.times(-1);
+            double d5 = ab.dot(cp), d6 = ac.dot(cp);
+            if (d6 >= 0 && d5 <= d6) { s[0] = c; last = c; return 1; }
+            double vb = d5 * d2 - d1 * d6;
+            if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+                double w = d2 / (d2 - d6);
+                s[0] = a; s[1] = c; last = a.plus(ac.times(w));
+                return 2;
+            }
+            double va = d3 * d6 - d5 * d4;
+            if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+                double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+                s[0] = b; s[1] = c; last = b.plus(c.minus(b).times(w));
+                return 2;
+            }
+            double denom = 1 / (va + vb + vc);
+            double v = vb * denom, w = vc * denom;
+            s[0] = a; s[1] = b; s[2] = c;
+            last = a.plus(ab.times(v)).plus(ac.times(w));
+            return 3;
         }
-        if (bestS == null) return 4;
-        System.arraycopy(bestS, 0, s, 0, bestN);
-        last = bestP;
-        return bestN;
-    }
 
+        /** Ericson §5.1.6: the origin inside (4), else the closest of the faces it lies outside of. */
+        private int tetrahedron(Vec3[] s) {
+            Vec3 a = s[0], b = s[1], c = s[2], d = s[3];
+            int[][] faces = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
+            double best = Double.POSITIVE_INFINITY;
+            Vec3[] bestS = null;
+            int bestN = 4;
+            Vec3 bestP = null;
+            Vec3[] v = {a, b, c, d};
+            for (int[] f : faces) {
+                if (!outside(v[f[0]], v[f[1]], v[f[2]], v[f[3]])) continue;
+                Vec3[] t = new Vec3[4];
+                int m = triangle(t, v[f[0]], v[f[1]], v[f[2]]);
+                double dd = last.dot(last);
+                if (dd < best) { best = dd; bestS = t; bestN = m; bestP = last; }
+            }
+            if (bestS == null) return 4;
+            System.arraycopy(bestS, 0, s, 0, bestN);
+            last = bestP;
+            return bestN;
+        }
     }
 
     /** Whether the origin and {@code d} lie on opposite sides of plane abc (degenerate: treated as outside). */
