@@ -39,7 +39,7 @@ class RoboproCommandTest {
     @Test
     void mixins_calibrateDiagnoseSimulate_shareRobotOutAndForceOptions() {
         CommandLine root = RoboproCommand.commandLine();
-        for (String name : List.of("simulate", "measurements", "calibrate", "diagnose")) {
+        for (String name : List.of("simulate", "calibrate", "diagnose")) {
             var spec = root.getSubcommands().get(name).getCommandSpec();
             assertTrue(spec.mixins().containsKey("robot") && spec.mixins().containsKey("out"), name + ": " + spec.mixins().keySet());
             assertTrue(spec.findOption("--robot").required() && spec.findOption("--out").required(), name);
