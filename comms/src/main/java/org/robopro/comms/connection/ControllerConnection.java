@@ -85,7 +85,7 @@ public final class ControllerConnection implements AutoCloseable {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         cmd.add("-cp");
-        cmd.add(System.getProperty("java.class.path"));
+        cmd.add(childClassPath());
         cmd.add(ControllerSim.class.getName());
         cmd.addAll(options.withPortFile(portFile).toArgs());
         cmd.add("--stop-on-stdin-eof");
@@ -118,6 +118,16 @@ public final class ControllerConnection implements AutoCloseable {
 
     public static ControllerConnection startSimulator(ControllerSim.Config options) throws IOException {
         return startSimulator(options, Duration.ofSeconds(30), CommandInvoker.Options.DEFAULT);
+    }
+
+    /**
+     * This JVM's module path and class path as one class path for a child JVM (when robopro runs as
+     * named modules, e.g. under the module-path test runner, the class path alone lacks them).
+     */
+    static String childClassPath() {
+        String cp = System.getProperty("java.class.path", ""), mp = System.getProperty("jdk.module.path", "");
+        if (mp.isEmpty()) return cp;
+        return cp.isEmpty() ? mp : mp + java.io.File.pathSeparator + cp;
     }
 
     /** Starts the simulated controller inside this JVM (its TCP server on loopback) and connects to it. */

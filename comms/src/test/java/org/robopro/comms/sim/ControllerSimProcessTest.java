@@ -31,7 +31,7 @@ class ControllerSimProcessTest {
         Path portFile = dir.resolve("port");
         Path log = dir.resolve("sim.log");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), ControllerSim.class.getName(),
+        Process p = new ProcessBuilder(java, "-cp", classPath(), ControllerSim.class.getName(),
                 "--tcp", "127.0.0.1:0", "--port-file", portFile.toString(), "--seed", "3", "--error-mm", "0.5", "--noise-mm", "0")
                 .redirectErrorStream(true).redirectOutput(log.toFile()).start();
         try {
@@ -131,7 +131,7 @@ class ControllerSimProcessTest {
     void startedByAnotherJvm_stdinClosed_simulatorStops() throws Exception {
         Path portFile = dir.resolve("port");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), ControllerSim.class.getName(),
+        Process p = new ProcessBuilder(java, "-cp", classPath(), ControllerSim.class.getName(),
                 "--tcp", "127.0.0.1:0", "--port-file", portFile.toString(), "--stop-on-stdin-eof")
                 .redirectErrorStream(true).redirectOutput(dir.resolve("sim.log").toFile()).start();
         try {
@@ -155,5 +155,11 @@ class ControllerSimProcessTest {
         } catch (java.io.IOException e) {
             return e.toString();
         }
+    }
+
+    /** This JVM's module path and class path as a child's class path (the tests may run on the module path). */
+    private static String classPath() {
+        String cp = System.getProperty("java.class.path", ""), mp = System.getProperty("jdk.module.path", "");
+        return mp.isEmpty() ? cp : cp.isEmpty() ? mp : mp + java.io.File.pathSeparator + cp;
     }
 }
