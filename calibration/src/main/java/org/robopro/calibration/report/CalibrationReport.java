@@ -324,7 +324,10 @@ public final class CalibrationReport {
             h.append("</table>\n");
         }
         h.append("<h2>Error per pose</h2>\n").append(Svg.plot("Before: nominal model", "pose (file order)", "position error (mm)", before, false))
-         .append("\n").append(Svg.plot("After: calibrated model", "pose (file order)", "position error (mm)", after, false)).append("\n");
+         .append("\n").append(Svg.plot("After: calibrated model", "pose (file order)", "position error (mm)", after, false,
+                 // The noise floor: the RMS of a 3-D error whose components have the estimated noise sigma.
+                 Double.isFinite(r.sigmaPosM()) ? List.of(new Svg.Line("noise floor √3·σ", Units.mToMm(r.sigmaPosM()) * Math.sqrt(3), "#2ca02c"))
+                         : List.of())).append("\n");
         List<Svg.Series> hist = new ArrayList<>();
         hist.add(new Svg.Series("training", null, values(r.train(), true), "#1f77b4", false));
         if (!r.validate().isEmpty()) hist.add(new Svg.Series("validation", null, values(r.validate(), true), "#ff7f0e", false));

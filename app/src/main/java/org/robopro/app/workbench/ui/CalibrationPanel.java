@@ -243,7 +243,7 @@ public final class CalibrationPanel extends JPanel {
         effects.setCaretPosition(0);
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
         all.addAll(r.validate());
-        plot.set(all);
+        plot.set(all, Double.isFinite(r.sigmaPosM()) ? r.sigmaPosM() * 1e3 * Math.sqrt(3) : Double.NaN);
         tabs.setSelectedIndex(0);
         updateButtons();
     }
@@ -473,10 +473,13 @@ public final class CalibrationPanel extends JPanel {
     /** Sorted per-pose errors before (grey) and after (orange) calibration, log scale. */
     private static final class ErrorPlot extends JPanel {
         private double[] before = new double[0], after = new double[0];
+        private double noiseMm = Double.NaN;
 
-        void set(List<CalibrationResult.PoseError> es) {
+        /** The poses' errors and the noise floor (mm; NaN: none drawn). */
+        void set(List<CalibrationResult.PoseError> es, double noiseFloorMm) {
             before = es.stream().mapToDouble(CalibrationResult.PoseError::nominalM).sorted().toArray();
             after = es.stream().mapToDouble(CalibrationResult.PoseError::calibratedM).sorted().toArray();
+            noiseMm = noiseFloorMm;
             repaint();
         }
 
@@ -490,16 +493,30 @@ public final class CalibrationPanel extends JPanel {
             g.setColor(Color.WHITE);
             g.fillRect(x0, y0, w, h);
             if (before.length == 0 || w < 10 || h < 10) return;
-            double lo = 1e-3, hi = 100; // mm, log scale
+            // The reports' axis routine: decades around the data (mm, log scale).
+            double min = Double.POSITIVE_INFINITY, max = 0;
+            for (double[] a : new double[][] {before, after})
+                for (double v : a) if (v > 0) { min = Math.min(min, v * 1e3); max = Math.max(max, v * 1e3); }
+            if (noiseMm > 0) { min = Math.min(min, noiseMm); max = Math.max(max, noiseMm); }
+            org.robopro.calibration.report.Axis.Ticks t = org.robopro.calibration.report.Axis.log(min, max);
+            double lo = t.lo(), hi = t.hi();
             g.setFont(g.getFont().deriveFont(10f));
-            for (double d = lo; d <= hi * 1.001; d *= 10) {
-                int y = y0 + h - (int) Math.round(h * Math.log10(d / lo) / Math.log10(hi / lo));
+            for (int i = 0; i < t.values().length; i++) {
+                int y = y0 + h - (int) Math.round(h * t.fraction(t.values()[i]));
                 g.setColor(new Color(0xE0E0E0));
                 g.drawLine(x0, y, x0 + w, y);
                 g.setColor(Color.DARK_GRAY);
-                g.drawString(d >= 1 ? String.format(Locale.ROOT, "%.0f mm", d) : String.format(Locale.ROOT, "%s mm", d), in.left + 2, y + 4);
+                g.drawString(t.labels()[i], in.left + 2, y + 4);
             }
-            g.drawString("poses, sorted by error", x0 + w / 2 - 50, y0 + h + 15);
+            g.drawString("mm; poses sorted by error", x0 + w / 2 - 60, y0 + h + 15);
+            if (noiseMm > 0) {
+                int y = y0 + h - (int) Math.round(h * t.fraction(noiseMm));
+                g.setColor(new Color(0x2E7D32));
+                g.setStroke(new java.awt.BasicStroke(1.2f, java.awt.BasicStroke.CAP_BUTT, java.awt.BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+                g.drawLine(x0, y, x0 + w, y);
+                g.drawString("noise floor", x0 + 4, y - 3);
+                g.setStroke(new java.awt.BasicStroke());
+            }
             curve(g, before, new Color(0x8A9099), x0, y0, w, h, lo, hi);
             curve(g, after, new Color(0xF07A1A), x0, y0, w, h, lo, hi);
         }
