@@ -75,9 +75,18 @@ public final class WorldCampaigns {
         return measure(nominal, w, plan.apply(Campaign.Plan.defaults(seed)));
     }
 
+    /** A world scenario's trial (its robot and campaign), read back as a user's file would be. */
+    public static Sim of(Scenario.Trial t) {
+        RobotDescription nominal = org.robopro.models.RobotLibrary.shipped(t.scenario().robot());
+        return read(nominal, t.world(), t.campaign());
+    }
+
     /** Measures a world robot and reads the file back as a user's file would be. */
     public static Sim measure(RobotDescription nominal, WorldRobot w, Campaign.Plan plan) {
-        Campaign.Result c = Campaign.run(w, nominal, plan);
+        return read(nominal, w, Campaign.run(w, nominal, plan));
+    }
+
+    private static Sim read(RobotDescription nominal, WorldRobot w, Campaign.Result c) {
         List<org.robopro.models.JointType> types = nominal.joints().stream().map(JointDescription::type).toList();
         MeasurementSet all = MeasurementReader.parse("world-" + nominal.name() + ".csv", c.text(), types);
         MeasurementSet val = all.split(Measurement.Split.VALIDATE);

@@ -35,7 +35,6 @@ class DiagnosisBenchmarkTest {
 
     /** Scenario -> what the diagnosis did on the CI seed when it was last checked. */
     static final Map<String, String> KNOWN_FAILURES = Map.ofEntries(
-            Map.entry("outside: bump in the angle of j3", "named joint-compliance j3 and joint-scale j3: a wrong claim, 4.4x floor"),
             Map.entry("outside: measured point sags with reach", "named gear-periodic j2 and joint-compliance j2: a wrong claim, 1.37x floor"));
 
     @Test

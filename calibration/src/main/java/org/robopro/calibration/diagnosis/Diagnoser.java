@@ -118,6 +118,8 @@ public final class Diagnoser {
         // decides; if it differs, diagnose again with its outliers.
         List<String> under = outliersUnder(d, train);
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
+        // Many poses beyond 5 robust sigmas are a structure the model leaves (reported), not bad measurements.
+        if (under.size() > Math.max(3, 0.05 * train.size())) return d;
         return run(robot, train, validate, o, under, t0, dirs.source());
     }
 
@@ -170,6 +172,12 @@ public final class Diagnoser {
         Calibrator.Options co = Calibrator.Options.defaults().withCancel(o.cancel());
         if (forcedOutliers != null) co = co.withOutliers(co.outlierK(), false);
         CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
+        boolean manyOutliers = forcedOutliers == null && geo.outliers().size() > Math.max(3, 0.05 * train.size());
+        if (manyOutliers) {
+            // Many poses beyond the rule are a structure the geometry leaves (to locate), not bad measurements.
+            co = co.withOutliers(co.outlierK(), false);
+            geo = Calibrator.calibrate(model, train, validate, co);
+        }
         Set<String> outlierIds = new HashSet<>(forced);
         List<String> outliers = new ArrayList<>(forced.isEmpty() ? List.of() : forcedOutliers);
         if (forcedOutliers == null)
@@ -189,6 +197,9 @@ public final class Diagnoser {
         List<Effect> family = new ArrayList<>();
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null))
             if (e.testableOn(rows)) family.add(e);
+        if (manyOutliers)
+            notes.add("more than 5 % of the poses lie beyond 5 robust sigmas of the geometric fit: too many to be bad "
+                    + "measurements, so none was left out (the structure they show is located below)");
         if (gravity == null)
             notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
                     + "add a mass_model to test it");
