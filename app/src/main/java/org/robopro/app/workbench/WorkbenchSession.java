@@ -395,10 +395,20 @@ public final class WorkbenchSession implements AutoCloseable {
                 }
                 st = s.status().join();
             }
-            log("Controller status after the run: " + st);
+            log("Controller after the run: " + describe(st));
             model.setGhostQ(s.readJoints().join());
             return st;
         }, background).whenComplete((st, e) -> { if (e != null) log("Run failed: " + rootMessage(e)); });
+    }
+
+    /** A controller status in words for the log ("idle, program Weld, no errors, clock 12.40 s"). */
+    static String describe(org.robopro.comms.ControllerStatus st) {
+        StringBuilder b = new StringBuilder(st.state().name().toLowerCase(java.util.Locale.ROOT));
+        if (st.program() != null && !st.program().isBlank()) b.append(", program ").append(st.program());
+        b.append(st.errorCount() == 0 ? ", no errors" : ", " + st.errorCount() + (st.errorCount() == 1 ? " error" : " errors"));
+        if (st.errorCount() > 0 && st.lastErrorMessage() != null && !st.lastErrorMessage().isBlank())
+            b.append(" (last: ").append(st.lastErrorMessage()).append(st.lastError() == null ? "" : ", code " + st.lastError()).append(')');
+        return b.append(String.format(java.util.Locale.ROOT, ", clock %.2f s", st.clockS())).toString();
     }
 
     /** Reads the real robot's joints and shows them as the ghost robot. */

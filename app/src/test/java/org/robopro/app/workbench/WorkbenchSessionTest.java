@@ -255,4 +255,12 @@ class WorkbenchSessionTest {
             ProjectRoundTrip.assertSame(s.model().snapshot(), other.model().snapshot());
         }
     }
+
+    @Test
+    void describe_controllerStatus_inWordsNotARecordDump() {
+        String idle = WorkbenchSession.describe(new org.robopro.comms.ControllerStatus(
+                org.robopro.comms.ControllerStatus.State.IDLE, "Weld", 0, null, "", 12.4));
+        assertEquals("idle, program Weld, no errors, clock 12.40 s", idle);
+        assertFalse(idle.contains("ControllerStatus["), idle);
+    }
 }
