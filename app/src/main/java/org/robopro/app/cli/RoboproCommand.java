@@ -19,6 +19,7 @@ import picocli.CommandLine.Command;
                 FkCommand.class,
                 IkCommand.class,
                 SimulateCommand.class,
+                MeasurementsCommand.class,
                 CalibrateCommand.class,
                 DiagnoseCommand.class,
                 CompensateCommand.class,

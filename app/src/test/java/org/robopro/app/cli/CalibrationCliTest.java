@@ -180,4 +180,32 @@ class CalibrationCliTest {
         assertEquals(freeRms, om.readTree(start.resolve("summary.json").toFile()).get("train_rms_mm").asDouble(), 0.05 * freeRms);
         assertEquals(2, run("calibrate", "--robot", "irb2000", "--measurements", m, "--base", "1,2", "--out", dir.resolve("bad").toString()));
     }
+
+    @Test
+    void measurementsJoin_pointListAndJointLog_campaignThatCalibrates() throws Exception {
+        Path sim = dir.resolve("sim");
+        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "60", "--target", "80,40,150", "--seed", "9",
+                "--out", sim.toString()), err.toString());
+        // Split the simulated campaign into what a tracker and a controller would export: names, points; names, joints.
+        List<String> lines = Files.readAllLines(sim.resolve("measurements.csv"));
+        StringBuilder pts = new StringBuilder("# frame: tracker\nname,x,y,z\n"), log = new StringBuilder("name,q1,q2,q3,q4,q5,q6\n");
+        for (String l : lines) {
+            if (l.startsWith("#") || l.startsWith("pose")) continue;
+            String[] c = l.split(",");
+            pts.append("P").append(c[0]).append(',').append(c[7]).append(',').append(c[8]).append(',').append(c[9]).append('\n');
+            log.append("P").append(c[0]);
+            for (int k = 1; k <= 6; k++) log.append(',').append(c[k]);
+            log.append('\n');
+        }
+        Path p = dir.resolve("points.csv"), j = dir.resolve("joints.csv"), joined = dir.resolve("joined.csv");
+        Files.writeString(p, pts);
+        Files.writeString(j, log);
+        assertEquals(0, run("measurements", "join", "--robot", "irb2000", "--points", p.toString(), "--joints", j.toString(),
+                "--out", joined.toString()), err.toString());
+        assertTrue(out.toString().contains("60 poses"), out.toString());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", joined.toString(), "--out", dir.resolve("cal").toString()),
+                err.toString());
+        JsonNode s = new ObjectMapper().readTree(dir.resolve("cal/summary.json").toFile());
+        assertTrue(s.get("train_rms_mm").asDouble() < 0.05, s.get("train_rms_mm").toString());
+    }
 }

@@ -17,7 +17,7 @@ class RoboproCommandTest {
     void help_root_commandsListedInTheOrderAUserMeetsThem() {
         assertEquals(0, run("--help"));
         String text = cli.out();
-        List<String> expected = List.of("workbench", "demo", "model", "fk", "ik", "simulate", "calibrate", "diagnose", "compensate",
+        List<String> expected = List.of("workbench", "demo", "model", "fk", "ik", "simulate", "measurements", "calibrate", "diagnose", "compensate",
                 "program", "link", "controller-sim", "diagnose-benchmark", "help");
         List<String> listed = new ArrayList<>();
         boolean in = false;

@@ -30,6 +30,7 @@ public final class MeasurementReader {
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
     private static final Pattern Q_COL = Pattern.compile("q([1-9]\\d{0,2})");
     private static final Pattern DIR_COL = Pattern.compile("dir([1-9]\\d{0,2})");
+    private static final Pattern MULTI_POINT_COL = Pattern.compile("[xyz][1-9]\\d{0,2}");
     private static final String MAGIC = "robopro-measurements";
 
     private MeasurementReader() { }
@@ -118,6 +119,15 @@ public final class MeasurementReader {
                 if (qm.matches()) maxQ = Math.max(maxQ, Integer.parseInt(qm.group(1)));
                 var dm = DIR_COL.matcher(name);
                 if (dm.matches()) maxDir = Math.max(maxDir, Integer.parseInt(dm.group(1)));
+            }
+            // Several measured points per pose need one tool point each in identification, which
+            // is not supported yet: refuse such a file rather than ignore its extra points or fit
+            // several reflectors as one.
+            for (Field f : cols) {
+                String name = f.text.toLowerCase(Locale.ROOT);
+                if (name.equals("point") || MULTI_POINT_COL.matcher(name).matches())
+                    throw error(headerLine, f.col, name, "several measured points per pose are not supported yet; "
+                            + "give one measured point per pose (columns x, y, z; one file per reflector)");
             }
             for (String req : new String[] {"pose", "x", "y", "z"})
                 if (!index.containsKey(req))

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.BufferedWriter;
+import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Collections;
@@ -44,7 +45,10 @@ class LargeCampaignReadTest {
         }
         long mb = Files.size(f) >> 20;
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(java, "-Xmx1g", "-cp", System.getProperty("java.class.path"), LargeCampaignReadTest.class.getName(),
+        // Surefire runs this module's tests on the module path: the child gets both paths as its class path.
+        String cp = String.join(File.pathSeparator, System.getProperty("java.class.path", ""),
+                System.getProperty("jdk.module.path", ""));
+        Process p = new ProcessBuilder(java, "-Xmx1g", "-cp", cp, LargeCampaignReadTest.class.getName(),
                 f.toString()).redirectErrorStream(true).start();
         String out = new String(p.getInputStream().readAllBytes()).strip();
         int code = p.waitFor();

@@ -7,7 +7,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.Random;
 import org.robopro.calibration.JointEffect;
 import org.robopro.calibration.PoseConditions;
@@ -19,11 +18,7 @@ import org.robopro.kinematics.Units;
 import org.robopro.calibration.simulation.SimulationSettings;
 import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.calibration.simulation.TrueRobot;
-import org.robopro.kinematics.IkSolution;
-import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
-import org.robopro.kinematics.Pose;
-import org.robopro.models.JointDescription;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 
@@ -36,7 +31,7 @@ import org.robopro.models.Vec3;
  * pose, Gaussian noise — plus the {@link SimEffects} chosen (diagnosis' own effects, sizes drawn
  * from the seed unless given). Immutable.
  */
-public final class TrueSimulatedRobot implements SimulatedRobot {
+public final class TrueSimulatedRobot extends NominalController {
 
     /**
      * @param errorM        RMS flange position error of the nominal model against the physical robot, m
@@ -59,10 +54,7 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
         public Options withEffects(List<String> e) { return new Options(errorM, noiseM, nominalTarget, e); }
     }
 
-    private final RobotDescription description;
-    private final KinematicModel nominal;
     private final TrueRobot truth;
-    private final InverseKinematics ik;
     private final boolean thermal;
     private final List<Effect.Term> effects;
     private final List<String> specs;       // the effect specs as given, or empty
@@ -70,13 +62,11 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
 
     private TrueSimulatedRobot(RobotDescription d, KinematicModel nominal, TrueRobot truth, List<Effect.Term> effects,
                                List<String> specs, Campaign campaign) {
+        super(d, nominal);
         this.effects = List.copyOf(effects);
         this.specs = List.copyOf(specs);
         this.campaign = campaign;
-        this.description = d;
-        this.nominal = nominal;
         this.truth = truth;
-        this.ik = InverseKinematics.of(nominal);
         this.thermal = SimEffects.thermal(truth.effects());
     }
 
@@ -135,23 +125,6 @@ public final class TrueSimulatedRobot implements SimulatedRobot {
     public TrueRobot truth() { return truth; }
 
     public RobotDescription description() { return description; }
-
-    @Override public String name() { return description.name(); }
-
-    @Override public int dof() { return nominal.dof(); }
-
-    @Override public double[] lowerLimits() { return description.joints().stream().mapToDouble(JointDescription::min).toArray(); }
-
-    @Override public double[] upperLimits() { return description.joints().stream().mapToDouble(JointDescription::max).toArray(); }
-
-    @Override public double[] maxSpeeds() { return description.joints().stream().mapToDouble(JointDescription::maxSpeed).toArray(); }
-
-    @Override public Pose nominalFlange(double[] q) { return nominal.flange(q); }
-
-    @Override
-    public Optional<double[]> inverse(Pose baseTflange, double[] qSeed) {
-        return ik.solveNear(baseTflange, qSeed).map(IkSolution::q);
-    }
 
     @Override public Vec3 measure(double[] q, PoseConditions c, Random rng) { return truth.measure(q, c, rng); }
 

@@ -6,14 +6,9 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.Random;
 import org.robopro.calibration.PoseConditions;
-import org.robopro.kinematics.IkSolution;
-import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
-import org.robopro.kinematics.Pose;
-import org.robopro.models.JointDescription;
 import org.robopro.models.JsonMapper;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
@@ -28,19 +23,14 @@ import org.robopro.world.WorldRobot;
  * diagnosis family), under the controller's real approach directions, clock, warm-up and payload.
  * Immutable.
  */
-public final class WorldSimulatedRobot implements SimulatedRobot {
-    private final RobotDescription description;
-    private final KinematicModel nominal;
-    private final InverseKinematics ik;
+public final class WorldSimulatedRobot extends NominalController {
     private final Scenario scenario;
     private final long seed;
     private final WorldRobot world;
     private final double noiseM;
 
     private WorldSimulatedRobot(RobotDescription d, Scenario scenario, long seed, WorldRobot world, double noiseM) {
-        this.description = d;
-        this.nominal = KinematicModel.build(d);
-        this.ik = InverseKinematics.of(nominal);
+        super(d, KinematicModel.build(d));
         this.scenario = scenario;
         this.seed = seed;
         this.world = world;
@@ -78,23 +68,6 @@ public final class WorldSimulatedRobot implements SimulatedRobot {
         } catch (IOException e) {
             throw new IllegalStateException(e);
         }
-    }
-
-    @Override public String name() { return description.name(); }
-
-    @Override public int dof() { return nominal.dof(); }
-
-    @Override public double[] lowerLimits() { return description.joints().stream().mapToDouble(JointDescription::min).toArray(); }
-
-    @Override public double[] upperLimits() { return description.joints().stream().mapToDouble(JointDescription::max).toArray(); }
-
-    @Override public double[] maxSpeeds() { return description.joints().stream().mapToDouble(JointDescription::maxSpeed).toArray(); }
-
-    @Override public Pose nominalFlange(double[] q) { return nominal.flange(q); }
-
-    @Override
-    public Optional<double[]> inverse(Pose baseTflange, double[] qSeed) {
-        return ik.solveNear(baseTflange, qSeed).map(IkSolution::q);
     }
 
     @Override
