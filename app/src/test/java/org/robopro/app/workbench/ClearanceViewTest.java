@@ -47,6 +47,9 @@ class ClearanceViewTest {
         Properties r = new Properties();
         try (var in = Files.newBufferedReader(out.resolve("results.properties"))) { r.load(in); }
         assertEquals("done", r.getProperty("status"), log);
+        String docs = System.getProperty("robopro.docImages"); // as WorkbenchScenarioTest: refresh the documentation's picture
+        if (docs != null && !docs.isBlank())
+            Files.copy(out.resolve("collision-on.png"), Path.of(docs).resolve("workbench-clearance.png"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
         assertTrue(r.getProperty("readyText").startsWith("clearance "), r.getProperty("readyText"));
         assertTrue(r.getProperty("text").startsWith("COLLISION: tool - "), r.getProperty("text"));
         assertTrue(r.getProperty("highlights").contains("tool=COLLIDING"), r.getProperty("highlights"));
