@@ -28,31 +28,31 @@ import org.robopro.world.WorldRobot;
  * form and read back by the product's reader. Recovery is judged against the world's noise-free
  * points and the world's flange rotations, never against this module's parameters.
  */
-class MultiPointCalibrationTest {
-    static final double SIGMA = 0.02e-3;
+public class MultiPointCalibrationTest {
+    public static final double SIGMA = 0.02e-3;
     /** Three SMRs on the flange, in the world's true flange frame, m: a triangle 60 mm across, 95 mm out. */
-    static final double[][] SMR = {{0.060, 0, 0.095}, {-0.030, 0.052, 0.095}, {-0.030, -0.052, 0.095}};
+    public static final double[][] SMR = {{0.060, 0, 0.095}, {-0.030, 0.052, 0.095}, {-0.030, -0.052, 0.095}};
 
     /** A world robot, its 36 + 36 poses, and the true points of each pose (instrument frame). */
-    record Truth(RobotDescription nominal, WorldRobot world, List<Measurement> train, List<Measurement> validate) {
+    public record Truth(RobotDescription nominal, WorldRobot world, List<Measurement> train, List<Measurement> validate) {
         /** The world's true flange frame in the instrument frame at controller values q. */
-        Rigid flange(double[] q) {
+        public Rigid flange(double[] q) {
             int[] dir = new int[q.length];
             java.util.Arrays.fill(dir, 1);
             return world.target(q, dir, Double.NaN, 0, 0).times(world.flangeToTool().inverse());
         }
 
-        double[] point(double[] q, double[] inFlange) { return flange(q).apply(inFlange); }
+        public double[] point(double[] q, double[] inFlange) { return flange(q).apply(inFlange); }
     }
 
-    static Truth truth(long seed) {
+    public static Truth truth(long seed) {
         RobotDescription nominal = RobotLibrary.shipped("irb2400");
         WorldCampaigns.Sim sim = WorldCampaigns.geometric(nominal, seed, false, p -> p.withPoses(36, 36).withSigma(0));
         return new Truth(nominal, sim.world(), sim.train().rows(), sim.validation().rows());
     }
 
     /** The campaign's file text in the long form: pose, point, q1..q6 (deg), x, y, z (mm) with noise. */
-    static String longForm(Truth t, int points, long seed) { return longForm(t, SMR, points, seed); }
+    public static String longForm(Truth t, int points, long seed) { return longForm(t, SMR, points, seed); }
 
     static String longForm(Truth t, double[][] smr, int points, long seed) {
         Random rng = new Random(seed);
