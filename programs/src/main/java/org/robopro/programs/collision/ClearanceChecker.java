@@ -18,8 +18,9 @@ import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
 
 /**
- * Collision and clearance along a checked program: the robot's links as capsules between
- * consecutive joint origins, the tool as a capsule from the flange to the TCP, the cell's
+ * Collision and clearance along a checked program: the robot's links as capsules (between
+ * consecutive joint origins with a guessed radius, or each link's own, e.g. fitted to its mesh
+ * by {@link CapsuleFit}), the tool as a capsule from the flange to the TCP, the cell's
  * objects as boxes and cylinder hulls, compared by {@link Gjk} at every path sample the path
  * check solved (MoveL/MoveC, 5 mm / 2 deg) and at joint steps of at most
  * {@link Options#maxJointStepRad} for MoveJ/MoveAbsJ. Self-collision between links that are not
