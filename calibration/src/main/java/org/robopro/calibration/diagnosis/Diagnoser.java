@@ -313,7 +313,7 @@ public final class Diagnoser {
             Effect e = selected.get(k);
             if (e.kind() == Effect.Kind.SMOOTH) continue;
             Tester at = w.tester(fit);
-            double own = at.pressReplacing(k, null, null);
+            double own = at.pressFull();
             Effect best = null;
             double bestPress = own;
             for (Effect a : aliases(e, family, selected)) {
@@ -324,19 +324,11 @@ public final class Diagnoser {
             LOG.debug("alias: {} replaced by {} (PRESS {} -> {})", e.label(), best.label(), own, bestPress);
             aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
                     + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
-            selected.remove(k);
-            absorbedCols.remove(e);
-            Fit without = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
-            Candidate bc = w.tester(without).test(best, w.conditions);
-            selected.add(best);
-            absorbedCols.put(best, bc.absorbedMask);
-            Step old = steps.remove(k);
-            fit = w.fit(selected, absorbedCols, without.full, bc);
-            bc.threshold = old.candidate.threshold;
-            steps.add(new Step(bc, fit.trainRms, w.validateRms(fit)));
+            fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, false);
             k = -1; // re-check from the start with the new set
             if (++aliasRounds > 4) break;
         }
+        fit = claimCheck(w, fit, selected, absorbedCols, steps, family, rows, aliasNotes);
         // Where the smooth fallback was needed on a joint, the angle-dependent error there is not one
         // family's: another family's claim on the same drive's angle is withdrawn (the fallback models it).
         for (int k = selected.size() - 1; k >= 0; k--) {
@@ -353,12 +345,12 @@ public final class Diagnoser {
         // With validation data, an effect whose addition did not lower the validation error is not claimed.
         for (int k = selected.size() - 1; k >= 0; k--) {
             double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
-            if (Double.isFinite(before) && Double.isFinite(after) && !(after < before) && selected.get(k).kind() != Effect.Kind.SMOOTH) {
+            if (Double.isFinite(before) && Double.isFinite(after) && !(after < before)) {
                 Effect gone = selected.remove(k);
                 absorbedCols.remove(gone);
                 steps.remove(k);
                 aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
-                        + "so it is not claimed");
+                        + (gone.isFallback() ? "so it is not used (the structure stays reported as located)" : "so it is not claimed"));
                 fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
             }
         }
@@ -467,6 +459,127 @@ public final class Diagnoser {
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
     }
 
+    /**
+     * Takes selected effect {@code k} out and, when {@code by} is given and identifiable on what is
+     * left, puts it in its place. With {@code heldOut}, {@code by} stays only when it lowers the
+     * leave-one-pose-out error of the model without the effect (and the validation error, when
+     * there are validation poses). Returns the new fit.
+     */
+    private static Fit replaceEffect(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                     int k, Effect by, boolean heldOut) {
+        Effect e = selected.remove(k);
+        absorbedCols.remove(e);
+        Step old = steps.remove(k);
+        Fit without = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+        if (by == null) return without;
+        Tester wt = w.tester(without);
+        Candidate bc = wt.test(by, w.conditions);
+        if (bc.keptColumns == 0 || heldOut && !(bc.pressAfter < bc.pressBefore)) return without;
+        selected.add(by);
+        absorbedCols.put(by, bc.absorbedMask);
+        Fit f = w.fit(selected, absorbedCols, without.full, bc);
+        double valWithout = w.validateRms(without), valWith = w.validateRms(f);
+        if (heldOut && Double.isFinite(valWithout) && !(valWith < valWithout)) {
+            selected.remove(selected.size() - 1);
+            absorbedCols.remove(by);
+            return without;
+        }
+        bc.threshold = old.candidate.threshold;
+        steps.add(new Step(bc, f.trainRms, valWith));
+        return f;
+    }
+
+    /** Families whose claim rests on a joint angle's (or the gravity torque's) shape: they must beat the fallbacks. */
+    private static boolean checkedAgainstFallbacks(Effect e) {
+        return switch (e.kind()) {
+            case PERIODIC, SCALE, COUPLING, COMPLIANCE -> true;
+            default -> false;
+        };
+    }
+
+    /**
+     * The generic fallbacks of the variables a family explains: a per-joint smooth spline (at every
+     * resolution the poses support) for a one-joint angle family, the two-joint probe for a
+     * coupling.
+     */
+    static List<Effect> ownFallbacks(Effect e, List<Measurement> rows) {
+        List<Effect> out = new ArrayList<>();
+        switch (e.kind()) {
+            case PERIODIC, SCALE -> {
+                int j = e.joint();
+                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+                if (hi > lo)
+                    for (int nb : Effect.SMOOTH_RESOLUTIONS)
+                        if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()) out.add(Effect.smooth(j, lo, hi, nb));
+            }
+            case COUPLING -> out.add(Effect.pair(e.joint(), e.source()));
+            default -> { }
+        }
+        return out;
+    }
+
+    /**
+     * Never a wrong claim: a physical family stays named only when (a) with it fitted, its own
+     * variables' fallbacks find no significant structure left (Holm over them, and a smaller
+     * leave-one-pose-out error), and (b) it predicts left-out poses better than every fallback put
+     * in its place: its own variables' fallbacks and those of every structure located (per-joint
+     * smooth, two-joint, reach or height). A family that fails is withdrawn; the best fallback takes
+     * its place only when that lowers the held-out error (leave-one-pose-out, and validation when
+     * given) — reported as an unexplained located structure, not as physics.
+     */
+    private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                  List<Effect> family, List<Measurement> rows, List<String> notes) {
+        for (int round = 0; round < 2 * MAX_LOCATED; round++) {
+            boolean changed = false;
+            for (int k = 0; k < selected.size() && !changed; k++) {
+                Effect e = selected.get(k);
+                if (!checkedAgainstFallbacks(e)) continue;
+                Tester at = w.tester(fit);
+                List<Effect> own = ownFallbacks(e, rows);
+                Map<String, Effect> rivals = new LinkedHashMap<>();
+                for (Effect f : own) rivals.put(f.label(), f);
+                for (Effect f : family) if (f.isFallback()) rivals.putIfAbsent(f.label(), f);
+                for (Effect s : selected) rivals.remove(s.label());
+                double pressOwn = at.pressFull();
+                Effect best = null;
+                double bestPress = Double.POSITIVE_INFINITY;
+                for (Effect f : rivals.values()) {
+                    double pf = at.pressReplacing(k, f, w.conditions);
+                    if (pf < bestPress) { bestPress = pf; best = f; }
+                }
+                String why = null;
+                if (best != null && !(pressOwn < bestPress))
+                    why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
+                            + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
+                            bestPress, pressOwn);
+                else {
+                    double thr = w.o.alpha() / Math.max(1, own.size());
+                    for (Effect f : own) {
+                        if (selected.stream().anyMatch(s -> s.label().equals(f.label()))) continue;
+                        Candidate c = at.test(f, w.conditions);
+                        if (c.keptColumns == 0 || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
+                        why = String.format(Locale.ROOT, "%s is not claimed: with it fitted, %s still finds significant structure "
+                                + "in the same variable (F = %.1f, p = %.2g), so the family does not explain what was located",
+                                e.label(), f.label(), c.f, c.p);
+                        double pf = at.pressReplacing(k, f, w.conditions);
+                        if (best == null || pf < bestPress) { best = f; bestPress = pf; }
+                        break;
+                    }
+                }
+                if (why == null) continue;
+                LOG.debug(why);
+                int before = selected.size();
+                fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
+                notes.add(why + (selected.size() == before ? "; " + best.label() + " models the structure instead (held-out error lower)"
+                        : "; no fallback lowers the held-out error, so nothing models it"));
+                changed = true;
+            }
+            if (!changed) break;
+        }
+        return fit;
+    }
+
     /** The selected effect that explains a structure found after the geometric fit, or null. */
     static Effect explainer(Locator.Found f, List<Effect> selected) {
         for (Effect e : selected) {
@@ -476,6 +589,9 @@ public final class Diagnoser {
                 case ANGLE_PERIODIC, ANGLE_SMOOTH -> {
                     if (e.target() == Effect.Target.DRIVE && k != Effect.Kind.BACKLASH
                             && (e.joint() == f.probe.joint || (k == Effect.Kind.COUPLING && e.source() == f.probe.joint))) return e;
+                }
+                case JOINT_PAIR -> {
+                    if ((k == Effect.Kind.PAIR || k == Effect.Kind.COUPLING) && e.joint() == f.probe.joint && e.source() == f.probe.other) return e;
                 }
                 case DIRECTION -> { if (k == Effect.Kind.BACKLASH && e.joint() == f.probe.joint) return e; }
                 case TIME, TEMPERATURE -> { if (thermal) return e; }
@@ -534,6 +650,9 @@ public final class Diagnoser {
             case ANGLE_SMOOTH -> String.format(Locale.ROOT, "sweep joint %d slowly through its range with the other joints still, "
                     + "in both directions, and look for a place-bound error (a damaged gear stretch, a cable or hose pulling).",
                     f.probe.joint + 1);
+            case JOINT_PAIR -> String.format(Locale.ROOT, "move joint %d through its range at several fixed angles of joint %d "
+                    + "(and the reverse) to map how joint %d's error depends on both; look for cross-talk between their drives, "
+                    + "cables or counterbalance.", f.probe.joint + 1, f.probe.other + 1, f.probe.joint + 1);
             case DIRECTION -> String.format(Locale.ROOT, "approach each pose of joint %d from both directions and record "
                     + "dir1..dirN.", f.probe.joint + 1);
             case TIME, TEMPERATURE -> "record temp_c near the arm and near the instrument, and re-measure a fixed reference "
@@ -557,10 +676,12 @@ public final class Diagnoser {
         for (int j = 0; j < dof; j++) {
             java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
             boolean any = false;
+            java.util.TreeSet<Integer> resolutions = new java.util.TreeSet<>();
             for (Locator.Found f : found) {
                 if (f.probe.joint != j) continue;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) { hs.add(f.probe.harmonic); any = true; }
-                if (f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
+                if (f.probe.var == Locator.Var.ANGLE_SMOOTH) { any = true; resolutions.add(f.probe.basis); }
+                if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
             }
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
@@ -572,7 +693,8 @@ public final class Diagnoser {
             if (any) {
                 double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
-                if (hi > lo) out.add(Effect.smooth(j, lo, hi));
+                if (resolutions.isEmpty()) resolutions.add(Effect.SMOOTH_BASIS);
+                if (hi > lo) for (int nb : resolutions) out.add(Effect.smooth(j, lo, hi, nb));
             }
             if (gravity != null) out.add(Effect.complianceRemassed(j, gravity));
         }
@@ -581,6 +703,9 @@ public final class Diagnoser {
             out.add(Effect.driftWithTemperature(t0C));
         }
         if (hasTime) out.add(Effect.driftWithTime());
+        for (Locator.Found f : found)
+            if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
+                out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT, f.probe.lo, f.probe.hi));
         return out;
     }
 
@@ -1002,12 +1127,20 @@ public final class Diagnoser {
             List<Integer> keep = new ArrayList<>();
             double[] r = fit.r.clone();
             for (int c = 0; c < n; c++) {
-                if (free[c] >= a && free[c] < b) { for (int i = 0; i < m; i++) r[i] += fit.jac[i * n + c] * fit.full[free[c]]; }
+                // r(v) ≈ r(0) + J v, so without the effect the residual is r − J v
+                if (free[c] >= a && free[c] < b) { for (int i = 0; i < m; i++) r[i] -= fit.jac[i * n + c] * fit.full[free[c]]; }
                 else keep.add(c);
             }
-            if (alias == null) return pressOf(fit.jac, n, keep, null, 0, fit.r);
+            if (alias == null) return pressOf(fit.jac, n, keep, null, 0, r);
             double[] s = signature(alias, conds);
             return pressOf(fit.jac, n, keep, s, alias.size(), r);
+        }
+
+        /** Leave-one-pose-out error (PRESS) of the linearised joint model as fitted (every free column). */
+        double pressFull() {
+            List<Integer> all = new ArrayList<>();
+            for (int c = 0; c < fit.nf; c++) all.add(c);
+            return pressOf(fit.jac, fit.nf, all, null, 0, fit.r);
         }
 
         /** PRESS of the linear model spanned by columns {@code cols} of jac plus {@code extra} (m x k), with residual r. */
