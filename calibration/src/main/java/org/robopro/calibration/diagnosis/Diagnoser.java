@@ -225,6 +225,8 @@ public final class Diagnoser {
         List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
         family.addAll(fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime));
+        Map<String, Effect> rivals = new LinkedHashMap<>();
+        for (Effect e : locatedFallbacks(foundGeo, rows)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
         int hMax = Locator.harmonicsFor(rows.size());
         if (hMax < Locator.WANTED_HARMONIC)
@@ -246,6 +248,7 @@ public final class Diagnoser {
             if (step > 0 && scannedFit != fit) {
                 // Locate again after each accepted effect: what is left may call for other families or harmonics.
                 List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource), o.alpha(), MAX_LOCATED);
+                for (Effect e : locatedFallbacks(more, rows)) rivals.putIfAbsent(e.label(), e);
                 for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
                     Effect merged = e;
                     if (e.kind() == Effect.Kind.PERIODIC)
@@ -284,12 +287,25 @@ public final class Diagnoser {
             if (best == null || selected.size() >= o.maxEffects()) break;
             implausible.clear(); // only those still significant when selection stops are reported
             Effect chosen = best.effect;
-            selected.add(chosen);
-            absorbedCols.put(chosen, best.absorbedMask);
             remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL));
             notIdent.remove(chosen.label());
-            fit = w.fit(selected, absorbedCols, fit.full, best);
-            steps.add(new Step(best, fit.trainRms, w.validateRms(fit)));
+            int older = -1; // a periodic effect of the same joint whose harmonics the chosen one holds: one effect, not two
+            for (int k = 0; k < selected.size(); k++)
+                if (chosen.kind() == Effect.Kind.PERIODIC && selected.get(k).kind() == Effect.Kind.PERIODIC
+                        && selected.get(k).joint() == chosen.joint()
+                        && Arrays.stream(selected.get(k).harmonics()).allMatch(h -> Arrays.stream(chosen.harmonics()).anyMatch(x -> x == h)))
+                    older = k;
+            if (older >= 0) {
+                double thr = best.threshold;
+                fit = replaceEffect(w, fit, selected, absorbedCols, steps, older, chosen, false);
+                if (!selected.contains(chosen)) continue;
+                steps.get(steps.size() - 1).candidate.threshold = thr;
+            } else {
+                selected.add(chosen);
+                absorbedCols.put(chosen, best.absorbedMask);
+                fit = w.fit(selected, absorbedCols, fit.full, best);
+                steps.add(new Step(best, fit.trainRms, w.validateRms(fit)));
+            }
             // Backward: an effect made redundant by the new one (aliases), or implausible in the joint fit, leaves.
             if (selected.size() >= 2) {
                 int drop = w.weakest(fit, selected, threshold);
@@ -328,7 +344,8 @@ public final class Diagnoser {
             k = -1; // re-check from the start with the new set
             if (++aliasRounds > 4) break;
         }
-        fit = claimCheck(w, fit, selected, absorbedCols, steps, family, rows, aliasNotes);
+        for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
+        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), rows, aliasNotes);
         // Where the smooth fallback was needed on a joint, the angle-dependent error there is not one
         // family's: another family's claim on the same drive's angle is withdrawn (the fallback models it).
         for (int k = selected.size() - 1; k >= 0; k--) {
@@ -529,7 +546,7 @@ public final class Diagnoser {
      * given) — reported as an unexplained located structure, not as physics.
      */
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                  List<Effect> family, List<Measurement> rows, List<String> notes) {
+                                  List<Effect> located, List<Measurement> rows, List<String> notes) {
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -539,7 +556,7 @@ public final class Diagnoser {
                 List<Effect> own = ownFallbacks(e, rows);
                 Map<String, Effect> rivals = new LinkedHashMap<>();
                 for (Effect f : own) rivals.put(f.label(), f);
-                for (Effect f : family) if (f.isFallback()) rivals.putIfAbsent(f.label(), f);
+                for (Effect f : located) rivals.putIfAbsent(f.label(), f);
                 for (Effect s : selected) rivals.remove(s.label());
                 double pressOwn = at.pressFull();
                 Effect best = null;
@@ -549,7 +566,12 @@ public final class Diagnoser {
                     if (pf < bestPress) { bestPress = pf; best = f; }
                 }
                 String why = null;
-                if (best != null && !(pressOwn < bestPress))
+                double pressWithout = at.pressReplacing(k, null, null);
+                if (!(pressOwn < pressWithout)) {
+                    why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
+                            + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
+                    best = null;
+                } else if (best != null && !(pressOwn < bestPress))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
                             bestPress, pressOwn);
@@ -591,7 +613,11 @@ public final class Diagnoser {
                             && (e.joint() == f.probe.joint || (k == Effect.Kind.COUPLING && e.source() == f.probe.joint))) return e;
                 }
                 case JOINT_PAIR -> {
-                    if ((k == Effect.Kind.PAIR || k == Effect.Kind.COUPLING) && e.joint() == f.probe.joint && e.source() == f.probe.other) return e;
+                    // the two joints' error, on either drive (a parallel linkage passes a drive's error on to the other's angle)
+                    if (e.target() == Effect.Target.DRIVE && k != Effect.Kind.BACKLASH
+                            && (e.joint() == f.probe.joint || e.joint() == f.probe.other)
+                            && (k != Effect.Kind.PAIR && k != Effect.Kind.COUPLING || e.source() == f.probe.joint || e.source() == f.probe.other))
+                        return e;
                 }
                 case DIRECTION -> { if (k == Effect.Kind.BACKLASH && e.joint() == f.probe.joint) return e; }
                 case TIME, TEMPERATURE -> { if (thermal) return e; }
@@ -676,11 +702,10 @@ public final class Diagnoser {
         for (int j = 0; j < dof; j++) {
             java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
             boolean any = false;
-            java.util.TreeSet<Integer> resolutions = new java.util.TreeSet<>();
             for (Locator.Found f : found) {
                 if (f.probe.joint != j) continue;
-                if (f.probe.var == Locator.Var.ANGLE_PERIODIC) { hs.add(f.probe.harmonic); any = true; }
-                if (f.probe.var == Locator.Var.ANGLE_SMOOTH) { any = true; resolutions.add(f.probe.basis); }
+                if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
+                if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
             }
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
@@ -693,8 +718,7 @@ public final class Diagnoser {
             if (any) {
                 double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
-                if (resolutions.isEmpty()) resolutions.add(Effect.SMOOTH_BASIS);
-                if (hi > lo) for (int nb : resolutions) out.add(Effect.smooth(j, lo, hi, nb));
+                if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
             if (gravity != null) out.add(Effect.complianceRemassed(j, gravity));
         }
@@ -706,6 +730,25 @@ public final class Diagnoser {
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT, f.probe.lo, f.probe.hi));
+        return out;
+    }
+
+    /**
+     * The fallbacks of located structures, which every angle family must beat (docs/diagnosis.md
+     * "Never a wrong claim"): a joint's smooth error at the resolution it was located with, the
+     * two-joint error, the point's displacement with reach or height. The finer smooth resolutions
+     * are rivals only, not stepwise candidates: with many functions they would take a gear's few
+     * harmonics before the periodic family is tried.
+     */
+    static List<Effect> locatedFallbacks(List<Locator.Found> found, List<Measurement> rows) {
+        List<Effect> out = new ArrayList<>();
+        for (Locator.Found f : found)
+            switch (f.probe.var) {
+                case ANGLE_SMOOTH -> out.add(Effect.smooth(f.probe.joint, f.probe.lo, f.probe.hi, f.probe.basis));
+                case JOINT_PAIR -> out.add(Effect.pair(f.probe.joint, f.probe.other));
+                case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT, f.probe.lo, f.probe.hi));
+                default -> { }
+            }
         return out;
     }
 
@@ -1115,12 +1158,13 @@ public final class Diagnoser {
             return total;
         }
 
-        /**
-         * Leave-one-pose-out error (PRESS) of the linearised joint model with selected effect
-         * {@code k} taken out and {@code alias} (or nothing) put in its place: its free columns are
-         * dropped and its fitted contribution returned to the residual.
-         */
-        double pressReplacing(int k, Effect alias, List<PoseConditions> conds) {
+        /** The linearised model without selected effect k: a basis of its other free columns, and the residual without the effect. */
+        private int withoutK = -1;
+        private double[] withoutU, withoutR;
+        private double[][] withoutH;
+
+        private void without(int k) {
+            if (withoutK == k) return;
             int n = fit.nf;
             int[] free = fit.problem.freeIndices();
             int a = fit.problem.effectOffset(k), b = a + fit.problem.effects().get(k).parameterNames().size();
@@ -1131,40 +1175,82 @@ public final class Diagnoser {
                 if (free[c] >= a && free[c] < b) { for (int i = 0; i < m; i++) r[i] -= fit.jac[i * n + c] * fit.full[free[c]]; }
                 else keep.add(c);
             }
-            if (alias == null) return pressOf(fit.jac, n, keep, null, 0, r);
+            withoutU = basis(fit.jac, m, n, keep);
+            withoutR = r;
+            withoutH = hatBlocks(withoutU, withoutU.length / m);
+            withoutK = k;
+        }
+
+        private double[][] hatBlocks(double[] ub, int rk) {
+            int poses = m / rpp;
+            double[][] h = new double[poses][rpp * rpp];
+            for (int i = 0; i < poses; i++)
+                for (int a1 = 0; a1 < rpp; a1++)
+                    for (int b1 = 0; b1 < rpp; b1++) {
+                        double v = 0;
+                        int ra = (i * rpp + a1) * rk, rb = (i * rpp + b1) * rk;
+                        for (int t = 0; t < rk; t++) v += ub[ra + t] * ub[rb + t];
+                        h[i][a1 * rpp + b1] = v;
+                    }
+            return h;
+        }
+
+        /**
+         * Leave-one-pose-out error (PRESS) of the linearised joint model with selected effect
+         * {@code k} taken out and {@code alias} (or nothing) put in its place: its free columns are
+         * dropped and its fitted contribution returned to the residual.
+         */
+        double pressReplacing(int k, Effect alias, List<PoseConditions> conds) {
+            without(k);
+            int rk = withoutU.length / m;
+            double[] e = projectOut(withoutU, rk, m, withoutR);
+            if (alias == null) return pressBlocks(withoutH, e, null, 0);
+            int ka = alias.size();
             double[] s = signature(alias, conds);
-            return pressOf(fit.jac, n, keep, s, alias.size(), r);
+            List<double[]> qs = new ArrayList<>();
+            double[] x = new double[m];
+            for (int c = 0; c < ka; c++) {
+                double n0 = 0;
+                for (int i = 0; i < m; i++) { x[i] = s[i * ka + c]; n0 += x[i] * x[i]; }
+                if (n0 == 0) continue;
+                double[] y = projectOut(withoutU, rk, m, x);
+                for (int pass = 0; pass < 2; pass++)
+                    for (double[] qv : qs) {
+                        double d = 0;
+                        for (int i = 0; i < m; i++) d += qv[i] * y[i];
+                        for (int i = 0; i < m; i++) y[i] -= d * qv[i];
+                    }
+                double n1 = 0;
+                for (double v : y) n1 += v * v;
+                if (n1 < 1e-20 * n0) continue; // rank tolerance of the model's basis
+                double nn = Math.sqrt(n1);
+                for (int i = 0; i < m; i++) y[i] /= nn;
+                qs.add(y);
+            }
+            int q = qs.size();
+            double[] qm = new double[m * q];
+            for (int t = 0; t < q; t++) {
+                double[] qv = qs.get(t);
+                double d = 0;
+                for (int i = 0; i < m; i++) { qm[i * q + t] = qv[i]; d += qv[i] * e[i]; }
+                for (int i = 0; i < m; i++) e[i] -= d * qv[i];
+            }
+            return pressBlocks(withoutH, e, qm, q);
         }
 
         /** Leave-one-pose-out error (PRESS) of the linearised joint model as fitted (every free column). */
-        double pressFull() {
-            List<Integer> all = new ArrayList<>();
-            for (int c = 0; c < fit.nf; c++) all.add(c);
-            return pressOf(fit.jac, fit.nf, all, null, 0, fit.r);
-        }
+        double pressFull() { return pressBlocks(h0, rPerp, null, 0); }
 
-        /** PRESS of the linear model spanned by columns {@code cols} of jac plus {@code extra} (m x k), with residual r. */
-        double pressOf(double[] jac, int n, List<Integer> cols, double[] extra, int k, double[] r) {
-            int nc = cols.size() + k;
-            double[] all = new double[m * nc];
-            for (int i = 0; i < m; i++) {
-                for (int c = 0; c < cols.size(); c++) all[i * nc + c] = jac[i * n + cols.get(c)];
-                for (int c = 0; c < k; c++) all[i * nc + cols.size() + c] = extra[i * k + c];
-            }
-            List<Integer> idx = new ArrayList<>();
-            for (int c = 0; c < nc; c++) idx.add(c);
-            double[] ub = basis(all, m, nc, idx);
-            int rk = ub.length / m;
-            double[] e = projectOut(ub, rk, m, r);
+        /** Σ_i ‖(I − H_ii)⁻¹ e_i‖² with H_ii = hb_i + Q_i Q_iᵀ (Q m x q, or null). */
+        private double pressBlocks(double[][] hb, double[] e, double[] qm, int q) {
             int poses = m / rpp;
             double total = 0;
             double[] h = new double[rpp * rpp], bb = new double[rpp];
             for (int i = 0; i < poses; i++) {
                 for (int a1 = 0; a1 < rpp; a1++)
                     for (int b1 = 0; b1 < rpp; b1++) {
-                        double v = 0;
-                        int ra = (i * rpp + a1) * rk, rb = (i * rpp + b1) * rk;
-                        for (int t = 0; t < rk; t++) v += ub[ra + t] * ub[rb + t];
+                        double v = hb[i][a1 * rpp + b1];
+                        if (qm != null) for (int t = 0; t < q; t++) v += qm[(i * rpp + a1) * q + t] * qm[(i * rpp + b1) * q + t];
                         h[a1 * rpp + b1] = (a1 == b1 ? 1 : 0) - v;
                     }
                 for (int a1 = 0; a1 < rpp; a1++) bb[a1] = e[i * rpp + a1];
