@@ -117,6 +117,16 @@ public final class Diagnoser {
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
         List<String> under = outliersUnder(d, train);
+        if (!d.outliers().isEmpty()) {
+            // The geometric fit's outliers may be the peak of a structure the effects now model, which a
+            // model fitted without them cannot judge: judge them with the effects fitted to every pose.
+            Diagnosis all = run(robot, train, validate, o, List.of(), t0, dirs.source());
+            if (!all.effects().isEmpty()) {
+                List<String> underAll = outliersUnder(all, train);
+                if (underAll.isEmpty()) return all;
+                if (underAll.size() < under.size()) under = underAll;
+            }
+        }
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
         // Many poses beyond 5 robust sigmas are a structure the model leaves (reported), not bad measurements.
         if (under.size() > Math.max(3, 0.05 * train.size())) return d;
@@ -344,8 +354,6 @@ public final class Diagnoser {
             k = -1; // re-check from the start with the new set
             if (++aliasRounds > 4) break;
         }
-        for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
-        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), rows, aliasNotes);
         // Where the smooth fallback was needed on a joint, the angle-dependent error there is not one
         // family's: another family's claim on the same drive's angle is withdrawn (the fallback models it).
         for (int k = selected.size() - 1; k >= 0; k--) {
@@ -359,6 +367,8 @@ public final class Diagnoser {
                     + " needed the smooth fallback as well, so it is not that family's alone");
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
+        for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
+        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), rows, aliasNotes);
         // With validation data, an effect whose addition did not lower the validation error is not claimed.
         for (int k = selected.size() - 1; k >= 0; k--) {
             double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
@@ -451,6 +461,9 @@ public final class Diagnoser {
         int dfLeft = lastTester.m - lastTester.rank;
         for (Locator.Found f : foundFinal) { rssLeft -= f.c.drss; dfLeft -= f.c.df1; }
         timer.mark("final locate");
+        if (!foundFinal.isEmpty() && !outliers.isEmpty())
+            notes.add("the outlier test is not reliable on these poses: a structure no named effect explains is left (see "
+                    + "located), and poses on it can look like bad measurements; check the poses reported as outliers against it");
         List<String> warnings = warnings(foundFinal, selected, fit, w, rssLeft, dfLeft, rows.size(), model.dof());
         double valFinal = w.validateRms(fit);
         if (Double.isFinite(valFinal)) {
@@ -547,6 +560,7 @@ public final class Diagnoser {
      */
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                   List<Effect> located, List<Measurement> rows, List<String> notes) {
+        int refinements = 0;
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -598,6 +612,34 @@ public final class Diagnoser {
                 changed = true;
             }
             if (!changed) break;
+        }
+        // A smooth fallback takes the resolution that predicts left-out poses best (a bump needs finer knots than a drift).
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.SMOOTH) continue;
+            Tester at = w.tester(fit);
+            double pressOwn = at.pressFull();
+            Effect best = null;
+            double bestPress = pressOwn;
+            for (int nb : Effect.SMOOTH_RESOLUTIONS) {
+                if (nb == e.basisCount() || nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > rows.size()) continue;
+                Effect f = Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb);
+                double pf = at.pressReplacing(k, f, w.conditions);
+                if (pf < bestPress) { bestPress = pf; best = f; }
+            }
+            if (best == null) continue;
+            int before = selected.size();
+            Fit refined = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
+            if (selected.size() < before) { // the finer curve did not hold on held-out data: keep the one fitted
+                Candidate c = w.tester(refined).test(e, w.conditions);
+                selected.add(e);
+                absorbedCols.put(e, c.absorbedMask);
+                refined = w.fit(selected, absorbedCols, refined.full, c.keptColumns > 0 ? c : null);
+                steps.add(new Step(c, refined.trainRms, w.validateRms(refined)));
+            }
+            fit = refined;
+            k = -1;
+            if (selected.stream().filter(x -> x.kind() == Effect.Kind.SMOOTH).count() > 0 && ++refinements > 2 * MAX_LOCATED) break;
         }
         return fit;
     }
