@@ -8,6 +8,7 @@ import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.Vec3;
 import org.robopro.programs.SpeedData;
+import org.robopro.programs.ZoneData;
 
 /**
  * The concrete commands (seed paper §2.1, Fig. 3) and factories for them. Each is a small
@@ -150,7 +151,7 @@ public final class Commands {
         @Override public Void execute(ControllerReceiver r) { r.setZone(zone); return null; }
 
         @Override protected String arguments() {
-            return zone.fine() ? "fine" : String.format(Locale.ROOT, "z%.1f mm", Units.mToMm(zone.pathZoneM()));
+            return zone.finep() ? "fine" : String.format(Locale.ROOT, "z%.1f mm", Units.mToMm(zone.pzoneTcp()));
         }
     }
 

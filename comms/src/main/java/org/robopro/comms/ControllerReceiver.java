@@ -5,6 +5,7 @@ import java.util.List;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
 import org.robopro.programs.SpeedData;
+import org.robopro.programs.ZoneData;
 
 /**
  * The Receiver of the seed paper's Command pattern (§2.1, Fig. 3): the controller as the

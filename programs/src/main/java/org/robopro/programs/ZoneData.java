@@ -20,6 +20,18 @@ public record ZoneData(boolean finep, double pzoneTcp, double pzoneOri, double p
             throw new IllegalArgumentException("zonedata must be finite and >= 0");
     }
 
+    /** A stop point: RAPID's predefined {@code fine}. */
+    public static final ZoneData FINE = new ZoneData(true, 0, 0, 0, 0, 0, 0);
+
+    /**
+     * A fly-by zone from the three sizes open_abb's "set zone" instruction sets (TCP path zone and
+     * orientation path zone in m, tool reorientation zone in rad); the external-axis zones take the
+     * orientation sizes, in the proportions of the predefined data.
+     */
+    public static ZoneData flyBy(double pzoneTcp, double pzoneOri, double zoneOri) {
+        return new ZoneData(false, pzoneTcp, pzoneOri, pzoneOri, zoneOri, pzoneOri, zoneOri);
+    }
+
     /** A zonedata from RAPID's units (mm, mm, mm, deg, mm, deg). */
     public static ZoneData ofRapid(boolean finep, double pzoneTcpMm, double pzoneOriMm, double pzoneEaxMm,
                                    double zoneOriDeg, double zoneLeaxMm, double zoneReaxDeg) {

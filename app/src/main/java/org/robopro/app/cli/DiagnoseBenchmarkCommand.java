@@ -32,6 +32,9 @@ public final class DiagnoseBenchmarkCommand implements Callable<Integer> {
                     + "gravity-elasticity, gear-ratio, cross-coupling, pair")
     String family;
 
+    @Option(names = "--scenario", paramLabel = "TEXT", description = "only the scenarios whose name contains TEXT")
+    String scenario;
+
     @Option(names = "--verbose", description = "print one line per run")
     boolean verbose;
 
@@ -49,6 +52,10 @@ public final class DiagnoseBenchmarkCommand implements Callable<Integer> {
         List<Scenario> scenarios = family == null ? Scenario.catalogue() : Scenario.ofFamily(family);
         if (scenarios.isEmpty())
             throw new IllegalArgumentException("--family " + family + ": no such group (" + String.join(", ", Scenario.families()) + ")");
+        if (scenario != null) {
+            scenarios = scenarios.stream().filter(s -> s.name().contains(scenario)).toList();
+            if (scenarios.isEmpty()) throw new IllegalArgumentException("--scenario " + scenario + ": no scenario's name contains it");
+        }
         var w = spec.commandLine().getOut();
         var err = spec.commandLine().getErr();
         List<DiagnosisBenchmark.Run> runs = DiagnosisBenchmark.run(scenarios, seeds, baseSeed, line -> {

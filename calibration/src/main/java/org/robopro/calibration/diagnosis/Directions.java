@@ -11,10 +11,24 @@ import org.robopro.calibration.measurement.MeasurementSet;
 
 /**
  * Approach directions of a campaign: the recorded {@code dir1..dirN} columns, or, without them,
- * inferred from the order the poses were measured in. A joint's direction at a pose is the sign
- * of its last motion before that pose was measured: the sign of its move from the previous pose,
- * or, when it did not move, the direction it had there (the gear stays on the same flank). The
- * first pose's direction is unknown (0) until a joint has moved.
+ * inferred from the order the poses were measured in. A joint's direction at a pose is the side of
+ * the play its gear rests on: the sign of its last motion that took up the play.
+ *
+ * <p>The physics (lost motion as a dead zone, e.g. Nordin &amp; Gutman, "Controlling mechanical
+ * systems with backlash: a survey", Automatica 38 (2002), §2): the output follows its motor only
+ * while the motor pushes it on one flank; after a reversal the motor must cross the whole play
+ * before the output moves again. So a joint that did not move, or reversed by less than
+ * {@link #PLAY_TOLERANCE} (a controller's read-back jitter, far below any lost motion worth
+ * modelling), stays on the flank of its last real motion, and small moves in one direction add up
+ * from the point the flank was last taken. The direction is on the drive, so it is inferred from the
+ * controller's values q (the file's columns), not from model angles: on a parallel-arm robot
+ * (theta3 = q3 - q2) drive 3's direction is that of q3, whatever theta3 does.
+ *
+ * <p>The first pose: a campaign program starts from the controller's zero position (the
+ * synchronisation position every axis reads 0 in, where a robot is parked and a measuring program
+ * begins), so a joint's first direction is the sign of its first value; a joint whose first value
+ * is within the tolerance of 0 stays unknown (0) until it moves. When the robot really started
+ * elsewhere the first pose's directions can be wrong: record the dir columns to be sure.
  *
  * <p>The order is the whole file's, not the training rows': training and validation rows of one
  * file (same {@link MeasurementSet#source()}, split by the {@code set} column) are merged and
@@ -38,8 +52,12 @@ public final class Directions {
     /** Training and validation sets with directions on every row, and where they came from. */
     public record Prepared(MeasurementSet train, MeasurementSet validate, Source source) { }
 
-    /** A joint that moved less than this (rad or m) between two poses counts as not moved. */
-    static final double STILL = 1e-9;
+    /**
+     * A reversal smaller than this (rad, or m for a prismatic joint) does not change a joint's
+     * direction: 1e-5 rad is 0.0006°, above a controller's joint read-back jitter and well below
+     * the smallest lost motion worth modelling (about 0.005°); 10 µm on a linear axis.
+     */
+    static final double PLAY_TOLERANCE = 1e-5;
 
     private Directions() { }
 
@@ -74,21 +92,34 @@ public final class Directions {
         return out;
     }
 
-    /** Directions per pose id for rows already in measuring order. */
+    /** Directions per pose id for rows already in measuring order, the robot starting from its zero position. */
     static Map<String, int[]> infer(List<Measurement> inOrder) {
+        return inOrder.isEmpty() ? new HashMap<>() : infer(inOrder, new double[inOrder.get(0).dof()]);
+    }
+
+    /**
+     * Directions per pose id for rows already in measuring order, the robot starting at
+     * {@code start} (null: where it started is unknown, so the first pose's directions are 0).
+     * Per joint, the flank it rests on and the motor position where it last took that flank
+     * (or moved further along it).
+     */
+    static Map<String, int[]> infer(List<Measurement> inOrder, double[] start) {
         Map<String, int[]> out = new HashMap<>();
-        double[] prev = null;
-        int[] last = null;
+        double[] taken = start == null ? null : start.clone();
+        int[] d = null;
         for (Measurement m : inOrder) {
             int n = m.dof();
-            int[] d = new int[n];
+            if (taken == null) taken = m.q();
+            if (d == null) d = new int[n];
             for (int j = 0; j < n; j++) {
-                double dq = prev == null ? 0 : m.q(j) - prev[j];
-                d[j] = Math.abs(dq) > STILL ? (int) Math.signum(dq) : last == null ? 0 : last[j];
+                double q = m.q(j), moved = q - taken[j];
+                if (d[j] != 0 && moved * d[j] >= 0) taken[j] = q;               // further along the same flank
+                else if (Math.abs(moved) > PLAY_TOLERANCE) {                    // took up the play the other way (or first real move)
+                    d[j] = moved > 0 ? 1 : -1;
+                    taken[j] = q;
+                }                                                               // else: within the play, still on its flank
             }
-            out.put(m.poseId(), d);
-            prev = m.q();
-            last = d;
+            out.put(m.poseId(), d.clone());
         }
         return out;
     }

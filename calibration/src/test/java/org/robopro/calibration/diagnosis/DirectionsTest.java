@@ -20,10 +20,34 @@ class DirectionsTest {
     void infer_jointThatDidNotMove_keepsItsLastDirection() {
         Map<String, int[]> d = Directions.infer(List.of(row("a", 0, 1, null, 0, 0), row("b", 1, 2, null, 1, 0),
                 row("c", 2, 3, null, 1, -1), row("d", 3, 4, null, 0.5, -1)));
-        assertArrayEquals(new int[] {0, 0}, d.get("a"), "first pose: unknown");
+        assertArrayEquals(new int[] {0, 0}, d.get("a"), "first pose at the zero position: not moved, unknown");
         assertArrayEquals(new int[] {1, 0}, d.get("b"), "joint 2 has not moved yet");
         assertArrayEquals(new int[] {1, -1}, d.get("c"), "joint 1 stood still: still on its + flank");
         assertArrayEquals(new int[] {-1, -1}, d.get("d"));
+    }
+
+    @Test
+    void infer_firstPose_isTheMoveFromTheZeroPosition_orUnknownWithoutAStart() {
+        List<Measurement> rows = List.of(row("a", 0, 1, null, 0.3, -0.2, 0), row("b", 1, 2, null, 0.1, -0.2, 0));
+        Map<String, int[]> d = Directions.infer(rows);
+        assertArrayEquals(new int[] {1, -1, 0}, d.get("a"), "from q = 0: up, down, not moved");
+        assertArrayEquals(new int[] {-1, -1, 0}, d.get("b"));
+        Map<String, int[]> u = Directions.infer(rows, null);
+        assertArrayEquals(new int[] {0, 0, 0}, u.get("a"), "start unknown");
+        assertArrayEquals(new int[] {-1, 0, 0}, u.get("b"));
+    }
+
+    @Test
+    void infer_reversalWithinThePlayTolerance_keepsTheFlank_andSmallMovesAddUp() {
+        double e = 0.4 * Directions.PLAY_TOLERANCE;
+        // joint 1 goes up to 1, then jitters back by e (read-back noise), then goes on down in steps of e.
+        Map<String, int[]> d = Directions.infer(List.of(row("a", 0, 1, null, 1), row("b", 1, 2, null, 1 - e),
+                row("c", 2, 3, null, 1 - 2 * e), row("d", 3, 4, null, 1 - 3 * e), row("e", 4, 5, null, 1 - 2.5 * e)));
+        assertArrayEquals(new int[] {1}, d.get("a"));
+        assertArrayEquals(new int[] {1}, d.get("b"), "0.4 tolerance back: still on the + flank");
+        assertArrayEquals(new int[] {1}, d.get("c"), "0.8 tolerance back from where it took the flank: still +");
+        assertArrayEquals(new int[] {-1}, d.get("d"), "1.2 tolerance back: the play is taken the other way");
+        assertArrayEquals(new int[] {-1}, d.get("e"), "0.5 tolerance up again: stays on the - flank");
     }
 
     @Test
@@ -37,7 +61,7 @@ class DirectionsTest {
         Directions.Prepared p = Directions.prepare(tr, va);
         assertSame(Directions.Source.TIME_ORDER, p.source());
         // time order: t1 (1), v2 (5), t3 (3), v4 (2), t5 (0)
-        assertEquals(0, p.train().rows().get(1).directions()[0], "t1 is the first pose measured");
+        assertEquals(1, p.train().rows().get(1).directions()[0], "t1 is the first pose measured: up from the zero position");
         assertEquals(1, p.validate().rows().get(0).directions()[0], "v2 after t1: up");
         assertEquals(-1, p.train().rows().get(0).directions()[0], "t3 after v2: down (the training rows alone would say up)");
         assertEquals(-1, p.validate().rows().get(1).directions()[0], "v4 after t3: down");

@@ -16,7 +16,7 @@ import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
 import org.robopro.programs.SpeedData;
-import org.robopro.comms.ZoneData;
+import org.robopro.programs.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
 import org.robopro.comms.protocol.Reply;
@@ -175,8 +175,8 @@ public final class ProtocolClient implements ControllerReceiver {
 
     @Override
     public void setZone(ZoneData z) {
-        call(OpenAbb.SET_ZONE, "set zone", z.fine() ? "1" : "0", OpenAbb.num(Units.mToMm(z.pathZoneM()), 4),
-                OpenAbb.num(Units.mToMm(z.oriZoneM()), 4), deg(z.reorientZoneRad()));
+        call(OpenAbb.SET_ZONE, "set zone", z.finep() ? "1" : "0", OpenAbb.num(Units.mToMm(z.pzoneTcp()), 4),
+                OpenAbb.num(Units.mToMm(z.pzoneOri()), 4), deg(z.zoneOri()));
     }
 
     @Override

@@ -10,7 +10,7 @@ import org.robopro.comms.TrackerReading;
 import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
 import org.robopro.programs.SpeedData;
-import org.robopro.comms.ZoneData;
+import org.robopro.programs.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
 import org.robopro.comms.protocol.Request;
@@ -110,7 +110,7 @@ public final class ProtocolHandler {
                 if (fine != 0 && fine != 1) throw new RequestException(r.code(), ErrorCode.BAD_VALUE, "finep must be 0 or 1, got " + fine);
                 double a = r.number(1, "pzone_tcp"), b = r.number(2, "pzone_ori"), d = r.number(3, "zone_ori");
                 if (a < 0 || b < 0 || d < 0) throw new RequestException(r.code(), ErrorCode.BAD_VALUE, "zone sizes must be >= 0");
-                c.setZone(fine == 1 ? ZoneData.FINE : new ZoneData(false, Units.mmToM(a), Units.mmToM(b), Units.degToRad(d)));
+                c.setZone(fine == 1 ? ZoneData.FINE : ZoneData.flyBy(Units.mmToM(a), Units.mmToM(b), Units.degToRad(d)));
                 return "";
             }
             case OpenAbb.BUFFER_ADD -> { r.expectCount(7); c.bufferAdd(pose(r, 0)); return ""; }

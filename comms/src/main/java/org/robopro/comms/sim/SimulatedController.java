@@ -21,7 +21,7 @@ import org.robopro.comms.MotionResult;
 import org.robopro.comms.ProgramInfo;
 import org.robopro.programs.SpeedData;
 import org.robopro.comms.TrackerReading;
-import org.robopro.comms.ZoneData;
+import org.robopro.programs.ZoneData;
 import org.robopro.comms.protocol.Checksums;
 import org.robopro.comms.protocol.OpenAbb;
 import org.robopro.kinematics.Pose;

@@ -64,7 +64,15 @@ class ProtocolClientTcpTest {
         inv.execute(Commands.setTool(tool));
         inv.execute(Commands.setWorkObject(Pose.translation(0.1, 0, 0)));
         inv.execute(Commands.setSpeed(new org.robopro.programs.SpeedData(0.25, 1, 0, 0)));
-        inv.execute(Commands.setZone(org.robopro.comms.ZoneData.FINE));
+        // z5 as open_abb sends it (tcp 5 mm, ori 8 mm, 0.8 deg): the simulator holds RAPID's zonedata.
+        inv.execute(Commands.setZone(org.robopro.programs.ZoneData.predefined("z5").orElseThrow()));
+        org.robopro.programs.ZoneData z5 = sim.zone();
+        assertEquals(0.005, z5.pzoneTcp(), 1e-12);
+        assertEquals(0.008, z5.pzoneOri(), 1e-12);
+        assertEquals(Math.toRadians(0.8), z5.zoneOri(), 1e-9);
+        assertTrue(!z5.finep());
+        inv.execute(Commands.setZone(org.robopro.programs.ZoneData.FINE));
+        assertTrue(sim.zone().finep());
         double[] target = {0.1, -0.2, 0.3, 0.2, -0.1, 0.05};
         MotionResult m = inv.execute(Commands.moveJoints(target));
         assertTrue(m.motionTimeS() > 0);

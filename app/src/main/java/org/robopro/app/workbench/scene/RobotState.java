@@ -21,8 +21,9 @@ import org.robopro.models.Vec3;
  * The robot as the seed paper's "graphic tree" (§6: each tree node a transform group for one
  * link): nested nodes base -> link 1 -> ... -> link n -> flange -> tool, each link's local
  * transform the relative displacement of its joint, driven each frame from the model's joint
- * values. Built-in shapes per link (beams between joint points, joint housings, ABB orange),
- * optional frame axes (Fig. 8 view).
+ * values. Each link is drawn from the robot file's meshes, else robopro's shipped meshes (IRB 2400,
+ * PUMA 560), else the IRB 2000's procedural model ({@link Irb2000Model}), else built-in shapes
+ * (beams between joint points, joint housings); optional frame axes (Fig. 8 view).
  */
 public final class RobotState extends BaseAppState {
     private static final int HOUSING = 0x3A3F47;
@@ -37,6 +38,8 @@ public final class RobotState extends BaseAppState {
     private Tool toolBuiltFor;
     private long jointVersion = -1;
     private boolean framesShown;
+    /** The IRB 2000's parallel-arm linkage, posed each frame; null for other robots. */
+    private Irb2000Model linkage;
 
     /** {@code robotMeshes} resolves a robot file's mesh path (relative to the robot file), or null when it cannot. */
     public RobotState(WorkbenchModel model, Node parent, java.util.function.Function<String, java.nio.file.Path> robotMeshes) {
@@ -89,6 +92,7 @@ public final class RobotState extends BaseAppState {
             jointVersion = jv;
             Pose[] d = k.linkDisplacements(ghost ? ghostQ : model.q());
             for (int i = 1; i < links.length; i++) Shapes.apply(d[i - 1].inverse().times(d[i]), links[i]);
+            if (linkage != null) linkage.pose(links[3]);
         }
         if (model.showFrames() != framesShown) {
             framesShown = model.showFrames();
@@ -118,6 +122,7 @@ public final class RobotState extends BaseAppState {
 
     private void build(RobotKinematics k, Tool tool) {
         robotRoot.detachAllChildren();
+        linkage = null;
         RobotDescription d = k.description();
         int n = d.dof();
         List<JointDescription> js = d.joints();
@@ -226,31 +231,55 @@ public final class RobotState extends BaseAppState {
         return done;
     }
 
-    /** Robots whose link meshes robopro ships (resources beside their licence and attribution), by robot-name prefix. */
-    private static final java.util.Map<String, String[]> SHIPPED_MESHES = java.util.Map.of(
-            "irb2400", new String[] {"base_link", "link_1", "link_2", "link_3", "link_4", "link_5", "link_6"});
+    /** A shipped mesh file of one link, drawn in one colour. */
+    record ShippedPart(int link, String file, int rgb) { }
+
+    private static final int PUMA_BODY = 0xD9D5CB;
+    private static final int PUMA_DARK = 0x33363B;
+    private static final int PUMA_RED = 0xB3261E;
 
     /**
-     * The shipped meshes of a robot whose file names none (the IRB 2400 from ROS-Industrial,
-     * meshes/irb2400/ATTRIBUTION.md), in base coordinates at the zero position like a robot
-     * file's own meshes; also drawn for its calibrated variants. Returns the links that got one.
+     * Robots whose link meshes robopro ships (resources beside their licence and attribution),
+     * by robot-name prefix: the IRB 2400 from ROS-Industrial (meshes/irb2400/ATTRIBUTION.md),
+     * the PUMA 560 from the Robotics Toolbox for Python (meshes/puma560/ATTRIBUTION.md).
+     */
+    static final java.util.Map<String, List<ShippedPart>> SHIPPED_MESHES = java.util.Map.of(
+            "irb2400", List.of(new ShippedPart(0, "base_link", DefaultCell.ABB_ORANGE), new ShippedPart(1, "link_1", DefaultCell.ABB_ORANGE),
+                    new ShippedPart(2, "link_2", DefaultCell.ABB_ORANGE), new ShippedPart(3, "link_3", DefaultCell.ABB_ORANGE),
+                    new ShippedPart(4, "link_4", DefaultCell.ABB_ORANGE), new ShippedPart(5, "link_5", DefaultCell.ABB_ORANGE),
+                    new ShippedPart(6, "link_6", DefaultCell.ABB_ORANGE)),
+            "puma560", List.of(new ShippedPart(0, "link_0", PUMA_BODY), new ShippedPart(1, "link_1", PUMA_BODY),
+                    new ShippedPart(2, "link_2", PUMA_BODY), new ShippedPart(2, "link_2-dark", PUMA_DARK),
+                    new ShippedPart(2, "link_2-red", PUMA_RED), new ShippedPart(3, "link_3", PUMA_BODY),
+                    new ShippedPart(4, "link_4", PUMA_BODY), new ShippedPart(5, "link_5-dark", PUMA_DARK),
+                    new ShippedPart(6, "link_6", PUMA_BODY)));
+
+    /**
+     * The shipped meshes of a robot whose file names none, in base coordinates at the zero
+     * position like a robot file's own meshes; also drawn for its calibrated variants. Returns
+     * the links that got one.
      */
     private java.util.Set<Integer> attachShippedMeshes(RobotDescription d) {
         java.util.Set<Integer> done = new java.util.HashSet<>();
+        if (d.dof() != 6) return done;
         for (var e : SHIPPED_MESHES.entrySet()) {
-            if (!d.name().toLowerCase(java.util.Locale.ROOT).startsWith(e.getKey()) || e.getValue().length != d.dof() + 1) continue;
-            for (int link = 0; link < e.getValue().length; link++) {
-                String res = "/org/robopro/app/workbench/meshes/" + e.getKey() + "/" + e.getValue()[link] + ".stl";
+            if (!d.name().toLowerCase(java.util.Locale.ROOT).startsWith(e.getKey())) continue;
+            for (ShippedPart part : e.getValue()) {
+                String res = "/org/robopro/app/workbench/meshes/" + e.getKey() + "/" + part.file() + ".stl";
                 try (java.io.InputStream in = RobotState.class.getResourceAsStream(res)) {
                     if (in == null) continue;
-                    Geometry g = new Geometry("mesh-" + e.getValue()[link], StlReader.read(in.readAllBytes(), java.nio.file.Path.of(res), 1f));
-                    g.setMaterial(shapes.lit(DefaultCell.ABB_ORANGE));
-                    links[link].attachChild(g);
-                    done.add(link);
+                    Geometry g = new Geometry("mesh-" + part.file(), StlReader.read(in.readAllBytes(), java.nio.file.Path.of(res), 1f));
+                    g.setMaterial(shapes.lit(part.rgb()));
+                    links[part.link()].attachChild(g);
+                    done.add(part.link());
                 } catch (java.io.IOException | RuntimeException ex) {
                     java.util.logging.Logger.getLogger(RobotState.class.getName()).warning("shipped mesh " + res + " not drawn: " + ex.getMessage());
                 }
             }
+        }
+        if (done.isEmpty() && Irb2000Model.fits(d)) {
+            linkage = Irb2000Model.build(d, links, shapes);
+            for (int i = 0; i <= d.dof(); i++) done.add(i);
         }
         return done;
     }

@@ -1,0 +1,52 @@
+package org.robopro.calibration.diagnosis;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.UnaryOperator;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.models.JointDescription;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+import org.robopro.world.Campaign;
+import org.robopro.world.Scenario;
+
+/**
+ * Inferred directions against the truth of the independent world simulator: the world knows, per
+ * pose and per drive, the side of the play each gear really rests on (from the real measuring
+ * sequence, starting at the home position, on the motor side of a parallel-arm linkage). The
+ * campaign is written without dir columns, read back by the product's reader (training and
+ * validation rows interleaved in one file), and every pose's inferred direction must equal the truth.
+ */
+class DirectionsWorldTest {
+    @ParameterizedTest(name = "{0}, {1} order, seed {2}")
+    @CsvSource({"irb2000,NEAREST,1", "irb2000,AS_DRAWN,2", "irb2400,NEAREST,3", "puma560,NEAREST,4", "puma560,AS_DRAWN,5"})
+    void inferredDirections_equalTheWorldsTrueDirections_onEveryPoseAndDrive(String robot, Campaign.Order order, long seed) {
+        Scenario s = Scenario.ofFamily("null").stream().filter(x -> x.robot().equals(robot)).findFirst().orElseThrow();
+        UnaryOperator<Campaign.Plan> plan = p -> p.withDirColumns(false).withOrder(order);
+        Campaign.Result c = s.trial(seed, plan).campaign();
+        RobotDescription r = RobotLibrary.shipped(robot);
+        MeasurementSet all = MeasurementReader.parse("world.csv", c.text(), r.joints().stream().map(JointDescription::type).toList());
+        assertTrue(all.hasSplit() && !all.hasDirections(), "validation rows interleaved, no dir columns");
+        Directions.Prepared p = Directions.prepare(all.split(Measurement.Split.TRAIN), all.split(Measurement.Split.VALIDATE));
+        assertSame(Directions.Source.TIME_ORDER, p.source());
+        Map<String, int[]> inferred = new HashMap<>();
+        for (Measurement m : p.train().rows()) inferred.put(m.poseId(), m.directions());
+        for (Measurement m : p.validate().rows()) inferred.put(m.poseId(), m.directions());
+        List<String> wrong = new ArrayList<>();
+        for (Campaign.Row row : c.rows())
+            for (int j = 0; j < r.dof(); j++)
+                if (inferred.get(row.id())[j] != row.dir()[j]) wrong.add("pose " + row.id() + " drive " + (j + 1));
+        assertEquals(List.of(), wrong, "poses whose inferred direction differs from the world's");
+        assertEquals(c.rows().size(), inferred.size());
+    }
+}
