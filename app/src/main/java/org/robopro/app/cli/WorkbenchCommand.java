@@ -48,6 +48,9 @@ public final class WorkbenchCommand implements Callable<Integer> {
                     + "moves, so the background path check runs during the measurement (default ${DEFAULT-VALUE}).")
     int benchmarkMoves;
 
+    @Option(names = "--no-shadows", description = "Start with shadows off (View → Shadows), e.g. to compare frame rates.")
+    boolean noShadows;
+
     @Option(names = "--first-frame-timeout", defaultValue = "20", paramLabel = "S",
             description = "Fail when no frame is drawn within S seconds (default ${DEFAULT-VALUE}).")
     double firstFrameTimeout;
@@ -75,6 +78,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robopro workbench: " + e.getMessage());
             return 3;
         }
+        if (noShadows) wb.session().model().setShadows(false);
         if (interactive) {
             new CountDownLatch(1).await(); // the window's Exit action ends the process
             return 0;
