@@ -51,6 +51,10 @@ public final class WorkbenchCommand implements Callable<Integer> {
     @Option(names = "--no-shadows", description = "Start with shadows off (View → Shadows), e.g. to compare frame rates.")
     boolean noShadows;
 
+    @Option(names = "--benchmark-edits", defaultValue = "2", paramLabel = "N",
+            description = "With --benchmark-moves: edits per second (0: the program is drawn but never edited; default ${DEFAULT-VALUE}).")
+    double benchmarkEdits;
+
     @Option(names = "--first-frame-timeout", defaultValue = "20", paramLabel = "S",
             description = "Fail when no frame is drawn within S seconds (default ${DEFAULT-VALUE}).")
     double firstFrameTimeout;
@@ -113,9 +117,9 @@ public final class WorkbenchCommand implements Callable<Integer> {
             double[] q = q0.clone();
             q[0] += Math.toRadians(30) * Math.sin(t);
             wb.session().model().setQ(q);
-            long tick = (long) (2 * t);
-            if (!program.isEmpty() && tick != editTick) {
-                // An edit twice a second (a speed change): each one starts a background path check.
+            long tick = (long) (benchmarkEdits * t);
+            if (!program.isEmpty() && benchmarkEdits > 0 && tick != editTick) {
+                // An edit every 1/benchmarkEdits s (a speed change): each one starts a background path check.
                 editTick = tick;
                 List<Instruction> p = new ArrayList<>(program);
                 Instruction i = p.get((int) (tick % p.size()));

@@ -25,11 +25,9 @@ public final class RapidAstWriter {
         StringBuilder b = new StringBuilder("MODULE ").append(m.name());
         if (!m.options().isEmpty()) b.append('(').append(String.join(", ", m.options())).append(')');
         b.append('\n');
-        RapidAst.Item prev = null;
         for (RapidAst.Item it : m.items()) {
-            if (it instanceof RapidAst.Routine && prev != null && !(prev instanceof RapidAst.CommentLine)) b.append('\n');
+            if (it instanceof RapidAst.Routine) b.append('\n'); // a blank line before every routine
             item(b, it, IND);
-            prev = it;
         }
         return b.append("ENDMODULE\n").toString();
     }

@@ -33,13 +33,16 @@ import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
 import org.robopro.programs.WaitTime;
 import org.robopro.programs.ZoneData;
+import org.robopro.programs.rapid.RapidAst.Arg;
+import org.robopro.programs.rapid.RapidAst.Expr;
 
 /**
- * Writes a {@link RapidModule} as a RAPID module a controller loads: two-space indentation
- * (rapidchecker's rule), upper-case keywords, no trailing spaces, a final line break. Names are
- * made valid, at most 32 characters and unique ignoring case; every change is reported.
- * Quaternions are written unit (normalised unless already unit at the file's precision, so an
- * imported file's digits survive). Numbers: see {@link RapidNumbers}.
+ * Writes a {@link RapidModule} as a RAPID module a controller loads: the typed module becomes the
+ * syntax tree it stands for ({@link #tree}), which {@link RapidAstWriter} writes (two-space
+ * indentation, rapidchecker's rule; upper-case keywords; no trailing spaces; a final line
+ * break). Names are made valid, at most 32 characters and unique ignoring case; every change is
+ * reported. Quaternions are written unit (normalised unless already unit at the file's
+ * precision, so an imported file's digits survive). Numbers: see {@link RapidNumbers}.
  */
 public final class RapidWriter {
     /** Decimals written for mm, degrees, quaternion components and other numbers (kg, kg m^2, s). */
@@ -47,17 +50,41 @@ public final class RapidWriter {
         public static final Precision DEFAULT = new Precision(6, 6, 10, 9);
     }
 
-    private static final String IND = "  ";
     private final Precision prec;
+    /** Names as given and numbers as the shortest literals that read back exactly (no precision, no renames). */
+    private final boolean exact;
     private final Map<String, String> names = new HashMap<>(); // lower-case original -> written
     private final List<RapidExport.Rename> renames = new ArrayList<>();
 
-    private RapidWriter(Precision prec) { this.prec = prec; }
+    private RapidWriter(Precision prec, boolean exact) {
+        this.prec = prec;
+        this.exact = exact;
+    }
 
     public static RapidExport export(RapidModule module) { return export(module, Precision.DEFAULT); }
 
     public static RapidExport export(RapidModule module, Precision precision) {
-        return new RapidWriter(precision).write(module);
+        RapidWriter w = new RapidWriter(precision, false);
+        RapidAst.Module tree = w.module(module);
+        return new RapidExport(RapidAstWriter.write(tree), w.renames);
+    }
+
+    /**
+     * The syntax tree {@code module} is exported as (names made valid and unique, values as the
+     * literals written at {@code precision}): what {@link #export} writes and what a controller
+     * (or the interpreter) reads back.
+     */
+    public static RapidAst.Module tree(RapidModule module, Precision precision) {
+        return new RapidWriter(precision, false).module(module);
+    }
+
+    /**
+     * The syntax tree of {@code module} with its names as given and every number the shortest
+     * literal that reads back as the very same value: what the interpreter runs for a module
+     * built in code, so its poses are not rounded to the file's precision.
+     */
+    public static RapidAst.Module exactTree(RapidModule module) {
+        return new RapidWriter(Precision.DEFAULT, true).module(module);
     }
 
     /** Names every module may use without declaring them. */
@@ -73,42 +100,25 @@ public final class RapidWriter {
         return s;
     }
 
-    private RapidExport write(RapidModule m) {
-        planNames(m);
-        StringBuilder b = new StringBuilder();
-        String modName = RapidNames.isValid(m.name()) ? m.name() : RapidNames.sanitize(m.name());
+    private RapidAst.Module module(RapidModule m) {
+        if (!exact) planNames(m);
+        String modName = exact || RapidNames.isValid(m.name()) ? m.name() : RapidNames.sanitize(m.name());
         if (!modName.equals(m.name())) renames.add(new RapidExport.Rename("module", m.name(), modName, "not a valid RAPID name"));
-        b.append("MODULE ").append(modName);
-        if (!m.options().isEmpty()) b.append('(').append(String.join(", ", m.options())).append(')');
-        b.append('\n');
-        boolean afterDecl = false;
+        List<RapidAst.Item> items = new ArrayList<>();
         for (ModuleItem item : m.items()) {
-            if (item instanceof Comment c) {
-                b.append(IND).append('!').append(stripEnd(c.text())).append('\n');
-            } else if (item instanceof Declaration d) {
-                b.append(IND).append(declaration(d)).append('\n');
-                afterDecl = true;
-            } else if (item instanceof Procedure p) {
-                if (afterDecl || b.charAt(b.length() - 2) != '\n') b.append('\n');
-                procedure(b, p);
-                afterDecl = true;
-            } else if (item instanceof AstItem a) {
-                if (a.item() instanceof RapidAst.Routine && (afterDecl || b.charAt(b.length() - 2) != '\n')) b.append('\n');
-                RapidAstWriter.item(b, a.item(), IND);
-                afterDecl = !(a.item() instanceof RapidAst.CommentLine);
-            }
+            if (item instanceof Comment c) items.add(new RapidAst.CommentLine(stripEnd(c.text())));
+            else if (item instanceof Declaration d)
+                items.add(new RapidAst.DataDecl(d.scope(), d.storage(), d.rapidType(), declaredName(d), List.of(), value(d.value())));
+            else if (item instanceof Procedure p) items.add(procedure(p));
+            else if (item instanceof AstItem a) items.add(a.item());
         }
-        b.append("ENDMODULE\n");
-        return new RapidExport(b.toString(), renames);
+        return new RapidAst.Module(modName, m.options(), items);
     }
 
-    private void procedure(StringBuilder b, Procedure p) {
-        b.append(IND).append(p.local() ? "LOCAL " : "").append("PROC ").append(name(p.name())).append("()\n");
-        for (Statement s : p.body()) {
-            if (s instanceof AstStatement a) RapidAstWriter.stmt(b, a.stmt(), IND + IND);
-            else b.append(IND).append(IND).append(statement(s)).append('\n');
-        }
-        b.append(IND).append("ENDPROC\n");
+    private RapidAst.Routine procedure(Procedure p) {
+        List<RapidAst.Stmt> body = new ArrayList<>();
+        for (Statement s : p.body()) body.add(statement(s));
+        return new RapidAst.Routine(p.local(), RapidAst.RoutineKind.PROC, null, name(p.name()), List.of(), body, null, null, null, null);
     }
 
     private static String stripEnd(String s) {
@@ -171,6 +181,7 @@ public final class RapidWriter {
     }
 
     private String name(String n) {
+        if (exact) return n;
         String key = n.toLowerCase(Locale.ROOT);
         String w = names.get(key);
         if (w != null) return w;
@@ -184,20 +195,10 @@ public final class RapidWriter {
         return w;
     }
 
-    // ---------------------------------------------------------------- declarations
-
-    private String declaration(Declaration d) {
-        StringBuilder b = new StringBuilder();
-        if (d.scope() == Declaration.Scope.LOCAL) b.append("LOCAL ");
-        if (d.scope() == Declaration.Scope.TASK) b.append("TASK ");
-        b.append(d.storage().name()).append(' ').append(d.rapidType()).append(' ').append(declaredName(d)).append(":=");
-        b.append(value(d.value())).append(';');
-        return b.toString();
-    }
-
     private final Set<String> written = new HashSet<>();
 
     private String declaredName(Declaration d) {
+        if (exact) return d.name();
         String w = names.get(d.name().toLowerCase(Locale.ROOT));
         if (written.add(w.toLowerCase(Locale.ROOT))) return w;
         // A repeated name: its rename was planned in order; find it.
@@ -207,108 +208,117 @@ public final class RapidWriter {
         throw new IllegalStateException("no name planned for " + d.name());
     }
 
-    /** The RAPID aggregate of a value (RobotStudio's layout: no spaces inside brackets). */
-    public String value(RapidValue v) {
+    // ---------------------------------------------------------------- values
+
+    /** The RAPID aggregate of a value (RobotStudio's layout: no spaces inside brackets), in RAPID units. */
+    private Expr value(RapidValue v) {
         if (v instanceof RobTarget t)
-            return "[" + mm(t.trans()) + "," + quat(t.rot()) + ",[" + t.robconf().cf1() + "," + t.robconf().cf4() + ","
-                    + t.robconf().cf6() + "," + t.robconf().cfx() + "]," + ext(t.extax()) + "]";
+            return agg(mm(t.trans()), quat(t.rot()), agg(integer(t.robconf().cf1()), integer(t.robconf().cf4()),
+                    integer(t.robconf().cf6()), integer(t.robconf().cfx())), ext(t.extax()));
         if (v instanceof JointTarget j) {
-            StringBuilder b = new StringBuilder("[[");
-            for (int k = 0; k < 6; k++) b.append(k > 0 ? "," : "").append(deg(j.robax(k)));
-            return b.append("],").append(ext(j.extax())).append(']').toString();
+            Expr[] q = new Expr[6];
+            for (int k = 0; k < 6; k++) q[k] = deg(j.robax(k));
+            return agg(agg(q), ext(j.extax()));
         }
-        if (v instanceof ToolData t) return "[" + bool(t.robhold()) + "," + pose(t.tframe()) + "," + value(t.tload()) + "]";
-        if (v instanceof WObjData w)
-            return "[" + bool(w.robhold()) + "," + bool(w.ufprog()) + "," + quoted(w.ufmec()) + "," + pose(w.uframe()) + "," + pose(w.oframe()) + "]";
-        if (v instanceof LoadData l)
-            return "[" + other(l.mass()) + "," + mm(l.cog()) + "," + quat(l.aom()) + "," + other(l.ix()) + "," + other(l.iy()) + "," + other(l.iz()) + "]";
+        if (v instanceof ToolData t) return agg(bool(t.robhold()), pose(t.tframe()), value(t.tload()));
+        if (v instanceof WObjData w) return agg(bool(w.robhold()), bool(w.ufprog()), quoted(w.ufmec()), pose(w.uframe()), pose(w.oframe()));
+        if (v instanceof LoadData l) return agg(other(l.mass()), mm(l.cog()), quat(l.aom()), other(l.ix()), other(l.iy()), other(l.iz()));
         if (v instanceof SpeedData s)
-            return "[" + fmt(Units.mToMm(s.vTcp()), prec.mmDecimals()) + "," + deg(s.vOri()) + "," + fmt(Units.mToMm(s.vLeax()), prec.mmDecimals())
-                    + "," + deg(s.vReax()) + "]";
+            return agg(num(fmt(Units.mToMm(s.vTcp()), prec.mmDecimals())), deg(s.vOri()), num(fmt(Units.mToMm(s.vLeax()), prec.mmDecimals())),
+                    deg(s.vReax()));
         if (v instanceof ZoneData z)
-            return "[" + bool(z.finep()) + "," + mmv(z.pzoneTcp()) + "," + mmv(z.pzoneOri()) + "," + mmv(z.pzoneEax()) + ","
-                    + deg(z.zoneOri()) + "," + mmv(z.zoneLeax()) + "," + deg(z.zoneReax()) + "]";
+            return agg(bool(z.finep()), mmv(z.pzoneTcp()), mmv(z.pzoneOri()), mmv(z.pzoneEax()), deg(z.zoneOri()), mmv(z.zoneLeax()),
+                    deg(z.zoneReax()));
         if (v instanceof RapidPose p) return pose(p);
-        if (v instanceof RapidValue.Num n) return RapidNumbers.formatExact(n.value());
+        if (v instanceof RapidValue.Num n) return num(RapidNumbers.formatExact(n.value()));
         if (v instanceof RapidValue.Bool bo) return bool(bo.value());
         if (v instanceof RapidValue.Str s) return quoted(s.value());
         throw new IllegalArgumentException("cannot write " + v);
     }
+
+    /** A number literal from its text; a leading minus is RAPID's sign operator. */
+    private static Expr num(String text) {
+        return text.startsWith("-") ? new RapidAst.Unary("-", new RapidAst.Num(text.substring(1))) : new RapidAst.Num(text);
+    }
+
+    private static Expr integer(int k) { return num(Integer.toString(k)); }
+
+    private static Expr agg(Expr... items) { return new RapidAst.Aggregate(List.of(items)); }
 
     /**
      * A RAPID string literal: backslashes doubled, the quote and control characters as a
      * backslash and two hex digits (RAPID also allows a doubled quote, but rapidchecker 0.1.5
      * rejects it; backslash 22 is the same character and passes both).
      */
-    static String quoted(String s) {
-        StringBuilder b = new StringBuilder("\"");
+    static Expr quoted(String s) {
+        StringBuilder b = new StringBuilder();
         for (char c : s.toCharArray()) {
             if (c == '"') b.append("\\22");
             else if (c == '\\') b.append("\\\\");
             else if (c < ' ' || c > '~') b.append(String.format("\\%02X", (int) (c & 0xFF)));
             else b.append(c);
         }
-        return b.append('"').toString();
+        return new RapidAst.Str(b.toString());
     }
 
-    private static String bool(boolean b) { return b ? "TRUE" : "FALSE"; }
+    private static Expr bool(boolean b) { return new RapidAst.Bool(b); }
 
-    private String pose(RapidPose p) { return "[" + mm(p.trans()) + "," + quat(p.rot()) + "]"; }
+    private Expr pose(RapidPose p) { return agg(mm(p.trans()), quat(p.rot())); }
 
-    private String mm(Vec3 p) { return "[" + mmv(p.x()) + "," + mmv(p.y()) + "," + mmv(p.z()) + "]"; }
+    private Expr mm(Vec3 p) { return agg(mmv(p.x()), mmv(p.y()), mmv(p.z())); }
 
-    private String mmv(double m) { return fmt(Units.mToMm(m), prec.mmDecimals()); }
+    private Expr mmv(double m) { return num(fmt(Units.mToMm(m), prec.mmDecimals())); }
 
-    private String deg(double rad) { return fmt(Units.radToDeg(rad), prec.degDecimals()); }
+    private Expr deg(double rad) { return num(fmt(Units.radToDeg(rad), prec.degDecimals())); }
 
-    private String other(double x) { return fmt(x, prec.otherDecimals()); }
+    private Expr other(double x) { return num(fmt(x, prec.otherDecimals())); }
 
-    private static String fmt(double x, int decimals) { return RapidNumbers.format(x, decimals); }
+    private String fmt(double x, int decimals) { return exact ? RapidNumbers.formatExact(x) : RapidNumbers.format(x, decimals); }
 
-    private String quat(Quaternion q) {
+    private Expr quat(Quaternion q) {
         double tol = Math.pow(10, -prec.quatDecimals()) * 10;
-        Quaternion u = Math.abs(q.norm() - 1) <= tol ? q : q.normalized();
-        return "[" + fmt(u.q1(), prec.quatDecimals()) + "," + fmt(u.q2(), prec.quatDecimals()) + "," + fmt(u.q3(), prec.quatDecimals())
-                + "," + fmt(u.q4(), prec.quatDecimals()) + "]";
+        Quaternion u = exact || Math.abs(q.norm() - 1) <= tol ? q : q.normalized();
+        int d = prec.quatDecimals();
+        return agg(num(fmt(u.q1(), d)), num(fmt(u.q2(), d)), num(fmt(u.q3(), d)), num(fmt(u.q4(), d)));
     }
 
-    private String ext(ExtJoints e) {
-        StringBuilder b = new StringBuilder("[");
-        for (int k = 0; k < 6; k++) {
-            double x = e.get(k);
-            b.append(k > 0 ? "," : "").append(x == ExtJoints.UNUSED ? "9E+09" : fmt(x, prec.mmDecimals()));
-        }
-        return b.append(']').toString();
+    private Expr ext(ExtJoints e) {
+        Expr[] x = new Expr[6];
+        for (int k = 0; k < 6; k++) x[k] = num(fmt(e.get(k), prec.mmDecimals()));
+        return agg(x);
     }
 
     // ---------------------------------------------------------------- statements
 
-    private String statement(Statement s) {
-        if (s instanceof Comment c) return "!" + stripEnd(c.text());
-        if (s instanceof ProcCall p) return name(p.procedure()) + ";";
-        if (s instanceof WaitTime w) return "WaitTime " + RapidNumbers.formatExact(w.seconds()) + ";";
+    private RapidAst.Stmt statement(Statement s) {
+        if (s instanceof Comment c) return new RapidAst.CommentLine(stripEnd(c.text()));
+        if (s instanceof ProcCall p) return new RapidAst.Call(name(p.procedure()), null, List.of());
+        if (s instanceof WaitTime w) return call("WaitTime", List.of(Arg.positional(num(RapidNumbers.formatExact(w.seconds())))));
         if (s instanceof Move m) return move(m);
+        if (s instanceof AstStatement a) return a.stmt();
         throw new IllegalArgumentException("cannot write " + s);
     }
 
-    private String move(Move m) {
-        StringBuilder b = new StringBuilder(m.kind().rapidName()).append(' ');
-        if (m.conc()) b.append("\\Conc, ");
-        m.circPoint().ifPresent(c -> b.append(ref(c)).append(", "));
-        b.append(ref(m.toPoint()));
-        if (m.noEOffs()) b.append("\\NoEOffs");
-        b.append(", ").append(ref(m.speed()));
-        m.v().ifPresent(x -> b.append("\\V:=").append(fmt(Units.mToMm(x), prec.mmDecimals())));
-        m.t().ifPresent(x -> b.append("\\T:=").append(fmt(x, prec.otherDecimals())));
-        b.append(", ").append(ref(m.zone()));
-        m.z().ifPresent(x -> b.append("\\Z:=").append(mmv(x)));
-        b.append(", ").append(name(m.tool()));
-        m.wobj().ifPresent(w -> b.append("\\WObj:=").append(name(w)));
-        return b.append(';').toString();
+    private static RapidAst.Call call(String name, List<Arg> args) { return new RapidAst.Call(name, null, args); }
+
+    private RapidAst.Call move(Move m) {
+        List<Arg> a = new ArrayList<>();
+        if (m.conc()) a.add(new Arg(RapidAst.ArgKind.SWITCH, "Conc", null));
+        m.circPoint().ifPresent(c -> a.add(Arg.positional(ref(c))));
+        a.add(Arg.positional(ref(m.toPoint())));
+        if (m.noEOffs()) a.add(new Arg(RapidAst.ArgKind.SWITCH, "NoEOffs", null));
+        a.add(Arg.positional(ref(m.speed())));
+        m.v().ifPresent(x -> a.add(new Arg(RapidAst.ArgKind.OPTIONAL, "V", num(fmt(Units.mToMm(x), prec.mmDecimals())))));
+        m.t().ifPresent(x -> a.add(new Arg(RapidAst.ArgKind.OPTIONAL, "T", num(fmt(x, prec.otherDecimals())))));
+        a.add(Arg.positional(ref(m.zone())));
+        m.z().ifPresent(x -> a.add(new Arg(RapidAst.ArgKind.OPTIONAL, "Z", mmv(x))));
+        a.add(Arg.positional(new RapidAst.Name(name(m.tool()))));
+        m.wobj().ifPresent(w -> a.add(new Arg(RapidAst.ArgKind.OPTIONAL, "WObj", new RapidAst.Name(name(w)))));
+        return call(m.kind().rapidName(), a);
     }
 
-    private String ref(Ref<?> r) {
-        if (r instanceof Ref.Named<?> n) return name(n.name());
+    private Expr ref(Ref<?> r) {
+        if (r instanceof Ref.Named<?> n) return new RapidAst.Name(name(n.name()));
         return value(((Ref.Inline<?>) r).value());
     }
 }

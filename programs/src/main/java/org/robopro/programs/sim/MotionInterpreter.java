@@ -1,9 +1,7 @@
 package org.robopro.programs.sim;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.HashMap;
-import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -11,31 +9,24 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.Set;
 import org.robopro.kinematics.Pose;
+import org.robopro.kinematics.Units;
 import org.robopro.models.InputException;
 import org.robopro.models.SignalDescription;
-import org.robopro.programs.AstItem;
-import org.robopro.programs.AstStatement;
-import org.robopro.programs.Comment;
 import org.robopro.programs.Declaration;
 import org.robopro.programs.JointTarget;
-import org.robopro.programs.ModuleItem;
 import org.robopro.programs.Move;
-import org.robopro.programs.ProcCall;
-import org.robopro.programs.Procedure;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.RapidValue;
-import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.SpeedData;
-import org.robopro.programs.Statement;
 import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
-import org.robopro.programs.WaitTime;
 import org.robopro.programs.ZoneData;
 import org.robopro.programs.rapid.ParsedAst;
 import org.robopro.programs.rapid.ParsedModule;
 import org.robopro.programs.rapid.RapidAst;
 import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.rapid.RapidWriter;
 import org.robopro.programs.rapid.SourcePos;
 import org.robopro.programs.sim.Values.Arr;
 import org.robopro.programs.sim.Values.Opaque;
@@ -63,10 +54,10 @@ public final class MotionInterpreter {
     /** RAPID functions reading a signal's value. */
     private static final Set<String> SIGNAL_READS = Set.of("DINPUT", "DOUTPUT", "AINPUT", "AOUTPUT", "GINPUT", "GOUTPUT", "TESTDI");
 
-    private final RapidModule module;
-    private final List<RapidModule> libraries;
+    /** The program: the module's syntax tree, and the trees of the task's other modules. */
+    private final RapidAst.Module module;
+    private final List<RapidAst.Module> libraries;
     private final String file;
-    private final Map<Statement, SourcePos> positions;
     /** Syntax trees of the module and its parsed libraries (positions for messages). */
     private final List<ParsedAst> asts;
     private final int maxStatements;
@@ -77,29 +68,39 @@ public final class MotionInterpreter {
     /** Unknown instructions are errors (a controller refuses such a program) instead of notices. */
     private final boolean strict;
 
-    private MotionInterpreter(RapidModule module, List<RapidModule> libraries, String file, Map<Statement, SourcePos> positions,
-                              List<ParsedAst> asts, int maxStatements, JointTarget startJoints, List<SignalDescription> signals,
+    private MotionInterpreter(RapidAst.Module module, List<RapidAst.Module> libraries, String file, List<ParsedAst> asts, int maxStatements, JointTarget startJoints, List<SignalDescription> signals,
                               boolean strict) {
         this.signals = List.copyOf(signals);
         this.strict = strict;
         this.module = module;
         this.libraries = List.copyOf(libraries);
         this.file = file;
-        this.positions = positions;
         this.asts = List.copyOf(asts);
         this.maxStatements = maxStatements;
         this.startJoints = startJoints;
     }
 
-    /** An interpreter of {@code module}; {@code libraries} provide data declared elsewhere (e.g. tools in user.sys). */
+    /**
+     * An interpreter of a module built in code (its syntax tree with the values exact, see
+     * {@link RapidWriter#exactTree}); {@code libraries} provide data declared elsewhere (e.g. tools in user.sys).
+     */
     public static MotionInterpreter of(RapidModule module, RapidModule... libraries) {
-        return new MotionInterpreter(module, List.of(libraries), module.name(), Collections.emptyMap(), List.of(), MAX_STATEMENTS, null, List.of(), false);
+        return new MotionInterpreter(RapidWriter.exactTree(module), trees(libraries), module.name(), List.of(), MAX_STATEMENTS, null,
+                List.of(), false);
     }
 
     /** An interpreter of a parsed file: errors name the file, line and column. */
-    public static MotionInterpreter of(ParsedModule parsed, RapidModule... libraries) {
-        return new MotionInterpreter(parsed.module(), List.of(libraries), parsed.file(), positions(List.of(parsed)),
-                List.of(parsed.ast()), MAX_STATEMENTS, null, List.of(), false);
+    public static MotionInterpreter of(ParsedModule parsed, RapidModule... libraries) { return of(parsed.ast(), libraries); }
+
+    /** An interpreter of a syntax tree read from a file: errors name the file, line and column. */
+    public static MotionInterpreter of(ParsedAst parsed, RapidModule... libraries) {
+        return new MotionInterpreter(parsed.module(), trees(libraries), parsed.file(), List.of(parsed), MAX_STATEMENTS, null, List.of(), false);
+    }
+
+    private static List<RapidAst.Module> trees(RapidModule... modules) {
+        List<RapidAst.Module> out = new ArrayList<>();
+        for (RapidModule m : modules) out.add(RapidWriter.exactTree(m));
+        return out;
     }
 
     /**
@@ -111,22 +112,14 @@ public final class MotionInterpreter {
         List<ParsedModule> all = new ArrayList<>();
         all.add(main);
         all.addAll(others);
-        return new MotionInterpreter(main.module(), others.stream().map(ParsedModule::module).toList(), main.file(), positions(all),
+        return new MotionInterpreter(main.ast().module(), others.stream().map(o -> o.ast().module()).toList(), main.file(),
                 all.stream().map(ParsedModule::ast).toList(), MAX_STATEMENTS, null, List.of(), false);
-    }
-
-    private static Map<Statement, SourcePos> positions(List<ParsedModule> parsed) {
-        IdentityHashMap<Statement, SourcePos> pos = new IdentityHashMap<>();
-        for (ParsedModule m : parsed)
-            for (Procedure p : m.module().procedures())
-                for (Statement s : p.body()) m.position(s).ifPresent(sp -> pos.put(s, sp));
-        return pos;
     }
 
     /** The same interpreter with another bound on executed statements. */
     public MotionInterpreter withMaxStatements(int max) {
         if (max < 1) throw new IllegalArgumentException("max statements must be >= 1: " + max);
-        return new MotionInterpreter(module, libraries, file, positions, asts, max, startJoints, signals, strict);
+        return new MotionInterpreter(module, libraries, file, asts, max, startJoints, signals, strict);
     }
 
     /**
@@ -135,7 +128,7 @@ public final class MotionInterpreter {
      */
     public MotionInterpreter withStartJoints(JointTarget joints) {
         if (joints == null) throw new IllegalArgumentException("start joints must not be null");
-        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, joints, signals, strict);
+        return new MotionInterpreter(module, libraries, file, asts, maxStatements, joints, signals, strict);
     }
 
     /**
@@ -143,7 +136,7 @@ public final class MotionInterpreter {
      * their table value; a signal the program names that is not in the table is a notice.
      */
     public MotionInterpreter withSignals(List<SignalDescription> table) {
-        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, table, strict);
+        return new MotionInterpreter(module, libraries, file, asts, maxStatements, startJoints, table, strict);
     }
 
     /**
@@ -152,7 +145,7 @@ public final class MotionInterpreter {
      * {@link InputException} "not simulated: X at line:col" instead of a notice.
      */
     public MotionInterpreter strict() {
-        return new MotionInterpreter(module, libraries, file, positions, asts, maxStatements, startJoints, signals, true);
+        return new MotionInterpreter(module, libraries, file, asts, maxStatements, startJoints, signals, true);
     }
 
     /** The signal table this interpreter runs with. */
@@ -255,30 +248,42 @@ public final class MotionInterpreter {
                 currentJoint = new Typed(startJoints);
                 lastJointTarget = currentJoint;
             }
-            List<RapidModule> all = new ArrayList<>();
+            List<RapidAst.Module> all = new ArrayList<>();
             all.add(module);
             all.addAll(libraries);
             // Record types and routines first: data initialisers may use them.
-            for (RapidModule m : all)
-                for (ModuleItem it : m.items()) {
-                    if (it instanceof Procedure p) routines.putIfAbsent(Values.lower(p.name()), p);
-                    else if (it instanceof AstItem a && a.item() instanceof RapidAst.Routine r) routines.putIfAbsent(Values.lower(r.name()), r);
-                    else if (it instanceof AstItem a && a.item() instanceof RapidAst.RecordDecl rd) {
+            for (RapidAst.Module m : all)
+                for (RapidAst.Item it : m.items()) {
+                    if (it instanceof RapidAst.Routine r) routines.putIfAbsent(Values.lower(r.name()), r);
+                    else if (it instanceof RapidAst.RecordDecl rd) {
                         List<Values.FieldDef> fs = new ArrayList<>();
                         for (RapidAst.Field f : rd.fields()) fs.add(new Values.FieldDef(f.name(), Values.lower(f.type())));
                         records.putIfAbsent(Values.lower(rd.name()), fs);
-                    } else if (it instanceof AstItem a && a.item() instanceof RapidAst.AliasDecl al)
+                    } else if (it instanceof RapidAst.AliasDecl al)
                         aliases.putIfAbsent(Values.lower(al.name()), Values.lower(al.type()));
                 }
             Frame none = new Frame(module.name());
-            for (RapidModule m : all)
-                for (ModuleItem it : m.items()) {
-                    if (it instanceof Declaration d) {
-                        globals.putIfAbsent(Values.lower(d.name()), new Var(d.rapidType(), new Typed(d.value()), d.storage() == Declaration.Storage.CONST));
-                    } else if (it instanceof AstItem a && a.item() instanceof RapidAst.DataDecl dd && !globals.containsKey(Values.lower(dd.name()))) {
-                        globals.put(Values.lower(dd.name()), declare(dd, none));
+            for (RapidAst.Module m : all)
+                for (RapidAst.Item it : m.items())
+                    if (it instanceof RapidAst.DataDecl dd && !globals.containsKey(Values.lower(dd.name()))) {
+                        Var v = declare(dd, none);
+                        globals.put(Values.lower(dd.name()), v);
+                        v.value = typedOnce(v.value, v.type);
                     }
-                }
+        }
+
+        /**
+         * Module data of a RAPID data type robopro models (robtarget, tooldata, speeddata, ...)
+         * converted once to its typed value, so each motion naming it does not convert it again;
+         * a value the type refuses stays as it is and is reported where it is used.
+         */
+        Object typedOnce(Object value, String type) {
+            if (!(value instanceof Rec r) || r.type == null || !r.type.equals(type) || !RapidParser.TYPES.contains(type)) return value;
+            try {
+                return new Typed(RapidParser.literalValue(type, Values.literal(value), file, type));
+            } catch (IllegalArgumentException | InputException refused) {
+                return value;
+            }
         }
 
         Object routine(String name) { return routines.get(Values.lower(name)); }
@@ -360,30 +365,10 @@ public final class MotionInterpreter {
 
         void call(Object routine, String name, List<RapidAst.Arg> args, Frame caller, Object at, int callDepth) {
             if (callDepth > MAX_CALL_DEPTH) throw error(at, "procedure calls nested deeper than " + MAX_CALL_DEPTH + " (recursion?)");
-            if (routine instanceof Procedure p) {
-                if (!args.isEmpty()) throw error(at, "procedure " + p.name() + " takes no arguments");
-                Frame f = new Frame(p.name());
-                runTyped(p, f, callDepth);
-                return;
-            }
             RapidAst.Routine r = (RapidAst.Routine) routine;
             if (r.kind() != RapidAst.RoutineKind.PROC) throw error(at, r.name() + " is a " + r.kind() + ", not a procedure");
             Frame f = bind(r, args, caller, at);
             runAst(r, f, callDepth);
-        }
-
-        void runTyped(Procedure p, Frame f, int callDepth) {
-            int saved = depth;
-            depth = callDepth;
-            try {
-                execList(p.body(), f, p.name());
-            } catch (ReturnSignal ret) {
-                // RETURN ends the procedure
-            } catch (GotoSignal g) {
-                throw error(g.at, "GOTO " + g.label + ": no such label in " + p.name());
-            } finally {
-                depth = saved;
-            }
         }
 
         Object runAst(RapidAst.Routine r, Frame f, int callDepth) {
@@ -465,43 +450,6 @@ public final class MotionInterpreter {
                 throw error(at, "simulation stopped after " + maxStatements + " statements" + loop);
             }
             if (out.size() >= MAX_STEPS) throw error(at, "program runs more than " + MAX_STEPS + " steps");
-        }
-
-        void execList(List<Statement> body, Frame f, String proc) {
-            int k = 0;
-            while (k < body.size()) {
-                Statement s = body.get(k);
-                try {
-                    execTyped(s, k, f, proc);
-                    k++;
-                } catch (GotoSignal g) {
-                    int target = labelIndexTyped(body, g.label);
-                    if (target < 0) throw g;
-                    k = target;
-                }
-            }
-        }
-
-        int labelIndexTyped(List<Statement> body, String label) {
-            for (int k = 0; k < body.size(); k++)
-                if (body.get(k) instanceof AstStatement a && a.stmt() instanceof RapidAst.Label l && l.name().equalsIgnoreCase(label)) return k;
-            return -1;
-        }
-
-        void execTyped(Statement s, int index, Frame f, String proc) {
-            if (s instanceof Comment) return;
-            tick(s);
-            if (s instanceof Move m) {
-                MoveStep step = move(proc, index, m, f);
-                remember(step);
-                out.add(step);
-            } else if (s instanceof WaitTime w) {
-                out.add(new WaitStep(proc, index, Optional.ofNullable(positions.get(s)), w.seconds(), context()));
-            } else if (s instanceof ProcCall c) {
-                callNamed(c.procedure(), List.of(), f, s, proc, index);
-            } else if (s instanceof AstStatement a) {
-                exec(a.stmt(), f, s, proc, index);
-            }
         }
 
         void execAstList(List<RapidAst.Stmt> body, Frame f) {
@@ -912,18 +860,6 @@ public final class MotionInterpreter {
 
         // ------------------------------------------------------------ moves
 
-        MoveStep move(String proc, int index, Move m, Frame f) {
-            ToolData tool = typed(named(m.tool(), f, m), "tooldata", ToolData.class, m, m.tool());
-            String wobjName = m.wobjName();
-            WObjData wobj = typed(named(wobjName, f, m), "wobjdata", WObjData.class, m, wobjName);
-            SpeedData speed = typed(ref(m.speed(), f, m), "speeddata", SpeedData.class, m, m.speed().label());
-            ZoneData zone = typed(ref(m.zone(), f, m), "zonedata", ZoneData.class, m, m.zone().label());
-            Object to = ref(m.toPoint(), f, m);
-            Object circ = m.circPoint().map(c -> ref(c, f, m)).orElse(null);
-            return step(proc, index, m, m.kind(), m.toPoint().label(), to, m.circPoint().map(Ref::label), circ, speed, m.v(), m.t(), zone,
-                    m.z(), m.tool(), tool, wobjName, wobj, m.kind().rapidName());
-        }
-
         MoveStep astMove(String up, List<RapidAst.Arg> args, Frame f, Object at, String proc, int index) {
             Move.Kind kind = switch (up) {
                 case "MOVEL" -> Move.Kind.MOVE_L;
@@ -952,12 +888,12 @@ public final class MotionInterpreter {
                 if (passive.contains(n)) { extraOut.add(a); continue; }
                 switch (n) {
                     case "CONC", "NOEOFFS", "ID", "INPOS", "TLOAD" -> { }
-                    case "V" -> v = OptionalDouble.of(num(eval(a.value(), f), a.value()) / 1000);
+                    case "V" -> v = OptionalDouble.of(Units.mmToM(num(eval(a.value(), f), a.value())));
                     case "T" -> t = OptionalDouble.of(num(eval(a.value(), f), a.value()));
-                    case "Z" -> z = OptionalDouble.of(num(eval(a.value(), f), a.value()) / 1000);
+                    case "Z" -> z = OptionalDouble.of(Units.mmToM(num(eval(a.value(), f), a.value())));
                     case "WOBJ" -> {
                         wobjName = a.value() instanceof RapidAst.Name nm ? nm.name() : "*";
-                        wobjV = eval(a.value(), f);
+                        wobjV = data(a.value(), f);
                     }
                     default -> {
                         if (passive.isEmpty()) throw error(at, "not simulated: " + instruction + " \\" + a.name() + " at " + where(at));
@@ -969,14 +905,14 @@ public final class MotionInterpreter {
             int b = kind == Move.Kind.MOVE_C ? 1 : 0;
             int need = b + 4 + extras;
             if (pos.size() != need) throw error(at, instruction + " needs " + need + " arguments, found " + pos.size());
-            Object circ = b == 1 ? eval(pos.get(0).value(), f) : null;
-            Object to = eval(pos.get(b).value(), f);
-            SpeedData speed = typed(eval(pos.get(b + 1).value(), f), "speeddata", SpeedData.class, at, label(pos.get(b + 1).value()));
+            Object circ = b == 1 ? data(pos.get(0).value(), f) : null;
+            Object to = data(pos.get(b).value(), f);
+            SpeedData speed = typed(data(pos.get(b + 1).value(), f), "speeddata", SpeedData.class, at, label(pos.get(b + 1).value()));
             for (int k = 0; k < extras; k++) extraOut.add(pos.get(b + 2 + k));
             int zi = b + 2 + extras;
-            ZoneData zone = typed(eval(pos.get(zi).value(), f), "zonedata", ZoneData.class, at, label(pos.get(zi).value()));
+            ZoneData zone = typed(data(pos.get(zi).value(), f), "zonedata", ZoneData.class, at, label(pos.get(zi).value()));
             String toolName = label(pos.get(zi + 1).value());
-            ToolData tool = typed(eval(pos.get(zi + 1).value(), f), "tooldata", ToolData.class, at, toolName);
+            ToolData tool = typed(data(pos.get(zi + 1).value(), f), "tooldata", ToolData.class, at, toolName);
             WObjData wobj = wobjV == null ? WObjData.WOBJ0 : typed(wobjV, "wobjdata", WObjData.class, at, wobjName);
             if (v.isPresent() && !(v.getAsDouble() > 0 && Double.isFinite(v.getAsDouble())))
                 throw error(at, "\\V must be a finite speed > 0, got " + v.getAsDouble());
@@ -989,6 +925,18 @@ public final class MotionInterpreter {
                 // A program value the data types reject (e.g. a non-finite pose): the user's input, located.
                 throw error(at, instruction + ": " + e.getMessage());
             }
+        }
+
+        /**
+         * A motion's data argument: a name is looked up as data (null when unknown, so the motion
+         * reports "unknown robtarget 'p'" at the instruction); anything else is evaluated.
+         */
+        Object data(RapidAst.Expr e, Frame f) {
+            if (!(e instanceof RapidAst.Name n)) return eval(e, f);
+            Object v = named(n.name(), f, e);
+            // Opaque data and an absent optional parameter: eval says what is wrong.
+            if (v instanceof Opaque || (v == null && f.optionalParams.contains(Values.lower(n.name())))) return eval(e, f);
+            return v;
         }
 
         String label(RapidAst.Expr e) {
@@ -1048,11 +996,6 @@ public final class MotionInterpreter {
                 return new Pose[] {baseTflange, tframe};
             }
             throw error(at, tool.robhold() ? "tool and work object are both held by the robot" : "neither the tool nor the work object is held by the robot");
-        }
-
-        Object ref(Ref<?> r, Frame f, Object at) {
-            if (r instanceof Ref.Inline<?> in) return new Typed(in.value());
-            return named(((Ref.Named<?>) r).name(), f, at);
         }
 
         /** A name's value: routine data, module data, library data, then RAPID's predefined data; null when unknown. */
@@ -1459,7 +1402,6 @@ public final class MotionInterpreter {
     }
 
     private SourcePos pos(Object at) {
-        if (at instanceof Statement s && positions.get(s) != null) return positions.get(s);
         if (at == null) return null;
         for (ParsedAst a : asts) {
             SourcePos p = a.position(at).orElse(null);

@@ -13,7 +13,13 @@ import org.junit.jupiter.api.Test;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.InputException;
 import org.robopro.models.Vec3;
+import org.robopro.kinematics.ConfData;
 import org.robopro.programs.Move;
+import org.robopro.programs.RapidModule;
+import org.robopro.programs.Ref;
+import org.robopro.programs.RobTarget;
+import org.robopro.programs.SpeedData;
+import org.robopro.programs.ZoneData;
 import org.robopro.programs.rapid.ParsedModule;
 import org.robopro.programs.rapid.RapidParser;
 
@@ -53,6 +59,26 @@ class MotionInterpreterTest {
         assertEquals(Math.toRadians(30), home.q().orElseThrow()[4], 1e-15);
         assertInstanceOf(WaitStep.class, steps.get(3));
         assertEquals(0.2, ((WaitStep) steps.get(3)).seconds());
+    }
+
+    @Test
+    void run_moduleBuiltInCode_exactValuesAndNamesAsGiven() {
+        // More digits than a file keeps (1e-9 m), and a name RAPID would not take (export renames it).
+        Pose objTtcp = Pose.translation(0.123456789012345, -0.3333333333333333, 0.7071067811865476).times(Pose.rotY(0.1));
+        RobTarget t = RobTarget.of(objTtcp, new ConfData(0, 0, 0, 0));
+        RapidModule m = RapidModule.builder("Built").constant("p target", t)
+                .procedure("main", List.of(Move.moveL(Ref.to("p target"), Ref.to("v100"), Ref.to("z10"), "tool0", null),
+                        Move.moveL(Ref.inline(t), Ref.inline(SpeedData.ofRapid(123.4567891234, 500, 5000, 1000)), Ref.to("fine"), "tool0", null)))
+                .build();
+        List<MoveStep> moves = MotionInterpreter.of(m).moves("main");
+        assertEquals("main#1 MoveL p target", moves.get(0).label());
+        for (MoveStep mv : moves) {
+            Pose tcp = mv.baseTtcp().orElseThrow();
+            assertEquals(0, tcp.distanceTo(t.pose()), 1e-15);
+            assertEquals(0, tcp.angleTo(t.pose()), 1e-15);
+        }
+        assertEquals(0.1234567891234, moves.get(1).speed().vTcp(), 1e-16);
+        assertEquals(ZoneData.FINE, moves.get(1).zone());
     }
 
     @Test
