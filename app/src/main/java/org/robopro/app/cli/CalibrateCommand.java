@@ -99,11 +99,13 @@ public final class CalibrateCommand implements Callable<Integer> {
         oc.write(out.dir(), out.force());
         CalibrationResult r = oc.result();
         var w = spec.commandLine().getOut();
-        w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(), r.train().size(),
-                r.sixD() ? "6-D" : "positions", Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
+        String kind = r.sixD() ? "6-D" : r.distance() ? "distances" : r.pointNames().isEmpty() ? "positions"
+                : r.pointNames().size() + " points per pose, errors per point";
+        w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(),
+                CalibrationResult.poses(r.train()), kind, Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
         w.printf(Locale.ROOT, "  training:   %s%n", stats(ErrorStats.position(r.train(), true)));
         if (data.validate() != null) w.printf(Locale.ROOT, "  validation (%d poses): RMS %.4f mm -> %.4f mm, max %.4f mm%n    %s%n",
-                r.validate().size(), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()), Units.mToMm(r.validateMaxM()),
+                CalibrationResult.poses(r.validate()), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()), Units.mToMm(r.validateMaxM()),
                 stats(ErrorStats.position(r.validate(), true)));
         var cv = oc.crossValidation();
         if (cv != null) {

@@ -48,6 +48,10 @@ public final class WorkbenchCommand implements Callable<Integer> {
                     + "moves, so the background path check runs during the measurement (default ${DEFAULT-VALUE}).")
     int benchmarkMoves;
 
+    @Option(names = "--benchmark-edits", defaultValue = "2", paramLabel = "N",
+            description = "With --benchmark-moves: edits per second (0: the program is drawn but never edited; default ${DEFAULT-VALUE}).")
+    double benchmarkEdits;
+
     @Option(names = "--first-frame-timeout", defaultValue = "20", paramLabel = "S",
             description = "Fail when no frame is drawn within S seconds (default ${DEFAULT-VALUE}).")
     double firstFrameTimeout;
@@ -109,9 +113,9 @@ public final class WorkbenchCommand implements Callable<Integer> {
             double[] q = q0.clone();
             q[0] += Math.toRadians(30) * Math.sin(t);
             wb.session().model().setQ(q);
-            long tick = (long) (2 * t);
-            if (!program.isEmpty() && tick != editTick) {
-                // An edit twice a second (a speed change): each one starts a background path check.
+            long tick = (long) (benchmarkEdits * t);
+            if (!program.isEmpty() && benchmarkEdits > 0 && tick != editTick) {
+                // An edit every 1/benchmarkEdits s (a speed change): each one starts a background path check.
                 editTick = tick;
                 List<Instruction> p = new ArrayList<>(program);
                 Instruction i = p.get((int) (tick % p.size()));

@@ -46,6 +46,7 @@ public final class WorkbenchSession implements AutoCloseable {
 
     private final WorkbenchModel model;
     private final PathChecker pathChecker;
+    private final LiveClearance clearance;
     private final List<String> log = new ArrayList<>();
     private final List<Consumer<String>> logListeners = new CopyOnWriteArrayList<>();
     private volatile Path projectFile;
@@ -60,6 +61,7 @@ public final class WorkbenchSession implements AutoCloseable {
         model.markSaved();
         this.projectFile = projectFile;
         this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
+        this.clearance = new LiveClearance(model);
     }
 
     /** Where a project without saved joint values puts the robot: the ready pose of the IRB-2000 cell, else all zero. */
@@ -88,6 +90,8 @@ public final class WorkbenchSession implements AutoCloseable {
     public WorkbenchModel model() { return model; }
     /** The background path check of the program (debounced; listeners hand results to their own thread). */
     public PathChecker pathChecker() { return pathChecker; }
+    /** Collision and clearance of the robot where it stands (the live view while jogging). */
+    public LiveClearance clearance() { return clearance; }
     public Optional<Path> projectFile() { return Optional.ofNullable(projectFile); }
     public synchronized List<String> log() { return List.copyOf(log); }
 

@@ -108,6 +108,12 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
+        // The effect search reads one measured position per pose; refuse other data rather than use part of it.
+        if (train.isDistance() || train.pointCount() > 1)
+            throw new org.robopro.models.InputException(train.source(), 0, 0, train.isDistance() ? "distance" : "point",
+                    "diagnosis reads one measured point per pose; this file has " + (train.isDistance() ? "distances"
+                    : train.pointCount() + " points per pose") + ". Calibrate it with 'robopro calibrate', or diagnose a file "
+                    + "of one of its points" + (train.isDistance() ? " measured as positions" : " (keep that point's rows)"));
         Directions.Prepared dirs = Directions.prepare(train, validate);
         train = dirs.train();
         validate = dirs.validate();

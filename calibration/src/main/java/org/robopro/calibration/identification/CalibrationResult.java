@@ -27,6 +27,11 @@ import org.robopro.models.Vec3;
  * @param elapsedMs        wall time of the calibration
  * @param correlations     pairs of identified parameters whose estimates are strongly correlated
  *                         (|ρ| &gt; 0.9), strongest first
+ * @param pointNames       names of the measured points when there are several per pose, else empty
+ * @param toolPoints       every measured point on the flange (flange coordinates, m), in point order;
+ *                         the first is {@code flangeTtool}'s origin
+ * @param anchor           distance data: the anchor in the robot base frame, m; null otherwise
+ * @param anchorGiven      the anchor was given in the file and kept, not identified
  */
 public record CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
                                 List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
@@ -34,7 +39,16 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
                                 List<PoseError> train, List<PoseError> validate,
                                 LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
                                 double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs,
-                                List<Correlation> correlations) {
+                                List<Correlation> correlations, List<String> pointNames, List<Vec3> toolPoints,
+                                Vec3 anchor, boolean anchorGiven) {
+
+    public CalibrationResult {
+        pointNames = List.copyOf(pointNames);
+        toolPoints = List.copyOf(toolPoints);
+    }
+
+    /** Distance-only data (the errors are distance errors). */
+    public boolean distance() { return anchor != null; }
 
     /** Correlation coefficient ρ of the estimates of parameters {@code a} and {@code b}. */
     public record Correlation(String a, String b, double rho) { }
@@ -51,13 +65,23 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
     public record Outlier(String poseId, double residualM, double robustSigmaM, String reason) { }
 
     /**
-     * Errors at one pose: position error norms (m) with the nominal model (after fitting only
-     * the instrument and tool) and with the calibrated model; rotation errors (rad, NaN for
-     * position-only); whether the pose is an outlier; the calibrated model's position error as a
-     * vector, measured minus predicted, in the measurement frame (m).
+     * Errors at one pose (and measured point): position error norms (m) with the nominal model
+     * (after fitting only the instrument and tool) and with the calibrated model; rotation errors
+     * (rad, NaN for position-only); whether the pose is an outlier; the calibrated model's position
+     * error as a vector, measured minus predicted, in the measurement frame (m; null for a
+     * distance); the point's name when a pose has several (else null); for a distance row the
+     * calibrated model's distance error, measured minus predicted (m; else NaN), whose magnitude
+     * the two norms are.
      */
     public record PoseError(String poseId, double nominalM, double calibratedM, double nominalRotRad,
-                            double calibratedRotRad, boolean outlier, Vec3 calibratedErrorM) { }
+                            double calibratedRotRad, boolean outlier, Vec3 calibratedErrorM, String point,
+                            double distanceErrorM) {
+        /** One measured point per pose. */
+        public PoseError(String poseId, double nominalM, double calibratedM, double nominalRotRad,
+                         double calibratedRotRad, boolean outlier, Vec3 calibratedErrorM) {
+            this(poseId, nominalM, calibratedM, nominalRotRad, calibratedRotRad, outlier, calibratedErrorM, null, Double.NaN);
+        }
+    }
 
     /** RMS of position errors over non-outlier poses, m. */
     public static double rms(List<PoseError> es, boolean calibratedModel) {
@@ -81,6 +105,11 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
             if (Double.isNaN(m) || v > m) m = v;
         }
         return m;
+    }
+
+    /** Distinct poses among these errors (several measured points of a pose count once). */
+    public static int poses(List<PoseError> es) {
+        return (int) es.stream().map(PoseError::poseId).distinct().count();
     }
 
     public double trainRmsM() { return rms(train, true); }

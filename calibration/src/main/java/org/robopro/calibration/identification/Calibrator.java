@@ -98,12 +98,20 @@ public final class Calibrator {
         checkData(nominal, train);
         if (validate != null) {
             checkData(nominal, validate);
-            if (!validate.frame().equalsIgnoreCase(train.frame()))
+            if (!validate.pointNames().equals(train.pointNames()) || validate.isDistance() != train.isDistance())
+                throw new InputException(validate.source(), 0, 0, "point", "validation data measure " + shape(validate)
+                        + " but the training data " + shape(train) + "; validation needs the same measured points");
+            if (!validate.isDistance() && !validate.frame().equalsIgnoreCase(train.frame()))
                 throw new InputException(validate.source(), 0, 0, "frame", "validation data are in frame '" + validate.frame()
                         + "' but the training data in '" + train.frame() + "'; validation needs the same instrument set-up");
         }
         boolean sixD = train.hasOrientation();
-        boolean instrument = !train.inBaseFrame();
+        boolean distance = train.isDistance();
+        boolean instrument = !train.inBaseFrame() && !distance;
+        int points = train.pointCount();
+        if (points > 1 && o.fixTool())
+            throw new InputException(train.source(), 0, 0, "point", "a known tool gives one measured point, but this file measures "
+                    + points + " points per pose (" + String.join(", ", train.pointNames()) + "); let the calibration identify them");
         List<EffectBlock> effects = o.effects();
         List<Measurement> rows = train.rows();
         checkMemory(train, nominal, sixD, effects, validate == null ? 0 : validate.size());
@@ -112,9 +120,17 @@ public final class Calibrator {
         // 1. Starting instrument frame and tool. The registration trims poses far from the
         //    nominal prediction, so a wild reading cannot tilt the starting frame.
         Pose tool0 = sixD ? o.initialTool() : Pose.translation(o.initialTool().position());
+        List<Vec3> more0 = new ArrayList<>();
+        for (int k = 1; k < points; k++) more0.add(tool0.position());
         Pose inst0 = null;
+        Vec3 anchor0 = null;
         Set<String> screened = new HashSet<>();
-        if (instrument) {
+        if (distance) {
+            if (o.knownInstrument() != null)
+                throw new InputException(train.source(), 0, 0, "anchor", "distance data have no instrument frame to give; "
+                        + "write the anchor's position in the file ('# anchor: x, y, z', robot base frame) to keep it fixed");
+            anchor0 = train.anchor() != null ? train.anchor() : Registration.multilaterate(nominal, rows, tool0.position(), train.source());
+        } else if (instrument) {
             List<Vec3> pred = new ArrayList<>(), meas = new ArrayList<>();
             for (Measurement m : rows) {
                 pred.add(nominal.flange(m.q()).times(tool0).position());
@@ -135,11 +151,29 @@ public final class Calibrator {
             throw new InputException(train.source(), 0, 0, "frame", "the measurements are in the robot base frame ('# frame: base'), "
                     + "so there is no instrument pose to give");
         if (sixD && !o.fixTool()) tool0 = averageToolRotation(nominal, rows, tool0, inst0);
-        double[] start = IdentificationProblem.startVector(nominal, tool0, sixD, inst0, effects);
+        if (points > 1) {
+            // Each point's place on the flange seen through the starting frame, averaged over the poses.
+            List<Vec3> est = Registration.toolPoints(nominal, rows, inst0, screened);
+            if (instrument && o.knownInstrument() == null) {
+                // The first registration put every point at the start tool point; register again
+                // with each point at its estimate, then estimate the points again.
+                List<Vec3> pred = new ArrayList<>(), meas = new ArrayList<>();
+                for (Measurement m : rows) {
+                    if (screened.contains(m.poseId())) continue;
+                    Pose f = nominal.flange(m.q());
+                    for (int k = 0; k < points; k++) { pred.add(f.apply(est.get(k))); meas.add(m.point(k)); }
+                }
+                inst0 = Registration.rigid(pred, meas);
+                est = Registration.toolPoints(nominal, rows, inst0, screened);
+            }
+            tool0 = Pose.translation(est.get(0));
+            more0 = est.subList(1, points);
+        }
+        double[] start = IdentificationProblem.startVector(nominal, tool0, more0, sixD, inst0, anchor0, effects);
         if (!o.rejectOutliers()) screened.clear();
 
         // 2. Nominal fit: geometry fixed, instrument and tool free (on the poses not screened out).
-        NominalFit nf = nominalFit(nominal, without(rows, screened), sixD, instrument, effects, start, o);
+        NominalFit nf = nominalFit(nominal, without(rows, screened), sixD, instrument, effects, start, o, train.anchor() != null);
         IdentificationProblem p1 = nf.problem();
         double[] nominalFull = nf.full();
         o.progress().update("nominal fit", 0.2);
@@ -148,7 +182,7 @@ public final class Calibrator {
         Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance());
         boolean[] fix = new boolean[p1.fullSize()];
         for (int j : structural.fixed()) fix[j] = true;
-        for (int j : known(p1, o)) fix[j] = true;
+        for (int j : known(p1, o, train.anchor() != null)) fix[j] = true;
         int nFree = 0;
         for (boolean b : fix) if (!b) nFree++;
         int eq = rows.size() * p1.rowsPerPose();
@@ -188,7 +222,7 @@ public final class Calibrator {
                 throw new InputException(train.source(), 0, 0, null, "after removing " + excluded.size()
                         + " outlier poses too few poses remain to identify " + nFree + " parameters");
             if (round > 0) {
-                nf = nominalFit(nominal, kept, sixD, instrument, effects, start, o);
+                nf = nominalFit(nominal, kept, sixD, instrument, effects, start, o, train.anchor() != null);
                 p1 = nf.problem();
                 nominalFull = nf.full();
             }
@@ -232,7 +266,7 @@ public final class Calibrator {
         Pose inst = instrument ? p.instrumentOf(full) : null;
         List<CalibrationResult.ParameterEstimate> params = new ArrayList<>();
         List<String> names = p.names(), units = p.unitsSi();
-        double[] nomStart = IdentificationProblem.startVector(nominal, tool0, sixD, inst0, effects);
+        double[] nomStart = start;
         for (int i = 0; i < names.size(); i++) {
             double nomValue = p.blocks().get(i) == IdentificationProblem.Block.GEOMETRY ? nomStart[i] : nominalFull[i];
             params.add(new CalibrationResult.ParameterEstimate(names.get(i), p.blocks().get(i).name().toLowerCase(Locale.ROOT),
@@ -244,9 +278,12 @@ public final class Calibrator {
         List<CalibrationResult.PoseError> valErr = validate == null ? List.of()
                 : poseErrors(p, nominal, validate, nominalFull, full, Set.of(), effects);
         o.progress().update("done", 1);
+        List<Vec3> toolPoints = new ArrayList<>();
+        for (int k = 0; k < points; k++) toolPoints.add(p.toolPointOf(full, k));
         return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
                 data.conditionNumber(), data.observability(), outliers, trainErr, valErr, nf.result(), fit,
-                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6, List.copyOf(correlations));
+                sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6, List.copyOf(correlations),
+                train.pointNames(), toolPoints, p.anchorOf(full), distance && train.anchor() != null);
     }
 
     /**
@@ -255,9 +292,9 @@ public final class Calibrator {
      * heap, instead of running out of memory after minutes.
      */
     static void checkMemory(MeasurementSet train, KinematicModel nominal, boolean sixD, List<EffectBlock> effects, int validate) {
-        long params = 6L * nominal.dof() + 12;
+        long params = 6L * nominal.dof() + 12 + 3L * (train.pointCount() - 1);
         for (EffectBlock e : effects) params += e.parameterNames().size();
-        long need = 3L * (train.size() + validate) * (sixD ? 6 : 3) * params * Double.BYTES;
+        long need = 3L * (train.size() + validate) * (sixD ? 6 : train.isDistance() ? 1 : 3 * train.pointCount()) * params * Double.BYTES;
         long max = Runtime.getRuntime().maxMemory();
         if (need > 0.7 * max)
             throw new InputException(train.source(), 0, 0, null, String.format(Locale.ROOT,
@@ -304,7 +341,7 @@ public final class Calibrator {
         double sp = 0, sr = 0;
         int np = 0, nr = 0;
         for (int i = 0; i < m; i++) {
-            if (i % rpp < 3) { sp += Math.pow(r[i] * p.sigmaPos(), 2); np++; }
+            if (!p.sixD() || i % rpp < 3) { sp += Math.pow(r[i] * p.sigmaPos(), 2); np++; }
             else { sr += Math.pow(r[i] * p.sigmaRot(), 2); nr++; }
         }
         double corr = (double) m / Math.max(1, m - nFree);
@@ -371,30 +408,43 @@ public final class Calibrator {
         double[] r = new double[m];
         all.evaluateFull(full, r, null);
         int n = train.size();
-        double[] pos = new double[n], rot = new double[n];
+        boolean six = all.sixD(), dist = all.distance();
+        int pts = all.pointCount();
+        // Per measured point: the 3-D error norm (a Maxwell variable under Gaussian noise), or the
+        // distance error's magnitude (half-normal); a pose is judged by its worst point.
+        double[] each = new double[n * pts], pos = new double[n], rot = new double[n];
         for (int i = 0; i < n; i++) {
-            pos[i] = Math.sqrt(sq(r[i * rpp]) + sq(r[i * rpp + 1]) + sq(r[i * rpp + 2])) * all.sigmaPos();
-            if (rpp == 6) rot[i] = Math.sqrt(sq(r[i * rpp + 3]) + sq(r[i * rpp + 4]) + sq(r[i * rpp + 5])) * all.sigmaRot();
+            for (int k2 = 0; k2 < pts; k2++) {
+                int b = i * rpp + 3 * k2;
+                each[i * pts + k2] = (dist ? Math.abs(r[i]) : Math.sqrt(sq(r[b]) + sq(r[b + 1]) + sq(r[b + 2]))) * all.sigmaPos();
+                pos[i] = Math.max(pos[i], each[i * pts + k2]);
+            }
+            if (six) rot[i] = Math.sqrt(sq(r[i * rpp + 3]) + sq(r[i * rpp + 4]) + sq(r[i * rpp + 5])) * all.sigmaRot();
         }
-        double sigPos = Math.max(robustSigma(pos, train, excluded), 1e-9);
-        double sigRot = rpp == 6 ? Math.max(robustSigma(rot, train, excluded), 1e-9) : 0;
+        double sigPos = Math.max(robustSigma(each, pts, train, excluded) * (dist ? MAXWELL_MEDIAN / HALF_NORMAL_MEDIAN : 1), 1e-9);
+        double sigRot = six ? Math.max(robustSigma(rot, 1, train, excluded), 1e-9) : 0;
+        String what = dist ? "distance" : pts > 1 ? "largest point" : "position";
         Map<String, CalibrationResult.Outlier> out = new java.util.LinkedHashMap<>();
         for (int i = 0; i < n; i++) {
             String id = train.rows().get(i).poseId();
             if (pos[i] > k * sigPos)
                 out.put(id, new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
-                        "position residual %.4f mm > %.1f x robust sigma %.4f mm", pos[i] * 1e3, k == 0 ? pos[i] / sigPos : k, sigPos * 1e3)));
-            else if (rpp == 6 && rot[i] > k * sigRot)
+                        "%s residual %.4f mm > %.1f x robust sigma %.4f mm", what, pos[i] * 1e3, k == 0 ? pos[i] / sigPos : k, sigPos * 1e3)));
+            else if (six && rot[i] > k * sigRot)
                 out.put(id, new CalibrationResult.Outlier(id, pos[i], sigPos, String.format(Locale.ROOT,
                         "rotation residual %.5f deg > %.1f x robust sigma %.5f deg", Math.toDegrees(rot[i]), k, Math.toDegrees(sigRot))));
         }
         return out;
     }
 
-    private static double robustSigma(double[] norms, MeasurementSet train, Set<String> known) {
+    /** Median of |N(0, 1)|: the robust scale of a one-dimensional residual. */
+    static final double HALF_NORMAL_MEDIAN = 0.6744898;
+
+    /** Median norm / Maxwell median over the {@code per} values of each pose not in {@code known}. */
+    private static double robustSigma(double[] norms, int per, MeasurementSet train, Set<String> known) {
         double[] v = new double[norms.length];
         int c = 0;
-        for (int i = 0; i < norms.length; i++) if (!known.contains(train.rows().get(i).poseId())) v[c++] = norms[i];
+        for (int i = 0; i < norms.length; i++) if (!known.contains(train.rows().get(i / per).poseId())) v[c++] = norms[i];
         v = Arrays.copyOf(v, c);
         Arrays.sort(v);
         double med = c % 2 == 1 ? v[c / 2] : 0.5 * (v[c / 2 - 1] + v[c / 2]);
@@ -411,13 +461,13 @@ public final class Calibrator {
 
     /** Nominal fit (geometry and effects fixed, instrument and tool free) from {@code start}; 6-D sigmas set. */
     private static NominalFit nominalFit(KinematicModel nominal, List<Measurement> rows, boolean sixD, boolean instrument,
-                                         List<EffectBlock> effects, double[] start, Options o) {
+                                         List<EffectBlock> effects, double[] start, Options o, boolean anchorGiven) {
         IdentificationProblem p1 = new IdentificationProblem(nominal, rows, sixD, instrument, effects, start);
         boolean[] geoFixed = new boolean[p1.fullSize()];
         for (int i = 0; i < p1.fullSize(); i++)
             geoFixed[i] = p1.blocks().get(i) == IdentificationProblem.Block.GEOMETRY
                     || p1.blocks().get(i) == IdentificationProblem.Block.EFFECT;
-        for (int j : known(p1, o)) geoFixed[j] = true;
+        for (int j : known(p1, o, anchorGiven)) geoFixed[j] = true;
         p1.setFixed(geoFixed);
         LevenbergMarquardt.Result r;
         if (p1.parameterCount() == 0) {
@@ -435,14 +485,21 @@ public final class Calibrator {
         return new NominalFit(p1, r, full);
     }
 
-    /** Full indices of the parameters the options keep at known values (instrument, tool). */
-    private static List<Integer> known(IdentificationProblem p, Options o) {
+    /** Full indices of the parameters kept at known values: instrument and tool by the options, an anchor the file gives. */
+    private static List<Integer> known(IdentificationProblem p, Options o, boolean anchorGiven) {
         List<Integer> out = new ArrayList<>();
         for (int i = 0; i < p.fullSize(); i++) {
             IdentificationProblem.Block b = p.blocks().get(i);
             if (o.fixInstrument() && b == IdentificationProblem.Block.INSTRUMENT || o.fixTool() && b == IdentificationProblem.Block.TOOL) out.add(i);
         }
+        if (p.distance() && anchorGiven) for (int a = 0; a < 3; a++) out.add(p.anchorOffset() + a);
         return out;
+    }
+
+    /** "points A, B, C" / "one point" / "distances", for messages. */
+    static String shape(MeasurementSet s) {
+        if (s.isDistance()) return "distances";
+        return s.pointNames().isEmpty() ? "one point per pose" : "points " + String.join(", ", s.pointNames());
     }
 
     /** The nominal-fit problem (its sigmas), the solver result and the full parameter vector. */
@@ -472,6 +529,26 @@ public final class Calibrator {
         q.evaluateFull(remap(src, sixD, nominalFull), rn, null);
         q.evaluateFull(remap(src, sixD, full), rc, null);
         List<CalibrationResult.PoseError> out = new ArrayList<>();
+        if (q.distance()) {
+            for (int i = 0; i < set.size(); i++) {
+                String id = set.rows().get(i).poseId();
+                out.add(new CalibrationResult.PoseError(id, Math.abs(rn[i]), Math.abs(rc[i]), Double.NaN, Double.NaN, outliers.contains(id),
+                        null, null, -rc[i]));
+            }
+            return out;
+        }
+        if (q.pointCount() > 1) {
+            for (int i = 0; i < set.size(); i++) {
+                String id = set.rows().get(i).poseId();
+                for (int k = 0; k < q.pointCount(); k++) {
+                    int b = i * rpp + 3 * k;
+                    out.add(new CalibrationResult.PoseError(id, Math.sqrt(sq(rn[b]) + sq(rn[b + 1]) + sq(rn[b + 2])),
+                            Math.sqrt(sq(rc[b]) + sq(rc[b + 1]) + sq(rc[b + 2])), Double.NaN, Double.NaN, outliers.contains(id),
+                            new Vec3(-rc[b], -rc[b + 1], -rc[b + 2]), set.pointNames().get(k), Double.NaN));
+                }
+            }
+            return out;
+        }
         for (int i = 0; i < set.size(); i++) {
             int b = i * rpp;
             double en = Math.sqrt(sq(rn[b]) + sq(rn[b + 1]) + sq(rn[b + 2]));
@@ -507,7 +584,8 @@ public final class Calibrator {
      */
     static Identifiability.Result structural(KinematicModel nominal, boolean sixD, boolean instrument, List<EffectBlock> effects,
                                              double[] start, IdentificationProblem like, double tol) {
-        StringBuilder key = new StringBuilder().append(sixD).append('/').append(instrument).append('/').append(tol);
+        StringBuilder key = new StringBuilder().append(sixD).append('/').append(instrument).append('/').append(tol)
+                .append('/').append(like.pointCount()).append('/').append(like.distance());
         for (EffectBlock e : effects) key.append('/').append(e.name()).append(e.parameterNames());
         synchronized (STRUCTURAL) {
             Identifiability.Result r = STRUCTURAL.getOrDefault(nominal, Map.of()).get(key.toString());
@@ -527,7 +605,9 @@ public final class Calibrator {
                 }
                 q[k] = lo + (hi - lo) * rng.nextDouble();
             }
-            rows.add(new Measurement("s" + i, q, Vec3.ZERO, sixD ? new double[] {1, 0, 0, 0} : null,
+            if (like.distance()) rows.add(Measurement.ofDistance("s" + i, q, 1));
+            else if (like.pointCount() > 1) rows.add(Measurement.ofPoints("s" + i, q, java.util.Collections.nCopies(like.pointCount(), Vec3.ZERO)));
+            else rows.add(new Measurement("s" + i, q, Vec3.ZERO, sixD ? new double[] {1, 0, 0, 0} : null,
                     null, Double.NaN, Double.NaN, Double.NaN, null, 0));
         }
         IdentificationProblem p = new IdentificationProblem(nominal, rows, sixD, instrument, effects, start);

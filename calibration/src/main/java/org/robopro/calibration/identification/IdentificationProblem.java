@@ -8,6 +8,7 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.ModelParameter;
 import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Se3;
+import org.robopro.models.Vec3;
 
 /**
  * The identification problem (seed paper §5, docs/calibration.md) as pluggable parameter blocks, each contributing
@@ -16,14 +17,18 @@ import org.robopro.kinematics.Se3;
  * <li><b>geometry</b>: the kinematic model's Table-1 parameters (analytic columns from
  *     {@link KinematicModel#poseJacobian});</li>
  * <li><b>tool</b>: the measured point on the flange (3; m) or, with orientations, the whole tool
- *     frame (3 + 3: translation, then a rotation vector perturbed on the left in flange axes);</li>
+ *     frame (3 + 3: translation, then a rotation vector perturbed on the left in flange axes);
+ *     with P &gt; 1 measured points per pose, one point each ({@code tool1.x} ... {@code toolP.z});</li>
  * <li><b>instrument</b>: instrumentTbase (3 translation + 3 rotation, perturbed on the left in
- *     instrument axes), absent when the positions are in the base frame;</li>
+ *     instrument axes), absent when the positions are in the base frame; for distance-only rows
+ *     the anchor's position in the base frame instead ({@code anchor.x/y/z}, 3);</li>
  * <li><b>effects</b>: {@link EffectBlock}s (diagnosis), chained through the joint-angle Jacobian.</li>
  * </ul>
  * Prediction (instrument frame): p = R_ib (baseTflange(q + Δq) · t_ft + dp) + t_ib, and for 6-D
  * data R = R_ib R_bf R_ft. Residuals are (predicted − measured) / σ per row: positions first (3
- * per pose), then rotations Log(R_pred R_measᵀ) (3 per pose) when orientations are measured.
+ * per pose and point, points in order), then rotations Log(R_pred R_measᵀ) (3 per pose) when
+ * orientations are measured; for a distance row one residual (|p − a| − d) / σ with a the anchor.
+ * The layout (points per pose, distances) follows the rows: every row must have the first's shape.
  * Parameters in {@code fixed} keep their start value; the {@link LeastSquaresProblem} view sees
  * the free ones only. One problem per thread (it owns a workspace).
  */
@@ -33,7 +38,8 @@ public final class IdentificationProblem implements LeastSquaresProblem {
 
     private final KinematicModel model;
     private final List<Measurement> rows;
-    private final boolean sixD, instrument;
+    private final boolean sixD, instrument, distance;
+    private final int points;
     private final List<EffectBlock> effects;
     private final int nGeo, toolOff, toolSize, instOff, effOff, nFull;
     private final int[] effStart;
@@ -63,8 +69,16 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                                  List<EffectBlock> effects, double[] start) {
         this.model = model;
         this.rows = List.copyOf(rows);
+        Measurement first = this.rows.isEmpty() ? null : this.rows.get(0);
+        this.distance = first != null && first.isDistance();
+        this.points = first == null || distance ? 1 : first.points().size();
+        for (Measurement r : this.rows)
+            if (r.isDistance() != distance || !distance && r.points().size() != points)
+                throw new IllegalArgumentException("pose " + r.poseId() + " is not shaped like the first pose (points, distance)");
+        if (sixD && (points > 1 || distance))
+            throw new IllegalArgumentException("orientations go with one measured point per pose");
         this.sixD = sixD;
-        this.instrument = instrument;
+        this.instrument = instrument && !distance;
         this.effects = List.copyOf(effects);
         List<ModelParameter> ps = model.parameters();
         nGeo = ps.size();
@@ -74,15 +88,20 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             blocks.add(Block.GEOMETRY);
         }
         toolOff = nGeo;
-        toolSize = sixD ? 6 : 3;
-        for (String s : new String[] {"tool.x", "tool.y", "tool.z"}) { names.add(s); units.add("m"); blocks.add(Block.TOOL); }
+        toolSize = sixD ? 6 : 3 * points;
+        for (int k = 0; k < points; k++) {
+            String t = points == 1 ? "tool." : "tool" + (k + 1) + ".";
+            for (String s : new String[] {"x", "y", "z"}) { names.add(t + s); units.add("m"); blocks.add(Block.TOOL); }
+        }
         if (sixD) for (String s : new String[] {"tool.rx", "tool.ry", "tool.rz"}) { names.add(s); units.add("rad"); blocks.add(Block.TOOL); }
         instOff = toolOff + toolSize;
-        if (instrument) {
+        if (this.instrument) {
             for (String s : new String[] {"instrument.x", "instrument.y", "instrument.z"}) { names.add(s); units.add("m"); blocks.add(Block.INSTRUMENT); }
             for (String s : new String[] {"instrument.rx", "instrument.ry", "instrument.rz"}) { names.add(s); units.add("rad"); blocks.add(Block.INSTRUMENT); }
         }
-        effOff = instOff + (instrument ? 6 : 0);
+        if (distance)
+            for (String s : new String[] {"anchor.x", "anchor.y", "anchor.z"}) { names.add(s); units.add("m"); blocks.add(Block.INSTRUMENT); }
+        effOff = instOff + (this.instrument ? 6 : distance ? 3 : 0);
         effStart = new int[this.effects.size() + 1];
         int off = effOff;
         for (int k = 0; k < this.effects.size(); k++) {
@@ -111,7 +130,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             for (int i = effStart[k]; i < effStart[k + 1]; i++) priority[i] = this.effects.get(k).fixPriority();
         fixed = new boolean[nFull];
         free = allIndices(nFull);
-        m = this.rows.size() * (sixD ? 6 : 3);
+        m = this.rows.size() * rowsPerPose();
         ws = model.newWorkspace();
         jg = new double[6 * nGeo];
         jFull = new double[m * nFull];
@@ -134,15 +153,27 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     /** The start vector for a model, a tool frame and (optionally) an instrument pose; effect values from the blocks. */
     public static double[] startVector(KinematicModel model, Pose flangeTtool, boolean sixD, Pose instrumentTbase,
                                        List<EffectBlock> effects) {
+        return startVector(model, flangeTtool, List.of(), sixD, instrumentTbase, null, effects);
+    }
+
+    /**
+     * The start vector with several measured points: {@code flangeTtool} for the first (and the
+     * tool rotation with orientations), {@code morePoints} for points 2..P (flange coordinates, m);
+     * {@code anchor} (base frame, m) for distance rows, else null.
+     */
+    public static double[] startVector(KinematicModel model, Pose flangeTtool, List<Vec3> morePoints, boolean sixD,
+                                       Pose instrumentTbase, Vec3 anchor, List<EffectBlock> effects) {
         List<Double> v = new ArrayList<>();
         for (double p : model.parameterValues()) v.add(p);
         v.add(flangeTtool.x()); v.add(flangeTtool.y()); v.add(flangeTtool.z());
+        for (Vec3 p : morePoints) { v.add(p.x()); v.add(p.y()); v.add(p.z()); }
         if (sixD) { var w = flangeTtool.rotationVector(); v.add(w.x()); v.add(w.y()); v.add(w.z()); }
         if (instrumentTbase != null) {
             v.add(instrumentTbase.x()); v.add(instrumentTbase.y()); v.add(instrumentTbase.z());
             var w = instrumentTbase.rotationVector();
             v.add(w.x()); v.add(w.y()); v.add(w.z());
         }
+        if (anchor != null) { v.add(anchor.x()); v.add(anchor.y()); v.add(anchor.z()); }
         for (EffectBlock e : effects) for (double d : e.initialValues()) v.add(d);
         return v.stream().mapToDouble(Double::doubleValue).toArray();
     }
@@ -160,13 +191,19 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     public int effectOffset(int k) { return effStart[k]; }
     public boolean sixD() { return sixD; }
     public boolean hasInstrument() { return instrument; }
+    /** Measured points per pose (1 for distance rows). */
+    public int pointCount() { return points; }
+    /** Distance-only rows: one residual per pose, an anchor block. */
+    public boolean distance() { return distance; }
+    /** Full index of anchor.x, or -1 without distance rows. */
+    public int anchorOffset() { return distance ? instOff : -1; }
     public List<Measurement> rows() { return rows; }
     public List<EffectBlock> effects() { return effects; }
     public double[] start() { return start.clone(); }
     public KinematicModel model() { return model; }
 
-    /** Residual rows per pose: 3, or 6 with orientations. */
-    public int rowsPerPose() { return sixD ? 6 : 3; }
+    /** Residual rows per pose: 3 per measured point, 6 with orientations, 1 for a distance. */
+    public int rowsPerPose() { return distance ? 1 : sixD ? 6 : 3 * points; }
 
     /** Standard deviations that weight position (m) and rotation (rad) residuals. */
     public void setSigmas(double sigmaPosM, double sigmaRotRad) {
@@ -228,7 +265,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     public void retract(double[] x, double[] step, double[] out) {
         for (int k = 0; k < x.length; k++) out[k] = x[k] + step[k];
         // Rotation-vector parameters move on SO(3): R' = Exp(step) R, not w + step.
-        retractRotation(x, step, out, toolOff + 3, sixD);
+        retractRotation(x, step, out, toolOff + 3 * points, sixD);
         retractRotation(x, step, out, instOff + 3, instrument);
     }
 
@@ -251,15 +288,14 @@ public final class IdentificationProblem implements LeastSquaresProblem {
      */
     public void evaluateFull(double[] full, double[] res, double[] jac) {
         KinematicModel mdl = model.withParameterValues(Arrays.copyOf(full, nGeo));
-        double[] tool = {full[toolOff], full[toolOff + 1], full[toolOff + 2]};
         double[] rft = new double[9];
-        Pose flangeTtool;
-        if (sixD) {
-            Se3.rotExp(full[toolOff + 3], full[toolOff + 4], full[toolOff + 5], rft);
-            flangeTtool = poseOf(rft, tool);
-        } else {
-            rft[0] = rft[4] = rft[8] = 1;
-            flangeTtool = Pose.translation(tool[0], tool[1], tool[2]);
+        if (sixD) Se3.rotExp(full[toolOff + points * 3], full[toolOff + points * 3 + 1], full[toolOff + points * 3 + 2], rft);
+        else rft[0] = rft[4] = rft[8] = 1;
+        double[][] tools = new double[points][];
+        Pose[] flangeTtools = new Pose[points];
+        for (int k = 0; k < points; k++) {
+            tools[k] = new double[] {full[toolOff + 3 * k], full[toolOff + 3 * k + 1], full[toolOff + 3 * k + 2]};
+            flangeTtools[k] = sixD ? poseOf(rft, tools[k]) : Pose.translation(tools[k][0], tools[k][1], tools[k][2]);
         }
         double[] rib = new double[9];
         double[] tib = new double[3];
@@ -267,12 +303,15 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             Se3.rotExp(full[instOff + 3], full[instOff + 4], full[instOff + 5], rib);
             tib[0] = full[instOff]; tib[1] = full[instOff + 1]; tib[2] = full[instOff + 2];
         } else rib[0] = rib[4] = rib[8] = 1;
+        double[] anchor = distance ? new double[] {full[instOff], full[instOff + 1], full[instOff + 2]} : null;
         double wp = 1 / sigmaPos, wr = 1 / sigmaRot;
         int dof = model.dof();
         double[] pbKin = new double[3];
         double[] pb = new double[3], rbt = new double[9], rbf = new double[9], rib_rbf = new double[9],
                 rpred = new double[9], rmeas = new double[9], err = new double[9], e = new double[3];
         double[] dTheta = new double[dof], dp = new double[3], qEff = new double[dof];
+        // A distance row's point is evaluated as a position (3 rows) in scratch space, then projected.
+        double[] res3 = distance ? new double[3] : null, jac3 = distance && jac != null ? new double[3 * nFull] : null;
         int rpp = rowsPerPose();
         if (jac != null) Arrays.fill(jac, 0);
         for (int i = 0; i < rows.size(); i++) {
@@ -292,116 +331,138 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 for (int j = 0; j < dof; j++) theta[j] += dTheta[j];
                 qEff = mdl.q(theta);
             } else qEff = q;
-            if (jac != null) mdl.poseJacobian(qEff, flangeTtool, ws, pose12, jg);
-            else {
-                // Residuals only: forward kinematics is enough (several times cheaper than the Jacobian).
-                mdl.flange(qEff, ws, flange12);
-                for (int a = 0; a < 3; a++) {
-                    double f0 = flange12[4 * a], f1 = flange12[4 * a + 1], f2 = flange12[4 * a + 2];
-                    for (int b = 0; b < 3; b++) pose12[4 * a + b] = f0 * rft[b] + f1 * rft[3 + b] + f2 * rft[6 + b];
-                    pose12[4 * a + 3] = f0 * tool[0] + f1 * tool[1] + f2 * tool[2] + flange12[4 * a + 3];
-                }
-            }
-            pb[0] = pose12[3]; pb[1] = pose12[7]; pb[2] = pose12[11];
-            rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
-            rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
-            rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
-            Se3.rotMulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
-            double[][] dpDv = null;
-            double[] dpDpoint = null;
-            if (!effects.isEmpty()) {
-                Arrays.fill(dp, 0);
-                dpDpoint = new double[9];
-                dpDv = new double[effects.size()][];
-                for (int k = 0; k < effects.size(); k++) {
-                    int size = effStart[k + 1] - effStart[k];
-                    double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
-                    dpDv[k] = jac == null ? null : new double[3 * size];
-                    effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
-                }
-                System.arraycopy(pb, 0, pbKin, 0, 3);
-                pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
-            }
-            double px = rib[0] * pb[0] + rib[1] * pb[1] + rib[2] * pb[2] + tib[0];
-            double py = rib[3] * pb[0] + rib[4] * pb[1] + rib[5] * pb[2] + tib[1];
-            double pz = rib[6] * pb[0] + rib[7] * pb[1] + rib[8] * pb[2] + tib[2];
-            var meas = row.position();
-            int r0 = i * rpp;
-            res[r0] = (px - meas.x()) * wp;
-            res[r0 + 1] = (py - meas.y()) * wp;
-            res[r0 + 2] = (pz - meas.z()) * wp;
-            if (sixD) {
-                Se3.rotMul(rib, rbt, rpred);
-                double[] oq = row.orientation();
-                Se3.rotFromQuaternion(oq[0], oq[1], oq[2], oq[3], rmeas);
-                Se3.rotMulT(rpred, rmeas, err);
-                Se3.rotLog(err, e, 0);
-                res[r0 + 3] = e[0] * wr;
-                res[r0 + 4] = e[1] * wr;
-                res[r0 + 5] = e[2] * wr;
-            }
-            if (jac == null) continue;
-            // geometry: R_ib * (∂p_base/∂k), R_ib * (∂ω_base/∂k)
-            for (int c = 0; c < nGeo; c++) {
-                double a0 = jg[c], a1 = jg[nGeo + c], a2 = jg[2 * nGeo + c];
-                jac[r0 * nFull + c] = (rib[0] * a0 + rib[1] * a1 + rib[2] * a2) * wp;
-                jac[(r0 + 1) * nFull + c] = (rib[3] * a0 + rib[4] * a1 + rib[5] * a2) * wp;
-                jac[(r0 + 2) * nFull + c] = (rib[6] * a0 + rib[7] * a1 + rib[8] * a2) * wp;
-                if (sixD) {
-                    double b0 = jg[3 * nGeo + c], b1 = jg[4 * nGeo + c], b2 = jg[5 * nGeo + c];
-                    jac[(r0 + 3) * nFull + c] = (rib[0] * b0 + rib[1] * b1 + rib[2] * b2) * wr;
-                    jac[(r0 + 4) * nFull + c] = (rib[3] * b0 + rib[4] * b1 + rib[5] * b2) * wr;
-                    jac[(r0 + 5) * nFull + c] = (rib[6] * b0 + rib[7] * b1 + rib[8] * b2) * wr;
-                }
-            }
-            // tool point: ∂p/∂t_ft = R_ib R_bf; tool rotation (6-D): ∂ε/∂φ = R_ib R_bf
-            Se3.rotMul(rib, rbf, rib_rbf);
-            for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++) {
-                    jac[(r0 + a) * nFull + toolOff + b] = rib_rbf[3 * a + b] * wp;
-                    if (sixD) jac[(r0 + 3 + a) * nFull + toolOff + 3 + b] = rib_rbf[3 * a + b] * wr;
-                }
-            if (instrument) {
-                double qx = px - tib[0], qy = py - tib[1], qz = pz - tib[2]; // R_ib p_base
-                for (int a = 0; a < 3; a++) jac[(r0 + a) * nFull + instOff + a] = wp;
-                // ∂(Exp(δ) v)/∂δ = -[v]x
-                int c = instOff + 3;
-                jac[r0 * nFull + c + 1] = qz * wp;       jac[r0 * nFull + c + 2] = -qy * wp;
-                jac[(r0 + 1) * nFull + c] = -qz * wp;    jac[(r0 + 1) * nFull + c + 2] = qx * wp;
-                jac[(r0 + 2) * nFull + c] = qy * wp;     jac[(r0 + 2) * nFull + c + 1] = -qx * wp;
-                if (sixD) for (int a = 0; a < 3; a++) jac[(r0 + 3 + a) * nFull + c + a] = wr;
-            }
-            if (!effects.isEmpty()) {
-                // A position term that depends on the point itself scales every column that moves the point.
-                double[] g = dpDpoint;
-                boolean any = false;
-                for (double v : g) any |= v != 0;
-                if (any) {
-                    double[] a = new double[9], t = new double[9], ribT = new double[9];
-                    for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
-                    // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
-                    Se3.rotMul(rib, a, t);
-                    Se3.rotMulT(t, rib, ribT);
-                    int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
-                    double[] col = new double[3];
-                    for (int cIdx = 0; cIdx < effOff; cIdx++) {
-                        if (cIdx >= instStart && cIdx < instEnd) continue;
-                        for (int u = 0; u < 3; u++) col[u] = jac[(r0 + u) * nFull + cIdx];
-                        for (int u = 0; u < 3; u++)
-                            jac[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
+            // Residuals only: forward kinematics once per pose is enough (several times cheaper than the Jacobian).
+            if (jac == null) mdl.flange(qEff, ws, flange12);
+            for (int pt = 0; pt < points; pt++) {
+                double[] tool = tools[pt];
+                double[] rr = distance ? res3 : res, jj = distance ? jac3 : jac;
+                int r0 = distance ? 0 : i * rpp + 3 * pt;
+                if (jac3 != null) Arrays.fill(jac3, 0);
+                if (jac != null) mdl.poseJacobian(qEff, flangeTtools[pt], ws, pose12, jg);
+                else {
+                    for (int a = 0; a < 3; a++) {
+                        double f0 = flange12[4 * a], f1 = flange12[4 * a + 1], f2 = flange12[4 * a + 2];
+                        for (int b = 0; b < 3; b++) pose12[4 * a + b] = f0 * rft[b] + f1 * rft[3 + b] + f2 * rft[6 + b];
+                        pose12[4 * a + 3] = f0 * tool[0] + f1 * tool[1] + f2 * tool[2] + flange12[4 * a + 3];
                     }
                 }
-                effectColumns(mdl, qEff, flangeTtool, pbKin, rib, dThetaDv, dpDv, g, jac, r0, wp, wr);
-            }
-            if (sixD) {
-                // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
-                double[] jinv = new double[9];
-                Se3.rotLeftJacobianInverse(e, jinv);
-                double[] col = new double[3];
-                for (int cIdx = 0; cIdx < nFull; cIdx++) {
-                    for (int u = 0; u < 3; u++) col[u] = jac[(r0 + 3 + u) * nFull + cIdx];
-                    for (int u = 0; u < 3; u++)
-                        jac[(r0 + 3 + u) * nFull + cIdx] = jinv[3 * u] * col[0] + jinv[3 * u + 1] * col[1] + jinv[3 * u + 2] * col[2];
+                pb[0] = pose12[3]; pb[1] = pose12[7]; pb[2] = pose12[11];
+                rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
+                rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
+                rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
+                Se3.rotMulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
+                double[][] dpDv = null;
+                double[] dpDpoint = null;
+                if (!effects.isEmpty()) {
+                    Arrays.fill(dp, 0);
+                    dpDpoint = new double[9];
+                    dpDv = new double[effects.size()][];
+                    for (int k = 0; k < effects.size(); k++) {
+                        int size = effStart[k + 1] - effStart[k];
+                        double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
+                        dpDv[k] = jac == null ? null : new double[3 * size];
+                        effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
+                    }
+                    System.arraycopy(pb, 0, pbKin, 0, 3);
+                    pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
+                }
+                double px = rib[0] * pb[0] + rib[1] * pb[1] + rib[2] * pb[2] + tib[0];
+                double py = rib[3] * pb[0] + rib[4] * pb[1] + rib[5] * pb[2] + tib[1];
+                double pz = rib[6] * pb[0] + rib[7] * pb[1] + rib[8] * pb[2] + tib[2];
+                double ux = 0, uy = 0, uz = 0;
+                if (distance) {
+                    // d_pred = |p - a|; residual (d_pred - d) / σ; ∂d_pred/∂p = uᵀ, u the unit vector from the anchor.
+                    double dx = px - anchor[0], dy = py - anchor[1], dz = pz - anchor[2];
+                    double n = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                    if (n > 0) { ux = dx / n; uy = dy / n; uz = dz / n; }
+                    res[i] = (n - row.distance()) * wp;
+                } else {
+                    var meas = row.point(pt);
+                    rr[r0] = (px - meas.x()) * wp;
+                    rr[r0 + 1] = (py - meas.y()) * wp;
+                    rr[r0 + 2] = (pz - meas.z()) * wp;
+                }
+                if (sixD) {
+                    Se3.rotMul(rib, rbt, rpred);
+                    double[] oq = row.orientation();
+                    Se3.rotFromQuaternion(oq[0], oq[1], oq[2], oq[3], rmeas);
+                    Se3.rotMulT(rpred, rmeas, err);
+                    Se3.rotLog(err, e, 0);
+                    rr[r0 + 3] = e[0] * wr;
+                    rr[r0 + 4] = e[1] * wr;
+                    rr[r0 + 5] = e[2] * wr;
+                }
+                if (jac == null) continue;
+                // geometry: R_ib * (∂p_base/∂k), R_ib * (∂ω_base/∂k)
+                for (int c = 0; c < nGeo; c++) {
+                    double a0 = jg[c], a1 = jg[nGeo + c], a2 = jg[2 * nGeo + c];
+                    jj[r0 * nFull + c] = (rib[0] * a0 + rib[1] * a1 + rib[2] * a2) * wp;
+                    jj[(r0 + 1) * nFull + c] = (rib[3] * a0 + rib[4] * a1 + rib[5] * a2) * wp;
+                    jj[(r0 + 2) * nFull + c] = (rib[6] * a0 + rib[7] * a1 + rib[8] * a2) * wp;
+                    if (sixD) {
+                        double b0 = jg[3 * nGeo + c], b1 = jg[4 * nGeo + c], b2 = jg[5 * nGeo + c];
+                        jj[(r0 + 3) * nFull + c] = (rib[0] * b0 + rib[1] * b1 + rib[2] * b2) * wr;
+                        jj[(r0 + 4) * nFull + c] = (rib[3] * b0 + rib[4] * b1 + rib[5] * b2) * wr;
+                        jj[(r0 + 5) * nFull + c] = (rib[6] * b0 + rib[7] * b1 + rib[8] * b2) * wr;
+                    }
+                }
+                // tool point: ∂p/∂t_ft = R_ib R_bf; tool rotation (6-D): ∂ε/∂φ = R_ib R_bf
+                Se3.rotMul(rib, rbf, rib_rbf);
+                int tc = toolOff + 3 * pt;
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++) {
+                        jj[(r0 + a) * nFull + tc + b] = rib_rbf[3 * a + b] * wp;
+                        if (sixD) jj[(r0 + 3 + a) * nFull + toolOff + 3 + b] = rib_rbf[3 * a + b] * wr;
+                    }
+                if (instrument) {
+                    double qx = px - tib[0], qy = py - tib[1], qz = pz - tib[2]; // R_ib p_base
+                    for (int a = 0; a < 3; a++) jj[(r0 + a) * nFull + instOff + a] = wp;
+                    // ∂(Exp(δ) v)/∂δ = -[v]x
+                    int c = instOff + 3;
+                    jj[r0 * nFull + c + 1] = qz * wp;       jj[r0 * nFull + c + 2] = -qy * wp;
+                    jj[(r0 + 1) * nFull + c] = -qz * wp;    jj[(r0 + 1) * nFull + c + 2] = qx * wp;
+                    jj[(r0 + 2) * nFull + c] = qy * wp;     jj[(r0 + 2) * nFull + c + 1] = -qx * wp;
+                    if (sixD) for (int a = 0; a < 3; a++) jj[(r0 + 3 + a) * nFull + c + a] = wr;
+                }
+                if (!effects.isEmpty()) {
+                    // A position term that depends on the point itself scales every column that moves the point.
+                    double[] g = dpDpoint;
+                    boolean any = false;
+                    for (double v : g) any |= v != 0;
+                    if (any) {
+                        double[] a = new double[9], t = new double[9], ribT = new double[9];
+                        for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
+                        // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
+                        Se3.rotMul(rib, a, t);
+                        Se3.rotMulT(t, rib, ribT);
+                        int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
+                        double[] col = new double[3];
+                        for (int cIdx = 0; cIdx < effOff; cIdx++) {
+                            if (cIdx >= instStart && cIdx < instEnd) continue;
+                            for (int u = 0; u < 3; u++) col[u] = jj[(r0 + u) * nFull + cIdx];
+                            for (int u = 0; u < 3; u++)
+                                jj[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
+                        }
+                    }
+                    effectColumns(mdl, qEff, flangeTtools[pt], pbKin, rib, dThetaDv, dpDv, g, jj, r0, wp, wr);
+                }
+                if (sixD) {
+                    // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
+                    double[] jinv = new double[9];
+                    Se3.rotLeftJacobianInverse(e, jinv);
+                    double[] col = new double[3];
+                    for (int cIdx = 0; cIdx < nFull; cIdx++) {
+                        for (int u = 0; u < 3; u++) col[u] = jj[(r0 + 3 + u) * nFull + cIdx];
+                        for (int u = 0; u < 3; u++)
+                            jj[(r0 + 3 + u) * nFull + cIdx] = jinv[3 * u] * col[0] + jinv[3 * u + 1] * col[1] + jinv[3 * u + 2] * col[2];
+                    }
+                }
+                if (distance) {
+                    for (int c = 0; c < nFull; c++)
+                        jac[i * nFull + c] = ux * jac3[c] + uy * jac3[nFull + c] + uz * jac3[2 * nFull + c];
+                    jac[i * nFull + instOff] = -ux * wp;
+                    jac[i * nFull + instOff + 1] = -uy * wp;
+                    jac[i * nFull + instOff + 2] = -uz * wp;
                 }
             }
         }
@@ -456,7 +517,17 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     /** The kinematic model at a full parameter vector. */
     public KinematicModel modelOf(double[] full) { return model.withParameterValues(Arrays.copyOf(full, nGeo)); }
 
-    /** flangeTtool at a full parameter vector (identity rotation for position-only data). */
+    /** Measured point k (0-based) on the flange at a full parameter vector, flange coordinates, m. */
+    public Vec3 toolPointOf(double[] full, int k) {
+        return new Vec3(full[toolOff + 3 * k], full[toolOff + 3 * k + 1], full[toolOff + 3 * k + 2]);
+    }
+
+    /** The anchor (base frame, m) at a full parameter vector, or null without distance rows. */
+    public Vec3 anchorOf(double[] full) {
+        return distance ? new Vec3(full[instOff], full[instOff + 1], full[instOff + 2]) : null;
+    }
+
+    /** flangeTtool at a full parameter vector (identity rotation for position-only data; the first point's). */
     public Pose toolOf(double[] full) {
         double[] t = {full[toolOff], full[toolOff + 1], full[toolOff + 2]};
         if (!sixD) return Pose.translation(t[0], t[1], t[2]);

@@ -5,6 +5,8 @@ import org.ejml.data.DMatrixRMaj;
 import org.ejml.dense.row.CommonOps_DDRM;
 import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
 import org.ejml.interfaces.decomposition.SingularValueDecomposition_F64;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
 
@@ -98,5 +100,64 @@ public final class Registration {
         for (Vec3 p : pts) { x += p.x(); y += p.y(); z += p.z(); }
         int n = pts.size();
         return new Vec3(x / n, y / n, z / n);
+    }
+    /**
+     * Where each measured point sits on the flange, seen through a starting instrument frame:
+     * the flange coordinates T_bf(q)⁻¹ · instrumentTbase⁻¹ · p_k averaged over the poses (those
+     * in {@code skip} left out); the start of a fit with several points per pose.
+     */
+    static List<Vec3> toolPoints(KinematicModel nominal, List<Measurement> rows, Pose instrumentTbase, java.util.Set<String> skip) {
+        int pts = rows.get(0).points().size();
+        Pose baseTinst = instrumentTbase == null ? Pose.IDENTITY : instrumentTbase.inverse();
+        double[][] sum = new double[pts][3];
+        int n = 0;
+        for (Measurement m : rows) {
+            if (skip.contains(m.poseId())) continue;
+            Pose fb = nominal.flange(m.q()).inverse();
+            for (int k = 0; k < pts; k++) {
+                Vec3 f = fb.apply(baseTinst.apply(m.point(k)));
+                sum[k][0] += f.x(); sum[k][1] += f.y(); sum[k][2] += f.z();
+            }
+            n++;
+        }
+        List<Vec3> out = new java.util.ArrayList<>();
+        for (int k = 0; k < pts; k++) out.add(new Vec3(sum[k][0] / n, sum[k][1] / n, sum[k][2] / n));
+        return out;
+    }
+
+    /**
+     * The anchor of distance rows by linear multilateration on the nominal predictions of the
+     * measured point p_i: |p_i − a|² = d_i² gives 2 p_iᵀa − c = |p_i|² − d_i² with c = |a|²,
+     * linear in (a, c); least squares over the poses. A start for the fit, not its result.
+     */
+    static Vec3 multilaterate(KinematicModel nominal, List<Measurement> rows, Vec3 toolPoint, String source) {
+        double[] ata = new double[16], atb = new double[4];
+        for (Measurement m : rows) {
+            Vec3 p = nominal.flange(m.q()).apply(toolPoint);
+            double[] a = {2 * p.x(), 2 * p.y(), 2 * p.z(), -1};
+            double b = p.dot(p) - m.distance() * m.distance();
+            for (int r = 0; r < 4; r++) {
+                atb[r] += a[r] * b;
+                for (int c = 0; c < 4; c++) ata[4 * r + c] += a[r] * a[c];
+            }
+        }
+        double[] scale = new double[4];
+        for (int r = 0; r < 4; r++) scale[r] = Math.sqrt(Math.max(ata[5 * r], 1e-300));
+        for (int r = 0; r < 4; r++) {
+            atb[r] /= scale[r];
+            for (int c = 0; c < 4; c++) ata[4 * r + c] /= scale[r] * scale[c];
+        }
+        double[] l = ata.clone();
+        boolean ok = rows.size() >= 4 && Dense.cholesky(l, 4);
+        if (ok) {
+            // Condition of the scaled system: a pivot near zero means the points lie (nearly) on a plane.
+            for (int r = 0; r < 4; r++) ok &= l[5 * r] > 1e-6;
+        }
+        if (!ok)
+            throw new org.robopro.models.InputException(source, 0, 0, "distance", "the measured point does not move in all three "
+                    + "directions over these " + rows.size() + " poses, so the anchor cannot be located from distances; add poses that "
+                    + "move it up and down, sideways and towards the anchor, or give the anchor ('# anchor: x, y, z')");
+        Dense.choleskySolve(l, 4, atb);
+        return new Vec3(atb[0] / scale[0], atb[1] / scale[1], atb[2] / scale[2]);
     }
 }

@@ -82,11 +82,13 @@ public final class Trust {
         Matcher m = JOINT.matcher(name);
         if (m.matches()) {
             int j = Integer.parseInt(m.group(1));
-            var tool = r.flangeTtool().position();
-            double offAxis = Math.hypot(tool.x(), tool.y());
+            // The farthest measured point from the last joint's axis (the flange z axis) decides what the wrist shows.
+            double offAxis = 0;
+            for (var tool : r.toolPoints()) offAxis = Math.max(offAxis, Math.hypot(tool.x(), tool.y()));
             if (j >= dof - 1 && offAxis < NEAR_AXIS_M && !r.sixD())
                 return String.format(Locale.ROOT, "move the measured point off the joint-%d axis (it is %.1f mm from it; "
-                        + "50 mm or more separates the wrist offsets), or measure orientations too (6-D data)", dof, offAxis * 1e3);
+                        + "50 mm or more separates the wrist offsets), or measure orientations too (6-D data) or two more "
+                        + "points on the flange (several reflectors per pose)", dof, offAxis * 1e3);
             if (j >= 1 && j <= dof) {
                 String span = span(train, joints.get(j - 1), j - 1);
                 if (span != null) return span;

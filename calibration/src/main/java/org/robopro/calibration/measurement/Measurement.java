@@ -1,6 +1,8 @@
 package org.robopro.calibration.measurement;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import org.robopro.models.Vec3;
 
 /**
@@ -18,9 +20,14 @@ import org.robopro.models.Vec3;
  * @param payloadKg   mass at the flange, kg, or NaN
  * @param set         the split chosen by whoever took the data, or null
  * @param line        line of the file this pose came from (0 when not read from a file)
+ * @param points      every measured point of the pose, in the set's point order (the first is
+ *                    {@code position}); a single-point pose has one; empty for a distance row
+ * @param distance    distance-only row: the measured length from the fixed anchor to the
+ *                    measured point, m ({@code position} null, {@code points} empty); NaN otherwise
  */
 public record Measurement(String poseId, double[] q, Vec3 position, double[] orientation, int[] directions,
-                          double timeS, double tempC, double payloadKg, Split set, int line) {
+                         double timeS, double tempC, double payloadKg, Split set, int line, List<Vec3> points,
+                         double distance) {
 
     /** The {@code set} column's values. */
     public enum Split {
@@ -31,7 +38,19 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
 
     public Measurement {
         if (poseId == null || poseId.isEmpty()) throw new IllegalArgumentException("pose id must not be empty");
-        if (q == null || position == null) throw new IllegalArgumentException("q and position are required");
+        if (q == null) throw new IllegalArgumentException("q is required");
+        if (Double.isNaN(distance)) {
+            if (position == null && (points == null || points.isEmpty()))
+                throw new IllegalArgumentException("a measured position (or a distance) is required");
+            if (points == null || points.isEmpty()) points = List.of(position);
+            else points = List.copyOf(points);
+            if (position == null) position = points.get(0);
+            if (!points.get(0).equals(position)) throw new IllegalArgumentException("the first point must be the position");
+        } else {
+            if (position != null || points != null && !points.isEmpty() || orientation != null)
+                throw new IllegalArgumentException("a distance row has no position or orientation");
+            points = List.of();
+        }
         q = q.clone();
         if (orientation != null) {
             if (orientation.length != 4) throw new IllegalArgumentException("orientation needs 4 entries (w, x, y, z)");
@@ -42,6 +61,22 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
                 throw new IllegalArgumentException("directions " + Arrays.toString(directions) + " do not match " + q.length + " joints");
             directions = directions.clone();
         }
+    }
+
+    /** A measurement of one point (or with an orientation) as the single-point format has it. */
+    public Measurement(String poseId, double[] q, Vec3 position, double[] orientation, int[] directions,
+                       double timeS, double tempC, double payloadKg, Split set, int line) {
+        this(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, set, line, null, Double.NaN);
+    }
+
+    /** A measurement of several points on the tool at one pose (the first is {@link #position()}). */
+    public static Measurement ofPoints(String poseId, double[] q, List<Vec3> points) {
+        return new Measurement(poseId, q, null, null, null, Double.NaN, Double.NaN, Double.NaN, null, 0, points, Double.NaN);
+    }
+
+    /** A distance-only measurement: the length from the fixed anchor to the measured point, m. */
+    public static Measurement ofDistance(String poseId, double[] q, double distanceM) {
+        return new Measurement(poseId, q, null, null, null, Double.NaN, Double.NaN, Double.NaN, null, 0, null, distanceM);
     }
 
     /** A position-only measurement with no optional columns. */
@@ -60,6 +95,12 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
 
     public boolean hasOrientation() { return orientation != null; }
 
+    /** A distance-only row (no position). */
+    public boolean isDistance() { return !Double.isNaN(distance); }
+
+    /** Measured point k (0-based). */
+    public Vec3 point(int k) { return points.get(k); }
+
     /**
      * Largest believable coordinate of a measured point, m: beyond any industrial robot's reach
      * seen from any instrument's range (laser trackers measure to about 80 m, Leica AT960
@@ -72,14 +113,22 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
     /** The first field (q1.., x, y, z) that is non-finite or beyond the gross limits, or null. */
     public String grossField() {
         for (int k = 0; k < q.length; k++) if (!(Math.abs(q[k]) <= GROSS_JOINT)) return "q" + (k + 1);
-        if (!(Math.abs(position.x()) <= GROSS_POSITION_M)) return "x";
-        if (!(Math.abs(position.y()) <= GROSS_POSITION_M)) return "y";
-        if (!(Math.abs(position.z()) <= GROSS_POSITION_M)) return "z";
+        if (isDistance()) return distance >= 0 && distance <= GROSS_POSITION_M ? null : "distance";
+        for (int k = 0; k < points.size(); k++) {
+            Vec3 p = points.get(k);
+            String n = points.size() == 1 ? "" : Integer.toString(k + 1);
+            if (!(Math.abs(p.x()) <= GROSS_POSITION_M)) return "x" + n;
+            if (!(Math.abs(p.y()) <= GROSS_POSITION_M)) return "y" + n;
+            if (!(Math.abs(p.z()) <= GROSS_POSITION_M)) return "z" + n;
+        }
         return null;
     }
 
     /** Why a value of {@code field} named by {@link #grossField()} is refused, in words. */
     public static String grossReason(String field) {
+        if (field.equals("distance"))
+            return String.format(java.util.Locale.ROOT, "distance is negative, not finite or beyond %.0f m: "
+                    + "a misread value; correct or delete this row", GROSS_POSITION_M);
         return field.startsWith("q")
                 ? String.format(java.util.Locale.ROOT, "joint value is not finite or beyond %.0f rad (or m): "
                         + "not a joint position; correct or delete this row", GROSS_JOINT)
@@ -87,26 +136,30 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
                         + "robot's reach: a misread value; correct or delete this row", GROSS_POSITION_M);
     }
 
+    /** The same row with its (first) measured point replaced. */
     public Measurement withPosition(Vec3 p) {
-        return new Measurement(poseId, q, p, orientation, directions, timeS, tempC, payloadKg, set, line);
+        List<Vec3> pts = new ArrayList<>(points);
+        pts.set(0, p);
+        return new Measurement(poseId, q, p, orientation, directions, timeS, tempC, payloadKg, set, line, pts, distance);
     }
 
     public Measurement withOrientation(double[] quaternionWxyz) {
-        return new Measurement(poseId, q, position, quaternionWxyz, directions, timeS, tempC, payloadKg, set, line);
+        return new Measurement(poseId, q, position, quaternionWxyz, directions, timeS, tempC, payloadKg, set, line, points, distance);
     }
 
     public Measurement withSet(Split s) {
-        return new Measurement(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, s, line);
+        return new Measurement(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, s, line, points, distance);
     }
 
     public Measurement withConditions(int[] dirs, double time, double temp, double payload) {
-        return new Measurement(poseId, q, position, orientation, dirs, time, temp, payload, set, line);
+        return new Measurement(poseId, q, position, orientation, dirs, time, temp, payload, set, line, points, distance);
     }
 
     @Override
     public boolean equals(Object o) {
         return o instanceof Measurement m && poseId.equals(m.poseId) && Arrays.equals(q, m.q)
-                && position.equals(m.position) && Arrays.equals(orientation, m.orientation)
+                && java.util.Objects.equals(position, m.position) && points.equals(m.points)
+                && Double.compare(distance, m.distance) == 0 && Arrays.equals(orientation, m.orientation)
                 && Arrays.equals(directions, m.directions) && Double.compare(timeS, m.timeS) == 0
                 && Double.compare(tempC, m.tempC) == 0 && Double.compare(payloadKg, m.payloadKg) == 0
                 && set == m.set;
@@ -117,6 +170,7 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
 
     @Override
     public String toString() {
-        return "Measurement[" + poseId + ", q=" + Arrays.toString(q) + ", p=" + position + "]";
+        return "Measurement[" + poseId + ", q=" + Arrays.toString(q)
+                + (isDistance() ? ", d=" + distance : points.size() > 1 ? ", points=" + points : ", p=" + position) + "]";
     }
 }

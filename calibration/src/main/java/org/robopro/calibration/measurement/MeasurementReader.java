@@ -120,18 +120,62 @@ public final class MeasurementReader {
                 var dm = DIR_COL.matcher(name);
                 if (dm.matches()) maxDir = Math.max(maxDir, Integer.parseInt(dm.group(1)));
             }
-            // Several measured points per pose need one tool point each in identification, which
-            // is not supported yet: refuse such a file rather than ignore its extra points or fit
-            // several reflectors as one.
+            if (!index.containsKey("pose"))
+                throw error(headerLine, 1, "pose", "required column 'pose' is missing from the header row");
+            // The form of the file: one point per pose (x, y, z), several per pose in long form
+            // (a point column, one row per pose and point) or wide form (x1, y1, z1, x2, ...), or
+            // distance-only rows (distance, no coordinates).
+            Integer pointIdx = index.get("point");
+            Integer distIdx = index.get("distance");
+            if (distIdx != null && index.containsKey("d"))
+                throw error(headerLine, cols.get(index.get("d")).col, "d", "columns 'd' and 'distance' name the same value; keep one");
+            if (distIdx == null) distIdx = index.get("d");
+            int maxWide = 0;
+            Field firstWide = null;
             for (Field f : cols) {
                 String name = f.text.toLowerCase(Locale.ROOT);
-                if (name.equals("point") || MULTI_POINT_COL.matcher(name).matches())
-                    throw error(headerLine, f.col, name, "several measured points per pose are not supported yet; "
-                            + "give one measured point per pose (columns x, y, z; one file per reflector)");
+                if (MULTI_POINT_COL.matcher(name).matches()) {
+                    maxWide = Math.max(maxWide, Integer.parseInt(name.substring(1)));
+                    if (firstWide == null) firstWide = f;
+                }
             }
-            for (String req : new String[] {"pose", "x", "y", "z"})
-                if (!index.containsKey(req))
-                    throw error(headerLine, 1, req, "required column '" + req + "' is missing from the header row");
+            String[] quat = {"qw", "qx", "qy", "qz"};
+            if (distIdx != null) {
+                String distName = cols.get(distIdx).text.toLowerCase(Locale.ROOT);
+                for (String c : new String[] {"x", "y", "z", "point", "qw", "qx", "qy", "qz"})
+                    if (index.containsKey(c))
+                        throw error(headerLine, cols.get(index.get(c)).col, c, "a distance file has no coordinates, points or orientations: "
+                                + "column '" + c + "' cannot stand next to '" + distName + "' (one file holds positions or distances, not both)");
+                if (firstWide != null)
+                    throw error(headerLine, firstWide.col, firstWide.text.toLowerCase(Locale.ROOT), "a distance file has no coordinates: column '"
+                            + firstWide.text + "' cannot stand next to '" + distName + "'");
+            } else if (firstWide != null) {
+                String w = firstWide.text.toLowerCase(Locale.ROOT);
+                for (String c : new String[] {"x", "y", "z"})
+                    if (index.containsKey(c))
+                        throw error(headerLine, cols.get(index.get(c)).col, c, "column '" + c + "' mixes the one-point form (x, y, z) with the "
+                                + "numbered form ('" + w + "'); number every point's columns (x1, y1, z1, x2, ...)");
+                if (pointIdx != null)
+                    throw error(headerLine, cols.get(pointIdx).col, "point", "a 'point' column (one row per point) and numbered columns ('"
+                            + w + "') are two forms of several points per pose; use one");
+                if (maxWide < 2)
+                    throw error(headerLine, firstWide.col, w, "numbered coordinate columns need at least two points (x1..z1 and x2..z2); "
+                            + "for one point name the columns x, y, z");
+                for (int k = 1; k <= maxWide; k++)
+                    for (String a : new String[] {"x", "y", "z"})
+                        if (!index.containsKey(a + k))
+                            throw error(headerLine, 1, a + k, "coordinate column '" + a + k + "' is missing (the header has points 1 to " + maxWide
+                                    + "; each needs x, y and z)");
+            }
+            if (distIdx == null && firstWide == null)
+                for (String req : new String[] {"x", "y", "z"})
+                    if (!index.containsKey(req))
+                        throw error(headerLine, 1, req, "required column '" + req + "' is missing from the header row");
+            if ((pointIdx != null || firstWide != null))
+                for (String s : quat)
+                    if (index.containsKey(s))
+                        throw error(headerLine, cols.get(index.get(s)).col, s, "orientations with several points per pose are not "
+                                + "supported (the points determine the flange orientation); drop the qw, qx, qy, qz columns or give one point per pose");
             if (maxQ == 0) throw error(headerLine, 1, "q1", "required joint columns q1..qN are missing from the header row");
             for (int k = 1; k <= maxQ; k++)
                 if (!index.containsKey("q" + k))
@@ -156,7 +200,6 @@ public final class MeasurementReader {
                 }
             }
             int[] oIdx = null;
-            String[] quat = {"qw", "qx", "qy", "qz"};
             int present = 0;
             for (String s : quat) if (index.containsKey(s)) present++;
             if (present > 0 && present < 4) {
@@ -168,7 +211,17 @@ public final class MeasurementReader {
                 oIdx = new int[4];
                 for (int k = 0; k < 4; k++) oIdx[k] = index.get(quat[k]);
             }
-            int poseIdx = index.get("pose"), xIdx = index.get("x"), yIdx = index.get("y"), zIdx = index.get("z");
+            // Coordinate columns of each point on a row: one point (x, y, z or the long form's) or P wide.
+            int perRow = distIdx != null ? 0 : firstWide != null ? maxWide : 1;
+            int[][] pIdx = new int[perRow][3];
+            String[][] pName = new String[perRow][3];
+            for (int k = 0; k < perRow; k++)
+                for (int a = 0; a < 3; a++) {
+                    String c = "xyz".charAt(a) + (firstWide != null ? Integer.toString(k + 1) : "");
+                    pIdx[k][a] = index.get(c);
+                    pName[k][a] = c;
+                }
+            int poseIdx = index.get("pose");
             Integer tIdx = index.get("time_s"), tempIdx = index.get("temp_c"), payIdx = index.get("payload_kg"),
                     setIdx = index.get("set");
 
@@ -176,8 +229,23 @@ public final class MeasurementReader {
             for (int k = 0; k < dof; k++)
                 qScale[k] = types != null && types.get(k) == JointType.PRISMATIC ? lengthScale : angleScale;
 
+            Vec3 anchor = null;
+            if (meta.containsKey("anchor")) {
+                int[] pos = metaPos.get("anchor");
+                if (distIdx == null)
+                    throw error(pos[0], pos[1], "anchor", "an anchor belongs to distance measurements ('distance' column); "
+                            + "this file measures positions");
+                anchor = anchor(meta.get("anchor"), pos, lengthScale);
+            }
+
             List<Measurement> rows = new ArrayList<>();
             Map<String, Integer> seen = new HashMap<>();
+            // Long form: the rows of each pose, by pose id in order of first appearance.
+            Map<String, List<Measurement>> byPose = new LinkedHashMap<>();
+            Map<String, List<String>> pointsOf = new HashMap<>();
+            Map<String, List<Integer>> linesOf = new HashMap<>();
+            Map<String, Integer> pointCols = new HashMap<>();
+            List<String> order = new ArrayList<>();
             for (int li = i + 1; li < lines.length; li++) {
                 String l = lines[li];
                 String s = l.trim();
@@ -190,12 +258,36 @@ public final class MeasurementReader {
                 Field pf = fs.get(poseIdx);
                 String id = pf.text;
                 if (id.isEmpty()) throw error(lineNo, pf.col, "pose", "empty pose id");
-                Integer prev = seen.putIfAbsent(id, lineNo);
-                if (prev != null) throw error(lineNo, pf.col, "pose", "duplicate pose id '" + id + "' (first on line " + prev + ")");
+                String pointName = null;
+                if (pointIdx != null) {
+                    Field nf = fs.get(pointIdx);
+                    pointName = nf.text;
+                    if (pointName.isEmpty()) throw error(lineNo, nf.col, "point", "empty point name");
+                    List<String> names = pointsOf.computeIfAbsent(id, k -> new ArrayList<>());
+                    int dup = names.indexOf(pointName);
+                    if (dup >= 0)
+                        throw error(lineNo, nf.col, "point", "point '" + pointName + "' of pose '" + id + "' is given twice (first on line "
+                                + linesOf.get(id).get(dup) + ")");
+                    names.add(pointName);
+                    linesOf.computeIfAbsent(id, k -> new ArrayList<>()).add(lineNo);
+                    pointCols.put(id + "\u0000" + pointName, nf.col);
+                } else {
+                    Integer prev = seen.putIfAbsent(id, lineNo);
+                    if (prev != null) throw error(lineNo, pf.col, "pose", "duplicate pose id '" + id + "' (first on line " + prev + ")");
+                }
                 double[] q = new double[dof];
                 for (int k = 0; k < dof; k++) q[k] = number(lineNo, fs.get(qIdx[k]), "q" + (k + 1)) * qScale[k];
-                Vec3 p = new Vec3(number(lineNo, fs.get(xIdx), "x") * lengthScale,
-                        number(lineNo, fs.get(yIdx), "y") * lengthScale, number(lineNo, fs.get(zIdx), "z") * lengthScale);
+                List<Vec3> pts = new ArrayList<>();
+                for (int k = 0; k < perRow; k++)
+                    pts.add(new Vec3(number(lineNo, fs.get(pIdx[k][0]), pName[k][0]) * lengthScale,
+                            number(lineNo, fs.get(pIdx[k][1]), pName[k][1]) * lengthScale,
+                            number(lineNo, fs.get(pIdx[k][2]), pName[k][2]) * lengthScale));
+                double dist = Double.NaN;
+                if (distIdx != null) {
+                    Field f = fs.get(distIdx);
+                    dist = number(lineNo, f, cols.get(distIdx).text.toLowerCase(Locale.ROOT)) * lengthScale;
+                    if (dist < 0) throw error(lineNo, f.col, cols.get(distIdx).text.toLowerCase(Locale.ROOT), "a distance must not be negative");
+                }
                 double[] o = null;
                 if (oIdx != null) {
                     o = new double[4];
@@ -234,12 +326,36 @@ public final class MeasurementReader {
                         default -> throw error(lineNo, f.col, "set", "set must be 'train' or 'validate', not '" + f.text + "'");
                     }
                 }
-                Measurement row = new Measurement(id, q, p, o, dirs, time, temp, pay, split, lineNo);
+                Measurement row = new Measurement(id, q, null, o, dirs, time, temp, pay, split, lineNo,
+                        distIdx != null ? null : pts, dist);
                 String gross = row.grossField();
-                if (gross != null)
-                    throw error(lineNo, fs.get(gross.startsWith("q") ? qIdx[Integer.parseInt(gross.substring(1)) - 1]
-                            : index.get(gross)).col, gross, Measurement.grossReason(gross));
-                rows.add(row);
+                if (gross != null) {
+                    int col;
+                    if (gross.startsWith("q")) col = fs.get(qIdx[Integer.parseInt(gross.substring(1)) - 1]).col;
+                    else if (gross.equals("distance")) col = fs.get(distIdx).col;
+                    else {
+                        int k = gross.length() > 1 ? Integer.parseInt(gross.substring(1)) - 1 : 0;
+                        col = fs.get(pIdx[k]["xyz".indexOf(gross.charAt(0))]).col;
+                    }
+                    throw error(lineNo, col, gross.equals("distance") ? cols.get(distIdx).text.toLowerCase(Locale.ROOT) : gross,
+                            Measurement.grossReason(gross));
+                }
+                if (pointIdx == null) rows.add(row);
+                else {
+                    if (!byPose.containsKey(id)) order.add(id);
+                    byPose.computeIfAbsent(id, k -> new ArrayList<>()).add(row);
+                }
+            }
+            List<String> pointNames = List.of();
+            if (pointIdx != null) {
+                if (byPose.isEmpty()) throw error(headerLine, 1, null, "no measurement rows after the header row");
+                List<String> names = pointsOf.get(order.get(0));
+                for (String id : order) rows.add(merge(id, byPose.get(id), names, pointsOf.get(id), linesOf.get(id), pointCols, cols.get(pointIdx).col, dIdx != null));
+                if (names.size() > 1) pointNames = names;
+            } else if (perRow > 1) {
+                List<String> names = new ArrayList<>();
+                for (int k = 1; k <= perRow; k++) names.add(Integer.toString(k));
+                pointNames = names;
             }
             if (rows.isEmpty()) throw error(headerLine, 1, null, "no measurement rows after the header row");
             String frame = meta.getOrDefault("frame", "instrument");
@@ -247,7 +363,60 @@ public final class MeasurementReader {
                 int[] pos = metaPos.get("frame");
                 throw error(pos[0], pos[1], "frame", "empty frame name; write 'base' or the instrument's name");
             }
-            return new MeasurementSet(file, Collections.unmodifiableMap(meta), frame, rows);
+            return new MeasurementSet(file, Collections.unmodifiableMap(meta), frame, rows, pointNames, anchor);
+        }
+
+        /**
+         * The rows of one pose in long form turned into one measurement: the same joint values,
+         * directions and split on every row, every point of the first pose once, in that pose's
+         * order; time, temperature and payload from the pose's first row.
+         */
+        Measurement merge(String id, List<Measurement> rs, List<String> names, List<String> have, List<Integer> lineNos,
+                          Map<String, Integer> pointCols, int pointCol, boolean dirs) {
+            Measurement first = rs.get(0);
+            for (int r = 1; r < rs.size(); r++) {
+                Measurement m = rs.get(r);
+                for (int k = 0; k < first.dof(); k++)
+                    if (m.q(k) != first.q(k))
+                        throw error(m.line(), 1, "q" + (k + 1), "pose '" + id + "' has other joint values than on line " + first.line()
+                                + "; every point of a pose repeats the pose's joint values (give the pose another id if the robot moved)");
+                if (m.set() != first.set())
+                    throw error(m.line(), 1, "set", "pose '" + id + "' is in set '" + name(m.set()) + "' here but '" + name(first.set())
+                            + "' on line " + first.line() + "; the points of one pose belong to one set");
+                if (dirs && !java.util.Arrays.equals(m.directions(), first.directions()))
+                    throw error(m.line(), 1, "dir1", "pose '" + id + "' has other directions than on line " + first.line()
+                            + "; the points of one pose share its approach directions");
+            }
+            for (String n : have)
+                if (!names.contains(n))
+                    throw error(lineNos.get(have.indexOf(n)), pointCols.get(id + "\u0000" + n), "point", "point '" + n + "' of pose '" + id
+                            + "' is not measured at the first pose (points " + String.join(", ", names) + "); every pose measures the same points");
+            for (String n : names)
+                if (!have.contains(n))
+                    throw error(first.line(), pointCol, "point", "pose '" + id + "' has no point '" + n + "' (every pose measures points "
+                            + String.join(", ", names) + "); measure it or delete the pose's rows");
+            List<Vec3> pts = new ArrayList<>();
+            for (String n : names) pts.add(rs.get(have.indexOf(n)).position());
+            return new Measurement(id, first.q(), null, null, first.directions(), first.timeS(), first.tempC(), first.payloadKg(),
+                    first.set(), first.line(), pts, Double.NaN);
+        }
+
+        private static String name(Measurement.Split s) { return s == null ? "(none)" : s.fileName(); }
+
+        Vec3 anchor(String text, int[] pos, double scale) {
+            String[] parts = text.split("[,;\\s]+");
+            if (parts.length != 3)
+                throw error(pos[0], pos[1], "anchor", "the anchor needs three coordinates 'x, y, z' (robot base frame, length unit), not '"
+                        + abbreviate(text) + "'");
+            double[] v = new double[3];
+            for (int k = 0; k < 3; k++) {
+                if (!NUMBER.matcher(parts[k]).matches() || !Double.isFinite(Double.parseDouble(parts[k]))
+                        || !(Math.abs(Double.parseDouble(parts[k]) * scale) <= Measurement.GROSS_POSITION_M))
+                    throw error(pos[0], pos[1], "anchor", "anchor coordinate '" + abbreviate(parts[k]) + "' is not a number within "
+                            + (int) Measurement.GROSS_POSITION_M + " m");
+                v[k] = Double.parseDouble(parts[k]) * scale;
+            }
+            return new Vec3(v[0], v[1], v[2]);
         }
 
         double unit(Map<String, String> meta, Map<String, int[]> pos, int headerLine, String key,
@@ -322,7 +491,8 @@ public final class MeasurementReader {
 
     /** Unused-set guard so a caller can list the columns this reader understands. */
     public static Set<String> knownColumns(int dof) {
-        Set<String> s = new HashSet<>(List.of("pose", "x", "y", "z", "qw", "qx", "qy", "qz", "time_s", "temp_c", "payload_kg", "set"));
+        Set<String> s = new HashSet<>(List.of("pose", "x", "y", "z", "qw", "qx", "qy", "qz", "time_s", "temp_c", "payload_kg", "set",
+                "point", "distance", "d"));
         for (int k = 1; k <= dof; k++) { s.add("q" + k); s.add("dir" + k); }
         return s;
     }

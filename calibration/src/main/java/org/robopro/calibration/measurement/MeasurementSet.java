@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Predicate;
+import org.robopro.models.Vec3;
 
 /**
  * The contents of a measurement file (docs/measurement-file.md), SI units inside. Immutable.
@@ -14,15 +15,50 @@ import java.util.function.Predicate;
  * @param metadata   every {@code # key: value} line in order (keys lower-case), unknown keys included
  * @param frame      the frame the positions are expressed in; "base" means the robot base frame
  * @param rows       the measured poses, in file order
+ * @param pointNames names of the measured points of every pose, in order, when there are several
+ *                   (tool points 1..P); empty for one point per pose and for distance rows
+ * @param anchor     distance rows: the fixed anchor's position in the robot base frame when the
+ *                   file gives it ({@code # anchor:}), m; null when unknown (identified)
  */
-public record MeasurementSet(String source, Map<String, String> metadata, String frame, List<Measurement> rows) {
+public record MeasurementSet(String source, Map<String, String> metadata, String frame, List<Measurement> rows,
+                             List<String> pointNames, Vec3 anchor) {
     public static final String BASE_FRAME = "base";
 
     public MeasurementSet {
         metadata = Collections.unmodifiableMap(new LinkedHashMap<>(metadata));
         rows = List.copyOf(rows);
+        pointNames = pointNames == null ? List.of() : List.copyOf(pointNames);
         if (frame == null || frame.isBlank()) frame = "instrument";
+        if (pointNames.size() == 1) throw new IllegalArgumentException("one measured point per pose needs no point names");
+        for (Measurement m : rows) {
+            int want = pointNames.isEmpty() ? 1 : pointNames.size();
+            if (m.isDistance() ? !pointNames.isEmpty() : m.points().size() != want)
+                throw new IllegalArgumentException("pose " + m.poseId() + " has " + m.points().size() + " points, the set " + want);
+        }
+        if (rows.stream().map(Measurement::isDistance).distinct().count() > 1)
+            throw new IllegalArgumentException("positions and distances in one set");
+        if (anchor != null && rows.stream().anyMatch(m -> !m.isDistance()))
+            throw new IllegalArgumentException("an anchor belongs to distance rows only");
     }
+
+    /** One measured point per pose (or distance rows), no anchor. */
+    public MeasurementSet(String source, Map<String, String> metadata, String frame, List<Measurement> rows) {
+        this(source, metadata, frame, rows, multi(rows), null);
+    }
+
+    private static List<String> multi(List<Measurement> rows) {
+        int p = rows.isEmpty() || rows.get(0).isDistance() ? 1 : rows.get(0).points().size();
+        if (p == 1) return List.of();
+        List<String> names = new ArrayList<>();
+        for (int k = 1; k <= p; k++) names.add(Integer.toString(k));
+        return names;
+    }
+
+    /** Measured points per pose (1 for single-point and distance data). */
+    public int pointCount() { return pointNames.isEmpty() ? 1 : pointNames.size(); }
+
+    /** Distance-only data: every row a length to the anchor. */
+    public boolean isDistance() { return !rows.isEmpty() && rows.get(0).isDistance(); }
 
     /** Positions are in the robot base frame: no instrument frame to identify. */
     public boolean inBaseFrame() { return BASE_FRAME.equalsIgnoreCase(frame.trim()); }
@@ -47,7 +83,7 @@ public record MeasurementSet(String source, Map<String, String> metadata, String
     public MeasurementSet filter(Predicate<Measurement> keep) {
         List<Measurement> out = new ArrayList<>();
         for (Measurement m : rows) if (keep.test(m)) out.add(m);
-        return new MeasurementSet(source, metadata, frame, out);
+        return new MeasurementSet(source, metadata, frame, out, pointNames, anchor);
     }
 
     /** Rows of the given split (rows without a {@code set} value count as training data). */
@@ -56,6 +92,6 @@ public record MeasurementSet(String source, Map<String, String> metadata, String
     }
 
     public MeasurementSet withRows(List<Measurement> newRows) {
-        return new MeasurementSet(source, metadata, frame, newRows);
+        return new MeasurementSet(source, metadata, frame, newRows, pointNames, anchor);
     }
 }

@@ -37,26 +37,51 @@ public final class MeasurementWriter {
     public static String format(MeasurementSet set, List<JointType> jointTypes) {
         StringBuilder sb = new StringBuilder();
         Columns c = Columns.of(set);
-        header(sb, set.metadata(), set.frame(), set.dof(), c);
-        for (Measurement m : set.rows()) row(sb, m, set.dof(), jointTypes, c);
+        if (set.pointNames().isEmpty() && !set.isDistance()) {
+            header(sb, set.metadata(), set.frame(), set.dof(), c);
+            for (Measurement m : set.rows()) row(sb, m, set.dof(), jointTypes, c);
+            return sb.toString();
+        }
+        // Several points per pose: the long form, one row per pose and point; distances: a distance column.
+        for (String n : set.pointNames())
+            if (n.contains(",") || n.contains("\n") || n.startsWith("#") || n.isBlank())
+                throw new IllegalArgumentException("point name '" + n + "' cannot be written (comma, newline, leading # or blank)");
+        header(sb, set.metadata(), set.frame(), set.dof(), c, !set.pointNames().isEmpty(), set.isDistance(), set.anchor());
+        for (Measurement m : set.rows()) {
+            if (set.isDistance()) {
+                row(sb, m, set.dof(), jointTypes, c, null, m.distance(), null);
+                continue;
+            }
+            for (int k = 0; k < set.pointCount(); k++) row(sb, m, set.dof(), jointTypes, c, set.pointNames().get(k), Double.NaN, m.point(k));
+        }
         return sb.toString();
     }
 
     /** The magic line, metadata, units and the header row. */
     static void header(StringBuilder sb, Map<String, String> metadata, String frame, int dof, Columns c) {
+        header(sb, metadata, frame, dof, c, false, false, null);
+    }
+
+    /** The header with a point column ({@code points}) or a distance column instead of x, y, z, and an anchor line. */
+    static void header(StringBuilder sb, Map<String, String> metadata, String frame, int dof, Columns c, boolean points,
+                       boolean distance, org.robopro.models.Vec3 anchor) {
         sb.append("# robopro-measurements 1\n");
         boolean wroteFrame = false;
         for (Map.Entry<String, String> e : metadata.entrySet()) {
             String k = e.getKey();
-            if (k.equals("length-unit") || k.equals("angle-unit") || k.equals("robopro-measurements 1")) continue;
+            if (k.equals("length-unit") || k.equals("angle-unit") || k.equals("robopro-measurements 1") || k.equals("anchor")) continue;
             if (k.equals("frame")) { wroteFrame = true; sb.append("# frame: ").append(frame).append('\n'); continue; }
             sb.append("# ").append(k).append(": ").append(e.getValue().replace('\n', ' ')).append('\n');
         }
         if (!wroteFrame) sb.append("# frame: ").append(frame).append('\n');
+        if (anchor != null)
+            sb.append("# anchor: ").append(num(Units.mToMm(anchor.x()), 6)).append(", ").append(num(Units.mToMm(anchor.y()), 6))
+              .append(", ").append(num(Units.mToMm(anchor.z()), 6)).append('\n');
         sb.append("# length-unit: mm\n# angle-unit: deg\n");
         sb.append("pose");
+        if (points) sb.append(",point");
         for (int k = 1; k <= dof; k++) sb.append(",q").append(k);
-        sb.append(",x,y,z");
+        sb.append(distance ? ",distance" : ",x,y,z");
         if (c.orientation()) sb.append(",qw,qx,qy,qz");
         if (c.directions()) for (int k = 1; k <= dof; k++) sb.append(",dir").append(k);
         if (c.time()) sb.append(",time_s");
@@ -68,17 +93,25 @@ public final class MeasurementWriter {
 
     /** One data row with the columns {@code c}. */
     static void row(StringBuilder sb, Measurement m, int dof, List<JointType> jointTypes, Columns c) {
+        row(sb, m, dof, jointTypes, c, null, Double.NaN, m.position());
+    }
+
+    /** A data row: {@code point} the point's name (long form) or null; {@code distance} (m) or the position {@code p}. */
+    static void row(StringBuilder sb, Measurement m, int dof, List<JointType> jointTypes, Columns c, String point, double distance,
+                    org.robopro.models.Vec3 p) {
         String id = m.poseId();
         if (id.contains(",") || id.contains("\n") || id.startsWith("#"))
             throw new IllegalArgumentException("pose id '" + id + "' cannot be written (comma, newline or leading #)");
         sb.append(id);
+        if (point != null) sb.append(',').append(point);
         for (int k = 0; k < dof; k++) {
             boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
             sb.append(',').append(num(prismatic ? Units.mToMm(m.q(k)) : Units.radToDeg(m.q(k)), 9));
         }
-        sb.append(',').append(num(Units.mToMm(m.position().x()), 6))
-          .append(',').append(num(Units.mToMm(m.position().y()), 6))
-          .append(',').append(num(Units.mToMm(m.position().z()), 6));
+        if (p == null) sb.append(',').append(num(Units.mToMm(distance), 6));
+        else sb.append(',').append(num(Units.mToMm(p.x()), 6))
+                .append(',').append(num(Units.mToMm(p.y()), 6))
+                .append(',').append(num(Units.mToMm(p.z()), 6));
         if (c.orientation()) for (double v : m.orientation()) sb.append(',').append(num(v, 12));
         if (c.directions()) for (int v : m.directions()) sb.append(',').append(v);
         if (c.time()) sb.append(',').append(num(m.timeS(), 3));

@@ -136,8 +136,27 @@ public final class CalibrationReport {
         s.put("robot", ctx.robot());
         s.put("measurements", ctx.measurements());
         s.put("validation", ctx.validation());
-        s.put("poses_train", r.train().size());
-        s.put("poses_validate", r.validate().size());
+        s.put("poses_train", CalibrationResult.poses(r.train()));
+        s.put("poses_validate", CalibrationResult.poses(r.validate()));
+        if (!r.pointNames().isEmpty()) {
+            // Several measured points per pose: every error figure is over the points (poses x points).
+            List<Map<String, Object>> pts = new ArrayList<>();
+            for (int k = 0; k < r.pointNames().size(); k++) {
+                Map<String, Object> e = new LinkedHashMap<>();
+                e.put("name", r.pointNames().get(k));
+                var t = r.toolPoints().get(k);
+                e.put("flange_mm", List.of(Units.mToMm(t.x()), Units.mToMm(t.y()), Units.mToMm(t.z())));
+                pts.add(e);
+            }
+            s.put("measured_points", pts);
+        }
+        if (r.distance()) {
+            // Distance-only data: every error figure is a distance error |measured - predicted|.
+            s.put("distance_only", true);
+            var a = r.anchor();
+            s.put("anchor_base_mm", List.of(Units.mToMm(a.x()), Units.mToMm(a.y()), Units.mToMm(a.z())));
+            s.put("anchor", r.anchorGiven() ? "given in the file, kept" : "identified");
+        }
         s.put("six_d", r.sixD());
         s.put("nominal_train_rms_mm", mm(r.nominalTrainRmsM()));
         s.put("train_rms_mm", mm(r.trainRmsM()));
@@ -160,8 +179,8 @@ public final class CalibrationReport {
                 CalibrationResult f = cv.folds().get(k);
                 Map<String, Object> e = new LinkedHashMap<>();
                 e.put("fold", k + 1);
-                e.put("poses_train", f.train().size());
-                e.put("poses_held_out", f.validate().size());
+                e.put("poses_train", CalibrationResult.poses(f.train()));
+                e.put("poses_held_out", CalibrationResult.poses(f.validate()));
                 e.put("train_rms_mm", mm(f.trainRmsM()));
                 e.put("held_out", statsJson(ErrorStats.position(f.validate(), true), 1e3, "mm"));
                 per.add(e);
@@ -282,8 +301,10 @@ public final class CalibrationReport {
         h.append("<h1>Calibration of ").append(Html.esc(ctx.robot())).append("</h1>\n<p>Measurements: <code>")
          .append(Html.esc(ctx.measurements())).append("</code>");
         if (ctx.validation() != null) h.append("; validation: <code>").append(Html.esc(ctx.validation())).append("</code>");
-        h.append(". ").append(r.train().size()).append(" training poses").append(r.sixD() ? " with orientations" : " (positions)")
-         .append(", ").append(r.validate().size()).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");
+        String kind = r.sixD() ? " with orientations" : r.distance() ? " (distances to an anchor)"
+                : r.pointNames().isEmpty() ? " (positions)" : " (" + r.pointNames().size() + " points each: " + String.join(", ", r.pointNames()) + ")";
+        h.append(". ").append(CalibrationResult.poses(r.train())).append(" training poses").append(kind)
+         .append(", ").append(CalibrationResult.poses(r.validate())).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");
         for (String w : warnings) h.append("<p class=\"warn\"><b>Warning:</b> ").append(Html.esc(w)).append("</p>\n");
 
         h.append("<h2>Result</h2><table><tr><th class=\"l\">position error (mm)</th><th class=\"l\">model</th><th>poses</th>")
@@ -317,7 +338,7 @@ public final class CalibrationReport {
             for (int k = 0; k < cv.folds().size(); k++) {
                 CalibrationResult f = cv.folds().get(k);
                 ErrorStats st = ErrorStats.position(f.validate(), true);
-                h.append("<tr><td>").append(k + 1).append("</td><td>").append(f.train().size()).append("</td><td>")
+                h.append("<tr><td>").append(k + 1).append("</td><td>").append(CalibrationResult.poses(f.train())).append("</td><td>")
                  .append(fmt(Units.mToMm(f.trainRmsM()))).append("</td><td>").append(st.n()).append("</td><td>")
                  .append(fmt(Units.mToMm(st.rms()))).append("</td><td>").append(fmt(Units.mToMm(st.max()))).append("</td></tr>");
             }

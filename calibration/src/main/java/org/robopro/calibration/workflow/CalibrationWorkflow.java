@@ -251,31 +251,64 @@ public final class CalibrationWorkflow {
          * (1-based; empty when not cross-validated or for validation poses), outlier flag, the
          * nominal model's error norm, the calibrated model's error (measured minus predicted, in
          * the measurement frame) and its norm, in mm; for 6-D data the rotation errors in degrees;
-         * with folds, the error of the model that did not see the pose.
+         * with folds, the error of the model that did not see the pose. With several measured points
+         * per pose, one row per pose and point (a {@code point} column after the pose); for
+         * distance data the distance error {@code dd_mm} (measured minus predicted) instead of the vector.
          */
         public String residualsCsv() {
-            boolean sixD = result.sixD(), cv = !folds.isEmpty();
+            boolean sixD = result.sixD(), cv = !folds.isEmpty(), multi = !result.pointNames().isEmpty(), dist = result.distance();
             Map<String, CalibrationResult.PoseError> heldOut = new LinkedHashMap<>();
-            for (Fold f : folds) for (CalibrationResult.PoseError e : f.result().validate()) heldOut.put(e.poseId(), e);
-            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm");
+            for (Fold f : folds) for (CalibrationResult.PoseError e : f.result().validate()) heldOut.put(key(e), e);
+            if (dist) return distanceCsv(heldOut);
+            StringBuilder b = new StringBuilder(multi ? "pose,point,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm"
+                    : "pose,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm");
             if (sixD) b.append(",nominal_deg,rotation_deg");
             if (cv) b.append(",cv_dx_mm,cv_dy_mm,cv_dz_mm,cv_norm_mm").append(sixD ? ",cv_rotation_deg" : "");
             b.append('\n');
             for (int pass = 0; pass < 2; pass++) {
                 for (CalibrationResult.PoseError e : pass == 0 ? result.train() : result.validate()) {
                     Integer f = pass == 0 ? foldOf.get(e.poseId()) : null;
-                    b.append(csv(e.poseId())).append(',').append(pass == 0 ? "train" : "validate").append(',')
+                    b.append(csv(e.poseId())).append(',');
+                    if (multi) b.append(csv(e.point())).append(',');
+                    b.append(pass == 0 ? "train" : "validate").append(',')
                      .append(f == null ? "" : Integer.toString(f + 1)).append(',').append(e.outlier()).append(',')
                      .append(num(Units.mToMm(e.nominalM())));
                     vector(b, e);
                     if (sixD) b.append(',').append(num(Math.toDegrees(e.nominalRotRad()))).append(',').append(num(Math.toDegrees(e.calibratedRotRad())));
                     if (cv) {
-                        CalibrationResult.PoseError h = pass == 0 ? heldOut.get(e.poseId()) : null;
+                        CalibrationResult.PoseError h = pass == 0 ? heldOut.get(key(e)) : null;
                         if (h == null) b.append(",,,,").append(sixD ? "," : "");
                         else {
                             vector(b, h);
                             if (sixD) b.append(',').append(num(Math.toDegrees(h.calibratedRotRad())));
                         }
+                    }
+                    b.append('\n');
+                }
+            }
+            return b.toString();
+        }
+
+        private static String key(CalibrationResult.PoseError e) {
+            return e.point() == null ? e.poseId() : e.poseId() + '\u0000' + e.point();
+        }
+
+        private String distanceCsv(Map<String, CalibrationResult.PoseError> heldOut) {
+            boolean cv = !folds.isEmpty();
+            StringBuilder b = new StringBuilder("pose,set,fold,outlier,nominal_mm,dd_mm,norm_mm");
+            if (cv) b.append(",cv_dd_mm,cv_norm_mm");
+            b.append('\n');
+            for (int pass = 0; pass < 2; pass++) {
+                for (CalibrationResult.PoseError e : pass == 0 ? result.train() : result.validate()) {
+                    Integer f = pass == 0 ? foldOf.get(e.poseId()) : null;
+                    b.append(csv(e.poseId())).append(',').append(pass == 0 ? "train" : "validate").append(',')
+                     .append(f == null ? "" : Integer.toString(f + 1)).append(',').append(e.outlier()).append(',')
+                     .append(num(Units.mToMm(e.nominalM()))).append(',').append(num(Units.mToMm(e.distanceErrorM()))).append(',')
+                     .append(num(Units.mToMm(e.calibratedM())));
+                    if (cv) {
+                        CalibrationResult.PoseError h = pass == 0 ? heldOut.get(key(e)) : null;
+                        if (h == null) b.append(",,");
+                        else b.append(',').append(num(Units.mToMm(h.distanceErrorM()))).append(',').append(num(Units.mToMm(h.calibratedM())));
                     }
                     b.append('\n');
                 }
@@ -346,6 +379,20 @@ public final class CalibrationWorkflow {
         var p = r.flangeTtool().position();
         prov.put("calibration-measured-point-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f",
                 Units.mToMm(p.x()), Units.mToMm(p.y()), Units.mToMm(p.z())));
+        if (!r.pointNames().isEmpty()) {
+            List<String> pts = new ArrayList<>();
+            for (int k = 0; k < r.pointNames().size(); k++) {
+                var t = r.toolPoints().get(k);
+                pts.add(String.format(Locale.ROOT, "%s: %.5f,%.5f,%.5f", r.pointNames().get(k),
+                        Units.mToMm(t.x()), Units.mToMm(t.y()), Units.mToMm(t.z())));
+            }
+            prov.put("calibration-measured-points-mm", String.join("; ", pts));
+        }
+        if (r.distance()) {
+            var a = r.anchor();
+            prov.put("calibration-anchor-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f%s", Units.mToMm(a.x()), Units.mToMm(a.y()),
+                    Units.mToMm(a.z()), r.anchorGiven() ? " (given)" : " (identified, base frame)"));
+        }
         RobotDescription calibrated = r.calibrated().toDescription().withProvenance(prov);
         return new Outcome(c, s, r, List.copyOf(folds), Collections.unmodifiableMap(foldOf), concerns, List.copyOf(warnings), calibrated, created);
     }

@@ -83,6 +83,59 @@ class IdentificationProblemTest {
     }
 
     @ParameterizedTest
+    @CsvSource({"3, false, false", "3, true, true", "2, false, true", "0, false, false", "0, true, true"})
+    void evaluate_severalPointsAndDistances_analyticJacobianMatchesCentralDifferences(int points, boolean baseFrame, boolean effects) {
+        // points 0: distance rows to an unknown anchor
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.load("irb2000"));
+        Campaign c = CampaignSimulator.simulate(nominal, SimulationSettings.defaults().withPoses(12).withSeed(6));
+        List<Measurement> rows = new java.util.ArrayList<>();
+        for (Measurement m : c.measurements().rows()) {
+            var p0 = m.position();
+            List<org.robopro.models.Vec3> pts = new java.util.ArrayList<>();
+            for (int k = 0; k < points; k++) pts.add(p0.plus(new org.robopro.models.Vec3(0.05 * k, -0.03 * k * k, 0.01)));
+            rows.add(points == 0 ? Measurement.ofDistance(m.poseId(), m.q(), 1.2 + 0.01 * rows.size())
+                    : Measurement.ofPoints(m.poseId(), m.q(), pts));
+        }
+        List<EffectBlock> eff = effects ? List.of(new ScaleAndStrain()) : List.of();
+        boolean inst = !baseFrame && points > 0;
+        List<org.robopro.models.Vec3> more = new java.util.ArrayList<>();
+        for (int k = 1; k < points; k++) more.add(new org.robopro.models.Vec3(0.04 * k, 0.02, 0.09 + 0.01 * k));
+        double[] start = IdentificationProblem.startVector(nominal, Pose.translation(0.01, -0.02, 0.1), more, false,
+                inst ? c.truth().instrumentTbase().times(Pose.rotX(0.01)) : null,
+                points == 0 ? new org.robopro.models.Vec3(1.5, -0.3, 0.2) : null, eff);
+        IdentificationProblem p = new IdentificationProblem(nominal, rows, false, inst, eff, start);
+        assertEquals(points == 0 ? 1 : 3 * points, p.rowsPerPose());
+        assertEquals(rows.size() * p.rowsPerPose(), p.residualCount());
+        p.setSigmas(1e-4, 2e-4);
+        int m = p.residualCount(), n = p.parameterCount();
+        double[] x = p.freeOf(start), r = new double[m], j = new double[m * n];
+        p.evaluate(x, r, j);
+        double[] rp = new double[m], rm = new double[m], xp = new double[n], xm = new double[n];
+        for (int col = 0; col < n; col++) {
+            double h = p.unitsSi().get(col).equals("m") ? 1e-6 : 1e-7;
+            double[] step = new double[n];
+            step[col] = h;
+            p.retract(x, step, xp);
+            step[col] = -h;
+            p.retract(x, step, xm);
+            p.evaluate(xp, rp, null);
+            p.evaluate(xm, rm, null);
+            double scale = 0;
+            for (int i = 0; i < m; i++) scale = Math.max(scale, Math.abs(j[i * n + col]));
+            for (int i = 0; i < m; i++) {
+                double fd = (rp[i] - rm[i]) / (2 * h);
+                double err = Math.abs(fd - j[i * n + col]) / Math.max(scale, 1e-3);
+                if (err > 1e-5)
+                    throw new AssertionError("column " + p.names().get(col) + " row " + i + ": analytic " + j[i * n + col] + ", FD " + fd);
+            }
+        }
+        // Residuals without the Jacobian are the same numbers.
+        double[] r2 = new double[m];
+        p.evaluate(x, r2, null);
+        for (int i = 0; i < m; i++) assertEquals(r[i], r2[i], 1e-9 * Math.max(1, Math.abs(r[i])));
+    }
+
+    @ParameterizedTest
     @CsvSource({"false", "true"})
     void evaluateFull_atTruth_leavesOnlyNoise(boolean sixD) {
         KinematicModel nominal = KinematicModel.build(RobotLibrary.load("irb2400"));

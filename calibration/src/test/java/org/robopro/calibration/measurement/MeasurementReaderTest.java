@@ -137,24 +137,6 @@ class MeasurementReaderTest {
     }
 
     @Test
-    void parse_severalPointsPerPose_areRefusedOnTheHeaderNotIgnored() {
-        // Extra points given as x2,y2,z2 would otherwise be dropped as unknown extra columns.
-        String twoPoints = GOOD.replace(",x,y,z,", ",x,y,z,x2,y2,z2,")
-                .replace("1260.503,", "1260.503,2300,-200,1250,").replace("1615,", "1615,1000,10,1600,");
-        InputException e = fails(twoPoints);
-        assertEquals(7, e.line());
-        assertEquals("x2", e.field());
-        assertTrue(e.getMessage().contains("several measured points per pose are not supported"), e.getMessage());
-        // A point column naming the reflector would fit several reflectors as one tool point.
-        String pointColumn = GOOD.replace("pose,q1", "pose,point,q1").replace("\n1,12.5", "\n1,1,12.5")
-                .replace("\n2,0,", "\n2,1,0,");
-        InputException p = fails(pointColumn);
-        assertEquals(7, p.line());
-        assertEquals(6, p.column());
-        assertEquals("point", p.field());
-    }
-
-    @Test
     void parse_nonNumericValue_namesColumn() {
         InputException e = fails(GOOD.replace("2315.412", "23l5.412"));
         assertEquals(8, e.line());

@@ -26,8 +26,9 @@ import org.robopro.programs.sim.WaitStep;
  * reachability with the programmed configuration, inverse kinematics at every interpolated
  * point of MoveL and MoveC (configuration held: each point solved next to the previous one),
  * joint limits, configuration changes, closeness to singularities, and a cycle-time estimate
- * from the joint speed limits with trapezoidal velocity profiles. Every target is treated as a
- * stop point (zones are not blended), so the estimate is an upper bound. Thread-safe.
+ * from the joint speed limits with trapezoidal velocity profiles, fly-by points blended within
+ * their zones. With a {@link CheckCache}, motions whose inputs did not change since an earlier
+ * check are not solved again. Thread-safe.
  */
 public final class PathChecker {
     /**
@@ -51,6 +52,8 @@ public final class PathChecker {
     private final double[] vMax;
     /** Upper bound on the flange's distance from the base, m (infinite when a prismatic joint has no limit). */
     private final double reach;
+    /** What a motion's result depends on besides the motion and its start: the model (by identity) and the options. */
+    private final List<Object> signature;
 
     public PathChecker(KinematicModel model, Options options) {
         this.model = model;
@@ -63,6 +66,7 @@ public final class PathChecker {
             vMax[i] = v > 0 && Double.isFinite(v) ? v : Math.toRadians(90);
         }
         reach = reach(model);
+        signature = List.of(model, options.stepM(), options.stepRad(), options.singularityWarning(), options.rampS(), options.maxJointJumpRad());
     }
 
     /**
@@ -102,7 +106,14 @@ public final class PathChecker {
      * time line with the cell's {@code signals} (inputs constant, scripted or following an
      * output); the simulation's notices become NOT_SIMULATED warnings.
      */
-    public CheckReport check(Simulation sim, List<SignalDescription> signals) {
+    public CheckReport check(Simulation sim, List<SignalDescription> signals) { return check(sim, signals, null); }
+
+    /**
+     * As {@link #check(Simulation, List)}, reusing what earlier checks with the same {@code cache}
+     * found for motions whose inputs did not change (see {@link CheckCache}); the report is the
+     * same as without the cache. A null cache checks everything.
+     */
+    public CheckReport check(Simulation sim, List<SignalDescription> signals, CheckCache cache) {
         List<Problem> problems = new ArrayList<>();
         for (Simulation.Notice n : sim.notices())
             problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.NOT_SIMULATED, n.step(), "", n.source(), n.message()));
@@ -112,14 +123,11 @@ public final class PathChecker {
         Outcome[] outcomes = new Outcome[count];
         double[][] qBefore = new double[count][];
         double[] q = opt.qStart().map(double[]::clone).orElse(null);
+        if (cache != null) cache.begin(signature, count);
         for (int i = 0; i < count; i++) {
             qBefore[i] = q;
             if (!(steps.get(i) instanceof MoveStep m)) continue;
-            Outcome o = switch (m.kind()) {
-                case MOVE_ABS_J -> absJ(m, q, problems);
-                case MOVE_J -> joint(m, q, problems);
-                case MOVE_L, MOVE_C -> cartesian(m, q, problems);
-            };
+            Outcome o = cache == null ? motion(m, q, problems) : cached(m, q, problems, cache);
             if (m.time().isPresent()) o = new Outcome(o.q, m.time().getAsDouble(), o.points, o.lengthM, o.samples);
             outcomes[i] = o;
             if (o.q != null) q = o.q;
@@ -143,6 +151,30 @@ public final class PathChecker {
         String assumptions = String.format(Locale.ROOT, "trapezoidal profiles reaching full speed in %.2f s, fly-by points blended "
                 + "(parabolic corner within the zone, speed kept), joint speed limits from the robot description", opt.rampS());
         return new CheckReport(problems, results, total, assumptions, io.events(), io.arcTime, totalStops);
+    }
+
+    private Outcome motion(MoveStep m, double[] q, List<Problem> problems) {
+        return switch (m.kind()) {
+            case MOVE_ABS_J -> absJ(m, q, problems);
+            case MOVE_J -> joint(m, q, problems);
+            case MOVE_L, MOVE_C -> cartesian(m, q, problems);
+        };
+    }
+
+    /** The motion's outcome from the cache (its problems relabelled to where the motion is now), else checked and cached. */
+    private Outcome cached(MoveStep m, double[] q, List<Problem> problems, CheckCache cache) {
+        CheckCache.Key key = new CheckCache.Key(m, q);
+        CheckCache.Entry e = cache.get(key);
+        if (e == null) {
+            List<Problem> own = new ArrayList<>();
+            Outcome o = motion(m, q, own);
+            cache.put(key, new CheckCache.Entry(o, own));
+            problems.addAll(own);
+            return o;
+        }
+        for (Problem p : e.problems())
+            problems.add(new Problem(p.severity(), p.kind(), m.label(), p.target(), m.source(), p.message()));
+        return e.outcome();
     }
 
     /** Places waits and I/O on the time line with the motions' durations {@code dur}; returns the cycle time. */
@@ -329,7 +361,12 @@ public final class PathChecker {
         }
     }
 
-    private record Outcome(double[] q, double duration, int points, double lengthM, List<double[]> samples) {
+    /** One motion checked from a start: end joints, stop-to-stop duration, points, TCP path length, joint values along the path. */
+    record Outcome(double[] q, double duration, int points, double lengthM, List<double[]> samples) {
+        Outcome {
+            samples = List.copyOf(samples); // immutable, so reports made from a cached outcome share it
+        }
+
         Outcome(double[] q, double duration, int points) { this(q, duration, points, 0, List.of()); }
 
         Outcome(double[] q, double duration, int points, double lengthM) { this(q, duration, points, lengthM, List.of()); }
@@ -412,7 +449,9 @@ public final class PathChecker {
             Pose rot = angle > 1e-12 ? Pose.rotAxis(w, angle * s) : Pose.IDENTITY;
             Pose ori = tcpStart.times(rot);
             Pose tcp = Pose.of(ori.rotationRowMajor(), p.x(), p.y(), p.z());
-            Optional<IkSolution> sol = ik.solveNear(tcp.times(toolInv), prev);
+            // The last point is the target itself (not start + whole step, which rounds differently
+            // for each start): the motion then ends where it ends whatever came before it.
+            Optional<IkSolution> sol = ik.solveNear(k == n ? flangeEnd : tcp.times(toolInv), prev);
             if (sol.isEmpty()) {
                 if (!reported)
                     problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.UNREACHABLE, m.label(), m.targetName(), m.source(),

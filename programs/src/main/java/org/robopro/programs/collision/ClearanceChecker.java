@@ -1,7 +1,9 @@
 package org.robopro.programs.collision;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 import java.util.Optional;
 import org.robopro.kinematics.KinematicModel;
@@ -55,8 +57,27 @@ public final class ClearanceChecker {
         }
     }
 
-    /** The robot at one joint position: its closest pair and every pair in contact (for a live view). */
-    public record Snapshot(double minClearanceM, String closestPair, List<String> colliding) { }
+    /**
+     * The robot at one joint position (for a live view): its closest pair and every pair in
+     * contact, in words ("link 3 - table"), and the same by part: {@code closestParts} the two
+     * parts of the closest pair and {@code partClearanceM} each part's smallest clearance to
+     * anything it is compared with. Parts are named as the workbench picks them: "link:K" (capsule
+     * K joins joint origins K and K+1, so it moves with link K; 0 is the base link), "tool",
+     * "object:NAME" (the cell object's name).
+     */
+    public record Snapshot(double minClearanceM, String closestPair, List<String> colliding, List<String> closestParts,
+                           Map<String, Double> partClearanceM) {
+        public Snapshot {
+            colliding = List.copyOf(colliding);
+            closestParts = List.copyOf(closestParts);
+            partClearanceM = Map.copyOf(partClearanceM);
+        }
+
+        /** Parts in contact with something (clearance 0). */
+        public List<String> collidingParts() {
+            return partClearanceM.entrySet().stream().filter(e -> e.getValue() <= 0).map(Map.Entry::getKey).sorted().toList();
+        }
+    }
 
     private final KinematicModel model;
     private final List<Obstacle> obstacles;
@@ -123,30 +144,46 @@ public final class ClearanceChecker {
         return out;
     }
 
+    /** The robot's collision shapes at {@code q} in base coordinates, by part ("link:K", "tool"), for drawing them. */
+    public Map<String, Convex.Capsule> robotShapes(double[] q, Pose flangeTtcp) {
+        Convex[] r = robot(q, flangeTtcp);
+        Map<String, Convex.Capsule> out = new java.util.LinkedHashMap<>();
+        for (int k = 0; k < r.length; k++) out.put(part(k, r.length), (Convex.Capsule) r[k]);
+        return out;
+    }
+
     private String name(int k, int n) { return k == n - 1 ? "tool" : k == 0 ? "base link" : "link " + k; }
+
+    private static String part(int k, int n) { return k == n - 1 ? "tool" : "link:" + k; }
 
     /** Clearance of the robot at {@code q} with a tool {@code flangeTtcp}. */
     public Snapshot at(double[] q, Pose flangeTtcp) {
         Convex[] r = robot(q, flangeTtcp);
         double best = Double.POSITIVE_INFINITY;
         String pair = "";
+        List<String> bestParts = List.of();
         List<String> hits = new ArrayList<>();
+        Map<String, Double> parts = new HashMap<>();
         for (int k = 1; k < r.length; k++)
             for (int n = 0; n < obstacles.size(); n++) {
                 if (stand[n] && k <= 1) continue;
                 Obstacle o = obstacles.get(n);
                 double d = Gjk.distance(r[k], o.shape());
-                if (d < best) { best = d; pair = name(k, r.length) + " - " + o.name(); }
+                parts.merge(part(k, r.length), d, Math::min);
+                parts.merge("object:" + o.name(), d, Math::min);
+                if (d < best) { best = d; pair = name(k, r.length) + " - " + o.name(); bestParts = List.of(part(k, r.length), "object:" + o.name()); }
                 if (d <= 0) hits.add(name(k, r.length) + " - " + o.name());
             }
         for (int i = 0; i < r.length; i++)
             for (int j = i + 3; j < r.length; j++) {
                 if (allowedSelf[i][j]) continue;
                 double d = Gjk.distance(r[i], r[j]);
-                if (d < best) { best = d; pair = name(i, r.length) + " - " + name(j, r.length); }
+                parts.merge(part(i, r.length), d, Math::min);
+                parts.merge(part(j, r.length), d, Math::min);
+                if (d < best) { best = d; pair = name(i, r.length) + " - " + name(j, r.length); bestParts = List.of(part(i, r.length), part(j, r.length)); }
                 if (d <= 0) hits.add(name(i, r.length) + " - " + name(j, r.length));
             }
-        return new Snapshot(best, pair, hits);
+        return new Snapshot(best, pair, hits, bestParts, parts);
     }
 
     /**

@@ -10,12 +10,14 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
 import org.robopro.programs.RapidModule;
+import org.robopro.programs.check.CheckCache;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.check.Problem;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
+import org.robopro.programs.sim.Simulation;
 
 /**
  * The workbench program run through the programs module: mapped to RAPID
@@ -90,7 +92,10 @@ public final class ProgramRun {
     }
 
     /** Maps, steps, checks and samples the model's program. */
-    public static ProgramRun of(WorkbenchModel m) {
+    public static ProgramRun of(WorkbenchModel m) { return of(m, null); }
+
+    /** As {@link #of(WorkbenchModel)}, reusing the path check's results for unchanged motions from {@code cache} (null: none). */
+    public static ProgramRun of(WorkbenchModel m, CheckCache cache) {
         List<Instruction> program = m.program();
         RobotKinematics k = m.kinematics();
         List<Step> out = new ArrayList<>();
@@ -113,7 +118,7 @@ public final class ProgramRun {
         RapidModule module = ProgramModule.toRapid(m, runnable, "Workbench");
         List<ProgramStep> steps = runnable.isEmpty() ? List.of() : MotionInterpreter.of(module).run("main");
         Optional<KinematicModel> km = k.kinematicModel();
-        CheckReport report = km.isPresent() && !steps.isEmpty() ? new PathChecker(km.get()).check(steps) : null;
+        CheckReport report = km.isPresent() && !steps.isEmpty() ? new PathChecker(km.get()).check(new Simulation(steps, List.of()), List.of(), cache) : null;
         List<double[]> qEnd = new ArrayList<>();
         for (int s = 0; s < steps.size(); s++) {
             MoveStep mv = (MoveStep) steps.get(s);

@@ -46,6 +46,8 @@ public final class WorkbenchModel {
     private volatile double[] ghostQ;
     private final AtomicLong ghostVersion = new AtomicLong();
     private ProgramRun run;
+    /** Path-check results by motion, kept across edits: a check after an edit solves only the motions it changed. */
+    private final org.robopro.programs.check.CheckCache checkCache = new org.robopro.programs.check.CheckCache();
     private final EditHistory history = new EditHistory();
     /** The edit state after the last recorded command: the "before" of the next one. */
     private ProjectData committed;
@@ -366,7 +368,8 @@ public final class WorkbenchModel {
 
     /**
      * The program mapped to RAPID, stepped, checked and sampled (computed once per change of the
-     * robot, cell, tool, targets or program; callers on any thread share it).
+     * robot, cell, tool, targets or program; callers on any thread share it). The path check is
+     * incremental: motions an edit did not change are taken from the previous checks.
      */
     public ProgramRun programRun() {
         long v;
@@ -374,12 +377,15 @@ public final class WorkbenchModel {
             if (run != null) return run;
             v = version.get();
         }
-        ProgramRun r = ProgramRun.of(this);
+        ProgramRun r = ProgramRun.of(this, checkCache);
         synchronized (this) {
             if (version.get() == v) run = r;
         }
         return r;
     }
+
+    /** The path check's results by motion, kept across edits (its hit and miss counts show what a check solved). */
+    public org.robopro.programs.check.CheckCache checkCache() { return checkCache; }
 
     /** A robot model under construction drawn instead of the cell's robot (the model wizard). */
     public record ModelPreview(RobotDescription robot, Pose[] frames) { }

@@ -19,6 +19,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
+import org.robopro.app.workbench.LiveClearance;
 import org.robopro.app.workbench.model.PathChecker;
 import org.robopro.app.workbench.model.WorkbenchModel;
 
@@ -43,6 +44,8 @@ public final class WorkbenchApp extends SimpleApplication {
     private final PathState pathState;
     private final PathChecker pathChecker;
     private RobotState robotState;
+    private volatile LiveClearance clearance;
+    private volatile ClearanceState clearanceState;
     private volatile double fps;
     private long windowStartNanos;
     private long windowFrames;
@@ -58,6 +61,12 @@ public final class WorkbenchApp extends SimpleApplication {
         this.pathChecker = pathChecker;
         pathChecker.addListener(r -> enqueue(() -> pathState.show(r)));
     }
+
+    /** Shows the live collision and clearance view of {@code c} (call before the scene starts). */
+    public void setClearance(LiveClearance c) { clearance = c; }
+
+    /** The live collision view (null when no clearance was set). */
+    public ClearanceState clearanceState() { return clearanceState; }
 
     /** Hands over the Swing panel the scene is drawn into; simpleInitApp waits for it. */
     public void setPanel(AwtPanel p) {
@@ -103,6 +112,10 @@ public final class WorkbenchApp extends SimpleApplication {
         previewState = new PreviewState(model, world);
         stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
                 pathState, previewState, ghostState, cameraState, new SelectionState(model, world, rootNode));
+        if (clearance != null) {
+            clearanceState = new ClearanceState(model, clearance, world);
+            stateManager.attach(clearanceState);
+        }
         windowStartNanos = System.nanoTime();
     }
 

@@ -323,8 +323,9 @@ public final class WorkbenchFrame extends JFrame {
     private void updateStatus() {
         Pose p = wb.model().worldTtcp();
         double fps = app.fps();
-        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm  |  %d targets, %d moves  |  %s",
-                wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, wb.model().targets().size(),
+        String clearance = wb.clearance().current().map(r -> "  |  " + r.text()).orElse("");
+        status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm%s  |  %d targets, %d moves  |  %s",
+                wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, clearance, wb.model().targets().size(),
                 wb.model().program().size(), fps > 0 ? String.format(Locale.ROOT, "%.0f fps", fps) : "3D view starting"));
         updateTitle();
     }

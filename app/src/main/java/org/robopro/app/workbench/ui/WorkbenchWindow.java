@@ -50,6 +50,7 @@ public final class WorkbenchWindow {
     private WorkbenchWindow(WorkbenchSession session) {
         this.session = session;
         this.app = new WorkbenchApp(session.model(), session.pathChecker(), session::resolvePath);
+        app.setClearance(session.clearance());
     }
 
     /**

@@ -1,0 +1,75 @@
+package org.robopro.calibration.workflow;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.calibration.Cancellation;
+import org.robopro.calibration.Progress;
+import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.identification.MultiPointCalibrationTest;
+import org.robopro.calibration.measurement.MeasurementReader;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.measurement.MeasurementWriter;
+
+/** The workflow on a campaign with three reflectors per pose: folds by pose, one residual row per pose and point. */
+class MultiPointWorkflowTest {
+    @TempDir Path dir;
+
+    @Test
+    void folds_keepEachPosesPointsTogether_andResidualsHaveAPointColumn() throws Exception {
+        MultiPointCalibrationTest.Truth t = MultiPointCalibrationTest.truth(33);
+        Path f = dir.resolve("smr.csv");
+        Files.writeString(f, MultiPointCalibrationTest.longForm(t, 3, 9));
+        CalibrationWorkflow.Campaign c = CalibrationWorkflow.load(t.nominal(), f, null, 0.25);
+        assertEquals(27, c.train().size()); // poses, not points: every 4th of 36 validates with its three points
+        assertEquals(9, c.validate().size());
+        CalibrationWorkflow.Outcome oc = CalibrationWorkflow.run(t.nominal(), c, CalibrationWorkflow.Settings.defaults().withFolds(3, 1),
+                "2026-01-01T00:00:00Z", Cancellation.NONE, Progress.NONE);
+        // Every point of a pose is held out in the same fold (the fold's held-out errors come in whole poses).
+        for (CalibrationWorkflow.Fold fold : oc.folds()) {
+            Map<String, Integer> perPose = new HashMap<>();
+            for (CalibrationResult.PoseError e : fold.result().validate()) perPose.merge(e.poseId(), 1, Integer::sum);
+            for (int n : perPose.values()) assertEquals(3, n);
+            for (CalibrationResult.PoseError e : fold.result().train()) assertTrue(!perPose.containsKey(e.poseId()));
+        }
+        String csv = oc.residualsCsv();
+        List<String> lines = csv.lines().toList();
+        assertTrue(lines.get(0).startsWith("pose,point,set,fold,outlier,nominal_mm,dx_mm,dy_mm,dz_mm,norm_mm"), lines.get(0));
+        assertEquals(1 + 36 * 3, lines.size());
+        Map<String, String> foldOfPose = new HashMap<>();
+        for (String l : lines.subList(1, 1 + 27 * 3)) {
+            String[] v = l.split(",", -1);
+            assertTrue(v[1].startsWith("SMR"), l);
+            String prev = foldOfPose.putIfAbsent(v[0], v[3]);
+            if (prev != null) assertEquals(prev, v[3], "pose " + v[0] + " split across folds");
+        }
+        String summary = oc.summaryJson();
+        assertTrue(summary.contains("\"poses_train\" : 27") || summary.contains("\"poses_train\":27"), summary.substring(0, 400));
+        assertTrue(summary.contains("measured_points") && summary.contains("SMR3"), "summary names the points");
+        assertTrue(oc.calibrated().provenance().get("calibration-measured-points-mm").startsWith("SMR1: "));
+        // The calibrated training RMS is per measured point: near √3 σ.
+        double floor = Math.sqrt(3) * MultiPointCalibrationTest.SIGMA;
+        assertTrue(oc.result().trainRmsM() < 1.2 * floor && oc.result().validateRmsM() < 1.5 * floor,
+                oc.result().trainRmsM() * 1e3 + " / " + oc.result().validateRmsM() * 1e3 + " mm vs floor " + floor * 1e3);
+    }
+
+    @Test
+    void writer_roundTripsTheLongForm() throws Exception {
+        MultiPointCalibrationTest.Truth t = MultiPointCalibrationTest.truth(34);
+        var types = t.nominal().joints().stream().map(j -> j.type()).toList();
+        MeasurementSet s = MeasurementReader.parse("a.csv", MultiPointCalibrationTest.longForm(t, 3, 1), types);
+        Path out = dir.resolve("b.csv");
+        MeasurementWriter.write(s, types, out, false);
+        MeasurementSet back = MeasurementReader.read(out, types);
+        assertEquals(s.pointNames(), back.pointNames());
+        for (int i = 0; i < s.size(); i++)
+            for (int k = 0; k < 3; k++) assertTrue(s.rows().get(i).point(k).minus(back.rows().get(i).point(k)).norm() < 1e-9);
+    }
+}
