@@ -34,11 +34,10 @@ public final class RobotState extends BaseAppState {
     private Shapes shapes;
     private Node[] links = new Node[0];
     private Node toolNode;
-    private Node framesNode;
     private RobotKinematics builtFor;
     private Tool toolBuiltFor;
     private long jointVersion = -1;
-    private boolean framesShown;
+    private java.util.Set<WorkbenchModel.FrameKind> framesShown;
     /** The IRB 2000's parallel-arm linkage, posed each frame; null for other robots. */
     private Irb2000Model linkage;
 
@@ -95,9 +94,8 @@ public final class RobotState extends BaseAppState {
             for (int i = 1; i < links.length; i++) Shapes.apply(d[i - 1].inverse().times(d[i]), links[i]);
             if (linkage != null) linkage.pose(links[3]);
         }
-        if (model.showFrames() != framesShown) {
-            framesShown = model.showFrames();
-            framesNode.setCullHint(framesShown ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        if (model.shownFrames() != framesShown) {
+            framesShown = model.shownFrames();
             setFramesVisible(robotRoot, framesShown);
         }
     }
@@ -113,11 +111,17 @@ public final class RobotState extends BaseAppState {
         }
     }
 
-    private static void setFramesVisible(Node n, boolean on) {
+    /** Shows each of the robot's frames whose kind is in {@code shown}: frame-base, frame-jN, frame-flange, frame-tcp. */
+    private static void setFramesVisible(Node n, java.util.Set<WorkbenchModel.FrameKind> shown) {
         for (Spatial s : n.getChildren()) {
-            if (s.getName() != null && s.getName().startsWith("frame-"))
-                s.setCullHint(on ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
-            if (s instanceof Node c) setFramesVisible(c, on);
+            String name = s.getName();
+            if (name != null && name.startsWith("frame-")) {
+                WorkbenchModel.FrameKind k = name.equals("frame-base") ? WorkbenchModel.FrameKind.BASE
+                        : name.equals("frame-flange") ? WorkbenchModel.FrameKind.FLANGE
+                        : name.equals("frame-tcp") ? WorkbenchModel.FrameKind.TCP : WorkbenchModel.FrameKind.JOINTS;
+                s.setCullHint(shown.contains(k) ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+            }
+            if (s instanceof Node c) setFramesVisible(c, shown);
         }
     }
 
@@ -187,10 +191,8 @@ public final class RobotState extends BaseAppState {
         toolNode.setUserData("pick", "tool");
         flangeNode.attachChild(toolNode);
         buildTool(tool);
-        framesNode = new Node("frames");
-        robotRoot.attachChild(framesNode);
         robotRoot.attachChild(shapes.axes("frame-base", r1 * 4f));
-        framesShown = !model.showFrames();
+        framesShown = null;
     }
 
     /**
