@@ -179,10 +179,13 @@ public final class Calibrator {
         o.progress().update("nominal fit", 0.2);
 
         // 3. Identifiability: structural (any poses) then these poses.
-        Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance());
+        // Known values (a given instrument pose, tool or anchor) are fixed before the analysis: they
+        // can make parameters observable that the free frame would absorb (the robot's base
+        // placement, once the anchor is given in the base frame).
         boolean[] fix = new boolean[p1.fullSize()];
-        for (int j : structural.fixed()) fix[j] = true;
         for (int j : known(p1, o, train.anchor() != null)) fix[j] = true;
+        Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance(), fix.clone());
+        for (int j : structural.fixed()) fix[j] = true;
         int nFree = 0;
         for (boolean b : fix) if (!b) nFree++;
         int eq = rows.size() * p1.rowsPerPose();
@@ -583,9 +586,9 @@ public final class Calibrator {
      * analysis on {@value #STRUCTURAL_POSES} random poses inside the joint limits. Cached per model.
      */
     static Identifiability.Result structural(KinematicModel nominal, boolean sixD, boolean instrument, List<EffectBlock> effects,
-                                             double[] start, IdentificationProblem like, double tol) {
+                                             double[] start, IdentificationProblem like, double tol, boolean[] known) {
         StringBuilder key = new StringBuilder().append(sixD).append('/').append(instrument).append('/').append(tol)
-                .append('/').append(like.pointCount()).append('/').append(like.distance());
+                .append('/').append(like.pointCount()).append('/').append(like.distance()).append('/').append(Arrays.toString(known));
         for (EffectBlock e : effects) key.append('/').append(e.name()).append(e.parameterNames());
         synchronized (STRUCTURAL) {
             Identifiability.Result r = STRUCTURAL.getOrDefault(nominal, Map.of()).get(key.toString());
@@ -615,7 +618,9 @@ public final class Calibrator {
         int m = p.residualCount(), n = p.fullSize();
         double[] j = new double[m * n];
         p.evaluateFull(start, new double[m], j);
-        Identifiability.Result r = Identifiability.analyze(j, m, n, p.names(), p.fixPriorities(), null, rows.size(), tol);
+        boolean any = false;
+        for (boolean b : known) any |= b;
+        Identifiability.Result r = Identifiability.analyze(j, m, n, p.names(), p.fixPriorities(), any ? known : null, rows.size(), tol);
         synchronized (STRUCTURAL) {
             STRUCTURAL.computeIfAbsent(nominal, k -> new HashMap<>()).put(key.toString(), r);
         }
