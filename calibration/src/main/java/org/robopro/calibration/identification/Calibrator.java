@@ -179,13 +179,15 @@ public final class Calibrator {
         o.progress().update("nominal fit", 0.2);
 
         // 3. Identifiability: structural (any poses) then these poses.
-        // Known values (a given instrument pose, tool or anchor) are fixed before the analysis: they
-        // can make parameters observable that the free frame would absorb (the robot's base
-        // placement, once the anchor is given in the base frame).
+        // A given anchor is fixed before the analysis: in the base frame, it makes the robot's base
+        // placement observable, which a free anchor absorbs. (A given instrument pose or tool is
+        // fixed after it: the base placement keeps its nominal value, so a wrong registration
+        // shows as a poor fit instead of being absorbed by the robot.)
         boolean[] fix = new boolean[p1.fullSize()];
-        for (int j : known(p1, o, train.anchor() != null)) fix[j] = true;
+        if (distance && train.anchor() != null) for (int a = 0; a < 3; a++) fix[p1.anchorOffset() + a] = true;
         Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance(), fix.clone());
         for (int j : structural.fixed()) fix[j] = true;
+        for (int j : known(p1, o, train.anchor() != null)) fix[j] = true;
         int nFree = 0;
         for (boolean b : fix) if (!b) nFree++;
         int eq = rows.size() * p1.rowsPerPose();
