@@ -28,6 +28,14 @@ public final class Campaign {
         AS_DRAWN
     }
 
+    /** Where the robot is when the campaign starts. */
+    public enum Start {
+        /** At the home position (zero where the limits allow it), every drive last moved up. */
+        HOME,
+        /** Wherever the previous program left it: a random pose, each drive last moved either way. */
+        ELSEWHERE
+    }
+
     /**
      * What to measure and write.
      *
@@ -43,9 +51,10 @@ public final class Campaign {
      * @param seed           the same seed gives the same campaign
      * @param outliers       training poses whose reading is grossly wrong (target knocked, beam broken and re-locked):
      *                       moved by 0.5–3 mm in a random direction
+     * @param start          where the robot is before the first pose
      */
     public record Plan(int poses, int validatePoses, double sigmaM, double sigmaRotRad, boolean sixD, boolean dirColumns,
-                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers) {
+                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers, Start start) {
         public Plan {
             if (poses < 1 || validatePoses < 0) throw new IllegalArgumentException("poses " + poses + ", validate " + validatePoses);
             if (outliers < 0 || outliers > poses / 10) throw new IllegalArgumentException("outliers " + outliers + " of " + poses + " poses");
@@ -57,18 +66,19 @@ public final class Campaign {
 
         /** 200 training and 100 validation poses, σ 0.02 mm, directions, time and temperature written, no payload, nearest order. */
         public static Plan defaults(long seed) {
-            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0);
+            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME);
         }
 
-        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers); }
-        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers); }
-        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers); }
-        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers); }
-        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers); }
-        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers); }
-        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers); }
-        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n); }
-        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers); }
+        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
+        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
+        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
+        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
+        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start); }
+        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start); }
+        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start); }
+        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start); }
+        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s); }
+        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start); }
     }
 
     /** Poses between payload changes. */
@@ -111,7 +121,9 @@ public final class Campaign {
         Random noise = new Random(plan.seed() * 7_919L + 3);
         int total = plan.poses() + plan.validatePoses();
         List<double[]> drawn = new PoseRule(nominal).sample(total, rng);
-        List<double[]> seq = plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn) : drawn;
+        double[] start = plan.start() == Start.ELSEWHERE
+                ? new PoseRule(nominal).sample(1, new Random(plan.seed() * 65_537L + 5)).get(0) : home(nominal);
+        List<double[]> seq = plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn, start) : drawn;
         boolean[] validate = new boolean[total];
         List<Integer> idx = new ArrayList<>();
         for (int i = 0; i < total; i++) idx.add(i);
@@ -122,19 +134,29 @@ public final class Campaign {
         for (int i = plan.validatePoses(), k = 0; k < plan.outliers(); i++, k++) outlier[idx.get(i)] = true;
 
         int n = nominal.dof();
-        double[] prev = home(nominal);
+        double[] prev = start;
         int[] dir = new int[n];
         Arrays.fill(dir, 1);
+        double[] lastMove = new double[n];
+        Arrays.fill(lastMove, Double.POSITIVE_INFINITY);
+        if (plan.start() == Start.ELSEWHERE) {
+            Random d = new Random(plan.seed() * 131L + 7);
+            for (int j = 0; j < n; j++) dir[j] = d.nextBoolean() ? 1 : -1;
+        }
         double t = 0;
         List<Row> rows = new ArrayList<>();
         double[] payloads = plan.payloadStepsKg();
         for (int i = 0; i < total; i++) {
             double[] q = seq.get(i);
             t += travelS(nominal, prev, q) + 3 + 5 + 4 * rng.nextDouble(); // travel, settle, measure, operator
-            for (int j = 0; j < n; j++) if (q[j] != prev[j]) dir[j] = q[j] > prev[j] ? 1 : -1;
+            for (int j = 0; j < n; j++)
+                if (q[j] != prev[j]) {
+                    dir[j] = q[j] > prev[j] ? 1 : -1;
+                    lastMove[j] = q[j] - prev[j];
+                }
             double temp = warm.at(t);
             double payload = payloads.length == 0 ? 0 : payloads[(i / POSES_PER_PAYLOAD) % payloads.length];
-            Rigid pose = world.target(q, dir, temp, t, payload);
+            Rigid pose = world.target(q, dir, lastMove, temp, t, payload);
             double[] truth = pose.p();
             double[] p = Rigid.plus(truth, Arm.gauss(noise, plan.sigmaM()));
             if (outlier[i]) p = Rigid.plus(p, Rigid.scale(Rigid.unit(Arm.gauss(rng, 1)), 0.5e-3 + 2.5e-3 * rng.nextDouble()));
@@ -209,9 +231,9 @@ public final class Campaign {
         return t + 1;
     }
 
-    static List<double[]> nearestOrder(RobotDescription robot, List<double[]> poses) {
+    static List<double[]> nearestOrder(RobotDescription robot, List<double[]> poses, double[] start) {
         List<double[]> left = new ArrayList<>(poses), out = new ArrayList<>();
-        double[] at = home(robot);
+        double[] at = start;
         while (!left.isEmpty()) {
             int best = 0;
             double bestT = Double.MAX_VALUE;

@@ -16,7 +16,20 @@ public sealed interface JointError {
      * @param q   all controller values (rad or m)
      * @param dir the sign of each drive's last motion before the pose was reached (+1, -1)
      */
-    double delta(double[] q, int[] dir);
+    default double delta(double[] q, int[] dir) { return delta(q, new Moment(dir, null, Double.NaN, Double.NaN)); }
+
+    /** The error of the drive's output angle at a moment of a campaign, rad. */
+    double delta(double[] q, Moment m);
+
+    /**
+     * What a drive's error may depend on besides the joint values, at the moment a pose is measured.
+     *
+     * @param dir      the sign of each drive's last motion before the pose was reached (+1, -1)
+     * @param lastMove each drive's last motion (rad or m, signed), or null when every move was long
+     * @param timeS    seconds since the campaign started (NaN: unknown)
+     * @param tempC    the drive's temperature, °C (NaN: unknown)
+     */
+    record Moment(int[] dir, double[] lastMove, double timeS, double tempC) { }
 
     /**
      * Transmission error of a reducer: a sum of harmonics of the output angle,
@@ -35,7 +48,7 @@ public sealed interface JointError {
         @Override public double[] amplitude() { return amplitude.clone(); }
         @Override public double[] phase() { return phase.clone(); }
 
-        @Override public double delta(double[] q, int[] dir) {
+        @Override public double delta(double[] q, Moment m) {
             double s = 0;
             for (int i = 0; i < k.length; i++) s += amplitude[i] * Math.sin(k[i] * q[joint] + phase[i]);
             return s;
@@ -50,17 +63,17 @@ public sealed interface JointError {
      * "Controlling mechanical systems with backlash: a survey", Automatica 38 (2002), §2.)
      */
     record LostMotion(int joint, double width) implements JointError {
-        @Override public double delta(double[] q, int[] dir) { return -0.5 * width * dir[joint]; }
+        @Override public double delta(double[] q, Moment m) { return -0.5 * width * m.dir()[joint]; }
     }
 
     /** Gear-ratio error: the output turns (1 + eps) times what the controller assumes. */
     record Scale(int joint, double eps) implements JointError {
-        @Override public double delta(double[] q, int[] dir) { return eps * q[joint]; }
+        @Override public double delta(double[] q, Moment m) { return eps * q[joint]; }
     }
 
     /** Cross-coupling error: the output of {@code joint} also follows another drive, kappa q_source. */
     record Coupling(int joint, int source, double kappa) implements JointError {
-        @Override public double delta(double[] q, int[] dir) { return kappa * q[source]; }
+        @Override public double delta(double[] q, Moment m) { return kappa * q[source]; }
     }
 
     /**
@@ -69,7 +82,7 @@ public sealed interface JointError {
      * a exp(-((q - centre)/width)^2).
      */
     record Bump(int joint, double centre, double width, double amplitude) implements JointError {
-        @Override public double delta(double[] q, int[] dir) {
+        @Override public double delta(double[] q, Moment m) {
             double u = (q[joint] - centre) / width;
             return amplitude * Math.exp(-u * u);
         }
@@ -80,8 +93,55 @@ public sealed interface JointError {
      * dragging on an axis with a force that depends on another axis): a sin(q_joint) sin(q_other).
      */
     record TwoJoint(int joint, int other, double amplitude) implements JointError {
-        @Override public double delta(double[] q, int[] dir) {
+        @Override public double delta(double[] q, Moment m) {
             return amplitude * Math.sin(q[joint]) * Math.sin(q[other]);
         }
+    }
+
+    /**
+     * Lost motion with unequal flanks: gravity (or a spring) presses the gear on one flank, so a
+     * move one way leaves the output lagging by the full half-play and a move the other way by
+     * less: q_out = q - (up/2) after a positive move, q + (down/2) after a negative one.
+     */
+    record AsymmetricLostMotion(int joint, double up, double down) implements JointError {
+        @Override public double delta(double[] q, Moment m) { return m.dir()[joint] > 0 ? -0.5 * up : 0.5 * down; }
+    }
+
+    /**
+     * Lost motion that builds up over the move: the play plus the transmission's friction
+     * wind-up, which reaches its full size only after the joint has travelled a distance of the
+     * order of {@code buildUp} (Dahl's solid-friction model: the friction force follows
+     * F = Fc (1 - exp(-x/x0)) along the travel x; P. R. Dahl, "A solid friction model",
+     * Aerospace Corp. TOR-0158(3107-18)-1, 1968). A short move leaves a smaller lag:
+     * q_out = q - (width/2) dir (1 - exp(-|last move| / buildUp)).
+     */
+    record WindUpLostMotion(int joint, double width, double buildUp) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            double f = m.lastMove() == null ? 1 : 1 - Math.exp(-Math.abs(m.lastMove()[joint]) / buildUp);
+            return -0.5 * width * m.dir()[joint] * f;
+        }
+    }
+
+    /**
+     * Outside every catalogue family: encoder slip. At {@code atS} seconds into the campaign the
+     * joint's zero jumps by {@code step} (a belt or a motor's encoder slipping on its shaft, a
+     * resolver re-synchronised) and stays there.
+     */
+    record Slip(int joint, double atS, double step) implements JointError {
+        @Override public double delta(double[] q, Moment m) { return Double.isFinite(m.timeS()) && m.timeS() >= atS ? step : 0; }
+    }
+
+    /** Outside every catalogue family: the joint's zero creeps with time at {@code ratePerS} (rad/s), e.g. an encoder's electronics drifting. */
+    record Creep(int joint, double ratePerS) implements JointError {
+        @Override public double delta(double[] q, Moment m) { return Double.isFinite(m.timeS()) ? ratePerS * m.timeS() : 0; }
+    }
+
+    /**
+     * Outside every catalogue family: the joint's zero moves with its drive's temperature,
+     * {@code perK} (rad/K) times (T - refC): the motor and gearbox warm up and the encoder's
+     * mounting or the gear's housing grows (a drive's thermal error, not a link's).
+     */
+    record DriveThermal(int joint, double perK, double refC) implements JointError {
+        @Override public double delta(double[] q, Moment m) { return Double.isFinite(m.tempC()) ? perK * (m.tempC() - refC) : 0; }
     }
 }

@@ -39,6 +39,7 @@ final class Truth {
             root.put("poses", p.poses());
             root.put("validate_poses", p.validatePoses());
             root.put("order", p.order().name().toLowerCase(java.util.Locale.ROOT));
+            root.put("start", p.start().name().toLowerCase(java.util.Locale.ROOT));
             root.put("frame", campaign.frame());
             root.put("outlier_poses", campaign.rows().stream().filter(Campaign.Row::outlier).map(Campaign.Row::id).toList());
             Campaign.Warmup wu = campaign.warmup();
@@ -73,7 +74,11 @@ final class Truth {
             for (double s : co.stiffness()) k.add(Double.isInfinite(s) ? "rigid" : s);
             root.put("compliance", Map.of("stiffness_nm_per_rad", k, "masses", masses));
         }
-        if (w.sag() != null) root.put("sag", Map.of("size_mm", w.sag().sizeM() * 1e3, "ref_reach_m", w.sag().refReachM()));
+        if (w.sag() != null)
+            root.put("sag", Map.of("size_mm", w.sag().sizeM() * 1e3, "per_kg_mm", w.sag().perKgM() * 1e3, "ref_reach_m", w.sag().refReachM()));
+        if (w.toolBump() != null)
+            root.put("tool_bump", Map.of("at_s", w.toolBump().atS(), "shift_mm", mm(w.toolBump().shiftM()),
+                    "turn_deg", Arrays.stream(w.toolBump().turnRad()).map(Math::toDegrees).boxed().toList()));
         try {
             return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root);
         } catch (JsonProcessingException e) {
@@ -108,6 +113,25 @@ final class Truth {
             m.put("type", "two-joint error (outside)");
             m.put("other", tj.other() + 1);
             m.put("amplitude_deg", Math.toDegrees(tj.amplitude()));
+        } else if (e instanceof JointError.AsymmetricLostMotion a) {
+            m.put("type", "lost motion, unequal flanks (output = q - up/2 after a rise, q + down/2 after a fall)");
+            m.put("up_deg", Math.toDegrees(a.up()));
+            m.put("down_deg", Math.toDegrees(a.down()));
+        } else if (e instanceof JointError.WindUpLostMotion wu) {
+            m.put("type", "lost motion building up over the move (output = q - b/2 dir (1 - exp(-|move|/x0)))");
+            m.put("width_deg", Math.toDegrees(wu.width()));
+            m.put("build_up_deg", Math.toDegrees(wu.buildUp()));
+        } else if (e instanceof JointError.Slip sl) {
+            m.put("type", "encoder slip (outside)");
+            m.put("at_s", sl.atS());
+            m.put("step_deg", Math.toDegrees(sl.step()));
+        } else if (e instanceof JointError.Creep c) {
+            m.put("type", "zero creeping with time (outside)");
+            m.put("deg_per_hour", Math.toDegrees(c.ratePerS()) * 3600);
+        } else if (e instanceof JointError.DriveThermal dt) {
+            m.put("type", "drive zero moving with temperature (outside)");
+            m.put("deg_per_k", Math.toDegrees(dt.perK()));
+            m.put("ref_c", dt.refC());
         }
         return m;
     }

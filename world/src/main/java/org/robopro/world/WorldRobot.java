@@ -20,6 +20,7 @@ import org.robopro.models.RobotDescription;
  * <li>each link grown by its own thermal strain, {@link Arm#grown};</li>
  * <li>product of exponentials to the flange, then the tool (measured target);</li>
  * <li>an optional position-dependent error of the measured point ({@link Sag});</li>
+ * <li>the measured target may be knocked on the flange mid-campaign ({@link ToolBump});</li>
  * <li>the instrument's frame, which may drift with temperature and time.</li>
  * </ol>
  * Noise is added by the campaign, not here. SI units, angles rad. Immutable.
@@ -34,9 +35,11 @@ import org.robopro.models.RobotDescription;
  * @param thermal            thermal growth and instrument drift, or null
  * @param compliance         joint elasticity, or null
  * @param sag                position-dependent error of the measured point, or null
+ * @param toolBump           the measured target knocked to another place on the flange during the campaign, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
-                         Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag) {
+                         Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
+                         ToolBump toolBump) {
     public WorldRobot {
         coupling = copy(coupling);
         zeroOffsets = zeroOffsets.clone();
@@ -120,13 +123,41 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * Goodno, Mechanics of Materials, cantilever with end load, delta = P L^3 / 3EI):
      * dz = -size (r / refReach)^3 with r the point's distance from the first joint's axis line.
      */
-    public record Sag(double sizeM, double refReachM) { }
+    public record Sag(double sizeM, double refReachM, double perKgM) {
+        /** A sag under the arm's own weight only. */
+        public Sag(double sizeM, double refReachM) { this(sizeM, refReachM, 0); }
+
+        /** The downward deflection, m, at reach r (m) carrying {@code payloadKg}: (size + perKg payload) (r / refReach)^3. */
+        public double at(double reachM, double payloadKg) { return (sizeM + perKgM * payloadKg) * Math.pow(reachM / refReachM, 3); }
+    }
+
+    /**
+     * The measured target knocked on the flange at {@code atS} seconds into the campaign (a
+     * reflector nest bumped by a cable or a hand): from then on it sits {@code shiftM} (flange
+     * coordinates) from where it was and is turned by the rotation vector {@code turnRad}.
+     */
+    public record ToolBump(double atS, double[] shiftM, double[] turnRad) {
+        public ToolBump {
+            shiftM = shiftM.clone();
+            turnRad = turnRad.clone();
+        }
+
+        @Override public double[] shiftM() { return shiftM.clone(); }
+        @Override public double[] turnRad() { return turnRad.clone(); }
+
+        /** The flange-to-target transform after the bump. */
+        Rigid apply(Rigid tool) {
+            double a = Rigid.norm(turnRad);
+            Rigid turn = a > 0 ? Rigid.rotation(Rigid.unit(turnRad), a, new double[3]) : Rigid.IDENTITY;
+            return Rigid.translation(shiftM[0], shiftM[1], shiftM[2]).times(tool).times(turn);
+        }
+    }
 
     /** The nominal robot of a file, as the world sees it: no errors, instrument = base. */
     public static WorldRobot nominal(RobotDescription robot, double[] targetInFlangeM) {
         int n = robot.dof();
         return new WorldRobot(robot.name(), Arm.of(robot), robot.couplingMatrix(), new double[n], List.of(),
-                Rigid.translation(targetInFlangeM[0], targetInFlangeM[1], targetInFlangeM[2]), Rigid.IDENTITY, null, null, null);
+                Rigid.translation(targetInFlangeM[0], targetInFlangeM[1], targetInFlangeM[2]), Rigid.IDENTITY, null, null, null, null);
     }
 
     public int dof() { return zeroOffsets.length; }
@@ -141,10 +172,19 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * @param payload kg at the flange
      */
     public Rigid target(double[] q, int[] dir, double tempC, double timeS, double payload) {
+        return target(q, dir, null, tempC, timeS, payload);
+    }
+
+    /**
+     * {@link #target(double[], int[], double, double, double)} knowing each drive's last move
+     * (signed, rad or m; null: every move was long).
+     */
+    public Rigid target(double[] q, int[] dir, double[] lastMove, double tempC, double timeS, double payload) {
         int n = dof();
         double[] qo = q.clone();
         for (int i = 0; i < n; i++) qo[i] += zeroOffsets[i];
-        for (JointError e : errors) qo[e.joint()] += e.delta(q, dir);
+        JointError.Moment moment = new JointError.Moment(dir, lastMove, timeS, tempC);
+        for (JointError e : errors) qo[e.joint()] += e.delta(q, moment);
         double[] theta = times(coupling, qo);
         Arm a = arm;
         if (thermal != null && Double.isFinite(tempC)) {
@@ -161,13 +201,14 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             double[] dTheta = times(coupling, dq);
             for (int i = 0; i < n; i++) theta[i] += dTheta[i];
         }
-        Rigid tool = a.flange(theta).times(flangeToTool);
+        Rigid onFlange = toolBump != null && Double.isFinite(timeS) && timeS >= toolBump.atS() ? toolBump.apply(flangeToTool) : flangeToTool;
+        Rigid tool = a.flange(theta).times(onFlange);
         if (sag != null) {
             double[] p = tool.p();
             double[] w = a.axes()[0], p0 = a.points()[0];
             double[] d = Rigid.minus(p, p0);
             double r = Rigid.norm(Rigid.minus(d, Rigid.scale(w, Rigid.dot(d, w))));
-            p[2] -= sag.sizeM * Math.pow(r / sag.refReachM, 3);
+            p[2] -= sag.at(r, payload);
             tool = new Rigid(tool.r(), p);
         }
         Rigid inst = instrumentFromBase;
@@ -214,27 +255,31 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump);
+    }
+
+    public WorldRobot withToolBump(ToolBump b) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -6,7 +6,7 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.project.ProgramProject;
 import org.robopro.programs.rapid.RapidExport;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

@@ -24,10 +24,10 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.models.TextFiles;
 import org.robopro.models.Vec3;
 import org.robopro.programs.RapidModule;
-import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.ParsedModule;
 import org.robopro.programs.rapid.RapidExport;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 /**
  * The workbench's headless session: the cell model and every operation the menus, buttons,

@@ -34,8 +34,7 @@ class DiagnosisBenchmarkTest {
             "outside: bump in the angle of j3", "outside: measured point sags with reach");
 
     /** Scenario -> what the diagnosis did on the CI seed when it was last checked. */
-    static final Map<String, String> KNOWN_FAILURES = Map.ofEntries(
-            Map.entry("outside: measured point sags with reach", "named gear-periodic j2 and joint-compliance j2: a wrong claim, 1.37x floor"));
+    static final Map<String, String> KNOWN_FAILURES = Map.of();
 
     @Test
     void ciScenarios_giveTheRightAnswerOrAreKnownFailures() {

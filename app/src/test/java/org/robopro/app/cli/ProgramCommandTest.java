@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.robopro.app.Main;
 import org.robopro.programs.RapidModule;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 
 class ProgramCommandTest {
     static final String PROJECT = """

@@ -63,7 +63,9 @@ public final class Effect {
         DRIFT("instrument-drift", "Drift of the instrument or base"),
         SCALE("joint-scale", "Joint scale error (gear ratio or encoder)"),
         COUPLING("joint-coupling", "Joint coupling"),
-        SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family");
+        SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family"),
+        PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
+        POINT_SMOOTH("point-smooth-error", "Displacement of the measured point with its reach or height, of no known family");
 
         public final String json;
         public final String title;
@@ -85,8 +87,17 @@ public final class Effect {
     /** Harmonics of a default (single-stage) gear-periodic effect. */
     public static final int HARMONICS = 3;
     private static final int[] LOW = {1, 2, 3};
-    /** Basis functions of the smooth fallback. */
+    /** Basis functions of the smooth fallback (the coarsest resolution; {@link #SMOOTH_RESOLUTIONS}). */
     public static final int SMOOTH_BASIS = 7;
+    /**
+     * Resolutions (basis functions) of the smooth per-joint fallback: 7 follows a slow drift over the
+     * range, 25 a place-bound error about a tenth of the range wide (a bump, a damaged gear stretch).
+     */
+    static final int[] SMOOTH_RESOLUTIONS = {7, 13, 25};
+    /** Poses needed per basis function of a smooth fallback. */
+    static final int POSES_PER_BASIS = 6;
+    /** Basis functions of the point's smooth displacement along reach or height (per axis). */
+    public static final int POINT_BASIS = 4;
     /** Links shorter than this do not get their own thermal coefficient, m. */
     static final double MIN_LINK_M = 0.05;
 
@@ -99,9 +110,16 @@ public final class Effect {
     private final double lo, hi;             // smooth: range of q_j
     private final KinematicModel model;      // thermal-link: the frames
     private final int[] links;               // thermal-link: frame indices i whose vector s_i (frame i -> i+1) grows
+    private final int nBasis;                // smooth, point-smooth: spline functions (per axis)
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
+        this(kind, joint, source, gravity, perMass, t0C, tauS, harmonics, lo, hi, model, links, 0);
+    }
+
+    private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
+                   int[] harmonics, double lo, double hi, KinematicModel model, int[] links, int nBasis) {
+        this.nBasis = nBasis;
         this.kind = kind;
         this.joint = joint;
         this.source = source;
@@ -145,11 +163,45 @@ public final class Effect {
     public static Effect coupling(int target, int source) {
         return new Effect(Kind.COUPLING, target, source, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
     }
-    /** Smooth error of drive {@code joint} over [lo, hi] (its range). */
-    public static Effect smooth(int joint, double lo, double hi) {
+    /** Smooth error of drive {@code joint} over [lo, hi] (its range), {@link #SMOOTH_BASIS} functions. */
+    public static Effect smooth(int joint, double lo, double hi) { return smooth(joint, lo, hi, SMOOTH_BASIS); }
+
+    /** Smooth error of drive {@code joint} over [lo, hi]: a cubic B-spline of {@code n} ≥ 4 functions. */
+    public static Effect smooth(int joint, double lo, double hi, int n) {
         if (!(hi > lo)) throw new IllegalArgumentException("smooth error range " + lo + ".." + hi);
-        return new Effect(Kind.SMOOTH, joint, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null);
+        if (n < 4) throw new IllegalArgumentException("smooth error needs at least 4 functions, got " + n);
+        return new Effect(Kind.SMOOTH, joint, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
     }
+
+    /**
+     * Error of drive {@code joint} that depends on its own angle and joint {@code other}'s together:
+     * Δq = v·(sin q_j sin q_k, sin q_j cos q_k, cos q_j sin q_k, cos q_j cos q_k), the first-order
+     * products, which no function of one joint alone holds.
+     */
+    public static Effect pair(int joint, int other) {
+        if (joint == other) throw new IllegalArgumentException("a joint pair needs two joints");
+        return new Effect(Kind.PAIR, joint, other, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 4);
+    }
+
+    /**
+     * The measured point moves in base coordinates as a smooth function (cubic B-spline of
+     * {@link #POINT_BASIS} functions per axis) of its reach (distance from the base's z axis) or its
+     * height, over [lo, hi] m.
+     */
+    public static Effect pointSmooth(boolean height, double lo, double hi) {
+        if (!(hi > lo)) throw new IllegalArgumentException("point displacement range " + lo + ".." + hi);
+        return new Effect(Kind.POINT_SMOOTH, -1, height ? 1 : 0, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null,
+                POINT_BASIS);
+    }
+
+    /** Whether this effect is a fallback (a located structure modelled without a physical family). */
+    public boolean isFallback() { return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH; }
+
+    /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
+    public int basisCount() { return nBasis; }
+
+    /** A point-smooth effect's variable: true for height, false for reach. */
+    public boolean alongHeight() { return kind == Kind.POINT_SMOOTH && source == 1; }
     /** ε = α (T − t0C). */
     public static Effect thermal(double t0C) {
         return new Effect(Kind.THERMAL, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, null, null);
@@ -180,13 +232,13 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
     /** Target joint (drive), 0-based (-1 for effects on lengths or the point). */
     public int joint() { return joint; }
-    /** Source joint of a coupling, 0-based (-1 otherwise). */
+    /** Source joint of a coupling, or the second joint of a pair error, 0-based (-1 otherwise). */
     public int source() { return source; }
     public boolean isStrain() { return target() == Target.STRAIN; }
     public boolean usesTimeProxy() { return (kind == Kind.THERMAL || kind == Kind.DRIFT) && Double.isNaN(t0C); }
@@ -203,7 +255,7 @@ public final class Effect {
     /** Joints in the JSON sense (1-based): target, then source for a coupling; empty for effects on lengths or the point. */
     public List<Integer> joints1() {
         if (joint < 0) return List.of();
-        if (kind == Kind.COUPLING) return List.of(joint + 1, source + 1);
+        if (kind == Kind.COUPLING || kind == Kind.PAIR) return List.of(joint + 1, source + 1);
         return List.of(joint + 1);
     }
 
@@ -211,7 +263,8 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * harmonics.length;
             case COMPLIANCE -> perMass ? gravity.massCount() : 1;
-            case SMOOTH -> SMOOTH_BASIS;
+            case SMOOTH, PAIR -> nBasis;
+            case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length;
             case DRIFT -> 3;
             default -> 1;
@@ -232,7 +285,9 @@ public final class Effect {
             case DRIFT -> { out.add("dx"); out.add("dy"); out.add("dz"); }
             case SCALE -> out.add("eps");
             case COUPLING -> out.add("kappa");
-            case SMOOTH -> { for (int k = 1; k <= SMOOTH_BASIS; k++) out.add("s" + k); }
+            case SMOOTH -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
+            case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); }
+            case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
         }
         return out;
     }
@@ -248,7 +303,8 @@ public final class Effect {
     public List<String> units() {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
-            case PERIODIC, BACKLASH, SMOOTH -> "rad";
+            case PERIODIC, BACKLASH, SMOOTH, PAIR -> "rad";
+            case POINT_SMOOTH -> "m";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -267,6 +323,9 @@ public final class Effect {
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (perMass ? " (masses re-estimated)" : "");
+            case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
+            case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
+            case POINT_SMOOTH -> kind.json + (alongHeight() ? " (height)" : " (reach)");
             default -> kind.json + " j" + (joint + 1);
         };
     }
@@ -319,7 +378,14 @@ public final class Effect {
             case SCALE -> g[0] = q[joint];
             case COUPLING -> g[0] = q[source];
             case SMOOTH -> bspline(q[joint], lo, hi, g);
-            case THERMAL_LINK, DRIFT -> throw new IllegalStateException(label() + " acts on the measured point");
+            case PAIR -> {
+                double sj = Math.sin(q[joint]), cj = Math.cos(q[joint]), so = Math.sin(q[source]), co = Math.cos(q[source]);
+                g[0] = sj * so;
+                g[1] = sj * co;
+                g[2] = cj * so;
+                g[3] = cj * co;
+            }
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -333,6 +399,11 @@ public final class Effect {
         int k = size();
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
+            case POINT_SMOOTH -> {
+                double[] b = new double[nBasis];
+                bspline(pointVariable(pointBase), lo, hi, b);
+                for (int a = 0; a < 3; a++) System.arraycopy(b, 0, g3, a * k + a * nBasis, nBasis);
+            }
             case THERMAL_LINK -> {
                 Pose[] f = model.linkFrames(q);
                 for (int col = 0; col < k; col++) {
@@ -347,6 +418,11 @@ public final class Effect {
             }
             default -> throw new IllegalStateException(label() + " does not act on the measured point");
         }
+    }
+
+    /** A point-smooth effect's variable at a point (base frame, m): its reach or its height. */
+    public double pointVariable(double[] pointBase) {
+        return alongHeight() ? pointBase[2] : Math.hypot(pointBase[0], pointBase[1]);
     }
 
     /** Uniform cubic B-spline basis (n = g.length functions) on [lo, hi] at x (clamped to the range). */
@@ -482,6 +558,7 @@ public final class Effect {
             case THERMAL, DRIFT -> { if (usesTimeProxy()) p.put("tau_s", tauS); else p.put("t0_c", t0C); }
             case THERMAL_LINK -> p.put("t0_c", t0C);
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
+            case POINT_SMOOTH -> { p.put(alongHeight() ? "height_min" : "reach_min", lo); p.put(alongHeight() ? "height_max" : "reach_max", hi); }
             default -> { }
         }
         return new EffectDescription(kind.json, joints1(), p);
@@ -492,7 +569,7 @@ public final class Effect {
         Kind kind = Kind.of(d.effect());
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
-        int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT -> 0; case COUPLING -> 2; default -> 1; };
+        int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH -> 0; case COUPLING, PAIR -> 2; default -> 1; };
         if (js.size() != need)
             throw new InputException(file, 0, 0, "effects.joints", d.effect() + " needs " + need + " joints, got " + js);
         for (int j : js)
@@ -515,7 +592,18 @@ public final class Effect {
             case BACKLASH -> backlash(js.get(0) - 1);
             case SCALE -> scale(js.get(0) - 1);
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);
-            case SMOOTH -> smooth(js.get(0) - 1, require(d, "q_min", file), require(d, "q_max", file));
+            case SMOOTH -> {
+                int n = (int) ps.keySet().stream().filter(key -> key.matches("s\\d+")).count();
+                if (n < 4) throw new InputException(file, 0, 0, "effects.joint-smooth-error.parameters_si", "needs s1..sN, N >= 4");
+                yield smooth(js.get(0) - 1, require(d, "q_min", file), require(d, "q_max", file), n);
+            }
+            case PAIR -> {
+                if (js.get(0).equals(js.get(1))) throw new InputException(file, 0, 0, "effects.joints", "joint-pair-error needs two different joints");
+                yield pair(js.get(0) - 1, js.get(1) - 1);
+            }
+            case POINT_SMOOTH -> ps.containsKey("height_min")
+                    ? pointSmooth(true, require(d, "height_min", file), require(d, "height_max", file))
+                    : pointSmooth(false, require(d, "reach_min", file), require(d, "reach_max", file));
             case THERMAL -> ps.containsKey("tau_s") ? thermalFromTime(ps.get("tau_s")) : thermal(require(d, "t0_c", file));
             case THERMAL_LINK -> thermalLinks(model, require(d, "t0_c", file));
             case DRIFT -> ps.containsKey("tau_s") ? driftWithTime() : driftWithTemperature(require(d, "t0_c", file));

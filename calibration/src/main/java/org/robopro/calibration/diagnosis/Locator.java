@@ -16,7 +16,10 @@ import org.robopro.models.Vec3;
  * <ul>
  * <li>each joint angle, periodic: harmonics h = 1..H of q_j acting on drive j (H from the number
  *     of poses, {@link #harmonicsFor}), each harmonic its own 2-column test;</li>
- * <li>each joint angle, non-periodic: a cubic B-spline of q_j over its sampled range ({@link Effect#SMOOTH_BASIS} functions);</li>
+ * <li>each joint angle, non-periodic: a cubic B-spline of q_j over its sampled range at each resolution of
+ *     {@link Effect#SMOOTH_RESOLUTIONS} the poses support (a slow drift, or a place-bound bump);</li>
+ * <li>each drive and each other joint: the drive's error as the products of the two angles' sines and
+ *     cosines ({@link Effect#pair}), structure no function of one joint holds;</li>
  * <li>each joint's approach direction (recorded or inferred);</li>
  * <li>time, temperature: a point translation and a length change, each a 4-function spline of the variable;</li>
  * <li>payload: its torque on each drive, and a point translation proportional to it;</li>
@@ -37,12 +40,13 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, DIRECTION, TIME, TEMPERATURE, PAYLOAD, REACH, HEIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, JOINT_PAIR, DIRECTION, TIME, TEMPERATURE, PAYLOAD, REACH, HEIGHT }
 
     /** One probe: a block of signature columns. */
     static final class Probe {
         Var var;
-        int joint = -1, harmonic;
+        int joint = -1, harmonic, other = -1, basis;
+        double lo, hi;              // range of the variable (smooth, reach, height)
         String variable, shape, detail;
         double[] s;   // m x k, projected out of the model's span
         double[] n0;  // unprojected column norms
@@ -95,15 +99,35 @@ final class Locator {
             }
             final double l0 = lo, h0 = hi;
             final int jj = j;
-            Probe p = drive(t, j, Effect.SMOOTH_BASIS, (i, g) -> Effect.bspline(w.rows.get(i).q(jj), l0, h0, g));
-            p.var = Var.ANGLE_SMOOTH;
-            p.joint = j;
-            p.variable = "joint " + (j + 1) + " angle";
-            p.shape = String.format(Locale.ROOT, "a smooth, non-periodic function of joint %d's angle over %.0f..%.0f deg", j + 1,
-                    Math.toDegrees(lo), Math.toDegrees(hi));
-            p.x = qx;
-            p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
-            out.add(p);
+            for (int nb : Effect.SMOOTH_RESOLUTIONS) {
+                if (nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
+                Probe p = drive(t, j, nb, (i, g) -> Effect.bspline(w.rows.get(i).q(jj), l0, h0, g));
+                p.var = Var.ANGLE_SMOOTH;
+                p.joint = j;
+                p.basis = nb;
+                p.lo = lo;
+                p.hi = hi;
+                p.variable = "joint " + (j + 1) + " angle";
+                p.shape = String.format(Locale.ROOT, "a smooth, non-periodic function of joint %d's angle over %.0f..%.0f deg%s", j + 1,
+                        Math.toDegrees(lo), Math.toDegrees(hi), nb == Effect.SMOOTH_BASIS ? ""
+                                : String.format(Locale.ROOT, " with features about %.0f deg wide", Math.toDegrees(hi - lo) / (nb - 3)));
+                p.x = qx;
+                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+                out.add(p);
+            }
+            for (int k = 0; k < dof; k++) {
+                if (k == j || w.model.isPrismatic(k)) continue;
+                Effect pair = Effect.pair(j, k);
+                Probe p = drive(t, j, 4, (i, g) -> pair.regressor(w.rows.get(i).q(), null, g));
+                p.var = Var.JOINT_PAIR;
+                p.joint = j;
+                p.other = k;
+                p.variable = "joints " + (j + 1) + " and " + (k + 1);
+                p.shape = "joint " + (j + 1) + "'s error depends on joints " + (j + 1) + " and " + (k + 1) + " together";
+                p.x = qx;
+                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+                out.add(p);
+            }
             if (dirs != Directions.Source.NONE && w.rows.stream().allMatch(r -> r.directions() != null)) {
                 Probe d = drive(t, j, 1, (i, g) -> g[0] = -0.5 * w.conditions.get(i).direction(jj));
                 d.var = Var.DIRECTION;
@@ -166,7 +190,7 @@ final class Locator {
 
     /** A translation of the point (3 x 4 columns) or a length change (4 columns) following a spline of x. */
     private static Probe scalar(Diagnoser.Tester t, Var var, double[] x, String name, String xLabel, boolean translation) {
-        int m = t.m, rpp = t.rpp, poses = m / rpp, nb = 4;
+        int m = t.m, rpp = t.rpp, poses = m / rpp, nb = Effect.POINT_BASIS;
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
         int k = translation ? 3 * nb : nb;
         double[] s = new double[m * k], g = new double[nb];
@@ -186,6 +210,9 @@ final class Locator {
         p.shape = translation ? "the measured point moves with " + name : "every length changes with " + name;
         p.x = x;
         p.xLabel = xLabel;
+        p.lo = lo;
+        p.hi = hi;
+        p.basis = nb;
         return p;
     }
 

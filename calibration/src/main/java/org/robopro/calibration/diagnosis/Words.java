@@ -39,7 +39,15 @@ final class Words {
             case SMOOTH -> String.format(Locale.ROOT, "Joint %d has an angle-dependent error of %.4f deg (RMS over its range) that "
                     + "none of the known effects explains; it is modelled as a smooth curve of the joint angle (%d-function "
                     + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
-                    Math.toDegrees(rmsSmooth(e, v)), Effect.SMOOTH_BASIS, Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()));
+                    Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()));
+            case PAIR -> String.format(Locale.ROOT, "Joint %d's error depends on joints %d and %d together (%.4f deg RMS over the "
+                    + "poses, in products of their sines and cosines) and none of the known effects explains it; it is modelled "
+                    + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
+                    Math.toDegrees(Math.sqrt((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) / 4)));
+            case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with its %s (a smooth displacement in the "
+                    + "base frame over %.2f..%.2f m) and none of the known effects explains it; it is modelled as such so "
+                    + "compensation can use it, but its cause is unknown (sag of the arm or the point's holder, the instrument's "
+                    + "scale or levelling).", e.alongHeight() ? "height" : "reach", e.rangeLo(), e.rangeHi());
             case THERMAL_LINK -> {
                 StringBuilder sb = new StringBuilder("The arm grows with temperature link by link (thermal growth):");
                 for (int i = 0; i < v.length; i++)
@@ -83,7 +91,7 @@ final class Words {
     static double rmsSmooth(Effect e, double[] v) {
         double s = 0;
         int n = 200;
-        double[] g = new double[Effect.SMOOTH_BASIS];
+        double[] g = new double[e.basisCount()];
         for (int i = 0; i < n; i++) {
             Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
             double y = 0;

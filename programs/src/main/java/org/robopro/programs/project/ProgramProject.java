@@ -1,5 +1,6 @@
 package org.robopro.programs.project;
 
+import org.robopro.programs.rapid.RapidAst;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonParser;
@@ -191,7 +192,7 @@ public final class ProgramProject {
                 }
                 ToolData td = new ToolData(bool(t, "robhold", f, true), pose(t.path("tframe"), f + ".tframe"), ld);
                 tools.put(e.getKey(), td);
-                b.declare(declaration(t, f, Declaration.Storage.PERS, e.getKey(), td));
+                b.declare(declaration(t, f, RapidAst.Storage.PERS, e.getKey(), td));
             }
             for (var e : fields(root, "wobjs")) {
                 JsonNode w = e.getValue();
@@ -199,14 +200,14 @@ public final class ProgramProject {
                 WObjData wd = new WObjData(bool(w, "robhold", f, false), bool(w, "ufprog", f, true), optText(w, "ufmec", f, ""),
                         pose(w.path("uframe"), f + ".uframe"), w.has("oframe") ? pose(w.path("oframe"), f + ".oframe") : RapidPose.IDENTITY);
                 wobjs.put(e.getKey(), wd);
-                b.declare(declaration(w, f, Declaration.Storage.PERS, e.getKey(), wd));
+                b.declare(declaration(w, f, RapidAst.Storage.PERS, e.getKey(), wd));
             }
             for (var e : fields(root, "speeds")) {
                 JsonNode sp = e.getValue();
                 String f = "speeds." + e.getKey();
                 SpeedData sd = wrap(f, () -> SpeedData.ofRapid(num(sp, "tcp_mm_s", f), optNum(sp, "ori_deg_s", f, 500),
                         optNum(sp, "leax_mm_s", f, 5000), optNum(sp, "reax_deg_s", f, 1000)));
-                b.declare(declaration(sp, f, Declaration.Storage.VAR, e.getKey(), sd));
+                b.declare(declaration(sp, f, RapidAst.Storage.VAR, e.getKey(), sd));
             }
             for (var e : fields(root, "zones")) {
                 JsonNode z = e.getValue();
@@ -216,13 +217,13 @@ public final class ProgramProject {
                 ZoneData zd = wrap(f, () -> ZoneData.ofRapid(bool(z, "finep", f, false), r, optNum(z, "ori_mm", f, 1.5 * r),
                         optNum(z, "eax_mm", f, 1.5 * r), optNum(z, "ori_deg", f, 0.15 * r), optNum(z, "leax_mm", f, 1.5 * r),
                         optNum(z, "reax_deg", f, 0.15 * r)));
-                b.declare(declaration(z, f, Declaration.Storage.VAR, e.getKey(), zd));
+                b.declare(declaration(z, f, RapidAst.Storage.VAR, e.getKey(), zd));
             }
             for (var e : fields(root, "jointtargets")) {
                 JsonNode j = e.getValue();
                 String f = "jointtargets." + e.getKey();
                 JointTarget jt = JointTarget.of(Units.degToRad(array(j.path("joints_deg"), 6, f + ".joints_deg")), extax(j, f));
-                b.declare(declaration(j, f, Declaration.Storage.CONST, e.getKey(), jt));
+                b.declare(declaration(j, f, RapidAst.Storage.CONST, e.getKey(), jt));
             }
             for (var e : fields(root, "targets")) {
                 JsonNode t = e.getValue();
@@ -241,7 +242,7 @@ public final class ProgramProject {
                         if (cf[k] != Math.rint(cf[k]) || Math.abs(cf[k]) > 1e6) throw bad(f + ".conf[" + k + "]", "expected an integer");
                     rt = new RobTarget(p.trans(), p.rot(), new ConfData((int) cf[0], (int) cf[1], (int) cf[2], (int) cf[3]), extax(t, f));
                 }
-                b.declare(declaration(t, f, Declaration.Storage.CONST, e.getKey(), rt));
+                b.declare(declaration(t, f, RapidAst.Storage.CONST, e.getKey(), rt));
             }
             for (var e : fields(root, "data")) {
                 JsonNode d = e.getValue();
@@ -253,7 +254,7 @@ public final class ProgramProject {
                     if (!d.get("string").isTextual()) throw bad(f + ".string", "expected a string");
                     v = wrap(f + ".string", () -> new RapidValue.Str(d.get("string").asText()));
                 } else throw bad(f, "expected \"num\", \"bool\" or \"string\"");
-                b.declare(declaration(d, f, Declaration.Storage.CONST, e.getKey(), v));
+                b.declare(declaration(d, f, RapidAst.Storage.CONST, e.getKey(), v));
             }
             List<Procedure> procs = new ArrayList<>();
             for (var e : fields(root, "procedures")) {
@@ -271,21 +272,21 @@ public final class ProgramProject {
         }
 
         /** A declaration with the entry's optional "storage" (CONST, PERS, VAR) and "scope" (LOCAL, TASK). */
-        Declaration declaration(JsonNode n, String f, Declaration.Storage usual, String name, RapidValue v) {
-            Declaration.Storage st = usual;
-            Declaration.Scope sc = Declaration.Scope.GLOBAL;
+        Declaration declaration(JsonNode n, String f, RapidAst.Storage usual, String name, RapidValue v) {
+            RapidAst.Storage st = usual;
+            RapidAst.Scope sc = RapidAst.Scope.GLOBAL;
             try {
-                if (n.has("storage")) st = Declaration.Storage.valueOf(optText(n, "storage", f, ""));
+                if (n.has("storage")) st = RapidAst.Storage.valueOf(optText(n, "storage", f, ""));
             } catch (IllegalArgumentException e) {
                 throw bad(f + ".storage", "expected CONST, PERS or VAR");
             }
             try {
-                if (n.has("scope")) sc = Declaration.Scope.valueOf(optText(n, "scope", f, ""));
+                if (n.has("scope")) sc = RapidAst.Scope.valueOf(optText(n, "scope", f, ""));
             } catch (IllegalArgumentException e) {
                 throw bad(f + ".scope", "expected LOCAL or TASK");
             }
-            Declaration.Storage storage = st;
-            Declaration.Scope scope = sc;
+            RapidAst.Storage storage = st;
+            RapidAst.Scope scope = sc;
             return wrap(f, () -> new Declaration(scope, storage, name, v));
         }
 
@@ -454,11 +455,11 @@ public final class ProgramProject {
             } else if (it instanceof Declaration d) {
                 String group;
                 ObjectNode e = nf.objectNode();
-                Declaration.Storage usual;
+                RapidAst.Storage usual;
                 RapidValue val = d.value();
                 if (val instanceof ToolData t) {
                     group = "tools";
-                    usual = Declaration.Storage.PERS;
+                    usual = RapidAst.Storage.PERS;
                     if (!t.robhold()) e.put("robhold", false);
                     e.set("tframe", pose(t.tframe()));
                     if (!t.tload().equals(LoadData.LOAD0)) {
@@ -471,7 +472,7 @@ public final class ProgramProject {
                     }
                 } else if (val instanceof WObjData w) {
                     group = "wobjs";
-                    usual = Declaration.Storage.PERS;
+                    usual = RapidAst.Storage.PERS;
                     if (w.robhold()) e.put("robhold", true);
                     if (!w.ufprog()) e.put("ufprog", false);
                     if (!w.ufmec().isEmpty()) e.put("ufmec", w.ufmec());
@@ -479,7 +480,7 @@ public final class ProgramProject {
                     if (!w.oframe().equals(RapidPose.IDENTITY)) e.set("oframe", pose(w.oframe()));
                 } else if (val instanceof SpeedData sp) {
                     group = "speeds";
-                    usual = Declaration.Storage.VAR;
+                    usual = RapidAst.Storage.VAR;
                     number(e, "tcp_mm_s", mmFor(sp.vTcp()));
                     double ori = degFor(sp.vOri()), leax = mmFor(sp.vLeax()), reax = degFor(sp.vReax());
                     if (Units.degToRad(500.0) != sp.vOri()) number(e, "ori_deg_s", ori);
@@ -487,7 +488,7 @@ public final class ProgramProject {
                     if (Units.degToRad(1000.0) != sp.vReax()) number(e, "reax_deg_s", reax);
                 } else if (val instanceof ZoneData z) {
                     group = "zones";
-                    usual = Declaration.Storage.VAR;
+                    usual = RapidAst.Storage.VAR;
                     double r = mmFor(z.pzoneTcp());
                     number(e, "tcp_mm", r);
                     if (z.finep()) e.put("finep", true);
@@ -498,13 +499,13 @@ public final class ProgramProject {
                     if (Units.degToRad(0.15 * r) != z.zoneReax()) number(e, "reax_deg", degFor(z.zoneReax()));
                 } else if (val instanceof JointTarget j) {
                     group = "jointtargets";
-                    usual = Declaration.Storage.CONST;
+                    usual = RapidAst.Storage.CONST;
                     ArrayNode a = e.putArray("joints_deg");
                     for (double q : j.robax()) a.add(plain(degFor(q)));
                     if (!j.extax().equals(ExtJoints.NONE)) e.set("extax", numbers(j.extax().values()));
                 } else if (val instanceof RobTarget t) {
                     group = "targets";
-                    usual = Declaration.Storage.CONST;
+                    usual = RapidAst.Storage.CONST;
                     e.set("pos_mm", mm(t.trans()));
                     e.set("quat", quat(t.rot()));
                     ConfData c = t.robconf();
@@ -512,21 +513,21 @@ public final class ProgramProject {
                     if (!t.extax().equals(ExtJoints.NONE)) e.set("extax", numbers(t.extax().values()));
                 } else if (val instanceof RapidValue.Num n) {
                     group = "data";
-                    usual = Declaration.Storage.CONST;
+                    usual = RapidAst.Storage.CONST;
                     number(e, "num", n.value());
                 } else if (val instanceof RapidValue.Bool bo) {
                     group = "data";
-                    usual = Declaration.Storage.CONST;
+                    usual = RapidAst.Storage.CONST;
                     e.put("bool", bo.value());
                 } else if (val instanceof RapidValue.Str str) {
                     group = "data";
-                    usual = Declaration.Storage.CONST;
+                    usual = RapidAst.Storage.CONST;
                     e.put("string", str.value());
                 } else {
                     throw cannot(module, d.rapidType() + " " + d.name() + " (a project holds tooldata, wobjdata, speeddata, zonedata, jointtarget, robtarget, num, bool, string)");
                 }
                 if (d.storage() != usual) e.put("storage", d.storage().name());
-                if (d.scope() != Declaration.Scope.GLOBAL) e.put("scope", d.scope().name());
+                if (d.scope() != RapidAst.Scope.GLOBAL) e.put("scope", d.scope().name());
                 if (groups.get(group).has(d.name())) throw cannot(module, "two " + group + " named " + d.name());
                 groups.get(group).set(d.name(), e);
             } else if (it instanceof Procedure p) {

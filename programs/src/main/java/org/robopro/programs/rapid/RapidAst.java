@@ -3,7 +3,6 @@ package org.robopro.programs.rapid;
 import java.math.BigInteger;
 import java.util.List;
 import java.util.Locale;
-import org.robopro.programs.Declaration;
 
 /**
  * The syntax tree of a RAPID module as written (ABB RAPID kernel grammar): every declaration,
@@ -14,6 +13,12 @@ import org.robopro.programs.Declaration;
  */
 public final class RapidAst {
     private RapidAst() { }
+
+    /** Where data is visible: everywhere (no keyword), in its module ({@code LOCAL}) or its task ({@code TASK}). */
+    public enum Scope { GLOBAL, LOCAL, TASK }
+
+    /** How data is kept: a constant, a persistent (its value written back to the module) or a variable. */
+    public enum Storage { CONST, PERS, VAR }
 
     /** {@code MODULE name[(options)] items ENDMODULE}. */
     public record Module(String name, List<String> options, List<Item> items) {
@@ -45,7 +50,7 @@ public final class RapidAst {
      * {@code [LOCAL|TASK] VAR|PERS|CONST type name[{dims}] [:= init];}: module data, or routine data
      * (then scope is GLOBAL). {@code init} is null when none is written (the type's zero value).
      */
-    public record DataDecl(Declaration.Scope scope, Declaration.Storage storage, String type, String name, List<Expr> dims,
+    public record DataDecl(RapidAst.Scope scope, RapidAst.Storage storage, String type, String name, List<Expr> dims,
                            Expr init) implements Item, Stmt {
         public DataDecl {
             if (scope == null || storage == null || type == null || name == null) throw new IllegalArgumentException("declaration fields must not be null");

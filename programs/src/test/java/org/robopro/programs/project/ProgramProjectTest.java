@@ -1,5 +1,6 @@
 package org.robopro.programs.project;
 
+import org.robopro.programs.rapid.RapidAst;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -24,7 +25,7 @@ import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.SameMeaning;
 import org.robopro.programs.Statement;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 
 class ProgramProjectTest {
 
@@ -53,8 +54,8 @@ class ProgramProjectTest {
         RapidModule b = ProgramProject.parse(text, "again.json");
         assertEquals(a, b);
         assertEquals(text, ProgramProject.format(b, null));
-        assertEquals(Declaration.Scope.LOCAL, b.declaration("wTable").orElseThrow().scope());
-        assertEquals(Declaration.Storage.PERS, b.declaration("pB").orElseThrow().storage());
+        assertEquals(RapidAst.Scope.LOCAL, b.declaration("wTable").orElseThrow().scope());
+        assertEquals(RapidAst.Storage.PERS, b.declaration("pB").orElseThrow().storage());
     }
 
     @Test

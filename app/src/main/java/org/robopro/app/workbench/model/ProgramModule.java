@@ -24,7 +24,7 @@ import org.robopro.programs.Statement;
 import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
 import org.robopro.programs.ZoneData;
-import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.ParsedModule;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;

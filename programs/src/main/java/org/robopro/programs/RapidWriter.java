@@ -1,4 +1,4 @@
-package org.robopro.programs.rapid;
+package org.robopro.programs;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -10,31 +10,13 @@ import java.util.Map;
 import java.util.Set;
 import org.robopro.kinematics.Units;
 import org.robopro.models.Vec3;
-import org.robopro.programs.AstItem;
-import org.robopro.programs.AstStatement;
-import org.robopro.programs.Comment;
-import org.robopro.programs.Declaration;
-import org.robopro.programs.ExtJoints;
-import org.robopro.programs.JointTarget;
-import org.robopro.programs.LoadData;
-import org.robopro.programs.ModuleItem;
-import org.robopro.programs.Move;
-import org.robopro.programs.ProcCall;
-import org.robopro.programs.Procedure;
-import org.robopro.programs.Quaternion;
-import org.robopro.programs.RapidModule;
-import org.robopro.programs.RapidPose;
-import org.robopro.programs.RapidValue;
-import org.robopro.programs.Ref;
-import org.robopro.programs.RobTarget;
-import org.robopro.programs.SpeedData;
-import org.robopro.programs.Statement;
-import org.robopro.programs.ToolData;
-import org.robopro.programs.WObjData;
-import org.robopro.programs.WaitTime;
-import org.robopro.programs.ZoneData;
 import org.robopro.programs.rapid.RapidAst.Arg;
 import org.robopro.programs.rapid.RapidAst.Expr;
+import org.robopro.programs.rapid.RapidAst;
+import org.robopro.programs.rapid.RapidAstWriter;
+import org.robopro.programs.rapid.RapidExport;
+import org.robopro.programs.rapid.RapidNames;
+import org.robopro.programs.rapid.RapidNumbers;
 
 /**
  * Writes a {@link RapidModule} as a RAPID module a controller loads: the typed module becomes the

@@ -1,0 +1,118 @@
+package org.robopro.world;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+
+/** The differently formed truths: each checked against its physics by hand, and the campaigns they need. */
+class NewFormsTest {
+    static final RobotDescription IRB2000 = RobotLibrary.shipped("irb2000");
+    static final int[] UP = {1, 1, 1, 1, 1, 1};
+
+    static double[] deg(double... d) { return Arrays.stream(d).map(Math::toRadians).toArray(); }
+
+    static JointError.Moment at(int[] dir, double[] lastMove, double t, double temp) { return new JointError.Moment(dir, lastMove, t, temp); }
+
+    @Test
+    void unequalFlanks_lagFullyOneWayAndLessTheOther() {
+        var e = new JointError.AsymmetricLostMotion(1, Math.toRadians(0.04), Math.toRadians(0.02));
+        double[] q = deg(0, 10, 0, 0, 0, 0);
+        assertEquals(-Math.toRadians(0.02), e.delta(q, UP), 1e-15);
+        assertEquals(Math.toRadians(0.01), e.delta(q, new int[] {1, -1, 1, 1, 1, 1}), 1e-15);
+    }
+
+    @Test
+    void windUp_growsWithTheMove_andSaturatesAtHalfThePlay() {
+        double b = Math.toRadians(0.04), x0 = Math.toRadians(5);
+        var e = new JointError.WindUpLostMotion(2, b, x0);
+        double[] q = new double[6];
+        double[] move = new double[6];
+        move[2] = x0; // one build-up length: 1 - 1/e of the full lag
+        assertEquals(-0.5 * b * (1 - Math.exp(-1)), e.delta(q, at(UP, move, 0, 20)), 1e-15);
+        move[2] = -x0 / 10; // a short move down: a tenth-ish of the lag, on the other side
+        assertEquals(0.5 * b * (1 - Math.exp(-0.1)), e.delta(q, at(new int[] {1, 1, -1, 1, 1, 1}, move, 0, 20)), 1e-15);
+        assertEquals(-0.5 * b, e.delta(q, at(UP, null, 0, 20)), 1e-15, "long moves: plain lost motion");
+    }
+
+    @Test
+    void slipCreepAndDriveThermal_followTimeAndTemperature() {
+        double[] q = new double[6];
+        var slip = new JointError.Slip(1, 1000, Math.toRadians(0.02));
+        assertEquals(0, slip.delta(q, at(UP, null, 999, 20)));
+        assertEquals(Math.toRadians(0.02), slip.delta(q, at(UP, null, 1000, 20)));
+        var creep = new JointError.Creep(2, Math.toRadians(0.03) / 3600);
+        assertEquals(Math.toRadians(0.03), creep.delta(q, at(UP, null, 3600, 20)), 1e-15);
+        var th = new JointError.DriveThermal(1, Math.toRadians(0.003), 20);
+        assertEquals(Math.toRadians(0.03), th.delta(q, at(UP, null, 0, 30)), 1e-15);
+        assertEquals(0, th.delta(q, at(UP, null, 0, Double.NaN)));
+    }
+
+    @Test
+    void bendingUnderPayload_cubicInReach_proportionalToPayload() {
+        var sag = new WorldRobot.Sag(0, 1.5, 1e-5);
+        assertEquals(1e-4, sag.at(1.5, 10), 1e-18);
+        assertEquals(8e-4, sag.at(3.0, 10), 1e-15);
+        assertEquals(0, sag.at(1.5, 0));
+        WorldRobot w = WorldRobot.nominal(IRB2000, new double[] {0, 0, 0.1}).withSag(sag);
+        double[] q = deg(0, 20, 10, 0, 30, 0);
+        double dz = w.target(q, UP, Double.NaN, 0, 10).p()[2] - w.target(q, UP, Double.NaN, 0, 0).p()[2];
+        assertTrue(dz < -1e-5 && dz > -1e-3, "dz " + dz);
+    }
+
+    @Test
+    void knockedTarget_movesOnTheFlangeFromItsMomentOn() {
+        var bump = new WorldRobot.ToolBump(100, new double[] {0.2e-3, 0, 0}, new double[3]);
+        WorldRobot w = WorldRobot.nominal(IRB2000, new double[] {0, 0, 0.1}).withToolBump(bump);
+        double[] q = deg(10, 20, 10, 0, 30, 40);
+        double[] before = w.target(q, UP, 20, 99, 0).p(), after = w.target(q, UP, 20, 100, 0).p();
+        assertEquals(0.2e-3, Rigid.norm(Rigid.minus(after, before)), 1e-12);
+        // The shift is along the flange's x axis (the flange at the model angles theta = C q).
+        Rigid flange = w.arm().flange(WorldRobot.times(w.coupling(), q));
+        double[] x = flange.rotate(new double[] {1, 0, 0});
+        assertEquals(0.2e-3, Rigid.dot(Rigid.minus(after, before), x), 1e-12);
+    }
+
+    @Test
+    void campaignStartedElsewhere_firstDirectionsFollowTheUnknownStart_andLastMovesAreRecorded() {
+        Scenario s = Scenario.named("lost motion j2, directions not recorded, started away from home");
+        Campaign.Result c = s.trial(3).campaign();
+        assertEquals("ELSEWHERE", c.plan().start().name());
+        Campaign.Row first = c.rows().get(0);
+        double[] home = Campaign.home(IRB2000);
+        int differ = 0;
+        for (int j = 0; j < 6; j++) if (first.dir()[j] != (first.q()[j] > home[j] ? 1 : -1)) differ++;
+        assertTrue(differ > 0, "some first directions are not those of a move from home");
+        assertNotEquals(c.text(), Scenario.named("lost motion j2, directions not recorded").trial(3).campaign().text());
+        assertTrue(s.trial(3).truthJson().contains("\"start\" : \"elsewhere\""));
+    }
+
+    @Test
+    void everyNewScenario_drawsAndMeasures() {
+        for (String name : List.of("lost motion j2, unequal flanks (gravity preload)", "lost motion j3 building up over the move (friction wind-up)",
+                "transmission error j1 and j3 at once, amplitudes 0.002-0.02 deg", "outside: encoder slip on j2 mid-campaign",
+                "outside: j3 zero creeping with time", "outside: j2 zero moving with drive temperature", "outside: arm bends with payload and reach",
+                "outside: measured target knocked mid-campaign", "outside: bump in the angle of j3, 6-D", "outside: bump in the angle of j3, 50 poses",
+                "outside: j2 error depending on j2 and j4, 6-D", "outside: measured point sags with reach, 50 poses")) {
+            Scenario.Trial t = Scenario.named(name).trial(1);
+            assertTrue(t.campaign().rows().size() >= 100, name);
+            assertTrue(t.truthJson().contains(name.replace("\"", "")), name);
+        }
+        // The mid-campaign events leave a fifth of the campaign or more on either side.
+        for (long seed = 1; seed <= 5; seed++) {
+            Scenario.Trial t = Scenario.named("outside: encoder slip on j2 mid-campaign").trial(seed);
+            double at = ((JointError.Slip) t.world().errors().get(0)).atS();
+            long before = t.campaign().rows().stream().filter(r -> r.timeS() < at).count();
+            assertTrue(before > 0.2 * 300 && before < 0.8 * 300, "slip at " + at + " s: " + before + " poses before it");
+            Scenario.Trial k = Scenario.named("outside: measured target knocked mid-campaign").trial(seed);
+            double kat = k.world().toolBump().atS();
+            long kb = k.campaign().rows().stream().filter(r -> r.timeS() < kat).count();
+            assertTrue(kb > 0.2 * 300 && kb < 0.8 * 300, "knock at " + kat + " s: " + kb + " poses before it");
+        }
+    }
+}
