@@ -48,6 +48,9 @@ public final class WorkbenchCommand implements Callable<Integer> {
                     + "moves, so the background path check runs during the measurement (default ${DEFAULT-VALUE}).")
     int benchmarkMoves;
 
+    @Option(names = "--no-shadows", description = "Start with shadows off (View → Shadows), e.g. to compare frame rates.")
+    boolean noShadows;
+
     @Option(names = "--benchmark-edits", defaultValue = "2", paramLabel = "N",
             description = "With --benchmark-moves: edits per second (0: the program is drawn but never edited; default ${DEFAULT-VALUE}).")
     double benchmarkEdits;
@@ -79,6 +82,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robopro workbench: " + e.getMessage());
             return 3;
         }
+        if (noShadows) wb.session().model().setShadows(false);
         if (interactive) {
             new CountDownLatch(1).await(); // the window's Exit action ends the process
             return 0;
