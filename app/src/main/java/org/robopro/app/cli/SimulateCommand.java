@@ -56,6 +56,11 @@ public final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--target", defaultValue = "0,0,100", paramLabel = "X,Y,Z", description = "nominal measured point on the flange, mm; several reflectors per pose: X,Y,Z;X,Y,Z;... (written one row per pose and point)")
     String target;
 
+    @Option(names = "--distance-to", paramLabel = "X,Y,Z",
+            description = "measure distances instead of positions: the length from this anchor (robot base frame, mm) to the point, "
+                    + "as a draw-wire sensor would; the anchor is written to truth.json only")
+    String distanceTo;
+
     @Option(names = "--six-d", description = "also measure the tool orientation")
     boolean sixD;
 
@@ -97,6 +102,11 @@ public final class SimulateCommand implements Callable<Integer> {
         List<EffectSpec> specs = EffectSpec.parseAll(effects);
         EffectCampaign ec = specs.isEmpty() ? null : EffectCampaign.simulate(desc, s, specs);
         Campaign c = CampaignSimulator.withPoints(ec != null ? ec.campaign() : CampaignSimulator.simulate(nominal, s), more);
+        if (distanceTo != null) {
+            if (sixD || !more.isEmpty()) throw new IllegalArgumentException("--distance-to measures one point, without --six-d");
+            double[] a = CliSupport.numbers("--distance-to", distanceTo, 3);
+            c = CampaignSimulator.asDistances(c, new Vec3(Units.mmToM(a[0]), Units.mmToM(a[1]), Units.mmToM(a[2])));
+        }
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
         RobotDescription trueDesc = c.truth().model().toDescription()
@@ -111,9 +121,10 @@ public final class SimulateCommand implements Callable<Integer> {
                 .addString("true.robot.json", org.robopro.models.RobotFile.format(trueDesc))
                 .commit();
         spec.commandLine().getOut().printf(Locale.ROOT,
-                "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, frame %s%n  wrote %s%n",
+                "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, %s%n  wrote %s%n",
                 desc.name(), poses, validatePoses > 0 ? " + " + validatePoses + " validation" : "", sigmaMm,
-                Units.mToMm(c.nominalErrorRmsM()), c.measurements().frame(), out.dir().toAbsolutePath());
+                Units.mToMm(c.nominalErrorRmsM()), c.anchor() != null ? "distances to an anchor" : "frame " + c.measurements().frame(),
+                out.dir().toAbsolutePath());
         if (ec != null)
             for (int i = 0; i < specs.size(); i++) {
                 Effect.Term term = ec.injected().get(i);

@@ -117,7 +117,8 @@ public final class CampaignSimulator {
         for (int k = 1; k <= morePoints.size() + 1; k++) names.add(Integer.toString(k));
         MeasurementSet train = morePoints(c.measurements(), others, names, rng);
         MeasurementSet validate = c.validation() == null ? null : morePoints(c.validation(), others, names, rng);
-        return new Campaign(c.nominal(), t, s, train, validate, c.nominalErrorRmsM(), others.stream().map(o -> o.flangeTtool().position()).toList());
+        return new Campaign(c.nominal(), t, s, train, validate, c.nominalErrorRmsM(), others.stream().map(o -> o.flangeTtool().position()).toList(),
+                null);
     }
 
     private static MeasurementSet morePoints(MeasurementSet set, List<TrueRobot> others, List<String> names, Random rng) {
@@ -129,6 +130,35 @@ public final class CampaignSimulator {
                     m.line(), pts, Double.NaN));
         }
         return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, names, null);
+    }
+
+    /**
+     * The campaign as a draw-wire sensor (or a tracker in distance mode) would have measured it:
+     * per pose the length from {@code anchorBase} (robot base frame, m) to the true measured
+     * point, with the campaign's noise σ on the length (its own random stream). The anchor is not
+     * written in the files (it is what a user would not know); truth.json holds it.
+     */
+    public static Campaign asDistances(Campaign c, Vec3 anchorBase) {
+        SimulationSettings s = c.settings();
+        if (s.sixD() || !c.morePoints().isEmpty()) throw new IllegalArgumentException("distances are measured to one point, without orientations");
+        Random rng = new Random(s.seed() * 31 + 29);
+        MeasurementSet train = distances(c, c.measurements(), anchorBase, rng);
+        MeasurementSet validate = c.validation() == null ? null : distances(c, c.validation(), anchorBase, rng);
+        return new Campaign(c.nominal(), c.truth(), s, train, validate, c.nominalErrorRmsM(), List.of(), anchorBase);
+    }
+
+    private static MeasurementSet distances(Campaign c, MeasurementSet set, Vec3 anchor, Random rng) {
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : set.rows()) {
+            Vec3 p = c.truth().tool(m.q(), PoseConditions.of(m)).position();
+            double d = p.minus(anchor).norm() + c.truth().sigmaM() * rng.nextGaussian();
+            rows.add(new Measurement(m.poseId(), m.q(), null, null, m.directions(), m.timeS(), m.tempC(), m.payloadKg(), m.set(),
+                    m.line(), null, d));
+        }
+        Map<String, String> meta = new LinkedHashMap<>(set.metadata());
+        meta.remove("frame");
+        meta.put("instrument", meta.getOrDefault("instrument", "simulated").replace("simulated", "simulated draw-wire"));
+        return new MeasurementSet(set.source(), meta, MeasurementSet.BASE_FRAME, rows, List.of(), null);
     }
 
     /**
@@ -187,6 +217,7 @@ public final class CampaignSimulator {
         root.put("instrument_T_base", CalibrationReport.poseJson(c.truth().instrumentTbase()));
         root.put("target_in_flange_mm", vecMm(c.truth().flangeTtool().position()));
         if (!c.morePoints().isEmpty()) root.put("more_targets_in_flange_mm", c.morePoints().stream().map(CampaignSimulator::vecMm).toList());
+        if (c.anchor() != null) root.put("anchor_base_mm", vecMm(c.anchor()));
         root.put("flange_T_tool", CalibrationReport.poseJson(c.truth().flangeTtool()));
         List<Map<String, Object>> params = new ArrayList<>();
         double[] nom = c.nominal().parameterValues(), tru = c.truth().model().parameterValues();

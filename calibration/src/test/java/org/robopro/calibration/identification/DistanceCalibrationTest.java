@@ -26,12 +26,12 @@ import org.robopro.world.WorldRobot;
  * the fit never saw, and the distance between the point's places at two poses (the arm's shape,
  * which no rigid motion of the whole set-up changes).
  */
-class DistanceCalibrationTest {
-    static final double SIGMA = 0.02e-3;
+public class DistanceCalibrationTest {
+    public static final double SIGMA = 0.02e-3;
     /** The anchor in the world's robot base frame, m: on the floor in front of the robot. */
     static final double[] ANCHOR = {1.3, -0.4, 0.05};
 
-    record Truth(RobotDescription nominal, WorldRobot world, List<Measurement> train, List<Measurement> validate) {
+    public record Truth(RobotDescription nominal, WorldRobot world, List<Measurement> train, List<Measurement> validate) {
         double[] point(double[] q) {
             int[] dir = new int[q.length];
             java.util.Arrays.fill(dir, 1);
@@ -44,13 +44,13 @@ class DistanceCalibrationTest {
         }
     }
 
-    static Truth truth(long seed, int poses) {
+    public static Truth truth(long seed, int poses) {
         RobotDescription nominal = RobotLibrary.shipped("irb2400");
         WorldCampaigns.Sim sim = WorldCampaigns.geometric(nominal, seed, true, p -> p.withPoses(poses, 60).withSigma(0));
         return new Truth(nominal, sim.world().withInstrument(Rigid.IDENTITY), sim.train().rows(), sim.validation().rows());
     }
 
-    static String file(Truth t, long seed, boolean giveAnchor) {
+    public static String file(Truth t, long seed, boolean giveAnchor) {
         Random rng = new Random(seed);
         StringBuilder b = new StringBuilder("# robopro-measurements 1\n# robot: irb2400\n# length-unit: mm\n# angle-unit: deg\n"
                 + "# instrument: draw-wire sensor\n");
