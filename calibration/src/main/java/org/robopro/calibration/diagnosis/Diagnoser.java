@@ -374,7 +374,7 @@ public final class Diagnoser {
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
-        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), rows, aliasNotes);
+        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         // With validation data, an effect whose addition did not lower the validation error is not claimed.
         for (int k = selected.size() - 1; k >= 0; k--) {
             double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
@@ -536,8 +536,9 @@ public final class Diagnoser {
     /**
      * The generic fallbacks of the variables a family explains: a per-joint smooth spline (at every
      * resolution the poses support) for a one-joint angle family, the two-joint probe for a
-     * coupling, the point's smooth displacement with the same variable for a drift. Thermal growth
-     * has no fallback of its own (its shape follows the arm's links); it must beat the located ones.
+     * coupling. Thermal growth and drift have none of their own (growth follows the arm's links; the
+     * point moving with time or temperature in any shape is what a drift is); they must beat the
+     * located ones that are not the point's own displacement.
      */
     static List<Effect> ownFallbacks(Effect e, List<Measurement> rows) {
         List<Effect> out = new ArrayList<>();
@@ -551,16 +552,6 @@ public final class Diagnoser {
                         if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()) out.add(Effect.smooth(j, lo, hi, nb));
             }
             case COUPLING -> out.add(Effect.pair(e.joint(), e.source()));
-            case DRIFT -> {
-                Effect.Along a = e.usesTimeProxy() ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
-                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-                for (Measurement r : rows) {
-                    double x = a == Effect.Along.TIME ? r.timeS() : r.tempC();
-                    lo = Math.min(lo, x);
-                    hi = Math.max(hi, x);
-                }
-                if (hi > lo) out.add(Effect.pointSmooth(a, lo, hi));
-            }
             default -> { }
         }
         return out;
@@ -576,8 +567,9 @@ public final class Diagnoser {
      * given) — reported as an unexplained located structure, not as physics.
      */
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                  List<Effect> located, List<Measurement> rows, List<String> notes) {
+                                  List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
         int refinements = 0;
+        Set<String> withdrawn = new HashSet<>();
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -589,6 +581,9 @@ public final class Diagnoser {
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
                 for (Effect s : selected) rivals.remove(s.label());
+                if (e.kind() == Effect.Kind.DRIFT)
+                    rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
+                            && (f.along() == Effect.Along.TIME || f.along() == Effect.Along.TEMPERATURE));
                 double pressOwn = at.pressFull();
                 Effect best = null;
                 double bestPress = Double.POSITIVE_INFINITY;
@@ -622,6 +617,25 @@ public final class Diagnoser {
                 }
                 if (why == null) continue;
                 LOG.debug(why);
+                withdrawn.add(e.label());
+                if (best != null) {
+                    // Another family of the same structure that predicts better than the fallback takes its place (and is checked in turn).
+                    Effect alias = null;
+                    double aliasPress = bestPress;
+                    for (Effect a : aliases(e, family, selected)) {
+                        if (withdrawn.contains(a.label()) || !checkedAgainstFallbacks(a)) continue;
+                        double pa = at.pressReplacing(k, a, w.conditions);
+                        if (pa < aliasPress) { aliasPress = pa; alias = a; }
+                    }
+                    if (alias != null) {
+                        int before = selected.size();
+                        fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, alias, true);
+                        notes.add(e.label() + " was replaced by " + alias.label() + ", which predicts left-out poses better than "
+                                + "both it and the located structure's fallback" + (selected.size() == before ? "" : " (but did not hold on held-out data)"));
+                        changed = true;
+                        continue;
+                    }
+                }
                 int before = selected.size();
                 fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
                 notes.add(why + (selected.size() == before ? "; " + best.label() + " models the structure instead (held-out error lower)"

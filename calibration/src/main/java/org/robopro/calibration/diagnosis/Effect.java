@@ -215,8 +215,9 @@ public final class Effect {
 
     /**
      * The zero of drive {@code joint} moves with time or temperature: Δq = a cubic B-spline
-     * ({@link #POINT_BASIS} functions) of the variable over [lo, hi]; unknown conditions contribute
-     * nothing.
+     * ({@link #POINT_BASIS} functions) of the variable over [lo, hi]. An unknown time is taken as
+     * the end of the campaign (the state closest to a program run after it); an unknown
+     * temperature contributes nothing.
      */
     public static Effect zeroDrift(int joint, Along along, double lo, double hi) {
         if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a joint zero drifts with time or temperature");
@@ -226,7 +227,10 @@ public final class Effect {
         return e;
     }
 
-    /** Drive {@code joint}'s zero jumps by v at time {@code tauS} (s since the start): an encoder slip. Unknown time contributes nothing. */
+    /**
+     * Drive {@code joint}'s zero jumps by v at time {@code tauS} (s since the start): an encoder slip.
+     * Δq = −v before the jump, 0 after it and at an unknown time (the state the campaign ended in).
+     */
     public static Effect zeroStep(int joint, double tauS) {
         if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
         return new Effect(Kind.ZERO_STEP, joint, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null, 1);
@@ -429,9 +433,11 @@ public final class Effect {
                 g[2] = cj * so;
                 g[3] = cj * co;
             }
-            case ZERO_STEP -> g[0] = c.timeS() > tauS ? 1 : 0; // unknown time (NaN): nothing
+            // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
+            case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
             case ZERO_DRIFT -> {
                 double x = along == Along.TIME ? c.timeS() : c.tempC();
+                if (!Double.isFinite(x) && along == Along.TIME) x = hi; // unknown time: the state the campaign ended in
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
@@ -452,7 +458,7 @@ public final class Effect {
             case POINT_SMOOTH -> {
                 double[] b = new double[nBasis];
                 double u = switch (along) {
-                    case TIME -> c.timeS();
+                    case TIME -> Double.isFinite(c.timeS()) ? c.timeS() : hi; // unknown time: the state the campaign ended in
                     case TEMPERATURE -> c.tempC();
                     default -> pointVariable(pointBase);
                 };

@@ -120,7 +120,7 @@ final class Plots {
                 yield s;
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
-            case ZERO_STEP -> x > e.tauS() ? v[0] : 0;
+            case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ZERO_DRIFT -> {
                 double[] g = new double[e.basisCount()];
                 Effect.bspline(x, e.rangeLo(), e.rangeHi(), g);
