@@ -103,6 +103,7 @@ public final class CalibrationReport {
      */
     public static List<String> warnings(CalibrationResult r, MeasurementSet train, MeasurementSet validate) {
         List<String> w = new ArrayList<>();
+        if (r.distance()) w.add(distanceWords(r));
         if (r.validate().isEmpty()) return w;
         double tr = r.trainRmsM(), va = r.validateRmsM();
         if (va > VALIDATION_SUSPECT_M && va > VALIDATION_SUSPECT_RATIO * tr) {
@@ -123,6 +124,31 @@ public final class CalibrationReport {
             w.add(sb.toString());
         }
         return w;
+    }
+
+    /**
+     * What distance-only data cannot show, in words: a length to one anchor is unchanged when the
+     * robot and the anchor move together (three translations, three rotations), so the robot's
+     * placement relative to the anchor keeps its nominal value unless the anchor is given in the
+     * robot base frame; each pose sees only the direction towards the anchor.
+     */
+    static String distanceWords(CalibrationResult r) {
+        var a = r.anchor();
+        String at = String.format(Locale.ROOT, "(%.3f, %.3f, %.3f) mm", Units.mToMm(a.x()), Units.mToMm(a.y()), Units.mToMm(a.z()));
+        if (r.anchorGiven())
+            return "distance-only data with the anchor given at " + at + " in the robot base frame: the robot's placement relative "
+                    + "to it is identified, no better than the anchor's coordinates are known; each pose measures only the length "
+                    + "along the line to the anchor, so spread the poses around it";
+        List<String> kept = new ArrayList<>();
+        for (ParameterEstimate p : r.parameters())
+            if (p.fixed() && p.block().equals("geometry") && !p.name().startsWith("flange.")) kept.add(p.name());
+        return "distance-only data: a length to the anchor does not change when the robot and the anchor move together, so "
+                + "where the robot stands relative to the anchor is not observable: " + (kept.isEmpty() ? "the base placement"
+                : String.join(", ", kept)) + " keep their nominal values and the anchor, " + at + " in the robot base frame, is found "
+                + "relative to that placement. The data determine the arm's shape (link lengths and offsets, joint zeros after "
+                + "joint 1) and the measured point on the flange: the calibrated file predicts lengths and relative motions, not "
+                + "absolute positions; for those, measure positions (x, y, z) or give the anchor's position in the robot base "
+                + "frame ('# anchor: x, y, z')";
     }
 
     /**

@@ -958,7 +958,7 @@ public final class MotionInterpreter {
                 currentJoint = new Typed(jt);
                 return new MoveStep(proc, index, src, kind, toLabel, Optional.empty(), Optional.empty(), Optional.empty(),
                         Optional.empty(), Optional.empty(), Optional.empty(), Optional.of(jt.robax()), speed, t, zone,
-                        toolName, tool, wobjName, wobj, flangeTtcp, context(), instruction);
+                        toolName, tool, wobjName, wobj, flangeTtcp, context(), instruction, statementOf(at));
             }
             RobTarget to = typed(toV, "robtarget", RobTarget.class, at, toLabel);
             currentRob = new Typed(to);
@@ -972,7 +972,12 @@ public final class MotionInterpreter {
             }
             return new MoveStep(proc, index, src, kind, toLabel, circName, Optional.of(toPoses[0]), Optional.of(toPoses[1]),
                     circFlange, circTcp, Optional.of(to.robconf()), Optional.empty(), speed, t, zone, toolName, tool, wobjName, wobj,
-                    flangeTtcp, context(), instruction);
+                    flangeTtcp, context(), instruction, statementOf(at));
+        }
+
+        /** The statement a step ran: the syntax-tree node itself (absent for a statement of no tree). */
+        Optional<RapidAst.Stmt> statementOf(Object at) {
+            return at instanceof RapidAst.Stmt st ? Optional.of(st) : Optional.empty();
         }
 
         /**
