@@ -199,7 +199,8 @@ public final class WorkbenchSession implements AutoCloseable {
     }
 
     /** A RAPID module name from a file name ("weld-1.mod" -> "weld_1"). */
-    static String moduleName(Path file) {
+    /** The RAPID module name an export to {@code file} gets: the file's name without extension, as a RAPID name. */
+    public static String moduleName(Path file) {
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "").replaceAll("[^A-Za-z0-9_]", "_");
         return name.isEmpty() || !Character.isLetter(name.charAt(0)) ? "M" + name : name;
     }

@@ -40,6 +40,26 @@ class ProgramCommandTest {
     }
 
     @Test
+    void export_workbenchProject_writesTheWorkbenchsModule(@TempDir Path dir) throws Exception {
+        // The one project format: a workbench project (here one migrated from the former format) exports as the workbench does.
+        Path old = dir.resolve("demo.json");
+        Files.writeString(old, PROJECT);
+        Path project = dir.resolve("demo.robopro.json");
+        org.robopro.app.workbench.ProjectStore.write(org.robopro.app.workbench.ProjectStore.read(old), project, false);
+        Path mod = dir.resolve("Weld.mod");
+        assertEquals(0, Main.run("program", "export", project.toString(), "--out", mod.toString()));
+        String text = Files.readString(mod);
+        try (org.robopro.app.workbench.WorkbenchSession s = org.robopro.app.workbench.WorkbenchSession.open(project)) {
+            Path viaWorkbench = dir.resolve("w/Weld.mod");
+            Files.createDirectories(viaWorkbench.getParent());
+            assertEquals(s.exportRapid(viaWorkbench, false), text);
+        }
+        RapidModule m = RapidParser.parse(text, mod.toString());
+        assertEquals("Weld", m.name());
+        assertEquals(3, m.procedure("main").orElseThrow().body().size());
+    }
+
+    @Test
     void check_ioProgramWithCellSignals_printsTimeLineAndWarnsOnUnsetInput(@TempDir Path dir) throws Exception {
         Path project = dir.resolve("demo.json");
         Files.writeString(project, PROJECT);
