@@ -3,7 +3,6 @@ package org.robopro.app;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
-import com.tngtech.archunit.core.domain.JavaClass;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
@@ -36,14 +35,7 @@ class ArchitectureTest {
 
     @Test
     void packages_haveNoCycles() {
-        slices().matching("org.robopro.(**)").should().beFreeOfCycles()
-                // Known and owned: the program model's AstItem/AstStatement wrap the syntax tree of the
-                // rapid package, which builds the model (programs <-> programs.rapid). It goes when the
-                // syntax tree becomes the program model itself (one program model); nothing else may.
-                .ignoreDependency(JavaClass.Predicates.resideInAPackage("org.robopro.programs")
-                                .and(JavaClass.Predicates.simpleNameStartingWith("Ast")),
-                        JavaClass.Predicates.resideInAPackage("org.robopro.programs.rapid"))
-                .check(classes);
+        slices().matching("org.robopro.(**)").should().beFreeOfCycles().check(classes);
     }
 
     @Test

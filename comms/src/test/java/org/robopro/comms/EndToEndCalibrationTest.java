@@ -21,7 +21,7 @@ import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.comms.connection.ControllerConnection;

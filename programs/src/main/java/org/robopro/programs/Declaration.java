@@ -1,13 +1,12 @@
 package org.robopro.programs;
 
+import org.robopro.programs.rapid.RapidAst.Scope;
+import org.robopro.programs.rapid.RapidAst.Storage;
+
 /**
  * A module-level data declaration: {@code [LOCAL|TASK] CONST|PERS|VAR type name := value;}.
  */
 public record Declaration(Scope scope, Storage storage, String name, RapidValue value) implements ModuleItem {
-    public enum Storage { CONST, PERS, VAR }
-
-    public enum Scope { GLOBAL, LOCAL, TASK }
-
     public Declaration {
         if (scope == null || storage == null || name == null || name.isEmpty() || value == null)
             throw new IllegalArgumentException("declaration fields must not be null");

@@ -8,7 +8,7 @@ import java.util.Arrays;
  * which an axis is); {@link #UNUSED} (9E9) marks an axis that is not there.
  */
 public final class ExtJoints {
-    public static final double UNUSED = 9E9;
+    public static final double UNUSED = org.robopro.programs.rapid.RapidNumbers.UNUSED_AXIS;
     public static final ExtJoints NONE = new ExtJoints(new double[] {UNUSED, UNUSED, UNUSED, UNUSED, UNUSED, UNUSED});
 
     private final double[] values;

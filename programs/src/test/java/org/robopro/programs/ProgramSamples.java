@@ -1,5 +1,6 @@
 package org.robopro.programs;
 
+import org.robopro.programs.rapid.RapidAst;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -21,7 +22,7 @@ public final class ProgramSamples {
         for (int k = 0; k < nT; k++) {
             String n = "p" + (10 * (k + 1));
             targets.add(n);
-            b.declare(new Declaration(Declaration.Scope.values()[r.nextInt(2)], Declaration.Storage.values()[r.nextInt(3)], n, robTarget(r)));
+            b.declare(new Declaration(RapidAst.Scope.values()[r.nextInt(2)], RapidAst.Storage.values()[r.nextInt(3)], n, robTarget(r)));
         }
         b.constant("jHome", JointTarget.of(new double[] {rnd(r, 3), rnd(r, 1.5), rnd(r, 1.5), rnd(r, 3), rnd(r, 2), rnd(r, 6)},
                 r.nextBoolean() ? ExtJoints.NONE : ExtJoints.of(rnd(r, 1000), 9E9, 9E9, 9E9, 9E9, 9E9)));

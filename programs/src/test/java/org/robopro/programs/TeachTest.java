@@ -15,8 +15,6 @@ import org.robopro.models.Vec3;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.rapid.RapidChecker;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 

@@ -52,9 +52,13 @@ public final class Campaign {
      * @param outliers       training poses whose reading is grossly wrong (target knocked, beam broken and re-locked):
      *                       moved by 0.5–3 mm in a random direction
      * @param start          where the robot is before the first pose
+     * @param movedJoints    0: every joint moves between poses (drawn poses, in {@code order}); k: each pose moves only k
+     *                       joints, chosen at random, from the one before (the sequence is the order), and the controller
+     *                       reports its values with a read-back jitter of {@link #READBACK_JITTER_RAD}
      */
     public record Plan(int poses, int validatePoses, double sigmaM, double sigmaRotRad, boolean sixD, boolean dirColumns,
-                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers, Start start) {
+                       boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers, Start start,
+                       int movedJoints) {
         public Plan {
             if (poses < 1 || validatePoses < 0) throw new IllegalArgumentException("poses " + poses + ", validate " + validatePoses);
             if (outliers < 0 || outliers > poses / 10) throw new IllegalArgumentException("outliers " + outliers + " of " + poses + " poses");
@@ -66,20 +70,27 @@ public final class Campaign {
 
         /** 200 training and 100 validation poses, σ 0.02 mm, directions, time and temperature written, no payload, nearest order. */
         public static Plan defaults(long seed) {
-            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME);
+            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME, 0);
         }
 
-        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
-        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
-        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
-        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start); }
-        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start); }
-        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start); }
-        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start); }
-        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start); }
-        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s); }
-        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start); }
+        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
+        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
+        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
+        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
+        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start, movedJoints); }
+        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start, movedJoints); }
+        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start, movedJoints); }
+        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start, movedJoints); }
+        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s, movedJoints); }
+        public Plan withMovedJoints(int k) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, k); }
+        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start, movedJoints); }
     }
+
+    /**
+     * The controller's read-back jitter, rad (0.0001°, a few motor encoder counts through the
+     * gear): a joint that did not move shows this much change in the file.
+     */
+    public static final double READBACK_JITTER_RAD = Math.toRadians(0.0001);
 
     /** Poses between payload changes. */
     public static final int POSES_PER_PAYLOAD = 15;
@@ -100,6 +111,8 @@ public final class Campaign {
     /**
      * One measured pose.
      *
+     * @param q           the controller's values as it reports them (with read-back jitter in a joint-by-joint campaign)
+     * @param dir         the side of the play each drive really rests on (the sign of its last real motion)
      * @param point       measured position, instrument frame, m (with noise)
      * @param quaternion  measured orientation (w, x, y, z), or null
      * @param truePoint   the position without noise, m
@@ -123,7 +136,9 @@ public final class Campaign {
         List<double[]> drawn = new PoseRule(nominal).sample(total, rng);
         double[] start = plan.start() == Start.ELSEWHERE
                 ? new PoseRule(nominal).sample(1, new Random(plan.seed() * 65_537L + 5)).get(0) : home(nominal);
-        List<double[]> seq = plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn, start) : drawn;
+        List<double[]> seq = plan.movedJoints() > 0 ? new PoseRule(nominal).walk(total, plan.movedJoints(), rng)
+                : plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn, start) : drawn;
+        Random jitter = new Random(plan.seed() * 524_287L + 13);
         boolean[] validate = new boolean[total];
         List<Integer> idx = new ArrayList<>();
         for (int i = 0; i < total; i++) idx.add(i);
@@ -168,7 +183,9 @@ public final class Campaign {
                 quat = turn.times(new Rigid(pose.r(), new double[3])).quaternion();
             }
             double tempRead = temp + warm.sensorNoiseK() * noise.nextGaussian();
-            rows.add(new Row(Integer.toString(i + 1), q.clone(), dir.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
+            double[] read = q.clone();
+            if (plan.movedJoints() > 0) for (int j = 0; j < n; j++) read[j] += READBACK_JITTER_RAD * jitter.nextGaussian();
+            rows.add(new Row(Integer.toString(i + 1), read, dir.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
             prev = q;
         }
         boolean base = isIdentity(world.instrumentFromBase());

@@ -47,6 +47,39 @@ final class PoseRule {
         return out;
     }
 
+    /**
+     * A sequence of n poses that moves only {@code moved} joints at a time (a campaign planned joint
+     * by joint): the first pose is drawn whole; each next one redraws that many joints, chosen at
+     * random, in the inner 90 % of their ranges and keeps the others where they were.
+     */
+    List<double[]> walk(int n, int moved, Random rng) {
+        List<double[]> out = new ArrayList<>(sample(1, rng));
+        double[] at = out.get(0);
+        int dof = robot.dof();
+        while (out.size() < n) {
+            double[] q = null;
+            for (int tries = 0; q == null; tries++) {
+                if (tries > 100_000) throw new IllegalStateException("no acceptable walk for " + robot.name());
+                double[] c = at.clone();
+                List<Integer> joints = new ArrayList<>();
+                for (int i = 0; i < dof; i++) joints.add(i);
+                java.util.Collections.shuffle(joints, rng);
+                for (int k = 0; k < Math.min(dof, tries < 200 ? moved : dof); k++) c[joints.get(k)] = draw(joints.get(k), rng);
+                if (acceptable(c)) q = c;
+            }
+            out.add(q);
+            at = q;
+        }
+        return out;
+    }
+
+    private double draw(int i, Random rng) {
+        JointDescription j = robot.joints().get(i);
+        double lo = j.min(), hi = j.max();
+        if (!(hi > lo) || !Double.isFinite(lo) || !Double.isFinite(hi)) { lo = -Math.PI; hi = Math.PI; }
+        return 0.5 * (lo + hi) + 0.45 * (hi - lo) * (2 * rng.nextDouble() - 1);
+    }
+
     boolean acceptable(double[] q) {
         double[] theta = WorldRobot.times(coupling, q);
         Rigid[] body = arm.bodies(theta);

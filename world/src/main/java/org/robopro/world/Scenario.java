@@ -295,6 +295,12 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("lost motion j2, directions not recorded, started away from home", "lost-motion", "irb2000",
                 Expected.named(claim(LOST_MOTION, 2)), (n, r) -> add(lostMotion(1, r)),
                 p -> p.withDirColumns(false).withStart(Campaign.Start.ELSEWHERE)));
+        c.add(s("lost motion j1, directions not recorded, two joints moved per pose", "lost-motion", "irb2000",
+                Expected.named(claim(LOST_MOTION, 1)), (n, r) -> add(lostMotion(0, r)), p -> p.withDirColumns(false).withMovedJoints(2)));
+        c.add(s("lost motion j3, directions not recorded (drive 3 behind the parallel linkage)", "lost-motion", "irb2000",
+                Expected.named(claim(LOST_MOTION, 3)), (n, r) -> add(lostMotion(2, r)), p -> p.withDirColumns(false)));
+        c.add(s("lost motion j2 irb2400, directions not recorded", "lost-motion", "irb2400",
+                Expected.named(claim(LOST_MOTION, 2)), (n, r) -> add(lostMotion(1, r)), p -> p.withDirColumns(false)));
         c.add(s("transmission error j1 and j3 at once, amplitudes 0.002-0.02 deg", "pair", "irb2000",
                 Expected.named(claim(TRANSMISSION_ERROR, 1), claim(TRANSMISSION_ERROR, 3)),
                 (n, r) -> {

@@ -162,6 +162,11 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
 
     public int dof() { return zeroOffsets.length; }
 
+    /** Whether the temperature changes what is measured (thermal growth, instrument drift with temperature, a drive's thermal error). */
+    public boolean temperatureMatters() {
+        return thermal != null || errors.stream().anyMatch(e -> e instanceof JointError.DriveThermal);
+    }
+
     /**
      * The pose of the measured target in the instrument frame (origin = the measured point).
      *

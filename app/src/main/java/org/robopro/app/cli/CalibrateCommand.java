@@ -103,16 +103,17 @@ public final class CalibrateCommand implements Callable<Integer> {
                 : r.pointNames().size() + " points per pose, errors per point";
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(),
                 CalibrationResult.poses(r.train()), kind, Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));
-        w.printf(Locale.ROOT, "  training:   %s%n", stats(ErrorStats.position(r.train(), true)));
+        String of = r.pointNames().isEmpty() ? "poses" : "points";
+        w.printf(Locale.ROOT, "  training:   %s%n", stats(ErrorStats.position(r.train(), true), of));
         if (data.validate() != null) w.printf(Locale.ROOT, "  validation (%d poses): RMS %.4f mm -> %.4f mm, max %.4f mm%n    %s%n",
                 CalibrationResult.poses(r.validate()), Units.mToMm(r.nominalValidateRmsM()), Units.mToMm(r.validateRmsM()), Units.mToMm(r.validateMaxM()),
-                stats(ErrorStats.position(r.validate(), true)));
+                stats(ErrorStats.position(r.validate(), true), of));
         var cv = oc.crossValidation();
         if (cv != null) {
             StringBuilder per = new StringBuilder();
             for (CalibrationResult f : cv.folds()) per.append(per.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.4f", Units.mToMm(f.validateRmsM())));
             w.printf(Locale.ROOT, "  %d-fold cross-validation (each pose predicted by the model that did not see it): %s%n    per fold RMS: %s mm%n",
-                    cv.folds().size(), stats(ErrorStats.position(cv.heldOut(), true)), per);
+                    cv.folds().size(), stats(ErrorStats.position(cv.heldOut(), true), of), per);
         }
         w.printf(Locale.ROOT, "  %d parameters fixed as unidentifiable, condition number %.3g, %d outliers%s%n",
                 r.unidentifiable().size(), r.conditionNumber(), r.outliers().size(),
@@ -164,9 +165,10 @@ public final class CalibrateCommand implements Callable<Integer> {
     }
 
     /** RMS, mean, median, 95th percentile and max of position errors, mm. */
-    static String stats(ErrorStats st) {
+    /** The statistics line; {@code of} names what was counted ("poses", "points"). */
+    static String stats(ErrorStats st, String of) {
         ErrorStats v = st.scaled(1e3);
-        return String.format(Locale.ROOT, "RMS %.4f, mean %.4f, median %.4f, p95 %.4f, max %.4f mm (%d poses)",
-                v.rms(), v.mean(), v.median(), v.p95(), v.max(), v.n());
+        return String.format(Locale.ROOT, "RMS %.4f, mean %.4f, median %.4f, p95 %.4f, max %.4f mm (%d %s)",
+                v.rms(), v.mean(), v.median(), v.p95(), v.max(), v.n(), of);
     }
 }

@@ -13,8 +13,8 @@ import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.check.Problem;
 import org.robopro.programs.collision.ClearanceChecker;
 import org.robopro.programs.sim.Simulation;
-import org.robopro.programs.rapid.ParsedModule;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.ParsedModule;
+import org.robopro.programs.RapidParser;
 import org.robopro.programs.sim.MotionInterpreter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -52,8 +52,10 @@ public final class ProgramCheckCommand implements Callable<Integer> {
         if (c != null) {
             // Collisions and clearance against the cell's objects, and objects placed through one another.
             for (String w : ClearanceChecker.placement(c.objects(), 0.001)) out.println("WARNING cell: " + w);
-            ClearanceChecker.Result cr = new ClearanceChecker(model, ClearanceChecker.pose(c.worldTbase()), c.objects(),
-                    ClearanceChecker.Options.forRobot(model)).check(sim.steps(), r, java.util.Optional.empty());
+            ClearanceChecker.Options shapes = org.robopro.app.workbench.model.ShippedMeshes.collisionOptions(model.description(), model);
+            out.println("collision shapes: " + shapes.linkShapes());
+            ClearanceChecker.Result cr = new ClearanceChecker(model, ClearanceChecker.pose(c.worldTbase()), c.objects(), shapes)
+                    .check(sim.steps(), r, java.util.Optional.empty());
             for (ClearanceChecker.MoveClearance m : cr.moves())
                 out.printf(java.util.Locale.ROOT, "clearance %-40s %8.1f mm  (%s)%n", m.step(), m.minClearanceM() * 1e3, m.closestPair());
             for (Problem p : cr.problems()) out.println(p);

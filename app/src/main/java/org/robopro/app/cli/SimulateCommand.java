@@ -53,8 +53,13 @@ public final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--error-mm", defaultValue = "10", paramLabel = "MM", description = "RMS flange error of the nominal model, mm (default ${DEFAULT-VALUE})")
     double errorMm;
 
-    @Option(names = "--target", defaultValue = "0,0,100", paramLabel = "X,Y,Z", description = "nominal measured point on the flange, mm")
+    @Option(names = "--target", defaultValue = "0,0,100", paramLabel = "X,Y,Z", description = "nominal measured point on the flange, mm; several reflectors per pose: X,Y,Z;X,Y,Z;... (written one row per pose and point)")
     String target;
+
+    @Option(names = "--distance-to", paramLabel = "X,Y,Z",
+            description = "measure distances instead of positions: the length from this anchor (robot base frame, mm) to the point, "
+                    + "as a draw-wire sensor would; the anchor is written to truth.json only")
+    String distanceTo;
 
     @Option(names = "--six-d", description = "also measure the tool orientation")
     boolean sixD;
@@ -84,12 +89,24 @@ public final class SimulateCommand implements Callable<Integer> {
                     + "a calibration case), got " + errorMm);
         RobotDescription desc = robot.description();
         KinematicModel nominal = robot.model();
-        double[] t = CliSupport.numbers("--target", target, 3);
+        String[] targets = target.split(";", -1);
+        double[] t = CliSupport.numbers("--target", targets[0], 3);
+        List<Vec3> more = new ArrayList<>();
+        for (int k = 1; k < targets.length; k++) {
+            double[] v = CliSupport.numbers("--target", targets[k], 3);
+            more.add(new Vec3(Units.mmToM(v[0]), Units.mmToM(v[1]), Units.mmToM(v[2])));
+        }
+        if (!more.isEmpty() && sixD) throw new IllegalArgumentException("--six-d measures one point per pose; give one --target");
         SimulationSettings s = new SimulationSettings(poses, validatePoses, Units.mmToM(sigmaMm), Units.degToRad(sigmaDeg),
                 Units.mmToM(errorMm), 2e-3, new Vec3(Units.mmToM(t[0]), Units.mmToM(t[1]), Units.mmToM(t[2])), sixD, frameBase, seed);
         List<EffectSpec> specs = EffectSpec.parseAll(effects);
         EffectCampaign ec = specs.isEmpty() ? null : EffectCampaign.simulate(desc, s, specs);
-        Campaign c = ec != null ? ec.campaign() : CampaignSimulator.simulate(nominal, s);
+        Campaign c = CampaignSimulator.withPoints(ec != null ? ec.campaign() : CampaignSimulator.simulate(nominal, s), more);
+        if (distanceTo != null) {
+            if (sixD || !more.isEmpty()) throw new IllegalArgumentException("--distance-to measures one point, without --six-d");
+            double[] a = CliSupport.numbers("--distance-to", distanceTo, 3);
+            c = CampaignSimulator.asDistances(c, new Vec3(Units.mmToM(a[0]), Units.mmToM(a[1]), Units.mmToM(a[2])));
+        }
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
         RobotDescription trueDesc = c.truth().model().toDescription()
@@ -104,9 +121,10 @@ public final class SimulateCommand implements Callable<Integer> {
                 .addString("true.robot.json", org.robopro.models.RobotFile.format(trueDesc))
                 .commit();
         spec.commandLine().getOut().printf(Locale.ROOT,
-                "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, frame %s%n  wrote %s%n",
+                "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, %s%n  wrote %s%n",
                 desc.name(), poses, validatePoses > 0 ? " + " + validatePoses + " validation" : "", sigmaMm,
-                Units.mToMm(c.nominalErrorRmsM()), c.measurements().frame(), out.dir().toAbsolutePath());
+                Units.mToMm(c.nominalErrorRmsM()), c.anchor() != null ? "distances to an anchor" : "frame " + c.measurements().frame(),
+                out.dir().toAbsolutePath());
         if (ec != null)
             for (int i = 0; i < specs.size(); i++) {
                 Effect.Term term = ec.injected().get(i);

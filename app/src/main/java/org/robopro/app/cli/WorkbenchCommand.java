@@ -48,6 +48,14 @@ public final class WorkbenchCommand implements Callable<Integer> {
                     + "moves, so the background path check runs during the measurement (default ${DEFAULT-VALUE}).")
     int benchmarkMoves;
 
+    @Option(names = "--no-shadows", description = "Start with shadows off (View → Shadows), e.g. to compare frame rates.")
+    boolean noShadows;
+
+    @Option(names = "--benchmark-shadows-ab",
+            description = "With --benchmark: switch shadows on and off every second and report both frame rates "
+                    + "(the two halves see the same machine load).")
+    boolean shadowsAb;
+
     @Option(names = "--benchmark-edits", defaultValue = "2", paramLabel = "N",
             description = "With --benchmark-moves: edits per second (0: the program is drawn but never edited; default ${DEFAULT-VALUE}).")
     double benchmarkEdits;
@@ -79,6 +87,8 @@ public final class WorkbenchCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robopro workbench: " + e.getMessage());
             return 3;
         }
+        if (noShadows) wb.session().model().setShadows(false);
+        if (interactive) wb.enableShadowFallback(30);
         if (interactive) {
             new CountDownLatch(1).await(); // the window's Exit action ends the process
             return 0;
@@ -108,8 +118,30 @@ public final class WorkbenchCommand implements Callable<Integer> {
         long f0 = wb.app().frameCount();
         long t0 = System.nanoTime();
         long end = t0 + (long) (benchmarkSeconds * 1e9);
+        // A/B: window k (1 s) has shadows on when k is even; its first 0.25 s settles and is not counted.
+        long[] abFrames = new long[2];
+        double[] abSecs = new double[2];
+        int abWindow = -1;
+        long abF = 0, abT = 0;
+        boolean abCounting = false;
         while (System.nanoTime() < end) {
             double t = (System.nanoTime() - t0) / 1e9;
+            if (shadowsAb) {
+                int w = (int) t;
+                if (w != abWindow) {
+                    if (abCounting) {
+                        abFrames[abWindow % 2] += wb.app().frameCount() - abF;
+                        abSecs[abWindow % 2] += (System.nanoTime() - abT) / 1e9;
+                    }
+                    abWindow = w;
+                    abCounting = false;
+                    wb.session().model().setShadows(w % 2 == 0);
+                } else if (!abCounting && t - w >= 0.25) {
+                    abCounting = true;
+                    abF = wb.app().frameCount();
+                    abT = System.nanoTime();
+                }
+            }
             double[] q = q0.clone();
             q[0] += Math.toRadians(30) * Math.sin(t);
             wb.session().model().setQ(q);
@@ -130,6 +162,9 @@ public final class WorkbenchCommand implements Callable<Integer> {
                 size, first, frames / secs, frames, secs, program.isEmpty() ? ""
                         : String.format(Locale.ROOT, "; program of %d moves, %d background path checks", program.size(),
                         wb.session().pathChecker().checks() - checks0));
+        if (shadowsAb && abSecs[0] > 0 && abSecs[1] > 0)
+            spec.commandLine().getOut().printf(Locale.ROOT, "shadows on: %.1f fps, off: %.1f fps (alternating 1 s windows, %.1f s measured each)%n",
+                    abFrames[0] / abSecs[0], abFrames[1] / abSecs[1], abSecs[0]);
     }
 
     private long editTick = -1;

@@ -49,7 +49,7 @@ import org.robopro.programs.RapidModule;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.check.Problem;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidWriter;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 

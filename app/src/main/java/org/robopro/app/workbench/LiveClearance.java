@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
@@ -100,7 +101,8 @@ public final class LiveClearance {
             last = null;
             Optional<KinematicModel> km = k.kinematicModel();
             CellDescription cell = ProjectStore.toCell(model.snapshot());
-            checker = km.map(m -> new ClearanceChecker(m, worldTbase, cell.objects(), ClearanceChecker.Options.forRobot(m))).orElse(null);
+            checker = km.map(m -> new ClearanceChecker(m, worldTbase, cell.objects(), ShippedMeshes.collisionOptions(k.description(), m)))
+                    .orElse(null);
         }
         return Optional.ofNullable(checker);
     }

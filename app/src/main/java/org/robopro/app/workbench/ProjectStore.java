@@ -46,6 +46,7 @@ import org.robopro.models.InputException;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.Vec3;
 import org.robopro.models.RobotLibrary;
+import org.robopro.programs.project.ProgramProject;
 
 /**
  * Reads and writes workbench project files (docs/project-file.md): JSON, mm and degrees /
@@ -176,10 +177,41 @@ public final class ProjectStore {
         return parse(text, file.toString(), file.toAbsolutePath().getParent());
     }
 
+    /** Whether {@code text} is a program file of the former "robopro-program" format (bad JSON: InputException). */
+    public static boolean isProgramFile(String text, String fileName) {
+        return ProgramProject.FORMAT.equals(Located.parse(text, fileName).root().path("format").asText(null));
+    }
+
     /** Parses project JSON; {@code baseDir} resolves a robot file given by relative path. */
     public static ProjectData parse(String text, String fileName, Path baseDir) {
         Located doc = Located.parse(text, fileName);
+        if (ProgramProject.FORMAT.equals(doc.root().path("format").asText(null))) return migrated(text, fileName, doc.root());
         return new Reader(doc, fileName, baseDir, text).project();
+    }
+
+    /**
+     * A program file of the former "robopro-program" format (docs/programs.md), migrated on read:
+     * the shipped welding cell (or, when the file names another robot, that robot alone) with the
+     * file's tool, work objects, targets and {@code main} imported as a RAPID module is
+     * (ProgramModule.fromRapid). Saving writes it as a project.
+     */
+    private static ProjectData migrated(String text, String fileName, JsonNode root) {
+        org.robopro.programs.RapidModule module = ProgramProject.parse(text, fileName);
+        String robotName = root.path("robot").asText("irb2000");
+        ProjectData cell = DefaultCell.irb2000Welding();
+        if (!robotName.equalsIgnoreCase(cell.robotRef())) {
+            RobotDescription robot;
+            try {
+                robot = RobotLibrary.load(robotName);
+            } catch (RuntimeException e) {
+                throw new InputException(fileName, 0, 0, "robot", "cannot load robot: " + e.getMessage(), e);
+            }
+            cell = new ProjectData(robotName, robot, Pose.IDENTITY, cell.tool(), List.of(), List.of(), List.of(), List.of(), null);
+        }
+        WorkbenchModel model = new WorkbenchModel(cell.robotRef(), cell.robot());
+        model.load(cell);
+        model.replaceProgram(org.robopro.app.workbench.model.ProgramModule.fromRapid(module, model, "main"));
+        return model.snapshot();
     }
 
     /** A JSON tree plus where each value started (by JSON pointer), for error messages. */

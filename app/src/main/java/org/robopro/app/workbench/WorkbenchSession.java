@@ -24,10 +24,10 @@ import org.robopro.models.AtomicFiles;
 import org.robopro.models.TextFiles;
 import org.robopro.models.Vec3;
 import org.robopro.programs.RapidModule;
-import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.ParsedModule;
 import org.robopro.programs.rapid.RapidExport;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 /**
  * The workbench's headless session: the cell model and every operation the menus, buttons,
@@ -199,7 +199,8 @@ public final class WorkbenchSession implements AutoCloseable {
     }
 
     /** A RAPID module name from a file name ("weld-1.mod" -> "weld_1"). */
-    static String moduleName(Path file) {
+    /** The RAPID module name an export to {@code file} gets: the file's name without extension, as a RAPID name. */
+    public static String moduleName(Path file) {
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "").replaceAll("[^A-Za-z0-9_]", "_");
         return name.isEmpty() || !Character.isLetter(name.charAt(0)) ? "M" + name : name;
     }

@@ -31,7 +31,11 @@ class DiagnosisBenchmarkTest {
             "joint elasticity j3, masses off 30 %",
             "gear-ratio error j1", "cross-coupling j3<-j2",
             "lost motion j2 + thermal growth per link",
-            "outside: bump in the angle of j3", "outside: measured point sags with reach");
+            "outside: bump in the angle of j3", "outside: measured point sags with reach",
+            // differently formed truths: lost motion with unequal flanks; directions inferred from a joint-by-joint
+            // campaign whose still joints show only read-back jitter; an error depending on two joints (outside)
+            "lost motion j2, unequal flanks (gravity preload)", "lost motion j1, directions not recorded, two joints moved per pose",
+            "outside: j2 error depending on j2 and j4");
 
     /** Scenario -> what the diagnosis did on the CI seed when it was last checked. */
     static final Map<String, String> KNOWN_FAILURES = Map.of();

@@ -9,10 +9,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.robopro.app.Main;
 import org.robopro.programs.RapidModule;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 
-class ProgramCommandTest {
-    static final String PROJECT = """
+public class ProgramCommandTest {
+    /** A program file of the former robopro-program format (taught targets, a jointtarget, three moves). */
+    public static final String PROJECT = """
             {"format": "robopro-program", "version": 1, "module": "Demo", "robot": "irb2000",
              "tools": {"tTorch": {"tframe": {"pos_mm": [0, 0, 150]}}},
              "jointtargets": {"jHome": {"joints_deg": [0, 0, 0, 0, 30, 0]}},
@@ -37,6 +38,26 @@ class ProgramCommandTest {
         assertEquals(0, Main.run("program", "compensate", mod.toString(), "--robot", "irb2000", "--calibrated", "irb2000",
                 "--out", comp.toString()));
         assertTrue(Files.readString(comp).contains("CONST robtarget pA:="));
+    }
+
+    @Test
+    void export_workbenchProject_writesTheWorkbenchsModule(@TempDir Path dir) throws Exception {
+        // The one project format: a workbench project (here one migrated from the former format) exports as the workbench does.
+        Path old = dir.resolve("demo.json");
+        Files.writeString(old, PROJECT);
+        Path project = dir.resolve("demo.robopro.json");
+        org.robopro.app.workbench.ProjectStore.write(org.robopro.app.workbench.ProjectStore.read(old), project, false);
+        Path mod = dir.resolve("Weld.mod");
+        assertEquals(0, Main.run("program", "export", project.toString(), "--out", mod.toString()));
+        String text = Files.readString(mod);
+        try (org.robopro.app.workbench.WorkbenchSession s = org.robopro.app.workbench.WorkbenchSession.open(project)) {
+            Path viaWorkbench = dir.resolve("w/Weld.mod");
+            Files.createDirectories(viaWorkbench.getParent());
+            assertEquals(s.exportRapid(viaWorkbench, false), text);
+        }
+        RapidModule m = RapidParser.parse(text, mod.toString());
+        assertEquals("Weld", m.name());
+        assertEquals(3, m.procedure("main").orElseThrow().body().size());
     }
 
     @Test

@@ -14,7 +14,7 @@ import org.robopro.app.workbench.model.Target;
 import org.robopro.app.workbench.model.WorkObject;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.CellFile;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidWriter;
 
 /** The demo's weld program (DemoWeld.mod) imported into the workbench's welding cell. */
 class DemoWeldImportTest {

@@ -159,6 +159,32 @@ class ProjectStoreTest {
     }
 
     @Test
+    void read_formerProgramFile_opensMigratedAsProject() throws Exception {
+        // A file of the programs module's former format: taught targets (joints through FK) and typed ones.
+        Path f = dir.resolve("demo.json");
+        Files.writeString(f, org.robopro.app.cli.ProgramCommandTest.PROJECT);
+        ProjectData d = ProjectStore.read(f);
+        assertEquals("irb2000", d.robotRef());
+        assertEquals("tTorch", d.tool().name());
+        assertEquals(List.of("jHome", "pA", "pB"), d.targets().stream().map(Target::name).toList());
+        assertEquals(List.of(Instruction.Type.MOVEABSJ, Instruction.Type.MOVEJ, Instruction.Type.MOVEL),
+                d.program().stream().map(Instruction::type).toList());
+        assertEquals(200, d.program().get(2).speedMmPerS(), 1e-9);
+        assertEquals(10, d.program().get(1).zoneMm(), 1e-9);
+        // pA was taught at (17, 11, 6, 11, 40, -17) deg: the migrated target stands where FK puts the TCP.
+        WorkbenchModel m = new WorkbenchModel(d.robotRef(), d.robot());
+        m.load(d);
+        double[] qA = java.util.Arrays.stream(new double[] {17, 11, 6, 11, 40, -17}).map(Math::toRadians).toArray();
+        Pose tcpA = d.worldTbase().times(m.kinematics().flange(qA)).times(d.tool().flangeTtcp());
+        assertEquals(0, d.targets().get(1).worldTtcp().distanceTo(tcpA), 1e-9);
+        // Saved, it is a project file of the one format.
+        Path saved = dir.resolve("demo.robopro.json");
+        ProjectStore.write(d, saved, false);
+        assertTrue(Files.readString(saved).contains("\"format\" : \"robopro-project\""));
+        assertEquals(d.program(), ProjectStore.read(saved).program());
+    }
+
+    @Test
     void parse_wrongFormat_rejected() {
         InputException e = assertThrows(InputException.class, () -> ProjectStore.parse("{\"format\": \"other\"}", "x.json", dir));
         assertEquals("format", e.field());

@@ -403,7 +403,7 @@ public final class WorkbenchScenario {
         Pose p30 = wb.model().target("p30").orElseThrow().worldTtcp();
         r.setProperty("moveCGhostToP30Mm", String.valueOf(1000 * wb.model().worldTtcp(wb.model().ghostQ()).distanceTo(p30)));
         // Upload lets the user choose the PROC: a module whose second procedure calls main twice.
-        String text = org.robopro.programs.rapid.RapidWriter.export(
+        String text = org.robopro.programs.RapidWriter.export(
                 org.robopro.app.workbench.model.ProgramModule.toRapid(wb.model(), "Twice")).text();
         text = text.substring(0, text.lastIndexOf("ENDMODULE")) + "  PROC twice()\n    main;\n    main;\n  ENDPROC\nENDMODULE\n";
         wb.controller().orElseThrow().download("Twice", text).get(30, java.util.concurrent.TimeUnit.SECONDS);

@@ -179,8 +179,13 @@ public final class Calibrator {
         o.progress().update("nominal fit", 0.2);
 
         // 3. Identifiability: structural (any poses) then these poses.
-        Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance());
+        // A given anchor is fixed before the analysis: in the base frame, it makes the robot's base
+        // placement observable, which a free anchor absorbs. (A given instrument pose or tool is
+        // fixed after it: the base placement keeps its nominal value, so a wrong registration
+        // shows as a poor fit instead of being absorbed by the robot.)
         boolean[] fix = new boolean[p1.fullSize()];
+        if (distance && train.anchor() != null) for (int a = 0; a < 3; a++) fix[p1.anchorOffset() + a] = true;
+        Identifiability.Result structural = structural(nominal, sixD, instrument, effects, nominalFull, p1, o.tolerance(), fix.clone());
         for (int j : structural.fixed()) fix[j] = true;
         for (int j : known(p1, o, train.anchor() != null)) fix[j] = true;
         int nFree = 0;
@@ -583,9 +588,9 @@ public final class Calibrator {
      * analysis on {@value #STRUCTURAL_POSES} random poses inside the joint limits. Cached per model.
      */
     static Identifiability.Result structural(KinematicModel nominal, boolean sixD, boolean instrument, List<EffectBlock> effects,
-                                             double[] start, IdentificationProblem like, double tol) {
+                                             double[] start, IdentificationProblem like, double tol, boolean[] known) {
         StringBuilder key = new StringBuilder().append(sixD).append('/').append(instrument).append('/').append(tol)
-                .append('/').append(like.pointCount()).append('/').append(like.distance());
+                .append('/').append(like.pointCount()).append('/').append(like.distance()).append('/').append(Arrays.toString(known));
         for (EffectBlock e : effects) key.append('/').append(e.name()).append(e.parameterNames());
         synchronized (STRUCTURAL) {
             Identifiability.Result r = STRUCTURAL.getOrDefault(nominal, Map.of()).get(key.toString());
@@ -615,7 +620,9 @@ public final class Calibrator {
         int m = p.residualCount(), n = p.fullSize();
         double[] j = new double[m * n];
         p.evaluateFull(start, new double[m], j);
-        Identifiability.Result r = Identifiability.analyze(j, m, n, p.names(), p.fixPriorities(), null, rows.size(), tol);
+        boolean any = false;
+        for (boolean b : known) any |= b;
+        Identifiability.Result r = Identifiability.analyze(j, m, n, p.names(), p.fixPriorities(), any ? known : null, rows.size(), tol);
         synchronized (STRUCTURAL) {
             STRUCTURAL.computeIfAbsent(nominal, k -> new HashMap<>()).put(key.toString(), r);
         }

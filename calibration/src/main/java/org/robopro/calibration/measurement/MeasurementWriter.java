@@ -70,10 +70,14 @@ public final class MeasurementWriter {
         for (Map.Entry<String, String> e : metadata.entrySet()) {
             String k = e.getKey();
             if (k.equals("length-unit") || k.equals("angle-unit") || k.equals("robopro-measurements 1") || k.equals("anchor")) continue;
-            if (k.equals("frame")) { wroteFrame = true; sb.append("# frame: ").append(frame).append('\n'); continue; }
+            if (k.equals("frame")) {
+                wroteFrame = true;
+                if (!distance) sb.append("# frame: ").append(frame).append('\n');
+                continue;
+            }
             sb.append("# ").append(k).append(": ").append(e.getValue().replace('\n', ' ')).append('\n');
         }
-        if (!wroteFrame) sb.append("# frame: ").append(frame).append('\n');
+        if (!wroteFrame && !distance) sb.append("# frame: ").append(frame).append('\n');
         if (anchor != null)
             sb.append("# anchor: ").append(num(Units.mToMm(anchor.x()), 6)).append(", ").append(num(Units.mToMm(anchor.y()), 6))
               .append(", ").append(num(Units.mToMm(anchor.z()), 6)).append('\n');

@@ -96,6 +96,72 @@ public final class CampaignSimulator {
     }
 
     /**
+     * The campaign with more reflectors on the flange: point 1 is the campaign's measured point,
+     * points 2.. sit nominally at {@code morePoints} (flange coordinates, m) with the same
+     * placement error per axis as the first; every pose measures them all (the same true robot,
+     * instrument and noise; conditions from each row). Noise and placement errors come from their
+     * own random stream, so point 1 is the single-point campaign's. Points are named 1, 2, ...
+     */
+    public static Campaign withPoints(Campaign c, List<Vec3> morePoints) {
+        if (morePoints.isEmpty()) return c;
+        SimulationSettings s = c.settings();
+        if (s.sixD()) throw new IllegalArgumentException("several measured points per pose go without orientations");
+        Random rng = new Random(s.seed() * 31 + 17);
+        TrueRobot t = c.truth();
+        List<TrueRobot> others = new ArrayList<>();
+        for (Vec3 v : morePoints) {
+            Vec3 target = v.plus(new Vec3(rng.nextGaussian(), rng.nextGaussian(), rng.nextGaussian()).times(s.targetErrorM()));
+            others.add(new TrueRobot(t.model(), Pose.translation(target), t.instrumentTbase(), t.sigmaM(), 0, t.effects()));
+        }
+        List<String> names = new ArrayList<>();
+        for (int k = 1; k <= morePoints.size() + 1; k++) names.add(Integer.toString(k));
+        MeasurementSet train = morePoints(c.measurements(), others, names, rng);
+        MeasurementSet validate = c.validation() == null ? null : morePoints(c.validation(), others, names, rng);
+        return new Campaign(c.nominal(), t, s, train, validate, c.nominalErrorRmsM(), others.stream().map(o -> o.flangeTtool().position()).toList(),
+                null);
+    }
+
+    private static MeasurementSet morePoints(MeasurementSet set, List<TrueRobot> others, List<String> names, Random rng) {
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : set.rows()) {
+            List<Vec3> pts = new ArrayList<>(List.of(m.position()));
+            for (TrueRobot o : others) pts.add(o.measure(m.q(), PoseConditions.of(m), rng));
+            rows.add(new Measurement(m.poseId(), m.q(), null, null, m.directions(), m.timeS(), m.tempC(), m.payloadKg(), m.set(),
+                    m.line(), pts, Double.NaN));
+        }
+        return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, names, null);
+    }
+
+    /**
+     * The campaign as a draw-wire sensor (or a tracker in distance mode) would have measured it:
+     * per pose the length from {@code anchorBase} (robot base frame, m) to the true measured
+     * point, with the campaign's noise σ on the length (its own random stream). The anchor is not
+     * written in the files (it is what a user would not know); truth.json holds it.
+     */
+    public static Campaign asDistances(Campaign c, Vec3 anchorBase) {
+        SimulationSettings s = c.settings();
+        if (s.sixD() || !c.morePoints().isEmpty()) throw new IllegalArgumentException("distances are measured to one point, without orientations");
+        Random rng = new Random(s.seed() * 31 + 29);
+        MeasurementSet train = distances(c, c.measurements(), anchorBase, rng);
+        MeasurementSet validate = c.validation() == null ? null : distances(c, c.validation(), anchorBase, rng);
+        return new Campaign(c.nominal(), c.truth(), s, train, validate, c.nominalErrorRmsM(), List.of(), anchorBase);
+    }
+
+    private static MeasurementSet distances(Campaign c, MeasurementSet set, Vec3 anchor, Random rng) {
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : set.rows()) {
+            Vec3 p = c.truth().tool(m.q(), PoseConditions.of(m)).position();
+            double d = p.minus(anchor).norm() + c.truth().sigmaM() * rng.nextGaussian();
+            rows.add(new Measurement(m.poseId(), m.q(), null, null, m.directions(), m.timeS(), m.tempC(), m.payloadKg(), m.set(),
+                    m.line(), null, d));
+        }
+        Map<String, String> meta = new LinkedHashMap<>(set.metadata());
+        meta.remove("frame");
+        meta.put("instrument", meta.getOrDefault("instrument", "simulated").replace("simulated", "simulated draw-wire"));
+        return new MeasurementSet(set.source(), meta, MeasurementSet.BASE_FRAME, rows, List.of(), null);
+    }
+
+    /**
      * The nominal model with Gaussian errors on every identifiable parameter (1 mm : 1 mrad),
      * scaled so that the RMS flange position error over {@code poses} is {@code errorM}.
      */
@@ -150,6 +216,8 @@ public final class CampaignSimulator {
         root.put("frame", c.measurements().frame());
         root.put("instrument_T_base", CalibrationReport.poseJson(c.truth().instrumentTbase()));
         root.put("target_in_flange_mm", vecMm(c.truth().flangeTtool().position()));
+        if (!c.morePoints().isEmpty()) root.put("more_targets_in_flange_mm", c.morePoints().stream().map(CampaignSimulator::vecMm).toList());
+        if (c.anchor() != null) root.put("anchor_base_mm", vecMm(c.anchor()));
         root.put("flange_T_tool", CalibrationReport.poseJson(c.truth().flangeTtool()));
         List<Map<String, Object>> params = new ArrayList<>();
         double[] nom = c.nominal().parameterValues(), tru = c.truth().model().parameterValues();

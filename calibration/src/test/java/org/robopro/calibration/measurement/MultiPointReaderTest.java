@@ -145,6 +145,9 @@ class MultiPointReaderTest {
     void distance_badInput_isLocated() {
         located(fails(DISTANCE.replace(",distance\n", ",distance,x\n").replace("1523.118\n", "1523.118,5\n").replace("1702.5\n", "1702.5,5\n")),
                 5, "x", "has no coordinates");
+        // 'd' next to coordinates is an extra column, as in files written before distances were read
+        String withD = HEAD + "pose,q1,q2,q3,q4,q5,q6,x,y,z,d\n1,1,2,3,4,5,6,1000,0,1000,7\n";
+        assertEquals(new Vec3(1, 0, 1), MeasurementReader.parse("m.csv", withD, SIX).rows().get(0).position());
         located(fails(DISTANCE.replace(",distance\n", ",distance,d\n").replace("1523.118\n", "1523.118,5\n").replace("1702.5\n", "1702.5,5\n")),
                 5, "d", "name the same value");
         located(fails(DISTANCE.replace(",distance\n", ",point,distance\n").replace("10,1523", "10,a,1523").replace("90,0,1702", "90,0,a,1702")),
@@ -156,5 +159,45 @@ class MultiPointReaderTest {
         // an anchor in a file of positions
         InputException e = fails(WIDE.replace("# frame: tracker\n", "# frame: tracker\n# anchor: 1,2,3\n"));
         located(e, 5, "anchor", "belongs to distance measurements");
+    }
+
+    /**
+     * Random damage to the three new forms (a line dropped or repeated, a field emptied, changed
+     * or moved, a row's point renamed): every result is a set or an InputException naming the file,
+     * never another exception. A cheap complement to the Jazzer fuzz test, run in every build.
+     */
+    @Test
+    void damagedFiles_parseOrFailWithALocatedError() {
+        java.util.Random rng = new java.util.Random(11);
+        String[] seeds = {LONG, WIDE, DISTANCE};
+        String[] junk = {"", "x", "-1", "1e400", "NaN", "A", "B", "C", "D", "0", "validate", "train", "2", "1,2", ";", " "};
+        for (int n = 0; n < 4000; n++) {
+            String[] lines = seeds[n % 3].split("\n", -1);
+            java.util.List<String> ls = new java.util.ArrayList<>(List.of(lines));
+            int edits = 1 + rng.nextInt(3);
+            for (int e = 0; e < edits; e++) {
+                int li = rng.nextInt(ls.size());
+                switch (rng.nextInt(4)) {
+                    case 0 -> ls.remove(li);
+                    case 1 -> ls.add(li, ls.get(li));
+                    default -> {
+                        String[] f = ls.get(li).split(",", -1);
+                        int k = rng.nextInt(f.length);
+                        f[k] = rng.nextBoolean() ? junk[rng.nextInt(junk.length)] : f[rng.nextInt(f.length)];
+                        ls.set(li, String.join(",", f));
+                    }
+                }
+                if (ls.isEmpty()) ls.add("");
+            }
+            String text = String.join("\n", ls);
+            try {
+                MeasurementSet s = MeasurementReader.parse("m.csv", text, SIX);
+                assertTrue(s.size() > 0);
+            } catch (InputException ok) {
+                assertTrue(ok.getMessage().startsWith("m.csv:"), ok.getMessage());
+            } catch (RuntimeException bad) {
+                throw new AssertionError("not an InputException for:\n" + text, bad);
+            }
+        }
     }
 }

@@ -72,4 +72,52 @@ class MultiPointWorkflowTest {
         for (int i = 0; i < s.size(); i++)
             for (int k = 0; k < 3; k++) assertTrue(s.rows().get(i).point(k).minus(back.rows().get(i).point(k)).norm() < 1e-9);
     }
+
+    @Test
+    void distances_residualsHaveTheDistanceError_andTheSummarySaysWhatIsNotSeen() throws Exception {
+        org.robopro.calibration.identification.DistanceCalibrationTest.Truth t =
+                org.robopro.calibration.identification.DistanceCalibrationTest.truth(43, 120);
+        Path f = dir.resolve("wire.csv");
+        Files.writeString(f, org.robopro.calibration.identification.DistanceCalibrationTest.file(t, 3, false));
+        CalibrationWorkflow.Campaign c = CalibrationWorkflow.load(t.nominal(), f, null, 0.2);
+        CalibrationWorkflow.Outcome oc = CalibrationWorkflow.run(t.nominal(), c, CalibrationWorkflow.Settings.defaults().withFolds(4, 2),
+                "2026-01-01T00:00:00Z", Cancellation.NONE, Progress.NONE);
+        List<String> lines = oc.residualsCsv().lines().toList();
+        assertEquals("pose,set,fold,outlier,nominal_mm,dd_mm,norm_mm,cv_dd_mm,cv_norm_mm", lines.get(0));
+        assertEquals(1 + 120, lines.size());
+        for (String l : lines.subList(1, lines.size())) {
+            String[] v = l.split(",", -1);
+            assertEquals(Math.abs(Double.parseDouble(v[5])), Double.parseDouble(v[6]), 2e-6, l);
+        }
+        String summary = oc.summaryJson();
+        assertTrue(summary.contains("distance_only") && summary.contains("anchor_base_mm"), "summary marks distance data");
+        assertTrue(oc.warnings().stream().anyMatch(w -> w.startsWith("distance-only data: ") && w.contains("not observable")), oc.warnings().toString());
+        assertTrue(oc.calibrated().provenance().get("calibration-anchor-mm").endsWith("(identified, base frame)"));
+        double sigma = org.robopro.calibration.identification.DistanceCalibrationTest.SIGMA;
+        assertTrue(oc.result().validateRmsM() < 1.5 * sigma, "held-out distance RMS " + oc.result().validateRmsM() * 1e3 + " mm");
+    }
+
+    @Test
+    void diagnose_refusesSeveralPointsAndDistances_inWords() {
+        MultiPointCalibrationTest.Truth t = MultiPointCalibrationTest.truth(35);
+        var types = t.nominal().joints().stream().map(j -> j.type()).toList();
+        MeasurementSet s = MeasurementReader.parse("smr.csv", MultiPointCalibrationTest.longForm(t, 3, 1), types);
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> org.robopro.calibration.diagnosis.Diagnoser.diagnose(t.nominal(), s, null));
+        assertTrue(e.getMessage().startsWith("smr.csv") && e.getMessage().contains("diagnosis reads one measured point per pose")
+                && e.getMessage().contains("3 points per pose"), e.getMessage());
+    }
+
+    @Test
+    void validationWithOtherPoints_isRefusedInWords() throws Exception {
+        MultiPointCalibrationTest.Truth t = MultiPointCalibrationTest.truth(37);
+        Path a = dir.resolve("three.csv"), b = dir.resolve("two.csv");
+        Files.writeString(a, MultiPointCalibrationTest.longForm(t, 3, 1));
+        Files.writeString(b, MultiPointCalibrationTest.longForm(t, 2, 2));
+        CalibrationWorkflow.Campaign c = CalibrationWorkflow.load(t.nominal(), a, b, null);
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class, () -> CalibrationWorkflow.run(
+                t.nominal(), c, CalibrationWorkflow.Settings.defaults(), "2026-01-01T00:00:00Z", Cancellation.NONE, Progress.NONE));
+        assertTrue(e.getMessage().contains("two.csv: field 'point'") && e.getMessage().contains("measure points SMR1, SMR2 but the training data points SMR1, SMR2, SMR3"),
+                e.getMessage());
+    }
 }

@@ -82,5 +82,5 @@ public final class WorldSimulatedRobot extends NominalController {
         return new Vec3(p[0] + noiseM * rng.nextGaussian(), p[1] + noiseM * rng.nextGaussian(), p[2] + noiseM * rng.nextGaussian());
     }
 
-    @Override public boolean thermal() { return world.thermal() != null; }
+    @Override public boolean thermal() { return world.temperatureMatters(); }
 }

@@ -25,6 +25,8 @@ class WorldSimulatedRobotTest {
         Vec3 b = r.measure(q, new PoseConditions(down, 0, Double.NaN, Double.NaN), new Random(1));
         assertTrue(a.minus(b).norm() > 1e-4, "lost motion moved the point by " + a.minus(b).norm());
         assertTrue(WorldSimulatedRobot.create(d, "thermal growth per link", 3, 0, new Vec3(0, 0, 0.1)).thermal());
+        assertTrue(WorldSimulatedRobot.create(d, "outside: j2 zero moving with drive temperature", 3, 0, new Vec3(0, 0, 0.1)).thermal(),
+                "a drive's thermal error needs the warm-up too");
         assertTrue(r.truthJson().get("effects").toString().contains("lost motion j1"));
         assertThrows(IllegalArgumentException.class, () -> WorldSimulatedRobot.create(d, "null puma560", 3, 0, new Vec3(0, 0, 0.1)));
         assertThrows(IllegalArgumentException.class, () -> WorldSimulatedRobot.create(d, "no such scenario", 3, 0, new Vec3(0, 0, 0.1)));

@@ -149,7 +149,7 @@ public final class PathChecker {
             }
         io.end(total);
         String assumptions = String.format(Locale.ROOT, "trapezoidal profiles reaching full speed in %.2f s, fly-by points blended "
-                + "(parabolic corner within the zone, speed kept), joint speed limits from the robot description", opt.rampS());
+                + "(parabolic corner within the zone, in joint space where a MoveJ takes part; speed kept), joint speed limits from the robot description", opt.rampS());
         return new CheckReport(problems, results, total, assumptions, io.events(), io.arcTime, totalStops);
     }
 
@@ -207,7 +207,8 @@ public final class PathChecker {
 
     /**
      * Blends the corner at motion {@code i}'s target with the next motion when the target is a
-     * fly-by point (zone, no \T) and nothing between the two makes the program wait. The corner
+     * fly-by point (zone, no \T) and nothing between the two makes the program wait; where a joint
+     * motion takes part, in joint space ({@link #jointCorner}), else in Cartesian space. The corner
      * path leaves the incoming segment at min(zone, half its length) before the target and joins
      * the outgoing one as far after it (the controller shrinks zones that overlap the same way), a
      * parabola with the target as its control point; the speed is kept through it, so neither
@@ -228,6 +229,10 @@ public final class PathChecker {
         double lin = p1.minus(p0).norm(), lout = p2.minus(p1).norm();
         if (lin < 1e-9 || lout < 1e-9) return;
         double din = Math.min(m.zone().pzoneTcp(), lin / 2), dout = Math.min(m.zone().pzoneTcp(), lout / 2);
+        if (isJoint(m) || isJoint(n)) {
+            jointCorner(m, n, qBefore[i], a, b, p1, din, dout, i, j, dur, deviation, outcomes);
+            return;
+        }
         Vec3 entry = p1.minus(p1.minus(p0).times(din / lin)), exit = p1.plus(p2.minus(p1).times(dout / lout));
         // Quadratic Bezier entry -> (p1) -> exit: its point nearest p1 is at t = 1/2 for equal arms.
         deviation[i] = entry.minus(p1).times(0.25).plus(exit.minus(p1).times(0.25)).norm();
@@ -243,6 +248,107 @@ public final class PathChecker {
         double shorter = Math.max(0, din + dout - corner) / v;
         dur[i] = Math.max(0, dur[i] - rampSaving(outcomes[i].duration) - shorter / 2);
         dur[j] = Math.max(0, dur[j] - rampSaving(outcomes[j].duration) - shorter / 2);
+    }
+
+    private static boolean isJoint(MoveStep m) { return m.kind() == Move.Kind.MOVE_J || m.kind() == Move.Kind.MOVE_ABS_J; }
+
+    /**
+     * A corner where a joint motion (MoveJ, MoveAbsJ) meets another motion, blended in joint space
+     * as the controller does: the transition starts where the TCP enters the zone on the incoming
+     * motion (last at {@code din} from the target, found along the motion's own joint path) and
+     * ends where it leaves the zone on the outgoing one; between the two the joints follow a
+     * quadratic Bezier with the target's joints as control point. The deviation is the closest
+     * the blended TCP comes to the target (forward kinematics along the Bezier); the time saved is
+     * half a ramp on each side, plus the difference between the legs' and the corner's joint-space
+     * travel at full joint speed (the slowest axis's time, the measure a joint motion is timed by).
+     */
+    private void jointCorner(MoveStep m, MoveStep n, double[] q0, Outcome a, Outcome b, Vec3 p1, double din, double dout,
+                             int i, int j, double[] dur, double[] deviation, Outcome[] outcomes) {
+        double sIn = zoneEdge(m, q0, a, p1, din, true), sOut = zoneEdge(n, a.q, b, p1, dout, false);
+        double[] qIn = along(m, q0, a, sIn), qOut = along(n, a.q, b, sOut), qc = a.q;
+        double legs = 0, corner = 0, closest = tcp(qIn, m).minus(p1).norm(), tClosest = 0;
+        double[] prevIn = qIn, prevOut = a.q, prevC = qIn;
+        for (int k = 1; k <= 16; k++) {
+            double t = k / 16.0;
+            double[] li = along(m, q0, a, sIn + (1 - sIn) * t), lo = along(n, a.q, b, sOut * t);
+            legs += jointTravel(prevIn, li) + jointTravel(prevOut, lo);
+            prevIn = li;
+            prevOut = lo;
+            double[] qb = bezier(qIn, qc, qOut, t);
+            corner += jointTravel(prevC, qb);
+            prevC = qb;
+            double d = tcp(qb, m).minus(p1).norm();
+            if (d < closest) { closest = d; tClosest = t; }
+        }
+        // The closest point between the samples next to the best one (golden-section search).
+        double lo = Math.max(0, tClosest - 1 / 16.0), hi = Math.min(1, tClosest + 1 / 16.0), g = (Math.sqrt(5) - 1) / 2;
+        for (int it = 0; it < 24; it++) {
+            double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+            double d1 = tcp(bezier(qIn, qc, qOut, x1), m).minus(p1).norm(), d2 = tcp(bezier(qIn, qc, qOut, x2), m).minus(p1).norm();
+            closest = Math.min(closest, Math.min(d1, d2));
+            if (d1 < d2) hi = x2; else lo = x1;
+        }
+        deviation[i] = closest;
+        double shorter = Math.max(0, legs - corner);
+        dur[i] = Math.max(0, dur[i] - rampSaving(outcomes[i].duration) - shorter / 2);
+        dur[j] = Math.max(0, dur[j] - rampSaving(outcomes[j].duration) - shorter / 2);
+    }
+
+    private static double[] bezier(double[] a, double[] c, double[] b, double t) {
+        double[] q = new double[a.length];
+        for (int d = 0; d < q.length; d++) q[d] = (1 - t) * (1 - t) * a[d] + 2 * t * (1 - t) * c[d] + t * t * b[d];
+        return q;
+    }
+
+    /**
+     * Where motion m (from q0) crosses the zone's edge, {@code r} from the target p1 (fraction of
+     * the motion): entering the zone for the last time on an incoming motion, leaving it for the
+     * first time on an outgoing one. A scan of 16 steps from the target's end, then bisection.
+     */
+    private double zoneEdge(MoveStep m, double[] q0, Outcome o, Vec3 p1, double r, boolean incoming) {
+        double inside = incoming ? 1 : 0, outside = incoming ? 0 : 1;
+        boolean found = false;
+        for (int k = 1; k <= 16; k++) {
+            double s = incoming ? 1 - k / 16.0 : k / 16.0;
+            if (tcp(along(m, q0, o, s), m).minus(p1).norm() >= r) { outside = s; found = true; break; }
+            inside = s;
+        }
+        if (!found) return outside;
+        for (int it = 0; it < 10; it++) {
+            double mid = (inside + outside) / 2;
+            if (tcp(along(m, q0, o, mid), m).minus(p1).norm() >= r) outside = mid; else inside = mid;
+        }
+        return outside;
+    }
+
+    /** Joint values at fraction s of motion m from q0 (its checked samples for MoveL/MoveC, straight in joint space otherwise). */
+    private static double[] along(MoveStep m, double[] q0, Outcome o, double s) {
+        List<double[]> path = o.samples;
+        double[] a, b;
+        double f;
+        if (isJoint(m) || path.isEmpty()) {
+            a = q0;
+            b = o.q;
+            f = s;
+        } else {
+            double x = s * path.size();
+            int k = Math.min(path.size() - 1, (int) Math.floor(x));
+            a = k == 0 ? q0 : path.get(k - 1);
+            b = path.get(k);
+            f = Math.min(1, x - k);
+        }
+        double[] q = new double[a.length];
+        for (int d = 0; d < q.length; d++) q[d] = a[d] + f * (b[d] - a[d]);
+        return q;
+    }
+
+    private Vec3 tcp(double[] q, MoveStep m) { return model.flange(q).times(m.flangeTtcp()).position(); }
+
+    /** Time at full joint speed from a to b: the slowest axis's. */
+    private double jointTravel(double[] a, double[] b) {
+        double t = 0;
+        for (int d = 0; d < a.length; d++) t = Math.max(t, Math.abs(b[d] - a[d]) / vMax[d]);
+        return t;
     }
 
     /**

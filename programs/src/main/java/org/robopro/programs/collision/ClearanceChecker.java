@@ -18,8 +18,9 @@ import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
 
 /**
- * Collision and clearance along a checked program: the robot's links as capsules between
- * consecutive joint origins, the tool as a capsule from the flange to the TCP, the cell's
+ * Collision and clearance along a checked program: the robot's links as capsules (between
+ * consecutive joint origins with a guessed radius, or each link's own, e.g. fitted to its mesh
+ * by {@link CapsuleFit}), the tool as a capsule from the flange to the TCP, the cell's
  * objects as boxes and cylinder hulls, compared by {@link Gjk} at every path sample the path
  * check solved (MoveL/MoveC, 5 mm / 2 deg) and at joint steps of at most
  * {@link Options#maxJointStepRad} for MoveJ/MoveAbsJ. Self-collision between links that are not
@@ -31,15 +32,40 @@ import org.robopro.programs.sim.ProgramStep;
  */
 public final class ClearanceChecker {
     /**
-     * @param linkRadiusM     capsule radius of the arm's links, m (the robot description carries no link geometry)
+     * @param linkRadiusM     capsule radius of the arm's links between their joint origins, m, when
+     *                        {@code linkCapsules} is empty (a guess: the robot description carries no link geometry)
      * @param toolRadiusM     capsule radius of the tool, m
      * @param maxJointStepRad largest joint change between samples of a joint motion
      * @param warnClearanceM  a move passing closer than this is a warning
+     * @param linkCapsules    one capsule per link (0 = base, then link 1 .. n) in base coordinates at the
+     *                        zero position, e.g. fitted to the link meshes by {@link CapsuleFit}; each moves
+     *                        with its link; empty: the joint-origin segments with {@code linkRadiusM}
      */
-    public record Options(double linkRadiusM, double toolRadiusM, double maxJointStepRad, double warnClearanceM) {
+    public record Options(double linkRadiusM, double toolRadiusM, double maxJointStepRad, double warnClearanceM,
+                          List<Convex.Capsule> linkCapsules) {
+        public Options {
+            linkCapsules = List.copyOf(linkCapsules);
+        }
+
+        public Options(double linkRadiusM, double toolRadiusM, double maxJointStepRad, double warnClearanceM) {
+            this(linkRadiusM, toolRadiusM, maxJointStepRad, warnClearanceM, List.of());
+        }
+
         /** Radii from the robot's size: links 6 % of its characteristic length, tool 25 mm, 1 deg steps, 10 mm warning. */
         public static Options forRobot(KinematicModel model) {
             return new Options(0.06 * model.characteristicLength(), 0.025, Math.toRadians(1), 0.010);
+        }
+
+        /** These options with the links' own capsules (base coordinates, zero position; base link first). */
+        public Options withLinkCapsules(List<Convex.Capsule> capsules) {
+            return new Options(linkRadiusM, toolRadiusM, maxJointStepRad, warnClearanceM, capsules);
+        }
+
+        /** The link shapes in words, for reports. */
+        public String linkShapes() {
+            return linkCapsules.isEmpty()
+                    ? String.format(java.util.Locale.ROOT, "links: capsules between joint origins, radius %.0f mm (guessed from the robot's size)", linkRadiusM * 1e3)
+                    : "links: capsules fitted to the link meshes";
         }
     }
 
@@ -85,6 +111,8 @@ public final class ClearanceChecker {
     private final boolean[][] allowedSelf;
     /** Per obstacle: the robot stands on it (its base or first link touches it in the zero pose), so those two links are not compared with it. */
     private final boolean[] stand;
+    /** Inverse of each link's frame at the zero position: a zero-position shape moves by frame(q) * this. */
+    private final Pose[] zeroInverse;
 
     /**
      * @param worldTbase where the robot stands in the cell
@@ -93,6 +121,11 @@ public final class ClearanceChecker {
     public ClearanceChecker(KinematicModel model, Pose worldTbase, List<CellObject> objects, Options options) {
         this.model = model;
         this.opt = options;
+        Pose[] zero = model.linkFrames(new double[model.dof()]);
+        if (!options.linkCapsules().isEmpty() && options.linkCapsules().size() != zero.length - 1)
+            throw new IllegalArgumentException("need " + (zero.length - 1) + " link capsules (base and each link), got " + options.linkCapsules().size());
+        zeroInverse = new Pose[zero.length];
+        for (int k = 0; k < zero.length; k++) zeroInverse[k] = zero[k].inverse();
         Pose baseTworld = worldTbase.inverse();
         List<Obstacle> obs = new ArrayList<>();
         for (CellObject o : objects) {
@@ -134,11 +167,21 @@ public final class ClearanceChecker {
         return Pose.fromQuaternion(d.qw(), d.qx(), d.qy(), d.qz(), d.position().x(), d.position().y(), d.position().z());
     }
 
-    /** Shapes of the robot at q: capsule k joins joint origin k and k+1 (last: the flange); then the tool. */
+    /**
+     * Shapes of the robot at q: capsule k moves with link k (by default it joins joint origin k
+     * and k+1, the last one the flange); then the tool.
+     */
     Convex[] robot(double[] q, Pose flangeTtcp) {
         Pose[] f = model.linkFrames(q);
         Convex[] out = new Convex[f.length];
-        for (int k = 0; k + 1 < f.length; k++) out[k] = new Convex.Capsule(f[k].position(), f[k + 1].position(), opt.linkRadiusM());
+        for (int k = 0; k + 1 < f.length; k++) {
+            if (opt.linkCapsules().isEmpty()) out[k] = new Convex.Capsule(f[k].position(), f[k + 1].position(), opt.linkRadiusM());
+            else {
+                Convex.Capsule c = opt.linkCapsules().get(k);
+                Pose move = f[k].times(zeroInverse[k]);
+                out[k] = new Convex.Capsule(move.apply(c.a()), move.apply(c.b()), c.radius());
+            }
+        }
         Pose flange = f[f.length - 1];
         out[f.length - 1] = new Convex.Capsule(flange.position(), flange.times(flangeTtcp).position(), opt.toolRadiusM());
         return out;

@@ -1,6 +1,7 @@
 package org.robopro.programs.compensation;
 
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -19,6 +20,9 @@ import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.Statement;
 import org.robopro.programs.Teach;
+import org.robopro.programs.RapidWriter;
+import org.robopro.programs.rapid.ParsedAst;
+import org.robopro.programs.rapid.RapidAst;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
@@ -61,7 +65,11 @@ public final class ProgramCompensation {
     /** Compensates every robtarget of {@code module} run from procedure {@code entry}. */
     public static Outcome compensate(RapidModule module, String entry, KinematicModel nominal, TargetCompensator compensator) {
         InverseKinematics ik = InverseKinematics.of(nominal);
-        List<MoveStep> steps = MotionInterpreter.of(module).moves(entry);
+        // The program as the interpreter runs it; item k of the tree is item k of the module, and
+        // statement j of a typed procedure is statement j of its routine (RapidWriter maps them 1:1).
+        RapidAst.Module tree = RapidWriter.exactTree(module);
+        MotionInterpreter interpreter = MotionInterpreter.of(ParsedAst.of(tree, module.name()));
+        List<MoveStep> steps = interpreter.moves(entry);
         Map<String, RobTarget> replaced = new LinkedHashMap<>();
         List<Correction> corrections = new ArrayList<>();
         // Each named robtarget is compensated once, at its first use: as a Move's to-point or as a
@@ -80,15 +88,31 @@ public final class ProgramCompensation {
             if (d == null || !(d.value() instanceof RobTarget t)) continue;
             replaced.put(key, compensateOne(d.name(), t, e.getValue(), ik, compensator, corrections));
         }
-        reportUnrewritten(module, steps, corrections);
+        // Inline targets robopro can rewrite: those of a typed Move statement (a procedure's own statement).
+        Map<RapidAst.Stmt, Move> rewritable = new IdentityHashMap<>();
+        for (int i = 0; i < module.items().size(); i++)
+            if (module.items().get(i) instanceof Procedure p)
+                for (int k = 0; k < p.body().size(); k++)
+                    if (p.body().get(k) instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && hasInline(m))
+                        rewritable.put(((RapidAst.Routine) tree.items().get(i)).body().get(k), m);
+        reportUnrewritten(module, steps, rewritable, corrections);
+        // Where each rewritable statement first ran; a procedure not run from the entry is run on its own.
+        Map<RapidAst.Stmt, MoveStep> firstRun = new IdentityHashMap<>();
+        for (MoveStep s : steps) s.statement().ifPresent(st -> firstRun.putIfAbsent(st, s));
         List<ModuleItem> items = new ArrayList<>();
-        for (ModuleItem it : module.items()) {
+        for (int i = 0; i < module.items().size(); i++) {
+            ModuleItem it = module.items().get(i);
             if (it instanceof Declaration d && replaced.containsKey(d.name().toLowerCase(Locale.ROOT)))
                 items.add(d.withValue(replaced.get(d.name().toLowerCase(Locale.ROOT))));
-            else if (it instanceof Procedure p) items.add(inlineCompensated(module, p, nominal, ik, compensator, corrections));
+            else if (it instanceof Procedure p)
+                items.add(inlineCompensated(p, (RapidAst.Routine) tree.items().get(i), firstRun, interpreter, ik, compensator, corrections));
             else items.add(it);
         }
         return new Outcome(module.withItems(items), corrections);
+    }
+
+    private static boolean hasInline(Move m) {
+        return m.toPoint() instanceof Ref.Inline<?> || m.circPoint().filter(c -> c instanceof Ref.Inline<?>).isPresent();
     }
 
     /**
@@ -96,7 +120,8 @@ public final class ProgramCompensation {
      * silently: a target computed by an expression ({@code Offs(p1, ...)}, {@code RelTool}) or
      * written inline in a statement inside a loop, branch or process instruction.
      */
-    private static void reportUnrewritten(RapidModule module, List<MoveStep> steps, List<Correction> corrections) {
+    private static void reportUnrewritten(RapidModule module, List<MoveStep> steps, Map<RapidAst.Stmt, Move> rewritable,
+                                          List<Correction> corrections) {
         java.util.Set<String> seen = new java.util.HashSet<>();
         for (MoveStep s : steps) {
             if (s.kind() == Move.Kind.MOVE_ABS_J) continue;
@@ -106,8 +131,7 @@ public final class ProgramCompensation {
                 String where = (s.context().isEmpty() ? "" : s.context() + " > ") + s.procedure() + "#" + (s.statementIndex() + 1)
                         + s.source().map(p -> " (line " + p.line() + ")").orElse("");
                 if (n.equals("*")) {
-                    boolean typed = s.context().isEmpty() && module.procedures().stream().anyMatch(p -> p.name().equalsIgnoreCase(s.procedure())
-                            && s.statementIndex() < p.body().size() && p.body().get(s.statementIndex()) instanceof Move);
+                    boolean typed = s.statement().filter(rewritable::containsKey).isPresent();
                     if (!typed && seen.add(where + " *"))
                         corrections.add(new Correction(where + " *", 0, 0, Double.NaN, Double.NaN, Optional.empty(),
                                 "inline target of " + s.instruction() + " in a loop, branch or process instruction (not rewritten: name it)"));
@@ -119,32 +143,39 @@ public final class ProgramCompensation {
         }
     }
 
-    private static Procedure inlineCompensated(RapidModule module, Procedure p, KinematicModel nominal, InverseKinematics ik,
-                                               TargetCompensator c, List<Correction> corrections) {
+    /** {@code p} with its inline robtargets compensated where each statement first ran ({@code routine}: p's syntax tree). */
+    private static Procedure inlineCompensated(Procedure p, RapidAst.Routine routine, Map<RapidAst.Stmt, MoveStep> firstRun,
+                                               MotionInterpreter interpreter, InverseKinematics ik, TargetCompensator c,
+                                               List<Correction> corrections) {
         List<Statement> body = new ArrayList<>();
         boolean changed = false;
         for (int k = 0; k < p.body().size(); k++) {
             Statement st = p.body().get(k);
-            boolean inlineTo = st instanceof Move m0 && m0.toPoint() instanceof Ref.Inline<?>;
-            boolean inlineCirc = st instanceof Move m1 && m1.circPoint().isPresent() && m1.circPoint().get() instanceof Ref.Inline<?>;
-            if (st instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && (inlineTo || inlineCirc)) {
-                // Resolve the single instruction in context to get its base poses.
-                RapidModule one = RapidModule.builder("one").procedure("one", List.of(m)).build();
-                MoveStep s = MotionInterpreter.of(one, module).moves("one").get(0);
-                Move out = m;
-                if (inlineTo) {
-                    RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " *", (RobTarget) ((Ref.Inline<?>) m.toPoint()).value(),
-                            Use.to(s), ik, c, corrections);
-                    out = out.withToPoint(Ref.inline(t));
-                }
-                if (inlineCirc) {
-                    RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " circle *",
-                            (RobTarget) ((Ref.Inline<?>) m.circPoint().get()).value(), Use.circ(s), ik, c, corrections);
-                    out = out.withCircPoint(Ref.inline(t));
-                }
-                body.add(out);
-                changed = true;
-            } else body.add(st);
+            if (!(st instanceof Move m) || m.kind() == Move.Kind.MOVE_ABS_J || !hasInline(m)) {
+                body.add(st);
+                continue;
+            }
+            RapidAst.Stmt node = routine.body().get(k);
+            if (!firstRun.containsKey(node))
+                for (MoveStep s : interpreter.moves(p.name())) s.statement().ifPresent(n -> firstRun.putIfAbsent(n, s));
+            MoveStep s = firstRun.get(node);
+            if (s == null) { // skipped by a RETURN or GOTO before it: nothing tells where it would move
+                corrections.add(new Correction(p.name() + "#" + (k + 1) + " *", 0, 0, Double.NaN, Double.NaN, Optional.empty(),
+                        "inline target of a statement that never runs"));
+                body.add(st);
+                continue;
+            }
+            Move out = m;
+            if (m.toPoint() instanceof Ref.Inline<?> to) {
+                RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " *", (RobTarget) to.value(), Use.to(s), ik, c, corrections);
+                out = out.withToPoint(Ref.inline(t));
+            }
+            if (m.circPoint().isPresent() && m.circPoint().get() instanceof Ref.Inline<?> via) {
+                RobTarget t = compensateOne(p.name() + "#" + (k + 1) + " circle *", (RobTarget) via.value(), Use.circ(s), ik, c, corrections);
+                out = out.withCircPoint(Ref.inline(t));
+            }
+            body.add(out);
+            changed = true;
         }
         return changed ? p.withBody(body) : p;
     }

@@ -1,13 +1,12 @@
 package org.robopro.programs.project;
 
+import org.robopro.programs.rapid.RapidAst;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -23,7 +22,6 @@ import java.util.Map;
 import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Units;
-import org.robopro.models.AtomicFiles;
 import org.robopro.models.InputException;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
@@ -51,14 +49,17 @@ import org.robopro.programs.WaitTime;
 import org.robopro.programs.ZoneData;
 
 /**
- * A program project file ("robopro-program 1", JSON, docs/programs.md): module name, robot,
- * tools, work objects, speeds, zones, targets (typed poses or taught joint values) and
- * procedures. Units at this edge are mm and degrees, as in RAPID. {@link #parse} reads one
- * (errors name file, line, column and field); {@link #format}/{@link #write} write a module
- * back (numbers chosen so that reading them gives the very same doubles), so
- * {@code parse(format(parse(f)))} equals {@code parse(f)}.
+ * Reads program files of the former "robopro-program" format (JSON, docs/programs.md): module
+ * name, robot, tools, work objects, speeds, zones, targets (typed poses or taught joint values)
+ * and procedures, mm and degrees at this edge. Nothing writes this format any more: the one
+ * project format is the workbench's "robopro-project", which opens these files migrated, and
+ * {@code robopro program export} still turns them into RAPID. Errors name file, line, column and
+ * field.
  */
 public final class ProgramProject {
+    /** The value of the file's "format" field. */
+    public static final String FORMAT = "robopro-program";
+
     private ProgramProject() { }
 
     public static RapidModule read(Path file) {
@@ -191,7 +192,7 @@ public final class ProgramProject {
                 }
                 ToolData td = new ToolData(bool(t, "robhold", f, true), pose(t.path("tframe"), f + ".tframe"), ld);
                 tools.put(e.getKey(), td);
-                b.declare(declaration(t, f, Declaration.Storage.PERS, e.getKey(), td));
+                b.declare(declaration(t, f, RapidAst.Storage.PERS, e.getKey(), td));
             }
             for (var e : fields(root, "wobjs")) {
                 JsonNode w = e.getValue();
@@ -199,14 +200,14 @@ public final class ProgramProject {
                 WObjData wd = new WObjData(bool(w, "robhold", f, false), bool(w, "ufprog", f, true), optText(w, "ufmec", f, ""),
                         pose(w.path("uframe"), f + ".uframe"), w.has("oframe") ? pose(w.path("oframe"), f + ".oframe") : RapidPose.IDENTITY);
                 wobjs.put(e.getKey(), wd);
-                b.declare(declaration(w, f, Declaration.Storage.PERS, e.getKey(), wd));
+                b.declare(declaration(w, f, RapidAst.Storage.PERS, e.getKey(), wd));
             }
             for (var e : fields(root, "speeds")) {
                 JsonNode sp = e.getValue();
                 String f = "speeds." + e.getKey();
                 SpeedData sd = wrap(f, () -> SpeedData.ofRapid(num(sp, "tcp_mm_s", f), optNum(sp, "ori_deg_s", f, 500),
                         optNum(sp, "leax_mm_s", f, 5000), optNum(sp, "reax_deg_s", f, 1000)));
-                b.declare(declaration(sp, f, Declaration.Storage.VAR, e.getKey(), sd));
+                b.declare(declaration(sp, f, RapidAst.Storage.VAR, e.getKey(), sd));
             }
             for (var e : fields(root, "zones")) {
                 JsonNode z = e.getValue();
@@ -216,13 +217,13 @@ public final class ProgramProject {
                 ZoneData zd = wrap(f, () -> ZoneData.ofRapid(bool(z, "finep", f, false), r, optNum(z, "ori_mm", f, 1.5 * r),
                         optNum(z, "eax_mm", f, 1.5 * r), optNum(z, "ori_deg", f, 0.15 * r), optNum(z, "leax_mm", f, 1.5 * r),
                         optNum(z, "reax_deg", f, 0.15 * r)));
-                b.declare(declaration(z, f, Declaration.Storage.VAR, e.getKey(), zd));
+                b.declare(declaration(z, f, RapidAst.Storage.VAR, e.getKey(), zd));
             }
             for (var e : fields(root, "jointtargets")) {
                 JsonNode j = e.getValue();
                 String f = "jointtargets." + e.getKey();
                 JointTarget jt = JointTarget.of(Units.degToRad(array(j.path("joints_deg"), 6, f + ".joints_deg")), extax(j, f));
-                b.declare(declaration(j, f, Declaration.Storage.CONST, e.getKey(), jt));
+                b.declare(declaration(j, f, RapidAst.Storage.CONST, e.getKey(), jt));
             }
             for (var e : fields(root, "targets")) {
                 JsonNode t = e.getValue();
@@ -241,7 +242,7 @@ public final class ProgramProject {
                         if (cf[k] != Math.rint(cf[k]) || Math.abs(cf[k]) > 1e6) throw bad(f + ".conf[" + k + "]", "expected an integer");
                     rt = new RobTarget(p.trans(), p.rot(), new ConfData((int) cf[0], (int) cf[1], (int) cf[2], (int) cf[3]), extax(t, f));
                 }
-                b.declare(declaration(t, f, Declaration.Storage.CONST, e.getKey(), rt));
+                b.declare(declaration(t, f, RapidAst.Storage.CONST, e.getKey(), rt));
             }
             for (var e : fields(root, "data")) {
                 JsonNode d = e.getValue();
@@ -253,7 +254,7 @@ public final class ProgramProject {
                     if (!d.get("string").isTextual()) throw bad(f + ".string", "expected a string");
                     v = wrap(f + ".string", () -> new RapidValue.Str(d.get("string").asText()));
                 } else throw bad(f, "expected \"num\", \"bool\" or \"string\"");
-                b.declare(declaration(d, f, Declaration.Storage.CONST, e.getKey(), v));
+                b.declare(declaration(d, f, RapidAst.Storage.CONST, e.getKey(), v));
             }
             List<Procedure> procs = new ArrayList<>();
             for (var e : fields(root, "procedures")) {
@@ -271,21 +272,21 @@ public final class ProgramProject {
         }
 
         /** A declaration with the entry's optional "storage" (CONST, PERS, VAR) and "scope" (LOCAL, TASK). */
-        Declaration declaration(JsonNode n, String f, Declaration.Storage usual, String name, RapidValue v) {
-            Declaration.Storage st = usual;
-            Declaration.Scope sc = Declaration.Scope.GLOBAL;
+        Declaration declaration(JsonNode n, String f, RapidAst.Storage usual, String name, RapidValue v) {
+            RapidAst.Storage st = usual;
+            RapidAst.Scope sc = RapidAst.Scope.GLOBAL;
             try {
-                if (n.has("storage")) st = Declaration.Storage.valueOf(optText(n, "storage", f, ""));
+                if (n.has("storage")) st = RapidAst.Storage.valueOf(optText(n, "storage", f, ""));
             } catch (IllegalArgumentException e) {
                 throw bad(f + ".storage", "expected CONST, PERS or VAR");
             }
             try {
-                if (n.has("scope")) sc = Declaration.Scope.valueOf(optText(n, "scope", f, ""));
+                if (n.has("scope")) sc = RapidAst.Scope.valueOf(optText(n, "scope", f, ""));
             } catch (IllegalArgumentException e) {
                 throw bad(f + ".scope", "expected LOCAL or TASK");
             }
-            Declaration.Storage storage = st;
-            Declaration.Scope scope = sc;
+            RapidAst.Storage storage = st;
+            RapidAst.Scope scope = sc;
             return wrap(f, () -> new Declaration(scope, storage, name, v));
         }
 
@@ -411,220 +412,5 @@ public final class ProgramProject {
             }
             return () -> n.fields();
         }
-    }
-
-    // ------------------------------------------------------------------ writing
-
-    /**
-     * Writes {@code module} as a project file to {@code file} atomically (temporary file, then
-     * rename); an existing file is replaced only when {@code overwrite} is true (otherwise
-     * {@link java.nio.file.FileAlreadyExistsException}). {@code robot} (may be null) names the
-     * robot the program is for.
-     *
-     * @throws IllegalArgumentException when the module holds what a project cannot (see {@link #format})
-     */
-    public static void write(RapidModule module, String robot, Path file, boolean overwrite) throws IOException {
-        String text = format(module, robot); // before touching the file: nothing half-written
-        AtomicFiles.writeString(file, text, overwrite);
-    }
-
-    /**
-     * The project file text of {@code module}. Declarations are grouped by kind (tools, wobjs,
-     * speeds, zones, jointtargets, targets, data: num/bool/string), module comment lines come first; a storage or scope
-     * other than the kind's usual one is written out. Targets are written as poses (a taught
-     * target's joint values are not kept by the module). What a project cannot hold (routines
-     * with parameters, syntax-tree items, loaddata and pose data, inline targets, module options) is
-     * refused with an IllegalArgumentException naming the item: export RAPID instead.
-     */
-    public static String format(RapidModule module, String robot) {
-        JsonNodeFactory nf = JsonNodeFactory.instance;
-        ObjectNode root = nf.objectNode();
-        root.put("format", "robopro-program");
-        root.put("version", 1);
-        root.put("module", module.name());
-        if (robot != null) root.put("robot", robot);
-        if (!module.options().isEmpty()) throw cannot(module, "module options " + module.options());
-        ArrayNode comments = nf.arrayNode();
-        Map<String, ObjectNode> groups = new LinkedHashMap<>();
-        for (String g : List.of("tools", "wobjs", "speeds", "zones", "jointtargets", "targets", "data")) groups.put(g, nf.objectNode());
-        ObjectNode procs = nf.objectNode();
-        for (ModuleItem it : module.items()) {
-            if (it instanceof Comment c) {
-                comments.add(c.text());
-            } else if (it instanceof Declaration d) {
-                String group;
-                ObjectNode e = nf.objectNode();
-                Declaration.Storage usual;
-                RapidValue val = d.value();
-                if (val instanceof ToolData t) {
-                    group = "tools";
-                    usual = Declaration.Storage.PERS;
-                    if (!t.robhold()) e.put("robhold", false);
-                    e.set("tframe", pose(t.tframe()));
-                    if (!t.tload().equals(LoadData.LOAD0)) {
-                        ObjectNode l = e.putObject("load");
-                        l.put("mass_kg", t.tload().mass());
-                        l.set("cog_mm", mm(t.tload().cog()));
-                        if (!t.tload().aom().equals(Quaternion.IDENTITY)) l.set("aom", quat(t.tload().aom()));
-                        if (t.tload().ix() != 0 || t.tload().iy() != 0 || t.tload().iz() != 0)
-                            l.set("inertia_kgm2", nf.arrayNode().add(t.tload().ix()).add(t.tload().iy()).add(t.tload().iz()));
-                    }
-                } else if (val instanceof WObjData w) {
-                    group = "wobjs";
-                    usual = Declaration.Storage.PERS;
-                    if (w.robhold()) e.put("robhold", true);
-                    if (!w.ufprog()) e.put("ufprog", false);
-                    if (!w.ufmec().isEmpty()) e.put("ufmec", w.ufmec());
-                    e.set("uframe", pose(w.uframe()));
-                    if (!w.oframe().equals(RapidPose.IDENTITY)) e.set("oframe", pose(w.oframe()));
-                } else if (val instanceof SpeedData sp) {
-                    group = "speeds";
-                    usual = Declaration.Storage.VAR;
-                    number(e, "tcp_mm_s", mmFor(sp.vTcp()));
-                    double ori = degFor(sp.vOri()), leax = mmFor(sp.vLeax()), reax = degFor(sp.vReax());
-                    if (Units.degToRad(500.0) != sp.vOri()) number(e, "ori_deg_s", ori);
-                    if (Units.mmToM(5000.0) != sp.vLeax()) number(e, "leax_mm_s", leax);
-                    if (Units.degToRad(1000.0) != sp.vReax()) number(e, "reax_deg_s", reax);
-                } else if (val instanceof ZoneData z) {
-                    group = "zones";
-                    usual = Declaration.Storage.VAR;
-                    double r = mmFor(z.pzoneTcp());
-                    number(e, "tcp_mm", r);
-                    if (z.finep()) e.put("finep", true);
-                    if (Units.mmToM(1.5 * r) != z.pzoneOri()) number(e, "ori_mm", mmFor(z.pzoneOri()));
-                    if (Units.mmToM(1.5 * r) != z.pzoneEax()) number(e, "eax_mm", mmFor(z.pzoneEax()));
-                    if (Units.degToRad(0.15 * r) != z.zoneOri()) number(e, "ori_deg", degFor(z.zoneOri()));
-                    if (Units.mmToM(1.5 * r) != z.zoneLeax()) number(e, "leax_mm", mmFor(z.zoneLeax()));
-                    if (Units.degToRad(0.15 * r) != z.zoneReax()) number(e, "reax_deg", degFor(z.zoneReax()));
-                } else if (val instanceof JointTarget j) {
-                    group = "jointtargets";
-                    usual = Declaration.Storage.CONST;
-                    ArrayNode a = e.putArray("joints_deg");
-                    for (double q : j.robax()) a.add(plain(degFor(q)));
-                    if (!j.extax().equals(ExtJoints.NONE)) e.set("extax", numbers(j.extax().values()));
-                } else if (val instanceof RobTarget t) {
-                    group = "targets";
-                    usual = Declaration.Storage.CONST;
-                    e.set("pos_mm", mm(t.trans()));
-                    e.set("quat", quat(t.rot()));
-                    ConfData c = t.robconf();
-                    e.set("conf", nf.arrayNode().add(c.cf1()).add(c.cf4()).add(c.cf6()).add(c.cfx()));
-                    if (!t.extax().equals(ExtJoints.NONE)) e.set("extax", numbers(t.extax().values()));
-                } else if (val instanceof RapidValue.Num n) {
-                    group = "data";
-                    usual = Declaration.Storage.CONST;
-                    number(e, "num", n.value());
-                } else if (val instanceof RapidValue.Bool bo) {
-                    group = "data";
-                    usual = Declaration.Storage.CONST;
-                    e.put("bool", bo.value());
-                } else if (val instanceof RapidValue.Str str) {
-                    group = "data";
-                    usual = Declaration.Storage.CONST;
-                    e.put("string", str.value());
-                } else {
-                    throw cannot(module, d.rapidType() + " " + d.name() + " (a project holds tooldata, wobjdata, speeddata, zonedata, jointtarget, robtarget, num, bool, string)");
-                }
-                if (d.storage() != usual) e.put("storage", d.storage().name());
-                if (d.scope() != Declaration.Scope.GLOBAL) e.put("scope", d.scope().name());
-                if (groups.get(group).has(d.name())) throw cannot(module, "two " + group + " named " + d.name());
-                groups.get(group).set(d.name(), e);
-            } else if (it instanceof Procedure p) {
-                if (p.local()) throw cannot(module, "LOCAL PROC " + p.name());
-                ArrayNode body = nf.arrayNode();
-                for (Statement st : p.body()) body.add(statement(module, p, st));
-                procs.set(p.name(), body);
-            } else {
-                throw cannot(module, "a " + it.getClass().getSimpleName() + " (RAPID a project does not model)");
-            }
-        }
-        if (!comments.isEmpty()) root.set("comments", comments);
-        groups.forEach((g, o) -> { if (!o.isEmpty()) root.set(g, o); });
-        if (!procs.isEmpty()) root.set("procedures", procs);
-        try {
-            return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root) + "\n";
-        } catch (JsonProcessingException e) {
-            throw new IllegalStateException("cannot write JSON", e);
-        }
-    }
-
-    private static ObjectNode statement(RapidModule module, Procedure p, Statement st) {
-        ObjectNode o = JsonNodeFactory.instance.objectNode();
-        if (st instanceof Comment c) {
-            o.put("comment", c.text());
-        } else if (st instanceof ProcCall c) {
-            o.put("call", c.procedure());
-        } else if (st instanceof WaitTime w) {
-            o.put("wait_s", w.seconds());
-        } else if (st instanceof Move m) {
-            o.put("move", m.kind().rapidName());
-            if (m.circPoint().isPresent()) o.put("via", name(module, p, m.circPoint().get()));
-            o.put("to", name(module, p, m.toPoint()));
-            o.put("speed", name(module, p, m.speed()));
-            o.put("zone", name(module, p, m.zone()));
-            o.put("tool", m.tool());
-            m.wobj().ifPresent(w -> o.put("wobj", w));
-            if (m.conc()) o.put("conc", true);
-            if (m.noEOffs()) o.put("noeoffs", true);
-            if (m.v().isPresent()) number(o, "v_mm_s", mmFor(m.v().getAsDouble()));
-            if (m.t().isPresent()) o.put("t_s", m.t().getAsDouble());
-            if (m.z().isPresent()) number(o, "z_mm", mmFor(m.z().getAsDouble()));
-        } else {
-            throw cannot(module, "a " + st.getClass().getSimpleName() + " statement in PROC " + p.name());
-        }
-        return o;
-    }
-
-    private static String name(RapidModule module, Procedure p, Ref<?> r) {
-        if (r instanceof Ref.Named<?> n) return n.name();
-        throw cannot(module, "an inline (\"*\") target in PROC " + p.name() + " (name it first)");
-    }
-
-    private static IllegalArgumentException cannot(RapidModule m, String what) {
-        return new IllegalArgumentException("module " + m.name() + ": " + what + " cannot be written to a project file; export it as RAPID instead");
-    }
-
-    private static ObjectNode pose(RapidPose p) {
-        ObjectNode o = JsonNodeFactory.instance.objectNode();
-        o.set("pos_mm", mm(p.trans()));
-        if (!p.rot().equals(Quaternion.IDENTITY)) o.set("quat", quat(p.rot()));
-        return o;
-    }
-
-    private static ArrayNode mm(Vec3 v) { return numbers(mmFor(v.x()), mmFor(v.y()), mmFor(v.z())); }
-
-    private static ArrayNode quat(Quaternion q) { return numbers(q.q1(), q.q2(), q.q3(), q.q4()); }
-
-    private static ArrayNode numbers(double... v) {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode();
-        for (double d : v) a.add(plain(d));
-        return a;
-    }
-
-    private static void number(ObjectNode o, String k, double v) { o.set(k, plain(v)); }
-
-    /** Integral values as integers (50, not 50.0); others as the shortest decimal of the double. */
-    private static JsonNode plain(double v) {
-        if (v == Math.rint(v) && Math.abs(v) < 1e15 && !(v == 0 && 1 / v < 0)) return JsonNodeFactory.instance.numberNode((long) v);
-        return JsonNodeFactory.instance.numberNode(v);
-    }
-
-    /** The millimetre value that reads back (mm * 1e-3) as exactly {@code m}, when there is one near m * 1e3. */
-    static double mmFor(double m) { return inverse(m, Units.mToMm(m), Units::mmToM); }
-
-    /** The degree value that reads back (Math.toRadians) as exactly {@code rad}, when there is one near. */
-    static double degFor(double rad) { return inverse(rad, Units.radToDeg(rad), Units::degToRad); }
-
-    /** Searches a few ulps around {@code guess} for x with f(x) == target; the guess when none. */
-    private static double inverse(double target, double guess, java.util.function.DoubleUnaryOperator f) {
-        if (f.applyAsDouble(guess) == target) return guess;
-        double up = guess, down = guess;
-        for (int k = 0; k < 8; k++) {
-            up = Math.nextUp(up);
-            down = Math.nextDown(down);
-            if (f.applyAsDouble(up) == target) return up;
-            if (f.applyAsDouble(down) == target) return down;
-        }
-        return guess;
     }
 }

@@ -16,6 +16,9 @@ public final class ParsedAst {
         this.positions = new IdentityHashMap<>(positions);
     }
 
+    /** A tree built in code: no positions; {@code file} names it in messages. */
+    public static ParsedAst of(RapidAst.Module module, String file) { return new ParsedAst(module, file, new IdentityHashMap<>()); }
+
     public RapidAst.Module module() { return module; }
 
     public String file() { return file; }

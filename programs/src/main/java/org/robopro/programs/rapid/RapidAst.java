@@ -3,7 +3,6 @@ package org.robopro.programs.rapid;
 import java.math.BigInteger;
 import java.util.List;
 import java.util.Locale;
-import org.robopro.programs.Declaration;
 
 /**
  * The syntax tree of a RAPID module as written (ABB RAPID kernel grammar): every declaration,
@@ -14,6 +13,12 @@ import org.robopro.programs.Declaration;
  */
 public final class RapidAst {
     private RapidAst() { }
+
+    /** Where data is visible: everywhere (no keyword), in its module ({@code LOCAL}) or its task ({@code TASK}). */
+    public enum Scope { GLOBAL, LOCAL, TASK }
+
+    /** How data is kept: a constant, a persistent (its value written back to the module) or a variable. */
+    public enum Storage { CONST, PERS, VAR }
 
     /** {@code MODULE name[(options)] items ENDMODULE}. */
     public record Module(String name, List<String> options, List<Item> items) {
@@ -45,7 +50,7 @@ public final class RapidAst {
      * {@code [LOCAL|TASK] VAR|PERS|CONST type name[{dims}] [:= init];}: module data, or routine data
      * (then scope is GLOBAL). {@code init} is null when none is written (the type's zero value).
      */
-    public record DataDecl(Declaration.Scope scope, Declaration.Storage storage, String type, String name, List<Expr> dims,
+    public record DataDecl(RapidAst.Scope scope, RapidAst.Storage storage, String type, String name, List<Expr> dims,
                            Expr init) implements Item, Stmt {
         public DataDecl {
             if (scope == null || storage == null || type == null || name == null) throw new IllegalArgumentException("declaration fields must not be null");
@@ -235,7 +240,23 @@ public final class RapidAst {
     }
 
     /** A string literal; {@code raw} is the text between the quotes as written (escapes unresolved). */
-    public record Str(String raw) implements Expr { }
+    public record Str(String raw) implements Expr {
+        /**
+         * The literal of {@code value}: backslashes doubled, the quote and control characters as a
+         * backslash and two hex digits (RAPID also allows a doubled quote, but rapidchecker 0.1.5
+         * rejects it; backslash 22 is the same character and passes both).
+         */
+        public static Str of(String value) {
+            StringBuilder b = new StringBuilder();
+            for (char c : value.toCharArray()) {
+                if (c == '"') b.append("\\22");
+                else if (c == '\\') b.append("\\\\");
+                else if (c < ' ' || c > '~') b.append(String.format("\\%02X", (int) (c & 0xFF)));
+                else b.append(c);
+            }
+            return new Str(b.toString());
+        }
+    }
 
     public record Bool(boolean value) implements Expr { }
 

@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import org.robopro.models.InputException;
-import org.robopro.programs.Declaration;
 import org.robopro.programs.rapid.RapidAst.Arg;
 import org.robopro.programs.rapid.RapidAst.ArgKind;
 import org.robopro.programs.rapid.RapidAst.Expr;
@@ -19,7 +18,7 @@ import org.robopro.programs.rapid.RapidAst.Stmt;
  * does not know is an {@link InputException} with file, line and column. Comments are kept as
  * comment lines: one written inside a statement follows that statement.
  */
-final class RapidAstParser {
+public final class RapidAstParser {
     private final String file;
     private final List<Token> toks;
     private int i;
@@ -45,7 +44,14 @@ final class RapidAstParser {
         this.toks = new RapidLexer(blankHeader(text), file).tokens();
     }
 
-    static ParsedAst parse(String text, String file) {
+    /**
+     * The syntax tree of RAPID module text (the whole kernel grammar; nothing is interpreted),
+     * with where each node was written; {@code file} names the text in error messages
+     * ({@link org.robopro.models.InputException}: file, line, column).
+     */
+    public static ParsedAst parse(String text, String file) {
+        if (text == null) throw new IllegalArgumentException("text must not be null");
+        if (file == null) file = "<rapid>";
         RapidAstParser p = new RapidAstParser(text, file);
         RapidAst.Module m = p.module();
         return new ParsedAst(m, file, p.positions);
@@ -142,13 +148,13 @@ final class RapidAstParser {
 
     private RapidAst.DataDecl dataDecl(boolean moduleLevel) {
         Token start = peek();
-        Declaration.Scope scope = Declaration.Scope.GLOBAL;
+        RapidAst.Scope scope = RapidAst.Scope.GLOBAL;
         if (peek().isWord("LOCAL") || peek().isWord("TASK")) {
             if (!moduleLevel) throw error(peek(), null, peek().text().toUpperCase(Locale.ROOT) + " is only allowed for module data");
-            scope = next().isWord("LOCAL") ? Declaration.Scope.LOCAL : Declaration.Scope.TASK;
+            scope = next().isWord("LOCAL") ? RapidAst.Scope.LOCAL : RapidAst.Scope.TASK;
         }
         Token st = next();
-        Declaration.Storage storage = Declaration.Storage.valueOf(st.text().toUpperCase(Locale.ROOT));
+        RapidAst.Storage storage = RapidAst.Storage.valueOf(st.text().toUpperCase(Locale.ROOT));
         String type = ident("data type");
         Token nameTok = peek();
         String name = ident("data name");
@@ -160,7 +166,7 @@ final class RapidAstParser {
         }
         Expr init = null;
         if (accept(":=")) init = expr();
-        else if (storage == Declaration.Storage.CONST) throw error(nameTok, name, "CONST needs a value (':=')");
+        else if (storage == RapidAst.Storage.CONST) throw error(nameTok, name, "CONST needs a value (':=')");
         expect(";");
         return at(new RapidAst.DataDecl(scope, storage, type, name, dims, init), start);
     }

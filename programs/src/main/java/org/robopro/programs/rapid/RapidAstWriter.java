@@ -2,7 +2,6 @@ package org.robopro.programs.rapid;
 
 import java.util.List;
 import java.util.Set;
-import org.robopro.programs.Declaration;
 import org.robopro.programs.rapid.RapidAst.Arg;
 import org.robopro.programs.rapid.RapidAst.Binary;
 import org.robopro.programs.rapid.RapidAst.Expr;
@@ -49,8 +48,8 @@ public final class RapidAstWriter {
 
     static String decl(RapidAst.DataDecl d) {
         StringBuilder b = new StringBuilder();
-        if (d.scope() == Declaration.Scope.LOCAL) b.append("LOCAL ");
-        if (d.scope() == Declaration.Scope.TASK) b.append("TASK ");
+        if (d.scope() == RapidAst.Scope.LOCAL) b.append("LOCAL ");
+        if (d.scope() == RapidAst.Scope.TASK) b.append("TASK ");
         b.append(d.storage().name()).append(' ').append(d.type()).append(' ').append(d.name());
         if (!d.dims().isEmpty()) b.append('{').append(list(d.dims())).append('}');
         if (d.init() != null) b.append(":=").append(expr(d.init()));

@@ -2,7 +2,6 @@ package org.robopro.programs.rapid;
 
 import java.math.BigDecimal;
 import java.math.RoundingMode;
-import org.robopro.programs.ExtJoints;
 
 /**
  * How robopro writes RAPID numbers. A value is first rounded to the file's precision (a fixed
@@ -15,10 +14,13 @@ import org.robopro.programs.ExtJoints;
 public final class RapidNumbers {
     private RapidNumbers() { }
 
+    /** RAPID's value of an unused external axis (9E9), written "9E+09" as RobotStudio does. */
+    public static final double UNUSED_AXIS = 9E9;
+
     /** The text of {@code value} rounded to {@code decimals} decimals; 9E9 (unused external axis) as 9E+09. */
     public static String format(double value, int decimals) {
         if (!Double.isFinite(value)) throw new IllegalArgumentException("RAPID has no " + value);
-        if (value == ExtJoints.UNUSED) return "9E+09";
+        if (value == UNUSED_AXIS) return "9E+09";
         // Reading converts units (mm -> m) and writing back (m -> mm) moves a value by a few ulps;
         // the rounding step must stay far above that, or a huge value (1e10 mm) would not write
         // back to the same text. So at most 14 significant digits (a no-op below 1e8).
@@ -34,7 +36,7 @@ public final class RapidNumbers {
     public static String formatExact(double value) {
         if (!Double.isFinite(value)) throw new IllegalArgumentException("RAPID has no " + value);
         if (value == 0) return "0";
-        if (value == ExtJoints.UNUSED) return "9E+09";
+        if (value == UNUSED_AXIS) return "9E+09";
         BigDecimal shortest = shortest(value);
         double a = Math.abs(value);
         if (a >= 1e-6 && a < 1e15) return shortest.toPlainString();

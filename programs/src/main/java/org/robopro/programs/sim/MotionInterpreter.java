@@ -12,7 +12,6 @@ import org.robopro.kinematics.Pose;
 import org.robopro.kinematics.Units;
 import org.robopro.models.InputException;
 import org.robopro.models.SignalDescription;
-import org.robopro.programs.Declaration;
 import org.robopro.programs.JointTarget;
 import org.robopro.programs.Move;
 import org.robopro.programs.RapidModule;
@@ -23,10 +22,10 @@ import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
 import org.robopro.programs.ZoneData;
 import org.robopro.programs.rapid.ParsedAst;
-import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.ParsedModule;
 import org.robopro.programs.rapid.RapidAst;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 import org.robopro.programs.rapid.SourcePos;
 import org.robopro.programs.sim.Values.Arr;
 import org.robopro.programs.sim.Values.Opaque;
@@ -313,7 +312,7 @@ public final class MotionInterpreter {
             for (RapidAst.Expr e : d.dims()) dims.add(index(eval(e, f), e));
             if (d.init() != null) v = coerce(eval(d.init(), f), type, dims, d.init());
             else v = zero(type, dims, 0);
-            return new Var(type, v, d.storage() == Declaration.Storage.CONST);
+            return new Var(type, v, d.storage() == RapidAst.Storage.CONST);
         }
 
         Object zero(String type, List<Integer> dims, int k) {
@@ -959,7 +958,7 @@ public final class MotionInterpreter {
                 currentJoint = new Typed(jt);
                 return new MoveStep(proc, index, src, kind, toLabel, Optional.empty(), Optional.empty(), Optional.empty(),
                         Optional.empty(), Optional.empty(), Optional.empty(), Optional.of(jt.robax()), speed, t, zone,
-                        toolName, tool, wobjName, wobj, flangeTtcp, context(), instruction);
+                        toolName, tool, wobjName, wobj, flangeTtcp, context(), instruction, statementOf(at));
             }
             RobTarget to = typed(toV, "robtarget", RobTarget.class, at, toLabel);
             currentRob = new Typed(to);
@@ -973,7 +972,12 @@ public final class MotionInterpreter {
             }
             return new MoveStep(proc, index, src, kind, toLabel, circName, Optional.of(toPoses[0]), Optional.of(toPoses[1]),
                     circFlange, circTcp, Optional.of(to.robconf()), Optional.empty(), speed, t, zone, toolName, tool, wobjName, wobj,
-                    flangeTtcp, context(), instruction);
+                    flangeTtcp, context(), instruction, statementOf(at));
+        }
+
+        /** The statement a step ran: the syntax-tree node itself (absent for a statement of no tree). */
+        Optional<RapidAst.Stmt> statementOf(Object at) {
+            return at instanceof RapidAst.Stmt st ? Optional.of(st) : Optional.empty();
         }
 
         /**

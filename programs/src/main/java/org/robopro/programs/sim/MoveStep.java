@@ -9,6 +9,7 @@ import org.robopro.programs.SpeedData;
 import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
 import org.robopro.programs.ZoneData;
+import org.robopro.programs.rapid.RapidAst;
 import org.robopro.programs.rapid.SourcePos;
 
 /**
@@ -30,6 +31,9 @@ import org.robopro.programs.rapid.SourcePos;
  * @param flangeTtcp    the tool frame in the flange (for a robot-held tool)
  * @param context       call path and loop iteration ("main#4[i=2] > weld#3"), empty at the top level
  * @param instruction   the instruction as written (MoveL, ArcL, TriggL, ...); {@code kind} is its geometry
+ * @param statement     the statement that ran: the very node of the program's syntax tree (compare
+ *                      with {@code ==}; a statement run twice, in a loop or from two calls, gives two
+ *                      steps with the same node)
  */
 public record MoveStep(String procedure, int statementIndex, Optional<SourcePos> source, Move.Kind kind,
                        String targetName, Optional<String> circName,
@@ -37,7 +41,7 @@ public record MoveStep(String procedure, int statementIndex, Optional<SourcePos>
                        Optional<Pose> baseTflangeCirc, Optional<Pose> baseTtcpCirc,
                        Optional<ConfData> conf, Optional<double[]> q, SpeedData speed, OptionalDouble time,
                        ZoneData zone, String toolName, ToolData tool, String wobjName, WObjData wobj, Pose flangeTtcp,
-                       String context, String instruction)
+                       String context, String instruction, Optional<RapidAst.Stmt> statement)
         implements ProgramStep {
 
     @Override public Optional<double[]> q() { return q.map(double[]::clone); }

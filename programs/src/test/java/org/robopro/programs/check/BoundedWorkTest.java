@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.InputException;
 import org.robopro.models.RobotLibrary;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 import org.robopro.programs.sim.MotionInterpreter;
 
 /** Work bounded by the robot's reach and the input's size: far targets and deep expressions fail fast and located. */

@@ -14,7 +14,7 @@ import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotLibrary;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.Simulation;
 

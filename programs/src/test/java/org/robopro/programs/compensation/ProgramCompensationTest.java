@@ -24,8 +24,8 @@ import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 
@@ -125,5 +125,33 @@ class ProgramCompensationTest {
         assertTrue(not.get(0).target().startsWith("Offs(p1") && not.get(0).notCompensated().contains("main#2[i=1] > main#1"), not.toString());
         assertTrue(not.get(1).notCompensated().contains("inline target") && not.get(1).target().startsWith("main#3 > main#1"), not.toString());
         assertTrue(out.corrections().stream().anyMatch(c -> c.target().equals("p1") && c.ok()), out.corrections().toString());
+    }
+
+    @Test
+    void compensate_inlineTargetsOfCalledAndUncalledProcedures_rewrittenWhereTheyRun() {
+        KinematicModel nominal = KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        double[] p = nominal.parameterValues();
+        Random r = new Random(11);
+        for (int i = 0; i < p.length; i++) p[i] += r.nextGaussian() * 0.002;
+        KinematicModel real = nominal.withParameterValues(p);
+        String inline = "[[900,50,850],[0,0,1,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]]";
+        String text = "MODULE M\n"
+                + "  CONST robtarget p1:=[[900,0,900],[0,0,1,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]];\n"
+                + "  PROC main()\n    MoveJ p1, v1000, fine, tool0;\n    seam;\n  ENDPROC\n"
+                + "  PROC seam()\n    MoveL " + inline + ", v100, fine, tool0;\n  ENDPROC\n"
+                + "  PROC spare()\n    MoveL " + inline + ", v100, fine, tool0;\n  ENDPROC\n"
+                + "ENDMODULE\n";
+        ProgramCompensation.Outcome out = ProgramCompensation.compensate(RapidParser.parse(text, "M.mod"), "main", nominal,
+                new Compensator(nominal, real, Pose.IDENTITY, Pose.IDENTITY));
+        // Every target is compensated; none is listed as left alone (the called procedure's inline target is rewritten).
+        assertEquals(List.of("p1", "seam#1 *", "spare#1 *"), out.corrections().stream().map(ProgramCompensation.Correction::target).toList());
+        assertTrue(out.corrections().stream().allMatch(ProgramCompensation.Correction::ok), out.corrections().toString());
+        // The real robot reaches the intended inline pose when commanded the compensated one.
+        Pose wanted = MotionInterpreter.of(RapidParser.parse(text, "M.mod")).moves("seam").get(0).baseTtcp().orElseThrow();
+        MoveStep commanded = MotionInterpreter.of(out.module()).moves("seam").get(0);
+        double[] q = InverseKinematics.of(nominal).solveWithConf(commanded.baseTflange().orElseThrow(), commanded.conf().orElseThrow())
+                .orElseThrow().q();
+        assertTrue(commanded.baseTtcp().orElseThrow().distanceTo(wanted) > 1e-4, "the perturbation needs a visible correction");
+        assertEquals(0, real.flange(q).times(commanded.flangeTtcp()).distanceTo(wanted), 2e-6);
     }
 }

@@ -6,8 +6,8 @@ import org.robopro.models.InputException;
 import org.robopro.programs.RapidModule;
 
 /**
- * Fuzzes the program project reader: any text gives a module or an {@link InputException}; a
- * module that was read writes and reads back as the same module.
+ * Fuzzes the reader of former "robopro-program" files: any text gives a module or an
+ * {@link InputException} (file, line, column, field), never another exception.
  */
 class ProgramProjectFuzzTest {
     @FuzzTest(maxDuration = "10s")
@@ -19,13 +19,6 @@ class ProgramProjectFuzzTest {
         } catch (InputException expected) {
             return;
         }
-        String once;
-        try {
-            once = ProgramProject.format(m, null);
-        } catch (IllegalArgumentException cannot) {
-            return; // not expected from a module read from a project, but not a reader failure either
-        }
-        RapidModule back = ProgramProject.parse(once, "again.json");
-        if (!back.equals(m)) throw new AssertionError("project round trip changed the module:\n" + once);
+        if (m.name().isEmpty()) throw new AssertionError("a module without a name");
     }
 }

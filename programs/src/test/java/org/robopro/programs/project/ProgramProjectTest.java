@@ -1,30 +1,23 @@
 package org.robopro.programs.project;
 
+import org.robopro.programs.rapid.RapidAst;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.IOException;
-import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.robopro.models.InputException;
-import org.robopro.programs.Declaration;
-import org.robopro.programs.ModuleItem;
 import org.robopro.programs.Move;
-import org.robopro.programs.Procedure;
-import org.robopro.programs.ProgramSamples;
 import org.robopro.programs.RapidModule;
-import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.SameMeaning;
 import org.robopro.programs.Statement;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
+import org.robopro.programs.JointTarget;
+import org.robopro.programs.SpeedData;
+import org.robopro.programs.ZoneData;
 
 class ProgramProjectTest {
 
@@ -47,65 +40,36 @@ class ProgramProjectTest {
             "");
 
     @Test
-    void formatParse_documentedFeatures_sameModuleAndStableText() {
-        RapidModule a = ProgramProject.parse(PROJECT, "demo.json");
-        String text = ProgramProject.format(a, null);
-        RapidModule b = ProgramProject.parse(text, "again.json");
-        assertEquals(a, b);
-        assertEquals(text, ProgramProject.format(b, null));
-        assertEquals(Declaration.Scope.LOCAL, b.declaration("wTable").orElseThrow().scope());
-        assertEquals(Declaration.Storage.PERS, b.declaration("pB").orElseThrow().storage());
-    }
-
-    @Test
-    void formatParse_randomModules_sameMeaningThenExact() {
-        for (long seed = 1; seed <= 30; seed++) {
-            RapidModule m = nameInlineTargets(ProgramSamples.random(seed));
-            String text = ProgramProject.format(m, "irb2000");
-            RapidModule back = ProgramProject.parse(text, "seed" + seed + ".json");
-            // SI values made in code need not have an exact mm/degree double (x * 1e-3 skips some
-            // doubles): the first trip keeps them to the last bit or so ...
-            for (Declaration d : m.declarations())
-                SameMeaning.assertSame(d, back.declaration(d.name()).orElseThrow());
-            assertEquals(m.declarations().size(), back.declarations().size());
-            SameMeaning.assertSame(m.procedures(), back.procedures());
-            // ... and what was read from a project file is written and read back exactly.
-            String again = ProgramProject.format(back, "irb2000");
-            assertEquals(back, ProgramProject.parse(again, "again.json"), "seed " + seed);
-            assertEquals(again, ProgramProject.format(ProgramProject.parse(again, "again.json"), "irb2000"), "seed " + seed);
-        }
-    }
-
-    @Test
-    void format_moduleWithSyntaxTreeItems_refusedNamingTheItem() {
-        String rapid = "MODULE M\n  VAR num n{2};\n  PROC main()\n    n{1} := 2;\n  ENDPROC\nENDMODULE\n";
-        RapidModule m = RapidParser.parse(rapid, "m.mod");
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> ProgramProject.format(m, null));
-        assertTrue(e.getMessage().contains("module M") && e.getMessage().contains("export it as RAPID"), e.getMessage());
-    }
-
-    @Test
-    void write_existingFile_refusedUnlessOverwriteAndNoTempLeft(@TempDir Path dir) throws IOException {
+    void parse_documentedFeatures_valuesInSi() {
         RapidModule m = ProgramProject.parse(PROJECT, "demo.json");
-        Path f = dir.resolve("demo.json");
-        ProgramProject.write(m, null, f, false);
-        assertEquals(m, ProgramProject.read(f));
-        Files.writeString(f, "user data");
-        assertThrows(FileAlreadyExistsException.class, () -> ProgramProject.write(m, null, f, false));
-        assertEquals("user data", Files.readString(f));
-        ProgramProject.write(m, "irb2000", f, true);
-        assertTrue(Files.readString(f).contains("\"robot\" : \"irb2000\""));
-        try (Stream<Path> s = Files.list(dir)) {
-            assertEquals(List.of(f), s.toList(), "no temporary files left");
-        }
+        assertEquals("Demo", m.name());
+        assertEquals(RapidAst.Scope.LOCAL, m.declaration("wTable").orElseThrow().scope());
+        assertEquals(RapidAst.Storage.PERS, m.declaration("pB").orElseThrow().storage());
+        RobTarget pB = (RobTarget) m.declaration("pB").orElseThrow().value();
+        assertEquals(0.100123, pB.trans().x(), 1e-15);
+        assertEquals(0.0007, pB.trans().z(), 1e-15);
+        assertEquals(-1, pB.robconf().cf4());
+        assertEquals(0.0103, ((SpeedData) m.declaration("vWeld").orElseThrow().value()).vTcp(), 1e-15);
+        assertEquals(Math.toRadians(45.7), ((SpeedData) m.declaration("vWeld").orElseThrow().value()).vOri(), 1e-15);
+        assertEquals(0.005, ((ZoneData) m.declaration("zSoft").orElseThrow().value()).pzoneTcp(), 1e-15);
+        JointTarget home = (JointTarget) m.declaration("jHome").orElseThrow().value();
+        assertEquals(Math.toRadians(0.1), home.robax(1), 1e-15);
+        assertEquals(120, home.extax().get(0));
+        List<Statement> main = m.procedure("main").orElseThrow().body();
+        assertEquals(6, main.size());
+        Move l = (Move) main.get(1);
+        assertEquals(0.0125, l.v().getAsDouble(), 1e-15);
+        assertTrue(l.conc());
+        assertEquals(0.0003, ((Move) main.get(2)).z().getAsDouble(), 1e-15);
     }
 
     @Test
-    void write_unwritableModule_fileNotCreated(@TempDir Path dir) {
-        RapidModule m = RapidParser.parse("MODULE M\n  PERS pose pp := [[0,0,0],[1,0,0,0]];\nENDMODULE\n", "m.mod");
-        Path f = dir.resolve("m.json");
-        assertThrows(IllegalArgumentException.class, () -> ProgramProject.write(m, null, f, false));
-        assertTrue(Files.notExists(f));
+    void parse_exportedAsRapid_sameMeaning() {
+        // program export's path for these files: the module read here, written as RAPID and read back.
+        RapidModule m = ProgramProject.parse(PROJECT, "demo.json");
+        RapidModule back = RapidParser.parse(RapidWriter.export(m).text(), "demo.mod");
+        SameMeaning.assertSame(m.declarations(), back.declarations());
+        SameMeaning.assertSame(m.procedures(), back.procedures());
     }
 
     @Test
@@ -143,27 +107,5 @@ class ProgramProjectTest {
                 () -> ProgramProject.parse(PROJECT.replace("[0, 0, 1, 0]", "[0, 0, 0, 0]"), "demo.json"));
         assertEquals("targets.pB.quat", quat.field());
         assertEquals(9, quat.line());
-    }
-
-    /** Inline ("*") targets have no name in a project: declare each as CONST pInlN. */
-    private static RapidModule nameInlineTargets(RapidModule m) {
-        List<ModuleItem> decls = new ArrayList<>();
-        List<ModuleItem> rest = new ArrayList<>();
-        int[] n = {0};
-        for (ModuleItem it : m.items()) {
-            if (!(it instanceof Procedure p)) { decls.add(it); continue; }
-            List<Statement> body = new ArrayList<>();
-            for (Statement s : p.body()) {
-                if (s instanceof Move mv && mv.toPoint() instanceof Ref.Inline<?> in) {
-                    String name = "pInl" + (++n[0]);
-                    decls.add(Declaration.constant(name, (RobTarget) in.value()));
-                    s = mv.withToPoint(Ref.to(name));
-                }
-                body.add(s);
-            }
-            rest.add(p.withBody(body));
-        }
-        decls.addAll(rest);
-        return m.withItems(decls);
     }
 }

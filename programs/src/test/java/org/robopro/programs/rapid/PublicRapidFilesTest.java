@@ -14,6 +14,9 @@ import org.junit.jupiter.api.Test;
 import org.robopro.models.InputException;
 import org.robopro.programs.JointTarget;
 import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
+import org.robopro.programs.ParsedModule;
 
 /**
  * A local check on public RAPID sources (open_abb, abb_driver), which are not committed: set
@@ -37,9 +40,9 @@ class PublicRapidFilesTest {
             String name = f.getFileName().toString();
             String text = Files.readString(f, StandardCharsets.UTF_8);
             try {
-                ParsedAst ast = RapidParser.parseAst(text, name);
+                ParsedAst ast = RapidAstParser.parse(text, name);
                 String written = RapidAstWriter.write(ast.module());
-                RapidAst.Module again = RapidParser.parseAst(written, name + "(written)").module();
+                RapidAst.Module again = RapidAstParser.parse(written, name + "(written)").module();
                 if (!ast.module().equals(again)) failures.add(name + ": round trip changed the tree");
                 ParsedModule typed = RapidParser.parseDetailed(text, name);
                 String exported = RapidWriter.export(typed.module()).text();

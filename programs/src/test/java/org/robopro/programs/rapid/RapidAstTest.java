@@ -9,18 +9,19 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.robopro.programs.AstItem;
-import org.robopro.programs.Declaration;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.rapid.RapidAst.Expr;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 class RapidAstTest {
 
     @Test
     void parseWriteParse_fixtures_sameTree() {
         for (String f : List.of("PickPlace.mod", "Palletize.mod", "CellServer.mod", "Conveyor.mod")) {
-            RapidAst.Module a = RapidParser.parseAst(RapidParserTest.fixture(f), f).module();
+            RapidAst.Module a = RapidAstParser.parse(RapidParserTest.fixture(f), f).module();
             String text = RapidAstWriter.write(a);
-            RapidAst.Module b = RapidParser.parseAst(text, "again.mod").module();
+            RapidAst.Module b = RapidAstParser.parse(text, "again.mod").module();
             assertEquals(a, b, f);
             assertEquals(text, RapidAstWriter.write(b), f);
         }
@@ -28,7 +29,7 @@ class RapidAstTest {
 
     @Test
     void parse_cellServer_serverConstructsInTree() {
-        RapidAst.Module m = RapidParser.parseAst(RapidParserTest.fixture("CellServer.mod"), "CellServer.mod").module();
+        RapidAst.Module m = RapidAstParser.parse(RapidParserTest.fixture("CellServer.mod"), "CellServer.mod").module();
         RapidAst.Routine main = routine(m, "main");
         // ERROR (LONG_JMP_ALL_ERR, ERR_SOCK_CLOSED): two error numbers, a handler with RETRY/TRYNEXT, an UNDO handler
         assertEquals(List.of(new RapidAst.Name("LONG_JMP_ALL_ERR"), new RapidAst.Name("ERR_SOCK_CLOSED")), main.errorNumbers());
@@ -39,7 +40,7 @@ class RapidAstTest {
         assertInstanceOf(RapidAst.CompactIf.class, main.undo().get(0));
         // PERS without initialiser, array of CONST size, record with an array component
         RapidAst.DataDecl speed = data(m, "cellSpeed");
-        assertEquals(Declaration.Storage.PERS, speed.storage());
+        assertEquals(RapidAst.Storage.PERS, speed.storage());
         assertEquals(null, speed.init());
         assertEquals(List.of(new RapidAst.Name("MAX_QUEUE")), data(m, "queue").dims());
         // WaitUntil (cond) \PollRate:=.05: a parenthesised first argument, then an optional one
@@ -59,7 +60,7 @@ class RapidAstTest {
     @Test
     void parse_compactIfWithLabel_refusedAtTheLabel() {
         org.robopro.models.InputException e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
-                () -> RapidParser.parseAst("MODULE M\n  PROC main()\n    IF TRUE here: WaitTime 1;\n  ENDPROC\nENDMODULE\n", "p.mod"));
+                () -> RapidAstParser.parse("MODULE M\n  PROC main()\n    IF TRUE here: WaitTime 1;\n  ENDPROC\nENDMODULE\n", "p.mod"));
         assertEquals(3, e.line());
         assertEquals(13, e.column());
         assertTrue(e.getMessage().contains("compact IF"), e.getMessage());
@@ -68,7 +69,7 @@ class RapidAstTest {
     @Test
     void parse_callWithParenthesisedCalls_helpfulMessage() {
         org.robopro.models.InputException e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
-                () -> RapidParser.parseAst("MODULE M\n  PROC main()\n    Foo(1, 2);\n  ENDPROC\nENDMODULE\n", "p.mod"));
+                () -> RapidAstParser.parse("MODULE M\n  PROC main()\n    Foo(1, 2);\n  ENDPROC\nENDMODULE\n", "p.mod"));
         assertEquals(3, e.line());
         assertEquals(8, e.column());
         assertTrue(e.getMessage().contains("without parentheses"), e.getMessage());
@@ -105,7 +106,7 @@ class RapidAstTest {
         assertEquals(List.of("main"), m.procedures().stream().map(p -> p.name()).toList());
         long trees = m.items().stream().filter(i -> i instanceof AstItem).count();
         assertEquals(10, trees, "RECORD, ALIAS, 6 data, place, area, onStop minus typed ones");
-        assertEquals(Declaration.Storage.CONST, m.declaration("nMax").orElseThrow().storage());
+        assertEquals(RapidAst.Storage.CONST, m.declaration("nMax").orElseThrow().storage());
         String out = RapidWriter.export(m).text();
         assertEquals(out, RapidWriter.export(RapidParser.parse(out, "out.mod")).text());
     }
@@ -116,7 +117,7 @@ class RapidAstTest {
         for (int n = 0; n < 2000; n++) {
             Expr e = randomExpr(rnd, 4);
             String text = "MODULE M\n  VAR num x:=" + RapidAstWriter.expr(e) + ";\nENDMODULE\n";
-            RapidAst.DataDecl d = (RapidAst.DataDecl) RapidParser.parseAst(text, "r.mod").module().items().get(0);
+            RapidAst.DataDecl d = (RapidAst.DataDecl) RapidAstParser.parse(text, "r.mod").module().items().get(0);
             assertEquals(e, d.init(), text);
         }
     }
@@ -126,7 +127,7 @@ class RapidAstTest {
         for (long seed = 1; seed <= 60; seed++) {
             Random rnd = new Random(seed);
             List<RapidAst.Item> items = new ArrayList<>();
-            items.add(new RapidAst.DataDecl(Declaration.Scope.LOCAL, Declaration.Storage.VAR, "num", "a", List.of(new RapidAst.Num("3")), null));
+            items.add(new RapidAst.DataDecl(RapidAst.Scope.LOCAL, RapidAst.Storage.VAR, "num", "a", List.of(new RapidAst.Num("3")), null));
             items.add(new RapidAst.RecordDecl(false, "rec", List.of(new RapidAst.Field("num", "x"), new RapidAst.CommentLine(" c"))));
             List<RapidAst.Stmt> body = new ArrayList<>();
             for (int k = 0; k < 6; k++) body.add(randomStmt(rnd, 3));
@@ -136,7 +137,7 @@ class RapidAstTest {
                     body, null, rnd.nextBoolean() ? List.of(new RapidAst.Name("ERR_X")) : null, List.of(new RapidAst.Retry()), List.of()));
             RapidAst.Module m = new RapidAst.Module("R" + seed, List.of("SYSMODULE"), items);
             String text = RapidAstWriter.write(m);
-            assertEquals(m, RapidParser.parseAst(text, "r.mod").module(), text);
+            assertEquals(m, RapidAstParser.parse(text, "r.mod").module(), text);
         }
     }
 
@@ -193,7 +194,7 @@ class RapidAstTest {
         assertEquals(31, new RapidAst.Num("0x1F").value());
         assertEquals(5, new RapidAst.Num("0b101").value());
         assertEquals(15, new RapidAst.Num("0o17").value());
-        assertInstanceOf(RapidAst.Num.class, ((RapidAst.DataDecl) RapidParser.parseAst("MODULE M\n VAR num a:=0o17;\nENDMODULE", "m")
+        assertInstanceOf(RapidAst.Num.class, ((RapidAst.DataDecl) RapidAstParser.parse("MODULE M\n VAR num a:=0o17;\nENDMODULE", "m")
                 .module().items().get(0)).init());
     }
 }

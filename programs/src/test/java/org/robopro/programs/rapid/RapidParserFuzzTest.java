@@ -5,6 +5,8 @@ import java.nio.charset.StandardCharsets;
 import org.robopro.models.InputException;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.sim.MotionInterpreter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 /**
  * Fuzzes the RAPID parser: whatever the text, it either returns a module or throws an
@@ -24,9 +26,9 @@ class RapidParserFuzzTest {
             return;
         }
         // The syntax tree written back reads as the same tree.
-        RapidAst.Module tree = RapidParser.parseAst(text, "fuzz.mod").module();
+        RapidAst.Module tree = RapidAstParser.parse(text, "fuzz.mod").module();
         String written = RapidAstWriter.write(tree);
-        RapidAst.Module again = RapidParser.parseAst(written, "written.mod").module();
+        RapidAst.Module again = RapidAstParser.parse(written, "written.mod").module();
         if (!tree.equals(again)) throw new AssertionError("tree round trip changed:\n" + written);
         String once = RapidWriter.export(m).text();
         String twice = RapidWriter.export(RapidParser.parse(once, "again.mod")).text();

@@ -15,7 +15,6 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;
 import org.robopro.kinematics.ConfData;
 import org.robopro.models.InputException;
-import org.robopro.programs.Declaration;
 import org.robopro.programs.JointTarget;
 import org.robopro.programs.Move;
 import org.robopro.programs.ProcCall;
@@ -28,6 +27,8 @@ import org.robopro.programs.SameMeaning;
 import org.robopro.programs.ToolData;
 import org.robopro.programs.WaitTime;
 import org.robopro.programs.ZoneData;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 class RapidParserTest {
 
@@ -54,7 +55,7 @@ class RapidParserTest {
         ToolData g = (ToolData) m.declaration("tGripper").orElseThrow().value();
         assertEquals(0.150, g.tframe().trans().z(), 1e-15);
         assertEquals(2.5, g.tload().mass());
-        assertEquals(Declaration.Scope.LOCAL, m.declaration("zSoft").orElseThrow().scope());
+        assertEquals(RapidAst.Scope.LOCAL, m.declaration("zSoft").orElseThrow().scope());
         assertEquals("pick \"fast\"", ((RapidValue.Str) m.declaration("sMsg").orElseThrow().value()).value());
         Procedure main = m.procedure("main").orElseThrow();
         assertEquals(7, main.body().size());

@@ -9,6 +9,8 @@ import org.junit.jupiter.api.Test;
 import org.robopro.programs.ProgramSamples;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.SameMeaning;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 class RapidRoundTripTest {
 

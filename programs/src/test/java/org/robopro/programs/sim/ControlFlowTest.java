@@ -8,7 +8,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.robopro.models.InputException;
 import org.robopro.models.Vec3;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.RapidParser;
 
 class ControlFlowTest {
 

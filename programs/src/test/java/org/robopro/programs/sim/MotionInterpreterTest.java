@@ -20,8 +20,8 @@ import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.SpeedData;
 import org.robopro.programs.ZoneData;
-import org.robopro.programs.rapid.ParsedModule;
-import org.robopro.programs.rapid.RapidParser;
+import org.robopro.programs.ParsedModule;
+import org.robopro.programs.RapidParser;
 
 class MotionInterpreterTest {
 

@@ -33,10 +33,11 @@ import org.robopro.programs.WObjData;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.check.Problem;
-import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.ParsedModule;
 import org.robopro.programs.rapid.RapidChecker;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
+import org.robopro.programs.rapid.RapidAstParser;
 
 /**
  * A welding module written the way ABB arc-welding cells are: clamp and wait for the clamp
@@ -195,7 +196,7 @@ class WeldModuleTest {
     void export_weldModule_rapidcheckerAcceptsAndReimportsToSameTree() {
         String text = module();
         String exported = RapidWriter.export(RapidParser.parse(text, "WeldCell.mod")).text();
-        assertEquals(RapidParser.parseAst(text, "a.mod").module(), RapidParser.parseAst(exported, "b.mod").module());
+        assertEquals(RapidAstParser.parse(text, "a.mod").module(), RapidAstParser.parse(exported, "b.mod").module());
         assertEquals(exported, RapidWriter.export(RapidParser.parse(exported, "WeldCell.mod")).text());
         RapidChecker.assertValid("WeldCell.mod", exported);
     }

@@ -24,7 +24,7 @@ import org.robopro.programs.Statement;
 import org.robopro.programs.ToolData;
 import org.robopro.programs.WObjData;
 import org.robopro.programs.ZoneData;
-import org.robopro.programs.rapid.ParsedModule;
+import org.robopro.programs.ParsedModule;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
@@ -168,7 +168,15 @@ public final class ProgramModule {
      * unsupported frames) are InputExceptions naming the file, line and column.
      */
     public static Imported fromRapid(ParsedModule parsed, WorkbenchModel m, String entry) {
-        List<ProgramStep> steps = MotionInterpreter.of(parsed).run(entry);
+        return imported(parsed.module().name(), MotionInterpreter.of(parsed).run(entry), m);
+    }
+
+    /** Like {@link #fromRapid(ParsedModule, WorkbenchModel, String)} for a module not read from a RAPID file. */
+    public static Imported fromRapid(RapidModule module, WorkbenchModel m, String entry) {
+        return imported(module.name(), MotionInterpreter.of(module).run(entry), m);
+    }
+
+    private static Imported imported(String moduleName, List<ProgramStep> steps, WorkbenchModel m) {
         RobotKinematics k = m.kinematics();
         Optional<InverseKinematics> ik = k.kinematicModel().map(InverseKinematics::of);
         Pose worldTbase = m.worldTbase();
@@ -237,7 +245,7 @@ public final class ProgramModule {
         }
         if (waits > 0) notes.add(waits + " WaitTime statement(s) dropped: the workbench program holds motions only");
         if (tool == null) tool = m.tool();
-        return new Imported(parsed.module().name(), tool, List.copyOf(wobjs.values()), List.copyOf(targets.values()), program, notes);
+        return new Imported(moduleName, tool, List.copyOf(wobjs.values()), List.copyOf(targets.values()), program, notes);
     }
 
     /** Poses closer than this (m, rad) are the same target or work object frame. */

@@ -38,7 +38,6 @@ public final class WorkbenchModel {
     private String calibrationReference;
     private volatile double[] q;
     private volatile String selection;
-    private volatile boolean showFrames;
     private volatile boolean showPath = true;
     private volatile boolean dirty;
     private String activeWorkObject = Target.WOBJ0;
@@ -477,8 +476,46 @@ public final class WorkbenchModel {
         fire(Change.SELECTION);
     }
 
-    public boolean showFrames() { return showFrames; }
-    public void setShowFrames(boolean b) { showFrames = b; fire(Change.VIEW); }
+    /** The frames the 3D view can show, each switched on its own (View → Frames). */
+    public enum FrameKind {
+        WORLD("World triad"), BASE("Robot base"), JOINTS("Joint axes"), FLANGE("Flange"), TCP("Tool (TCP)"), TARGETS("Target triads");
+        private final String label;
+        FrameKind(String label) { this.label = label; }
+        public String label() { return label; }
+    }
+
+    private volatile java.util.Set<FrameKind> shownFrames = java.util.Collections.unmodifiableSet(
+            java.util.EnumSet.of(FrameKind.WORLD, FrameKind.TARGETS));
+    private volatile boolean shadows = true;
+
+    /** Whether the robot's joint axis frames are shown. */
+    public boolean showFrames() { return frameShown(FrameKind.JOINTS); }
+
+    /** Shows or hides the robot's frames together: base, joint axes, flange and TCP (the paper's Fig. 8 view). */
+    public void setShowFrames(boolean b) {
+        java.util.EnumSet<FrameKind> s = java.util.EnumSet.copyOf(shownFrames);
+        for (FrameKind k : new FrameKind[] {FrameKind.BASE, FrameKind.JOINTS, FrameKind.FLANGE, FrameKind.TCP}) if (b) s.add(k); else s.remove(k);
+        shownFrames = java.util.Collections.unmodifiableSet(s);
+        fire(Change.VIEW);
+    }
+
+    public boolean frameShown(FrameKind k) { return shownFrames.contains(k); }
+
+    /** The frames shown now (an unmodifiable snapshot; a new set after every change). */
+    public java.util.Set<FrameKind> shownFrames() { return shownFrames; }
+
+    public void setFrameShown(FrameKind k, boolean b) {
+        if (frameShown(k) == b) return;
+        java.util.EnumSet<FrameKind> s = java.util.EnumSet.noneOf(FrameKind.class);
+        s.addAll(shownFrames);
+        if (b) s.add(k); else s.remove(k);
+        shownFrames = java.util.Collections.unmodifiableSet(s);
+        fire(Change.VIEW);
+    }
+
+    /** Whether the key light casts shadows in the 3D view. */
+    public boolean shadows() { return shadows; }
+    public void setShadows(boolean b) { shadows = b; fire(Change.VIEW); }
     public boolean showPath() { return showPath; }
     public void setShowPath(boolean b) { showPath = b; fire(Change.VIEW); }
 

@@ -8,19 +8,36 @@ import com.jme3.light.DirectionalLight;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
+import com.jme3.renderer.queue.RenderQueue.ShadowMode;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.debug.Grid;
 import com.jme3.scene.shape.Quad;
+import com.jme3.shadow.DirectionalLightShadowRenderer;
+import com.jme3.shadow.EdgeFilteringMode;
+import org.robopro.app.workbench.model.WorkbenchModel;
 
-/** Lights, background, floor and floor grid (1 m and 0.25 m lines), all in the jME y-up root. */
+/**
+ * Lights, background, floor and floor grid (1 m and 0.25 m lines), all in the jME y-up root;
+ * and the key light's shadows (View → Shadows): one 1024² shadow map over the nearest 12 m of
+ * the view, filtered with jME's 4-tap PCF, cast by the robot, tool and cell objects onto
+ * themselves and the floor. One split and a small map keep the cost low on a software
+ * rasteriser (docs/performance.md).
+ */
 public final class EnvironmentState extends BaseAppState {
+    private final WorkbenchModel model;
     private final Node env = new Node("environment");
     private final AmbientLight ambient = new AmbientLight(new ColorRGBA(0.45f, 0.46f, 0.5f, 1));
     private final DirectionalLight key = new DirectionalLight(new Vector3f(-0.5f, -1f, -0.35f).normalizeLocal(),
             new ColorRGBA(0.85f, 0.83f, 0.8f, 1));
     private final DirectionalLight fill = new DirectionalLight(new Vector3f(0.6f, -0.4f, 0.7f).normalizeLocal(),
             new ColorRGBA(0.35f, 0.37f, 0.42f, 1));
+    /** Shadow map size in pixels (square); -Drobopro.shadowMap to compare. */
+    private static final int SHADOW_MAP = Integer.getInteger("robopro.shadowMap", 1024);
+    private DirectionalLightShadowRenderer shadows;
+    private boolean shadowsOn;
+
+    public EnvironmentState(WorkbenchModel model) { this.model = model; }
 
     @Override
     protected void initialize(Application app) {
@@ -30,18 +47,37 @@ public final class EnvironmentState extends BaseAppState {
         floor.setMaterial(s.lit(0xA9AEB5));
         floor.rotate(-FastMath.HALF_PI, 0, 0);
         floor.setLocalTranslation(-6, -0.002f, 6);
+        floor.setShadowMode(ShadowMode.Receive);
         env.attachChild(floor);
         Geometry fine = new Geometry("grid-fine", new Grid(49, 49, 0.25f));
         fine.setMaterial(s.flat(0x9298A0, false));
         fine.setLocalTranslation(-6, 0, -6);
+        fine.setShadowMode(ShadowMode.Off);
         env.attachChild(fine);
         Geometry coarse = new Geometry("grid", new Grid(13, 13, 1f));
         coarse.setMaterial(s.flat(0x6F757D, false));
         coarse.setLocalTranslation(-6, 0.001f, -6);
+        coarse.setShadowMode(ShadowMode.Off);
         env.attachChild(coarse);
+        shadows = new DirectionalLightShadowRenderer(app.getAssetManager(), SHADOW_MAP, 1);
+        shadows.setLight(key);
+        shadows.setShadowIntensity(0.45f);
+        shadows.setEdgeFilteringMode(EdgeFilteringMode.Bilinear);
+        shadows.setShadowZExtend(12f);
+        shadows.setShadowZFadeLength(2f);
     }
 
     @Override protected void cleanup(Application app) { }
+
+    @Override
+    public void update(float tpf) {
+        boolean on = model.shadows();
+        if (on == shadowsOn) return;
+        shadowsOn = on;
+        var vp = getApplication().getViewPort();
+        if (on) vp.addProcessor(shadows);
+        else vp.removeProcessor(shadows);
+    }
 
     @Override
     protected void onEnable() {
@@ -59,5 +95,7 @@ public final class EnvironmentState extends BaseAppState {
         root.removeLight(ambient);
         root.removeLight(key);
         root.removeLight(fill);
+        if (shadowsOn) getApplication().getViewPort().removeProcessor(shadows);
+        shadowsOn = false;
     }
 }

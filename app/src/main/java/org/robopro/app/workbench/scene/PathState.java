@@ -67,7 +67,17 @@ public final class PathState extends BaseAppState {
     @Override
     public void update(float tpf) {
         node.setCullHint(model.showPath() ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        boolean triads = model.frameShown(org.robopro.app.workbench.model.WorkbenchModel.FrameKind.TARGETS);
+        if (triads != triadsShown) {
+            triadsShown = triads;
+            for (Spatial t : node.getChildren()) {
+                Spatial a = t instanceof Node tn ? tn.getChild(tn.getName() + "-axes") : null;
+                if (a != null) a.setCullHint(triads ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+            }
+        }
     }
+
+    private boolean triadsShown = true;
 
     private void rebuild(PathChecker.Result r) {
         shownRequest = r.request();
@@ -84,7 +94,9 @@ public final class PathState extends BaseAppState {
             Geometry ball = new Geometry("target-" + t.name() + "-ball", new Sphere(12, 16, 0.025f));
             ball.setMaterial(shapes.lit(s.ok() ? OK_RGB : BAD_RGB));
             tn.attachChild(ball);
-            tn.attachChild(shapes.axes("target-" + t.name() + "-axes", 0.07f));
+            Node axes = shapes.axes("target-" + t.name() + "-axes", 0.07f);
+            if (!triadsShown) axes.setCullHint(Spatial.CullHint.Always);
+            tn.attachChild(axes);
             node.attachChild(tn);
             // The target's name beside it, facing the camera.
             Node label = shapes.label("label-" + t.name(), t.name(), 0.05f, s.ok() ? 0x1B3A1F : 0x8B1A1A);

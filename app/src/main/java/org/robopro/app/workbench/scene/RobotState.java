@@ -10,6 +10,7 @@ import com.jme3.scene.Spatial;
 import java.util.List;
 import org.robopro.app.workbench.model.DefaultCell;
 import org.robopro.app.workbench.model.RobotKinematics;
+import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.app.workbench.model.Tool;
 import org.robopro.app.workbench.model.WorkbenchModel;
 import org.robopro.kinematics.Pose;
@@ -33,11 +34,10 @@ public final class RobotState extends BaseAppState {
     private Shapes shapes;
     private Node[] links = new Node[0];
     private Node toolNode;
-    private Node framesNode;
     private RobotKinematics builtFor;
     private Tool toolBuiltFor;
     private long jointVersion = -1;
-    private boolean framesShown;
+    private java.util.Set<WorkbenchModel.FrameKind> framesShown;
     /** The IRB 2000's parallel-arm linkage, posed each frame; null for other robots. */
     private Irb2000Model linkage;
 
@@ -94,9 +94,8 @@ public final class RobotState extends BaseAppState {
             for (int i = 1; i < links.length; i++) Shapes.apply(d[i - 1].inverse().times(d[i]), links[i]);
             if (linkage != null) linkage.pose(links[3]);
         }
-        if (model.showFrames() != framesShown) {
-            framesShown = model.showFrames();
-            framesNode.setCullHint(framesShown ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        if (model.shownFrames() != framesShown) {
+            framesShown = model.shownFrames();
             setFramesVisible(robotRoot, framesShown);
         }
     }
@@ -112,11 +111,17 @@ public final class RobotState extends BaseAppState {
         }
     }
 
-    private static void setFramesVisible(Node n, boolean on) {
+    /** Shows each of the robot's frames whose kind is in {@code shown}: frame-base, frame-jN, frame-flange, frame-tcp. */
+    private static void setFramesVisible(Node n, java.util.Set<WorkbenchModel.FrameKind> shown) {
         for (Spatial s : n.getChildren()) {
-            if (s.getName() != null && s.getName().startsWith("frame-"))
-                s.setCullHint(on ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
-            if (s instanceof Node c) setFramesVisible(c, on);
+            String name = s.getName();
+            if (name != null && name.startsWith("frame-")) {
+                WorkbenchModel.FrameKind k = name.equals("frame-base") ? WorkbenchModel.FrameKind.BASE
+                        : name.equals("frame-flange") ? WorkbenchModel.FrameKind.FLANGE
+                        : name.equals("frame-tcp") ? WorkbenchModel.FrameKind.TCP : WorkbenchModel.FrameKind.JOINTS;
+                s.setCullHint(shown.contains(k) ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+            }
+            if (s instanceof Node c) setFramesVisible(c, shown);
         }
     }
 
@@ -186,10 +191,8 @@ public final class RobotState extends BaseAppState {
         toolNode.setUserData("pick", "tool");
         flangeNode.attachChild(toolNode);
         buildTool(tool);
-        framesNode = new Node("frames");
-        robotRoot.attachChild(framesNode);
         robotRoot.attachChild(shapes.axes("frame-base", r1 * 4f));
-        framesShown = !model.showFrames();
+        framesShown = null;
     }
 
     /**
@@ -231,29 +234,6 @@ public final class RobotState extends BaseAppState {
         return done;
     }
 
-    /** A shipped mesh file of one link, drawn in one colour. */
-    record ShippedPart(int link, String file, int rgb) { }
-
-    private static final int PUMA_BODY = 0xD9D5CB;
-    private static final int PUMA_DARK = 0x33363B;
-    private static final int PUMA_RED = 0xB3261E;
-
-    /**
-     * Robots whose link meshes robopro ships (resources beside their licence and attribution),
-     * by robot-name prefix: the IRB 2400 from ROS-Industrial (meshes/irb2400/ATTRIBUTION.md),
-     * the PUMA 560 from the Robotics Toolbox for Python (meshes/puma560/ATTRIBUTION.md).
-     */
-    static final java.util.Map<String, List<ShippedPart>> SHIPPED_MESHES = java.util.Map.of(
-            "irb2400", List.of(new ShippedPart(0, "base_link", DefaultCell.ABB_ORANGE), new ShippedPart(1, "link_1", DefaultCell.ABB_ORANGE),
-                    new ShippedPart(2, "link_2", DefaultCell.ABB_ORANGE), new ShippedPart(3, "link_3", DefaultCell.ABB_ORANGE),
-                    new ShippedPart(4, "link_4", DefaultCell.ABB_ORANGE), new ShippedPart(5, "link_5", DefaultCell.ABB_ORANGE),
-                    new ShippedPart(6, "link_6", DefaultCell.ABB_ORANGE)),
-            "puma560", List.of(new ShippedPart(0, "link_0", PUMA_BODY), new ShippedPart(1, "link_1", PUMA_BODY),
-                    new ShippedPart(2, "link_2", PUMA_BODY), new ShippedPart(2, "link_2-dark", PUMA_DARK),
-                    new ShippedPart(2, "link_2-red", PUMA_RED), new ShippedPart(3, "link_3", PUMA_BODY),
-                    new ShippedPart(4, "link_4", PUMA_BODY), new ShippedPart(5, "link_5-dark", PUMA_DARK),
-                    new ShippedPart(6, "link_6", PUMA_BODY)));
-
     /**
      * The shipped meshes of a robot whose file names none, in base coordinates at the zero
      * position like a robot file's own meshes; also drawn for its calibrated variants. Returns
@@ -261,11 +241,9 @@ public final class RobotState extends BaseAppState {
      */
     private java.util.Set<Integer> attachShippedMeshes(RobotDescription d) {
         java.util.Set<Integer> done = new java.util.HashSet<>();
-        if (d.dof() != 6) return done;
-        for (var e : SHIPPED_MESHES.entrySet()) {
-            if (!d.name().toLowerCase(java.util.Locale.ROOT).startsWith(e.getKey())) continue;
-            for (ShippedPart part : e.getValue()) {
-                String res = "/org/robopro/app/workbench/meshes/" + e.getKey() + "/" + part.file() + ".stl";
+        for (String robot : ShippedMeshes.robotOf(d).stream().toList()) {
+            for (ShippedMeshes.Part part : ShippedMeshes.BY_ROBOT.get(robot)) {
+                String res = ShippedMeshes.resource(robot, part);
                 try (java.io.InputStream in = RobotState.class.getResourceAsStream(res)) {
                     if (in == null) continue;
                     Geometry g = new Geometry("mesh-" + part.file(), StlReader.read(in.readAllBytes(), java.nio.file.Path.of(res), 1f));

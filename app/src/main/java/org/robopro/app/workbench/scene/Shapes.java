@@ -128,6 +128,7 @@ public final class Shapes {
     /** Red/green/blue arrows for the x/y/z axes of a frame, {@code len} long (the paper's Fig. 8 view). */
     public Node axes(String name, float len) {
         Node n = new Node(name);
+        n.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
         Vector3f[] dirs = {Vector3f.UNIT_X, Vector3f.UNIT_Y, Vector3f.UNIT_Z};
         int[] cols = {0xE53935, 0x43A047, 0x1E88E5};
         for (int i = 0; i < 3; i++) {
@@ -154,6 +155,7 @@ public final class Shapes {
         t.setColor(new com.jme3.math.ColorRGBA(((rgb >> 16) & 255) / 255f, ((rgb >> 8) & 255) / 255f, (rgb & 255) / 255f, 1));
         t.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
         Node n = new Node(name);
+        n.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
         Node face = new Node(name + "-billboard");
         face.addControl(new com.jme3.scene.control.BillboardControl());
         face.attachChild(t);

@@ -4,14 +4,9 @@ import com.jme3.scene.Mesh;
 import com.jme3.scene.VertexBuffer;
 import com.jme3.util.BufferUtils;
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Locale;
+import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.models.InputException;
 
 /**
@@ -33,7 +28,7 @@ public final class StlReader {
 
     /** A mesh from an STL file's bytes (binary or ASCII); {@code file} names it in error messages. */
     public static Mesh read(byte[] b, Path file, float scale) {
-        float[] tri = isBinary(b) ? binary(b, file) : ascii(new String(b, StandardCharsets.US_ASCII), file);
+        float[] tri = ShippedMeshes.stlTriangles(b, file);
         int nv = tri.length / 3;
         float[] pos = new float[nv * 3];
         float[] nor = new float[nv * 3];
@@ -53,43 +48,5 @@ public final class StlReader {
         m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(nor));
         m.updateBound();
         return m;
-    }
-
-    private static boolean isBinary(byte[] b) {
-        if (b.length < 84) return false;
-        long n = ByteBuffer.wrap(b, 80, 4).order(ByteOrder.LITTLE_ENDIAN).getInt() & 0xffffffffL;
-        return 84 + 50 * n == b.length;
-    }
-
-    private static float[] binary(byte[] b, Path file) {
-        ByteBuffer bb = ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN);
-        int n = bb.getInt(80);
-        float[] out = new float[n * 9];
-        for (int t = 0; t < n; t++) {
-            int o = 84 + 50 * t + 12;
-            for (int k = 0; k < 9; k++) out[t * 9 + k] = bb.getFloat(o + 4 * k);
-        }
-        return out;
-    }
-
-    private static float[] ascii(String s, Path file) {
-        List<Float> v = new ArrayList<>();
-        String[] lines = s.split("\n");
-        for (int i = 0; i < lines.length; i++) {
-            String l = lines[i].trim();
-            if (!l.toLowerCase(Locale.ROOT).startsWith("vertex")) continue;
-            String[] p = l.split("\\s+");
-            if (p.length != 4) throw new InputException(file.toString(), i + 1, 1, "vertex", "expected 'vertex x y z'");
-            try {
-                for (int k = 1; k <= 3; k++) v.add(Float.parseFloat(p[k]));
-            } catch (NumberFormatException e) {
-                throw new InputException(file.toString(), i + 1, 1, "vertex", "not a number: " + l);
-            }
-        }
-        if (v.isEmpty() || v.size() % 9 != 0)
-            throw new InputException(file.toString(), 0, 0, "facet", "no complete triangles (is this an STL file?)");
-        float[] out = new float[v.size()];
-        for (int i = 0; i < out.length; i++) out[i] = v.get(i);
-        return out;
     }
 }

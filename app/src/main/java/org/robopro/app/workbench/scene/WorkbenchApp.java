@@ -39,6 +39,7 @@ public final class WorkbenchApp extends SimpleApplication {
     private final AtomicLong frames = new AtomicLong();
     private volatile AwtPanel panel;
     private final Node world = new Node("world");
+    private final Node worldTriad = new Node("frame-world-triad");
     private final CameraState cameraState = new CameraState();
     private volatile PreviewState previewState;
     private final PathState pathState;
@@ -50,6 +51,9 @@ public final class WorkbenchApp extends SimpleApplication {
     private long windowStartNanos;
     private long windowFrames;
     private int lastW, lastH;
+    private volatile double shadowFallbackFps;
+    private volatile java.util.function.Consumer<String> shadowFallbackLog;
+    private int slowWindows;
 
     /** A scene over {@code model} that shows the results of {@code pathChecker} (owned by the caller). */
     public WorkbenchApp(WorkbenchModel model, PathChecker pathChecker, Function<String, Path> meshResolver) {
@@ -89,15 +93,18 @@ public final class WorkbenchApp extends SimpleApplication {
         // robopro's scene is z-up; jME's world is y-up.
         world.rotate(-FastMath.HALF_PI, 0, 0);
         rootNode.attachChild(world);
+        world.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Cast);
+        worldTriad.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
         // The world frame: a triad with X, Y, Z at the origin of the cell.
         Shapes sh = new Shapes(assetManager);
-        world.attachChild(sh.axes("frame-world", 0.5f));
+        world.attachChild(worldTriad);
+        worldTriad.attachChild(sh.axes("frame-world", 0.5f));
         String[] names = {"X", "Y", "Z"};
         int[] colours = {0xC62828, 0x2E7D32, 0x1565C0};
         for (int i = 0; i < 3; i++) {
             Node l = sh.label("frame-world-" + names[i], names[i], 0.09f, colours[i]);
             l.setLocalTranslation(i == 0 ? 0.53f : 0, i == 1 ? 0.53f : 0, i == 2 ? 0.53f : 0);
-            world.attachChild(l);
+            worldTriad.attachChild(l);
         }
         java.util.function.Function<String, Path> robotMeshes = path -> {
             // Robot meshes are relative to the robot file; shipped robots (a name, not a path) have none on disk.
@@ -110,7 +117,7 @@ public final class WorkbenchApp extends SimpleApplication {
         robotState = new RobotState(model, world, robotMeshes);
         RobotState ghostState = new RobotState(model, world, robotMeshes, true);
         previewState = new PreviewState(model, world);
-        stateManager.attachAll(new EnvironmentState(), robotState, new CellState(model, world, meshResolver),
+        stateManager.attachAll(new EnvironmentState(model), robotState, new CellState(model, world, meshResolver),
                 pathState, previewState, ghostState, cameraState, new SelectionState(model, world, rootNode));
         if (clearance != null) {
             clearanceState = new ClearanceState(model, clearance, world);
@@ -121,6 +128,7 @@ public final class WorkbenchApp extends SimpleApplication {
 
     @Override
     public void simpleUpdate(float tpf) {
+        worldTriad.setCullHint(model.frameShown(WorkbenchModel.FrameKind.WORLD) ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
         if (cam.getWidth() != lastW || cam.getHeight() != lastH) {
             lastW = cam.getWidth();
             lastH = cam.getHeight();
@@ -145,7 +153,30 @@ public final class WorkbenchApp extends SimpleApplication {
         if (now - windowStartNanos > 500_000_000L) {
             windowFrames = 0;
             windowStartNanos = now;
+            shadowFallback();
         }
+    }
+
+    /**
+     * Once, when with shadows on the frame rate stays under {@code minFps} for six half-second
+     * windows in a row (a software rasteriser under load), hands {@code switchOff} the message
+     * to log; it switches the shadows off (View → Shadows turns them back on, and then they
+     * stay). 0 disables the fallback (benchmarks).
+     */
+    public void setShadowFallback(double minFps, java.util.function.Consumer<String> switchOff) {
+        shadowFallbackLog = switchOff;
+        shadowFallbackFps = minFps;
+    }
+
+    private void shadowFallback() {
+        double min = shadowFallbackFps;
+        if (min <= 0 || !model.shadows()) { slowWindows = 0; return; }
+        slowWindows = fps < min ? slowWindows + 1 : 0;
+        if (slowWindows < 6) return;
+        shadowFallbackFps = 0;
+        var off = shadowFallbackLog;
+        if (off != null) off.accept(String.format(java.util.Locale.ROOT,
+                "Shadows switched off: %.0f fps with them on this display (View → Shadows turns them back on)", fps));
     }
 
     @Override

@@ -1,18 +1,15 @@
 package org.robopro.app.workbench.ui;
 
-import java.awt.BasicStroke;
 import java.awt.BorderLayout;
-import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Font;
-import java.awt.Graphics;
-import java.awt.Graphics2D;
-import java.awt.RenderingHints;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import org.robopro.calibration.report.Figure;
+import org.robopro.calibration.report.Svg;
 import java.util.Locale;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.CompletableFuture;
@@ -58,9 +55,9 @@ public final class CalibrationPanel extends JPanel {
     private final JButton apply = new JButton("Apply calibrated model...");
     private final JLabel rms = new JLabel(" ");
     private final JTextArea effects = new JTextArea(12, 60);
-    private final ErrorPlot plot = new ErrorPlot();
+    private final FigurePanel plot = new FigurePanel();
     private final JTextArea findings = new JTextArea(12, 60);
-    private final RmsChart rmsChart = new RmsChart();
+    private final FigurePanel rmsChart = new FigurePanel();
     private final JTabbedPane tabs = new JTabbedPane();
     private final WorkbenchFrame owner;
     private WorkbenchSession.Measurements measurements;
@@ -115,7 +112,7 @@ public final class CalibrationPanel extends JPanel {
         effects.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 11));
         JScrollPane es = new JScrollPane(effects);
         es.setBorder(BorderFactory.createTitledBorder("Effects found (largest parameter corrections) and identifiability"));
-        plot.setBorder(BorderFactory.createTitledBorder("Error per pose, sorted (grey: nominal model, orange: calibrated)"));
+        plot.setBorder(BorderFactory.createTitledBorder("Error per pose, sorted"));
         plot.setPreferredSize(new Dimension(600, 200));
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, es);
         split.setResizeWeight(0.5);
@@ -126,8 +123,8 @@ public final class CalibrationPanel extends JPanel {
         findings.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         JScrollPane fs = new JScrollPane(findings);
         fs.setBorder(BorderFactory.createTitledBorder("Findings, outliers, what the data cannot tell, what to record next"));
-        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, then after each effect (train / validation)"));
-        rmsChart.setPreferredSize(new Dimension(600, 150));
+        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, then after each effect"));
+        rmsChart.setPreferredSize(new Dimension(600, 200));
         JSplitPane dsplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, rmsChart, fs);
         dsplit.setResizeWeight(0.3);
         tabs.addTab("Calibration", split);
@@ -243,7 +240,7 @@ public final class CalibrationPanel extends JPanel {
         effects.setCaretPosition(0);
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
         all.addAll(r.validate());
-        plot.set(all, Double.isFinite(r.sigmaPosM()) ? r.sigmaPosM() * 1e3 * Math.sqrt(3) : Double.NaN);
+        plot.show(errorFigure(all, Double.isFinite(r.sigmaPosM()) ? r.sigmaPosM() * 1e3 * Math.sqrt(3) : Double.NaN));
         tabs.setSelectedIndex(0);
         updateButtons();
     }
@@ -255,7 +252,7 @@ public final class CalibrationPanel extends JPanel {
         apply.setText(d.effects().isEmpty() ? "Apply calibrated model..." : "Apply extended model...");
         findings.setText(diagnosisReport(d));
         findings.setCaretPosition(0);
-        rmsChart.set(d);
+        rmsChart.show(rmsFigure(d));
         tabs.setSelectedIndex(1);
     }
 
@@ -409,130 +406,39 @@ public final class CalibrationPanel extends JPanel {
         return true;
     }
 
-    /** Bars of the RMS error: geometric model, then after each effect; training dark, validation light. */
-    private static final class RmsChart extends JPanel {
-        private final List<String> labels = new ArrayList<>();
-        private final List<double[]> values = new ArrayList<>(); // {train, validate} m
-        private double floorM = Double.NaN;
-
-        void set(Diagnosis d) {
-            labels.clear();
-            values.clear();
-            labels.add("geometric");
-            values.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
-            for (Diagnosis.Finding f : d.effects()) {
-                labels.add("+ " + f.effect().label());
-                values.add(new double[] {f.trainRmsM(), f.validateRmsM()});
-            }
-            floorM = Math.sqrt(3) * d.sigmaM();
-            repaint();
-        }
-
-        @Override
-        protected void paintComponent(Graphics g0) {
-            super.paintComponent(g0);
-            Graphics2D g = (Graphics2D) g0;
-            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-            var in = getInsets();
-            int x0 = in.left + 8, y0 = in.top + 4, w = getWidth() - x0 - in.right - 8, h = getHeight() - y0 - in.bottom - 18;
-            g.setColor(Color.WHITE);
-            g.fillRect(x0, y0, w, h);
-            if (values.isEmpty() || w < 20 || h < 20) return;
-            double max = 0;
-            for (double[] v : values) for (double x : v) if (Double.isFinite(x)) max = Math.max(max, x);
-            if (max <= 0) return;
-            g.setFont(g.getFont().deriveFont(10f));
-            int slot = w / values.size(), bw = Math.max(4, Math.min(40, slot / 3));
-            for (int i = 0; i < values.size(); i++) {
-                int cx = x0 + slot * i + slot / 2;
-                for (int k = 0; k < 2; k++) {
-                    double v = values.get(i)[k];
-                    if (!Double.isFinite(v)) continue;
-                    int bh = (int) Math.round((h - 16) * v / max);
-                    int x = cx - bw + k * bw;
-                    g.setColor(k == 0 ? new Color(0xF07A1A) : new Color(0xF5B77F));
-                    g.fillRect(x, y0 + h - bh, bw - 2, bh);
-                    g.setColor(Color.DARK_GRAY);
-                    g.drawString(String.format(Locale.ROOT, "%.3f", v * 1e3), x, y0 + h - bh - 2);
-                }
-                String l = labels.get(i);
-                g.drawString(l, cx - g.getFontMetrics().stringWidth(l) / 2, y0 + h + 13);
-            }
-            if (Double.isFinite(floorM) && floorM < max) {
-                int y = y0 + h - (int) Math.round((h - 16) * floorM / max);
-                g.setColor(new Color(0x2E9E44));
-                g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
-                g.drawLine(x0, y, x0 + w, y);
-                g.drawString(String.format(Locale.ROOT, "noise floor %.3f mm", floorM * 1e3), x0 + 4, y - 3);
-            }
-            g.setColor(Color.DARK_GRAY);
-            g.drawString("mm (dark: training, light: validation)", x0 + w - 190, y0 + 12);
-        }
+    /**
+     * Sorted per-pose errors with the nominal (grey) and the calibrated model (orange), log
+     * scale, with the noise floor (mm; NaN: none drawn): the reports' figure routine.
+     */
+    static FigurePanel.Drawing errorFigure(List<CalibrationResult.PoseError> es, double noiseFloorMm) {
+        double[] before = es.stream().mapToDouble(e -> e.nominalM() * 1e3).sorted().toArray();
+        double[] after = es.stream().mapToDouble(e -> e.calibratedM() * 1e3).sorted().toArray();
+        double[] rank = new double[before.length];
+        for (int i = 0; i < rank.length; i++) rank[i] = i + 1;
+        List<Svg.Series> series = List.of(new Svg.Series("nominal model", rank, before, "#8a9099", true),
+                new Svg.Series("calibrated model", rank, after, "#f07a1a", true));
+        List<Svg.Line> lines = noiseFloorMm > 0 ? List.of(new Svg.Line("noise floor (√3·σ)", noiseFloorMm, "#2e7d32")) : List.of();
+        return (c, w, h) -> Figure.plot(c, w, h, "", "pose, sorted by error", "error (mm)", series, true, lines);
     }
 
-    /** Sorted per-pose errors before (grey) and after (orange) calibration, log scale. */
-    private static final class ErrorPlot extends JPanel {
-        private double[] before = new double[0], after = new double[0];
-        private double noiseMm = Double.NaN;
-
-        /** The poses' errors and the noise floor (mm; NaN: none drawn). */
-        void set(List<CalibrationResult.PoseError> es, double noiseFloorMm) {
-            before = es.stream().mapToDouble(CalibrationResult.PoseError::nominalM).sorted().toArray();
-            after = es.stream().mapToDouble(CalibrationResult.PoseError::calibratedM).sorted().toArray();
-            noiseMm = noiseFloorMm;
-            repaint();
+    /**
+     * Bars of the RMS error (mm): the geometric model, then after each effect; training dark,
+     * validation light; the noise floor dashed.
+     */
+    static FigurePanel.Drawing rmsFigure(Diagnosis d) {
+        List<String> cats = new ArrayList<>();
+        List<double[]> v = new ArrayList<>();
+        cats.add("geometric");
+        v.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
+        for (Diagnosis.Finding f : d.effects()) {
+            cats.add("+ " + f.effect().label());
+            v.add(new double[] {f.trainRmsM(), f.validateRmsM()});
         }
-
-        @Override
-        protected void paintComponent(Graphics g0) {
-            super.paintComponent(g0);
-            Graphics2D g = (Graphics2D) g0;
-            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-            var in = getInsets();
-            int x0 = in.left + 46, y0 = in.top + 6, w = getWidth() - x0 - in.right - 8, h = getHeight() - y0 - in.bottom - 20;
-            g.setColor(Color.WHITE);
-            g.fillRect(x0, y0, w, h);
-            if (before.length == 0 || w < 10 || h < 10) return;
-            // The reports' axis routine: decades around the data (mm, log scale).
-            double min = Double.POSITIVE_INFINITY, max = 0;
-            for (double[] a : new double[][] {before, after})
-                for (double v : a) if (v > 0) { min = Math.min(min, v * 1e3); max = Math.max(max, v * 1e3); }
-            if (noiseMm > 0) { min = Math.min(min, noiseMm); max = Math.max(max, noiseMm); }
-            org.robopro.calibration.report.Axis.Ticks t = org.robopro.calibration.report.Axis.log(min, max);
-            double lo = t.lo(), hi = t.hi();
-            g.setFont(g.getFont().deriveFont(10f));
-            for (int i = 0; i < t.values().length; i++) {
-                int y = y0 + h - (int) Math.round(h * t.fraction(t.values()[i]));
-                g.setColor(new Color(0xE0E0E0));
-                g.drawLine(x0, y, x0 + w, y);
-                g.setColor(Color.DARK_GRAY);
-                g.drawString(t.labels()[i], in.left + 2, y + 4);
-            }
-            g.drawString("mm; poses sorted by error", x0 + w / 2 - 60, y0 + h + 15);
-            if (noiseMm > 0) {
-                int y = y0 + h - (int) Math.round(h * t.fraction(noiseMm));
-                g.setColor(new Color(0x2E7D32));
-                g.setStroke(new java.awt.BasicStroke(1.2f, java.awt.BasicStroke.CAP_BUTT, java.awt.BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
-                g.drawLine(x0, y, x0 + w, y);
-                g.drawString("noise floor", x0 + 4, y - 3);
-                g.setStroke(new java.awt.BasicStroke());
-            }
-            curve(g, before, new Color(0x8A9099), x0, y0, w, h, lo, hi);
-            curve(g, after, new Color(0xF07A1A), x0, y0, w, h, lo, hi);
-        }
-
-        private static void curve(Graphics2D g, double[] v, Color c, int x0, int y0, int w, int h, double lo, double hi) {
-            g.setColor(c);
-            g.setStroke(new BasicStroke(2f));
-            int px = -1, py = -1;
-            for (int i = 0; i < v.length; i++) {
-                double mm = Math.max(lo, Math.min(hi, v[i] * 1e3));
-                int x = x0 + (int) Math.round(w * (v.length == 1 ? 0.5 : (double) i / (v.length - 1)));
-                int y = y0 + h - (int) Math.round(h * Math.log10(mm / lo) / Math.log10(hi / lo));
-                if (px >= 0) g.drawLine(px, py, x, y);
-                px = x;
-                py = y;
-            }
-        }
+        double[] train = v.stream().mapToDouble(x -> x[0] * 1e3).toArray(), val = v.stream().mapToDouble(x -> x[1] * 1e3).toArray();
+        List<Svg.Series> series = List.of(new Svg.Series("training", null, train, "#f07a1a", false),
+                new Svg.Series("validation", null, val, "#f5b77f", false));
+        double floor = Math.sqrt(3) * d.sigmaM() * 1e3;
+        List<Svg.Line> lines = floor > 0 ? List.of(new Svg.Line("noise floor (√3·σ)", floor, "#2e9e44")) : List.of();
+        return (c, w, h) -> Figure.bars(c, w, h, "", "RMS (mm)", cats, series, lines, "%.3f");
     }
 }

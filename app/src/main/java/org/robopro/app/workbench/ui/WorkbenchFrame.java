@@ -455,6 +455,7 @@ public final class WorkbenchFrame extends JFrame {
         def("view-iso", "Isometric view", "F4", e -> app.camera().view(CameraState.View.ISO));
         def("show-frames", "Show frames (joint axes)", null, e -> wb.model().setShowFrames(!wb.model().showFrames()));
         def("show-path", "Show targets and path", null, e -> wb.model().setShowPath(!wb.model().showPath()));
+        def("show-shadows", "Shadows", null, e -> wb.model().setShadows(!wb.model().shadows()));
         def("teach", "Teach target", "ctrl T", e -> wb.teach());
         def("add-movej", "Add MoveJ", null, e -> program.addMove(Instruction.Type.MOVEJ));
         def("add-movel", "Add MoveL", null, e -> program.addMove(Instruction.Type.MOVEL));
@@ -506,12 +507,55 @@ public final class WorkbenchFrame extends JFrame {
         return m;
     }
 
+    /**
+     * View: the standard views, the frames (all of the robot's at once, or each kind on its own
+     * in the Frames submenu), targets and path, shadows; the check marks follow the model each
+     * time the menu opens.
+     */
+    private JMenu viewMenu() {
+        JMenu view = menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames");
+        JMenu frames = new JMenu("Frames");
+        frames.setName("menu-frames");
+        java.util.Map<WorkbenchModel.FrameKind, JCheckBoxMenuItem> items = new java.util.EnumMap<>(WorkbenchModel.FrameKind.class);
+        for (WorkbenchModel.FrameKind k : WorkbenchModel.FrameKind.values()) {
+            JCheckBoxMenuItem it = new JCheckBoxMenuItem(k.label());
+            it.setName("menu-frame-" + k.name().toLowerCase(java.util.Locale.ROOT));
+            it.addActionListener(e -> wb.model().setFrameShown(k, it.isSelected()));
+            items.put(k, it);
+            frames.add(it);
+        }
+        view.add(frames);
+        for (String id : new String[] {"show-path", "show-shadows"}) {
+            JCheckBoxMenuItem it = new JCheckBoxMenuItem(action(id));
+            it.setName("menu-" + id);
+            view.add(it);
+        }
+        view.addMenuListener(new javax.swing.event.MenuListener() {
+            @Override public void menuSelected(javax.swing.event.MenuEvent e) {
+                WorkbenchModel m = wb.model();
+                for (var en : items.entrySet()) en.getValue().setSelected(m.frameShown(en.getKey()));
+                for (java.awt.Component c : view.getMenuComponents()) {
+                    if (!(c instanceof JCheckBoxMenuItem it) || it.getName() == null) continue;
+                    switch (it.getName()) {
+                        case "menu-show-frames" -> it.setSelected(m.showFrames());
+                        case "menu-show-path" -> it.setSelected(m.showPath());
+                        case "menu-show-shadows" -> it.setSelected(m.shadows());
+                        default -> { }
+                    }
+                }
+            }
+            @Override public void menuDeselected(javax.swing.event.MenuEvent e) { }
+            @Override public void menuCanceled(javax.swing.event.MenuEvent e) { }
+        });
+        return view;
+    }
+
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
         bar.add(menu("File", KeyEvent.VK_F, "new", "open", "save", "save-as", null, "import-rapid", "export-rapid", "screenshot", null, "exit"));
         bar.add(menu("Edit", KeyEvent.VK_E, "undo", "redo", null, "delete"));
         bar.add(menu("Cell", KeyEvent.VK_C, "add-table", "add-fixture", "add-part", "import-mesh", null, "edit-tool", "robot-wizard", null, "delete"));
-        bar.add(menu("View", KeyEvent.VK_V, "view-front", "view-top", "view-side", "view-iso", null, "show-frames", "show-path"));
+        bar.add(viewMenu());
         bar.add(menu("Program", KeyEvent.VK_P, "teach", "add-movej", "add-movel", "add-movec", null, "check", "import-rapid", "export-rapid"));
         bar.add(menu("Controller", KeyEvent.VK_R, "connect", "disconnect", null, "download", "upload", "run", null, "read-position"));
         bar.add(menu("Calibration", KeyEvent.VK_A, "calibration"));

@@ -11,8 +11,8 @@ import org.robopro.models.InputException;
 import org.robopro.programs.Declaration;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.RobTarget;
-import org.robopro.programs.rapid.RapidParser;
-import org.robopro.programs.rapid.RapidWriter;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidWriter;
 
 class ProgramModuleTest {
     static WorkbenchModel model() {

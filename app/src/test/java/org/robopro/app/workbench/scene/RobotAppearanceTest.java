@@ -28,10 +28,10 @@ class RobotAppearanceTest {
 
     @Test
     void shippedMeshes_eachLinkMeshSurroundsItsJointAxis() throws Exception {
-        for (var e : RobotState.SHIPPED_MESHES.entrySet()) {
+        for (var e : org.robopro.app.workbench.model.ShippedMeshes.BY_ROBOT.entrySet()) {
             RobotDescription d = RobotLibrary.shipped(e.getKey());
-            for (RobotState.ShippedPart part : e.getValue()) {
-                String res = "/org/robopro/app/workbench/meshes/" + e.getKey() + "/" + part.file() + ".stl";
+            for (org.robopro.app.workbench.model.ShippedMeshes.Part part : e.getValue()) {
+                String res = org.robopro.app.workbench.model.ShippedMeshes.resource(e.getKey(), part);
                 BoundingBox b;
                 try (InputStream in = RobotState.class.getResourceAsStream(res)) {
                     assertNotNull(in, res);

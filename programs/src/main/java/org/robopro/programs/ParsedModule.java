@@ -1,10 +1,10 @@
-package org.robopro.programs.rapid;
+package org.robopro.programs;
 
 import java.util.IdentityHashMap;
 import java.util.Map;
 import java.util.Optional;
-import org.robopro.programs.RapidModule;
-import org.robopro.programs.Statement;
+import org.robopro.programs.rapid.ParsedAst;
+import org.robopro.programs.rapid.SourcePos;
 
 /** A parsed module together with where each statement was written (for error messages) and its syntax tree. */
 public final class ParsedModule {

@@ -1,4 +1,4 @@
-package org.robopro.programs.rapid;
+package org.robopro.programs;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -10,31 +10,13 @@ import java.util.Map;
 import java.util.Set;
 import org.robopro.kinematics.Units;
 import org.robopro.models.Vec3;
-import org.robopro.programs.AstItem;
-import org.robopro.programs.AstStatement;
-import org.robopro.programs.Comment;
-import org.robopro.programs.Declaration;
-import org.robopro.programs.ExtJoints;
-import org.robopro.programs.JointTarget;
-import org.robopro.programs.LoadData;
-import org.robopro.programs.ModuleItem;
-import org.robopro.programs.Move;
-import org.robopro.programs.ProcCall;
-import org.robopro.programs.Procedure;
-import org.robopro.programs.Quaternion;
-import org.robopro.programs.RapidModule;
-import org.robopro.programs.RapidPose;
-import org.robopro.programs.RapidValue;
-import org.robopro.programs.Ref;
-import org.robopro.programs.RobTarget;
-import org.robopro.programs.SpeedData;
-import org.robopro.programs.Statement;
-import org.robopro.programs.ToolData;
-import org.robopro.programs.WObjData;
-import org.robopro.programs.WaitTime;
-import org.robopro.programs.ZoneData;
 import org.robopro.programs.rapid.RapidAst.Arg;
 import org.robopro.programs.rapid.RapidAst.Expr;
+import org.robopro.programs.rapid.RapidAst;
+import org.robopro.programs.rapid.RapidAstWriter;
+import org.robopro.programs.rapid.RapidExport;
+import org.robopro.programs.rapid.RapidNames;
+import org.robopro.programs.rapid.RapidNumbers;
 
 /**
  * Writes a {@link RapidModule} as a RAPID module a controller loads: the typed module becomes the
@@ -245,21 +227,7 @@ public final class RapidWriter {
 
     private static Expr agg(Expr... items) { return new RapidAst.Aggregate(List.of(items)); }
 
-    /**
-     * A RAPID string literal: backslashes doubled, the quote and control characters as a
-     * backslash and two hex digits (RAPID also allows a doubled quote, but rapidchecker 0.1.5
-     * rejects it; backslash 22 is the same character and passes both).
-     */
-    static Expr quoted(String s) {
-        StringBuilder b = new StringBuilder();
-        for (char c : s.toCharArray()) {
-            if (c == '"') b.append("\\22");
-            else if (c == '\\') b.append("\\\\");
-            else if (c < ' ' || c > '~') b.append(String.format("\\%02X", (int) (c & 0xFF)));
-            else b.append(c);
-        }
-        return new RapidAst.Str(b.toString());
-    }
+    private static Expr quoted(String s) { return RapidAst.Str.of(s); }
 
     private static Expr bool(boolean b) { return new RapidAst.Bool(b); }
 

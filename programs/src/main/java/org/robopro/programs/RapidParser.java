@@ -1,4 +1,4 @@
-package org.robopro.programs.rapid;
+package org.robopro.programs;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -13,30 +13,12 @@ import org.robopro.kinematics.ConfData;
 import org.robopro.kinematics.Units;
 import org.robopro.models.InputException;
 import org.robopro.models.Vec3;
-import org.robopro.programs.AstItem;
-import org.robopro.programs.AstStatement;
-import org.robopro.programs.Comment;
-import org.robopro.programs.Declaration;
-import org.robopro.programs.ExtJoints;
-import org.robopro.programs.JointTarget;
-import org.robopro.programs.LoadData;
-import org.robopro.programs.ModuleItem;
-import org.robopro.programs.Move;
-import org.robopro.programs.ProcCall;
-import org.robopro.programs.Procedure;
-import org.robopro.programs.Quaternion;
-import org.robopro.programs.RapidModule;
-import org.robopro.programs.RapidPose;
-import org.robopro.programs.RapidValue;
-import org.robopro.programs.Ref;
-import org.robopro.programs.RobTarget;
-import org.robopro.programs.SpeedData;
-import org.robopro.programs.Statement;
-import org.robopro.programs.ToolData;
-import org.robopro.programs.WObjData;
-import org.robopro.programs.WaitTime;
-import org.robopro.programs.ZoneData;
 import org.robopro.programs.rapid.RapidAst.Expr;
+import org.robopro.programs.rapid.ParsedAst;
+import org.robopro.programs.rapid.RapidAst;
+import org.robopro.programs.rapid.RapidAstParser;
+import org.robopro.programs.rapid.RapidAstWriter;
+import org.robopro.programs.rapid.SourcePos;
 
 /**
  * Reads RAPID modules. The whole RAPID kernel grammar is parsed into a {@link RapidAst}
@@ -69,16 +51,10 @@ public final class RapidParser {
 
     /** Like {@link #parse} and also keeps each statement's position and the syntax tree. */
     public static ParsedModule parseDetailed(String text, String fileName) {
-        ParsedAst a = parseAst(text, fileName);
+        ParsedAst a = RapidAstParser.parse(text, fileName);
         RapidParser p = new RapidParser(a);
         RapidModule m = p.module(a.module());
         return new ParsedModule(m, p.file, p.positions, a);
-    }
-
-    /** The syntax tree of RAPID module text (the full grammar; nothing is interpreted). */
-    public static ParsedAst parseAst(String text, String fileName) {
-        if (text == null) throw new IllegalArgumentException("text must not be null");
-        return RapidAstParser.parse(text, fileName == null ? "<rapid>" : fileName);
     }
 
     /**
@@ -87,7 +63,7 @@ public final class RapidParser {
      * in {@code where} when known.
      */
     public static RapidValue literalValue(String type, Expr e, String file, String field) {
-        RapidParser p = new RapidParser(new ParsedAst(new RapidAst.Module("M", List.of(), List.of()), file, new IdentityHashMap<>()));
+        RapidParser p = new RapidParser(ParsedAst.of(new RapidAst.Module("M", List.of(), List.of()), file));
         if (!TYPES.contains(type)) throw new InputException(file, 0, 0, field, "data type '" + type + "' is not a typed value");
         try {
             return p.convertChecked(type, e, field);
@@ -127,7 +103,7 @@ public final class RapidParser {
     private int nameColumn(RapidAst.Item it, SourcePos at) { return at.column() + (it instanceof RapidAst.DataDecl d ? declOffset(d) : 0); }
 
     private static int declOffset(RapidAst.DataDecl d) {
-        int o = d.scope() == Declaration.Scope.GLOBAL ? 0 : d.scope().name().length() + 1;
+        int o = d.scope() == RapidAst.Scope.GLOBAL ? 0 : d.scope().name().length() + 1;
         return o + d.storage().name().length() + 1 + d.type().length() + 1;
     }
 

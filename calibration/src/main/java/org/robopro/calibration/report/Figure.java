@@ -1,0 +1,205 @@
+package org.robopro.calibration.report;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.robopro.calibration.report.Svg.Line;
+import org.robopro.calibration.report.Svg.Series;
+
+/**
+ * The one figure routine of robopro: scatter/line plots, bar charts and histograms laid out once
+ * — title, legend row between the title and the plot (never over the data), axes with the
+ * {@link Axis} ticks, grid, dashed reference lines (noise floor) — and drawn on a
+ * {@link Canvas}: {@link Svg} turns the drawing into inline SVG for the HTML reports, the
+ * workbench panels paint the same drawing with Java2D, so a report figure and a panel figure of
+ * the same data look alike.
+ */
+public final class Figure {
+    private Figure() { }
+
+    /** Where drawing goes: coordinates in pixels from the top left; colours as "#rrggbb". */
+    public interface Canvas {
+        void line(double x1, double y1, double x2, double y2, String color, double width, boolean dashed);
+        void rect(double x, double y, double w, double h, String color, double opacity);
+        void circle(double cx, double cy, double r, String color);
+        void polyline(double[] xs, double[] ys, int n, String color, double width);
+        /** Text at baseline point (x, y); anchor -1 start, 0 middle, 1 end; rotated -90° when {@code vertical}. */
+        void text(double x, double y, String s, int anchor, double size, boolean bold, boolean vertical);
+        /** Width of {@code s} at {@code size} (for the legend and labels that must not overlap). */
+        double textWidth(String s, double size);
+    }
+
+    /** The plot area inside a w x h figure: left, top, right, bottom in pixels. */
+    record Area(double l, double t, double r, double b) {
+        double sx(Axis.Ticks t, double x) { return l + t.fraction(x) * (r - l); }
+        double sy(Axis.Ticks tk, double y) { return b - tk.fraction(y) * (b - t); }
+    }
+
+    private static final double FONT = 11, TITLE = 13;
+
+    /** Room for the title (when there is one) and the legend row above the plot. */
+    private static Area area(double w, double h, String title, Axis.Ticks yt, Canvas c) {
+        double labelW = 0;
+        for (String l : yt.labels()) labelW = Math.max(labelW, c.textWidth(l, FONT));
+        double left = Math.max(50, 24 + labelW + 6);
+        double top = (title == null || title.isEmpty() ? 0 : 20) + 22;
+        return new Area(left, top, w - 15, h - 40);
+    }
+
+    /** Points (or polylines) per series against x, with reference lines; {@code logY} plots log10 of positive values. */
+    public static void plot(Canvas c, double w, double h, String title, String xLabel, String yLabel, List<Series> series,
+                            boolean logY, List<Line> lines) {
+        double xmin = Double.POSITIVE_INFINITY, xmax = Double.NEGATIVE_INFINITY, ymin = Double.POSITIVE_INFINITY, ymax = Double.NEGATIVE_INFINITY;
+        for (Series s : series)
+            for (int i = 0; i < s.x().length; i++) {
+                double y = s.y()[i];
+                if (!Double.isFinite(y) || (logY && !(y > 0))) continue;
+                xmin = Math.min(xmin, s.x()[i]); xmax = Math.max(xmax, s.x()[i]);
+                ymin = Math.min(ymin, y); ymax = Math.max(ymax, y);
+            }
+        for (Line l : lines) if (Double.isFinite(l.y()) && (!logY || l.y() > 0)) { ymin = Math.min(ymin, l.y()); ymax = Math.max(ymax, l.y()); }
+        if (!Double.isFinite(xmin)) { xmin = 0; xmax = 1; }
+        if (!Double.isFinite(ymin)) { ymin = logY ? 0.1 : 0; ymax = 1; }
+        Axis.Ticks xt = Axis.linear(xmin, xmax, Math.max(2, (int) (w / 90)));
+        Axis.Ticks yt = logY ? Axis.log(ymin, ymax) : Axis.linear(Math.min(0, ymin), ymax, Math.max(2, (int) (h / 55)));
+        Area a = area(w, h, title, yt, c);
+        frame(c, w, h, a, title, xLabel, yLabel, xt, yt, null);
+        for (Series s : series) {
+            double[] xs = new double[s.x().length], ys = new double[s.x().length];
+            int n = 0;
+            for (int i = 0; i < s.x().length; i++) {
+                double y = s.y()[i];
+                if (!Double.isFinite(y) || (logY && !(y > 0))) continue;
+                xs[n] = a.sx(xt, s.x()[i]);
+                ys[n] = a.sy(yt, y);
+                if (!s.line()) c.circle(xs[n], ys[n], 2.2, s.color());
+                n++;
+            }
+            if (s.line() && n > 0) c.polyline(xs, ys, n, s.color(), 1.6);
+        }
+        List<Key> keys = new ArrayList<>();
+        for (Series s : series) keys.add(new Key(s.name(), s.color(), false));
+        referenceLines(c, a, yt, logY, lines, keys);
+        legend(c, a, title, keys);
+    }
+
+    /**
+     * Bars per category (one bar of each series side by side, its value above it) with
+     * reference lines, on a linear axis from zero.
+     */
+    public static void bars(Canvas c, double w, double h, String title, String yLabel, List<String> categories,
+                            List<Series> series, List<Line> lines, String valueFormat) {
+        double max = 0;
+        for (Series s : series) for (double v : s.y()) if (Double.isFinite(v)) max = Math.max(max, v);
+        for (Line l : lines) if (Double.isFinite(l.y())) max = Math.max(max, l.y());
+        Axis.Ticks yt = Axis.linear(0, max > 0 ? max * 1.08 : 1, Math.max(2, (int) (h / 45)));
+        Area a = area(w, h, title, yt, c);
+        frame(c, w, h, a, title, "", yLabel, null, yt, categories);
+        int n = Math.max(1, categories.size());
+        double slot = (a.r() - a.l()) / n;
+        double bw = Math.max(3, Math.min(40, slot * 0.7 / Math.max(1, series.size())));
+        for (int i = 0; i < categories.size(); i++) {
+            double cx = a.l() + slot * (i + 0.5);
+            for (int k = 0; k < series.size(); k++) {
+                Series s = series.get(k);
+                if (i >= s.y().length || !Double.isFinite(s.y()[i])) continue;
+                double x = cx - bw * series.size() / 2 + k * bw, y = a.sy(yt, s.y()[i]);
+                c.rect(x + 1, y, bw - 2, a.b() - y, s.color(), 1);
+                c.text(x + bw / 2, y - 3, String.format(java.util.Locale.ROOT, valueFormat, s.y()[i]), 0, 10, false, false);
+            }
+        }
+        List<Key> keys = new ArrayList<>();
+        for (Series s : series) keys.add(new Key(s.name(), s.color(), false));
+        referenceLines(c, a, yt, false, lines, keys);
+        legend(c, a, title, keys);
+    }
+
+    /** Histograms of several samples over shared round bins (the axis's ticks fall on bin edges). */
+    public static void histogram(Canvas c, double w, double h, String title, String xLabel, List<Series> samples, int bins) {
+        double max = 0;
+        for (Series s : samples) for (double v : s.y()) if (Double.isFinite(v)) max = Math.max(max, v);
+        if (max == 0) max = 1;
+        Axis.Ticks xt = Axis.linear(0, max, Math.max(2, (int) (w / 90)));
+        double bw = Axis.step(xt.hi(), bins);
+        int nb = (int) Math.ceil(xt.hi() / bw - 1e-9);
+        double[][] counts = new double[samples.size()][nb];
+        double top = 0;
+        for (int k = 0; k < samples.size(); k++) {
+            double[] y = samples.get(k).y();
+            for (double v : y) {
+                if (!Double.isFinite(v)) continue;
+                counts[k][Math.min(nb - 1, (int) (v / bw))] += 1.0 / Math.max(1, y.length);
+            }
+            for (double n : counts[k]) top = Math.max(top, n);
+        }
+        Axis.Ticks yt = Axis.linear(0, top == 0 ? 1 : top, Math.max(2, (int) (h / 55)));
+        Area a = area(w, h, title, yt, c);
+        frame(c, w, h, a, title, xLabel, "fraction of poses", xt, yt, null);
+        double px = (a.sx(xt, bw) - a.sx(xt, 0)) / Math.max(1, samples.size());
+        for (int k = 0; k < samples.size(); k++)
+            for (int b = 0; b < nb; b++) {
+                double x0 = a.sx(xt, b * bw) + k * px, y0 = a.sy(yt, counts[k][b]);
+                c.rect(x0, y0, px * 0.95, a.b() - y0, samples.get(k).color(), 0.8);
+            }
+        List<Key> keys = new ArrayList<>();
+        for (Series s : samples) keys.add(new Key(s.name(), s.color(), false));
+        legend(c, a, title, keys);
+    }
+
+    private record Key(String name, String color, boolean line) { }
+
+    private static void referenceLines(Canvas c, Area a, Axis.Ticks yt, boolean logY, List<Line> lines, List<Key> keys) {
+        for (Line l : lines) {
+            if (!Double.isFinite(l.y()) || (logY && !(l.y() > 0))) continue;
+            double py = a.sy(yt, l.y());
+            c.line(a.l(), py, a.r(), py, l.color(), 1.4, true);
+            keys.add(new Key(l.name(), l.color(), true));
+        }
+    }
+
+    /**
+     * Title, axes, grid lines and tick labels. Y tick labels end 6 px left of the axis and the
+     * rotated y title sits at x = 12, left of the widest label. With {@code categories} the x axis
+     * carries category names under the slots instead of ticks.
+     */
+    private static void frame(Canvas c, double w, double h, Area a, String title, String xLabel, String yLabel,
+                              Axis.Ticks xt, Axis.Ticks yt, List<String> categories) {
+        c.rect(0, 0, w, h, "#ffffff", 1);
+        if (title != null && !title.isEmpty()) c.text(w / 2, 16, title, 0, TITLE, true, false);
+        for (int i = 0; i < yt.values().length; i++) {
+            double py = a.sy(yt, yt.values()[i]);
+            c.line(a.l(), py, a.r(), py, "#dddddd", 1, false);
+            c.text(a.l() - 6, py + 4, yt.labels()[i], 1, FONT, false, false);
+        }
+        if (xt != null)
+            for (int i = 0; i < xt.values().length; i++) {
+                double px = a.sx(xt, xt.values()[i]);
+                c.line(px, a.b(), px, a.b() + 4, "#333333", 1, false);
+                c.text(px, a.b() + 16, xt.labels()[i], 0, FONT, false, false);
+            }
+        if (categories != null) {
+            double slot = (a.r() - a.l()) / Math.max(1, categories.size());
+            for (int i = 0; i < categories.size(); i++) {
+                String s = categories.get(i);
+                double size = FONT;
+                while (size > 8 && c.textWidth(s, size) > slot - 4) size -= 0.5;
+                c.text(a.l() + slot * (i + 0.5), a.b() + 15, s, 0, size, false, false);
+            }
+        }
+        c.line(a.l(), a.b(), a.r(), a.b(), "#333333", 1, false);
+        c.line(a.l(), a.t(), a.l(), a.b(), "#333333", 1, false);
+        if (xLabel != null && !xLabel.isEmpty()) c.text((a.l() + a.r()) / 2, h - 6, xLabel, 0, FONT, false, false);
+        if (yLabel != null && !yLabel.isEmpty()) c.text(12, (a.t() + a.b()) / 2, yLabel, 0, FONT, false, true);
+    }
+
+    /** The legend as one row between the title and the plot area. */
+    private static void legend(Canvas c, Area a, String title, List<Key> keys) {
+        double x = a.l();
+        double y = a.t() - 10;
+        for (Key k : keys) {
+            if (k.line()) c.line(x, y - 3, x + 14, y - 3, k.color(), 1.4, true);
+            else c.rect(x + 2, y - 8, 10, 10, k.color(), 1);
+            c.text(x + 18, y + 1, k.name(), -1, FONT, false, false);
+            x += 30 + c.textWidth(k.name(), FONT);
+        }
+    }
+}
