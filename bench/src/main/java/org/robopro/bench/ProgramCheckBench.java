@@ -38,6 +38,7 @@ import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.collision.ClearanceChecker;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.ProgramStep;
+import org.robopro.programs.sim.Simulation;
 
 /**
  * Speed target (docs/performance.md): the path check of a 200-move program with collisions in
@@ -117,6 +118,12 @@ public class ProgramCheckBench {
     RapidModule speedEdit() {
         double v = 0.1 + 1e-4 * (1 + edits++ % 1000);
         return edited(101, ((Move) body.get(101)).withSpeedOverride(OptionalDouble.of(v), OptionalDouble.empty()));
+    }
+
+    /** The interpreter alone on an edited program (part of every edit benchmark; subtract it to see the check). */
+    @Benchmark
+    public Simulation editTargetInterpreterOnly() {
+        return MotionInterpreter.of(targetEdit()).simulate("main");
     }
 
     /** One move's target edited, the whole program checked again (interpreter + path check). */

@@ -227,21 +227,7 @@ public final class RapidWriter {
 
     private static Expr agg(Expr... items) { return new RapidAst.Aggregate(List.of(items)); }
 
-    /**
-     * A RAPID string literal: backslashes doubled, the quote and control characters as a
-     * backslash and two hex digits (RAPID also allows a doubled quote, but rapidchecker 0.1.5
-     * rejects it; backslash 22 is the same character and passes both).
-     */
-    static Expr quoted(String s) {
-        StringBuilder b = new StringBuilder();
-        for (char c : s.toCharArray()) {
-            if (c == '"') b.append("\\22");
-            else if (c == '\\') b.append("\\\\");
-            else if (c < ' ' || c > '~') b.append(String.format("\\%02X", (int) (c & 0xFF)));
-            else b.append(c);
-        }
-        return new RapidAst.Str(b.toString());
-    }
+    private static Expr quoted(String s) { return RapidAst.Str.of(s); }
 
     private static Expr bool(boolean b) { return new RapidAst.Bool(b); }
 

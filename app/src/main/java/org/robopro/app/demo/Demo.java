@@ -386,8 +386,9 @@ public final class Demo {
             begin(5);
             con.step(5, "Before and after");
             String concealed = DemoReport.concealedEffect(truthFile);
-            con.line("concealed effect (revealed now): %s; the diagnosis named: %s", concealed,
-                    diag.named().isEmpty() ? "nothing" : String.join(", ", diag.named()));
+            con.line("concealed effect (revealed now): %s; the diagnosis named: %s%s", concealed,
+                    diag.named().isEmpty() ? "nothing" : String.join(", ", diag.named()),
+                    diag.located().isEmpty() ? "" : "; located without a known cause: " + String.join(", ", diag.located()));
             Files.copy(truthFile, out.resolve("truth.json"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             Result r = new Result(nominalRun, calibratedRun, diagnosedRun, concealed, diag.named(), floorMm, con.elapsedS());
             for (String line : DemoReport.table(r).split("\n")) con.line("%s", line);

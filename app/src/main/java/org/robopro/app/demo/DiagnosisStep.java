@@ -36,8 +36,16 @@ final class DiagnosisStep {
 
         Outcome(Diagnosis d) { this.d = d; }
 
-        /** Effects named, as "kind jN" labels. */
-        List<String> named() { return d.effects().stream().map(f -> f.effect().label()).toList(); }
+        /** Physical effects named, as "kind jN" labels (a located structure of no known family is not named). */
+        List<String> named() { return d.effects().stream().filter(f -> !f.effect().isFallback()).map(f -> f.effect().label()).toList(); }
+
+        /** Structures located that no physical effect explains: those modelled by a fallback, then the others. */
+        List<String> located() {
+            List<String> out = new ArrayList<>();
+            for (Diagnosis.Finding f : d.effects()) if (f.effect().isFallback()) out.add(f.effect().label());
+            for (Diagnosis.Located l : d.located()) if (l.explainedBy() == null && !out.contains(l.shape())) out.add(l.shape());
+            return out;
+        }
 
         /** The tracker registration of the extended model's fit. */
         Pose instrumentTbase() { return d.finalInstrumentTbase(); }
@@ -83,8 +91,12 @@ final class DiagnosisStep {
         AtomicFiles.writeString(dir.resolve("report.html"), DiagnosisReport.html(d, ctx), true);
         con.line("diagnosed (%d candidate effects tested, %.0f ms): validation RMS %.4f mm (geometric) -> %.4f mm with the effects found",
                 d.candidatesTested(), d.elapsedMs(), Units.mToMm(d.geometricValidateRmsM()), Units.mToMm(d.finalValidateRmsM()));
+        for (String warning : d.warnings()) con.line("  first: %s", warning);
         if (d.effects().isEmpty()) con.line("  no non-geometric effect found");
-        for (Diagnosis.Finding f : d.effects()) con.line("  named: %s - %s", f.effect().label(), f.words());
+        for (Diagnosis.Finding f : d.effects())
+            con.line(f.effect().isFallback() ? "  located, no known effect explains it: %s - %s" : "  named: %s - %s", f.effect().label(), f.words());
+        for (Diagnosis.Located l : d.located())
+            if (l.explainedBy() == null && d.effects().stream().noneMatch(f -> f.effect().isFallback())) con.line("  located: %s", l.words());
         for (String r : d.recommendations()) con.line("  advice: %s", r);
         return new Outcome(d);
     }

@@ -11,8 +11,9 @@ import org.robopro.app.Main;
 import org.robopro.programs.RapidModule;
 import org.robopro.programs.RapidParser;
 
-class ProgramCommandTest {
-    static final String PROJECT = """
+public class ProgramCommandTest {
+    /** A program file of the former robopro-program format (taught targets, a jointtarget, three moves). */
+    public static final String PROJECT = """
             {"format": "robopro-program", "version": 1, "module": "Demo", "robot": "irb2000",
              "tools": {"tTorch": {"tframe": {"pos_mm": [0, 0, 150]}}},
              "jointtargets": {"jHome": {"joints_deg": [0, 0, 0, 0, 30, 0]}},

@@ -162,16 +162,7 @@ class ProjectStoreTest {
     void read_formerProgramFile_opensMigratedAsProject() throws Exception {
         // A file of the programs module's former format: taught targets (joints through FK) and typed ones.
         Path f = dir.resolve("demo.json");
-        Files.writeString(f, """
-                {"format": "robopro-program", "version": 1, "module": "Demo", "robot": "irb2000",
-                 "tools": {"tTorch": {"tframe": {"pos_mm": [0, 0, 150]}}},
-                 "jointtargets": {"jHome": {"joints_deg": [0, 0, 0, 0, 30, 0]}},
-                 "targets": {"pA": {"joints_deg": [17, 11, 6, 11, 40, -17], "tool": "tTorch"},
-                             "pB": {"joints_deg": [6, 17, 0, 6, 34, -6], "tool": "tTorch"}},
-                 "procedures": {"main": [{"move": "MoveAbsJ", "to": "jHome", "speed": "v1000", "zone": "fine", "tool": "tTorch"},
-                                         {"move": "MoveJ", "to": "pA", "speed": "v1000", "zone": "z10", "tool": "tTorch"},
-                                         {"move": "MoveL", "to": "pB", "speed": "v200", "zone": "fine", "tool": "tTorch"}]}}
-                """);
+        Files.writeString(f, org.robopro.app.cli.ProgramCommandTest.PROJECT);
         ProjectData d = ProjectStore.read(f);
         assertEquals("irb2000", d.robotRef());
         assertEquals("tTorch", d.tool().name());

@@ -61,17 +61,23 @@ class WorkbenchScenarioTest {
         return new String(all);
     }
 
-    /** Fraction of pixels in the rectangle close to ABB orange (the robot). */
-    static double orangeFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
+    /** Fraction of pixels in the rectangle whose red, green, blue pass {@code colour}. */
+    static double fraction(BufferedImage img, int x0, int y0, int x1, int y1, java.util.function.IntPredicate colour) {
         int n = 0, hit = 0;
         for (int y = y0; y < y1; y++)
             for (int x = x0; x < x1; x++) {
-                int c = img.getRGB(x, y);
-                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
                 n++;
-                if (r > 120 && r > g + 45 && g > b + 20 && b < 90) hit++;
+                if (colour.test(img.getRGB(x, y))) hit++;
             }
         return (double) hit / n;
+    }
+
+    /** Fraction of pixels in the rectangle close to ABB orange (the robot). */
+    static double orangeFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
+        return fraction(img, x0, y0, x1, y1, c -> {
+            int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+            return r > 120 && r > g + 45 && g > b + 20 && b < 90;
+        });
     }
 
     static int colourCount(BufferedImage img) {
@@ -289,6 +295,51 @@ class WorkbenchScenarioTest {
         assertEquals(1024, img.getWidth());
         assertEquals(640, img.getHeight());
         assertTrue(orangeFraction(img, 0, 0, img.getWidth(), img.getHeight()) * img.getWidth() * img.getHeight() > 1500, "no robot in the screenshot");
+    }
+
+    /** Fraction of pixels in the rectangle of the PUMA's warm light grey castings (neither the bluish floor nor the sky). */
+    static double creamFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
+        return fraction(img, x0, y0, x1, y1, c -> {
+            int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+            return r > 120 && r >= g && g >= b && r - b >= 6 && r - b < 45;
+        });
+    }
+
+    /**
+     * Every shipped robot drawn from its own model (IRB 2000 procedural, IRB 2400 and PUMA 560
+     * meshes) at the same pose: one --screenshot each, the robots cut out side by side into
+     * docs/images/workbench-robots.png when -Drobopro.docImages is set.
+     */
+    @Test
+    void screenshotCommand_shippedRobots_eachDrawnFromItsModel() throws Exception {
+        String[] robots = {"irb2000", "irb2400", "puma560"};
+        int cw = 300, ch = 280, k = 2;
+        BufferedImage sheet = new BufferedImage(cw * k * robots.length, ch * k, BufferedImage.TYPE_INT_RGB);
+        var g = sheet.createGraphics();
+        g.setRenderingHint(java.awt.RenderingHints.KEY_INTERPOLATION, java.awt.RenderingHints.VALUE_INTERPOLATION_BICUBIC);
+        for (int i = 0; i < robots.length; i++) {
+            Path project = SHOTS.resolve("robot-" + robots[i] + ".robopro.json").toAbsolutePath();
+            Files.writeString(project, "{ \"format\" : \"robopro-project\", \"version\" : 2, \"cell\" : { \"format\" : \"robopro-cell 1\", "
+                    + "\"name\" : \"c\", \"robot\" : { \"ref\" : \"" + robots[i] + "\", \"base\" : { \"position\" : [ 0, 0, 0 ], "
+                    + "\"quaternion\" : [ 1, 0, 0, 0 ] } }, \"objects\" : [], \"tools\" : [], \"work_objects\" : [] }, \"targets\" : [], "
+                    + "\"programs\" : [ { \"name\" : \"main\", \"instructions\" : [] } ], \"calibration\" : { \"reference\" : null }, "
+                    + "\"workbench_state\" : { \"joints_deg\" : [ 30, 20, 20, 40, 30, 0 ] } }");
+            Path png = SHOTS.resolve("robot-" + robots[i] + ".png").toAbsolutePath();
+            Files.deleteIfExists(png);
+            Process p = java(display.display(), List.of(), "org.robopro.app.Main", "workbench", "--screenshot", png.toString(),
+                    "--project", project.toString(), "--size", "1280x720");
+            String log = finish(p, SHOTS.resolve("robot-" + robots[i] + ".log"), 120);
+            assertEquals(0, p.exitValue(), log);
+            BufferedImage img = ImageIO.read(png.toFile());
+            int x0 = 400, y0 = 70;
+            double robot = robots[i].equals("puma560") ? creamFraction(img, x0, y0, x0 + cw, y0 + ch) : orangeFraction(img, x0, y0, x0 + cw, y0 + ch);
+            assertTrue(robot * cw * ch > 2500, robots[i] + ": robot not drawn in its colours (" + Math.round(robot * cw * ch) + " pixels)");
+            g.drawImage(img.getSubimage(x0, y0, cw, ch), i * cw * k, 0, cw * k, ch * k, null);
+        }
+        g.dispose();
+        ImageIO.write(sheet, "png", SHOTS.resolve("robots.png").toFile());
+        String dir = System.getProperty("robopro.docImages");
+        if (dir != null && !dir.isBlank()) ImageIO.write(sheet, "png", Path.of(dir).resolve("workbench-robots.png").toFile());
     }
 
     @Test

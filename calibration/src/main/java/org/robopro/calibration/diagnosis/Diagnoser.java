@@ -374,7 +374,7 @@ public final class Diagnoser {
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
-        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), rows, aliasNotes);
+        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         // With validation data, an effect whose addition did not lower the validation error is not claimed.
         for (int k = selected.size() - 1; k >= 0; k--) {
             double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
@@ -525,10 +525,10 @@ public final class Diagnoser {
         return f;
     }
 
-    /** Families whose claim rests on a joint angle's (or the gravity torque's) shape: they must beat the fallbacks. */
+    /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
     private static boolean checkedAgainstFallbacks(Effect e) {
         return switch (e.kind()) {
-            case PERIODIC, SCALE, COUPLING, COMPLIANCE -> true;
+            case PERIODIC, SCALE, COUPLING, COMPLIANCE, THERMAL, THERMAL_LINK, DRIFT -> true;
             default -> false;
         };
     }
@@ -536,7 +536,9 @@ public final class Diagnoser {
     /**
      * The generic fallbacks of the variables a family explains: a per-joint smooth spline (at every
      * resolution the poses support) for a one-joint angle family, the two-joint probe for a
-     * coupling.
+     * coupling. Thermal growth and drift have none of their own (growth follows the arm's links; the
+     * point moving with time or temperature in any shape is what a drift is); they must beat the
+     * located ones that are not the point's own displacement.
      */
     static List<Effect> ownFallbacks(Effect e, List<Measurement> rows) {
         List<Effect> out = new ArrayList<>();
@@ -565,8 +567,9 @@ public final class Diagnoser {
      * given) — reported as an unexplained located structure, not as physics.
      */
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                  List<Effect> located, List<Measurement> rows, List<String> notes) {
+                                  List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
         int refinements = 0;
+        Set<String> withdrawn = new HashSet<>();
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -578,6 +581,9 @@ public final class Diagnoser {
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
                 for (Effect s : selected) rivals.remove(s.label());
+                if (e.kind() == Effect.Kind.DRIFT)
+                    rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
+                            && (f.along() == Effect.Along.TIME || f.along() == Effect.Along.TEMPERATURE));
                 double pressOwn = at.pressFull();
                 Effect best = null;
                 double bestPress = Double.POSITIVE_INFINITY;
@@ -611,6 +617,25 @@ public final class Diagnoser {
                 }
                 if (why == null) continue;
                 LOG.debug(why);
+                withdrawn.add(e.label());
+                if (best != null) {
+                    // Another family of the same structure that predicts better than the fallback takes its place (and is checked in turn).
+                    Effect alias = null;
+                    double aliasPress = bestPress;
+                    for (Effect a : aliases(e, family, selected)) {
+                        if (withdrawn.contains(a.label()) || !checkedAgainstFallbacks(a)) continue;
+                        double pa = at.pressReplacing(k, a, w.conditions);
+                        if (pa < aliasPress) { aliasPress = pa; alias = a; }
+                    }
+                    if (alias != null) {
+                        int before = selected.size();
+                        fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, alias, true);
+                        notes.add(e.label() + " was replaced by " + alias.label() + ", which predicts left-out poses better than "
+                                + "both it and the located structure's fallback" + (selected.size() == before ? "" : " (but did not hold on held-out data)"));
+                        changed = true;
+                        continue;
+                    }
+                }
                 int before = selected.size();
                 fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
                 notes.add(why + (selected.size() == before ? "; " + best.label() + " models the structure instead (held-out error lower)"
@@ -619,17 +644,17 @@ public final class Diagnoser {
             }
             if (!changed) break;
         }
-        // A smooth fallback takes the resolution that predicts left-out poses best (a bump needs finer knots than a drift).
+        // A smooth fallback takes the resolution that predicts left-out poses best (a bump needs finer knots than a drift),
+        // a zero step the time between two poses that does.
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
-            if (e.kind() != Effect.Kind.SMOOTH) continue;
+            List<Effect> variants = refinements(e, w, rows);
+            if (variants.isEmpty()) continue;
             Tester at = w.tester(fit);
             double pressOwn = at.pressFull();
             Effect best = null;
             double bestPress = pressOwn;
-            for (int nb : Effect.SMOOTH_RESOLUTIONS) {
-                if (nb == e.basisCount() || nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > rows.size()) continue;
-                Effect f = Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb);
+            for (Effect f : variants) {
                 double pf = at.pressReplacing(k, f, w.conditions);
                 if (pf < bestPress) { bestPress = pf; best = f; }
             }
@@ -645,9 +670,30 @@ public final class Diagnoser {
             }
             fit = refined;
             k = -1;
-            if (selected.stream().filter(x -> x.kind() == Effect.Kind.SMOOTH).count() > 0 && ++refinements > 2 * MAX_LOCATED) break;
+            if (++refinements > 2 * MAX_LOCATED) break;
         }
         return fit;
+    }
+
+    /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
+    private static List<Effect> refinements(Effect e, Work w, List<Measurement> rows) {
+        List<Effect> out = new ArrayList<>();
+        if (e.kind() == Effect.Kind.SMOOTH) {
+            for (int nb : Effect.SMOOTH_RESOLUTIONS)
+                if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
+                    out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.ZERO_STEP) {
+            double[] t = w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
+            int at = 0;
+            while (at < t.length && t[at] <= e.tauS()) at++;
+            // the midpoints between the poses within a twentieth of the campaign either side
+            int reach = Math.max(1, t.length / Locator.STEP_QUANTILES);
+            for (int i = Math.max(1, at - reach); i <= Math.min(t.length - 1, at + reach); i++) {
+                double tau = 0.5 * (t[i - 1] + t[i]);
+                if (tau != e.tauS() && t[i] > t[i - 1]) out.add(Effect.zeroStep(e.joint(), tau));
+            }
+        }
+        return out;
     }
 
     /** The selected effect that explains a structure found after the geometric fit, or null. */
@@ -668,7 +714,14 @@ public final class Diagnoser {
                         return e;
                 }
                 case DIRECTION -> { if (k == Effect.Kind.BACKLASH && e.joint() == f.probe.joint) return e; }
-                case TIME, TEMPERATURE -> { if (thermal) return e; }
+                case TIME, TEMPERATURE -> {
+                    if (thermal || k == Effect.Kind.POINT_SMOOTH && f.probe.joint < 0) return e;
+                    if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
+                }
+                case TIME_STEP -> {
+                    if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
+                }
+                case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE) return e; }
                 case REACH, HEIGHT -> { return e; }
             }
@@ -729,8 +782,16 @@ public final class Diagnoser {
                     + "cables or counterbalance.", f.probe.joint + 1, f.probe.other + 1, f.probe.joint + 1);
             case DIRECTION -> String.format(Locale.ROOT, "approach each pose of joint %d from both directions and record "
                     + "dir1..dirN.", f.probe.joint + 1);
-            case TIME, TEMPERATURE -> "record temp_c near the arm and near the instrument, and re-measure a fixed reference "
+            case TIME, TEMPERATURE -> f.probe.joint >= 0
+                    ? String.format(Locale.ROOT, "re-measure a few fixed poses of joint %d every few minutes and record the drive's "
+                    + "temperature: a zero that creeps or warms up shows as a trend at the same pose.", f.probe.joint + 1)
+                    : "record temp_c near the arm and near the instrument, and re-measure a fixed reference "
                     + "point every few poses to separate the instrument's drift from the arm's growth.";
+            case TIME_STEP -> String.format(Locale.ROOT, "check joint %d's zero (its calibration mark or reference position) and "
+                    + "the log near %.0f s for a collision or an encoder fault; re-measure a few poses from before that time.",
+                    f.probe.joint + 1, f.probe.lo);
+            case PAYLOAD_REACH -> "measure the same poses stretched and folded with two or three payloads, and check the "
+                    + "stiffness of the arm and of the point's holder.";
             case PAYLOAD -> "measure with two or three payloads at the same poses to separate deflection from geometry.";
             case REACH, HEIGHT -> "measure the same poses with the arm stretched and folded and at several heights; check the "
                     + "instrument's scale and levelling, and sag of the arm or the measured point's holder.";
@@ -777,7 +838,7 @@ public final class Diagnoser {
         if (hasTime) out.add(Effect.driftWithTime());
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
-                out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT, f.probe.lo, f.probe.hi));
+                out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
         return out;
     }
 
@@ -794,7 +855,15 @@ public final class Diagnoser {
             switch (f.probe.var) {
                 case ANGLE_SMOOTH -> out.add(Effect.smooth(f.probe.joint, f.probe.lo, f.probe.hi, f.probe.basis));
                 case JOINT_PAIR -> out.add(Effect.pair(f.probe.joint, f.probe.other));
-                case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT, f.probe.lo, f.probe.hi));
+                case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH,
+                        f.probe.lo, f.probe.hi));
+                case TIME_STEP -> out.add(Effect.zeroStep(f.probe.joint, f.probe.lo));
+                case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
+                case TIME, TEMPERATURE -> {
+                    Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
+                    if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
+                    else if (!f.probe.lengths) out.add(Effect.pointSmooth(a, f.probe.lo, f.probe.hi));
+                }
                 default -> { }
             }
         return out;

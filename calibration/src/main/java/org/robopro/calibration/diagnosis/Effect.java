@@ -65,7 +65,9 @@ public final class Effect {
         COUPLING("joint-coupling", "Joint coupling"),
         SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family"),
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
-        POINT_SMOOTH("point-smooth-error", "Displacement of the measured point with its reach or height, of no known family");
+        POINT_SMOOTH("point-smooth-error", "Displacement of the measured point with its reach, height, time or temperature, of no known family"),
+        ZERO_DRIFT("joint-zero-drift", "Joint zero that moves with time or temperature, of no known family"),
+        ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family");
 
         public final String json;
         public final String title;
@@ -83,6 +85,21 @@ public final class Effect {
 
     /** Where an effect acts. */
     public enum Target { DRIVE, STRAIN, POSITION }
+
+    /** The variable of a fallback that follows a scalar: the measured point's reach or height, time, temperature. */
+    public enum Along {
+        REACH("reach", "reach", "m"), HEIGHT("height", "height", "m"), TIME("time", "time_s", "s"), TEMPERATURE("temperature", "temp_c", "°C"),
+        /** The payload times a smooth function of the reach: an arm that bends more with load the farther it reaches. */
+        PAYLOAD_REACH("payload and reach", "payload_reach", "m");
+
+        public final String words, key, unit;
+
+        Along(String words, String key, String unit) {
+            this.words = words;
+            this.key = key;
+            this.unit = unit;
+        }
+    }
 
     /** Harmonics of a default (single-stage) gear-periodic effect. */
     public static final int HARMONICS = 3;
@@ -110,7 +127,8 @@ public final class Effect {
     private final double lo, hi;             // smooth: range of q_j
     private final KinematicModel model;      // thermal-link: the frames
     private final int[] links;               // thermal-link: frame indices i whose vector s_i (frame i -> i+1) grows
-    private final int nBasis;                // smooth, point-smooth: spline functions (per axis)
+    private final int nBasis;                // smooth, point-smooth, zero-drift: spline functions (per axis)
+    private Along along;                     // point-smooth, zero-drift: the variable
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -188,20 +206,46 @@ public final class Effect {
      * {@link #POINT_BASIS} functions per axis) of its reach (distance from the base's z axis) or its
      * height, over [lo, hi] m.
      */
-    public static Effect pointSmooth(boolean height, double lo, double hi) {
+    public static Effect pointSmooth(Along along, double lo, double hi) {
         if (!(hi > lo)) throw new IllegalArgumentException("point displacement range " + lo + ".." + hi);
-        return new Effect(Kind.POINT_SMOOTH, -1, height ? 1 : 0, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null,
-                POINT_BASIS);
+        Effect e = new Effect(Kind.POINT_SMOOTH, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, POINT_BASIS);
+        e.along = along;
+        return e;
+    }
+
+    /**
+     * The zero of drive {@code joint} moves with time or temperature: Δq = a cubic B-spline
+     * ({@link #POINT_BASIS} functions) of the variable over [lo, hi]. An unknown time is taken as
+     * the end of the campaign (the state closest to a program run after it); an unknown
+     * temperature contributes nothing.
+     */
+    public static Effect zeroDrift(int joint, Along along, double lo, double hi) {
+        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a joint zero drifts with time or temperature");
+        if (!(hi > lo)) throw new IllegalArgumentException("zero drift range " + lo + ".." + hi);
+        Effect e = new Effect(Kind.ZERO_DRIFT, joint, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, POINT_BASIS);
+        e.along = along;
+        return e;
+    }
+
+    /**
+     * Drive {@code joint}'s zero jumps by v at time {@code tauS} (s since the start): an encoder slip.
+     * Δq = −v before the jump, 0 after it and at an unknown time (the state the campaign ended in).
+     */
+    public static Effect zeroStep(int joint, double tauS) {
+        if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
+        return new Effect(Kind.ZERO_STEP, joint, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null, 1);
     }
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
-    public boolean isFallback() { return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH; }
+    public boolean isFallback() {
+        return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP;
+    }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
     public int basisCount() { return nBasis; }
 
-    /** A point-smooth effect's variable: true for height, false for reach. */
-    public boolean alongHeight() { return kind == Kind.POINT_SMOOTH && source == 1; }
+    /** A point-smooth or zero-drift effect's variable (null for other kinds). */
+    public Along along() { return along; }
     /** ε = α (T − t0C). */
     public static Effect thermal(double t0C) {
         return new Effect(Kind.THERMAL, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, null, null);
@@ -263,7 +307,7 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * harmonics.length;
             case COMPLIANCE -> perMass ? gravity.massCount() : 1;
-            case SMOOTH, PAIR -> nBasis;
+            case SMOOTH, PAIR, ZERO_DRIFT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length;
             case DRIFT -> 3;
@@ -288,6 +332,8 @@ public final class Effect {
             case SMOOTH -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
             case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); }
             case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
+            case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
+            case ZERO_STEP -> out.add("step");
         }
         return out;
     }
@@ -303,7 +349,7 @@ public final class Effect {
     public List<String> units() {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
-            case PERIODIC, BACKLASH, SMOOTH, PAIR -> "rad";
+            case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP -> "rad";
             case POINT_SMOOTH -> "m";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
@@ -325,7 +371,9 @@ public final class Effect {
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (perMass ? " (masses re-estimated)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
-            case POINT_SMOOTH -> kind.json + (alongHeight() ? " (height)" : " (reach)");
+            case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
+            case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
+            case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             default -> kind.json + " j" + (joint + 1);
         };
     }
@@ -385,6 +433,14 @@ public final class Effect {
                 g[2] = cj * so;
                 g[3] = cj * co;
             }
+            // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
+            case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
+            case ZERO_DRIFT -> {
+                double x = along == Along.TIME ? c.timeS() : c.tempC();
+                if (!Double.isFinite(x) && along == Along.TIME) x = hi; // unknown time: the state the campaign ended in
+                if (Double.isFinite(x)) bspline(x, lo, hi, g);
+                else Arrays.fill(g, 0);
+            }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
@@ -401,7 +457,17 @@ public final class Effect {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
             case POINT_SMOOTH -> {
                 double[] b = new double[nBasis];
-                bspline(pointVariable(pointBase), lo, hi, b);
+                double u = switch (along) {
+                    case TIME -> Double.isFinite(c.timeS()) ? c.timeS() : hi; // unknown time: the state the campaign ended in
+                    case TEMPERATURE -> c.tempC();
+                    default -> pointVariable(pointBase);
+                };
+                if (!Double.isFinite(u)) break; // unknown conditions contribute nothing
+                bspline(u, lo, hi, b);
+                if (along == Along.PAYLOAD_REACH) {
+                    double load = Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
+                    for (int i = 0; i < nBasis; i++) b[i] *= load;
+                }
                 for (int a = 0; a < 3; a++) System.arraycopy(b, 0, g3, a * k + a * nBasis, nBasis);
             }
             case THERMAL_LINK -> {
@@ -420,9 +486,10 @@ public final class Effect {
         }
     }
 
-    /** A point-smooth effect's variable at a point (base frame, m): its reach or its height. */
+    /** A point-smooth effect's geometric variable at a point (base frame, m): its reach or its height (NaN for time, temperature). */
     public double pointVariable(double[] pointBase) {
-        return alongHeight() ? pointBase[2] : Math.hypot(pointBase[0], pointBase[1]);
+        return along == Along.HEIGHT ? pointBase[2]
+                : along == Along.REACH || along == Along.PAYLOAD_REACH ? Math.hypot(pointBase[0], pointBase[1]) : Double.NaN;
     }
 
     /** Uniform cubic B-spline basis (n = g.length functions) on [lo, hi] at x (clamped to the range). */
@@ -558,7 +625,8 @@ public final class Effect {
             case THERMAL, DRIFT -> { if (usesTimeProxy()) p.put("tau_s", tauS); else p.put("t0_c", t0C); }
             case THERMAL_LINK -> p.put("t0_c", t0C);
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
-            case POINT_SMOOTH -> { p.put(alongHeight() ? "height_min" : "reach_min", lo); p.put(alongHeight() ? "height_max" : "reach_max", hi); }
+            case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
+            case ZERO_STEP -> p.put("time_s_step", tauS);
             default -> { }
         }
         return new EffectDescription(kind.json, joints1(), p);
@@ -570,6 +638,10 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH -> 0; case COUPLING, PAIR -> 2; default -> 1; };
+        Along along = null;
+        for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
+        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT) && along == null)
+            throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
         if (js.size() != need)
             throw new InputException(file, 0, 0, "effects.joints", d.effect() + " needs " + need + " joints, got " + js);
         for (int j : js)
@@ -601,9 +673,13 @@ public final class Effect {
                 if (js.get(0).equals(js.get(1))) throw new InputException(file, 0, 0, "effects.joints", "joint-pair-error needs two different joints");
                 yield pair(js.get(0) - 1, js.get(1) - 1);
             }
-            case POINT_SMOOTH -> ps.containsKey("height_min")
-                    ? pointSmooth(true, require(d, "height_min", file), require(d, "height_max", file))
-                    : pointSmooth(false, require(d, "reach_min", file), require(d, "reach_max", file));
+            case POINT_SMOOTH -> pointSmooth(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
+            case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
+            case ZERO_DRIFT -> {
+                if (along != Along.TIME && along != Along.TEMPERATURE)
+                    throw new InputException(file, 0, 0, "effects.joint-zero-drift.parameters_si", "a joint zero drifts with time_s or temp_c");
+                yield zeroDrift(js.get(0) - 1, along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
+            }
             case THERMAL -> ps.containsKey("tau_s") ? thermalFromTime(ps.get("tau_s")) : thermal(require(d, "t0_c", file));
             case THERMAL_LINK -> thermalLinks(model, require(d, "t0_c", file));
             case DRIFT -> ps.containsKey("tau_s") ? driftWithTime() : driftWithTemperature(require(d, "t0_c", file));

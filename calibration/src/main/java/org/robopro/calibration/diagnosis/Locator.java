@@ -40,13 +40,17 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, JOINT_PAIR, DIRECTION, TIME, TEMPERATURE, PAYLOAD, REACH, HEIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT }
+
+    /** Candidate times of a joint's zero step: these quantiles of the poses' times. */
+    static final int STEP_QUANTILES = 20;
 
     /** One probe: a block of signature columns. */
     static final class Probe {
         Var var;
         int joint = -1, harmonic, other = -1, basis;
-        double lo, hi;              // range of the variable (smooth, reach, height)
+        double lo, hi;              // range of the variable (smooth, reach, height, time, temperature)
+        boolean lengths;            // a length change (not a point translation or a drive)
         String variable, shape, detail;
         double[] s;   // m x k, projected out of the model's span
         double[] n0;  // unprojected column norms
@@ -144,10 +148,35 @@ final class Locator {
         if (varies(time, 1)) {
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", true));
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", false));
+            for (int j = 0; j < dof; j++) out.add(zero(t, j, Var.TIME, time, "time", "time since the start (s)"));
+            double[] sorted = time.clone();
+            Arrays.sort(sorted);
+            double last = Double.NaN;
+            for (int k = 1; k < STEP_QUANTILES; k++) {
+                // the step between two poses' times, halfway
+                int i = k * poses / STEP_QUANTILES;
+                if (i < 3 || i > poses - 3) continue;
+                double tau = 0.5 * (sorted[i - 1] + sorted[i]);
+                if (tau == last) continue;
+                last = tau;
+                for (int j = 0; j < dof; j++) {
+                    final double tt = tau;
+                    Probe p = drive(t, j, 1, (pi, g) -> g[0] = time[pi] > tt ? 1 : 0);
+                    p.var = Var.TIME_STEP;
+                    p.joint = j;
+                    p.lo = tau;
+                    p.variable = "time";
+                    p.shape = String.format(Locale.ROOT, "joint %d's zero jumps at about %.0f s", j + 1, tau);
+                    p.x = time;
+                    p.xLabel = "time since the start (s)";
+                    out.add(p);
+                }
+            }
         }
         if (varies(temp, 0.5)) {
             out.add(scalar(t, Var.TEMPERATURE, temp, "temperature", "temperature (°C)", true));
             out.add(scalar(t, Var.TEMPERATURE, temp, "temperature", "temperature (°C)", false));
+            for (int j = 0; j < dof; j++) out.add(zero(t, j, Var.TEMPERATURE, temp, "temperature", "temperature (°C)"));
         }
         if (varies(pay, 0.1)) {
             double[][] tau = payloadTorques(t, pay);
@@ -169,11 +198,52 @@ final class Locator {
             height[i] = t.pointBase[i][2];
         }
         if (varies(reach, 0.05)) out.add(scalar(t, Var.REACH, reach, "reach of the measured point", "reach (m)", true));
+        if (varies(reach, 0.05) && varies(pay, 0.1)) {
+            Probe p = scalar(t, Var.PAYLOAD_REACH, reach, "payload and reach", "reach (m)", true);
+            // the same spline of reach, times the payload
+            double lo = p.lo, hi = p.hi;
+            int k = 3 * Effect.POINT_BASIS;
+            double[] s = new double[m * k], g = new double[Effect.POINT_BASIS];
+            for (int i = 0; i < poses; i++) {
+                Effect.bspline(reach[i], lo, hi, g);
+                for (int a = 0; a < rpp; a++) {
+                    int row = i * rpp + a;
+                    for (int b = 0; b < g.length; b++)
+                        for (int ax = 0; ax < 3; ax++) s[row * k + b * 3 + ax] = t.dTrans[row * 3 + ax] * g[b] * pay[i];
+                }
+            }
+            Probe q = finish(t, s, k);
+            q.var = Var.PAYLOAD_REACH;
+            q.variable = "payload and reach";
+            q.shape = "the measured point moves with the payload, the more the farther it reaches";
+            q.x = reach;
+            q.xLabel = "reach (m)";
+            q.lo = lo;
+            q.hi = hi;
+            q.basis = Effect.POINT_BASIS;
+            out.add(q);
+        }
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
         return out;
     }
 
     private interface Reg { void at(int pose, double[] g); }
+
+    /** Drive j's zero following a spline of x (time or temperature): encoder slip or creep, a drive warming up. */
+    private static Probe zero(Diagnoser.Tester t, int j, Var var, double[] x, String name, String xLabel) {
+        double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
+        Probe p = drive(t, j, Effect.POINT_BASIS, (i, g) -> Effect.bspline(x[i], lo, hi, g));
+        p.var = var;
+        p.joint = j;
+        p.variable = name;
+        p.shape = "joint " + (j + 1) + "'s zero moves with " + name;
+        p.x = x;
+        p.xLabel = xLabel;
+        p.lo = lo;
+        p.hi = hi;
+        p.basis = Effect.POINT_BASIS;
+        return p;
+    }
 
     private static Probe drive(Diagnoser.Tester t, int j, int k, Reg reg) {
         int m = t.m, rpp = t.rpp, poses = m / rpp;
@@ -206,6 +276,7 @@ final class Locator {
         }
         Probe p = finish(t, s, k);
         p.var = var;
+        p.lengths = !translation;
         p.variable = name;
         p.shape = translation ? "the measured point moves with " + name : "every length changes with " + name;
         p.x = x;

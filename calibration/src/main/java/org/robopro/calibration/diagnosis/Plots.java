@@ -69,7 +69,15 @@ final class Plots {
             case COMPLIANCE -> e.perMass() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
                     : "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
             case PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
-            case POINT_SMOOTH -> e.alongHeight() ? "height of the measured point (m)" : "reach of the measured point (m)";
+            case POINT_SMOOTH -> switch (e.along()) {
+                case REACH -> "reach of the measured point (m)";
+                case HEIGHT -> "height of the measured point (m)";
+                case TIME -> "time since start (s)";
+                case TEMPERATURE -> "temperature (°C)";
+                case PAYLOAD_REACH -> "reach of the measured point (m), times the payload";
+            };
+            case ZERO_STEP -> "time since start (s)";
+            case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case BACKLASH -> "approach direction dir" + (e.joint() + 1);
@@ -82,7 +90,10 @@ final class Plots {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()];
             case PERIODIC, SCALE, SMOOTH, PAIR -> Math.toDegrees(row.q(e.joint()));
-            case POINT_SMOOTH -> Double.NaN; // from the predicted point: alongDisplacement
+            case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
+                    : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
+            case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
+            case ZERO_STEP -> c.timeS();
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> c.direction(e.joint());
@@ -109,6 +120,14 @@ final class Plots {
                 yield s;
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
+            case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
+            case ZERO_DRIFT -> {
+                double[] g = new double[e.basisCount()];
+                Effect.bspline(x, e.rangeLo(), e.rangeHi(), g);
+                double s = 0;
+                for (int i = 0; i < g.length; i++) s += g[i] * v[i];
+                yield s;
+            }
             case BACKLASH -> -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING -> v[0] * Math.toRadians(x);
@@ -130,7 +149,8 @@ final class Plots {
             double n = Math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
             double along = 0;
             if (n > 0) for (int a = 0; a < 3; a++) along += c[a] / n * t.fit.r[i * rpp + a];
-            x[i] = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(t.pointBase[i]) : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
+            double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(t.pointBase[i]) : Double.NaN;
+            x[i] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
             y[i] = (n - along) * unit;
             fx[i] = x[i];
             fy[i] = n * unit;

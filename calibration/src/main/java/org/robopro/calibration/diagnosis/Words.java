@@ -44,10 +44,21 @@ final class Words {
                     + "poses, in products of their sines and cosines) and none of the known effects explains it; it is modelled "
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
                     Math.toDegrees(Math.sqrt((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) / 4)));
-            case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with its %s (a smooth displacement in the "
-                    + "base frame over %.2f..%.2f m) and none of the known effects explains it; it is modelled as such so "
-                    + "compensation can use it, but its cause is unknown (sag of the arm or the point's holder, the instrument's "
-                    + "scale or levelling).", e.alongHeight() ? "height" : "reach", e.rangeLo(), e.rangeHi());
+            case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with %s (a smooth displacement in the "
+                    + "base frame over %.4g..%.4g %s) and none of the known effects explains it; it is modelled as such so "
+                    + "compensation can use it, but its cause is unknown (%s).", e.along() == Effect.Along.REACH
+                    || e.along() == Effect.Along.HEIGHT ? "its " + e.along().words : e.along().words, e.rangeLo(), e.rangeHi(), e.along().unit,
+                    e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
+                            ? "sag of the arm or the point's holder, the instrument's scale or levelling"
+                            : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
+            case ZERO_STEP -> String.format(Locale.ROOT, "Joint %d's zero jumped by %.4f deg at about %.0f s into the campaign "
+                    + "and none of the known effects explains it (an encoder slip, a collision, a re-synchronisation); the poses "
+                    + "before and after it do not belong to one robot: re-measure after checking the joint's zero.", e.joint() + 1,
+                    Math.toDegrees(v[0]), e.tauS());
+            case ZERO_DRIFT -> String.format(Locale.ROOT, "Joint %d's zero moves with %s (a smooth curve over %.4g..%.4g %s) and "
+                    + "none of the known effects explains it; it is modelled as such, but compensation cannot use it without "
+                    + "the %s and its cause is unknown (encoder slip or creep, a drive warming up).", e.joint() + 1,
+                    e.along().words, e.rangeLo(), e.rangeHi(), e.along().unit, e.along().words);
             case THERMAL_LINK -> {
                 StringBuilder sb = new StringBuilder("The arm grows with temperature link by link (thermal growth):");
                 for (int i = 0; i < v.length; i++)

@@ -126,10 +126,6 @@ public final class MeasurementReader {
             // (a point column, one row per pose and point) or wide form (x1, y1, z1, x2, ...), or
             // distance-only rows (distance, no coordinates).
             Integer pointIdx = index.get("point");
-            Integer distIdx = index.get("distance");
-            if (distIdx != null && index.containsKey("d"))
-                throw error(headerLine, cols.get(index.get("d")).col, "d", "columns 'd' and 'distance' name the same value; keep one");
-            if (distIdx == null) distIdx = index.get("d");
             int maxWide = 0;
             Field firstWide = null;
             for (Field f : cols) {
@@ -139,6 +135,13 @@ public final class MeasurementReader {
                     if (firstWide == null) firstWide = f;
                 }
             }
+            // 'd' is the short name of 'distance' only in a file without coordinates: next to x, y, z
+            // it stays an extra column, ignored as before.
+            Integer distIdx = index.get("distance");
+            boolean coordinates = index.containsKey("x") || index.containsKey("y") || index.containsKey("z") || firstWide != null;
+            if (distIdx != null && index.containsKey("d"))
+                throw error(headerLine, cols.get(index.get("d")).col, "d", "columns 'd' and 'distance' name the same value; keep one");
+            if (distIdx == null && !coordinates) distIdx = index.get("d");
             String[] quat = {"qw", "qx", "qy", "qz"};
             if (distIdx != null) {
                 String distName = cols.get(distIdx).text.toLowerCase(Locale.ROOT);

@@ -333,7 +333,11 @@ public final class CalibrationReport {
          .append(", ").append(CalibrationResult.poses(r.validate())).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");
         for (String w : warnings) h.append("<p class=\"warn\"><b>Warning:</b> ").append(Html.esc(w)).append("</p>\n");
 
-        h.append("<h2>Result</h2><table><tr><th class=\"l\">position error (mm)</th><th class=\"l\">model</th><th>poses</th>")
+        // Distances: one length error per pose; several points: one error per pose and point.
+        String err = r.distance() ? "distance error (mm)" : "position error (mm)";
+        String counted = r.pointNames().isEmpty() ? "poses" : "points", along = r.pointNames().isEmpty() ? "pose (file order)"
+                : "measured point (poses in file order, " + r.pointNames().size() + " each)";
+        h.append("<h2>Result</h2><table><tr><th class=\"l\">").append(err).append("</th><th class=\"l\">model</th><th>").append(counted).append("</th>")
          .append("<th>RMS</th><th>mean</th><th>median</th><th>95th pct</th><th>max</th></tr>");
         statsRows(h, "training", r.train(), false);
         if (!r.validate().isEmpty()) statsRows(h, "validation", r.validate(), false);
@@ -370,19 +374,20 @@ public final class CalibrationReport {
             }
             h.append("</table>\n");
         }
-        h.append("<h2>Error per pose</h2>\n").append(Svg.plot("Before: nominal model", "pose (file order)", "position error (mm)", before, false))
-         .append("\n").append(Svg.plot("After: calibrated model", "pose (file order)", "position error (mm)", after, false,
-                 // The noise floor: the RMS of a 3-D error whose components have the estimated noise sigma.
-                 Double.isFinite(r.sigmaPosM()) ? List.of(new Svg.Line("noise floor √3·σ", Units.mToMm(r.sigmaPosM()) * Math.sqrt(3), "#2ca02c"))
-                         : List.of())).append("\n");
+        h.append("<h2>Error per pose</h2>\n").append(Svg.plot("Before: nominal model", along, err, before, false))
+         .append("\n").append(Svg.plot("After: calibrated model", along, err, after, false,
+                 // The noise floor: the RMS of a 3-D error whose components have the estimated noise sigma (σ itself for a length).
+                 !Double.isFinite(r.sigmaPosM()) ? List.of() : r.distance()
+                         ? List.of(new Svg.Line("noise floor σ", Units.mToMm(r.sigmaPosM()), "#2ca02c"))
+                         : List.of(new Svg.Line("noise floor √3·σ", Units.mToMm(r.sigmaPosM()) * Math.sqrt(3), "#2ca02c")))).append("\n");
         List<Svg.Series> hist = new ArrayList<>();
         hist.add(new Svg.Series("training", null, values(r.train(), true), "#1f77b4", false));
         if (!r.validate().isEmpty()) hist.add(new Svg.Series("validation", null, values(r.validate(), true), "#ff7f0e", false));
-        h.append(Svg.histogram("Calibrated errors", "position error (mm)", hist, 20)).append("\n");
+        h.append(Svg.histogram("Calibrated errors", err, hist, 20)).append("\n");
         List<Svg.Series> histNom = new ArrayList<>();
         histNom.add(new Svg.Series("training", null, values(r.train(), false), "#1f77b4", false));
         if (!r.validate().isEmpty()) histNom.add(new Svg.Series("validation", null, values(r.validate(), false), "#ff7f0e", false));
-        h.append(Svg.histogram("Nominal errors", "position error (mm)", histNom, 20)).append("\n");
+        h.append(Svg.histogram("Nominal errors", err, histNom, 20)).append("\n");
 
         h.append("<h2>Convergence</h2>\n");
         double[] ch = r.fit().costHistory();

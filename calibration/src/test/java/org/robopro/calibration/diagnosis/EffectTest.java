@@ -107,6 +107,69 @@ class EffectTest {
         }
     }
 
+    /** The fallbacks of located structures (no physical family), with values of their size. */
+    private List<Effect.Term> fallbacks() {
+        double[] s13 = new double[13];
+        for (int i = 0; i < s13.length; i++) s13[i] = 1e-4 * Math.sin(i);
+        double[] p12 = new double[12];
+        for (int i = 0; i < p12.length; i++) p12[i] = 1e-5 * Math.cos(i);
+        return List.of(new Effect.Term(Effect.smooth(2, -0.9, 0.9, 13), s13),
+                new Effect.Term(Effect.pair(1, 3), new double[] {2e-4, -1e-4, 5e-5, 3e-5}),
+                new Effect.Term(Effect.pointSmooth(Effect.Along.REACH, 0.3, 1.8), p12),
+                new Effect.Term(Effect.pointSmooth(Effect.Along.TIME, 0, 4000), p12),
+                new Effect.Term(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, 0.3, 1.8), p12),
+                new Effect.Term(Effect.zeroDrift(2, Effect.Along.TEMPERATURE, 20, 32), new double[] {1e-4, -2e-4, 3e-4, 1e-4}),
+                new Effect.Term(Effect.zeroStep(1, 1500), new double[] {3e-4}));
+    }
+
+    @Test
+    void fallbacks_roundTripAndColumnsMatchCentralDifferences() {
+        Pose tool = Pose.translation(0.0, 0.0, 0.1);
+        Pose inst = Pose.translation(2, 1, 0.3).times(Pose.rotZ(0.7));
+        List<Measurement> rows = rows(new TrueRobot(model, tool, inst, 0, 0, List.of()), 8, 11);
+        for (Effect.Term t : fallbacks()) {
+            assertEquals(true, t.effect().isFallback(), t.effect().label());
+            Effect.Term back = Effect.fromDescription(t.effect().describe(t.values()), model, g, "test");
+            assertEquals(t.effect().label(), back.effect().label());
+            assertArrayEquals(t.values(), back.values(), 0);
+            List<EffectBlock> blocks = List.of(t.effect().block(model));
+            double[] x = IdentificationProblem.startVector(model, tool, false, inst, blocks);
+            int e0 = x.length - t.values().length;
+            System.arraycopy(t.values(), 0, x, e0, t.values().length);
+            IdentificationProblem p = new IdentificationProblem(model, rows, false, true, blocks, x);
+            p.setSigmas(1, 1);
+            int m = p.residualCount(), n = p.fullSize();
+            double[] jac = new double[m * n], r = new double[m], rp = new double[m], rm = new double[m];
+            p.evaluateFull(x, r, jac);
+            double moved = 0;
+            for (int c = e0; c < n; c++) {
+                double h = 1e-3 * Math.max(Math.abs(x[c]), 1e-6);
+                double[] xp = x.clone(), xm = x.clone();
+                xp[c] += h;
+                xm[c] -= h;
+                p.evaluateFull(xp, rp, null);
+                p.evaluateFull(xm, rm, null);
+                for (int i = 0; i < m; i++) {
+                    double fd = (rp[i] - rm[i]) / (2 * h);
+                    moved = Math.max(moved, Math.abs(fd));
+                    // a point displacement with reach also moves with the point the geometry predicts: a loose tolerance there
+                    double tol = t.effect().kind() == Effect.Kind.POINT_SMOOTH ? 1e-3 : 1e-6;
+                    assertEquals(fd, jac[i * n + c], tol * (1 + Math.abs(fd)), t.effect().label() + " " + p.names().get(c) + " row " + i);
+                }
+            }
+            assertEquals(true, moved > 0, t.effect().label() + " moves the prediction");
+        }
+    }
+
+    @Test
+    void zeroStep_beforeTheJumpTheZeroWasLower_afterItAndAtAnUnknownTimeNothing() {
+        Effect e = Effect.zeroStep(1, 1500);
+        double[] q = new double[6];
+        assertEquals(-3e-4, e.value(new double[] {3e-4}, q, new PoseConditions(null, 1000, Double.NaN, Double.NaN)), 0);
+        assertEquals(0, e.value(new double[] {3e-4}, q, new PoseConditions(null, 2000, Double.NaN, Double.NaN)), 0);
+        assertEquals(0, e.value(new double[] {3e-4}, q, new PoseConditions(null, Double.NaN, Double.NaN, Double.NaN)), 0);
+    }
+
     @Test
     void describe_roundTrip_sameEffectAndValues() {
         for (Effect.Term t : terms()) {

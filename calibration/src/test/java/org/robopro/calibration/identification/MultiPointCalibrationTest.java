@@ -171,7 +171,27 @@ public class MultiPointCalibrationTest {
         assertTrue(rot3 < 0.3 * rot1, "three points predict the flange rotation better than one: " + rot3 + " vs " + rot1);
     }
 
-    static List<String> fixedNames(CalibrationResult r) {
+    @Test
+    void oneKnockedReflector_flagsItsPose_andDropsAllItsPoints() {
+        Truth t = truth(36);
+        String id = t.train().get(9).poseId();
+        StringBuilder text = new StringBuilder();
+        for (String line : longForm(t, 3, 10).split("\n")) {
+            String[] v = line.split(",", -1);
+            if (v.length > 2 && v[0].equals(id) && v[1].equals("SMR2")) {
+                v[8] = String.format(Locale.ROOT, "%.6f", Double.parseDouble(v[8]) + 1.5); // 1.5 mm in x
+                line = String.join(",", v);
+            }
+            text.append(line).append('\n');
+        }
+        CalibrationResult r = Calibrator.calibrate(KinematicModel.build(t.nominal()), read(t, text.toString()), null);
+        assertEquals(List.of(id), r.outliers().stream().map(CalibrationResult.Outlier::poseId).toList());
+        assertTrue(r.outliers().get(0).reason().startsWith("largest point residual"), r.outliers().get(0).reason());
+        assertEquals(3, r.train().stream().filter(CalibrationResult.PoseError::outlier).count(), "all three points of the pose set aside");
+        assertTrue(r.trainRmsM() < 1.15 * Math.sqrt(3) * SIGMA, "the rest fits to the floor: " + r.trainRmsM() * 1e3 + " mm");
+    }
+
+    public static List<String> fixedNames(CalibrationResult r) {
         List<String> out = new ArrayList<>();
         for (CalibrationResult.ParameterEstimate p : r.parameters()) if (p.fixed()) out.add(p.name());
         return out;

@@ -145,6 +145,9 @@ class MultiPointReaderTest {
     void distance_badInput_isLocated() {
         located(fails(DISTANCE.replace(",distance\n", ",distance,x\n").replace("1523.118\n", "1523.118,5\n").replace("1702.5\n", "1702.5,5\n")),
                 5, "x", "has no coordinates");
+        // 'd' next to coordinates is an extra column, as in files written before distances were read
+        String withD = HEAD + "pose,q1,q2,q3,q4,q5,q6,x,y,z,d\n1,1,2,3,4,5,6,1000,0,1000,7\n";
+        assertEquals(new Vec3(1, 0, 1), MeasurementReader.parse("m.csv", withD, SIX).rows().get(0).position());
         located(fails(DISTANCE.replace(",distance\n", ",distance,d\n").replace("1523.118\n", "1523.118,5\n").replace("1702.5\n", "1702.5,5\n")),
                 5, "d", "name the same value");
         located(fails(DISTANCE.replace(",distance\n", ",point,distance\n").replace("10,1523", "10,a,1523").replace("90,0,1702", "90,0,a,1702")),

@@ -107,4 +107,17 @@ class MultiPointWorkflowTest {
         assertTrue(e.getMessage().startsWith("smr.csv") && e.getMessage().contains("diagnosis reads one measured point per pose")
                 && e.getMessage().contains("3 points per pose"), e.getMessage());
     }
+
+    @Test
+    void validationWithOtherPoints_isRefusedInWords() throws Exception {
+        MultiPointCalibrationTest.Truth t = MultiPointCalibrationTest.truth(37);
+        Path a = dir.resolve("three.csv"), b = dir.resolve("two.csv");
+        Files.writeString(a, MultiPointCalibrationTest.longForm(t, 3, 1));
+        Files.writeString(b, MultiPointCalibrationTest.longForm(t, 2, 2));
+        CalibrationWorkflow.Campaign c = CalibrationWorkflow.load(t.nominal(), a, b, null);
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class, () -> CalibrationWorkflow.run(
+                t.nominal(), c, CalibrationWorkflow.Settings.defaults(), "2026-01-01T00:00:00Z", Cancellation.NONE, Progress.NONE));
+        assertTrue(e.getMessage().contains("two.csv: field 'point'") && e.getMessage().contains("measure points SMR1, SMR2 but the training data points SMR1, SMR2, SMR3"),
+                e.getMessage());
+    }
 }

@@ -240,7 +240,23 @@ public final class RapidAst {
     }
 
     /** A string literal; {@code raw} is the text between the quotes as written (escapes unresolved). */
-    public record Str(String raw) implements Expr { }
+    public record Str(String raw) implements Expr {
+        /**
+         * The literal of {@code value}: backslashes doubled, the quote and control characters as a
+         * backslash and two hex digits (RAPID also allows a doubled quote, but rapidchecker 0.1.5
+         * rejects it; backslash 22 is the same character and passes both).
+         */
+        public static Str of(String value) {
+            StringBuilder b = new StringBuilder();
+            for (char c : value.toCharArray()) {
+                if (c == '"') b.append("\\22");
+                else if (c == '\\') b.append("\\\\");
+                else if (c < ' ' || c > '~') b.append(String.format("\\%02X", (int) (c & 0xFF)));
+                else b.append(c);
+            }
+            return new Str(b.toString());
+        }
+    }
 
     public record Bool(boolean value) implements Expr { }
 

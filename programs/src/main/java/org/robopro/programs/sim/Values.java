@@ -143,23 +143,12 @@ final class Values {
             return d < 0 || (d == 0 && 1 / d < 0) ? new RapidAst.Unary("-", RapidAst.Num.of(-d)) : RapidAst.Num.of(d);
         }
         if (v instanceof Boolean b) return new RapidAst.Bool(b);
-        if (v instanceof String s) return new RapidAst.Str(escape(s));
+        if (v instanceof String s) return RapidAst.Str.of(s);
         Object[] items = v instanceof Rec r ? r.f : v instanceof Arr a ? a.items : null;
         if (items == null) throw new IllegalArgumentException("no literal for " + describe(v));
         List<RapidAst.Expr> l = new ArrayList<>();
         for (Object o : items) l.add(literal(o));
         return new RapidAst.Aggregate(l);
-    }
-
-    private static String escape(String s) {
-        StringBuilder b = new StringBuilder();
-        for (char c : s.toCharArray()) {
-            if (c == '"') b.append("\\22");
-            else if (c == '\\') b.append("\\\\");
-            else if (c < ' ' || c > '~') b.append(String.format("\\%02X", (int) (c & 0xFF)));
-            else b.append(c);
-        }
-        return b.toString();
     }
 
     static String describe(Object v) {

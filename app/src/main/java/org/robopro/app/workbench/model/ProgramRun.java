@@ -186,9 +186,20 @@ public final class ProgramRun {
         }
         double[] ta = new double[times.size()];
         Vec3[] tcp = new Vec3[times.size()];
+        // Thousands of samples: forward kinematics into one buffer where the kinematics module answers.
+        Optional<KinematicModel> km = k.kinematicModel();
+        KinematicModel.Workspace ws = km.map(KinematicModel::newWorkspace).orElse(null);
+        double[] f = new double[12];
+        Vec3 tt = flangeTtcp.position();
         for (int i = 0; i < ta.length; i++) {
             ta[i] = times.get(i);
-            tcp[i] = worldTbase.times(k.flange(qs.get(i))).times(flangeTtcp).position();
+            if (ws == null) {
+                tcp[i] = worldTbase.times(k.flange(qs.get(i))).times(flangeTtcp).position();
+                continue;
+            }
+            km.get().flange(qs.get(i), ws, f);
+            tcp[i] = worldTbase.apply(new Vec3(f[0] * tt.x() + f[1] * tt.y() + f[2] * tt.z() + f[3],
+                    f[4] * tt.x() + f[5] * tt.y() + f[6] * tt.z() + f[7], f[8] * tt.x() + f[9] * tt.y() + f[10] * tt.z() + f[11]));
         }
         return new ProgramRun(module, report, out, bad, ta, qs.toArray(new double[0][]), tcp);
     }

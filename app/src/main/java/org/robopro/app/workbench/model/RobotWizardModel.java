@@ -118,6 +118,43 @@ public final class RobotWizardModel {
         flangeZ = z.clone();
     }
 
+    /**
+     * Everything the wizard edits, as a value: the wizard's undo and redo keep these. Two states
+     * are the same edit when their {@link #key()}s are equal.
+     */
+    public record State(String name, String displayName, List<JointRow> joints, double[] flangeOriginMm, double[] flangeX,
+                        double[] flangeZ, List<CouplingTerm> coupling) {
+        public State {
+            joints = List.copyOf(joints);
+            flangeOriginMm = flangeOriginMm.clone();
+            flangeX = flangeX.clone();
+            flangeZ = flangeZ.clone();
+            coupling = List.copyOf(coupling);
+        }
+
+        /** The state's content as text (arrays by value). */
+        public String key() {
+            StringBuilder b = new StringBuilder(name).append('|').append(displayName);
+            for (JointRow j : joints)
+                b.append('|').append(j.name()).append(',').append(j.type()).append(',').append(java.util.Arrays.toString(j.pointMm()))
+                 .append(java.util.Arrays.toString(j.axis())).append(j.minDeg()).append(',').append(j.maxDeg()).append(',').append(j.speedDegPerS());
+            return b.append('|').append(java.util.Arrays.toString(flangeOriginMm)).append(java.util.Arrays.toString(flangeX))
+                    .append(java.util.Arrays.toString(flangeZ)).append(coupling).toString();
+        }
+    }
+
+    public State state() { return new State(name, displayName, joints, flangeOriginMm, flangeX, flangeZ, coupling); }
+
+    /** Puts the wizard back to {@code s}. */
+    public void restore(State s) {
+        name = s.name();
+        displayName = s.displayName();
+        joints.clear();
+        joints.addAll(s.joints());
+        setFlange(s.flangeOriginMm(), s.flangeX(), s.flangeZ());
+        coupling = s.coupling();
+    }
+
     /** The robot description in SI units (throws IllegalArgumentException for empty names). */
     public RobotDescription description() {
         if (name.isEmpty() || !name.matches("[A-Za-z0-9_.-]+"))

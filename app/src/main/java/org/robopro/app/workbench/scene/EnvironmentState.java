@@ -32,6 +32,8 @@ public final class EnvironmentState extends BaseAppState {
             new ColorRGBA(0.85f, 0.83f, 0.8f, 1));
     private final DirectionalLight fill = new DirectionalLight(new Vector3f(0.6f, -0.4f, 0.7f).normalizeLocal(),
             new ColorRGBA(0.35f, 0.37f, 0.42f, 1));
+    /** Shadow map size in pixels (square); -Drobopro.shadowMap to compare. */
+    private static final int SHADOW_MAP = Integer.getInteger("robopro.shadowMap", 1024);
     private DirectionalLightShadowRenderer shadows;
     private boolean shadowsOn;
 
@@ -57,7 +59,7 @@ public final class EnvironmentState extends BaseAppState {
         coarse.setLocalTranslation(-6, 0.001f, -6);
         coarse.setShadowMode(ShadowMode.Off);
         env.attachChild(coarse);
-        shadows = new DirectionalLightShadowRenderer(app.getAssetManager(), 1024, 1);
+        shadows = new DirectionalLightShadowRenderer(app.getAssetManager(), SHADOW_MAP, 1);
         shadows.setLight(key);
         shadows.setShadowIntensity(0.45f);
         shadows.setEdgeFilteringMode(EdgeFilteringMode.Bilinear);

@@ -51,6 +51,9 @@ public final class WorkbenchApp extends SimpleApplication {
     private long windowStartNanos;
     private long windowFrames;
     private int lastW, lastH;
+    private volatile double shadowFallbackFps;
+    private volatile java.util.function.Consumer<String> shadowFallbackLog;
+    private int slowWindows;
 
     /** A scene over {@code model} that shows the results of {@code pathChecker} (owned by the caller). */
     public WorkbenchApp(WorkbenchModel model, PathChecker pathChecker, Function<String, Path> meshResolver) {
@@ -150,7 +153,30 @@ public final class WorkbenchApp extends SimpleApplication {
         if (now - windowStartNanos > 500_000_000L) {
             windowFrames = 0;
             windowStartNanos = now;
+            shadowFallback();
         }
+    }
+
+    /**
+     * Once, when with shadows on the frame rate stays under {@code minFps} for six half-second
+     * windows in a row (a software rasteriser under load), hands {@code switchOff} the message
+     * to log; it switches the shadows off (View → Shadows turns them back on, and then they
+     * stay). 0 disables the fallback (benchmarks).
+     */
+    public void setShadowFallback(double minFps, java.util.function.Consumer<String> switchOff) {
+        shadowFallbackLog = switchOff;
+        shadowFallbackFps = minFps;
+    }
+
+    private void shadowFallback() {
+        double min = shadowFallbackFps;
+        if (min <= 0 || !model.shadows()) { slowWindows = 0; return; }
+        slowWindows = fps < min ? slowWindows + 1 : 0;
+        if (slowWindows < 6) return;
+        shadowFallbackFps = 0;
+        var off = shadowFallbackLog;
+        if (off != null) off.accept(String.format(java.util.Locale.ROOT,
+                "Shadows switched off: %.0f fps with them on this display (View → Shadows turns them back on)", fps));
     }
 
     @Override

@@ -55,6 +55,12 @@ public final class RobotWizard extends JPanel {
     private final JTextArea report = new JTextArea(14, 70);
     private final JComboBox<String> template = new JComboBox<>();
     private boolean loading;
+    /** The wizard's own edit history (its edits are not the project's until Use in cell): states before each edit. */
+    private final java.util.ArrayDeque<RobotWizardModel.State> undo = new java.util.ArrayDeque<>();
+    private final java.util.ArrayDeque<RobotWizardModel.State> redo = new java.util.ArrayDeque<>();
+    private RobotWizardModel.State shown;
+    private final JButton undoButton = button("Undo", "wizard-undo", this::undo);
+    private final JButton redoButton = button("Redo", "wizard-redo", this::redo);
     private RobotWizardModel.Result result;
     private Path savedTo;
 
@@ -99,7 +105,20 @@ public final class RobotWizard extends JPanel {
             int r = jointTable.getSelectedRow();
             if (r >= 0 && r < wm.jointCount()) { wm.removeJoint(r); rebuild(); }
         }));
+        jointButtons.add(undoButton);
+        jointButtons.add(redoButton);
         jointButtons.add(new JLabel("revolute: deg, deg/s; prismatic: mm, mm/s; base coordinates, joints at zero"));
+        // Ctrl+Z / Ctrl+Y (Ctrl+Shift+Z) undo and redo the wizard's edits while the focus is in it.
+        var im = getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT);
+        im.put(javax.swing.KeyStroke.getKeyStroke("ctrl Z"), "wizard-undo");
+        im.put(javax.swing.KeyStroke.getKeyStroke("ctrl Y"), "wizard-redo");
+        im.put(javax.swing.KeyStroke.getKeyStroke("ctrl shift Z"), "wizard-redo");
+        getActionMap().put("wizard-undo", new javax.swing.AbstractAction() {
+            @Override public void actionPerformed(java.awt.event.ActionEvent e) { undo(); }
+        });
+        getActionMap().put("wizard-redo", new javax.swing.AbstractAction() {
+            @Override public void actionPerformed(java.awt.event.ActionEvent e) { redo(); }
+        });
         JTable flangeTable = new FittingTable(flange);
         flangeTable.setName("wizard-flange");
         flangeTable.setRowHeight(20);
@@ -153,6 +172,27 @@ public final class RobotWizard extends JPanel {
         return b;
     }
 
+    /** Undoes the wizard's last edit (a table cell, a joint added or removed, the name, a new start); false when there is none. */
+    public boolean undo() { return step(undo, redo); }
+
+    /** Redoes the last undone edit; false when there is none. */
+    public boolean redo() { return step(redo, undo); }
+
+    public boolean canUndo() { return !undo.isEmpty(); }
+
+    private boolean step(java.util.ArrayDeque<RobotWizardModel.State> from, java.util.ArrayDeque<RobotWizardModel.State> to) {
+        if (jointTable.isEditing()) jointTable.getCellEditor().cancelCellEditing();
+        RobotWizardModel.State s = from.poll();
+        if (s == null) return false;
+        to.push(wm.state());
+        wm.restore(s);
+        shown = s;
+        name.setText(s.name());
+        display.setText(s.displayName());
+        rebuild();
+        return true;
+    }
+
     // ---- the UI layer tests drive ---------------------------------------------------------------
 
     public RobotWizardModel wizardModel() { return wm; }
@@ -204,6 +244,14 @@ public final class RobotWizard extends JPanel {
     public void rebuild() {
         wm.setName(name.getText());
         wm.setDisplayName(display.getText());
+        RobotWizardModel.State now = wm.state();
+        if (shown != null && !now.key().equals(shown.key())) {
+            undo.push(shown);
+            redo.clear();
+        }
+        shown = now;
+        undoButton.setEnabled(!undo.isEmpty());
+        redoButton.setEnabled(!redo.isEmpty());
         result = wm.build();
         joints.fireTableDataChanged();
         flange.fireTableDataChanged();

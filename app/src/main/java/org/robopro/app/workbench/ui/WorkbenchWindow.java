@@ -106,6 +106,18 @@ public final class WorkbenchWindow {
         session.startAutosave(60_000);
     }
 
+    /**
+     * Interactive use: shadows that hold the frame rate under {@code minFps} for 3 s are switched
+     * off once, with a line in the log (not for screenshots, benchmarks and tests, whose pictures
+     * and figures must not depend on the machine's load).
+     */
+    public void enableShadowFallback(double minFps) {
+        app.setShadowFallback(minFps, msg -> javax.swing.SwingUtilities.invokeLater(() -> {
+            session.model().setShadows(false);
+            session.log(msg);
+        }));
+    }
+
     /** Runs {@code r} on the Swing thread and waits for it (at once when already there). */
     public static void onEdt(Runnable r) {
         if (SwingUtilities.isEventDispatchThread()) { r.run(); return; }

@@ -1,0 +1,75 @@
+package org.robopro.calibration.diagnosis;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.robopro.calibration.WorldCampaigns;
+import org.robopro.models.RobotDescription;
+import org.robopro.models.RobotLibrary;
+import org.robopro.world.Scenario;
+
+/**
+ * Structures outside every physical family, drawn by the independent world simulator
+ * (org.robopro.world: its own kinematics and its own error forms, nothing shared with
+ * {@link Effect}), must be located with their variables and never named as a family. Where the
+ * located structure's fallback holds on held-out poses it may model it, as a structure of no
+ * known family; clean poses are not reported as outliers because of it.
+ */
+class OutsideFamiliesTest {
+    private final RobotDescription irb2000 = RobotLibrary.shipped("irb2000");
+
+    private static WorldCampaigns.Sim world(String scenario, long seed) {
+        return WorldCampaigns.of(Scenario.named(scenario).trial(seed, p -> p));
+    }
+
+    /** No physical family named: every effect is a fallback. */
+    private static void namesNoFamily(Diagnosis d) {
+        List<String> families = d.effects().stream().filter(f -> !f.effect().isFallback()).map(f -> f.effect().label()).toList();
+        assertEquals(List.of(), families, "named a family for a structure outside every family; notes " + d.notes());
+    }
+
+    private static boolean locatedIn(Diagnosis d, String variable) {
+        return d.located().stream().anyMatch(l -> l.variable().equals(variable));
+    }
+
+    @Test
+    void errorOfJoint2DependingOnJoints2And4_isLocatedInBothJointsAndNotNamed() {
+        WorldCampaigns.Sim c = world("outside: j2 error depending on j2 and j4", 3);
+        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
+        namesNoFamily(d);
+        assertTrue(locatedIn(d, "joints 2 and 4"), d.located().toString());
+        // The two-joint fallback holds on the validation poses: it brings them near the noise floor.
+        assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.PAIR), d.effects().toString());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+        assertTrue(d.geometricValidateRmsM() > 1.5 * c.floorM(), "the structure matters: " + d.geometricValidateRmsM());
+    }
+
+    @Test
+    void pointSaggingWithReach_isLocatedInReachAndNotNamed() {
+        WorldCampaigns.Sim c = world("outside: measured point sags with reach", 4);
+        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
+        namesNoFamily(d);
+        assertTrue(locatedIn(d, "reach of the measured point"), d.located().toString());
+    }
+
+    @Test
+    void bumpInJoint3_isLocatedNotNamedAndFlagsNoCleanPose() {
+        WorldCampaigns.Sim c = world("outside: bump in the angle of j3", 1);
+        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
+        namesNoFamily(d);
+        assertTrue(locatedIn(d, "joint 3 angle"), d.located().toString());
+        assertEquals(List.of(), d.outliers(), "the campaign has no bad measurement");
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+    }
+
+    @Test
+    void encoderSlipMidCampaign_isLocatedAsAJumpOfJoint2sZeroAndFlagsNoCleanPose() {
+        WorldCampaigns.Sim c = world("outside: encoder slip on j2 mid-campaign", 2);
+        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
+        namesNoFamily(d);
+        assertTrue(d.located().stream().anyMatch(l -> l.shape().startsWith("joint 2's zero jumps")), d.located().toString());
+        assertEquals(List.of(), d.outliers(), "the campaign has no bad measurement");
+    }
+}
