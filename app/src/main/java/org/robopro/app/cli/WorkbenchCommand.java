@@ -115,6 +115,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
         List<Instruction> program = benchmarkMoves > 0 ? longProgram(wb, benchmarkMoves) : List.of();
         long checks0 = wb.session().pathChecker().checks();
         Thread.sleep(1500);
+        long[] cpu0 = threadCpu();
         long f0 = wb.app().frameCount();
         long t0 = System.nanoTime();
         long end = t0 + (long) (benchmarkSeconds * 1e9);
@@ -158,13 +159,29 @@ public final class WorkbenchCommand implements Callable<Integer> {
         }
         long frames = wb.app().frameCount() - f0;
         double secs = (System.nanoTime() - t0) / 1e9;
+        long[] cpu1 = threadCpu();
         spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%s%n",
                 size, first, frames / secs, frames, secs, program.isEmpty() ? ""
                         : String.format(Locale.ROOT, "; program of %d moves, %d background path checks", program.size(),
                         wb.session().pathChecker().checks() - checks0));
+        // CPU time per thread over the measurement: steadier than the frame rate when other work shares the machine.
+        spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: CPU in %.1f s: path-check thread %.0f ms, render thread %.0f ms, Swing thread %.0f ms%n",
+                secs, (cpu1[0] - cpu0[0]) / 1e6, (cpu1[1] - cpu0[1]) / 1e6, (cpu1[2] - cpu0[2]) / 1e6);
         if (shadowsAb && abSecs[0] > 0 && abSecs[1] > 0)
             spec.commandLine().getOut().printf(Locale.ROOT, "shadows on: %.1f fps, off: %.1f fps (alternating 1 s windows, %.1f s measured each)%n",
                     abFrames[0] / abSecs[0], abFrames[1] / abSecs[1], abSecs[0]);
+    }
+
+    /** CPU time (ns) so far of the path-check, render (jME) and Swing event threads. */
+    private static long[] threadCpu() {
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        long[] out = new long[3];
+        String[][] names = {{"path-check"}, {"jME3 Main", "LWJGL Renderer Thread"}, {"AWT-EventQueue"}};
+        for (Thread t : Thread.getAllStackTraces().keySet())
+            for (int k = 0; k < names.length; k++)
+                for (String n : names[k])
+                    if (t.getName().startsWith(n)) out[k] += Math.max(0, mx.getThreadCpuTime(t.getId()));
+        return out;
     }
 
     private long editTick = -1;

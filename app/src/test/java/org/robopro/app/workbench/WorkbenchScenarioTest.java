@@ -61,17 +61,23 @@ class WorkbenchScenarioTest {
         return new String(all);
     }
 
-    /** Fraction of pixels in the rectangle close to ABB orange (the robot). */
-    static double orangeFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
+    /** Fraction of pixels in the rectangle whose red, green, blue pass {@code colour}. */
+    static double fraction(BufferedImage img, int x0, int y0, int x1, int y1, java.util.function.IntPredicate colour) {
         int n = 0, hit = 0;
         for (int y = y0; y < y1; y++)
             for (int x = x0; x < x1; x++) {
-                int c = img.getRGB(x, y);
-                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
                 n++;
-                if (r > 120 && r > g + 45 && g > b + 20 && b < 90) hit++;
+                if (colour.test(img.getRGB(x, y))) hit++;
             }
         return (double) hit / n;
+    }
+
+    /** Fraction of pixels in the rectangle close to ABB orange (the robot). */
+    static double orangeFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
+        return fraction(img, x0, y0, x1, y1, c -> {
+            int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+            return r > 120 && r > g + 45 && g > b + 20 && b < 90;
+        });
     }
 
     static int colourCount(BufferedImage img) {
@@ -293,15 +299,10 @@ class WorkbenchScenarioTest {
 
     /** Fraction of pixels in the rectangle of the PUMA's warm light grey castings (neither the bluish floor nor the sky). */
     static double creamFraction(BufferedImage img, int x0, int y0, int x1, int y1) {
-        int n = 0, hit = 0;
-        for (int y = y0; y < y1; y++)
-            for (int x = x0; x < x1; x++) {
-                int c = img.getRGB(x, y);
-                int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
-                n++;
-                if (r > 120 && r >= g && g >= b && r - b >= 6 && r - b < 45) hit++;
-            }
-        return (double) hit / n;
+        return fraction(img, x0, y0, x1, y1, c -> {
+            int r = (c >> 16) & 255, g = (c >> 8) & 255, b = c & 255;
+            return r > 120 && r >= g && g >= b && r - b >= 6 && r - b < 45;
+        });
     }
 
     /**

@@ -104,6 +104,8 @@ public final class CalibrationReport {
     public static List<String> warnings(CalibrationResult r, MeasurementSet train, MeasurementSet validate) {
         List<String> w = new ArrayList<>();
         if (r.distance()) w.add(distanceWords(r));
+        String line = collinearWords(r);
+        if (line != null) w.add(line);
         if (r.validate().isEmpty()) return w;
         double tr = r.trainRmsM(), va = r.validateRmsM();
         if (va > VALIDATION_SUSPECT_M && va > VALIDATION_SUSPECT_RATIO * tr) {
@@ -124,6 +126,29 @@ public final class CalibrationReport {
             w.add(sb.toString());
         }
         return w;
+    }
+
+    /** Points closer than this to the line through the two farthest apart do not show the rotation about it, m. */
+    static final double COLLINEAR_M = 0.005;
+
+    /**
+     * Several points per pose that lie on a line (two points always do) do not show the tool's
+     * rotation about that line: the calibrated file then holds for points on that line only.
+     * Null when the points span a plane, or for one point.
+     */
+    static String collinearWords(CalibrationResult r) {
+        List<org.robopro.models.Vec3> pts = r.toolPoints();
+        if (pts.size() < 2) return null;
+        org.robopro.models.Vec3 a = pts.get(0), b = pts.get(1);
+        for (var p : pts) for (var q : pts) if (p.minus(q).norm() > a.minus(b).norm()) { a = p; b = q; }
+        org.robopro.models.Vec3 u = b.minus(a);
+        double len = u.norm();
+        double off = 0;
+        for (var p : pts) off = Math.max(off, len == 0 ? p.minus(a).norm() : p.minus(a).cross(u).norm() / len);
+        if (off >= COLLINEAR_M) return null;
+        return String.format(Locale.ROOT, "the %d measured points lie on a line (within %.1f mm): the tool's rotation about that "
+                + "line is not seen, so the calibrated file holds for points on that line only; a third reflector off the line "
+                + "(%.0f mm or more) shows the flange's full orientation", pts.size(), Units.mToMm(off), Units.mToMm(COLLINEAR_M));
     }
 
     /**

@@ -54,6 +54,7 @@ class MultiPointWorkflowTest {
         assertTrue(summary.contains("\"poses_train\" : 27") || summary.contains("\"poses_train\":27"), summary.substring(0, 400));
         assertTrue(summary.contains("measured_points") && summary.contains("SMR3"), "summary names the points");
         assertTrue(oc.calibrated().provenance().get("calibration-measured-points-mm").startsWith("SMR1: "));
+        assertTrue(oc.warnings().stream().noneMatch(w -> w.contains("lie on a line")), oc.warnings().toString());
         // The calibrated training RMS is per measured point: near √3 σ.
         double floor = Math.sqrt(3) * MultiPointCalibrationTest.SIGMA;
         assertTrue(oc.result().trainRmsM() < 1.2 * floor && oc.result().validateRmsM() < 1.5 * floor,
@@ -119,5 +120,16 @@ class MultiPointWorkflowTest {
                 t.nominal(), c, CalibrationWorkflow.Settings.defaults(), "2026-01-01T00:00:00Z", Cancellation.NONE, Progress.NONE));
         assertTrue(e.getMessage().contains("two.csv: field 'point'") && e.getMessage().contains("measure points SMR1, SMR2 but the training data points SMR1, SMR2, SMR3"),
                 e.getMessage());
+    }
+
+    @Test
+    void twoPoints_lieOnALine_andTheWarningSaysWhatIsNotSeen() throws Exception {
+        MultiPointCalibrationTest.Truth t = MultiPointCalibrationTest.truth(38);
+        Path f = dir.resolve("two.csv");
+        Files.writeString(f, MultiPointCalibrationTest.longForm(t, 2, 4));
+        CalibrationWorkflow.Outcome oc = CalibrationWorkflow.run(t.nominal(), CalibrationWorkflow.load(t.nominal(), f, null, null),
+                CalibrationWorkflow.Settings.defaults(), "2026-01-01T00:00:00Z", Cancellation.NONE, Progress.NONE);
+        assertTrue(oc.warnings().stream().anyMatch(w -> w.startsWith("the 2 measured points lie on a line")
+                && w.contains("rotation about that line is not seen")), oc.warnings().toString());
     }
 }

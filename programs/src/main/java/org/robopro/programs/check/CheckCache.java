@@ -22,8 +22,9 @@ import org.robopro.programs.sim.MoveStep;
  * the cache gives the same report as one without. An edit changes the key of the edited motion;
  * the motions after it hit the cache again as soon as the start state they see is the one they
  * saw before (a MoveJ or a target solved with its confdata ends where it ended, whatever came
- * before). Blending, the time line and I/O are recomputed on every check (they are cheap and
- * depend on neighbours). Labels and source positions are not part of the key: a motion moved
+ * before). Joint-space corners are kept too, keyed by the two motions' cached outcomes; Cartesian
+ * corners, the time line and I/O are recomputed on every check (they are cheap and depend on
+ * neighbours). Labels and source positions are not part of the key: a motion moved
  * to another line reuses its result with its new label.
  *
  * <p>Bounded: the least recently used motions are dropped beyond twice the longest program
@@ -33,6 +34,9 @@ import org.robopro.programs.sim.MoveStep;
 public final class CheckCache {
     private final Map<Key, Entry> map = new LinkedHashMap<>(256, 0.75f, true) {
         @Override protected boolean removeEldestEntry(Map.Entry<Key, Entry> eldest) { return size() > capacity; }
+    };
+    private final Map<CornerKey, double[]> corners = new LinkedHashMap<>(256, 0.75f, true) {
+        @Override protected boolean removeEldestEntry(Map.Entry<CornerKey, double[]> eldest) { return size() > capacity; }
     };
     private int capacity = 1024;
     private Object owner;
@@ -50,7 +54,10 @@ public final class CheckCache {
     public synchronized long misses() { return misses; }
 
     /** Forgets everything (a robot or option change does this by itself). */
-    public synchronized void clear() { map.clear(); }
+    public synchronized void clear() {
+        map.clear();
+        corners.clear();
+    }
 
     /** Cached motions. */
     public synchronized int size() { return map.size(); }
@@ -58,6 +65,7 @@ public final class CheckCache {
     synchronized void begin(Object checker, int motions) {
         if (!Objects.equals(owner, checker)) {
             map.clear();
+            corners.clear();
             owner = checker;
         }
         capacity = Math.max(capacity, 2 * motions);
@@ -71,6 +79,42 @@ public final class CheckCache {
     }
 
     synchronized void put(Key k, Entry e) { map.put(k, e); }
+
+    synchronized double[] corner(CornerKey k) { return corners.get(k); }
+
+    synchronized void putCorner(CornerKey k, double[] c) { corners.put(k, c); }
+
+    /**
+     * A joint-space corner: the two motions' outcomes by identity (a check that found both in the
+     * cache hands over the same objects, a motion solved again a new one), where the first starts,
+     * and what of the motions the corner reads (zone, tools, kinds).
+     */
+    static final class CornerKey {
+        private final Object a, b;
+        private final double[] q0;
+        private final Object zone, toolA, toolB, kindA, kindB;
+        private final int hash;
+
+        CornerKey(Object a, Object b, double[] q0, MoveStep m, MoveStep n) {
+            this.a = a;
+            this.b = b;
+            this.q0 = q0.clone();
+            zone = m.zone();
+            toolA = m.flangeTtcp();
+            toolB = n.flangeTtcp();
+            kindA = m.kind();
+            kindB = n.kind();
+            hash = Objects.hash(System.identityHashCode(a), System.identityHashCode(b), Arrays.hashCode(this.q0), zone, toolA, toolB, kindA, kindB);
+        }
+
+        @Override public int hashCode() { return hash; }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof CornerKey k && hash == k.hash && a == k.a && b == k.b && Arrays.equals(q0, k.q0) && zone.equals(k.zone)
+                    && toolA.equals(k.toolA) && toolB.equals(k.toolB) && kindA == k.kindA && kindB == k.kindB;
+        }
+    }
 
     /** Everything a motion's check reads, compared exactly. */
     static final class Key {

@@ -66,6 +66,7 @@ public final class PathChecker {
             vMax[i] = v > 0 && Double.isFinite(v) ? v : Math.toRadians(90);
         }
         reach = reach(model);
+        fkWorkspace = ThreadLocal.withInitial(model::newWorkspace);
         signature = List.of(model, options.stepM(), options.stepRad(), options.singularityWarning(), options.rampS(), options.maxJointJumpRad());
     }
 
@@ -135,7 +136,7 @@ public final class PathChecker {
         // 2. Fly-by points: corners blended within the zone, speed kept through them.
         double[] stopDur = new double[count], blendDur = new double[count], deviation = new double[count];
         for (int i = 0; i < count; i++) if (outcomes[i] != null) stopDur[i] = blendDur[i] = outcomes[i].duration;
-        for (int i = 0; i < count; i++) blend(steps, outcomes, qBefore, i, blendDur, deviation);
+        for (int i = 0; i < count; i++) blend(steps, outcomes, qBefore, i, blendDur, deviation, cache);
         // 3. The time line with the blended durations (and once more with stops, for the comparison).
         IoTimeline io = new IoTimeline(signals);
         List<CheckReport.StepResult> results = new ArrayList<>();
@@ -215,7 +216,8 @@ public final class PathChecker {
      * motion ramps down or up there (half a ramp saved on each side) and the corner is shorter
      * than the two legs.
      */
-    private void blend(List<ProgramStep> steps, Outcome[] outcomes, double[][] qBefore, int i, double[] dur, double[] deviation) {
+    private void blend(List<ProgramStep> steps, Outcome[] outcomes, double[][] qBefore, int i, double[] dur, double[] deviation,
+                       CheckCache cache) {
         if (!(steps.get(i) instanceof MoveStep m) || m.zone().finep() || m.zone().pzoneTcp() <= 0 || m.time().isPresent()) return;
         int j = i + 1;
         while (j < steps.size() && steps.get(j) instanceof IoStep io
@@ -230,7 +232,16 @@ public final class PathChecker {
         if (lin < 1e-9 || lout < 1e-9) return;
         double din = Math.min(m.zone().pzoneTcp(), lin / 2), dout = Math.min(m.zone().pzoneTcp(), lout / 2);
         if (isJoint(m) || isJoint(n)) {
-            jointCorner(m, n, qBefore[i], a, b, p1, din, dout, i, j, dur, deviation, outcomes);
+            // Joint corners cost some hundred FKs: kept in the cache, keyed by the two motions' outcomes (the very objects a cached check reuses).
+            CheckCache.CornerKey key = cache == null ? null : new CheckCache.CornerKey(a, b, qBefore[i], m, n);
+            double[] c = key == null ? null : cache.corner(key);
+            if (c == null) {
+                c = jointCorner(m, n, qBefore[i], a, b, p1, din, dout);
+                if (key != null) cache.putCorner(key, c);
+            }
+            deviation[i] = c[0];
+            dur[i] = Math.max(0, dur[i] - rampSaving(outcomes[i].duration) - c[1] / 2);
+            dur[j] = Math.max(0, dur[j] - rampSaving(outcomes[j].duration) - c[1] / 2);
             return;
         }
         Vec3 entry = p1.minus(p1.minus(p0).times(din / lin)), exit = p1.plus(p2.minus(p1).times(dout / lout));
@@ -261,12 +272,12 @@ public final class PathChecker {
      * the blended TCP comes to the target (forward kinematics along the Bezier); the time saved is
      * half a ramp on each side, plus the difference between the legs' and the corner's joint-space
      * travel at full joint speed (the slowest axis's time, the measure a joint motion is timed by).
+     * Returns {deviation m, joint-travel time saved s}; the caller adds the ramps.
      */
-    private void jointCorner(MoveStep m, MoveStep n, double[] q0, Outcome a, Outcome b, Vec3 p1, double din, double dout,
-                             int i, int j, double[] dur, double[] deviation, Outcome[] outcomes) {
+    private double[] jointCorner(MoveStep m, MoveStep n, double[] q0, Outcome a, Outcome b, Vec3 p1, double din, double dout) {
         double sIn = zoneEdge(m, q0, a, p1, din, true), sOut = zoneEdge(n, a.q, b, p1, dout, false);
         double[] qIn = along(m, q0, a, sIn), qOut = along(n, a.q, b, sOut), qc = a.q;
-        double legs = 0, corner = 0, closest = tcp(qIn, m).minus(p1).norm(), tClosest = 0;
+        double legs = 0, corner = 0, closest = tcpDistance(qIn, m, p1), tClosest = 0;
         double[] prevIn = qIn, prevOut = a.q, prevC = qIn;
         for (int k = 1; k <= 16; k++) {
             double t = k / 16.0;
@@ -277,21 +288,18 @@ public final class PathChecker {
             double[] qb = bezier(qIn, qc, qOut, t);
             corner += jointTravel(prevC, qb);
             prevC = qb;
-            double d = tcp(qb, m).minus(p1).norm();
+            double d = tcpDistance(qb, m, p1);
             if (d < closest) { closest = d; tClosest = t; }
         }
         // The closest point between the samples next to the best one (golden-section search).
         double lo = Math.max(0, tClosest - 1 / 16.0), hi = Math.min(1, tClosest + 1 / 16.0), g = (Math.sqrt(5) - 1) / 2;
         for (int it = 0; it < 24; it++) {
             double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-            double d1 = tcp(bezier(qIn, qc, qOut, x1), m).minus(p1).norm(), d2 = tcp(bezier(qIn, qc, qOut, x2), m).minus(p1).norm();
+            double d1 = tcpDistance(bezier(qIn, qc, qOut, x1), m, p1), d2 = tcpDistance(bezier(qIn, qc, qOut, x2), m, p1);
             closest = Math.min(closest, Math.min(d1, d2));
             if (d1 < d2) hi = x2; else lo = x1;
         }
-        deviation[i] = closest;
-        double shorter = Math.max(0, legs - corner);
-        dur[i] = Math.max(0, dur[i] - rampSaving(outcomes[i].duration) - shorter / 2);
-        dur[j] = Math.max(0, dur[j] - rampSaving(outcomes[j].duration) - shorter / 2);
+        return new double[] {closest, Math.max(0, legs - corner)};
     }
 
     private static double[] bezier(double[] a, double[] c, double[] b, double t) {
@@ -310,13 +318,13 @@ public final class PathChecker {
         boolean found = false;
         for (int k = 1; k <= 16; k++) {
             double s = incoming ? 1 - k / 16.0 : k / 16.0;
-            if (tcp(along(m, q0, o, s), m).minus(p1).norm() >= r) { outside = s; found = true; break; }
+            if (tcpDistance(along(m, q0, o, s), m, p1) >= r) { outside = s; found = true; break; }
             inside = s;
         }
         if (!found) return outside;
         for (int it = 0; it < 10; it++) {
             double mid = (inside + outside) / 2;
-            if (tcp(along(m, q0, o, mid), m).minus(p1).norm() >= r) outside = mid; else inside = mid;
+            if (tcpDistance(along(m, q0, o, mid), m, p1) >= r) outside = mid; else inside = mid;
         }
         return outside;
     }
@@ -342,7 +350,21 @@ public final class PathChecker {
         return q;
     }
 
-    private Vec3 tcp(double[] q, MoveStep m) { return model.flange(q).times(m.flangeTtcp()).position(); }
+    /** Forward-kinematics buffers of the calling thread (the corner searches run thousands of FKs per check). */
+    private final ThreadLocal<KinematicModel.Workspace> fkWorkspace;
+    private final ThreadLocal<double[]> fkOut = ThreadLocal.withInitial(() -> new double[12]);
+
+    /** Distance of motion m's TCP at joints q from point p, without allocating. */
+    private double tcpDistance(double[] q, MoveStep m, Vec3 p) {
+        KinematicModel.Workspace ws = fkWorkspace.get();
+        double[] f = fkOut.get();
+        model.flange(q, ws, f);
+        Vec3 t = m.flangeTtcp().position();
+        double x = f[0] * t.x() + f[1] * t.y() + f[2] * t.z() + f[3] - p.x();
+        double y = f[4] * t.x() + f[5] * t.y() + f[6] * t.z() + f[7] - p.y();
+        double z = f[8] * t.x() + f[9] * t.y() + f[10] * t.z() + f[11] - p.z();
+        return Math.sqrt(x * x + y * y + z * z);
+    }
 
     /** Time at full joint speed from a to b: the slowest axis's. */
     private double jointTravel(double[] a, double[] b) {

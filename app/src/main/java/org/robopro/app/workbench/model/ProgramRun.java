@@ -14,6 +14,7 @@ import org.robopro.programs.check.CheckCache;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.check.Problem;
+import org.robopro.programs.collision.ClearanceChecker;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
@@ -92,10 +93,14 @@ public final class ProgramRun {
     }
 
     /** Maps, steps, checks and samples the model's program. */
-    public static ProgramRun of(WorkbenchModel m) { return of(m, null); }
+    public static ProgramRun of(WorkbenchModel m) { return of(m, null, null); }
 
-    /** As {@link #of(WorkbenchModel)}, reusing the path check's results for unchanged motions from {@code cache} (null: none). */
-    public static ProgramRun of(WorkbenchModel m, CheckCache cache) {
+    /**
+     * As {@link #of(WorkbenchModel)}, reusing the path check's results for unchanged motions from
+     * {@code cache} (null: none) and sweeping every move for collisions with {@code clearance}
+     * (null: no collision check); its problems join the path check's on each instruction.
+     */
+    public static ProgramRun of(WorkbenchModel m, CheckCache cache, ClearanceChecker clearance) {
         List<Instruction> program = m.program();
         RobotKinematics k = m.kinematics();
         List<Step> out = new ArrayList<>();
@@ -119,6 +124,7 @@ public final class ProgramRun {
         List<ProgramStep> steps = runnable.isEmpty() ? List.of() : MotionInterpreter.of(module).run("main");
         Optional<KinematicModel> km = k.kinematicModel();
         CheckReport report = km.isPresent() && !steps.isEmpty() ? new PathChecker(km.get()).check(new Simulation(steps, List.of()), List.of(), cache) : null;
+        List<Problem> collisions = clearance == null || report == null ? List.of() : clearance.check(steps, report, Optional.empty()).problems();
         List<double[]> qEnd = new ArrayList<>();
         for (int s = 0; s < steps.size(); s++) {
             MoveStep mv = (MoveStep) steps.get(s);
@@ -127,6 +133,7 @@ public final class ProgramRun {
             double[] q = null;
             if (report != null) {
                 for (Problem p : report.problems()) if (p.step().equals(mv.label())) ps.add(p);
+                for (Problem p : collisions) if (p.step().equals(mv.label())) ps.add(p);
                 dur = report.steps().get(s).durationS();
                 q = report.steps().get(s).qEnd();
             } else {
@@ -186,9 +193,20 @@ public final class ProgramRun {
         }
         double[] ta = new double[times.size()];
         Vec3[] tcp = new Vec3[times.size()];
+        // Thousands of samples: forward kinematics into one buffer where the kinematics module answers.
+        Optional<KinematicModel> km = k.kinematicModel();
+        KinematicModel.Workspace ws = km.map(KinematicModel::newWorkspace).orElse(null);
+        double[] f = new double[12];
+        Vec3 tt = flangeTtcp.position();
         for (int i = 0; i < ta.length; i++) {
             ta[i] = times.get(i);
-            tcp[i] = worldTbase.times(k.flange(qs.get(i))).times(flangeTtcp).position();
+            if (ws == null) {
+                tcp[i] = worldTbase.times(k.flange(qs.get(i))).times(flangeTtcp).position();
+                continue;
+            }
+            km.get().flange(qs.get(i), ws, f);
+            tcp[i] = worldTbase.apply(new Vec3(f[0] * tt.x() + f[1] * tt.y() + f[2] * tt.z() + f[3],
+                    f[4] * tt.x() + f[5] * tt.y() + f[6] * tt.z() + f[7], f[8] * tt.x() + f[9] * tt.y() + f[10] * tt.z() + f[11]));
         }
         return new ProgramRun(module, report, out, bad, ta, qs.toArray(new double[0][]), tcp);
     }

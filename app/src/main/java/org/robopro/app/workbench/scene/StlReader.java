@@ -10,7 +10,8 @@ import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.models.InputException;
 
 /**
- * Reads STL meshes (binary and ASCII) into a jME mesh with flat normals, scaled to metres.
+ * Reads STL meshes (binary and ASCII) into a jME mesh, scaled to metres, with normals smoothed
+ * across edges flatter than 30° (crisp where the CAD model has a real edge).
  * jME's plugins load OBJ and glTF but not STL, which is what most robot CAD exports are.
  */
 public final class StlReader {
@@ -29,24 +30,71 @@ public final class StlReader {
     /** A mesh from an STL file's bytes (binary or ASCII); {@code file} names it in error messages. */
     public static Mesh read(byte[] b, Path file, float scale) {
         float[] tri = ShippedMeshes.stlTriangles(b, file);
-        int nv = tri.length / 3;
-        float[] pos = new float[nv * 3];
-        float[] nor = new float[nv * 3];
-        for (int t = 0; t < nv / 3; t++) {
-            int o = t * 9;
-            float ax = tri[o], ay = tri[o + 1], az = tri[o + 2];
-            float ux = tri[o + 3] - ax, uy = tri[o + 4] - ay, uz = tri[o + 5] - az;
-            float vx = tri[o + 6] - ax, vy = tri[o + 7] - ay, vz = tri[o + 8] - az;
-            float nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-            float l = (float) Math.sqrt(nx * nx + ny * ny + nz * nz);
-            if (l > 0) { nx /= l; ny /= l; nz /= l; }
-            for (int k = 0; k < 9; k++) pos[o + k] = tri[o + k] * scale;
-            for (int k = 0; k < 3; k++) { nor[o + 3 * k] = nx; nor[o + 3 * k + 1] = ny; nor[o + 3 * k + 2] = nz; }
-        }
+        float[] pos = new float[tri.length];
+        for (int k = 0; k < pos.length; k++) pos[k] = tri[k] * scale;
         Mesh m = new Mesh();
         m.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(pos));
-        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(nor));
+        // Smoothing indexes every corner; past SMOOTH_MAX triangles the facets' own normals are used.
+        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(normals(pos, pos.length / 9 <= SMOOTH_MAX ? CREASE_COS : 2f)));
         m.updateBound();
         return m;
+    }
+
+    /** Largest mesh (triangles) whose normals are smoothed (the corner index costs memory per corner). */
+    static final int SMOOTH_MAX = 300_000;
+
+    /** Edges sharper than this (30°) stay sharp; smoother surfaces (cylinders, fillets) shade smoothly. */
+    static final float CREASE_COS = (float) Math.cos(Math.toRadians(30));
+
+    /**
+     * Per-corner normals of a triangle soup (9 floats a triangle): each corner takes the
+     * area-weighted mean of the normals of the triangles meeting at its position whose normal is
+     * within the crease angle of its own triangle's, so curved surfaces shade smoothly and real
+     * edges stay crisp (flat normals alone make every CAD facet visible).
+     */
+    static float[] normals(float[] pos, float creaseCos) {
+        int nt = pos.length / 9;
+        boolean flat = creaseCos > 1; // no two faces within the crease: each corner its facet's normal
+        float[] fn = new float[nt * 3]; // unit face normals
+        float[] fa = new float[nt * 3]; // area-weighted face normals
+        for (int t = 0; t < nt; t++) {
+            int o = t * 9;
+            float ux = pos[o + 3] - pos[o], uy = pos[o + 4] - pos[o + 1], uz = pos[o + 5] - pos[o + 2];
+            float vx = pos[o + 6] - pos[o], vy = pos[o + 7] - pos[o + 1], vz = pos[o + 8] - pos[o + 2];
+            float nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+            fa[3 * t] = nx; fa[3 * t + 1] = ny; fa[3 * t + 2] = nz;
+            float l = (float) Math.sqrt(nx * nx + ny * ny + nz * nz);
+            if (l > 0) { nx /= l; ny /= l; nz /= l; }
+            fn[3 * t] = nx; fn[3 * t + 1] = ny; fn[3 * t + 2] = nz;
+        }
+        if (flat) {
+            float[] out = new float[nt * 9];
+            for (int c = 0; c < nt * 3; c++) System.arraycopy(fn, 3 * (c / 3), out, 3 * c, 3);
+            return out;
+        }
+        // Corners at the same position (exactly: STL repeats each shared vertex verbatim), chained per position.
+        java.util.Map<java.util.List<Float>, Integer> head = new java.util.HashMap<>();
+        int[] next = new int[nt * 3];
+        for (int c = 0; c < nt * 3; c++) {
+            Integer h = head.put(java.util.List.of(pos[3 * c], pos[3 * c + 1], pos[3 * c + 2]), c);
+            next[c] = h == null ? -1 : h;
+        }
+        float[] out = new float[nt * 9];
+        for (var e : head.entrySet()) {
+            for (int c = e.getValue(); c >= 0; c = next[c]) {
+                int t = c / 3;
+                float sx = 0, sy = 0, sz = 0;
+                for (int d = e.getValue(); d >= 0; d = next[d]) {
+                    int u = d / 3;
+                    float dot = fn[3 * t] * fn[3 * u] + fn[3 * t + 1] * fn[3 * u + 1] + fn[3 * t + 2] * fn[3 * u + 2];
+                    if (u != t && dot < creaseCos) continue;
+                    sx += fa[3 * u]; sy += fa[3 * u + 1]; sz += fa[3 * u + 2];
+                }
+                float l = (float) Math.sqrt(sx * sx + sy * sy + sz * sz);
+                if (l > 0) { sx /= l; sy /= l; sz /= l; } else { sx = fn[3 * t]; sy = fn[3 * t + 1]; sz = fn[3 * t + 2]; }
+                out[3 * c] = sx; out[3 * c + 1] = sy; out[3 * c + 2] = sz;
+            }
+        }
+        return out;
     }
 }

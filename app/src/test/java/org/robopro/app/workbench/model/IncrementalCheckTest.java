@@ -15,11 +15,8 @@ import org.robopro.programs.check.CheckReport;
 class IncrementalCheckTest {
     @Test
     void speedEdit_solvesOneMotion_sameRunAsAFullCheck() throws Exception {
-        ProjectData d = DefaultCell.irb2000Welding();
-        WorkbenchModel m = new WorkbenchModel(d.robotRef(), d.robot());
-        m.load(d);
-        double[] q = DefaultCell.readyPose();
-        m.setQ(q);
+        WorkbenchModel m = ProgramRunTest.modelWithTargets();
+        double[] q = m.q();
         Pose tcp = m.worldTtcp();
         for (int i = 0; i < 30; i++)
             m.putTarget(new Target(String.format(Locale.ROOT, "b%02d", i),

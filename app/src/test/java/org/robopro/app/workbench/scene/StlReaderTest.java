@@ -2,6 +2,7 @@ package org.robopro.app.workbench.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.bounding.BoundingBox;
 import com.jme3.scene.Mesh;
@@ -51,5 +52,30 @@ class StlReaderTest {
         Files.writeString(f, "solid x\nvertex 1 2\n");
         InputException e = assertThrows(InputException.class, () -> StlReader.read(f, 1f));
         assertEquals(2, e.line());
+    }
+
+    @Test
+    void normals_cylinderSidesSmoothBoxEdgesSharp() {
+        // A 24-sided prism: neighbouring side faces meet at 15 deg (smooth);
+        // its caps meet the sides at 90 deg: sharp.
+        int n = 24;
+        java.util.List<float[]> tris = new java.util.ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            double a0 = 2 * Math.PI * i / n, a1 = 2 * Math.PI * ((i + 1) % n) / n;
+            float x0 = (float) Math.cos(a0), y0 = (float) Math.sin(a0), x1 = (float) Math.cos(a1), y1 = (float) Math.sin(a1);
+            tris.add(new float[] {x0, y0, 0, x1, y1, 0, x1, y1, 1});
+            tris.add(new float[] {x0, y0, 0, x1, y1, 1, x0, y0, 1});
+            tris.add(new float[] {0, 0, 1, x0, y0, 1, x1, y1, 1});
+        }
+        float[] pos = new float[tris.size() * 9];
+        for (int t = 0; t < tris.size(); t++) System.arraycopy(tris.get(t), 0, pos, 9 * t, 9);
+        float[] nor = StlReader.normals(pos, StlReader.CREASE_COS);
+        // Side corner at angle 0 on the bottom rim: close to radial (1, 0, 0) (within 4 deg; the
+        // facet's own normal is 7.5 deg off), level, unit length.
+        assertTrue(nor[0] > Math.cos(Math.toRadians(4)), "corner normal " + nor[0] + ", " + nor[1]);
+        assertEquals(0, nor[2], 1e-6);
+        assertEquals(1, Math.sqrt(nor[0] * nor[0] + nor[1] * nor[1] + nor[2] * nor[2]), 1e-5);
+        // Cap corners stay straight up although they share their position with side corners.
+        for (int k = 0; k < 3; k++) assertEquals(1, nor[9 * 2 + 3 * k + 2], 1e-6);
     }
 }
