@@ -1,9 +1,13 @@
 package org.robopro.bench;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.AuxCounters;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
@@ -50,8 +54,28 @@ public class DiagnosisBench {
         validation = all.split(org.robopro.calibration.measurement.Measurement.Split.VALIDATE);
     }
 
+    /**
+     * The CPU time of the benchmark thread per operation, ms: on a machine shared with other work
+     * the wall time per operation includes the time the thread waited for a core; this does not.
+     */
+    @State(Scope.Thread)
+    @AuxCounters(AuxCounters.Type.EVENTS)
+    public static class CpuTime {
+        private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+        private long cpuNs, ops;
+
+        @Setup(Level.Iteration)
+        public void reset() { cpuNs = 0; ops = 0; }
+
+        public double cpuMsPerOp() { return ops == 0 ? 0 : cpuNs / 1e6 / ops; }
+    }
+
     @Benchmark
-    public Diagnosis diagnose300Poses() {
-        return Diagnoser.diagnose(robot, train, validation);
+    public Diagnosis diagnose300Poses(CpuTime cpu) {
+        long c0 = CpuTime.THREADS.getCurrentThreadCpuTime();
+        Diagnosis d = Diagnoser.diagnose(robot, train, validation);
+        cpu.cpuNs += CpuTime.THREADS.getCurrentThreadCpuTime() - c0;
+        cpu.ops++;
+        return d;
     }
 }

@@ -7,6 +7,7 @@ import java.util.OptionalDouble;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
 import org.openjdk.jmh.annotations.Scope;
@@ -118,6 +119,36 @@ public class ProgramCheckBench {
     RapidModule speedEdit() {
         double v = 0.1 + 1e-4 * (1 + edits++ % 1000);
         return edited(101, ((Move) body.get(101)).withSpeedOverride(OptionalDouble.of(v), OptionalDouble.empty()));
+    }
+
+    /** A new edit's simulation, made before each call and not timed: the check-only benchmarks time the path check alone. */
+    @State(Scope.Thread)
+    public static class NextEdit {
+        Simulation target, speed;
+
+        @Setup(Level.Invocation)
+        public void prepare(ProgramCheckBench b) {
+            target = MotionInterpreter.of(b.targetEdit()).simulate("main");
+            speed = MotionInterpreter.of(b.speedEdit()).simulate("main");
+        }
+    }
+
+    /** Path check alone, from scratch, of a program with one move's target edited. */
+    @Benchmark
+    public CheckReport checkOnlyTargetEditFull(NextEdit e) {
+        return new PathChecker(model).check(e.target, List.of());
+    }
+
+    /** Path check alone, incremental, of a program with one move's target edited. */
+    @Benchmark
+    public CheckReport checkOnlyTargetEditIncremental(NextEdit e) {
+        return checker.check(e.target, List.of(), cache);
+    }
+
+    /** Path check alone, incremental, of a program with one move's speed edited. */
+    @Benchmark
+    public CheckReport checkOnlySpeedEditIncremental(NextEdit e) {
+        return checker.check(e.speed, List.of(), cache);
     }
 
     /** The interpreter alone on an edited program (part of every edit benchmark; subtract it to see the check). */

@@ -241,7 +241,16 @@ public final class RapidWriter {
 
     private Expr other(double x) { return num(fmt(x, prec.otherDecimals())); }
 
-    private String fmt(double x, int decimals) { return exact ? RapidNumbers.formatExact(x) : RapidNumbers.format(x, decimals); }
+    /**
+     * A number's literal: at {@code decimals}, or in an exact tree a text that reads back as the
+     * very same double (Java's own: the interpreter reads it, no file keeps it, and it costs far
+     * less than the shortest decimal).
+     */
+    private String fmt(double x, int decimals) {
+        if (!exact) return RapidNumbers.format(x, decimals);
+        if (x == RapidNumbers.UNUSED_AXIS) return "9E+09";
+        return x == 0 ? "0" : Double.toString(x);
+    }
 
     private Expr quat(Quaternion q) {
         double tol = Math.pow(10, -prec.quatDecimals()) * 10;

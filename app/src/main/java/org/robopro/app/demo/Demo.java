@@ -376,11 +376,19 @@ public final class Demo {
 
             // The extended model predicts each target under the approach directions the program reaches it with.
             List<int[]> approach = approachDirections(check, moves);
-            TargetCompensator withEffects = (t, tool, seed) -> diag.compensator(nominal, weld.flangeTtcp,
-                    new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)).compensate(t, tool, seed);
-            RapidModule diagModule = compensate(weld, nominal, withEffects, "DemoWeldDiag", out);
-            List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
-            Run diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
+            Run diagnosedRun;
+            if (diag.modelsSomething()) {
+                TargetCompensator withEffects = (t, tool, seed) -> diag.compensator(nominal, weld.flangeTtcp,
+                        new PoseConditions(approach.get(indexOf(targets, t)), Double.NaN, Double.NaN, Double.NaN)).compensate(t, tool, seed);
+                RapidModule diagModule = compensate(weld, nominal, withEffects, "DemoWeldDiag", out);
+                List<Vec3> diagReadings = runAndMeasure(inv, diagModule, "DemoWeldDiag", targetIdx);
+                diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", diagReadings, targets, diag.instrumentTbase());
+            } else {
+                // Nothing held on held-out poses: the geometric calibration's program is the diagnosis' too.
+                compensate(weld, nominal, geometric, "DemoWeldDiag", out);
+                con.line("the diagnosis models nothing beyond the geometry: DemoWeldDiag.mod is the geometric calibration's program");
+                diagnosedRun = evaluate("with the diagnosed effect", "DemoWeldDiag", calReadings, targets, cal.instrumentTbase());
+            }
 
             // -------------------------------------------------------------- 5. table and report
             begin(5);

@@ -47,6 +47,9 @@ final class DiagnosisStep {
             return out;
         }
 
+        /** Whether the diagnosis models anything beyond the geometry (a named effect, or a located structure's fallback that held on held-out poses). */
+        boolean modelsSomething() { return !d.effects().isEmpty(); }
+
         /** The tracker registration of the extended model's fit. */
         Pose instrumentTbase() { return d.finalInstrumentTbase(); }
 

@@ -90,8 +90,11 @@ public final class LiveClearance {
 
     private Reading read(ClearanceChecker c, double[] q) { return new Reading(q, c.at(q, model.tool().flangeTtcp())); }
 
-    /** The checker for the model's robot, placement and objects, built again when any of them changed. */
-    private Optional<ClearanceChecker> checker() {
+    /**
+     * The checker for the model's robot, placement and objects, built again when any of them
+     * changed (the program check sweeps its moves with it); empty without a kinematic model.
+     */
+    public synchronized Optional<ClearanceChecker> checker() {
         var k = model.kinematics();
         Pose worldTbase = model.worldTbase();
         List<?> objects = model.objects();

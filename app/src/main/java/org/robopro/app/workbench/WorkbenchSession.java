@@ -60,8 +60,9 @@ public final class WorkbenchSession implements AutoCloseable {
         if (data.q() == null) model.setQ(startPose(data));
         model.markSaved();
         this.projectFile = projectFile;
-        this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
         this.clearance = new LiveClearance(model);
+        model.setClearance(clearance::checker);
+        this.pathChecker = new PathChecker(model, PATH_CHECK_DEBOUNCE_MS);
     }
 
     /** Where a project without saved joint values puts the robot: the ready pose of the IRB-2000 cell, else all zero. */

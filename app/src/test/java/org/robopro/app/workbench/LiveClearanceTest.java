@@ -82,6 +82,28 @@ class LiveClearanceTest {
     }
 
     @Test
+    void programIntoThePlate_collisionOnItsInstruction_otherMovesClear() throws Exception {
+        s.teach(); // p10 at the ready pose, torch over the plates
+        for (int i = 0; i < 200 && !s.clearance().current().orElseThrow().colliding(); i++)
+            assertTrue(s.jogCartesian(WorkbenchSession.JogFrame.WORLD, 0, 0, -0.005, 0, 0, 0));
+        s.jogCartesian(WorkbenchSession.JogFrame.WORLD, 0, 0, -0.005, 0, 0, 0); // 5 mm into it
+        assertTrue(s.clearance().current().orElseThrow().colliding(), "the torch is in the plate");
+        s.teach(); // p20, in the plate
+        s.addMove(org.robopro.app.workbench.model.Instruction.Type.MOVEJ, "p10", 500, 0);
+        s.addMove(org.robopro.app.workbench.model.Instruction.Type.MOVEL, "p20", 100, 0);
+        s.addMove(org.robopro.app.workbench.model.Instruction.Type.MOVEL, "p10", 100, 0);
+        var run = s.awaitPathCheck().run();
+        var steps = run.steps();
+        assertTrue(steps.get(0).ok(), steps.get(0).message());
+        for (int k = 1; k <= 2; k++) {
+            var st = steps.get(k);
+            assertTrue(!st.ok() && st.problems().stream().anyMatch(p -> p.kind() == org.robopro.programs.check.Problem.Kind.COLLISION),
+                    "move " + k + " into / out of the plate collides: " + st.problems());
+        }
+        assertTrue(run.badTargets().contains("p20"), run.badTargets().toString());
+    }
+
+    @Test
     void robotShapes_capsulesFollowTheLinks() {
         var shapes = s.clearance().robotShapes(s.model().q());
         assertTrue(shapes.containsKey("tool") && shapes.containsKey("link:1"), shapes.keySet().toString());

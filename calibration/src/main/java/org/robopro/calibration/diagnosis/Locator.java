@@ -287,19 +287,34 @@ final class Locator {
         return p;
     }
 
+    /** A probe of the k columns s (m x k, row-major), projected out of the model's span: S − U (Uᵀ S), all columns in one pass over U. */
     private static Probe finish(Diagnoser.Tester t, double[] s, int k) {
         Probe p = new Probe();
         p.k = k;
         p.n0 = new double[k];
-        int m = t.m;
-        double[] col = new double[m];
-        double[] proj = new double[m * k];
-        for (int c = 0; c < k; c++) {
-            double n = 0;
-            for (int i = 0; i < m; i++) { col[i] = s[i * k + c]; n += col[i] * col[i]; }
-            p.n0[c] = Math.sqrt(n);
-            double[] pc = t.project(col);
-            for (int i = 0; i < m; i++) proj[i * k + c] = pc[i];
+        int m = t.m, rank = t.rank;
+        double[] u = t.u;
+        double[] c = new double[k * rank];
+        for (int i = 0; i < m; i++) {
+            int ui = i * rank, si = i * k;
+            for (int col = 0; col < k; col++) {
+                double x = s[si + col];
+                if (x == 0) continue;
+                p.n0[col] += x * x;
+                int cc = col * rank;
+                for (int r = 0; r < rank; r++) c[cc + r] += u[ui + r] * x;
+            }
+        }
+        for (int col = 0; col < k; col++) p.n0[col] = Math.sqrt(p.n0[col]);
+        double[] proj = s.clone();
+        for (int i = 0; i < m; i++) {
+            int ui = i * rank, si = i * k;
+            for (int col = 0; col < k; col++) {
+                int cc = col * rank;
+                double v = 0;
+                for (int r = 0; r < rank; r++) v += u[ui + r] * c[cc + r];
+                proj[si + col] -= v;
+            }
         }
         p.s = proj;
         return p;

@@ -18,7 +18,9 @@ import org.robopro.models.Vec3;
  * header row; {@code #} lines are comments, except {@code # length-unit: mm|m} (points, default
  * mm), {@code # angle-unit: deg|rad} (log, default deg), {@code # frame: NAME} and
  * {@code # instrument: TEXT} (points) and {@code # robot: NAME} (log), which are carried into the
- * campaign. Every bad row is an {@link InputException} naming file, line and field
+ * campaign. A {@code point} column in the point list names the reflector when a pose measures
+ * several: the points of a pose share its name (or, matched by time, its log row) and the
+ * campaign has one row per pose with every point. Every bad row is an {@link InputException} naming file, line and field
  * (docs/measurement-file.md, "Joining a point list and a joint log").
  */
 public final class MeasurementJoin {
@@ -120,6 +122,10 @@ public final class MeasurementJoin {
                     throw new InputException(logFile, j.lines().get(r), j.col("time") + 1, "time", "times must not decrease");
             }
         }
+        int pointCol = p.col("point");
+        // With a point column: the rows of each pose (by name, or by the log row matched in time) in first-seen order.
+        Map<String, List<Integer>> byPose = new LinkedHashMap<>();
+        Map<String, Integer> logRowOf = new HashMap<>();
         List<Measurement> rows = new ArrayList<>();
         for (int r = 0; r < p.rows().size(); r++) {
             int line = p.lines().get(r);
@@ -139,12 +145,52 @@ public final class MeasurementJoin {
                     throw new InputException(pointsFile, line, p.col("time") + 1, "time", String.format(Locale.ROOT,
                             "no joint-log row within %.3g s of %.3f s (nearest: %.3f s, line %d of %s)", maxDtS, time, logTimes[lr],
                             j.lines().get(lr), logFile));
-                id = Integer.toString(r + 1);
+                id = pointCol >= 0 ? Integer.toString(lr + 1) : Integer.toString(r + 1);
+            }
+            if (pointCol >= 0) {
+                if (p.rows().get(r)[pointCol].isEmpty()) throw new InputException(pointsFile, line, pointCol + 1, "point", "empty point name");
+                byPose.computeIfAbsent(id, k -> new ArrayList<>()).add(r);
+                logRowOf.put(id, lr);
+                continue;
             }
             double[] q = new double[n];
             for (int k = 0; k < n; k++) q[k] = number(j, lr, "q" + (k + 1)) * (types.get(k) == JointType.PRISMATIC ? logLengthToM : angleToRad);
             Vec3 pos = new Vec3(number(p, r, "x") * lengthToM, number(p, r, "y") * lengthToM, number(p, r, "z") * lengthToM);
             rows.add(new Measurement(id, q, pos, null, null, time, Double.NaN, Double.NaN, null, line));
+        }
+        List<String> pointNames = List.of();
+        if (pointCol >= 0) {
+            List<String> first = null;
+            for (Map.Entry<String, List<Integer>> e : byPose.entrySet()) {
+                List<String> have = new ArrayList<>();
+                for (int r : e.getValue()) {
+                    String pt = p.rows().get(r)[pointCol];
+                    if (have.contains(pt))
+                        throw new InputException(pointsFile, p.lines().get(r), pointCol + 1, "point", "point '" + pt + "' of pose '" + e.getKey()
+                                + "' is given twice (first on line " + p.lines().get(e.getValue().get(have.indexOf(pt))) + ")");
+                    if (first != null && !first.contains(pt))
+                        throw new InputException(pointsFile, p.lines().get(r), pointCol + 1, "point", "point '" + pt + "' of pose '" + e.getKey()
+                                + "' is not measured at the first pose (points " + String.join(", ", first) + ")");
+                    have.add(pt);
+                }
+                if (first == null) first = have;
+                for (String pt : first)
+                    if (!have.contains(pt))
+                        throw new InputException(pointsFile, p.lines().get(e.getValue().get(0)), pointCol + 1, "point", "pose '" + e.getKey()
+                                + "' has no point '" + pt + "' (every pose measures points " + String.join(", ", first) + ")");
+                int lr = logRowOf.get(e.getKey());
+                double[] q = new double[n];
+                for (int k = 0; k < n; k++) q[k] = number(j, lr, "q" + (k + 1)) * (types.get(k) == JointType.PRISMATIC ? logLengthToM : angleToRad);
+                List<Vec3> pts = new ArrayList<>();
+                for (String pt : first) {
+                    int r = e.getValue().get(have.indexOf(pt));
+                    pts.add(new Vec3(number(p, r, "x") * lengthToM, number(p, r, "y") * lengthToM, number(p, r, "z") * lengthToM));
+                }
+                int r0 = e.getValue().get(0);
+                rows.add(new Measurement(e.getKey(), q, null, null, null, byName ? Double.NaN : number(p, r0, "time"), Double.NaN, Double.NaN,
+                        null, p.lines().get(r0), pts, Double.NaN));
+            }
+            if (first.size() > 1) pointNames = first;
         }
         Map<String, String> meta = new LinkedHashMap<>();
         if (j.meta().containsKey("robot")) meta.put("robot", j.meta().get("robot"));
@@ -152,7 +198,7 @@ public final class MeasurementJoin {
         meta.put("frame", frame);
         if (p.meta().containsKey("instrument")) meta.put("instrument", p.meta().get("instrument"));
         meta.put("joined-from", pointsFile + " + " + logFile + (byName ? " (by name)" : " (by time)"));
-        return new MeasurementSet(pointsFile, meta, frame, rows);
+        return new MeasurementSet(pointsFile, meta, frame, rows, pointNames, null);
     }
 
     private static int nearest(double[] sorted, double t) {

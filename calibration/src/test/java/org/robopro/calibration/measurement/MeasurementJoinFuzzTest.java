@@ -17,6 +17,9 @@ class MeasurementJoinFuzzTest {
         check(MeasurementJoinTest.POINTS + text, MeasurementJoinTest.LOG);
         check(MeasurementJoinTest.POINTS, MeasurementJoinTest.LOG + text);
         check("time,x,y,z\n" + text, "time,q1,q2,q3,q4,q5,q6\n0,0,0,0,0,0,0\n1,1,1,1,1,1,1\n");
+        // Several reflectors per pose: a point column, by name and by time.
+        check(MeasurementJoinTest.SMR_POINTS + text, MeasurementJoinTest.LOG);
+        check("point,time,x,y,z\n" + text, "time,q1,q2,q3,q4,q5,q6\n0,0,0,0,0,0,0\n1,1,1,1,1,1,1\n");
     }
 
     private static void check(String points, String log) {

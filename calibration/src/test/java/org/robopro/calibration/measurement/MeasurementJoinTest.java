@@ -59,4 +59,51 @@ class MeasurementJoinTest {
                 () -> MeasurementJoin.join("pts.csv", POINTS, "log.csv", "name,q1,q2\nP1,0,0\n", SIX, 0.5));
         assertTrue(joints.getMessage().contains("q3"), joints.getMessage());
     }
+
+    static final String SMR_POINTS = "# frame: tracker\nname,point,x,y,z\nP1,A,1000,20,30\nP1,B,1060,20,30\nP1,C,1030,72,30\n"
+            + "P2,B,1160,-20,40\nP2,A,1100,-20,40\nP2,C,1130,32,40\n";
+
+    @Test
+    void join_pointColumn_severalReflectorsPerPose() {
+        MeasurementSet s = MeasurementJoin.join("pts.csv", SMR_POINTS, "log.csv", LOG, SIX, 0.5);
+        assertEquals(2, s.size());
+        assertEquals(List.of("A", "B", "C"), s.pointNames());
+        assertEquals(1.1, s.rows().get(1).point(0).x(), 1e-15); // A, written second for P2
+        assertEquals(1.16, s.rows().get(1).point(1).x(), 1e-15);
+        assertEquals(Math.toRadians(-10), s.rows().get(1).q(0), 1e-15);
+        // Written in the long form and read back.
+        MeasurementSet back = MeasurementReader.parse("j.csv", MeasurementWriter.format(s, SIX), SIX);
+        assertEquals(s.pointNames(), back.pointNames());
+        assertEquals(s.rows().get(1).points(), back.rows().get(1).points());
+    }
+
+    @Test
+    void join_pointColumnByTime_groupsThePointsOfOneLogRow() {
+        String pts = "point,time,x,y,z\nA,1.01,1000,0,0\nB,1.03,1060,0,0\nA,2.98,1100,0,0\nB,3.02,1160,0,0\n";
+        String log = "time_s,q1,q2,q3,q4,q5,q6\n0,0,0,0,0,0,0\n1,10,0,0,0,0,0\n2,20,0,0,0,0,0\n3,30,0,0,0,0,0\n";
+        MeasurementSet s = MeasurementJoin.join("p.csv", pts, "l.csv", log, SIX, 0.1);
+        assertEquals(2, s.size());
+        assertEquals("2", s.rows().get(0).poseId()); // the log's second row
+        assertEquals(Math.toRadians(30), s.rows().get(1).q(0), 1e-15);
+        assertEquals(1.01, s.rows().get(0).timeS(), 0);
+    }
+
+    @Test
+    void join_pointColumn_badRowsAreLocated() {
+        InputException missing = assertThrows(InputException.class, () -> MeasurementJoin.join("pts.csv",
+                SMR_POINTS.replace("P2,C,1130,32,40\n", ""), "log.csv", LOG, SIX, 0.5));
+        assertEquals(6, missing.line());
+        assertTrue(missing.getMessage().contains("pose 'P2' has no point 'C'"), missing.getMessage());
+        InputException twice = assertThrows(InputException.class, () -> MeasurementJoin.join("pts.csv",
+                SMR_POINTS.replace("P2,A,", "P2,B,"), "log.csv", LOG, SIX, 0.5));
+        assertEquals(7, twice.line());
+        assertEquals("point", twice.field());
+        assertTrue(twice.getMessage().contains("given twice (first on line 6)"), twice.getMessage());
+        InputException other = assertThrows(InputException.class, () -> MeasurementJoin.join("pts.csv",
+                SMR_POINTS.replace("P2,C,", "P2,D,"), "log.csv", LOG, SIX, 0.5));
+        assertTrue(other.getMessage().startsWith("pts.csv:8:") && other.getMessage().contains("not measured at the first pose"), other.getMessage());
+        InputException empty = assertThrows(InputException.class, () -> MeasurementJoin.join("pts.csv",
+                SMR_POINTS.replace("P1,C,", "P1,,"), "log.csv", LOG, SIX, 0.5));
+        assertTrue(empty.getMessage().startsWith("pts.csv:5:") && empty.getMessage().contains("empty point name"), empty.getMessage());
+    }
 }

@@ -232,6 +232,8 @@ public final class ClearanceChecker {
     /**
      * Sweeps every move of a checked run ({@code steps} and the {@code report} the path check
      * made of them, step for step) and reports collisions and the smallest clearance per move.
+     * Each move's sweep is kept (by its joint path and tool, compared exactly; the 4096 most
+     * recent), so checking an edited program again sweeps only the moves whose path changed.
      */
     public Result check(List<ProgramStep> steps, CheckReport report, Optional<double[]> qStart) {
         List<Problem> problems = new ArrayList<>();
@@ -254,19 +256,12 @@ public final class ClearanceChecker {
                     path.add(qk);
                 }
             }
-            double best = Double.POSITIVE_INFINITY;
-            String pair = "";
-            boolean hit = false;
-            for (int k = 0; k < path.size(); k++) {
-                Snapshot s = at(path.get(k), m.flangeTtcp());
-                if (s.minClearanceM() < best) { best = s.minClearanceM(); pair = s.closestPair(); }
-                if (!hit && !s.colliding().isEmpty()) {
-                    hit = true;
-                    problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.COLLISION, m.label(), m.targetName(), m.source(),
-                            String.format(Locale.ROOT, "collision %s at %.0f%% of the move", String.join(", ", s.colliding()),
-                                    path.size() == 1 ? 100.0 : 100.0 * k / (path.size() - 1))));
-                }
-            }
+            Sweep sw = sweep(path, m.flangeTtcp());
+            double best = sw.best;
+            String pair = sw.pair;
+            boolean hit = sw.hit != null;
+            if (hit)
+                problems.add(new Problem(Problem.Severity.ERROR, Problem.Kind.COLLISION, m.label(), m.targetName(), m.source(), sw.hit));
             if (!hit && best < opt.warnClearanceM())
                 problems.add(new Problem(Problem.Severity.WARNING, Problem.Kind.COLLISION, m.label(), m.targetName(), m.source(),
                         String.format(Locale.ROOT, "passes %.1f mm from a collision (%s), closer than %.0f mm", best * 1e3, pair, opt.warnClearanceM() * 1e3)));
@@ -274,6 +269,54 @@ public final class ClearanceChecker {
             q = r.qEnd();
         }
         return new Result(problems, moves);
+    }
+
+    /** One move's sweep: smallest clearance, its pair, and the first contact in words (null: none). */
+    private record Sweep(double best, String pair, String hit) { }
+
+    /** Sweeps already made by this checker (so for this cell), by path and tool: an edited program sweeps only its changed moves. */
+    private final Map<SweepKey, Sweep> sweeps = new java.util.LinkedHashMap<>(256, 0.75f, true) {
+        @Override protected boolean removeEldestEntry(Map.Entry<SweepKey, Sweep> eldest) { return size() > 4096; }
+    };
+
+    /** A swept path (joint values, compared exactly) and the tool. */
+    private record SweepKey(List<double[]> path, Pose tool, int hash) {
+        SweepKey(List<double[]> path, Pose tool) { this(path, tool, hashOf(path, tool)); }
+
+        private static int hashOf(List<double[]> path, Pose tool) {
+            int h = tool.hashCode();
+            for (double[] q : path) h = 31 * h + java.util.Arrays.hashCode(q);
+            return h;
+        }
+
+        @Override public int hashCode() { return hash; }
+
+        @Override
+        public boolean equals(Object o) {
+            if (!(o instanceof SweepKey k) || k.hash != hash || k.path.size() != path.size() || !k.tool.equals(tool)) return false;
+            for (int i = 0; i < path.size(); i++) if (!java.util.Arrays.equals(path.get(i), k.path.get(i))) return false;
+            return true;
+        }
+    }
+
+    private Sweep sweep(List<double[]> path, Pose tool) {
+        SweepKey key = new SweepKey(path, tool);
+        synchronized (sweeps) {
+            Sweep s = sweeps.get(key);
+            if (s != null) return s;
+        }
+        double best = Double.POSITIVE_INFINITY;
+        String pair = "", hit = null;
+        for (int k = 0; k < path.size(); k++) {
+            Snapshot s = at(path.get(k), tool);
+            if (s.minClearanceM() < best) { best = s.minClearanceM(); pair = s.closestPair(); }
+            if (hit == null && !s.colliding().isEmpty())
+                hit = String.format(Locale.ROOT, "collision %s at %.0f%% of the move", String.join(", ", s.colliding()),
+                        path.size() == 1 ? 100.0 : 100.0 * k / (path.size() - 1));
+        }
+        Sweep out = new Sweep(best, pair, hit);
+        synchronized (sweeps) { sweeps.put(key, out); }
+        return out;
     }
 
     /**

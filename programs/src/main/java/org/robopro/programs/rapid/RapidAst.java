@@ -222,10 +222,15 @@ public final class RapidAst {
 
         public double value() { return numberValue(text); }
 
-        /** The shortest literal that reads back as exactly {@code v} (v >= 0). */
+        /**
+         * A literal that reads back as exactly {@code v} (v >= 0): Java's own text of the double
+         * (exponent form "1.0E-5" for small and large values, which RAPID reads too). For files,
+         * where the shortest digits matter, see {@link RapidNumbers#formatExact}; this one is
+         * cheap, for values the interpreter converts at run time.
+         */
         public static Num of(double v) {
             if (!(v >= 0) || !Double.isFinite(v)) throw new IllegalArgumentException("number literals are finite and >= 0: " + v);
-            return new Num(RapidNumbers.formatExact(v));
+            return new Num(v == 0 ? "0" : Double.toString(v));
         }
     }
 

@@ -265,23 +265,25 @@ public final class MotionInterpreter {
             for (RapidAst.Module m : all)
                 for (RapidAst.Item it : m.items())
                     if (it instanceof RapidAst.DataDecl dd && !globals.containsKey(Values.lower(dd.name()))) {
-                        Var v = declare(dd, none);
-                        globals.put(Values.lower(dd.name()), v);
-                        v.value = typedOnce(v.value, v.type);
+                        Var v = typedDeclaration(dd);
+                        globals.put(Values.lower(dd.name()), v != null ? v : declare(dd, none));
                     }
         }
 
         /**
          * Module data of a RAPID data type robopro models (robtarget, tooldata, speeddata, ...)
-         * converted once to its typed value, so each motion naming it does not convert it again;
-         * a value the type refuses stays as it is and is reported where it is used.
+         * with a literal value, read once as its typed value (so each motion naming it does not
+         * convert it again); null for anything else, which {@link #declare} evaluates.
          */
-        Object typedOnce(Object value, String type) {
-            if (!(value instanceof Rec r) || r.type == null || !r.type.equals(type) || !RapidParser.TYPES.contains(type)) return value;
+        Var typedDeclaration(RapidAst.DataDecl d) {
+            String type = base(d.type());
+            if (d.init() == null || !d.dims().isEmpty() || !RapidParser.TYPES.contains(type)
+                    || type.equals("num") || type.equals("bool") || type.equals("string")
+                    || !(d.init() instanceof RapidAst.Aggregate || d.init() instanceof RapidAst.Name)) return null;
             try {
-                return new Typed(RapidParser.literalValue(type, Values.literal(value), file, type));
-            } catch (IllegalArgumentException | InputException refused) {
-                return value;
+                return new Var(type, new Typed(RapidParser.literalValue(type, d.init(), file, d.name())), d.storage() == RapidAst.Storage.CONST);
+            } catch (IllegalArgumentException | InputException notLiteral) {
+                return null; // computed, or naming other data: evaluated as written
             }
         }
 

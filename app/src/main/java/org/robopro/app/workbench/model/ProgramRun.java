@@ -14,6 +14,7 @@ import org.robopro.programs.check.CheckCache;
 import org.robopro.programs.check.CheckReport;
 import org.robopro.programs.check.PathChecker;
 import org.robopro.programs.check.Problem;
+import org.robopro.programs.collision.ClearanceChecker;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
@@ -92,10 +93,14 @@ public final class ProgramRun {
     }
 
     /** Maps, steps, checks and samples the model's program. */
-    public static ProgramRun of(WorkbenchModel m) { return of(m, null); }
+    public static ProgramRun of(WorkbenchModel m) { return of(m, null, null); }
 
-    /** As {@link #of(WorkbenchModel)}, reusing the path check's results for unchanged motions from {@code cache} (null: none). */
-    public static ProgramRun of(WorkbenchModel m, CheckCache cache) {
+    /**
+     * As {@link #of(WorkbenchModel)}, reusing the path check's results for unchanged motions from
+     * {@code cache} (null: none) and sweeping every move for collisions with {@code clearance}
+     * (null: no collision check); its problems join the path check's on each instruction.
+     */
+    public static ProgramRun of(WorkbenchModel m, CheckCache cache, ClearanceChecker clearance) {
         List<Instruction> program = m.program();
         RobotKinematics k = m.kinematics();
         List<Step> out = new ArrayList<>();
@@ -119,6 +124,7 @@ public final class ProgramRun {
         List<ProgramStep> steps = runnable.isEmpty() ? List.of() : MotionInterpreter.of(module).run("main");
         Optional<KinematicModel> km = k.kinematicModel();
         CheckReport report = km.isPresent() && !steps.isEmpty() ? new PathChecker(km.get()).check(new Simulation(steps, List.of()), List.of(), cache) : null;
+        List<Problem> collisions = clearance == null || report == null ? List.of() : clearance.check(steps, report, Optional.empty()).problems();
         List<double[]> qEnd = new ArrayList<>();
         for (int s = 0; s < steps.size(); s++) {
             MoveStep mv = (MoveStep) steps.get(s);
@@ -127,6 +133,7 @@ public final class ProgramRun {
             double[] q = null;
             if (report != null) {
                 for (Problem p : report.problems()) if (p.step().equals(mv.label())) ps.add(p);
+                for (Problem p : collisions) if (p.step().equals(mv.label())) ps.add(p);
                 dur = report.steps().get(s).durationS();
                 q = report.steps().get(s).qEnd();
             } else {

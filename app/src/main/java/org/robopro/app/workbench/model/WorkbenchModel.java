@@ -47,6 +47,7 @@ public final class WorkbenchModel {
     private ProgramRun run;
     /** Path-check results by motion, kept across edits: a check after an edit solves only the motions it changed. */
     private final org.robopro.programs.check.CheckCache checkCache = new org.robopro.programs.check.CheckCache();
+    private volatile java.util.function.Supplier<Optional<org.robopro.programs.collision.ClearanceChecker>> clearance = Optional::empty;
     private final EditHistory history = new EditHistory();
     /** The edit state after the last recorded command: the "before" of the next one. */
     private ProjectData committed;
@@ -376,11 +377,20 @@ public final class WorkbenchModel {
             if (run != null) return run;
             v = version.get();
         }
-        ProgramRun r = ProgramRun.of(this, checkCache);
+        ProgramRun r = ProgramRun.of(this, checkCache, clearance.get().orElse(null));
         synchronized (this) {
             if (version.get() == v) run = r;
         }
         return r;
+    }
+
+    /**
+     * Where the program run finds the cell's collision checker (the session's live clearance
+     * sets it); without one, programs are not checked for collisions.
+     */
+    public void setClearance(java.util.function.Supplier<Optional<org.robopro.programs.collision.ClearanceChecker>> c) {
+        clearance = c;
+        synchronized (this) { run = null; }
     }
 
     /** The path check's results by motion, kept across edits (its hit and miss counts show what a check solved). */
