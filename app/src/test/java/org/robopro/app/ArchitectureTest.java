@@ -66,6 +66,15 @@ class ArchitectureTest {
                 .check(classes);
     }
 
+    @Test
+    void rapidSyntaxTree_knowsNothingOfThePrograms() {
+        // The program is its syntax tree; the typed view, interpreter and checks stand on it, never the reverse.
+        noClasses().that().resideInAPackage("org.robopro.programs.rapid..").should().dependOnClassesThat()
+                .resideInAnyPackage("org.robopro.programs", "org.robopro.programs.sim..", "org.robopro.programs.check..",
+                        "org.robopro.programs.collision..", "org.robopro.programs.compensation..", "org.robopro.programs.project..")
+                .check(classes);
+    }
+
     private static void forbid(String module, String... below) {
         noClasses().that().resideInAPackage(module).should().dependOnClassesThat().resideInAnyPackage(below).check(classes);
     }

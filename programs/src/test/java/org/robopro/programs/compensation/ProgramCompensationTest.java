@@ -67,10 +67,7 @@ class ProgramCompensationTest {
     @Test
     void compensate_moveC_circlePointsNamedAndInlineReachedByRealRobot() {
         KinematicModel nominal = KinematicModel.build(RobotLibrary.shipped("irb2000"));
-        double[] p = nominal.parameterValues();
-        Random r = new Random(11);
-        for (int i = 0; i < p.length; i++) p[i] += r.nextGaussian() * 0.002;
-        KinematicModel real = nominal.withParameterValues(p);
+        KinematicModel real = perturbed(nominal, 11);
         ToolData torch = new ToolData(true, new RapidPose(new Vec3(0, 0, 0.15), Quaternion.IDENTITY), LoadData.LOAD0);
         WObjData table = new WObjData(false, true, "", new RapidPose(new Vec3(0.9, -0.2, 0.5), Quaternion.IDENTITY), RapidPose.IDENTITY);
         RobTarget start = Teach.taught(nominal, new double[] {0.1, 0.2, 0.1, 0.2, 0.7, -0.3}, torch, table);
@@ -130,10 +127,7 @@ class ProgramCompensationTest {
     @Test
     void compensate_inlineTargetsOfCalledAndUncalledProcedures_rewrittenWhereTheyRun() {
         KinematicModel nominal = KinematicModel.build(RobotLibrary.shipped("irb2000"));
-        double[] p = nominal.parameterValues();
-        Random r = new Random(11);
-        for (int i = 0; i < p.length; i++) p[i] += r.nextGaussian() * 0.002;
-        KinematicModel real = nominal.withParameterValues(p);
+        KinematicModel real = perturbed(nominal, 11);
         String inline = "[[900,50,850],[0,0,1,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]]";
         String text = "MODULE M\n"
                 + "  CONST robtarget p1:=[[900,0,900],[0,0,1,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]];\n"
@@ -153,5 +147,13 @@ class ProgramCompensationTest {
                 .orElseThrow().q();
         assertTrue(commanded.baseTtcp().orElseThrow().distanceTo(wanted) > 1e-4, "the perturbation needs a visible correction");
         assertEquals(0, real.flange(q).times(commanded.flangeTtcp()).distanceTo(wanted), 2e-6);
+    }
+
+    /** The nominal model with every parameter moved by a seeded Gaussian of 2 mm or 2 mrad: the "real" robot. */
+    static KinematicModel perturbed(KinematicModel nominal, long seed) {
+        double[] p = nominal.parameterValues();
+        Random r = new Random(seed);
+        for (int i = 0; i < p.length; i++) p[i] += r.nextGaussian() * 0.002;
+        return nominal.withParameterValues(p);
     }
 }
