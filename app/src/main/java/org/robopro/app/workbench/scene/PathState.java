@@ -79,6 +79,40 @@ public final class PathState extends BaseAppState {
 
     private boolean triadsShown = true;
 
+    /** One target ball, shared by every target's (culled) pick geometry. */
+    private static final Sphere BALL = new Sphere(8, 10, 0.025f);
+
+    /** Copies of {@link #BALL} at each centre, merged into one mesh. */
+    private Geometry balls(String name, List<com.jme3.math.Vector3f> centres, int rgb) {
+        java.nio.FloatBuffer p = BALL.getFloatBuffer(VertexBuffer.Type.Position);
+        java.nio.FloatBuffer nrm = BALL.getFloatBuffer(VertexBuffer.Type.Normal);
+        com.jme3.scene.mesh.IndexBuffer idx = BALL.getIndexBuffer();
+        int nv = BALL.getVertexCount(), ni = idx.size(), k = centres.size();
+        float[] pos = new float[k * nv * 3], nor = new float[k * nv * 3];
+        int[] ind = new int[k * ni];
+        for (int c = 0; c < k; c++) {
+            com.jme3.math.Vector3f o = centres.get(c);
+            for (int v = 0; v < nv; v++) {
+                int a = 3 * (c * nv + v);
+                pos[a] = p.get(3 * v) + o.x;
+                pos[a + 1] = p.get(3 * v + 1) + o.y;
+                pos[a + 2] = p.get(3 * v + 2) + o.z;
+                nor[a] = nrm.get(3 * v);
+                nor[a + 1] = nrm.get(3 * v + 1);
+                nor[a + 2] = nrm.get(3 * v + 2);
+            }
+            for (int i = 0; i < ni; i++) ind[c * ni + i] = idx.get(i) + c * nv;
+        }
+        Mesh m = new Mesh();
+        m.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(pos));
+        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(nor));
+        m.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createIntBuffer(ind));
+        m.updateBound();
+        Geometry g = new Geometry(name, m);
+        g.setMaterial(shapes.lit(rgb));
+        return g;
+    }
+
     private void rebuild(PathChecker.Result r) {
         shownRequest = r.request();
         node.detachAllChildren();
@@ -86,14 +120,19 @@ public final class PathState extends BaseAppState {
         ProgramRun p = r.run();
         plan = p;
         Map<String, TargetStatus> st = r.statuses();
+        List<com.jme3.math.Vector3f> okCentres = new java.util.ArrayList<>(), badCentres = new java.util.ArrayList<>();
         for (Target t : targets) {
             TargetStatus s = st.getOrDefault(t.name(), TargetStatus.REACHABLE);
             Node tn = new Node("target-" + t.name());
             tn.setUserData("pick", "target:" + t.name());
             Shapes.apply(t.worldTtcp(), tn);
-            Geometry ball = new Geometry("target-" + t.name() + "-ball", new Sphere(12, 16, 0.025f));
+            // The ball stays in the graph for picking and the selection outline; it is drawn as part
+            // of one merged mesh per colour below (one draw call instead of one per target).
+            Geometry ball = new Geometry("target-" + t.name() + "-ball", BALL);
             ball.setMaterial(shapes.lit(s.ok() ? OK_RGB : BAD_RGB));
+            ball.setCullHint(Spatial.CullHint.Always);
             tn.attachChild(ball);
+            (s.ok() ? okCentres : badCentres).add(Shapes.v(t.worldTtcp().position()));
             Node axes = shapes.axes("target-" + t.name() + "-axes", 0.07f);
             if (!triadsShown) axes.setCullHint(Spatial.CullHint.Always);
             tn.attachChild(axes);
@@ -103,6 +142,8 @@ public final class PathState extends BaseAppState {
             label.setLocalTranslation(Shapes.v(t.worldTtcp().position()).add(0.025f, 0, 0.03f));
             node.attachChild(label);
         }
+        if (!okCentres.isEmpty()) node.attachChild(balls("target-balls-ok", okCentres, OK_RGB));
+        if (!badCentres.isEmpty()) node.attachChild(balls("target-balls-bad", badCentres, BAD_RGB));
         statuses = Map.copyOf(st);
         if (p.sampleCount() >= 2) {
             float[] pts = new float[p.sampleCount() * 3];
