@@ -67,17 +67,16 @@ public final class PathState extends BaseAppState {
     @Override
     public void update(float tpf) {
         node.setCullHint(model.showPath() ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
-        boolean triads = model.frameShown(org.robopro.app.workbench.model.WorkbenchModel.FrameKind.TARGETS);
-        if (triads != triadsShown) {
-            triadsShown = triads;
-            for (Spatial t : node.getChildren()) {
-                Spatial a = t instanceof Node tn ? tn.getChild(tn.getName() + "-axes") : null;
-                if (a != null) a.setCullHint(triads ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
-            }
+        boolean shown = model.frameShown(org.robopro.app.workbench.model.WorkbenchModel.FrameKind.TARGETS);
+        if (shown != triadsShown) {
+            triadsShown = shown;
+            if (triads != null) triads.setCullHint(shown ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
         }
     }
 
     private boolean triadsShown = true;
+    private Node triads;
+    private static final float TRIAD_LENGTH = 0.07f;
 
     /** One target ball, shared by every target's (culled) pick geometry. */
     private static final Sphere BALL = new Sphere(8, 10, 0.025f);
@@ -121,6 +120,7 @@ public final class PathState extends BaseAppState {
         plan = p;
         Map<String, TargetStatus> st = r.statuses();
         List<com.jme3.math.Vector3f> okCentres = new java.util.ArrayList<>(), badCentres = new java.util.ArrayList<>();
+        List<com.jme3.math.Transform> frames = new java.util.ArrayList<>();
         for (Target t : targets) {
             TargetStatus s = st.getOrDefault(t.name(), TargetStatus.REACHABLE);
             Node tn = new Node("target-" + t.name());
@@ -133,9 +133,11 @@ public final class PathState extends BaseAppState {
             ball.setCullHint(Spatial.CullHint.Always);
             tn.attachChild(ball);
             (s.ok() ? okCentres : badCentres).add(Shapes.v(t.worldTtcp().position()));
-            Node axes = shapes.axes("target-" + t.name() + "-axes", 0.07f);
-            if (!triadsShown) axes.setCullHint(Spatial.CullHint.Always);
+            // Like the ball: kept for the selection outline, drawn by the merged triads below.
+            Node axes = shapes.axes("target-" + t.name() + "-axes", TRIAD_LENGTH);
+            axes.setCullHint(Spatial.CullHint.Always);
             tn.attachChild(axes);
+            frames.add(tn.getLocalTransform().clone());
             node.attachChild(tn);
             // The target's name beside it, facing the camera.
             Node label = shapes.label("label-" + t.name(), t.name(), 0.05f, s.ok() ? 0x1B3A1F : 0x8B1A1A);
@@ -144,6 +146,9 @@ public final class PathState extends BaseAppState {
         }
         if (!okCentres.isEmpty()) node.attachChild(balls("target-balls-ok", okCentres, OK_RGB));
         if (!badCentres.isEmpty()) node.attachChild(balls("target-balls-bad", badCentres, BAD_RGB));
+        triads = shapes.mergedAxes("target-triads", frames, TRIAD_LENGTH);
+        triads.setCullHint(triadsShown ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        node.attachChild(triads);
         statuses = Map.copyOf(st);
         if (p.sampleCount() >= 2) {
             float[] pts = new float[p.sampleCount() * 3];

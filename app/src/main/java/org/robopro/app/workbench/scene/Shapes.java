@@ -129,13 +129,53 @@ public final class Shapes {
     public Node axes(String name, float len) {
         Node n = new Node(name);
         n.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
-        Vector3f[] dirs = {Vector3f.UNIT_X, Vector3f.UNIT_Y, Vector3f.UNIT_Z};
-        int[] cols = {0xE53935, 0x43A047, 0x1E88E5};
         for (int i = 0; i < 3; i++) {
-            Arrow a = new Arrow(dirs[i].mult(len));
+            Arrow a = new Arrow(AXIS_DIRS[i].mult(len));
             a.setLineWidth(2f);
             Geometry g = new Geometry(name + "-" + "xyz".charAt(i), a);
-            g.setMaterial(flat(cols[i], true));
+            g.setMaterial(flat(AXIS_RGB[i], true));
+            g.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
+            n.attachChild(g);
+        }
+        return n;
+    }
+
+    private static final Vector3f[] AXIS_DIRS = {Vector3f.UNIT_X, Vector3f.UNIT_Y, Vector3f.UNIT_Z};
+    private static final int[] AXIS_RGB = {0xE53935, 0x43A047, 0x1E88E5};
+
+    /**
+     * The same triads as {@link #axes} at many frames, drawn as one line mesh per axis colour
+     * (three draw calls however many frames).
+     */
+    public Node mergedAxes(String name, java.util.List<Transform> frames, float len) {
+        Node n = new Node(name);
+        n.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
+        for (int i = 0; i < 3; i++) {
+            Arrow a = new Arrow(AXIS_DIRS[i].mult(len));
+            java.nio.FloatBuffer p = a.getFloatBuffer(com.jme3.scene.VertexBuffer.Type.Position);
+            com.jme3.scene.mesh.IndexBuffer idx = a.getIndexBuffer();
+            int nv = a.getVertexCount(), ni = idx.size(), k = frames.size();
+            float[] pos = new float[k * nv * 3];
+            int[] ind = new int[k * ni];
+            Vector3f v = new Vector3f(), w = new Vector3f();
+            for (int f = 0; f < k; f++) {
+                for (int j = 0; j < nv; j++) {
+                    v.set(p.get(3 * j), p.get(3 * j + 1), p.get(3 * j + 2));
+                    frames.get(f).transformVector(v, w);
+                    pos[3 * (f * nv + j)] = w.x;
+                    pos[3 * (f * nv + j) + 1] = w.y;
+                    pos[3 * (f * nv + j) + 2] = w.z;
+                }
+                for (int j = 0; j < ni; j++) ind[f * ni + j] = idx.get(j) + f * nv;
+            }
+            com.jme3.scene.Mesh m = new com.jme3.scene.Mesh();
+            m.setMode(com.jme3.scene.Mesh.Mode.Lines);
+            m.setLineWidth(2f);
+            m.setBuffer(com.jme3.scene.VertexBuffer.Type.Position, 3, com.jme3.util.BufferUtils.createFloatBuffer(pos));
+            m.setBuffer(com.jme3.scene.VertexBuffer.Type.Index, 2, com.jme3.util.BufferUtils.createIntBuffer(ind));
+            m.updateBound();
+            Geometry g = new Geometry(name + "-" + "xyz".charAt(i), m);
+            g.setMaterial(flat(AXIS_RGB[i], true));
             g.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
             n.attachChild(g);
         }
