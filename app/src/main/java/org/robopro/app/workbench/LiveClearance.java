@@ -30,8 +30,8 @@ public final class LiveClearance {
     public enum Level { NEAR, COLLIDING }
 
     /** The robot at one joint position: the checker's snapshot and the parts to highlight. */
-    public record Reading(double[] q, ClearanceChecker.Snapshot snapshot) {
-        public Reading { q = q.clone(); }
+    public record Reading(double[] q, ClearanceChecker.Snapshot snapshot, List<String> placement) {
+        public Reading { q = q.clone(); placement = List.copyOf(placement); }
 
         @Override public double[] q() { return q.clone(); }
 
@@ -47,12 +47,18 @@ public final class LiveClearance {
             return out;
         }
 
-        /** One line for a status bar: the collision, or the smallest clearance and between what. */
+        /**
+         * One line for a status bar: the collision, or the smallest clearance and between what;
+         * then the first cell object placed through another, if any.
+         */
         public String text() {
             ClearanceChecker.Snapshot s = snapshot;
-            if (!s.colliding().isEmpty()) return "COLLISION: " + String.join(", ", s.colliding());
-            if (!Double.isFinite(s.minClearanceM())) return "clearance: nothing to compare";
-            return String.format(Locale.ROOT, "clearance %.0f mm (%s)", s.minClearanceM() * 1e3, s.closestPair());
+            String robot;
+            if (!s.colliding().isEmpty()) robot = "COLLISION: " + String.join(", ", s.colliding());
+            else if (!Double.isFinite(s.minClearanceM())) robot = "clearance: nothing to compare";
+            else robot = String.format(Locale.ROOT, "clearance %.0f mm (%s)", s.minClearanceM() * 1e3, s.closestPair());
+            if (placement.isEmpty()) return robot;
+            return robot + " | WARNING: " + placement.get(0) + (placement.size() > 1 ? " (and " + (placement.size() - 1) + " more)" : "");
         }
     }
 
@@ -88,7 +94,11 @@ public final class LiveClearance {
         return checker().map(c -> c.robotShapes(q, model.tool().flangeTtcp())).orElse(Map.of());
     }
 
-    private Reading read(ClearanceChecker c, double[] q) { return new Reading(q, c.at(q, model.tool().flangeTtcp())); }
+    private Reading read(ClearanceChecker c, double[] q) { return new Reading(q, c.at(q, model.tool().flangeTtcp()), placement); }
+
+    /** Objects that overlap by more than this are placed through one another (resting objects touch). */
+    private static final double PLACEMENT_TOLERANCE_M = 0.001;
+    private List<String> placement = List.of();
 
     /**
      * The checker for the model's robot, placement and objects, built again when any of them
@@ -104,6 +114,7 @@ public final class LiveClearance {
             last = null;
             Optional<KinematicModel> km = k.kinematicModel();
             CellDescription cell = ProjectStore.toCell(model.snapshot());
+            placement = ClearanceChecker.placement(cell.objects(), PLACEMENT_TOLERANCE_M);
             checker = km.map(m -> new ClearanceChecker(m, worldTbase, cell.objects(), ShippedMeshes.collisionOptions(k.description(), m)))
                     .orElse(null);
         }

@@ -67,6 +67,23 @@ class LiveClearanceTest {
     }
 
     @Test
+    void partPlacedThroughAnother_warnedInTheStatusLine_restingObjectsAreNot() {
+        LiveClearance.Reading ready = s.clearance().current().orElseThrow();
+        assertTrue(ready.placement().isEmpty(), "the welding cell's objects rest on one another: " + ready.placement());
+        CellObject a = s.addObject(CellObject.Kind.PART);
+        CellObject b = s.addObject(CellObject.Kind.PART);
+        s.placeObject(a.id(), 2.0, 2.0, 0.0, 0);
+        s.placeObject(b.id(), 2.05, 2.0, 0.0, 0);
+        LiveClearance.Reading r = s.clearance().current().orElseThrow();
+        assertEquals(1, r.placement().size(), r.placement().toString());
+        assertTrue(r.placement().get(0).contains("placed through"), r.placement().toString());
+        assertTrue(r.text().contains("WARNING: ") && r.text().contains("placed through"), r.text());
+        // Moved apart: the warning goes.
+        s.placeObject(b.id(), 3.5, 2.0, 0.0, 0);
+        assertTrue(s.clearance().current().orElseThrow().placement().isEmpty());
+    }
+
+    @Test
     void objectMovedOntoTheRobot_checkerFollowsTheCell() {
         double[] q = s.model().q();
         LiveClearance.Reading ready = s.clearance().current().orElseThrow();
