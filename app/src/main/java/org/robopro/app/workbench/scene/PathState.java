@@ -81,33 +81,9 @@ public final class PathState extends BaseAppState {
     /** One target ball, shared by every target's (culled) pick geometry. */
     private static final Sphere BALL = new Sphere(8, 10, 0.025f);
 
-    /** Copies of {@link #BALL} at each centre, merged into one mesh. */
-    private Geometry balls(String name, List<com.jme3.math.Vector3f> centres, int rgb) {
-        java.nio.FloatBuffer p = BALL.getFloatBuffer(VertexBuffer.Type.Position);
-        java.nio.FloatBuffer nrm = BALL.getFloatBuffer(VertexBuffer.Type.Normal);
-        com.jme3.scene.mesh.IndexBuffer idx = BALL.getIndexBuffer();
-        int nv = BALL.getVertexCount(), ni = idx.size(), k = centres.size();
-        float[] pos = new float[k * nv * 3], nor = new float[k * nv * 3];
-        int[] ind = new int[k * ni];
-        for (int c = 0; c < k; c++) {
-            com.jme3.math.Vector3f o = centres.get(c);
-            for (int v = 0; v < nv; v++) {
-                int a = 3 * (c * nv + v);
-                pos[a] = p.get(3 * v) + o.x;
-                pos[a + 1] = p.get(3 * v + 1) + o.y;
-                pos[a + 2] = p.get(3 * v + 2) + o.z;
-                nor[a] = nrm.get(3 * v);
-                nor[a + 1] = nrm.get(3 * v + 1);
-                nor[a + 2] = nrm.get(3 * v + 2);
-            }
-            for (int i = 0; i < ni; i++) ind[c * ni + i] = idx.get(i) + c * nv;
-        }
-        Mesh m = new Mesh();
-        m.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(pos));
-        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(nor));
-        m.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createIntBuffer(ind));
-        m.updateBound();
-        Geometry g = new Geometry(name, m);
+    /** Copies of {@link #BALL} at each target frame, merged into one mesh. */
+    private Geometry balls(String name, List<com.jme3.math.Transform> frames, int rgb) {
+        Geometry g = new Geometry(name, Shapes.copies(BALL, frames));
         g.setMaterial(shapes.lit(rgb));
         return g;
     }
@@ -119,8 +95,8 @@ public final class PathState extends BaseAppState {
         ProgramRun p = r.run();
         plan = p;
         Map<String, TargetStatus> st = r.statuses();
-        List<com.jme3.math.Vector3f> okCentres = new java.util.ArrayList<>(), badCentres = new java.util.ArrayList<>();
-        List<com.jme3.math.Transform> frames = new java.util.ArrayList<>();
+        List<com.jme3.math.Transform> frames = new java.util.ArrayList<>(), okFrames = new java.util.ArrayList<>(),
+                badFrames = new java.util.ArrayList<>();
         for (Target t : targets) {
             TargetStatus s = st.getOrDefault(t.name(), TargetStatus.REACHABLE);
             Node tn = new Node("target-" + t.name());
@@ -132,20 +108,20 @@ public final class PathState extends BaseAppState {
             ball.setMaterial(shapes.lit(s.ok() ? OK_RGB : BAD_RGB));
             ball.setCullHint(Spatial.CullHint.Always);
             tn.attachChild(ball);
-            (s.ok() ? okCentres : badCentres).add(Shapes.v(t.worldTtcp().position()));
             // Like the ball: kept for the selection outline, drawn by the merged triads below.
             Node axes = shapes.axes("target-" + t.name() + "-axes", TRIAD_LENGTH);
             axes.setCullHint(Spatial.CullHint.Always);
             tn.attachChild(axes);
             frames.add(tn.getLocalTransform().clone());
+            (s.ok() ? okFrames : badFrames).add(frames.get(frames.size() - 1));
             node.attachChild(tn);
             // The target's name beside it, facing the camera.
             Node label = shapes.label("label-" + t.name(), t.name(), 0.05f, s.ok() ? 0x1B3A1F : 0x8B1A1A);
             label.setLocalTranslation(Shapes.v(t.worldTtcp().position()).add(0.025f, 0, 0.03f));
             node.attachChild(label);
         }
-        if (!okCentres.isEmpty()) node.attachChild(balls("target-balls-ok", okCentres, OK_RGB));
-        if (!badCentres.isEmpty()) node.attachChild(balls("target-balls-bad", badCentres, BAD_RGB));
+        if (!okFrames.isEmpty()) node.attachChild(balls("target-balls-ok", okFrames, OK_RGB));
+        if (!badFrames.isEmpty()) node.attachChild(balls("target-balls-bad", badFrames, BAD_RGB));
         triads = shapes.mergedAxes("target-triads", frames, TRIAD_LENGTH);
         triads.setCullHint(triadsShown ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
         node.attachChild(triads);

@@ -152,34 +152,55 @@ public final class Shapes {
         n.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
         for (int i = 0; i < 3; i++) {
             Arrow a = new Arrow(AXIS_DIRS[i].mult(len));
-            java.nio.FloatBuffer p = a.getFloatBuffer(com.jme3.scene.VertexBuffer.Type.Position);
-            com.jme3.scene.mesh.IndexBuffer idx = a.getIndexBuffer();
-            int nv = a.getVertexCount(), ni = idx.size(), k = frames.size();
-            float[] pos = new float[k * nv * 3];
-            int[] ind = new int[k * ni];
-            Vector3f v = new Vector3f(), w = new Vector3f();
-            for (int f = 0; f < k; f++) {
-                for (int j = 0; j < nv; j++) {
-                    v.set(p.get(3 * j), p.get(3 * j + 1), p.get(3 * j + 2));
-                    frames.get(f).transformVector(v, w);
-                    pos[3 * (f * nv + j)] = w.x;
-                    pos[3 * (f * nv + j) + 1] = w.y;
-                    pos[3 * (f * nv + j) + 2] = w.z;
-                }
-                for (int j = 0; j < ni; j++) ind[f * ni + j] = idx.get(j) + f * nv;
-            }
-            com.jme3.scene.Mesh m = new com.jme3.scene.Mesh();
-            m.setMode(com.jme3.scene.Mesh.Mode.Lines);
-            m.setLineWidth(2f);
-            m.setBuffer(com.jme3.scene.VertexBuffer.Type.Position, 3, com.jme3.util.BufferUtils.createFloatBuffer(pos));
-            m.setBuffer(com.jme3.scene.VertexBuffer.Type.Index, 2, com.jme3.util.BufferUtils.createIntBuffer(ind));
-            m.updateBound();
-            Geometry g = new Geometry(name + "-" + "xyz".charAt(i), m);
+            a.setLineWidth(2f);
+            Geometry g = new Geometry(name + "-" + "xyz".charAt(i), copies(a, frames));
             g.setMaterial(flat(AXIS_RGB[i], true));
             g.setQueueBucket(com.jme3.renderer.queue.RenderQueue.Bucket.Transparent);
             n.attachChild(g);
         }
         return n;
+    }
+
+    /**
+     * One mesh holding a copy of {@code template} at each frame (positions transformed, normals
+     * turned), so many equal markers cost one draw call.
+     */
+    public static com.jme3.scene.Mesh copies(com.jme3.scene.Mesh template, java.util.List<Transform> frames) {
+        java.nio.FloatBuffer p = template.getFloatBuffer(com.jme3.scene.VertexBuffer.Type.Position);
+        java.nio.FloatBuffer nrm = template.getFloatBuffer(com.jme3.scene.VertexBuffer.Type.Normal);
+        com.jme3.scene.mesh.IndexBuffer idx = template.getIndexBuffer();
+        int nv = template.getVertexCount(), ni = idx.size(), k = frames.size();
+        float[] pos = new float[k * nv * 3];
+        float[] nor = nrm == null ? null : new float[k * nv * 3];
+        int[] ind = new int[k * ni];
+        Vector3f v = new Vector3f(), w = new Vector3f();
+        for (int f = 0; f < k; f++) {
+            Transform t = frames.get(f);
+            for (int j = 0; j < nv; j++) {
+                int a = 3 * (f * nv + j);
+                v.set(p.get(3 * j), p.get(3 * j + 1), p.get(3 * j + 2));
+                t.transformVector(v, w);
+                pos[a] = w.x;
+                pos[a + 1] = w.y;
+                pos[a + 2] = w.z;
+                if (nor == null) continue;
+                v.set(nrm.get(3 * j), nrm.get(3 * j + 1), nrm.get(3 * j + 2));
+                t.getRotation().mult(v, w);
+                nor[a] = w.x;
+                nor[a + 1] = w.y;
+                nor[a + 2] = w.z;
+            }
+            for (int j = 0; j < ni; j++) ind[f * ni + j] = idx.get(j) + f * nv;
+        }
+        com.jme3.scene.Mesh m = new com.jme3.scene.Mesh();
+        m.setMode(template.getMode());
+        m.setLineWidth(template.getLineWidth());
+        m.setBuffer(com.jme3.scene.VertexBuffer.Type.Position, 3, com.jme3.util.BufferUtils.createFloatBuffer(pos));
+        if (nor != null) m.setBuffer(com.jme3.scene.VertexBuffer.Type.Normal, 3, com.jme3.util.BufferUtils.createFloatBuffer(nor));
+        m.setBuffer(com.jme3.scene.VertexBuffer.Type.Index, template.getMode() == com.jme3.scene.Mesh.Mode.Lines ? 2 : 3,
+                com.jme3.util.BufferUtils.createIntBuffer(ind));
+        m.updateBound();
+        return m;
     }
 
     /**
