@@ -375,16 +375,23 @@ public final class Diagnoser {
         }
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
-        // With validation data, an effect whose addition did not lower the validation error is not claimed.
-        for (int k = selected.size() - 1; k >= 0; k--) {
-            double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
-            if (Double.isFinite(before) && Double.isFinite(after) && !(after < before)) {
-                Effect gone = selected.remove(k);
-                absorbedCols.remove(gone);
-                steps.remove(k);
-                aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
-                        + (gone.isFallback() ? "so it is not used (the structure stays reported as located)" : "so it is not claimed"));
-                fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+        fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
+        // With validation data, an effect is kept only when the final model predicts the validation poses better with
+        // it than refitted without it (position and orientation, each over its noise).
+        for (int k = selected.size() - 1; k >= 0 && w.validate != null && w.validate.size() > 0; k--) {
+            Fit without = w.fit(withoutOne(selected, k), absorbedCols, w.dropEffect(fit, k), null);
+            double with = w.validateError(fit), wo = w.validateError(without);
+            if (with < wo) continue;
+            LOG.debug("validation: dropped {} ({} with, {} without)", selected.get(k).label(), with, wo);
+            Effect gone = selected.remove(k);
+            absorbedCols.remove(gone);
+            steps.remove(k);
+            aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
+                    + (gone.isFallback() ? "so it is not used (the structure stays reported as located)" : "so it is not claimed"));
+            fit = without;
+            if (!steps.isEmpty()) {
+                Step last = steps.remove(steps.size() - 1);
+                steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
             }
         }
         timer.mark("aliases");
@@ -514,8 +521,8 @@ public final class Diagnoser {
         selected.add(by);
         absorbedCols.put(by, bc.absorbedMask);
         Fit f = w.fit(selected, absorbedCols, without.full, bc);
-        double valWithout = w.validateRms(without), valWith = w.validateRms(f);
-        if (heldOut && Double.isFinite(valWithout) && !(valWith < valWithout)) {
+        double valWith = w.validateRms(f);
+        if (heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without))) {
             selected.remove(selected.size() - 1);
             absorbedCols.remove(by);
             return without;
@@ -593,6 +600,9 @@ public final class Diagnoser {
                 }
                 String why = null;
                 double pressWithout = at.pressReplacing(k, null, null);
+                if (LOG.isDebugEnabled())
+                    LOG.debug(String.format(Locale.ROOT, "claim check %s: press own %.1f without %.1f best rival %s %.1f", e.label(),
+                            pressOwn, pressWithout, best == null ? "-" : best.label(), bestPress));
                 if (!(pressOwn < pressWithout)) {
                     why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
@@ -673,6 +683,42 @@ public final class Diagnoser {
             if (++refinements > 2 * MAX_LOCATED) break;
         }
         return fit;
+    }
+
+    /**
+     * A named effect must still be needed in the model finally fitted: the fallbacks that took the
+     * place of withdrawn families may carry the structure it was selected for, leaving it a share
+     * of the noise that happens to lower the leave-one-pose-out error by a hair. Each named effect
+     * is tested once more against the whole final model (its partial F-test at the backward
+     * step's Holm threshold, and its physical plausibility); the weakest that fails leaves, until
+     * every one passes.
+     */
+    private static Fit stillSignificant(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
+                                        List<Step> steps, int familySize, List<String> notes) {
+        while (selected.stream().anyMatch(e -> !e.isFallback())) {
+            double threshold = w.o.alpha() / Math.max(1, familySize - selected.size() + 1);
+            double[] p = new double[1];
+            int drop = w.weakest(fit, selected, threshold, e -> !e.isFallback(), p);
+            if (drop < 0) break;
+            Effect gone = selected.remove(drop);
+            absorbedCols.remove(gone);
+            steps.remove(drop);
+            LOG.debug("final backward: dropped {} (p {})", gone.label(), p[0]);
+            notes.add(String.format(Locale.ROOT, "%s is not claimed: in the final model, beside the structures located, it "
+                    + "is no longer significant (p = %.2g against the threshold %.2g) or no longer plausible", gone.label(), p[0], threshold));
+            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
+            if (!steps.isEmpty()) {
+                Step last = steps.remove(steps.size() - 1);
+                steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
+            }
+        }
+        return fit;
+    }
+
+    private static List<Effect> withoutOne(List<Effect> es, int k) {
+        List<Effect> out = new ArrayList<>(es);
+        out.remove(k);
+        return out;
     }
 
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
@@ -1013,6 +1059,25 @@ public final class Diagnoser {
             return positionRms(r, q.rowsPerPose(), 1);
         }
 
+        /**
+         * The held-out error on the validation poses as the fit weighs its training rows: the sum
+         * of squared residuals, each over its noise σ (position and, for 6-D data, orientation).
+         * An effect seen mostly in the orientation (a wrist joint's error) moves the position RMS
+         * by less than its noise; this judges it on what it predicts. NaN without validation poses.
+         */
+        double validateError(Fit f) {
+            if (validate == null || validate.size() == 0) return Double.NaN;
+            boolean six = sixD && validate.hasOrientation();
+            double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
+            IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, f.problem.effects(), full);
+            q.setSigmas(sigmaPos, sigmaRot);
+            double[] r = new double[q.residualCount()];
+            q.evaluateFull(full, r, null);
+            double ss = 0;
+            for (double v : r) ss += v * v;
+            return ss;
+        }
+
         private static double[] dropToolRotation(double[] full, int toolOff) {
             double[] out = new double[full.length - 3];
             System.arraycopy(full, 0, out, 0, toolOff + 3);
@@ -1071,6 +1136,11 @@ public final class Diagnoser {
          * beyond 3σ; the worst one, or -1 when all stay.
          */
         int weakest(Fit f, List<Effect> selected, double threshold) {
+            return weakest(f, selected, threshold, e -> true, new double[1]);
+        }
+
+        /** {@link #weakest(Fit, List, double)} among the effects {@code which} accepts; {@code pOut[0]} gets the dropped one's p. */
+        int weakest(Fit f, List<Effect> selected, double threshold, java.util.function.Predicate<Effect> which, double[] pOut) {
             int n = f.nf, m = f.m;
             int[] free = f.problem.freeIndices();
             double[] sig = effectSigmas(f);
@@ -1080,6 +1150,7 @@ public final class Diagnoser {
             int worst = -1;
             double worstP = -1;
             for (int k = 0; k < selected.size(); k++) {
+                if (!which.test(selected.get(k))) continue;
                 int a = f.problem.effectOffset(k), b = a + selected.get(k).size();
                 List<Integer> mine = new ArrayList<>(), rest = new ArrayList<>();
                 for (int c = 0; c < n; c++) (free[c] >= a && free[c] < b ? mine : rest).add(c);
@@ -1100,7 +1171,7 @@ public final class Diagnoser {
                 c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
                 plausibility(c);
                 double score = c.plausible ? p : 2;
-                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; }
+                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; pOut[0] = p; }
             }
             return worst;
         }
