@@ -57,14 +57,16 @@ public final class Diagnoser {
      * @param progress       progress listener
      */
     public record Options(double alpha, double absorbedRatio, int maxEffects, double[] timeTaus, Cancellation cancel,
-                          Progress progress) {
+                          Progress progress, int folds) {
         public static Options defaults() {
-            return new Options(1e-3, 0.05, 4, new double[] {600, 1200, 2400, 4800}, Cancellation.NONE, Progress.NONE);
+            return new Options(1e-3, 0.05, 4, new double[] {600, 1200, 2400, 4800}, Cancellation.NONE, Progress.NONE, 5);
         }
 
-        public Options withAlpha(double a) { return new Options(a, absorbedRatio, maxEffects, timeTaus, cancel, progress); }
-        public Options withProgress(Progress p) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, p); }
-        public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress); }
+        public Options withAlpha(double a) { return new Options(a, absorbedRatio, maxEffects, timeTaus, cancel, progress, folds); }
+        public Options withProgress(Progress p) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, p, folds); }
+        public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress, folds); }
+        /** Folds of the cross-validation that judges the claims when no validation poses are given (below 2: none). */
+        public Options withFolds(int k) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, progress, k); }
     }
 
     // Physical plausibility bounds: what real joints and gears can have.
@@ -117,7 +119,103 @@ public final class Diagnoser {
         Directions.Prepared dirs = Directions.prepare(train, validate);
         train = dirs.train();
         validate = dirs.validate();
-        Diagnosis d = run(robot, train, validate, o, null, t0, dirs.source());
+        Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
+        if (validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()) return d;
+        return crossValidated(robot, train, o, t0, dirs.source(), d);
+    }
+
+    /** At least this many training poses per fold for the cross-validation of the claims. */
+    static final int MIN_POSES_PER_FOLD = 10;
+
+    /** What a named effect claims: its family and joints (a gear's harmonics or a mass model may differ between folds). */
+    static String claimKey(Effect e) {
+        StringBuilder b = new StringBuilder(e.kind().json);
+        for (int j : e.joints1()) b.append(" j").append(j);
+        return b.toString();
+    }
+
+    private static Set<String> namedKeys(Diagnosis d) {
+        Set<String> out = new java.util.LinkedHashSet<>();
+        for (Diagnosis.Finding f : d.effects()) if (!f.effect().isFallback()) out.add(claimKey(f.effect()));
+        return out;
+    }
+
+    /**
+     * Without validation poses, the claims are judged by K-fold cross-validation of the whole
+     * diagnosis: the training poses are dealt at random into K folds; the diagnosis runs K times,
+     * each time on the other folds with the held-out fold as its validation set (so every held-out
+     * gate inside it, selection included, sees poses it was not fitted to). A family stays named
+     * only when a majority of the folds name it on the same joints and the folds' diagnoses predict
+     * their held-out poses better than their geometric fits do; otherwise the diagnosis runs again
+     * without it (its structure stays located, and a fallback may model it).
+     */
+    private static Diagnosis crossValidated(RobotDescription robot, MeasurementSet train, Options o, long t0,
+                                            Directions.Source dirSource, Diagnosis d) {
+        int k = o.folds();
+        List<Measurement> rows = train.rows();
+        if (rows.size() < MIN_POSES_PER_FOLD * k) {
+            List<String> notes = new ArrayList<>(d.notes());
+            notes.add(String.format(Locale.ROOT, "no validation poses and only %d training poses: the claims were judged by "
+                    + "leave-one-pose-out error, not by %d-fold cross-validation (at least %d poses); measure validation poses to "
+                    + "confirm them", rows.size(), k, MIN_POSES_PER_FOLD * k));
+            return withNotes(d, notes);
+        }
+        Integer[] order = new Integer[rows.size()];
+        for (int i = 0; i < order.length; i++) order[i] = i;
+        java.util.Collections.shuffle(Arrays.asList(order), new java.util.Random(rows.size()));
+        int[] fold = new int[rows.size()];
+        for (int i = 0; i < order.length; i++) fold[order[i]] = i % k;
+        Options fo = o.withFolds(0).withProgress(Progress.NONE);
+        Map<String, Integer> count = new LinkedHashMap<>();
+        double geoSs = 0, effSs = 0;
+        for (int f = 0; f < k; f++) {
+            o.cancel().check();
+            o.progress().update("cross-validating the claims (fold " + (f + 1) + " of " + k + ")", (double) f / k);
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
+            Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of());
+            for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
+            geoSs += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
+            effSs += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
+        }
+        double geoCv = Math.sqrt(geoSs / rows.size()), effCv = Math.sqrt(effSs / rows.size());
+        List<String> extra = new ArrayList<>();
+        extra.add(String.format(Locale.ROOT, "no validation poses: the claims were judged by %d-fold cross-validation of the whole "
+                + "diagnosis; held-out RMS %.4f mm with the geometric model, %.4f mm with each fold's effects", k, geoCv * 1e3, effCv * 1e3));
+        Set<String> excluded = new java.util.LinkedHashSet<>();
+        Diagnosis out = d;
+        for (int round = 0; round < 3; round++) {
+            Set<String> failing = new java.util.LinkedHashSet<>();
+            for (String key : namedKeys(out)) {
+                int n = count.getOrDefault(key, 0);
+                if (2 * n <= k || !(effCv < geoCv)) failing.add(key);
+            }
+            if (failing.isEmpty()) break;
+            for (String key : failing) {
+                int n = count.getOrDefault(key, 0);
+                extra.add(String.format(Locale.ROOT, "%s is not claimed: %s", key, 2 * n <= k
+                        ? String.format(Locale.ROOT, "only %d of %d cross-validation folds name it", n, k)
+                        : "the folds' effects do not lower the held-out error"));
+            }
+            excluded.addAll(failing);
+            out = prepared(robot, train, null, o, t0, dirSource, excluded);
+        }
+        List<String> notes = new ArrayList<>(out.notes());
+        notes.addAll(extra);
+        return withNotes(out, notes);
+    }
+
+    private static Diagnosis withNotes(Diagnosis d, List<String> notes) {
+        return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
+                d.finalTrainRmsM(), d.finalValidateRmsM(), d.outliers(), d.notIdentifiable(), d.implausible(), d.recommendations(),
+                notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
+                d.directions(), d.located(), d.warnings());
+    }
+
+    /** The diagnosis of data whose directions are prepared, with the outlier rule judged under the extended model. */
+    private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
+                                      Directions.Source dirSource, Set<String> excluded) {
+        Diagnosis d = run(robot, train, validate, o, null, t0, dirSource, excluded);
         if (d.effects().isEmpty()) return d;
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
@@ -126,7 +224,7 @@ public final class Diagnoser {
         if (!d.outliers().isEmpty()) {
             // The geometric fit's outliers may be the peak of a structure the effects now model, which a
             // model fitted without them cannot judge: judge them with the effects fitted to every pose.
-            Diagnosis all = run(robot, train, validate, o, List.of(), t0, dirs.source());
+            Diagnosis all = run(robot, train, validate, o, List.of(), t0, dirSource, excluded);
             if (!all.effects().isEmpty()) {
                 List<String> underAll = outliersUnder(all, train);
                 if (underAll.isEmpty()) return all;
@@ -136,7 +234,7 @@ public final class Diagnoser {
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
         // Many poses beyond 5 robust sigmas are a structure the model leaves (reported), not bad measurements.
         if (under.size() > Math.max(3, 0.05 * train.size())) return d;
-        return run(robot, train, validate, o, under, t0, dirs.source());
+        return run(robot, train, validate, o, under, t0, dirSource, excluded);
     }
 
     /**
@@ -177,9 +275,12 @@ public final class Diagnoser {
         return false;
     }
 
-    /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
+    /**
+     * One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses
+     * are left out. Families whose {@link #claimKey} is in {@code excluded} are not candidates.
+     */
     private static Diagnosis run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
-                                 List<String> forcedOutliers, long t0, Directions.Source dirSource) {
+                                 List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
         o.progress().update("geometric calibration", 0);
@@ -212,7 +313,7 @@ public final class Diagnoser {
         double t0C = hasTemp ? rows.stream().mapToDouble(Measurement::tempC).average().orElse(0) : Double.NaN;
         List<Effect> family = new ArrayList<>();
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null))
-            if (e.testableOn(rows)) family.add(e);
+            if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
         if (manyOutliers)
             notes.add("more than 5 % of the poses lie beyond 5 robust sigmas of the geometric fit: too many to be bad "
                     + "measurements, so none was left out (the structure they show is located below)");
@@ -240,7 +341,8 @@ public final class Diagnoser {
         Tester geoTester = w.tester(fit);
         List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
-        family.addAll(fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime));
+        for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
+            if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
@@ -276,7 +378,10 @@ public final class Diagnoser {
                                 merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray());
                             }
                     String label = merged.label();
-                    if (family.stream().noneMatch(f -> f.label().equals(label))) { family.add(merged); remaining.add(merged); }
+                    if (family.stream().noneMatch(f -> f.label().equals(label)) && (merged.isFallback() || !excluded.contains(claimKey(merged)))) {
+                        family.add(merged);
+                        remaining.add(merged);
+                    }
                 }
                 scanned = t;
                 scannedFit = fit;
@@ -303,7 +408,9 @@ public final class Diagnoser {
             if (best == null || selected.size() >= o.maxEffects()) break;
             implausible.clear(); // only those still significant when selection stops are reported
             Effect chosen = best.effect;
-            remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL));
+            // One form per effect: a second thermal strain, or the same joint's compliance with other masses, is not a second effect.
+            remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL)
+                    || (chosen.kind() == Effect.Kind.COMPLIANCE && e.kind() == Effect.Kind.COMPLIANCE && e.joint() == chosen.joint()));
             notIdent.remove(chosen.label());
             int older = -1; // a periodic effect of the same joint whose harmonics the chosen one holds: one effect, not two
             for (int k = 0; k < selected.size(); k++)
@@ -341,6 +448,7 @@ public final class Diagnoser {
         timer.mark("stepwise");
         // Held-out rule: a named effect must beat its aliases on the leave-one-pose-out error; when the
         // smooth fallback or another family predicts better, the effect is replaced.
+        Set<String> refusedAliases = new HashSet<>();
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
             if (e.kind() == Effect.Kind.SMOOTH) continue;
@@ -349,14 +457,22 @@ public final class Diagnoser {
             Effect best = null;
             double bestPress = own;
             for (Effect a : aliases(e, family, selected)) {
+                if (refusedAliases.contains(a.label())) continue;
                 double pa = at.pressReplacing(k, a, w.conditions);
                 if (pa < bestPress * (1 - ALIAS_MARGIN)) { bestPress = pa; best = a; }
             }
             if (best == null) continue;
             LOG.debug("alias: {} replaced by {} (PRESS {} -> {})", e.label(), best.label(), own, bestPress);
-            aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
-                    + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, false);
+            if (selected.contains(best))
+                aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
+                        + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
+            else {
+                refusedAliases.add(best.label());
+                aliasNotes.add(String.format(Locale.ROOT, "%s predicts left-out poses better than %s (leave-one-pose-out "
+                        + "error %.1f against %.1f), but its estimate leaves the physical bounds once fitted with the rest, "
+                        + "so %s stays", best.label(), e.label(), bestPress, own, e.label()));
+            }
             k = -1; // re-check from the start with the new set
             if (++aliasRounds > 4) break;
         }
@@ -522,10 +638,21 @@ public final class Diagnoser {
         absorbedCols.put(by, bc.absorbedMask);
         Fit f = w.fit(selected, absorbedCols, without.full, bc);
         double valWith = w.validateRms(f);
-        if (heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without))) {
+        boolean worseHeldOut = heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without));
+        // A family whose estimate leaves physical bounds once fitted jointly with the rest does not take the place.
+        boolean implausible = !by.isFallback() && !w.plausibleIn(f, selected, selected.size() - 1);
+        if (worseHeldOut || implausible) {
             selected.remove(selected.size() - 1);
             absorbedCols.remove(by);
-            return without;
+            if (heldOut) return without;
+            // An alias that fails keeps the effect it was to replace.
+            Candidate ec = w.tester(without).test(e, w.conditions);
+            if (ec.keptColumns == 0) return without;
+            selected.add(e);
+            absorbedCols.put(e, ec.absorbedMask);
+            Fit back = w.fit(selected, absorbedCols, without.full, ec);
+            steps.add(new Step(old.candidate, back.trainRms, w.validateRms(back)));
+            return back;
         }
         bc.threshold = old.candidate.threshold;
         steps.add(new Step(bc, f.trainRms, valWith));
@@ -1169,11 +1296,33 @@ public final class Diagnoser {
                 c.effect = selected.get(k);
                 c.estimate = Arrays.copyOfRange(f.full, a, b);
                 c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
+                c.absorbedMask = fixedMask(f, a, b);
                 plausibility(c);
                 double score = c.plausible ? p : 2;
                 if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; pOut[0] = p; }
             }
             return worst;
+        }
+
+        /** Whether selected effect {@code k}'s estimate in fit {@code f} is physically plausible ({@link #plausibility}). */
+        boolean plausibleIn(Fit f, List<Effect> selected, int k) {
+            double[] sig = effectSigmas(f);
+            int eff0 = f.problem.effectOffset(0), a = f.problem.effectOffset(k), b = a + selected.get(k).size();
+            Candidate c = new Candidate();
+            c.effect = selected.get(k);
+            c.estimate = Arrays.copyOfRange(f.full, a, b);
+            c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
+            c.absorbedMask = fixedMask(f, a, b);
+            plausibility(c);
+            return c.plausible;
+        }
+
+        /** Which of the parameters a..b of a fit are held fixed (columns left to the geometry). */
+        static boolean[] fixedMask(Fit f, int a, int b) {
+            boolean[] mask = new boolean[b - a];
+            Arrays.fill(mask, true);
+            for (int i : f.problem.freeIndices()) if (i >= a && i < b) mask[i - a] = false;
+            return mask;
         }
 
         /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
@@ -1694,7 +1843,8 @@ public final class Diagnoser {
             case COMPLIANCE -> {
                 if (e.perMass()) {
                     boolean ok = true;
-                    for (int i = 0; i < v.length; i++) if (!overlaps(v[i], sd[i], 0, 3 / MIN_STIFFNESS)) ok = false;
+                    for (int i = 0; i < v.length; i++)
+                        if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, 3 / MIN_STIFFNESS)) ok = false;
                     c.plausible = ok;
                     c.plausibility = "every mass's compliance coefficient positive and below " + String.format(Locale.ROOT, "%.0e", 3 / MIN_STIFFNESS);
                     return;
