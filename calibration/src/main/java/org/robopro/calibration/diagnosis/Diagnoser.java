@@ -605,6 +605,10 @@ public final class Diagnoser {
                         + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
                         + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
         }
+        double stated = statedSigmaM(trainAll);
+        double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
+        if (Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * Math.sqrt(3) * stated)
+            warnings.add(0, aboveStatedFloor(heldOutRms, Double.isFinite(valFinal), stated, selected, foundFinal.isEmpty()));
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
@@ -917,6 +921,53 @@ public final class Diagnoser {
     private static double share(Locator.Found f, Tester t) { return t.rss0 > 0 ? Math.min(1, f.c.drss / t.rss0) : 0; }
 
     private static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
+
+    /** Above this multiple of the floor the instrument's stated noise gives, the report says first that error is left. */
+    static final double STATED_FLOOR_MARGIN = 1.2;
+
+    private static final java.util.regex.Pattern STATED_SIGMA =
+            java.util.regex.Pattern.compile("sigma\\s*[=:]?\\s*([0-9]*\\.?[0-9]+(?:e[-+]?[0-9]+)?)\\s*(mm|um|µm|m)(?![a-z])");
+
+    /**
+     * The instrument's noise per axis as the measurement file states it (metadata
+     * {@code # instrument: laser tracker, sigma 0.03 mm}), m; NaN when it is not stated. It is the
+     * user's statement of the instrument, not an estimate from the residuals: a residual-based
+     * floor grows with whatever structure the model leaves and cannot show it.
+     */
+    static double statedSigmaM(MeasurementSet s) {
+        String v = s.metadata() == null ? null : s.metadata().get("instrument");
+        if (v == null) return Double.NaN;
+        java.util.regex.Matcher m = STATED_SIGMA.matcher(v.toLowerCase(Locale.ROOT));
+        if (!m.find()) return Double.NaN;
+        double x = Double.parseDouble(m.group(1));
+        double scale = switch (m.group(2)) {
+            case "mm" -> 1e-3;
+            case "m" -> 1;
+            default -> 1e-6;
+        };
+        return x > 0 ? x * scale : Double.NaN;
+    }
+
+    /** The first warning when the error left exceeds the instrument's stated floor: how much, and what to measure. */
+    static String aboveStatedFloor(double rms, boolean validation, double sigma, List<Effect> selected, boolean nothingLocated) {
+        double floor = Math.sqrt(3) * sigma;
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "The final model misses the %s poses by %.4f mm RMS, "
+                + "%.1f x the noise floor of the instrument's stated sigma (%.4f mm, from %.4f mm per axis): error is left that "
+                + "the model does not hold", validation ? "validation" : "training", rms * 1e3, rms / floor, floor * 1e3, sigma * 1e3));
+        b.append(nothingLocated ? ", and the scan locates no structure in it." : " (where it lives is said below).");
+        for (Effect e : selected)
+            if (e.kind() == Effect.Kind.BACKLASH) {
+                int j = e.joint() + 1;
+                b.append(String.format(Locale.ROOT, " Lost motion of joint %d is modelled as a constant half-play; if the lag "
+                        + "grows with the size of the move before each pose (friction winding up) or differs between the two "
+                        + "flanks, a constant play leaves this. To tell: approach a few poses of joint %d from each side after "
+                        + "moves of several sizes (0.5, 2, 10 and 30 degrees) and compare the lag.", j, j));
+            }
+        if (selected.stream().noneMatch(e -> e.kind() == Effect.Kind.BACKLASH))
+            b.append(" Re-measure a few poses several times to check the instrument's noise, and measure more poses spread "
+                    + "over every joint's range.");
+        return b.toString();
+    }
 
     /** What the report says first when the model leaves error above the noise: what, where, what to measure next. */
     static List<String> warnings(List<Locator.Found> left, List<Effect> selected, Fit fit, Work w, double rssLeft, int dfLeft,
