@@ -75,7 +75,7 @@ public final class DiagnosisReport {
         root.put("recommendations", d.recommendations());
         root.put("notes", d.notes());
         root.put("sigma_mm", Units.mToMm(d.sigmaM()));
-        root.put("noise_floor_mm", Units.mToMm(Math.sqrt(3) * d.sigmaM()));
+        root.put("noise_floor_mm", Units.mToMm(d.noiseFloorM()));
         root.put("candidates_tested", d.candidatesTested());
         root.put("family_alpha", d.alpha());
         root.put("directions", d.directions().words);
@@ -167,10 +167,11 @@ public final class DiagnosisReport {
         for (Diagnosis.Finding f : d.effects()) row(h, "+ " + f.effect().label(), f.trainRmsM(), f.validateRmsM());
         row(h, "final (joint re-identification)", d.finalTrainRmsM(), d.finalValidateRmsM());
         h.append("</table>\n");
-        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated from the final fit's residuals: &sigma; = %.4f mm per axis "
-                + "(noise floor &radic;3&middot;&sigma; = %.4f mm). %d candidates (effect &times; joint) "
+        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated from the final fit's residuals: &sigma; = %.4f mm %s "
+                + "(noise floor %s = %.4f mm). %d candidates (effect &times; joint) "
                 + "tested with a family-wise false-positive rate of %.3g; %d outlier poses excluded. %.0f ms.</p>\n",
-                Units.mToMm(d.sigmaM()), Units.mToMm(Math.sqrt(3) * d.sigmaM()), d.candidatesTested(), d.alpha(),
+                Units.mToMm(d.sigmaM()), d.distances() ? "per distance" : "per axis", d.distances() ? "&sigma;" : "&radic;3&middot;&sigma;",
+                Units.mToMm(d.noiseFloorM()), d.candidatesTested(), d.alpha(),
                 d.outliers().size(), d.elapsedMs()));
         h.append("<p class=\"muted\">Approach directions: ").append(Html.esc(d.directions().words)).append(".</p>\n");
         h.append(rmsChart(d));
@@ -182,7 +183,8 @@ public final class DiagnosisReport {
             h.append(parameterTable(f));
             Diagnosis.Plot p = f.plot();
             if (p != null) {
-                h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " poses)", p.xLabel(), p.yLabel(),
+                h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " "
+                        + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
                                 new Svg.Series("fitted " + f.effect().kind().json, p.curveX(), p.curveY(), "#d62728", true)), false));
                 if (p.periodogram() != null) {
@@ -277,7 +279,7 @@ public final class DiagnosisReport {
             s.add(new Svg.Series("validation RMS", x, va, "#ff7f0e", true));
         }
         double[] fl = new double[n];
-        java.util.Arrays.fill(fl, Units.mToMm(Math.sqrt(3) * d.sigmaM()));
+        java.util.Arrays.fill(fl, Units.mToMm(d.noiseFloorM()));
         s.add(new Svg.Series("noise floor (final estimate)", x, fl, "#999", true));
         return Svg.plot("RMS error: geometric model (0) and after each effect", "effects added", "RMS (mm)", s, false);
     }
