@@ -414,28 +414,18 @@ public final class RapidParser {
         throw err(e, field, "expected a string, found " + describe(e));
     }
 
-    /** RAPID string escapes: "" is a quote, backslash-backslash a backslash, backslash hh a character code. */
+    /** The literal's string ({@link RapidAst.Str#value}), within RAPID's 80 ISO-8859-1 characters. */
     private String unescape(RapidAst.Str s, String field) {
-        String r = s.raw();
-        StringBuilder b = new StringBuilder();
-        for (int k = 0; k < r.length(); k++) {
-            char c = r.charAt(k);
-            if (c == '"') { b.append('"'); k++; continue; }
-            if (c == '\\') {
-                if (k + 1 < r.length() && r.charAt(k + 1) == '\\') { b.append('\\'); k++; continue; }
-                if (k + 2 < r.length() && isHex(r.charAt(k + 1)) && isHex(r.charAt(k + 2))) {
-                    b.append((char) Integer.parseInt(r.substring(k + 1, k + 3), 16));
-                    k += 2;
-                    continue;
-                }
-                throw err(s, field, "bad escape in string (use \\\\ for a backslash)");
-            }
-            b.append(c);
+        String v;
+        try {
+            v = s.value();
+        } catch (IllegalArgumentException bad) {
+            throw err(s, field, bad.getMessage());
         }
-        if (b.length() > 80) throw err(s, field, "string longer than RAPID's 80 characters");
-        for (int k = 0; k < b.length(); k++)
-            if (b.charAt(k) > 0xFF) throw err(s, field, "string holds a character outside ISO-8859-1");
-        return b.toString();
+        if (v.length() > 80) throw err(s, field, "string longer than RAPID's 80 characters");
+        for (int k = 0; k < v.length(); k++)
+            if (v.charAt(k) > 0xFF) throw err(s, field, "string holds a character outside ISO-8859-1");
+        return v;
     }
 
     private static RapidValue predefinedValue(String name) {
@@ -448,7 +438,6 @@ public final class RapidParser {
         return ZoneData.predefined(k).orElse(null);
     }
 
-    private static boolean isHex(char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 
     private Vec3 posMm(Expr e, String field) {
         List<Expr> c = agg(e, 3, field);

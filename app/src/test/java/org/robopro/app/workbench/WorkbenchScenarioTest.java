@@ -257,6 +257,12 @@ class WorkbenchScenarioTest {
                 "the flange frame follows the typed flange origin");
         assertEquals("8", r.getProperty("wizardPreviewFrames"), "base, six links, flange");
         assertEquals("8", r.getProperty("wizardPreviewDrawn"));
+        assertEquals("6", r.getProperty("wizardPreviewDrums"), "a drum on each joint axis");
+        assertTrue(Integer.parseInt(r.getProperty("wizardPreviewLinksExpected")) >= 4);
+        assertEquals(r.getProperty("wizardPreviewLinksExpected"), r.getProperty("wizardPreviewLinks"), "links from joint to joint and to the flange");
+        assertEquals("Undo Robot model: flange origin mm z", r.getProperty("wizardUndoName"), "the Edit menu names the wizard's edit");
+        assertEquals(-200, Double.parseDouble(r.getProperty("wizardCtrlZFlangeDelta")), 1e-9, "Ctrl+Z in the wizard undoes its last edit");
+        assertEquals(0, Double.parseDouble(r.getProperty("wizardCtrlYFlangeDelta")), 1e-9, "Ctrl+Y redoes it");
         assertEquals("true", r.getProperty("wizardReportHasTable"));
         assertEquals("true", r.getProperty("wizardSaved"));
         assertEquals("true", r.getProperty("wizardOverwriteRefused"));

@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.robopro.calibration.report.Figure;
 import org.robopro.calibration.report.Html;
 import org.robopro.calibration.report.Svg;
 import org.robopro.kinematics.Units;
@@ -263,24 +264,36 @@ public final class DiagnosisReport {
     }
 
     private static String rmsChart(Diagnosis d) {
-        int n = d.effects().size() + 1;
-        double[] x = new double[n], tr = new double[n], va = new double[n];
-        x[0] = 0;
-        tr[0] = Units.mToMm(d.geometricTrainRmsM());
-        va[0] = Units.mToMm(d.geometricValidateRmsM());
-        for (int i = 1; i < n; i++) {
-            x[i] = i;
-            tr[i] = Units.mToMm(d.effects().get(i - 1).trainRmsM());
-            va[i] = Units.mToMm(d.effects().get(i - 1).validateRmsM());
+        return Svg.draw((c, w, h) -> rmsBars(c, w, h, "RMS error: geometric model, after each effect, final fit", d));
+    }
+
+    /**
+     * The RMS bar chart of a diagnosis, drawn by the one figure routine (the report's SVG and the
+     * workbench panel): bars for the geometric model, after each effect was added and for the
+     * final joint fit (the rows of the report's table), training and, when there are validation
+     * data, validation side by side; the noise floor (√3·σ for points, σ for distances) as a dashed line.
+     */
+    public static void rmsBars(Figure.Canvas c, double w, double h, String title, Diagnosis d) {
+        List<String> cats = new ArrayList<>();
+        List<double[]> v = new ArrayList<>();
+        cats.add("geometric");
+        v.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
+        for (Diagnosis.Finding f : d.effects()) {
+            cats.add("+ " + f.effect().label());
+            v.add(new double[] {f.trainRmsM(), f.validateRmsM()});
         }
-        List<Svg.Series> s = new ArrayList<>();
-        s.add(new Svg.Series("training RMS", x, tr, "#1f77b4", true));
-        if (Double.isFinite(d.geometricValidateRmsM())) {
-            s.add(new Svg.Series("validation RMS", x, va, "#ff7f0e", true));
+        if (!d.effects().isEmpty() && Double.isFinite(d.finalTrainRmsM())) {
+            cats.add("final fit");
+            v.add(new double[] {d.finalTrainRmsM(), d.finalValidateRmsM()});
         }
-        double[] fl = new double[n];
-        java.util.Arrays.fill(fl, Units.mToMm(d.noiseFloorM()));
-        s.add(new Svg.Series("noise floor (final estimate)", x, fl, "#999", true));
-        return Svg.plot("RMS error: geometric model (0) and after each effect", "effects added", "RMS (mm)", s, false);
+        double[] train = v.stream().mapToDouble(x -> Units.mToMm(x[0])).toArray();
+        double[] val = v.stream().mapToDouble(x -> Units.mToMm(x[1])).toArray();
+        List<Svg.Series> series = new ArrayList<>();
+        series.add(new Svg.Series("training", null, train, "#f07a1a", false));
+        if (java.util.Arrays.stream(val).anyMatch(Double::isFinite)) series.add(new Svg.Series("validation", null, val, "#f5b77f", false));
+        double floor = Units.mToMm(d.noiseFloorM());
+        List<Svg.Line> lines = floor > 0 && Double.isFinite(floor)
+                ? List.of(new Svg.Line(d.distances() ? "noise floor σ" : "noise floor √3·σ", floor, "#2e9e44")) : List.of();
+        Figure.bars(c, w, h, title, "RMS (mm)", cats, series, lines, "%.3f");
     }
 }

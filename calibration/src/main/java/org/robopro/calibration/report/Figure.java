@@ -28,6 +28,12 @@ public final class Figure {
         double textWidth(String s, double size);
     }
 
+    /** A whole figure drawn on a canvas of the given size (a report's SVG, a panel, an image). */
+    @FunctionalInterface
+    public interface Drawing {
+        void draw(Canvas c, double w, double h);
+    }
+
     /** The plot area inside a w x h figure: left, top, right, bottom in pixels. */
     record Area(double l, double t, double r, double b) {
         double sx(Axis.Ticks t, double x) { return l + t.fraction(x) * (r - l); }

@@ -29,6 +29,7 @@ import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.diagnosis.Diagnosis;
+import org.robopro.calibration.diagnosis.DiagnosisReport;
 import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.measurement.MeasurementSet;
@@ -124,7 +125,7 @@ public final class CalibrationPanel extends JPanel {
         findings.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         JScrollPane fs = new JScrollPane(findings);
         fs.setBorder(BorderFactory.createTitledBorder("Findings, outliers, what the data cannot tell, what to record next"));
-        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, then after each effect"));
+        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, after each effect, final fit"));
         rmsChart.setPreferredSize(new Dimension(600, 200));
         JSplitPane dsplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, rmsChart, fs);
         dsplit.setResizeWeight(0.3);
@@ -440,25 +441,8 @@ public final class CalibrationPanel extends JPanel {
         return (c, w, h) -> Figure.plot(c, w, h, "", x, distances ? "distance error (mm)" : "error (mm)", series, true, lines);
     }
 
-    /**
-     * Bars of the RMS error (mm): the geometric model, then after each effect; training dark,
-     * validation light; the noise floor dashed.
-     */
+    /** The diagnosis's RMS bars, the same drawing as in its HTML report. */
     static FigurePanel.Drawing rmsFigure(Diagnosis d) {
-        List<String> cats = new ArrayList<>();
-        List<double[]> v = new ArrayList<>();
-        cats.add("geometric");
-        v.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
-        for (Diagnosis.Finding f : d.effects()) {
-            cats.add("+ " + f.effect().label());
-            v.add(new double[] {f.trainRmsM(), f.validateRmsM()});
-        }
-        double[] train = v.stream().mapToDouble(x -> x[0] * 1e3).toArray(), val = v.stream().mapToDouble(x -> x[1] * 1e3).toArray();
-        List<Svg.Series> series = List.of(new Svg.Series("training", null, train, "#f07a1a", false),
-                new Svg.Series("validation", null, val, "#f5b77f", false));
-        double floor = d.noiseFloorM() * 1e3;
-        List<Svg.Line> lines = floor > 0 ? List.of(new Svg.Line(d.distances() ? "noise floor (σ)" : "noise floor (√3·σ)", floor, "#2e9e44"))
-                : List.of();
-        return (c, w, h) -> Figure.bars(c, w, h, "", "RMS (mm)", cats, series, lines, "%.3f");
+        return (c, w, h) -> DiagnosisReport.rmsBars(c, w, h, "", d);
     }
 }
