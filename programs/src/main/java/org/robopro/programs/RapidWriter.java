@@ -247,13 +247,14 @@ public final class RapidWriter {
 
     /**
      * A number's literal: at {@code decimals}, or in an exact tree a text that reads back as the
-     * very same double (Java's own: the interpreter reads it, no file keeps it, and it costs far
-     * less than the shortest decimal).
+     * very same double (a whole number without decimals, otherwise Java's own text: it costs far
+     * less than the shortest decimal, and an export writes the file's precision anyway).
      */
     private String fmt(double x, int decimals) {
         if (!exact) return RapidNumbers.format(x, decimals);
         if (x == RapidNumbers.UNUSED_AXIS) return "9E+09";
-        return x == 0 ? "0" : Double.toString(x);
+        if (x == Math.rint(x) && Math.abs(x) < 1e15) return Long.toString((long) x);
+        return Double.toString(x);
     }
 
     private Expr quat(Quaternion q) {
