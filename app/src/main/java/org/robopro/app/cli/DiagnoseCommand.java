@@ -63,7 +63,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (!(alpha > 0 && alpha < 1)) throw new IllegalArgumentException("--alpha must be in (0, 1), got " + alpha);
         RobotDescription desc = robot.description();
-        CalibrationWorkflow.Campaign data = measurements.read(desc, null);
+        CalibrationWorkflow.Campaign data = measurements.read(desc);
         MeasurementSet train = data.train(), val = data.validate();
         Cancellation cancel = new Cancellation();
         Diagnoser.Options o = Diagnoser.Options.defaults().withAlpha(alpha).withCancel(cancel)

@@ -172,7 +172,7 @@ public final class WorkbenchScenario {
         WorkbenchWindow.onEdt(() -> {
             frame.action("add-table").actionPerformed(null);
             String id = wb.model().selection().substring(7);
-            wb.placeObject(id, -0.2, -1.3, 0, Math.toRadians(30));
+            wb.placeObject(id, 0.3, -1.6, 0, Math.toRadians(30));
         });
         r.setProperty("objectsAfterAdd", String.valueOf(wb.model().objects().size()));
         // Ctrl+Z takes the table back (one step: add and place were separate edits, so twice), Ctrl+Y redoes both.
@@ -344,6 +344,7 @@ public final class WorkbenchScenario {
         r.setProperty("diagFinalValidateMm", String.valueOf(d.finalValidateRmsM() * 1e3));
         r.setProperty("diagFloorMm", String.valueOf(Math.sqrt(3) * d.sigmaM() * 1e3));
         win.screenshot(out.resolve("08-diagnosis.png"));
+        clipped(frame, r, "clippedDiagnosis");
         Path nominalMod = out.resolve("NominalD.mod"), compensatedMod = out.resolve("Extended.mod");
         Files.deleteIfExists(nominalMod);
         Files.deleteIfExists(compensatedMod);
@@ -387,6 +388,7 @@ public final class WorkbenchScenario {
             frame.jogPanel().setJointDegrees(1, 0);
         });
         win.screenshot(out.resolve("06-controller.png"));
+        clipped(frame, r, "clippedController");
         var imp = wb.uploadProgram(info.name()).get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
         r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));

@@ -171,7 +171,7 @@ class WorkbenchScenarioTest {
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
         // Nothing a user needs is clipped at 1280 x 720 (toolbar buttons, table columns, labels, tree rows), nor at 1920 x 1080.
-        for (String k : new String[] {"clippedMain", "clippedCalibration", "clippedWizard", "clippedLarge"})
+        for (String k : new String[] {"clippedMain", "clippedController", "clippedCalibration", "clippedDiagnosis", "clippedWizard", "clippedLarge"})
             assertEquals("", r.getProperty(k), k);
         assertEquals("true", r.getProperty("escapeClosedDock"), "Escape closes a docked panel");
         assertTrue(r.getProperty("undoName").startsWith("Undo Move Table"), r.getProperty("undoName"));

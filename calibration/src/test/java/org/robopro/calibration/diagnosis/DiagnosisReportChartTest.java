@@ -47,7 +47,10 @@ class DiagnosisReportChartTest {
                         null, null, "backlash on joint 1"),
                 new Diagnosis.Finding(Effect.scale(1), new double[] {1e-4}, new double[] {1e-6}, 0.09e-3, validation ? 0.11e-3 : nan,
                         null, null, "scale on joint 2"));
-        return new Diagnosis("irb2000", null, 0.03e-3, 0.62e-3, validation ? 0.70e-3 : nan, effects, 0.085e-3, validation ? 0.105e-3 : nan,
+        // A geometric calibration of measured points (no distance anchor, one tool point): only its kind is read here.
+        var geometric = new org.robopro.calibration.identification.CalibrationResult(null, null, null, null, List.of(), List.of(), 0, 0,
+                List.of(), List.of(), List.of(), null, null, 0.03e-3, 0, false, 0, List.of(), List.of(), List.of(), null, false);
+        return new Diagnosis("irb2000", geometric, 0.03e-3, 0.62e-3, validation ? 0.70e-3 : nan, effects, 0.085e-3, validation ? 0.105e-3 : nan,
                 List.of(), List.of(), List.of(), List.of(), List.of(), null, null, null, 40, 0.05, 12,
                 Directions.Source.RECORDED, List.of(), List.of());
     }

@@ -25,7 +25,6 @@ import org.robopro.programs.rapid.ParsedAst;
 import org.robopro.programs.ParsedModule;
 import org.robopro.programs.rapid.RapidAst;
 import org.robopro.programs.RapidParser;
-import org.robopro.programs.RapidWriter;
 import org.robopro.programs.rapid.SourcePos;
 import org.robopro.programs.sim.Values.Arr;
 import org.robopro.programs.sim.Values.Opaque;
@@ -80,11 +79,11 @@ public final class MotionInterpreter {
     }
 
     /**
-     * An interpreter of a module built in code (its syntax tree with the values exact, see
-     * {@link RapidWriter#exactTree}); {@code libraries} provide data declared elsewhere (e.g. tools in user.sys).
+     * An interpreter of a module's syntax tree ({@link RapidModule#tree()}; no positions: errors
+     * name the module); {@code libraries} provide data declared elsewhere (e.g. tools in user.sys).
      */
     public static MotionInterpreter of(RapidModule module, RapidModule... libraries) {
-        return new MotionInterpreter(RapidWriter.exactTree(module), trees(libraries), module.name(), List.of(), MAX_STATEMENTS, null,
+        return new MotionInterpreter(module.tree(), trees(libraries), module.name(), List.of(), MAX_STATEMENTS, null,
                 List.of(), false);
     }
 
@@ -98,7 +97,7 @@ public final class MotionInterpreter {
 
     private static List<RapidAst.Module> trees(RapidModule... modules) {
         List<RapidAst.Module> out = new ArrayList<>();
-        for (RapidModule m : modules) out.add(RapidWriter.exactTree(m));
+        for (RapidModule m : modules) out.add(m.tree());
         return out;
     }
 
