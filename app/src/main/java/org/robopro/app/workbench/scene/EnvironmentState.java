@@ -5,6 +5,7 @@ import com.jme3.app.SimpleApplication;
 import com.jme3.app.state.BaseAppState;
 import com.jme3.light.AmbientLight;
 import com.jme3.light.DirectionalLight;
+import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
@@ -36,6 +37,7 @@ public final class EnvironmentState extends BaseAppState {
     private static final int SHADOW_MAP = Integer.getInteger("robopro.shadowMap", 1024);
     private DirectionalLightShadowRenderer shadows;
     private boolean shadowsOn;
+    private static final int FLOOR = 0xA9AEB5;
 
     public EnvironmentState(WorkbenchModel model) { this.model = model; }
 
@@ -44,7 +46,16 @@ public final class EnvironmentState extends BaseAppState {
         Shapes s = new Shapes(app.getAssetManager());
         app.getViewPort().setBackgroundColor(new ColorRGBA(0.80f, 0.83f, 0.87f, 1));
         Geometry floor = new Geometry("floor", new Quad(12, 12));
-        floor.setMaterial(s.lit(0xA9AEB5));
+        // The floor is flat and the lights directional, so its lit colour is one colour: drawn
+        // unlit in that colour (Shapes.lit's diffuse and ambient terms, no highlight), it costs a
+        // software rasteriser a fraction of the per-pixel lighting over most of the view.
+        ColorRGBA c = Shapes.color(FLOOR);
+        ColorRGBA sum = ambient.getColor().mult(Shapes.AMBIENT);
+        for (DirectionalLight l : new DirectionalLight[] {key, fill})
+            sum.addLocal(l.getColor().mult(Math.max(0, -l.getDirection().y)));
+        Material floorMat = new Material(app.getAssetManager(), "Common/MatDefs/Misc/Unshaded.j3md");
+        floorMat.setColor("Color", new ColorRGBA(Math.min(1, c.r * sum.r), Math.min(1, c.g * sum.g), Math.min(1, c.b * sum.b), 1));
+        floor.setMaterial(floorMat);
         floor.rotate(-FastMath.HALF_PI, 0, 0);
         floor.setLocalTranslation(-6, -0.002f, 6);
         floor.setShadowMode(ShadowMode.Receive);
