@@ -71,13 +71,8 @@ public final class RobotState extends BaseAppState {
     @Override protected void onEnable() { parent.attachChild(robotRoot); }
     @Override protected void onDisable() { robotRoot.removeFromParent(); }
 
-    final java.util.List<Spatial> variantA = new java.util.ArrayList<>(), variantB = new java.util.ArrayList<>();
-
     @Override
     public void update(float tpf) {
-        boolean va = ((WorkbenchApp) getApplication()).variant();
-        for (Spatial x : variantA) x.setCullHint(va ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
-        for (Spatial x : variantB) x.setCullHint(!va ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
         RobotKinematics k = model.kinematics();
         Tool tool = model.tool();
         if (k != builtFor || tool != toolBuiltFor) {
@@ -251,19 +246,9 @@ public final class RobotState extends BaseAppState {
                 String res = ShippedMeshes.resource(robot, part);
                 try (java.io.InputStream in = RobotState.class.getResourceAsStream(res)) {
                     if (in == null) continue;
-                    byte[] bytes = in.readAllBytes();
-                    Geometry g = new Geometry("mesh-" + part.file(), StlReader.read(bytes, java.nio.file.Path.of(res), 1f));
+                    Geometry g = new Geometry("mesh-" + part.file(), StlReader.read(in.readAllBytes(), java.nio.file.Path.of(res), 1f));
                     g.setMaterial(shapes.lit(part.rgb()));
                     links[part.link()].attachChild(g);
-                    if (WorkbenchApp.VARIANT.equals("indexed")) {
-                        StlReader.INDEXED = false;
-                        Geometry g2 = new Geometry("mesh-" + part.file(), StlReader.read(bytes, java.nio.file.Path.of(res), 1f));
-                        StlReader.INDEXED = true;
-                        g2.setMaterial(shapes.lit(part.rgb()));
-                        links[part.link()].attachChild(g2);
-                        variantA.add(g);
-                        variantB.add(g2);
-                    }
                     done.add(part.link());
                 } catch (java.io.IOException | RuntimeException ex) {
                     java.util.logging.Logger.getLogger(RobotState.class.getName()).warning("shipped mesh " + res + " not drawn: " + ex.getMessage());

@@ -10,8 +10,8 @@ import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.models.InputException;
 
 /**
- * Reads STL meshes (binary and ASCII) into a jME mesh, scaled to metres, with normals smoothed
- * across edges flatter than 30° (crisp where the CAD model has a real edge).
+ * Reads STL meshes (binary and ASCII) into an indexed jME mesh, scaled to metres, with normals
+ * smoothed across edges flatter than 30° (crisp where the CAD model has a real edge).
  * jME's plugins load OBJ and glTF but not STL, which is what most robot CAD exports are.
  */
 public final class StlReader {
@@ -34,17 +34,7 @@ public final class StlReader {
         for (int k = 0; k < pos.length; k++) pos[k] = tri[k] * scale;
         // Smoothing indexes every corner; past SMOOTH_MAX triangles the facets' own normals are used.
         float[] nor = normals(pos, pos.length / 9 <= SMOOTH_MAX ? CREASE_COS : 2f);
-        return INDEXED ? indexed(pos, nor) : soup(pos, nor);
-    }
-
-    static boolean INDEXED = !Boolean.getBoolean("robopro.soup");
-
-    static Mesh soup(float[] pos, float[] nor) {
-        Mesh m = new Mesh();
-        m.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(pos));
-        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(nor));
-        m.updateBound();
-        return m;
+        return indexed(pos, nor);
     }
 
     /**
