@@ -171,7 +171,7 @@ class WorkbenchScenarioTest {
         assertTrue(!rapid.contains("p99"), "the removed target must not be exported");
         assertEquals("6", r.getProperty("objectsAfterAdd"));
         // Nothing a user needs is clipped at 1280 x 720 (toolbar buttons, table columns, labels, tree rows), nor at 1920 x 1080.
-        for (String k : new String[] {"clippedMain", "clippedCalibration", "clippedWizard", "clippedLarge"})
+        for (String k : new String[] {"clippedMain", "clippedController", "clippedCalibration", "clippedDiagnosis", "clippedWizard", "clippedLarge"})
             assertEquals("", r.getProperty(k), k);
         assertEquals("true", r.getProperty("escapeClosedDock"), "Escape closes a docked panel");
         assertTrue(r.getProperty("undoName").startsWith("Undo Move Table"), r.getProperty("undoName"));
@@ -257,6 +257,12 @@ class WorkbenchScenarioTest {
                 "the flange frame follows the typed flange origin");
         assertEquals("8", r.getProperty("wizardPreviewFrames"), "base, six links, flange");
         assertEquals("8", r.getProperty("wizardPreviewDrawn"));
+        assertEquals("6", r.getProperty("wizardPreviewDrums"), "a drum on each joint axis");
+        assertTrue(Integer.parseInt(r.getProperty("wizardPreviewLinksExpected")) >= 4);
+        assertEquals(r.getProperty("wizardPreviewLinksExpected"), r.getProperty("wizardPreviewLinks"), "links from joint to joint and to the flange");
+        assertEquals("Undo Robot model: flange origin mm z", r.getProperty("wizardUndoName"), "the Edit menu names the wizard's edit");
+        assertEquals(-200, Double.parseDouble(r.getProperty("wizardCtrlZFlangeDelta")), 1e-9, "Ctrl+Z in the wizard undoes its last edit");
+        assertEquals(0, Double.parseDouble(r.getProperty("wizardCtrlYFlangeDelta")), 1e-9, "Ctrl+Y redoes it");
         assertEquals("true", r.getProperty("wizardReportHasTable"));
         assertEquals("true", r.getProperty("wizardSaved"));
         assertEquals("true", r.getProperty("wizardOverwriteRefused"));

@@ -120,10 +120,16 @@ public final class WorkbenchModel {
     public EditHistory history() { return history; }
 
     /** Takes back the last edit; returns its label, empty when there was none. */
-    public Optional<String> undo() { return history.popUndo().map(c -> { restore(c.before()); return c.label(); }); }
+    public Optional<String> undo() { return history.popUndo().map(c -> { apply(c, c.before()); return c.label(); }); }
 
     /** Makes the last undone edit again; returns its label, empty when there was none. */
-    public Optional<String> redo() { return history.popRedo().map(c -> { restore(c.after()); return c.label(); }); }
+    public Optional<String> redo() { return history.popRedo().map(c -> { apply(c, c.after()); return c.label(); }); }
+
+    /** A project edit restores the project; another editor's edit (the robot wizard) is handed to that editor. */
+    private void apply(EditHistory.Command c, Object state) {
+        if (c.project()) restore((ProjectData) state);
+        else c.editor().restore(state);
+    }
 
     /** Puts an edit state back: the robot keeps its joint values when the robot stays; the calibration reference is kept. */
     private void restore(ProjectData s) {
