@@ -215,7 +215,8 @@ public final class WorkbenchSession implements AutoCloseable {
         var cal = calibratedModel;
         var ext = extendedModel;
         var nominal = model.kinematics().kinematicModel();
-        if (cal != null && nominal.isPresent()) {
+        boolean compensated = cal != null && nominal.isPresent();
+        if (compensated) {
             var out = org.robopro.programs.compensation.ProgramCompensation.compensate(module, "main", nominal.get(),
                     compensator(nominal.get(), cal, ext, compensationConditions));
             module = out.module();
@@ -228,7 +229,10 @@ public final class WorkbenchSession implements AutoCloseable {
                     out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
                     max * 1e3));
         }
-        RapidExport ex = RapidWriter.export(module);
+        // An imported program is written back as its tree (what was not edited comes out as read);
+        // a compensated one or one taught here through the writer (file precision, valid names).
+        RapidExport ex = model.programSource().isPresent() && !compensated
+                ? new RapidExport(org.robopro.programs.rapid.RapidAstWriter.write(module.tree()), List.of()) : RapidWriter.export(module);
         AtomicFiles.writeString(file, ex.text(), overwrite);
         for (RapidExport.Rename r : ex.renames()) log("RAPID export renamed " + r);
         log("Exported RAPID module " + module.name() + " to " + file);

@@ -110,6 +110,7 @@ public final class ProgramRun {
         List<Integer> index = new ArrayList<>();
         for (int i = 0; i < program.size(); i++) {
             Instruction ins = program.get(i);
+            if (!ins.type().motion()) continue; // a statement kept from an imported module: not run here
             String missing = m.target(ins.target()).isEmpty() ? ins.target()
                     : ins.via() != null && m.target(ins.via()).isEmpty() ? ins.via() : null;
             if (missing != null) {
