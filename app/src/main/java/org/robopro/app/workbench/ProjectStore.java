@@ -207,7 +207,9 @@ public final class ProjectStore {
      * (ProgramModule.fromRapid). Saving writes it as a project.
      */
     private static ProjectData migrated(String text, String fileName, JsonNode root) {
-        org.robopro.programs.RapidModule module = ProgramProject.parse(text, fileName);
+        // The module as a RAPID file holds it (the file's precision), so an export writes it as read.
+        org.robopro.programs.RapidModule module = org.robopro.programs.RapidParser.parse(
+                org.robopro.programs.RapidWriter.export(ProgramProject.parse(text, fileName)).text(), fileName);
         String robotName = root.path("robot").asText("irb2000");
         ProjectData cell = DefaultCell.irb2000Welding();
         if (!robotName.equalsIgnoreCase(cell.robotRef())) {

@@ -229,10 +229,8 @@ public final class WorkbenchSession implements AutoCloseable {
                     out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
                     max * 1e3));
         }
-        // An imported program is written back as its tree (what was not edited comes out as read);
-        // a compensated one or one taught here through the writer (file precision, valid names).
-        RapidExport ex = model.programSource().isPresent() && !compensated
-                ? new RapidExport(org.robopro.programs.rapid.RapidAstWriter.write(module.tree()), List.of()) : RapidWriter.export(module);
+        // A compensated program through the writer (every target rewritten at file precision).
+        RapidExport ex = compensated ? RapidWriter.export(module) : ProgramModule.write(model, module);
         AtomicFiles.writeString(file, ex.text(), overwrite);
         for (RapidExport.Rename r : ex.renames()) log("RAPID export renamed " + r);
         log("Exported RAPID module " + module.name() + " to " + file);
@@ -358,8 +356,8 @@ public final class WorkbenchSession implements AutoCloseable {
     /**
      * Uploads program {@code name} and makes the procedure {@code chooseProc} picks from the
      * module's procedures (called on the UI thread; null cancels and changes nothing) the
-     * workbench program. The procedure runs through the programs module's interpreter, so calls,
-     * loops, MoveC and Offs are flattened into the instructions it executes.
+     * workbench program ({@link ProgramModule#fromRapid}: its motions editable, its other
+     * statements kept as written; calls and loops run, checked and drawn through the module).
      */
     public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name,
             java.util.function.Function<List<String>, String> chooseProc) {

@@ -80,6 +80,17 @@ public final class ProgramModule {
         return src.isPresent() ? spliced(src.get(), own, m.program(), name) : own;
     }
 
+    /**
+     * The RAPID text of {@code module} (the model's program, {@link #toRapid(WorkbenchModel, String)}):
+     * an imported program as its tree (what was not edited comes out byte for byte as read), a
+     * program taught here through {@link RapidWriter} (file precision, valid unique names).
+     */
+    public static org.robopro.programs.rapid.RapidExport write(WorkbenchModel m, RapidModule module) {
+        return m.programSource().isPresent()
+                ? new org.robopro.programs.rapid.RapidExport(org.robopro.programs.rapid.RapidAstWriter.write(module.tree()), List.of())
+                : RapidWriter.export(module);
+    }
+
     /** The model's targets, tool and work objects with the motions of {@code program} as PROC main (kept statements left out). */
     public static RapidModule toRapid(WorkbenchModel m, List<Instruction> program, String name) {
         program = program.stream().filter(i -> i.type().motion()).toList();
