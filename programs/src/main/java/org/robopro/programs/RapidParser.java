@@ -34,14 +34,23 @@ public final class RapidParser {
     private final String file;
     private final ParsedAst ast;
     private final IdentityHashMap<Statement, SourcePos> positions = new IdentityHashMap<>();
+    /** Each typed item and statement to the tree node it was read from. */
+    private final IdentityHashMap<Object, Object> nodes = new IdentityHashMap<>();
+    /**
+     * A file is read strictly (names used twice, data of the wrong type, values a controller
+     * refuses: errors); a tree built in code is viewed leniently (what does not read typed stays
+     * syntax tree; the writer renames names used twice).
+     */
+    private final boolean strict;
     /** Declared data by lower-case name: type name, for checking references. */
     private final Map<String, String> declaredTypes = new HashMap<>();
     /** Declared values by lower-case name, for initialisers that name other data. */
     private final Map<String, RapidValue> declaredValues = new HashMap<>();
 
-    private RapidParser(ParsedAst ast) {
+    private RapidParser(ParsedAst ast, boolean strict) {
         this.file = ast.file();
         this.ast = ast;
+        this.strict = strict;
     }
 
     /** Parses RAPID module text; {@code fileName} names the source in error messages. */
@@ -52,9 +61,15 @@ public final class RapidParser {
     /** Like {@link #parse} and also keeps each statement's position and the syntax tree. */
     public static ParsedModule parseDetailed(String text, String fileName) {
         ParsedAst a = RapidAstParser.parse(text, fileName);
-        RapidParser p = new RapidParser(a);
-        RapidModule m = p.module(a.module());
+        RapidParser p = new RapidParser(a, true);
+        RapidModule m = new RapidModule(a.module(), new RapidModule.View(p.module(a.module()), p.nodes));
         return new ParsedModule(m, p.file, p.positions, a);
+    }
+
+    /** The typed view of a tree (built in code or edited): read leniently, see {@link #strict}. */
+    static RapidModule.View view(RapidAst.Module tree) {
+        RapidParser p = new RapidParser(ParsedAst.of(tree, tree.name()), false);
+        return new RapidModule.View(p.module(tree), p.nodes);
     }
 
     /**
@@ -63,7 +78,7 @@ public final class RapidParser {
      * in {@code where} when known.
      */
     public static RapidValue literalValue(String type, Expr e, String file, String field) {
-        RapidParser p = new RapidParser(ParsedAst.of(new RapidAst.Module("M", List.of(), List.of()), file));
+        RapidParser p = new RapidParser(ParsedAst.of(new RapidAst.Module("M", List.of(), List.of()), file), true);
         if (!TYPES.contains(type)) throw new InputException(file, 0, 0, field, "data type '" + type + "' is not a typed value");
         try {
             return p.convertChecked(type, e, field);
@@ -79,14 +94,15 @@ public final class RapidParser {
 
     // ---------------------------------------------------------------- module level
 
-    private RapidModule module(RapidAst.Module am) {
+    private List<ModuleItem> module(RapidAst.Module am) {
         List<ModuleItem> items = new ArrayList<>();
         Map<String, SourcePos> names = new HashMap<>();
         for (RapidAst.Item it : am.items()) {
             ModuleItem item = item(it);
+            nodes.put(item, it);
             String n = item instanceof Declaration d ? d.name() : item instanceof Procedure p ? p.name()
                     : item instanceof AstItem a ? a.name() : null;
-            if (n != null) {
+            if (n != null && strict) {
                 SourcePos at = pos(it);
                 SourcePos prev = names.putIfAbsent(n.toLowerCase(Locale.ROOT), at);
                 if (prev != null)
@@ -94,9 +110,8 @@ public final class RapidParser {
             }
             items.add(item);
         }
-        RapidModule m = new RapidModule(am.name(), am.options(), items);
-        checkReferences(m);
-        return m;
+        if (strict) checkReferences(items);
+        return items;
     }
 
     /** Column of the declared name on its line (for messages), the item's column when not found. */
@@ -114,7 +129,13 @@ public final class RapidParser {
     private ModuleItem item(RapidAst.Item it) {
         if (it instanceof RapidAst.CommentLine c) return new Comment(c.text());
         if (it instanceof RapidAst.DataDecl d) {
-            Declaration typed = typedDeclaration(d);
+            Declaration typed;
+            try {
+                typed = typedDeclaration(d);
+            } catch (InputException | IllegalArgumentException bad) {
+                if (strict) throw bad;
+                typed = null;
+            }
             if (typed == null) {
                 declaredTypes.put(d.name().toLowerCase(Locale.ROOT), d.dims().isEmpty() ? d.type().toLowerCase(Locale.ROOT) : "array");
                 return new AstItem(d);
@@ -178,7 +199,14 @@ public final class RapidParser {
     private static final Set<String> MOVE_OPTIONS = Set.of("CONC", "NOEOFFS", "V", "T", "Z", "WOBJ");
 
     private Statement statement(RapidAst.Stmt s, String proc) {
-        Statement out = typedStatement(s, proc);
+        Statement out;
+        try {
+            out = typedStatement(s, proc);
+        } catch (InputException | IllegalArgumentException bad) {
+            if (strict) throw bad;
+            out = new AstStatement(s);
+        }
+        nodes.put(out, s);
         SourcePos p = ast.position(s).orElse(null);
         if (p != null) positions.put(out, p);
         return out;
@@ -314,9 +342,9 @@ public final class RapidParser {
     }
 
     /** References to data declared further down the file are checked once everything is read. */
-    private void checkReferences(RapidModule m) {
-        for (Procedure p : m.procedures())
-            for (Statement s : p.body())
+    private void checkReferences(List<ModuleItem> items) {
+        for (ModuleItem it : items)
+            if (it instanceof Procedure p) for (Statement s : p.body())
                 if (s instanceof Move mv) {
                     SourcePos at = positions.get(s);
                     check(mv.toPoint(), mv.kind() == Move.Kind.MOVE_ABS_J ? "jointtarget" : "robtarget", at, p.name());
@@ -414,28 +442,18 @@ public final class RapidParser {
         throw err(e, field, "expected a string, found " + describe(e));
     }
 
-    /** RAPID string escapes: "" is a quote, backslash-backslash a backslash, backslash hh a character code. */
+    /** The literal's string ({@link RapidAst.Str#value}), within RAPID's 80 ISO-8859-1 characters. */
     private String unescape(RapidAst.Str s, String field) {
-        String r = s.raw();
-        StringBuilder b = new StringBuilder();
-        for (int k = 0; k < r.length(); k++) {
-            char c = r.charAt(k);
-            if (c == '"') { b.append('"'); k++; continue; }
-            if (c == '\\') {
-                if (k + 1 < r.length() && r.charAt(k + 1) == '\\') { b.append('\\'); k++; continue; }
-                if (k + 2 < r.length() && isHex(r.charAt(k + 1)) && isHex(r.charAt(k + 2))) {
-                    b.append((char) Integer.parseInt(r.substring(k + 1, k + 3), 16));
-                    k += 2;
-                    continue;
-                }
-                throw err(s, field, "bad escape in string (use \\\\ for a backslash)");
-            }
-            b.append(c);
+        String v;
+        try {
+            v = s.value();
+        } catch (IllegalArgumentException bad) {
+            throw err(s, field, bad.getMessage());
         }
-        if (b.length() > 80) throw err(s, field, "string longer than RAPID's 80 characters");
-        for (int k = 0; k < b.length(); k++)
-            if (b.charAt(k) > 0xFF) throw err(s, field, "string holds a character outside ISO-8859-1");
-        return b.toString();
+        if (v.length() > 80) throw err(s, field, "string longer than RAPID's 80 characters");
+        for (int k = 0; k < v.length(); k++)
+            if (v.charAt(k) > 0xFF) throw err(s, field, "string holds a character outside ISO-8859-1");
+        return v;
     }
 
     private static RapidValue predefinedValue(String name) {
@@ -448,7 +466,6 @@ public final class RapidParser {
         return ZoneData.predefined(k).orElse(null);
     }
 
-    private static boolean isHex(char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 
     private Vec3 posMm(Expr e, String field) {
         List<Expr> c = agg(e, 3, field);

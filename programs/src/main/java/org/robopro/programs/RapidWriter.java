@@ -19,8 +19,9 @@ import org.robopro.programs.rapid.RapidNames;
 import org.robopro.programs.rapid.RapidNumbers;
 
 /**
- * Writes a {@link RapidModule} as a RAPID module a controller loads: the typed module becomes the
- * syntax tree it stands for ({@link #tree}), which {@link RapidAstWriter} writes (two-space
+ * Writes a {@link RapidModule} as a RAPID module a controller loads: the module's typed view is
+ * written as a syntax tree at the file's precision with valid unique names ({@link #tree}),
+ * which {@link RapidAstWriter} writes (two-space
  * indentation, rapidchecker's rule; upper-case keywords; no trailing spaces; a final line
  * break). Names are made valid, at most 32 characters and unique ignoring case; every change is
  * reported. Quaternions are written unit (normalised unless already unit at the file's
@@ -61,12 +62,13 @@ public final class RapidWriter {
     }
 
     /**
-     * The syntax tree of {@code module} with its names as given and every number the shortest
-     * literal that reads back as the very same value: what the interpreter runs for a module
-     * built in code, so its poses are not rounded to the file's precision.
+     * The syntax tree of one typed item with its names as given and every number a literal that
+     * reads back as the very same value (how {@link RapidModule} turns typed items into its tree,
+     * so its poses are not rounded to a file's precision). Statements found in {@code nodes}
+     * (typed statements read from a tree, to the node they were read from) keep that node.
      */
-    public static RapidAst.Module exactTree(RapidModule module) {
-        return new RapidWriter(Precision.DEFAULT, true).module(module);
+    static RapidAst.Item exactItem(ModuleItem item, Map<Object, Object> nodes) {
+        return new RapidWriter(Precision.DEFAULT, true).item(item, nodes);
     }
 
     /** Names every module may use without declaring them. */
@@ -87,19 +89,21 @@ public final class RapidWriter {
         String modName = exact || RapidNames.isValid(m.name()) ? m.name() : RapidNames.sanitize(m.name());
         if (!modName.equals(m.name())) renames.add(new RapidExport.Rename("module", m.name(), modName, "not a valid RAPID name"));
         List<RapidAst.Item> items = new ArrayList<>();
-        for (ModuleItem item : m.items()) {
-            if (item instanceof Comment c) items.add(new RapidAst.CommentLine(stripEnd(c.text())));
-            else if (item instanceof Declaration d)
-                items.add(new RapidAst.DataDecl(d.scope(), d.storage(), d.rapidType(), declaredName(d), List.of(), value(d.value())));
-            else if (item instanceof Procedure p) items.add(procedure(p));
-            else if (item instanceof AstItem a) items.add(a.item());
-        }
+        for (ModuleItem item : m.items()) items.add(item(item, Map.of()));
         return new RapidAst.Module(modName, m.options(), items);
     }
 
-    private RapidAst.Routine procedure(Procedure p) {
+    private RapidAst.Item item(ModuleItem item, Map<Object, Object> nodes) {
+        if (item instanceof Comment c) return new RapidAst.CommentLine(stripEnd(c.text()));
+        if (item instanceof Declaration d)
+            return new RapidAst.DataDecl(d.scope(), d.storage(), d.rapidType(), declaredName(d), List.of(), value(d.value()));
+        if (item instanceof Procedure p) return procedure(p, nodes);
+        return ((AstItem) item).item();
+    }
+
+    private RapidAst.Routine procedure(Procedure p, Map<Object, Object> nodes) {
         List<RapidAst.Stmt> body = new ArrayList<>();
-        for (Statement s : p.body()) body.add(statement(s));
+        for (Statement s : p.body()) body.add(nodes.get(s) instanceof RapidAst.Stmt kept ? kept : statement(s));
         return new RapidAst.Routine(p.local(), RapidAst.RoutineKind.PROC, null, name(p.name()), List.of(), body, null, null, null, null);
     }
 
@@ -243,13 +247,14 @@ public final class RapidWriter {
 
     /**
      * A number's literal: at {@code decimals}, or in an exact tree a text that reads back as the
-     * very same double (Java's own: the interpreter reads it, no file keeps it, and it costs far
-     * less than the shortest decimal).
+     * very same double (a whole number without decimals, otherwise Java's own text: it costs far
+     * less than the shortest decimal, and an export writes the file's precision anyway).
      */
     private String fmt(double x, int decimals) {
         if (!exact) return RapidNumbers.format(x, decimals);
         if (x == RapidNumbers.UNUSED_AXIS) return "9E+09";
-        return x == 0 ? "0" : Double.toString(x);
+        if (x == Math.rint(x) && Math.abs(x) < 1e15) return Long.toString((long) x);
+        return Double.toString(x);
     }
 
     private Expr quat(Quaternion q) {

@@ -54,6 +54,10 @@ public final class SameMeaning {
             }
             return null;
         }
+        if (a instanceof RapidModule p && b instanceof RapidModule q) {
+            if (!p.name().equals(q.name()) || !p.options().equals(q.options())) return path + ": module " + p + " vs " + q;
+            return diff(p.items(), q.items(), path + ".items");
+        }
         if (a.getClass() != b.getClass()) return path + ": " + a.getClass().getSimpleName() + " vs " + b.getClass().getSimpleName();
         if (a.getClass().isRecord()) {
             for (RecordComponent rc : a.getClass().getRecordComponents()) {

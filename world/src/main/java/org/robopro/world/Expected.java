@@ -51,6 +51,19 @@ public record Expected(Verdict verdict, List<Claim> claims) {
             return null;
         }
 
+        /**
+         * The family a label names: its constant's name in any case with '-' or ' ' for '_'
+         * ("lost-motion", "LOST_MOTION"), its words, or one of its diagnosis names ("backlash");
+         * null when none matches.
+         */
+        public static Family parse(String text) {
+            if (text == null) return null;
+            String t = text.strip();
+            for (Family f : values())
+                if (f.name().equalsIgnoreCase(t.replace('-', '_').replace(' ', '_')) || f.words.equalsIgnoreCase(t)) return f;
+            return ofDiagnosisName(t);
+        }
+
         /** True for families that act on no particular joint (the claim's joints are not compared). */
         public boolean jointless() { return this == THERMAL_GROWTH; }
     }

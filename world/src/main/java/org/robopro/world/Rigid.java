@@ -107,19 +107,21 @@ public record Rigid(double[] r, double[] p) {
         return new double[] {w / n, x / n, y / n, z / n};
     }
 
-    static double[] cross(double[] a, double[] b) {
+    // 3-vector helpers, public for tests that place things on a world robot.
+
+    public static double[] cross(double[] a, double[] b) {
         return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     }
 
-    static double dot(double[] a, double[] b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+    public static double dot(double[] a, double[] b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-    static double[] minus(double[] a, double[] b) { return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+    public static double[] minus(double[] a, double[] b) { return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
-    static double[] plus(double[] a, double[] b) { return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+    public static double[] plus(double[] a, double[] b) { return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-    static double[] scale(double[] a, double s) { return new double[] {a[0] * s, a[1] * s, a[2] * s}; }
+    public static double[] scale(double[] a, double s) { return new double[] {a[0] * s, a[1] * s, a[2] * s}; }
 
-    static double norm(double[] a) { return Math.sqrt(dot(a, a)); }
+    public static double norm(double[] a) { return Math.sqrt(dot(a, a)); }
 
-    static double[] unit(double[] a) { return scale(a, 1 / norm(a)); }
+    public static double[] unit(double[] a) { return scale(a, 1 / norm(a)); }
 }

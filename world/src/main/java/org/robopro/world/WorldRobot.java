@@ -279,6 +279,11 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b);
     }
 
+    /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
+    public WorldRobot withTool(Rigid flangeToTool) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
+    }
+
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
         return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
     }

@@ -51,8 +51,37 @@ public final class DiagnosisBenchmark {
     }
 
     /**
+     * One campaign to diagnose blind, with the answer it must give: a trial of a world scenario,
+     * or a measurement file and its truth label supplied from outside ({@link ScenarioFiles}).
+     *
+     * @param name       the scenario's name (runs of one name share a table row)
+     * @param group      the scenario's group (null, outside, a family, pair, or the label's own)
+     * @param robot      the nominal robot file the campaign was measured on
+     * @param fileName   the measurement file's name (for messages)
+     * @param text       the measurement file's text (shared/formats/measurements.md)
+     * @param expected   the answer
+     * @param sigmaM     the instrument's noise per axis, m (the floor is √3 σ)
+     * @param outlierIds the poses whose readings were made grossly wrong on purpose
+     * @param seed       the seed it was drawn with (0 when unknown)
+     */
+    public record Case(String name, String group, RobotDescription robot, String fileName, String text, Expected expected,
+                       double sigmaM, Set<String> outlierIds, long seed) {
+        public Case { outlierIds = Set.copyOf(outlierIds); }
+
+        /** A world trial as a case: its campaign text and the scenario's expected answer. */
+        public static Case of(Scenario.Trial t) {
+            Set<String> outliers = new LinkedHashSet<>();
+            for (var r : t.campaign().rows()) if (r.outlier()) outliers.add(r.id());
+            return new Case(t.scenario().name(), t.scenario().family(), RobotLibrary.shipped(t.scenario().robot()),
+                    t.scenario().name() + ".csv", t.campaign().text(), t.scenario().expected(), t.campaign().plan().sigmaM(), outliers, t.seed());
+        }
+    }
+
+    /**
      * One diagnosed run.
      *
+     * @param name        the scenario's name
+     * @param expected    the answer it had to give
      * @param named       what the diagnosis named, as "family-name jN"
      * @param located     what it located without naming
      * @param geoRatio    validation RMS of the geometric calibration over the floor
@@ -61,7 +90,7 @@ public final class DiagnosisBenchmark {
      * @param outliersFound    of those, reported as outliers
      * @param cleanFlagged     clean poses reported as outliers
      */
-    public record Run(Scenario scenario, long seed, Outcome outcome, List<String> named, List<String> located, double geoRatio,
+    public record Run(String name, Expected expected, long seed, Outcome outcome, List<String> named, List<String> located, double geoRatio,
                       double finalRatio, double ms, int outliersInjected, int outliersFound, int cleanFlagged) {
         /**
          * The right answer for the scenario's kind, with the validation RMS brought to the bar where
@@ -69,7 +98,7 @@ public final class DiagnosisBenchmark {
          */
         public boolean correct(double bar) {
             if (outliersFound < outliersInjected || cleanFlagged > 0) return false;
-            return switch (scenario.expected().verdict()) {
+            return switch (expected.verdict()) {
                 case NAMED -> outcome == Outcome.NAMED_RIGHT && finalRatio <= bar;
                 case NULL -> outcome == Outcome.CLEAN && finalRatio <= bar;
                 case OUTSIDE -> outcome == Outcome.LOCATED_ONLY;
@@ -78,7 +107,7 @@ public final class DiagnosisBenchmark {
 
         public String line() {
             return String.format(Locale.ROOT, "%-62s seed %d: %-19s named %s located %s, val/floor %.3f -> %.3f, outliers %d/%d "
-                            + "(+%d clean flagged), %.0f ms", scenario.name(), seed, outcome.words, named, located, geoRatio, finalRatio,
+                            + "(+%d clean flagged), %.0f ms", name, seed, outcome.words, named, located, geoRatio, finalRatio,
                     outliersFound, outliersInjected, cleanFlagged, ms);
         }
     }
@@ -98,26 +127,39 @@ public final class DiagnosisBenchmark {
         return out;
     }
 
+    /** Runs the given cases (e.g. campaign files supplied from outside, {@link ScenarioFiles#read}). */
+    public static List<Run> runCases(List<Case> cases, Consumer<String> log) {
+        List<Run> out = new ArrayList<>();
+        for (Case c : cases) {
+            Run r = run(c);
+            if (log != null) log.accept(r.line());
+            out.add(r);
+        }
+        return out;
+    }
+
     /** A world campaign as the product reads it: training rows, and validation rows or null. */
     public record Sets(MeasurementSet train, MeasurementSet validate) { }
 
     /** Reads a trial's measurement text with the product's reader and splits it by its set column. */
-    public static Sets read(Scenario.Trial t) {
-        RobotDescription robot = RobotLibrary.shipped(t.scenario().robot());
-        MeasurementSet all = MeasurementReader.parse(t.scenario().name() + ".csv", t.campaign().text(),
-                robot.joints().stream().map(JointDescription::type).toList());
+    public static Sets read(Scenario.Trial t) { return read(Case.of(t)); }
+
+    /** Reads a case's measurement text with the product's reader and splits it by its set column. */
+    public static Sets read(Case c) {
+        MeasurementSet all = MeasurementReader.parse(c.fileName(), c.text(), c.robot().joints().stream().map(JointDescription::type).toList());
         MeasurementSet validate = all.hasSplit() && all.split(Measurement.Split.VALIDATE).size() > 0
                 ? all.split(Measurement.Split.VALIDATE) : null;
         return new Sets(all.hasSplit() ? all.split(Measurement.Split.TRAIN) : all, validate);
     }
 
     /** One run: measure, write, read, diagnose, score. */
-    public static Run run(Scenario s, long seed) {
-        Scenario.Trial t = s.trial(seed);
-        RobotDescription robot = RobotLibrary.shipped(s.robot());
-        Sets sets = read(t);
-        Diagnosis d = Diagnoser.diagnose(robot, sets.train(), sets.validate());
-        double floor = Math.sqrt(3) * t.campaign().plan().sigmaM();
+    public static Run run(Scenario s, long seed) { return run(Case.of(s.trial(seed))); }
+
+    /** One run of a campaign text: read, diagnose blind, score against the case's answer. */
+    public static Run run(Case c) {
+        Sets sets = read(c);
+        Diagnosis d = Diagnoser.diagnose(c.robot(), sets.train(), sets.validate());
+        double floor = Math.sqrt(3) * c.sigmaM();
         List<String> named = new ArrayList<>(), located = new ArrayList<>();
         Set<String> claims = new LinkedHashSet<>();
         for (Diagnosis.Finding f : d.effects()) {
@@ -130,14 +172,12 @@ public final class DiagnosisBenchmark {
         // Structures the locate scan found that no named effect explains.
         for (Diagnosis.Located l : d.located()) if (l.explainedBy() == null && !located.contains(l.shape())) located.add(l.shape());
         Set<String> want = new LinkedHashSet<>();
-        for (Expected.Claim c : s.expected().claims()) want.add(key(c.family(), c.joints()));
-        Outcome o = score(s.expected().verdict(), want, claims, !located.isEmpty());
-        Set<String> injected = new LinkedHashSet<>();
-        for (var r : t.campaign().rows()) if (r.outlier()) injected.add(r.id());
+        for (Expected.Claim cl : c.expected().claims()) want.add(key(cl.family(), cl.joints()));
+        Outcome o = score(c.expected().verdict(), want, claims, !located.isEmpty());
         int found = 0, clean = 0;
-        for (String id : d.outliers()) if (injected.contains(id)) found++; else clean++;
-        return new Run(s, seed, o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor, d.elapsedMs(),
-                injected.size(), found, clean);
+        for (String id : d.outliers()) if (c.outlierIds().contains(id)) found++; else clean++;
+        return new Run(c.name(), c.expected(), c.seed(), o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor,
+                d.elapsedMs(), c.outlierIds().size(), found, clean);
     }
 
     static String key(Expected.Family f, List<Integer> joints) {
@@ -158,12 +198,12 @@ public final class DiagnosisBenchmark {
                 + "| val RMS / floor before | after (median) | after (max) | outliers found | clean flagged | ms (mean) |\n");
         sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         Map<String, List<Run>> byScenario = new java.util.LinkedHashMap<>();
-        for (Run r : runs) byScenario.computeIfAbsent(r.scenario().name(), k -> new ArrayList<>()).add(r);
+        for (Run r : runs) byScenario.computeIfAbsent(r.name(), k -> new ArrayList<>()).add(r);
         for (var e : byScenario.entrySet()) sb.append(row(e.getKey(), e.getValue()));
         sb.append(row("**all**", runs));
         sb.append('\n');
         sb.append("Validation RMS after the diagnosis over the noise floor (named and null scenarios): ")
-                .append(distribution(runs.stream().filter(r -> r.scenario().expected().verdict() != Expected.Verdict.OUTSIDE)
+                .append(distribution(runs.stream().filter(r -> r.expected().verdict() != Expected.Verdict.OUTSIDE)
                         .mapToDouble(Run::finalRatio).toArray())).append('\n');
         long correct = runs.stream().filter(r -> r.correct(BAR)).count();
         sb.append(String.format(Locale.ROOT, "%nRight answers (named right or clean with validation RMS ≤ %.2f × floor; outside: located "

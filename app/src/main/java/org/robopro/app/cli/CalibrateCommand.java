@@ -31,10 +31,6 @@ public final class CalibrateCommand implements Callable<Integer> {
 
     @Mixin MeasurementOptions measurements;
 
-    @Option(names = "--holdout", paramLabel = "FRACTION",
-            description = "without --validate or a set column: keep every (1/FRACTION)-th pose out of the fit for validation")
-    Double holdout;
-
     @Option(names = "--target", defaultValue = "0,0,0", paramLabel = "X,Y,Z",
             description = "start value of the measured point on the flange, mm (default ${DEFAULT-VALUE})")
     String target;
@@ -83,7 +79,7 @@ public final class CalibrateCommand implements Callable<Integer> {
                 .withOutliers(outlierK, !keepOutliers);
         if (base != null) settings = settings.withInstrument(pose("--base", base, "instrument_T_base"), !freeBase);
         if (tool != null) settings = settings.withTool(pose("--tool", tool, "flange_T_tool"), !freeTool);
-        CalibrationWorkflow.Campaign data = measurements.read(desc, holdout);
+        CalibrationWorkflow.Campaign data = measurements.read(desc);
         Cancellation cancel = new Cancellation();
         Thread hook = CliSupport.cancelOnInterrupt(cancel, Thread.currentThread());
         CalibrationWorkflow.Outcome oc;

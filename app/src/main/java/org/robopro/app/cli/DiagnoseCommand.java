@@ -16,6 +16,7 @@ import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.diagnosis.Diagnoser;
 import org.robopro.calibration.diagnosis.Diagnosis;
 import org.robopro.calibration.diagnosis.DiagnosisReport;
+import org.robopro.calibration.identification.CalibrationResult;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementReader;
 import org.robopro.calibration.measurement.MeasurementSet;
@@ -62,7 +63,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (!(alpha > 0 && alpha < 1)) throw new IllegalArgumentException("--alpha must be in (0, 1), got " + alpha);
         RobotDescription desc = robot.description();
-        CalibrationWorkflow.Campaign data = measurements.read(desc, null);
+        CalibrationWorkflow.Campaign data = measurements.read(desc);
         MeasurementSet train = data.train(), val = data.validate();
         Cancellation cancel = new Cancellation();
         Diagnoser.Options o = Diagnoser.Options.defaults().withAlpha(alpha).withCancel(cancel)
@@ -101,8 +102,9 @@ public final class DiagnoseCommand implements Callable<Integer> {
                 .addString("report.html", DiagnosisReport.html(d, ctx))
                 .commit();
         var w = spec.commandLine().getOut();
-        w.printf(Locale.ROOT, "diagnosed %s from %d poses: geometric RMS %.4f mm -> %.4f mm with effects (train)%n", desc.name(),
-                train.size(), Units.mToMm(d.geometricTrainRmsM()), Units.mToMm(d.finalTrainRmsM()));
+        String kind = d.distances() ? " (distances)" : d.pointsPerPose() > 1 ? " (" + d.pointsPerPose() + " points each; RMS over every point)" : "";
+        w.printf(Locale.ROOT, "diagnosed %s from %d poses%s: geometric RMS %.4f mm -> %.4f mm with effects (train)%n", desc.name(),
+                train.size(), kind, Units.mToMm(d.geometricTrainRmsM()), Units.mToMm(d.finalTrainRmsM()));
         if (val != null) w.printf(Locale.ROOT, "  validation: %.4f mm -> %.4f mm%n", Units.mToMm(d.geometricValidateRmsM()),
                 Units.mToMm(d.finalValidateRmsM()));
         if (d.effects().isEmpty()) w.println("  no non-geometric effect found");
@@ -121,7 +123,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** RMS over every held-out pose of the folds (geometric model, or with each fold's effects), m. */
+    /** RMS over every held-out measurement (point or distance) of the folds (geometric model, or with each fold's effects), m. */
     static double pooledRms(List<Diagnosis> cv, boolean geometric) {
         double s = 0;
         int n = 0;
@@ -163,8 +165,8 @@ public final class DiagnoseCommand implements Callable<Integer> {
             Diagnosis d = cv.get(k);
             ObjectNode f = per.addObject();
             f.put("fold", k + 1);
-            f.put("poses_train", d.geometric().train().size());
-            f.put("poses_held_out", d.geometric().validate().size());
+            f.put("poses_train", CalibrationResult.poses(d.geometric().train()));
+            f.put("poses_held_out", CalibrationResult.poses(d.geometric().validate()));
             finite(f, "held_out_geometric_rms_mm", Units.mToMm(d.geometricValidateRmsM()));
             finite(f, "held_out_final_rms_mm", Units.mToMm(d.finalValidateRmsM()));
             ArrayNode e = f.putArray("effects");

@@ -7,9 +7,10 @@ import org.robopro.models.RobotDescription;
 import picocli.CommandLine.Option;
 
 /**
- * Mixin {@code --measurements FILE [--validate FILE]} of the commands that fit a model to
- * measurements (calibrate, diagnose). Validation poses come from {@code --validate}, else from the
- * file's {@code set} column, else (when the command offers it) from a hold-out of every n-th pose.
+ * Mixin {@code --measurements FILE [--validate FILE] [--holdout FRACTION]} of the commands that
+ * fit a model to measurements (calibrate, diagnose). Validation poses come from {@code --validate},
+ * else from the file's {@code set} column, else from a hold-out of every n-th pose (the
+ * workbench's split, so both give the same figures on the same file).
  */
 public final class MeasurementOptions {
     @Option(names = "--measurements", required = true, paramLabel = "FILE", description = "measurement file (docs/measurement-file.md)")
@@ -18,13 +19,12 @@ public final class MeasurementOptions {
     @Option(names = "--validate", paramLabel = "FILE", description = "measurement file of validation poses (default: the file's set column)")
     Path validate;
 
-    /**
-     * Reads the files for robot {@code d} and splits them by the calibration workflow's rule.
-     *
-     * @param holdout fraction of poses kept out of the fit when neither {@code --validate} nor a
-     *                set column gives validation poses; null for none
-     */
-    CalibrationWorkflow.Campaign read(RobotDescription d, Double holdout) throws IOException {
+    @Option(names = "--holdout", paramLabel = "FRACTION",
+            description = "without --validate or a set column: keep every (1/FRACTION)-th pose out of the fit for validation")
+    Double holdout;
+
+    /** Reads the files for robot {@code d} and splits them by the calibration workflow's rule. */
+    CalibrationWorkflow.Campaign read(RobotDescription d) throws IOException {
         return CalibrationWorkflow.load(d, measurements, validate, holdout);
     }
 

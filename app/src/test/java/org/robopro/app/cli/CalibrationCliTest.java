@@ -107,11 +107,24 @@ class CalibrationCliTest {
 
     @Test
     void calibrate_folds_crossValidationPerFoldAndOverallAgreesWithAnIndependentValidationFile() throws Exception {
-        Path sim = dir.resolve("sim"), cal = dir.resolve("cal");
-        assertEquals(0, run("simulate", "--robot", "irb2000", "--poses", "150", "--validate-poses", "300", "--sigma", "0.02",
-                "--seed", "12", "--out", sim.toString()), err.toString());
-        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", sim.resolve("measurements.csv").toString(),
-                "--validate", sim.resolve("validate.csv").toString(), "--folds", "5", "--out", cal.toString()), err.toString());
+        // A robot of the independent world simulator: 150 training poses and 300 validation poses of the same
+        // session (σ 0.02 mm), written as two files.
+        Path cal = dir.resolve("cal"), trainFile = dir.resolve("measurements.csv"), validate = dir.resolve("validate.csv");
+        var robot = org.robopro.models.RobotLibrary.shipped("irb2000");
+        var world = org.robopro.world.Scenario.baseRobot(robot, new java.util.Random(12), 1e-3, Math.toRadians(0.1));
+        String text = org.robopro.world.Campaign.run(world, robot, org.robopro.world.Campaign.Plan.defaults(12).withPoses(150, 300)
+                .withDirColumns(false).withConditionColumns(false)).text();
+        StringBuilder a = new StringBuilder(), b = new StringBuilder();
+        for (String l : text.split("\n")) {
+            if (l.startsWith("#")) { a.append(l).append('\n'); b.append(l).append('\n'); continue; }
+            String row = l.substring(0, l.lastIndexOf(',')) + "\n"; // without the set column
+            if (l.startsWith("pose,")) { a.append(row); b.append(row); }
+            else (l.endsWith(",validate") ? b : a).append(row);
+        }
+        Files.writeString(trainFile, a.toString());
+        Files.writeString(validate, b.toString());
+        assertEquals(0, run("calibrate", "--robot", "irb2000", "--measurements", trainFile.toString(),
+                "--validate", validate.toString(), "--folds", "5", "--out", cal.toString()), err.toString());
         JsonNode s = new ObjectMapper().readTree(cal.resolve("summary.json").toFile());
         JsonNode per = s.get("cross_validation").get("per_fold");
         assertEquals(5, per.size());

@@ -172,7 +172,7 @@ public final class WorkbenchScenario {
         WorkbenchWindow.onEdt(() -> {
             frame.action("add-table").actionPerformed(null);
             String id = wb.model().selection().substring(7);
-            wb.placeObject(id, -0.2, -1.3, 0, Math.toRadians(30));
+            wb.placeObject(id, 0.3, -1.6, 0, Math.toRadians(30));
         });
         r.setProperty("objectsAfterAdd", String.valueOf(wb.model().objects().size()));
         // Ctrl+Z takes the table back (one step: add and place were separate edits, so twice), Ctrl+Y redoes both.
@@ -236,9 +236,12 @@ public final class WorkbenchScenario {
         var wb = win.session();
         var frame = win.frame();
         Path sim = out.resolve("campaign");
-        int code = new picocli.CommandLine(new org.robopro.app.cli.RoboproCommand()).execute("simulate", "--robot", "irb2000",
-                "--poses", "60", "--sigma", "0.02", "--seed", "11", "--out", sim.toString(), "--force");
-        r.setProperty("simulateExit", String.valueOf(code));
+        // The campaign of a robot drawn by the independent world simulator (60 poses, sigma 0.02 mm).
+        var irb = org.robopro.models.RobotLibrary.shipped("irb2000");
+        var worldRobot = org.robopro.world.Scenario.baseRobot(irb, new java.util.Random(11), 1e-3, Math.toRadians(0.1));
+        java.nio.file.Files.createDirectories(sim);
+        java.nio.file.Files.writeString(sim.resolve("measurements.csv"), org.robopro.world.Campaign.run(worldRobot, irb,
+                org.robopro.world.Campaign.Plan.defaults(11).withPoses(60, 0).withDirColumns(false).withConditionColumns(false)).text());
         AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
         AtomicReference<Boolean> ok = new AtomicReference<>();
         WorkbenchWindow.onEdt(() -> {
@@ -344,6 +347,7 @@ public final class WorkbenchScenario {
         r.setProperty("diagFinalValidateMm", String.valueOf(d.finalValidateRmsM() * 1e3));
         r.setProperty("diagFloorMm", String.valueOf(Math.sqrt(3) * d.sigmaM() * 1e3));
         win.screenshot(out.resolve("08-diagnosis.png"));
+        clipped(frame, r, "clippedDiagnosis");
         Path nominalMod = out.resolve("NominalD.mod"), compensatedMod = out.resolve("Extended.mod");
         Files.deleteIfExists(nominalMod);
         Files.deleteIfExists(compensatedMod);
@@ -387,12 +391,12 @@ public final class WorkbenchScenario {
             frame.jogPanel().setJointDegrees(1, 0);
         });
         win.screenshot(out.resolve("06-controller.png"));
+        clipped(frame, r, "clippedController");
         var imp = wb.uploadProgram(info.name()).get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
         r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
         r.setProperty("controllerLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Controller:")).toList()));
 
-        List<Instruction> original = wb.model().program();
         // A program with MoveC: checked, downloaded and run on the simulated controller, which ends at the arc's end.
         WorkbenchWindow.onEdt(() -> wb.model().setProgram(List.of(new Instruction(Instruction.Type.MOVEJ, "p10", 500, 10),
                 new Instruction(Instruction.Type.MOVEC, "p30", 200, 0, "p20"))));
@@ -410,14 +414,17 @@ public final class WorkbenchScenario {
         AtomicReference<List<String>> offered = new AtomicReference<>();
         var twice = wb.uploadProgram("Twice", procs -> { offered.set(procs); return "twice"; }).get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("uploadOfferedProcs", String.join(",", offered.get()));
-        r.setProperty("uploadTwiceProgram", String.join(";", twice.program().stream().map(i -> i.type() + " " + i.target()).toList()));
+        r.setProperty("uploadTwiceProgram", String.join("|", twice.program().stream()
+                .map(i -> i.type().motion() ? i.type() + " " + i.target() : "RAPID " + i.statementText()).toList()));
+        r.setProperty("uploadTwiceMotions", String.join(";", wb.model().programRun().steps().stream()
+                .map(step -> step.label().replaceAll(".*#\\d+ ", "")).toList()));
         try {
             wb.uploadProgram("Twice", procs -> null).get(30, java.util.concurrent.TimeUnit.SECONDS);
             r.setProperty("uploadCancelled", "no");
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.CancellationException e) {
             r.setProperty("uploadCancelled", String.valueOf(wb.model().program().size()));
         }
-        WorkbenchWindow.onEdt(() -> wb.model().setProgram(original));
+        WorkbenchWindow.onEdt(() -> wb.model().undo()); // the upload: program and its module back as they were
         wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
     }
@@ -455,6 +462,22 @@ public final class WorkbenchScenario {
                 wiz.setJointCell(j, "Z mm", String.valueOf(wiz.wizardModel().joint(j).pointMm()[2] + 200));
             wiz.setFlangeCell(0, 2, wiz.wizardModel().flangeOriginMm()[2] + 200);
         });
+        // Ctrl+Z in the wizard's table goes through the window's one undo history (Edit > Undo):
+        // the flange edit is taken back, Ctrl+Y makes it again.
+        double flangeZ = wiz.wizardModel().flangeOriginMm()[2];
+        WorkbenchWindow.onEdt(() -> r.setProperty("wizardUndoName", String.valueOf(frame.action("undo").getValue(javax.swing.Action.NAME))));
+        WorkbenchWindow.onEdt(() -> {
+            javax.swing.JTable t = wiz.jointTable();
+            t.dispatchEvent(new java.awt.event.KeyEvent(t, java.awt.event.KeyEvent.KEY_PRESSED, System.currentTimeMillis(),
+                    java.awt.event.InputEvent.CTRL_DOWN_MASK, java.awt.event.KeyEvent.VK_Z, java.awt.event.KeyEvent.CHAR_UNDEFINED));
+            r.setProperty("wizardCtrlZFlangeDelta", String.valueOf(wiz.wizardModel().flangeOriginMm()[2] - flangeZ));
+        });
+        WorkbenchWindow.onEdt(() -> {
+            javax.swing.JTable t = wiz.jointTable();
+            t.dispatchEvent(new java.awt.event.KeyEvent(t, java.awt.event.KeyEvent.KEY_PRESSED, System.currentTimeMillis(),
+                    java.awt.event.InputEvent.CTRL_DOWN_MASK, java.awt.event.KeyEvent.VK_Y, java.awt.event.KeyEvent.CHAR_UNDEFINED));
+            r.setProperty("wizardCtrlYFlangeDelta", String.valueOf(wiz.wizardModel().flangeOriginMm()[2] - flangeZ));
+        });
         r.setProperty("wizardFixedOk", String.valueOf(wiz.result().ok()));
         r.setProperty("wizardError", wiz.errorText());
         Pose[] frames = wiz.result().framesAtZero();
@@ -463,9 +486,21 @@ public final class WorkbenchScenario {
         r.setProperty("wizardReportHasTable", String.valueOf(wiz.reportText().contains("identified parameters")));
         win.app().awaitFrames(3, 10_000);
         r.setProperty("wizardPreviewDrawn", String.valueOf(win.app().previewState().frameCount()));
+        r.setProperty("wizardPreviewDrums", String.valueOf(win.app().previewState().partCount("preview-joint-")));
+        r.setProperty("wizardPreviewLinks", String.valueOf(win.app().previewState().partCount("preview-link-")));
+        // One link between each two successive distinct points: base origin, joint points, flange.
+        var pts = new java.util.ArrayList<org.robopro.models.Vec3>();
+        pts.add(new org.robopro.models.Vec3(0, 0, 0));
+        for (var j : wb.model().preview().robot().joints()) pts.add(j.point());
+        pts.add(wb.model().preview().robot().flange().origin());
+        int links = 0;
+        for (int i = 1; i < pts.size(); i++) if (pts.get(i).minus(pts.get(i - 1)).norm() > 1e-6) links++;
+        r.setProperty("wizardPreviewLinksExpected", String.valueOf(links));
         win.setView(org.robopro.app.workbench.scene.CameraState.View.SIDE);
-        win.app().camera().focus(0.45, 0, 0.95);
-        win.app().camera().zoom(0.75);
+        // A little from the front and above, so the drums read as cylinders along their axes.
+        win.app().camera().orbit(0.55, 0.2);
+        win.app().camera().focus(0.5, 0, 1.05);
+        win.app().camera().zoom(0.95);
         win.screenshot(out.resolve("04-wizard.png"));
         clipped(frame, r, "clippedWizard");
         Path robotFile = out.resolve("irb2000_long.robot.json");

@@ -110,12 +110,6 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
-        // The effect search reads one measured position per pose; refuse other data rather than use part of it.
-        if (train.isDistance() || train.pointCount() > 1)
-            throw new org.robopro.models.InputException(train.source(), 0, 0, train.isDistance() ? "distance" : "point",
-                    "diagnosis reads one measured point per pose; this file has " + (train.isDistance() ? "distances"
-                    : train.pointCount() + " points per pose") + ". Calibrate it with 'robopro calibrate', or diagnose a file "
-                    + "of one of its points" + (train.isDistance() ? " measured as positions" : " (keep that point's rows)"));
         Directions.Prepared dirs = Directions.prepare(train, validate);
         train = dirs.train();
         validate = dirs.validate();
@@ -173,7 +167,7 @@ public final class Diagnoser {
             o.progress().update("cross-validating the claims (fold " + (f + 1) + " of " + k + ")", (double) f / k);
             List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
             for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
-            Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of());
+            Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of()).d;
             for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
             geoSs += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
             effSs += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
@@ -215,50 +209,47 @@ public final class Diagnoser {
     /** The diagnosis of data whose directions are prepared, with the outlier rule judged under the extended model. */
     private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                       Directions.Source dirSource, Set<String> excluded) {
-        Diagnosis d = run(robot, train, validate, o, null, t0, dirSource, excluded);
+        Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
+        Diagnosis d = r.d;
         if (d.effects().isEmpty()) return d;
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
-        List<String> under = outliersUnder(d, train);
+        List<String> under = r.outliersUnder;
         if (!d.outliers().isEmpty()) {
             // The geometric fit's outliers may be the peak of a structure the effects now model, which a
             // model fitted without them cannot judge: judge them with the effects fitted to every pose.
-            Diagnosis all = run(robot, train, validate, o, List.of(), t0, dirSource, excluded);
-            if (!all.effects().isEmpty()) {
-                List<String> underAll = outliersUnder(all, train);
-                if (underAll.isEmpty()) return all;
+            Run all = run(robot, train, validate, o, List.of(), t0, dirSource, excluded);
+            if (!all.d.effects().isEmpty()) {
+                List<String> underAll = all.outliersUnder;
+                if (underAll.isEmpty()) return all.d;
                 if (underAll.size() < under.size()) under = underAll;
             }
         }
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
         // Many poses beyond 5 robust sigmas are a structure the model leaves (reported), not bad measurements.
         if (under.size() > Math.max(3, 0.05 * train.size())) return d;
-        return run(robot, train, validate, o, under, t0, dirSource, excluded);
+        return run(robot, train, validate, o, under, t0, dirSource, excluded).d;
     }
 
+    /** A diagnosis and the poses the calibration's outlier rule flags under its extended model. */
+    private record Run(Diagnosis d, List<String> outliersUnder) { }
+
+    /** Robust sigmas beyond which a pose is an outlier under the extended model (the calibration's default rule). */
+    static final double OUTLIER_K = 5;
+
     /**
-     * The calibration's outlier rule under the extended model: training poses whose position
-     * residual exceeds 5 robust sigmas (median residual norm / 1.5382, the median of a 3-D
-     * Gaussian's norm), over every training pose.
+     * The calibration's outlier rule ({@link Calibrator#outliers}: a pose whose worst measured
+     * point, or distance, exceeds {@link #OUTLIER_K} robust sigmas) under the extended model of a
+     * final fit, over every training pose; poses whose backlash side is unknown are not flagged.
      */
-    static List<String> outliersUnder(Diagnosis d, MeasurementSet train) {
-        ExtendedModel ext = d.model();
-        double[] norms = new double[train.size()];
-        for (int i = 0; i < train.size(); i++) {
-            Measurement m = train.rows().get(i);
-            norms[i] = d.finalInstrumentTbase().apply(ext.tool(m.q(), d.finalFlangeTtool(), PoseConditions.of(m)).position())
-                    .minus(m.position()).norm();
-        }
-        double[] sorted = norms.clone();
-        Arrays.sort(sorted);
-        int c = sorted.length;
-        if (c == 0) return List.of();
-        double med = c % 2 == 1 ? sorted[c / 2] : 0.5 * (sorted[c / 2 - 1] + sorted[c / 2]);
-        double sigma = med / 1.5381722;
+    static List<String> outliersUnder(Diagnosis d, Fit fit, MeasurementSet train) {
+        if (train.size() == 0) return List.of();
         List<String> out = new ArrayList<>();
-        for (int i = 0; i < train.size(); i++)
-            if (norms[i] > 5 * sigma && !unknownBacklashSide(d, train.rows().get(i))) out.add(train.rows().get(i).poseId());
+        Map<String, Measurement> byId = new LinkedHashMap<>();
+        for (Measurement m : train.rows()) byId.put(m.poseId(), m);
+        for (String id : Calibrator.outliers(fit.problem, fit.full, train, Set.of(), OUTLIER_K).keySet())
+            if (!unknownBacklashSide(d, byId.get(id))) out.add(id);
         return out;
     }
 
@@ -279,8 +270,8 @@ public final class Diagnoser {
      * One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses
      * are left out. Families whose {@link #claimKey} is in {@code excluded} are not candidates.
      */
-    private static Diagnosis run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
-                                 List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
+    private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
+                           List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
         o.progress().update("geometric calibration", 0);
@@ -320,6 +311,13 @@ public final class Diagnoser {
         if (gravity == null)
             notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
                     + "add a mass_model to test it");
+        if (geo.distance())
+            notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
+                    + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
+                    + "line to the anchor is not seen at that pose; an effect whose length changes the geometry and the anchor can "
+                    + "absorb is reported as not identifiable; a drift of the anchor or the instrument cannot be told from the same "
+                    + "drift of the measured point the other way; and where an error lives is told by the lengths alone. Measure "
+                    + "positions (x, y, z) to see the direction of an error");
         if (!hasDirs) notes.add("no dir1..dir" + model.dof() + " columns: backlash was not tested");
         else if (dirSource.inferred())
             notes.add("no dir1..dir" + model.dof() + " columns: approach directions " + dirSource.words
@@ -607,19 +605,21 @@ public final class Diagnoser {
         }
         double stated = statedSigmaM(trainAll);
         double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
-        if (Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * Math.sqrt(3) * stated)
+        if (Double.isFinite(stated) && !trainAll.isDistance() && heldOutRms > STATED_FLOOR_MARGIN * Math.sqrt(3) * stated)
             warnings.add(0, aboveStatedFloor(heldOutRms, Double.isFinite(valFinal), stated, selected, foundFinal.isEmpty()));
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
-        int rppF = fit.problem.rowsPerPose();
+        // σ per position axis, or per distance: from the position (distance) rows only, degrees of freedom corrected.
+        int rppF = fit.problem.rowsPerPose(), posRows = fit.problem.positionRowsPerPose();
         double posSq = 0;
-        for (int i = 0; i < fit.m; i++) if (i % rppF < 3) posSq += fit.r[i] * fit.r[i];
-        double sigmaFinal = Math.sqrt(posSq / Math.max(1, fit.m / rppF * 3.0 * (fit.m - fit.nf) / fit.m)) * w.sigmaPos;
-        return new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
+        for (int i = 0; i < fit.m; i++) if (i % rppF < posRows) posSq += fit.r[i] * fit.r[i];
+        double sigmaFinal = Math.sqrt(posSq / Math.max(1, (double) fit.m / rppF * posRows * (fit.m - fit.nf) / fit.m)) * w.sigmaPos;
+        Diagnosis result = new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
+        return new Run(result, selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll));
     }
 
     /**
@@ -907,9 +907,9 @@ public final class Diagnoser {
     }
 
     static Diagnosis.Located located(Locator.Found f, Tester t, String stage, Effect by, boolean left) {
-        String words = String.format(Locale.ROOT, "%s: %.4f mm RMS at the measured point, %.0f %% of the %s sum of squares "
+        String words = String.format(Locale.ROOT, "%s: %.4f mm RMS %s, %.0f %% of the %s sum of squares "
                 + "(F = %.1f on %d degrees of freedom, p %s below the corrected threshold %.2g)", capital(f.probe.shape),
-                f.sizeM * 1e3, 100 * share(f, t), stage.equals("geometric") ? "geometric fit's unexplained" : "remaining",
+                f.sizeM * 1e3, t.where(), 100 * share(f, t), stage.equals("geometric") ? "geometric fit's unexplained" : "remaining",
                 f.c.f, f.c.df1, Words.p(f.c.p), f.c.threshold);
         if (by != null) words += "; explained by " + by.label() + ".";
         else if (left) words += "; no named effect explains it.";
@@ -974,7 +974,7 @@ public final class Diagnoser {
                                  int poses, int dof) {
         List<String> out = new ArrayList<>();
         double sigmaW = Math.sqrt(Math.max(rssLeft, 0) / Math.max(1, dfLeft)); // residual units (1 = the fit's σ)
-        double floor = Math.sqrt(3) * sigmaW * w.sigmaPos;
+        double floor = noiseFloor(sigmaW * w.sigmaPos, fit.problem.measurementSize());
         double rms = fit.trainRms;
         List<Locator.Found> unexplained = left;
         if (rms > 1.2 * floor || !unexplained.isEmpty()) {
@@ -992,6 +992,12 @@ public final class Diagnoser {
         }
         return out;
     }
+
+    /**
+     * The RMS error a perfect model leaves on noise of σ per component: √3 σ for a measured point
+     * (the norm of three components), σ for a distance (one component).
+     */
+    public static double noiseFloor(double sigma, int components) { return Math.sqrt(components) * sigma; }
 
     private static String nextMeasurement(Locator.Found f, int poses) {
         return switch (f.probe.var) {
@@ -1212,17 +1218,8 @@ public final class Diagnoser {
             f.r = new double[f.m];
             f.jac = new double[f.m * f.nf];
             p.evaluate(res.x(), f.r, f.jac);
-            f.trainRms = positionRms(f.r, p.rowsPerPose(), sigmaPos);
+            f.trainRms = p.measurementRms(f.r, sigmaPos);
             return f;
-        }
-
-        /** RMS of position error norms from weighted residuals. */
-        static double positionRms(double[] r, int rpp, double sigma) {
-            double s = 0;
-            int n = r.length / rpp;
-            for (int i = 0; i < n; i++)
-                for (int a = 0; a < 3; a++) s += r[i * rpp + a] * r[i * rpp + a];
-            return Math.sqrt(s / Math.max(1, n)) * sigma;
         }
 
         double validateRms(Fit f) {
@@ -1234,7 +1231,7 @@ public final class Diagnoser {
             q.setSigmas(1, 1);
             double[] r = new double[q.residualCount()];
             q.evaluateFull(full, r, null);
-            return positionRms(r, q.rowsPerPose(), 1);
+            return q.measurementRms(r, 1);
         }
 
         /**
@@ -1460,7 +1457,14 @@ public final class Diagnoser {
         final double[] dQ;       // m x dof: ∂r/∂q_j (drive outputs, weighted)
         final double[] dStrain;  // m: ∂r/∂ε
         final double[] dTrans;   // m x 3: ∂r/∂p (base-frame translation of the point)
-        final double[][] pointBase; // predicted point per pose, base frame
+        final double[][] pointBase; // predicted measured point per pose (the points' mean with several), base frame
+        final double[][][] pointsBase; // predicted point per pose and measured point, base frame
+        /**
+         * The measurement layout of the residual rows: each pose's first {@code posRows} rows hold
+         * {@code perPose} measurements of {@code dim} components each (3 per measured point, points in
+         * order, or 1 for a distance), followed by rotation rows with orientations.
+         */
+        final int posRows, perPose, dim;
         final double[] rPerp;    // residual with any part in span(U) removed
         final double rss0, press0;
         final double[][] h0;     // leverage block per pose (rpp x rpp, row-major)
@@ -1470,6 +1474,9 @@ public final class Diagnoser {
             this.fit = fit;
             m = fit.m;
             rpp = fit.problem.rowsPerPose();
+            posRows = fit.problem.positionRowsPerPose();
+            perPose = fit.problem.measurementsPerPose();
+            dim = fit.problem.measurementSize();
             dof = w.model.dof();
             // Basis of the column-scaled Jacobian (thin SVD, relative rank tolerance 1e-10).
             List<Integer> all = new ArrayList<>();
@@ -1497,11 +1504,16 @@ public final class Diagnoser {
                 for (int a = 0; a < 3; a++) dTrans[i * 3 + a] = jf[i * nFull + off + dof + 1 + a];
             }
             KinematicModel geo = fit.problem.modelOf(fit.full);
-            org.robopro.models.Vec3 tp = fit.problem.toolOf(fit.full).position();
-            pointBase = new double[w.rows.size()][];
+            int nPts = fit.problem.pointCount();
+            pointBase = new double[w.rows.size()][3];
+            pointsBase = new double[w.rows.size()][nPts][];
             for (int i = 0; i < pointBase.length; i++) {
-                org.robopro.models.Vec3 p = geo.flange(w.rows.get(i).q()).apply(tp);
-                pointBase[i] = new double[] {p.x(), p.y(), p.z()};
+                org.robopro.kinematics.Pose fl = geo.flange(w.rows.get(i).q());
+                for (int k = 0; k < nPts; k++) {
+                    org.robopro.models.Vec3 p = fl.apply(fit.problem.toolPointOf(fit.full, k));
+                    pointsBase[i][k] = new double[] {p.x(), p.y(), p.z()};
+                    for (int a = 0; a < 3; a++) pointBase[i][a] += pointsBase[i][k][a] / nPts;
+                }
             }
             rPerp = project(fit.r);
             double s = 0;
@@ -1522,6 +1534,21 @@ public final class Diagnoser {
 
         /** x − U Uᵀ x. */
         double[] project(double[] x) { return projectOut(u, rank, m, x); }
+
+        /** Where the errors are measured, in words: "at the measured point", "at the measured points", "in the measured distances". */
+        String where() { return dim == 1 ? "in the measured distances" : perPose > 1 ? "at the measured points" : "at the measured point"; }
+
+        /** Measurements (points of every pose, or distances) in the residual. */
+        int measurements() { return m / rpp * perPose; }
+
+        /** The first residual row of measurement {@code k} (its {@link #dim} rows follow). */
+        int rowOf(int k) { return k / perPose * rpp + k % perPose * dim; }
+
+        /** The pose of measurement {@code k}. */
+        int poseOf(int k) { return k / perPose; }
+
+        /** The measured point (0-based) a pose's residual row {@code a} belongs to (rotation rows: the point of the frame, 0). */
+        int pointOfRow(int a) { return a < posRows && dim == 3 ? a / 3 : 0; }
 
         /**
          * Leave-one-pose-out prediction error sum of squares of a linear model with residual e and
@@ -1656,10 +1683,12 @@ public final class Diagnoser {
             Effect.Target t = e.target();
             double[] g = new double[t == Effect.Target.POSITION ? 3 * k : k];
             for (int i = 0; i < poses; i++) {
-                if (t == Effect.Target.POSITION) e.positionRegressor(w.rows.get(i).q(), conds.get(i), pointBase[i], g);
-                else e.regressor(w.rows.get(i).q(), conds.get(i), g);
+                if (t != Effect.Target.POSITION) e.regressor(w.rows.get(i).q(), conds.get(i), g);
                 for (int a = 0; a < rpp; a++) {
                     int row = i * rpp + a;
+                    // An effect on the measured point moves each point by its own regressor (its place in the base frame).
+                    if (t == Effect.Target.POSITION && (a == 0 || pointOfRow(a) != pointOfRow(a - 1)))
+                        e.positionRegressor(w.rows.get(i).q(), conds.get(i), pointsBase[i][pointOfRow(a)], g);
                     for (int col = 0; col < k; col++) {
                         double v;
                         if (t == Effect.Target.POSITION)

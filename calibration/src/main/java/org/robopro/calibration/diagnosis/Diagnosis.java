@@ -8,7 +8,7 @@ import org.robopro.calibration.identification.CalibrationResult;
  *
  * @param robot            robot name
  * @param geometric        the geometric calibration the diagnosis started from
- * @param sigmaM           position noise per axis estimated from the final fit's residuals (degrees of freedom corrected), m
+ * @param sigmaM           position noise per axis (or per distance) estimated from the final fit's residuals (degrees of freedom corrected), m
  * @param geometricTrainRmsM  RMS position error of the geometric model on the training poses (outliers excluded)
  * @param geometricValidateRmsM  same on the validation poses (NaN without validation data)
  * @param effects          the effects claimed, in the order they were selected
@@ -36,6 +36,18 @@ public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM
                         ExtendedModel model, org.robopro.kinematics.Pose finalFlangeTtool,
                         org.robopro.kinematics.Pose finalInstrumentTbase, int candidatesTested, double alpha, double elapsedMs,
                         Directions.Source directions, List<Located> located, List<String> warnings) {
+
+    /** The measurements are distances (one component each), not measured points. */
+    public boolean distances() { return geometric.distance(); }
+
+    /** Measured points per pose (1 for distances). */
+    public int pointsPerPose() { return geometric.distance() ? 1 : Math.max(1, geometric.toolPoints().size()); }
+
+    /** The RMS a perfect model leaves on this noise: √3 σ for measured points, σ for distances, m. */
+    public double noiseFloorM() { return Diagnoser.noiseFloor(sigmaM, distances() ? 1 : 3); }
+
+    /** What one plotted or counted measurement is, in words: "poses", "points" or "distances". */
+    public String measurementWords() { return distances() ? "distances" : pointsPerPose() > 1 ? "points" : "poses"; }
 
     /**
      * One effect with its evidence.

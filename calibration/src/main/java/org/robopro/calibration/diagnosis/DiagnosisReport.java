@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.robopro.calibration.report.Figure;
 import org.robopro.calibration.report.Html;
 import org.robopro.calibration.report.Svg;
 import org.robopro.kinematics.Units;
@@ -75,7 +76,7 @@ public final class DiagnosisReport {
         root.put("recommendations", d.recommendations());
         root.put("notes", d.notes());
         root.put("sigma_mm", Units.mToMm(d.sigmaM()));
-        root.put("noise_floor_mm", Units.mToMm(Math.sqrt(3) * d.sigmaM()));
+        root.put("noise_floor_mm", Units.mToMm(d.noiseFloorM()));
         root.put("candidates_tested", d.candidatesTested());
         root.put("family_alpha", d.alpha());
         root.put("directions", d.directions().words);
@@ -167,10 +168,11 @@ public final class DiagnosisReport {
         for (Diagnosis.Finding f : d.effects()) row(h, "+ " + f.effect().label(), f.trainRmsM(), f.validateRmsM());
         row(h, "final (joint re-identification)", d.finalTrainRmsM(), d.finalValidateRmsM());
         h.append("</table>\n");
-        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated from the final fit's residuals: &sigma; = %.4f mm per axis "
-                + "(noise floor &radic;3&middot;&sigma; = %.4f mm). %d candidates (effect &times; joint) "
+        h.append(String.format(Locale.ROOT, "<p class=\"muted\">Noise estimated from the final fit's residuals: &sigma; = %.4f mm %s "
+                + "(noise floor %s = %.4f mm). %d candidates (effect &times; joint) "
                 + "tested with a family-wise false-positive rate of %.3g; %d outlier poses excluded. %.0f ms.</p>\n",
-                Units.mToMm(d.sigmaM()), Units.mToMm(Math.sqrt(3) * d.sigmaM()), d.candidatesTested(), d.alpha(),
+                Units.mToMm(d.sigmaM()), d.distances() ? "per distance" : "per axis", d.distances() ? "&sigma;" : "&radic;3&middot;&sigma;",
+                Units.mToMm(d.noiseFloorM()), d.candidatesTested(), d.alpha(),
                 d.outliers().size(), d.elapsedMs()));
         h.append("<p class=\"muted\">Approach directions: ").append(Html.esc(d.directions().words)).append(".</p>\n");
         h.append(rmsChart(d));
@@ -182,7 +184,8 @@ public final class DiagnosisReport {
             h.append(parameterTable(f));
             Diagnosis.Plot p = f.plot();
             if (p != null) {
-                h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " poses)", p.xLabel(), p.yLabel(),
+                h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " "
+                        + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
                                 new Svg.Series("fitted " + f.effect().kind().json, p.curveX(), p.curveY(), "#d62728", true)), false));
                 if (p.periodogram() != null) {
@@ -261,24 +264,36 @@ public final class DiagnosisReport {
     }
 
     private static String rmsChart(Diagnosis d) {
-        int n = d.effects().size() + 1;
-        double[] x = new double[n], tr = new double[n], va = new double[n];
-        x[0] = 0;
-        tr[0] = Units.mToMm(d.geometricTrainRmsM());
-        va[0] = Units.mToMm(d.geometricValidateRmsM());
-        for (int i = 1; i < n; i++) {
-            x[i] = i;
-            tr[i] = Units.mToMm(d.effects().get(i - 1).trainRmsM());
-            va[i] = Units.mToMm(d.effects().get(i - 1).validateRmsM());
+        return Svg.draw((c, w, h) -> rmsBars(c, w, h, "RMS error: geometric model, after each effect, final fit", d));
+    }
+
+    /**
+     * The RMS bar chart of a diagnosis, drawn by the one figure routine (the report's SVG and the
+     * workbench panel): bars for the geometric model, after each effect was added and for the
+     * final joint fit (the rows of the report's table), training and, when there are validation
+     * data, validation side by side; the noise floor (√3·σ for points, σ for distances) as a dashed line.
+     */
+    public static void rmsBars(Figure.Canvas c, double w, double h, String title, Diagnosis d) {
+        List<String> cats = new ArrayList<>();
+        List<double[]> v = new ArrayList<>();
+        cats.add("geometric");
+        v.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
+        for (Diagnosis.Finding f : d.effects()) {
+            cats.add("+ " + f.effect().label());
+            v.add(new double[] {f.trainRmsM(), f.validateRmsM()});
         }
-        List<Svg.Series> s = new ArrayList<>();
-        s.add(new Svg.Series("training RMS", x, tr, "#1f77b4", true));
-        if (Double.isFinite(d.geometricValidateRmsM())) {
-            s.add(new Svg.Series("validation RMS", x, va, "#ff7f0e", true));
+        if (!d.effects().isEmpty() && Double.isFinite(d.finalTrainRmsM())) {
+            cats.add("final fit");
+            v.add(new double[] {d.finalTrainRmsM(), d.finalValidateRmsM()});
         }
-        double[] fl = new double[n];
-        java.util.Arrays.fill(fl, Units.mToMm(Math.sqrt(3) * d.sigmaM()));
-        s.add(new Svg.Series("noise floor (final estimate)", x, fl, "#999", true));
-        return Svg.plot("RMS error: geometric model (0) and after each effect", "effects added", "RMS (mm)", s, false);
+        double[] train = v.stream().mapToDouble(x -> Units.mToMm(x[0])).toArray();
+        double[] val = v.stream().mapToDouble(x -> Units.mToMm(x[1])).toArray();
+        List<Svg.Series> series = new ArrayList<>();
+        series.add(new Svg.Series("training", null, train, "#f07a1a", false));
+        if (java.util.Arrays.stream(val).anyMatch(Double::isFinite)) series.add(new Svg.Series("validation", null, val, "#f5b77f", false));
+        double floor = Units.mToMm(d.noiseFloorM());
+        List<Svg.Line> lines = floor > 0 && Double.isFinite(floor)
+                ? List.of(new Svg.Line(d.distances() ? "noise floor σ" : "noise floor √3·σ", floor, "#2e9e44")) : List.of();
+        Figure.bars(c, w, h, title, "RMS (mm)", cats, series, lines, "%.3f");
     }
 }

@@ -410,36 +410,44 @@ final class Locator {
         return c.keptColumns == 0 ? null : c;
     }
 
-    /** RMS over the poses of the structure's fitted displacement at the measured point, m. */
+    /** RMS over the measurements (every measured point, or every distance) of the structure's fitted displacement, m. */
     static double size(Diagnoser.Tester t, Found f) {
-        int rpp = t.rpp, poses = t.m / rpp, q = f.c.df1;
+        int q = f.c.df1, n = t.measurements();
         double s = 0;
-        for (int i = 0; i < poses; i++)
-            for (int a = 0; a < 3; a++) {
+        for (int mi = 0; mi < n; mi++)
+            for (int a = 0; a < t.dim; a++) {
+                int row = t.rowOf(mi) + a;
                 double v = 0;
-                for (int k = 0; k < q; k++) v += f.c.basis[(i * rpp + a) * q + k] * f.c.coef[k];
+                for (int k = 0; k < q; k++) v += f.c.basis[row * q + k] * f.c.coef[k];
                 s += v * v;
             }
-        return Math.sqrt(s / Math.max(1, poses)) * t.fit.problem.sigmaPos();
+        return Math.sqrt(s / Math.max(1, n)) * t.fit.problem.sigmaPos();
     }
 
-    /** Evidence plot: per pose, the structure's fitted displacement along its own direction plus the residual along it (mm), against the variable. */
+    /**
+     * Evidence plot: per measurement (each measured point of a pose, or each distance), the
+     * structure's fitted displacement along its own direction plus the residual along it (mm),
+     * against the variable.
+     */
     static Diagnosis.Plot plot(Diagnoser.Tester t, Found f) {
-        int rpp = t.rpp, poses = t.m / rpp, q = f.c.df1;
+        int q = f.c.df1, n = t.measurements(), d = t.dim;
         double unit = t.fit.problem.sigmaPos() * 1e3;
         List<double[]> pts = new ArrayList<>();
-        double[] fy = new double[poses];
-        for (int i = 0; i < poses; i++) {
-            double[] c = new double[3];
-            for (int a = 0; a < 3; a++) for (int k = 0; k < q; k++) c[a] += f.c.basis[(i * rpp + a) * q + k] * f.c.coef[k];
-            double n = Math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-            if (n == 0) continue;
+        for (int mi = 0; mi < n; mi++) {
+            int r0 = t.rowOf(mi);
+            double[] c = new double[d];
+            for (int a = 0; a < d; a++) for (int k = 0; k < q; k++) c[a] += f.c.basis[(r0 + a) * q + k] * f.c.coef[k];
+            double norm = 0;
+            for (double v : c) norm += v * v;
+            norm = Math.sqrt(norm);
+            if (norm == 0) continue;
             double along = 0;
-            for (int a = 0; a < 3; a++) along += c[a] / n * t.rPerp[i * rpp + a];
-            pts.add(new double[] {f.probe.x[i], along * unit, n * unit});
+            for (int a = 0; a < d; a++) along += c[a] / norm * t.rPerp[r0 + a];
+            pts.add(new double[] {f.probe.x[t.poseOf(mi)], along * unit, norm * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()], cy = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; cy[i] = pts.get(i)[2]; }
-        return new Diagnosis.Plot(f.probe.xLabel, "residual along the structure's displacement (mm)", x, y, x.clone(), cy, null);
+        return new Diagnosis.Plot(f.probe.xLabel, d == 1 ? "distance residual along the structure's change (mm)"
+                : "residual along the structure's displacement (mm)", x, y, x.clone(), cy, null);
     }
 }

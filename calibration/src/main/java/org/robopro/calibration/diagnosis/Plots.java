@@ -23,7 +23,7 @@ final class Plots {
         double[] dn = new double[poses];
         for (int i = 0; i < poses; i++) {
             double s = 0;
-            for (int a = 0; a < 3; a++) {
+            for (int a = 0; a < t.posRows; a++) {
                 double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
                 s += d * d;
             }
@@ -39,7 +39,7 @@ final class Plots {
             Measurement row = t.w.rows.get(i);
             PoseConditions c = t.w.conditions.get(i);
             double proj = 0;
-            for (int a = 0; a < 3; a++) {
+            for (int a = 0; a < t.posRows; a++) {
                 double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
                 proj += d * t.fit.r[i * rpp + a];
             }
@@ -135,27 +135,33 @@ final class Plots {
     }
 
     /**
-     * For an effect on the measured point: per pose, the effect's fitted displacement c_i (residual
-     * units) and the partial residual along it, ‖c_i‖ − ĉ_i·r_i, in mm, against the effect's variable.
+     * For an effect on the measured point: per measurement (each measured point of a pose, or each
+     * distance), the effect's fitted displacement c_i (residual units) and the partial residual
+     * along it, ‖c_i‖ − ĉ_i·r_i, in mm, against the effect's variable.
      */
     static Diagnosis.Plot alongDisplacement(Diagnoser.Tester t, Effect e, double[] v) {
-        int rpp = t.rpp, poses = t.m / rpp, k = e.size();
+        int k = e.size(), n = t.measurements(), d = t.dim;
         double[] s = t.signature(e, t.w.conditions);
-        double[] x = new double[poses], y = new double[poses], fx = new double[poses], fy = new double[poses];
+        double[] x = new double[n], y = new double[n], fx = new double[n], fy = new double[n];
         double unit = t.fit.problem.sigmaPos() * 1e3;
-        for (int i = 0; i < poses; i++) {
-            double[] c = new double[3];
-            for (int a = 0; a < 3; a++) for (int col = 0; col < k; col++) c[a] += s[(i * rpp + a) * k + col] * v[col];
-            double n = Math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        for (int mi = 0; mi < n; mi++) {
+            int r0 = t.rowOf(mi), i = t.poseOf(mi);
+            double[] c = new double[d];
+            for (int a = 0; a < d; a++) for (int col = 0; col < k; col++) c[a] += s[(r0 + a) * k + col] * v[col];
+            double nc = 0;
+            for (double cv : c) nc += cv * cv;
+            nc = Math.sqrt(nc);
             double along = 0;
-            if (n > 0) for (int a = 0; a < 3; a++) along += c[a] / n * t.fit.r[i * rpp + a];
-            double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(t.pointBase[i]) : Double.NaN;
-            x[i] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
-            y[i] = (n - along) * unit;
-            fx[i] = x[i];
-            fy[i] = n * unit;
+            if (nc > 0) for (int a = 0; a < d; a++) along += c[a] / nc * t.fit.r[r0 + a];
+            double pv = e.kind() == Effect.Kind.POINT_SMOOTH
+                    ? e.pointVariable(t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0]) : Double.NaN;
+            x[mi] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
+            y[mi] = (nc - along) * unit;
+            fx[mi] = x[mi];
+            fy[mi] = nc * unit;
         }
-        return new Diagnosis.Plot(xLabel(e), "partial residual along the effect's displacement (mm)", x, y, fx, fy, null);
+        return new Diagnosis.Plot(xLabel(e), d == 1 ? "partial residual of the distance along the effect's change (mm)"
+                : "partial residual along the effect's displacement (mm)", x, y, fx, fy, null);
     }
 
     /** Amplitude of harmonics 1..n of y against the angle x (deg), each fitted alone with a constant. */

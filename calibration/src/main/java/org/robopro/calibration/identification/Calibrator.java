@@ -243,7 +243,7 @@ public final class Calibrator {
                 full = p.fullOf(fit.x());
             }
             o.progress().update("fit", Math.min(0.9, 0.4 + 0.1 * round));
-            Map<String, CalibrationResult.Outlier> flagged = findOutliers(p, full, train, excluded, o.outlierK());
+            Map<String, CalibrationResult.Outlier> flagged = outliers(p, full, train, excluded, o.outlierK());
             if (!o.rejectOutliers()) {
                 outliers = new ArrayList<>(flagged.values());
                 break;
@@ -252,7 +252,7 @@ public final class Calibrator {
             if (last) {
                 // Report what the final fit left out, judged at that fit.
                 List<CalibrationResult.Outlier> out = new ArrayList<>();
-                Map<String, CalibrationResult.Outlier> all = findOutliers(p, full, train, excluded, 0);
+                Map<String, CalibrationResult.Outlier> all = outliers(p, full, train, excluded, 0);
                 for (Measurement m : rows) if (excluded.contains(m.poseId())) out.add(all.get(m.poseId()));
                 outliers = out;
                 break;
@@ -402,28 +402,25 @@ public final class Calibrator {
     }
 
     /**
-     * The poses whose residual at this solution exceeds {@code k} robust sigmas, by id in file
+     * The outlier rule: the poses whose residual at this solution ({@code p}'s layout and blocks,
+     * evaluated on every row of {@code train}) exceeds {@code k} robust sigmas, by id in file
      * order. The robust sigma (median residual norm / Maxwell median) comes from the poses not in
      * {@code excluded}; every pose is judged, the excluded ones too. {@code k = 0} returns every pose.
      */
-    private static Map<String, CalibrationResult.Outlier> findOutliers(IdentificationProblem p, double[] full,
-                                                                     MeasurementSet train, Set<String> excluded, double k) {
+    public static Map<String, CalibrationResult.Outlier> outliers(IdentificationProblem p, double[] full,
+                                                                 MeasurementSet train, Set<String> excluded, double k) {
         IdentificationProblem all = withRows(p, train.rows(), full);
         int m = all.residualCount(), rpp = all.rowsPerPose();
         double[] r = new double[m];
         all.evaluateFull(full, r, null);
         int n = train.size();
         boolean six = all.sixD(), dist = all.distance();
-        int pts = all.pointCount();
+        int pts = all.measurementsPerPose();
         // Per measured point: the 3-D error norm (a Maxwell variable under Gaussian noise), or the
         // distance error's magnitude (half-normal); a pose is judged by its worst point.
-        double[] each = new double[n * pts], pos = new double[n], rot = new double[n];
+        double[] each = all.measurementErrors(r, all.sigmaPos()), pos = new double[n], rot = new double[n];
         for (int i = 0; i < n; i++) {
-            for (int k2 = 0; k2 < pts; k2++) {
-                int b = i * rpp + 3 * k2;
-                each[i * pts + k2] = (dist ? Math.abs(r[i]) : Math.sqrt(sq(r[b]) + sq(r[b + 1]) + sq(r[b + 2]))) * all.sigmaPos();
-                pos[i] = Math.max(pos[i], each[i * pts + k2]);
-            }
+            for (int k2 = 0; k2 < pts; k2++) pos[i] = Math.max(pos[i], each[i * pts + k2]);
             if (six) rot[i] = Math.sqrt(sq(r[i * rpp + 3]) + sq(r[i * rpp + 4]) + sq(r[i * rpp + 5])) * all.sigmaRot();
         }
         double sigPos = Math.max(robustSigma(each, pts, train, excluded) * (dist ? MAXWELL_MEDIAN / HALF_NORMAL_MEDIAN : 1), 1e-9);

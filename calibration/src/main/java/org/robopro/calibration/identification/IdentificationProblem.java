@@ -205,6 +205,41 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     /** Residual rows per pose: 3 per measured point, 6 with orientations, 1 for a distance. */
     public int rowsPerPose() { return distance ? 1 : sixD ? 6 : 3 * points; }
 
+    /** Position (or distance) residual rows per pose, before any rotation rows: 3 per measured point, 1 for a distance. */
+    public int positionRowsPerPose() { return distance ? 1 : 3 * points; }
+
+    /** Components of one measurement's error: 3 for a point, 1 for a distance. */
+    public int measurementSize() { return distance ? 1 : 3; }
+
+    /** Measurements per pose: the measured points, or one distance. */
+    public int measurementsPerPose() { return distance ? 1 : points; }
+
+    /**
+     * The error of every measurement from weighted residuals of this layout (pose by pose, points
+     * in order): each point's position error norm, or a distance error's magnitude, in residual
+     * units times {@code sigma} (the position σ the residuals were weighted with gives metres).
+     */
+    public double[] measurementErrors(double[] r, double sigma) {
+        int rpp = rowsPerPose(), per = measurementsPerPose(), d = measurementSize();
+        int poses = r.length / rpp;
+        double[] out = new double[poses * per];
+        for (int i = 0; i < poses; i++)
+            for (int k = 0; k < per; k++) {
+                double s = 0;
+                for (int a = 0; a < d; a++) s += r[i * rpp + d * k + a] * r[i * rpp + d * k + a];
+                out[i * per + k] = Math.sqrt(s) * sigma;
+            }
+        return out;
+    }
+
+    /** RMS of {@link #measurementErrors}: over every measured point, or every distance. */
+    public double measurementRms(double[] r, double sigma) {
+        double[] e = measurementErrors(r, sigma);
+        double s = 0;
+        for (double v : e) s += v * v;
+        return Math.sqrt(s / Math.max(1, e.length));
+    }
+
     /** Standard deviations that weight position (m) and rotation (rad) residuals. */
     public void setSigmas(double sigmaPosM, double sigmaRotRad) {
         if (!(sigmaPosM > 0) || !(sigmaRotRad > 0)) throw new IllegalArgumentException("sigmas must be > 0: " + sigmaPosM + ", " + sigmaRotRad);

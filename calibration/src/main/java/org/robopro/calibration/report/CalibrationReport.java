@@ -157,7 +157,7 @@ public final class CalibrationReport {
      * placement relative to the anchor keeps its nominal value unless the anchor is given in the
      * robot base frame; each pose sees only the direction towards the anchor.
      */
-    static String distanceWords(CalibrationResult r) {
+    public static String distanceWords(CalibrationResult r) {
         var a = r.anchor();
         String at = String.format(Locale.ROOT, "(%.3f, %.3f, %.3f) mm", Units.mToMm(a.x()), Units.mToMm(a.y()), Units.mToMm(a.z()));
         if (r.anchorGiven())

@@ -41,6 +41,13 @@ public final class Svg {
         return c.toString();
     }
 
+    /** Any figure drawing (e.g. one a workbench panel paints as well) as a report-sized SVG. */
+    public static String draw(Figure.Drawing d) {
+        SvgCanvas c = new SvgCanvas(W, H);
+        d.draw(c, W, H);
+        return c.toString();
+    }
+
     /** Histograms of several samples over shared bins. */
     public static String histogram(String title, String xLabel, List<Series> samples, int bins) {
         SvgCanvas c = new SvgCanvas(W, H);

@@ -5,30 +5,51 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.robopro.calibration.simulation.Campaign;
-import org.robopro.calibration.simulation.CampaignSimulator;
-import org.robopro.calibration.simulation.SimulationSettings;
+import org.robopro.calibration.WorldCampaigns;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotLibrary;
-import org.robopro.models.Vec3;
+import org.robopro.world.Rigid;
+import org.robopro.world.Scenario;
+import org.robopro.world.WorldRobot;
 
 /**
  * The identifiability words on the case of a real campaign: a measured point 1.2 mm from the
- * joint-6 axis leaves the wrist offsets undetermined; 150 mm off the axis determines them.
+ * joint-6 axis leaves the wrist offsets undetermined; 150 mm off the axis determines them. The
+ * robot and its campaign come from the independent world simulator.
  */
 class TrustTest {
     static final KinematicModel IRB = KinematicModel.build(RobotLibrary.shipped("irb2000"));
 
-    static Campaign campaign(Vec3 target, int poses, long seed) {
-        return CampaignSimulator.simulate(IRB, new SimulationSettings(poses, 0, 0.05e-3, 20e-6, 10e-3, 0, target, false, false, seed));
+    /** A campaign of {@code poses} poses (σ 0.05 mm) on a world IRB 2000 whose measured point is {@code target} (m). */
+    static MeasurementSet campaign(WorldRobot w, int poses, long seed) {
+        return WorldCampaigns.measure(IRB.description(), w, org.robopro.world.Campaign.Plan.defaults(seed).withPoses(poses, 0)
+                .withSigma(0.05e-3).withDirColumns(false).withConditionColumns(false)).train();
     }
+
+    static WorldRobot robot(long seed) {
+        return Scenario.baseRobot(IRB.description(), new Random(seed), 1e-3, Math.toRadians(0.1));
+    }
+
+    /** A world robot whose measured point sits {@code offAxisM} from its true joint-6 axis, 100 mm out along it. */
+    static WorldRobot nearTheAxis(long seed, double offAxisM) {
+        WorldRobot w = robot(seed);
+        double[] p6 = w.arm().points()[5], a6 = w.arm().axes()[5];
+        double[] side = Rigid.unit(Rigid.cross(a6, Math.abs(a6[2]) < 0.9 ? new double[] {0, 0, 1} : new double[] {1, 0, 0}));
+        double[] point = Rigid.plus(p6, Rigid.plus(Rigid.scale(a6, 0.1), Rigid.scale(side, offAxisM)));
+        double[] onFlange = w.arm().flange().inverse().apply(point);
+        return w.withTool(Rigid.translation(onFlange[0], onFlange[1], onFlange[2]));
+    }
+
+    static WorldRobot at(long seed, double x, double y, double z) { return robot(seed).withTool(Rigid.translation(x, y, z)); }
 
     @Test
     void assess_pointNearTheJoint6Axis_wristOffsetsNamedWithAdviceToMoveThePoint() {
-        Campaign c = campaign(new Vec3(0.0012, 0, 0.1), 30, 21);
-        CalibrationResult r = Calibrator.calibrate(IRB, c.measurements(), null);
-        List<Trust.Concern> cs = Trust.assess(r, c.measurements());
+        MeasurementSet c = campaign(nearTheAxis(21, 0.0012), 30, 21);
+        CalibrationResult r = Calibrator.calibrate(IRB, c, null);
+        List<Trust.Concern> cs = Trust.assess(r, c);
         cs.forEach(k -> System.out.println(k.sentence()));
         Trust.Concern j5 = cs.stream().filter(k -> k.parameter().startsWith("j5.")).findFirst().orElseThrow(() -> new AssertionError(cs));
         assertTrue(j5.advice().contains("move the measured point off the joint-6 axis"), j5.advice());
@@ -45,9 +66,9 @@ class TrustTest {
 
     @Test
     void assess_pointFarFromTheAxisAndManyPoses_wristOffsetsTrusted() {
-        Campaign c = campaign(new Vec3(0.15, 0.05, 0.1), 150, 22);
-        CalibrationResult r = Calibrator.calibrate(IRB, c.measurements(), null);
-        List<Trust.Concern> cs = Trust.assess(r, c.measurements());
+        MeasurementSet c = campaign(at(22, 0.15, 0.05, 0.1), 150, 22);
+        CalibrationResult r = Calibrator.calibrate(IRB, c, null);
+        List<Trust.Concern> cs = Trust.assess(r, c);
         assertFalse(cs.stream().anyMatch(k -> k.parameter().startsWith("j5.")), cs.toString());
         for (var p : r.parameters())
             if (!p.fixed() && "m".equals(p.unitSi()) && p.sigma() < 1e-4 && cs.stream().noneMatch(k -> k.parameter().equals(p.name())))
@@ -57,17 +78,17 @@ class TrustTest {
 
     @Test
     void span_jointMovedOverLittleOfItsRange_saysWhichRangeToCover() {
-        Campaign c = campaign(new Vec3(0.1, 0, 0.1), 40, 23);
+        MeasurementSet c = campaign(at(23, 0.1, 0, 0.1), 40, 23);
         var rows = new java.util.ArrayList<org.robopro.calibration.measurement.Measurement>();
-        for (var m : c.measurements().rows()) {
+        for (var m : c.rows()) {
             double[] q = m.q();
             q[1] = 0.1 * q[1];
             rows.add(new org.robopro.calibration.measurement.Measurement(m.poseId(), q, m.position(), null, null, Double.NaN,
                     Double.NaN, Double.NaN, null, 0));
         }
-        var set = c.measurements().withRows(rows);
+        var set = c.withRows(rows);
         String s = Trust.span(set, IRB.description().joints().get(1), 1);
         assertTrue(s != null && s.startsWith("add poses with joint 2 over more of its range"), s);
-        assertEquals(null, Trust.span(c.measurements(), IRB.description().joints().get(0), 0), "joint 1 spans its range");
+        assertEquals(null, Trust.span(c, IRB.description().joints().get(0), 0), "joint 1 spans its range");
     }
 }

@@ -21,11 +21,6 @@ import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.Progress;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementWriter;
-import org.robopro.calibration.simulation.Campaign;
-import org.robopro.calibration.simulation.CampaignSimulator;
-import org.robopro.calibration.simulation.SimulationSettings;
-import org.robopro.kinematics.KinematicModel;
-import org.robopro.models.JointType;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 
@@ -34,12 +29,12 @@ class CalibrationWorkflowTest {
 
     static final RobotDescription IRB = RobotLibrary.shipped("irb2000");
 
-    /** A simulated campaign written as a measurement file (no set column). */
+    /** A campaign on a robot of the independent world simulator, written as a measurement file (no set column). */
     Path campaign(String name, int poses, long seed) throws Exception {
-        Campaign c = CampaignSimulator.simulate(KinematicModel.build(IRB), SimulationSettings.defaults().withPoses(poses).withSeed(seed));
-        List<JointType> types = IRB.joints().stream().map(j -> j.type()).toList();
+        org.robopro.world.Campaign.Result c = org.robopro.calibration.WorldCampaigns.geometric(IRB, seed, false,
+                p -> p.withPoses(poses, 0).withDirColumns(false).withConditionColumns(false)).campaign();
         Path f = dir.resolve(name);
-        MeasurementWriter.write(c.measurements(), types, f, true);
+        Files.writeString(f, c.text());
         return f;
     }
 

@@ -20,8 +20,6 @@ import org.robopro.programs.Ref;
 import org.robopro.programs.RobTarget;
 import org.robopro.programs.Statement;
 import org.robopro.programs.Teach;
-import org.robopro.programs.RapidWriter;
-import org.robopro.programs.rapid.ParsedAst;
 import org.robopro.programs.rapid.RapidAst;
 import org.robopro.kinematics.InverseKinematics;
 import org.robopro.kinematics.KinematicModel;
@@ -65,10 +63,7 @@ public final class ProgramCompensation {
     /** Compensates every robtarget of {@code module} run from procedure {@code entry}. */
     public static Outcome compensate(RapidModule module, String entry, KinematicModel nominal, TargetCompensator compensator) {
         InverseKinematics ik = InverseKinematics.of(nominal);
-        // The program as the interpreter runs it; item k of the tree is item k of the module, and
-        // statement j of a typed procedure is statement j of its routine (RapidWriter maps them 1:1).
-        RapidAst.Module tree = RapidWriter.exactTree(module);
-        MotionInterpreter interpreter = MotionInterpreter.of(ParsedAst.of(tree, module.name()));
+        MotionInterpreter interpreter = MotionInterpreter.of(module);
         List<MoveStep> steps = interpreter.moves(entry);
         Map<String, RobTarget> replaced = new LinkedHashMap<>();
         List<Correction> corrections = new ArrayList<>();
@@ -90,22 +85,20 @@ public final class ProgramCompensation {
         }
         // Inline targets robopro can rewrite: those of a typed Move statement (a procedure's own statement).
         Map<RapidAst.Stmt, Move> rewritable = new IdentityHashMap<>();
-        for (int i = 0; i < module.items().size(); i++)
-            if (module.items().get(i) instanceof Procedure p)
-                for (int k = 0; k < p.body().size(); k++)
-                    if (p.body().get(k) instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && hasInline(m))
-                        rewritable.put(((RapidAst.Routine) tree.items().get(i)).body().get(k), m);
+        for (Procedure p : module.procedures())
+            for (Statement st : p.body())
+                if (st instanceof Move m && m.kind() != Move.Kind.MOVE_ABS_J && hasInline(m))
+                    rewritable.put((RapidAst.Stmt) module.node(m).orElseThrow(), m);
         reportUnrewritten(module, steps, rewritable, corrections);
         // Where each rewritable statement first ran; a procedure not run from the entry is run on its own.
         Map<RapidAst.Stmt, MoveStep> firstRun = new IdentityHashMap<>();
         for (MoveStep s : steps) s.statement().ifPresent(st -> firstRun.putIfAbsent(st, s));
         List<ModuleItem> items = new ArrayList<>();
-        for (int i = 0; i < module.items().size(); i++) {
-            ModuleItem it = module.items().get(i);
+        for (ModuleItem it : module.items()) {
             if (it instanceof Declaration d && replaced.containsKey(d.name().toLowerCase(Locale.ROOT)))
                 items.add(d.withValue(replaced.get(d.name().toLowerCase(Locale.ROOT))));
             else if (it instanceof Procedure p)
-                items.add(inlineCompensated(p, (RapidAst.Routine) tree.items().get(i), firstRun, interpreter, ik, compensator, corrections));
+                items.add(inlineCompensated(p, module, firstRun, interpreter, ik, compensator, corrections));
             else items.add(it);
         }
         return new Outcome(module.withItems(items), corrections);
@@ -143,8 +136,8 @@ public final class ProgramCompensation {
         }
     }
 
-    /** {@code p} with its inline robtargets compensated where each statement first ran ({@code routine}: p's syntax tree). */
-    private static Procedure inlineCompensated(Procedure p, RapidAst.Routine routine, Map<RapidAst.Stmt, MoveStep> firstRun,
+    /** {@code p} (a procedure of {@code module}) with its inline robtargets compensated where each statement first ran. */
+    private static Procedure inlineCompensated(Procedure p, RapidModule module, Map<RapidAst.Stmt, MoveStep> firstRun,
                                                MotionInterpreter interpreter, InverseKinematics ik, TargetCompensator c,
                                                List<Correction> corrections) {
         List<Statement> body = new ArrayList<>();
@@ -155,7 +148,7 @@ public final class ProgramCompensation {
                 body.add(st);
                 continue;
             }
-            RapidAst.Stmt node = routine.body().get(k);
+            RapidAst.Stmt node = (RapidAst.Stmt) module.node(m).orElseThrow();
             if (!firstRun.containsKey(node))
                 for (MoveStep s : interpreter.moves(p.name())) s.statement().ifPresent(n -> firstRun.putIfAbsent(n, s));
             MoveStep s = firstRun.get(node);

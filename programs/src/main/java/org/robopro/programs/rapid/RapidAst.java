@@ -247,6 +247,32 @@ public final class RapidAst {
     /** A string literal; {@code raw} is the text between the quotes as written (escapes unresolved). */
     public record Str(String raw) implements Expr {
         /**
+         * The string the literal stands for, RAPID's escapes resolved: {@code ""} a quote,
+         * backslash-backslash a backslash, backslash and two hex digits that character code.
+         * IllegalArgumentException for any other backslash.
+         */
+        public String value() {
+            StringBuilder b = new StringBuilder(raw.length());
+            for (int k = 0; k < raw.length(); k++) {
+                char c = raw.charAt(k);
+                if (c == '"') { b.append('"'); k++; continue; }
+                if (c == '\\') {
+                    if (k + 1 < raw.length() && raw.charAt(k + 1) == '\\') { b.append('\\'); k++; continue; }
+                    if (k + 2 < raw.length() && isHex(raw.charAt(k + 1)) && isHex(raw.charAt(k + 2))) {
+                        b.append((char) Integer.parseInt(raw.substring(k + 1, k + 3), 16));
+                        k += 2;
+                        continue;
+                    }
+                    throw new IllegalArgumentException("bad escape in string (use \\\\ for a backslash)");
+                }
+                b.append(c);
+            }
+            return b.toString();
+        }
+
+        private static boolean isHex(char c) { return c < 128 && Character.digit(c, 16) >= 0; }
+
+        /**
          * The literal of {@code value}: backslashes doubled, the quote and control characters as a
          * backslash and two hex digits (RAPID also allows a doubled quote, but rapidchecker 0.1.5
          * rejects it; backslash 22 is the same character and passes both).

@@ -1,6 +1,7 @@
 package org.robopro.programs.sim;
 
 import java.util.Optional;
+import org.robopro.programs.rapid.RapidAst;
 import org.robopro.programs.rapid.SourcePos;
 
 /**
@@ -18,9 +19,12 @@ import org.robopro.programs.rapid.SourcePos;
  *                    TRIGGER: distance (m) or time (s) before/after the motion's end or start
  * @param trigger     TRIGGER: how {@code seconds} is measured; empty otherwise
  * @param text        the condition (WAIT_CONDITION), the arc's seam and weld data (ARC_*), or empty
+ * @param statement   the syntax-tree node that ran (as {@link MoveStep#statement()}); a trigger
+ *                    firing points to the TriggL/TriggJ/TriggC that fired it
  */
 public record IoStep(String procedure, int statementIndex, Optional<SourcePos> source, String context, Kind kind,
-                     String instruction, String signal, double value, double seconds, Optional<Trigger> trigger, String text)
+                     String instruction, String signal, double value, double seconds, Optional<Trigger> trigger, String text,
+                     Optional<RapidAst.Stmt> statement)
         implements ProgramStep {
 
     public enum Kind { SET, PULSE, WAIT_SIGNAL, WAIT_CONDITION, TRIGGER, ARC_ON, ARC_OFF }

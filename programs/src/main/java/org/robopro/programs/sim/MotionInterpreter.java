@@ -25,7 +25,6 @@ import org.robopro.programs.rapid.ParsedAst;
 import org.robopro.programs.ParsedModule;
 import org.robopro.programs.rapid.RapidAst;
 import org.robopro.programs.RapidParser;
-import org.robopro.programs.RapidWriter;
 import org.robopro.programs.rapid.SourcePos;
 import org.robopro.programs.sim.Values.Arr;
 import org.robopro.programs.sim.Values.Opaque;
@@ -80,11 +79,11 @@ public final class MotionInterpreter {
     }
 
     /**
-     * An interpreter of a module built in code (its syntax tree with the values exact, see
-     * {@link RapidWriter#exactTree}); {@code libraries} provide data declared elsewhere (e.g. tools in user.sys).
+     * An interpreter of a module's syntax tree ({@link RapidModule#tree()}; no positions: errors
+     * name the module); {@code libraries} provide data declared elsewhere (e.g. tools in user.sys).
      */
     public static MotionInterpreter of(RapidModule module, RapidModule... libraries) {
-        return new MotionInterpreter(RapidWriter.exactTree(module), trees(libraries), module.name(), List.of(), MAX_STATEMENTS, null,
+        return new MotionInterpreter(module.tree(), trees(libraries), module.name(), List.of(), MAX_STATEMENTS, null,
                 List.of(), false);
     }
 
@@ -98,7 +97,7 @@ public final class MotionInterpreter {
 
     private static List<RapidAst.Module> trees(RapidModule... modules) {
         List<RapidAst.Module> out = new ArrayList<>();
-        for (RapidModule m : modules) out.add(RapidWriter.exactTree(m));
+        for (RapidModule m : modules) out.add(m.tree());
         return out;
     }
 
@@ -588,7 +587,7 @@ public final class MotionInterpreter {
                     double sec = -1;
                     for (RapidAst.Arg a : args) if (a.kind() == RapidAst.ArgKind.POSITIONAL) sec = num(eval(a.value(), f), a.value());
                     if (!(sec >= 0)) throw error(at, "WaitTime needs a time >= 0");
-                    out.add(new WaitStep(proc, index, source(at), sec, context()));
+                    out.add(new WaitStep(proc, index, source(at), sec, context(), statementOf(at)));
                 }
                 case "TPWRITE", "TPERASE", "STOP", "BREAK", "CONFJ", "CONFL", "SINGAREA", "VELSET", "ACCSET", "PATHACCLIM",
                         "ERRWRITE", "TPSHOW", "STOPMOVE", "STARTMOVE", "CLEARPATH", "WAITROB" -> {
@@ -730,7 +729,7 @@ public final class MotionInterpreter {
                     String lag = up.equals("TRIGGEQUIP") ? "EquipLag " + fmt(num(eval(pos.get(2).value(), f), pos.get(2).value())) + " s" : "";
                     // A definition only: it fires when a TriggL/TriggJ/TriggC names it.
                     triggers.put(Values.lower(data), List.of(new IoStep(proc, index, source(at), context(), IoStep.Kind.TRIGGER, name, sig, value,
-                            time ? amount : amount / 1000, Optional.of(new IoStep.Trigger(start, time)), lag)));
+                            time ? amount : amount / 1000, Optional.of(new IoStep.Trigger(start, time)), lag, statementOf(at))));
                 }
                 case "TRIGGL", "TRIGGJ", "TRIGGC" -> {
                     Move.Kind kind = up.equals("TRIGGL") ? Move.Kind.MOVE_L : up.equals("TRIGGJ") ? Move.Kind.MOVE_J : Move.Kind.MOVE_C;
@@ -750,7 +749,7 @@ public final class MotionInterpreter {
                         }
                         for (IoStep d : defs) {
                             out.add(new IoStep(proc, index, source(at), context(), IoStep.Kind.TRIGGER, name, d.signal(), d.value(), d.seconds(),
-                                    d.trigger(), (data + " " + d.text()).trim()));
+                                    d.trigger(), (data + " " + d.text()).trim(), statementOf(at)));
                             setSignal(d.signal(), d.value());
                         }
                     }
@@ -786,7 +785,7 @@ public final class MotionInterpreter {
         }
 
         IoStep ioStep(String proc, int index, Object at, IoStep.Kind kind, String instruction, String signal, double value, double seconds, String text) {
-            return new IoStep(proc, index, source(at), context(), kind, instruction, signal, value, seconds, Optional.empty(), text);
+            return new IoStep(proc, index, source(at), context(), kind, instruction, signal, value, seconds, Optional.empty(), text, statementOf(at));
         }
 
         /** The signal an argument names (signals are system data, not RAPID variables: never evaluated). */
@@ -1134,7 +1133,13 @@ public final class MotionInterpreter {
         Object eval(RapidAst.Expr e, Frame f) {
             if (e instanceof RapidAst.Num n) return n.value();
             if (e instanceof RapidAst.Bool b) return b.value();
-            if (e instanceof RapidAst.Str s) return unescape(s.raw());
+            if (e instanceof RapidAst.Str s) {
+                try {
+                    return s.value();
+                } catch (IllegalArgumentException bad) {
+                    throw error(e, bad.getMessage());
+                }
+            }
             if (e instanceof RapidAst.Name n) {
                 Var v = f == null ? null : f.vars.get(Values.lower(n.name()));
                 if (v == null) v = globals.get(Values.lower(n.name()));
@@ -1379,23 +1384,6 @@ public final class MotionInterpreter {
     }
 
     private static String fmt(double d) { return d == Math.rint(d) && Math.abs(d) < 1e15 ? String.valueOf((long) d) : String.valueOf(d); }
-
-    /** RAPID string escapes: backslash-backslash a backslash, backslash hh a character code, "" a quote. */
-    private static String unescape(String raw) {
-        StringBuilder b = new StringBuilder();
-        for (int k = 0; k < raw.length(); k++) {
-            char c = raw.charAt(k);
-            if (c == '"' && k + 1 < raw.length()) { b.append('"'); k++; continue; }
-            if (c == '\\' && k + 1 < raw.length() && raw.charAt(k + 1) == '\\') { b.append('\\'); k++; continue; }
-            if (c == '\\' && k + 2 < raw.length() && Character.digit(raw.charAt(k + 1), 16) >= 0 && Character.digit(raw.charAt(k + 2), 16) >= 0) {
-                b.append((char) Integer.parseInt(raw.substring(k + 1, k + 3), 16));
-                k += 2;
-                continue;
-            }
-            b.append(c);
-        }
-        return b.toString();
-    }
 
     private static RapidValue predefined(String name) {
         String k = name.toLowerCase(Locale.ROOT);

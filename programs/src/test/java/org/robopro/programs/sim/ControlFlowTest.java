@@ -101,4 +101,29 @@ class ControlFlowTest {
         InputException e = assertThrows(InputException.class, () -> sim(wrong, 1000));
         assertTrue(e.getMessage().contains("not simulated: RAISE"), e.getMessage());
     }
+
+    @Test
+    void simulate_waitAndIoSteps_pointToTheirStatementNodes() {
+        String text = "MODULE M\n  PROC main()\n    WaitTime 0.5;\n    SetDO do1, 1;\n    FOR i FROM 1 TO 2 DO\n      WaitTime 0.25;\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+        org.robopro.programs.ParsedModule pm = RapidParser.parseDetailed(text, "w.mod");
+        Simulation s = MotionInterpreter.of(pm).simulate("main");
+        var body = ((org.robopro.programs.rapid.RapidAst.Routine) pm.ast().module().items().get(0)).body();
+        assertEquals(4, s.steps().size(), s.steps().toString());
+        assertTrue(((WaitStep) s.steps().get(0)).statement().orElseThrow() == body.get(0), "WaitTime 0.5 is statement 1");
+        assertTrue(((IoStep) s.steps().get(1)).statement().orElseThrow() == body.get(1), "SetDO is statement 2");
+        var loop = (org.robopro.programs.rapid.RapidAst.For) body.get(2);
+        // One statement run twice: two steps, the same node.
+        assertTrue(((WaitStep) s.steps().get(2)).statement().orElseThrow() == loop.body().get(0));
+        assertTrue(((WaitStep) s.steps().get(3)).statement().orElseThrow() == loop.body().get(0));
+    }
+
+    @Test
+    void simulate_stringEscapes_resolvedAsTheParserDoesAndBadOnesRefused() {
+        String text = "MODULE M\n  CONST string s := \"a\\\\b\\22c\";\n  PROC main()\n    TPWrite \"x\\41\" + s;\n  ENDPROC\nENDMODULE\n";
+        Simulation s = sim(text, 100);
+        assertTrue(s.log().get(0).startsWith("TPWrite \"xAa\\b\"c\""), s.log().toString());
+        String bad = "MODULE M\n  VAR string t;\n  PROC main()\n    t := \"x\\q\";\n  ENDPROC\nENDMODULE\n";
+        InputException e = assertThrows(InputException.class, () -> sim(bad, 100));
+        assertTrue(e.getMessage().contains("bad escape") && e.getMessage().contains("4:"), e.getMessage());
+    }
 }

@@ -9,7 +9,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
 import java.util.Optional;
 import org.robopro.calibration.compensation.Compensator;
@@ -204,10 +203,8 @@ class WeldModuleTest {
     @Test
     void compensate_weldModule_changesOnlyTargetsProcessDataByteForByte() {
         KinematicModel nominal = IRB2000;
-        double[] p = nominal.parameterValues();
-        Random rnd = new Random(5);
-        for (int i = 0; i < p.length; i++) p[i] += rnd.nextGaussian() * 0.001;
-        KinematicModel real = nominal.withParameterValues(p);
+        // A calibrated model of a robot of the independent world simulator.
+        KinematicModel real = org.robopro.programs.compensation.WorldCalibration.of(5).calibrated();
         String text = module();
         RapidModule m = RapidParser.parse(text, "WeldCell.mod");
         String before = RapidWriter.export(m).text();

@@ -35,6 +35,8 @@ public final class WorkbenchModel {
     private List<WorkObject> workObjects = List.of();
     private List<Target> targets = List.of();
     private List<Instruction> program = List.of();
+    /** The RAPID module the program was imported from (its other statements and items are kept); null when taught here. */
+    private ProgramModule.Source source;
     private String calibrationReference;
     private volatile double[] q;
     private volatile String selection;
@@ -120,10 +122,16 @@ public final class WorkbenchModel {
     public EditHistory history() { return history; }
 
     /** Takes back the last edit; returns its label, empty when there was none. */
-    public Optional<String> undo() { return history.popUndo().map(c -> { restore(c.before()); return c.label(); }); }
+    public Optional<String> undo() { return history.popUndo().map(c -> { apply(c, c.before()); return c.label(); }); }
 
     /** Makes the last undone edit again; returns its label, empty when there was none. */
-    public Optional<String> redo() { return history.popRedo().map(c -> { restore(c.after()); return c.label(); }); }
+    public Optional<String> redo() { return history.popRedo().map(c -> { apply(c, c.after()); return c.label(); }); }
+
+    /** A project edit restores the project; another editor's edit (the robot wizard) is handed to that editor. */
+    private void apply(EditHistory.Command c, Object state) {
+        if (c.project()) restore((ProjectData) state);
+        else c.editor().restore(state);
+    }
 
     /** Puts an edit state back: the robot keeps its joint values when the robot stays; the calibration reference is kept. */
     private void restore(ProjectData s) {
@@ -141,6 +149,7 @@ public final class WorkbenchModel {
             workObjects = s.workObjects();
             targets = s.targets();
             program = s.program();
+            source = s.source();
             if (!activeWorkObject.equalsIgnoreCase(Target.WOBJ0) && workObjects.stream().noneMatch(w -> w.name().equals(activeWorkObject)))
                 activeWorkObject = Target.WOBJ0;
             if (selection != null && !selectionExists(selection)) selection = null;
@@ -354,6 +363,9 @@ public final class WorkbenchModel {
 
     public synchronized List<Instruction> program() { return program; }
 
+    /** The RAPID module the program was imported from, empty when it was taught here. */
+    public synchronized Optional<ProgramModule.Source> programSource() { return Optional.ofNullable(source); }
+
     public void setProgram(List<Instruction> p) {
         synchronized (this) { program = List.copyOf(p); }
         fire(Change.PROGRAM);
@@ -442,6 +454,7 @@ public final class WorkbenchModel {
             workObjects = List.copyOf(w);
             targets = List.copyOf(imp.targets());
             program = List.copyOf(imp.program());
+            source = imp.source();
             selection = null;
         }
         for (Change c : new Change[] {Change.TOOL, Change.CELL, Change.TARGETS, Change.PROGRAM}) fire(c);
@@ -544,6 +557,7 @@ public final class WorkbenchModel {
             workObjects = List.copyOf(p.workObjects());
             targets = List.copyOf(p.targets());
             program = List.copyOf(p.program());
+            source = p.source();
             calibrationReference = p.calibrationReference();
             activeWorkObject = p.activeWorkObject().equalsIgnoreCase(Target.WOBJ0)
                     || workObjects.stream().anyMatch(w -> w.name().equals(p.activeWorkObject())) ? p.activeWorkObject() : Target.WOBJ0;
@@ -567,6 +581,6 @@ public final class WorkbenchModel {
     /** A snapshot of everything a project file holds. */
     public synchronized ProjectData snapshot() {
         return new ProjectData(robotRef, kinematics.description(), worldTbase, tool, objects, workObjects, targets,
-                program, calibrationReference, activeWorkObject, q);
+                program, calibrationReference, activeWorkObject, q, source);
     }
 }

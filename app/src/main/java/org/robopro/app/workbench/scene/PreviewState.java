@@ -34,6 +34,11 @@ public final class PreviewState extends BaseAppState {
     /** Children drawn for the current preview (tests count frames). */
     public int frameCount() { return built == null ? 0 : built.frames().length; }
 
+    /** Parts drawn whose name starts with {@code prefix}: "preview-joint-" (drums, sleeves), "preview-link-" (links). */
+    public long partCount(String prefix) {
+        return node.getChildren().stream().filter(c -> c.getName() != null && c.getName().startsWith(prefix)).count();
+    }
+
     @Override protected void initialize(Application app) { shapes = new Shapes(app.getAssetManager()); }
     @Override protected void cleanup(Application app) { }
     @Override protected void onEnable() { parent.attachChild(node); }

@@ -29,8 +29,10 @@ import javax.swing.SwingUtilities;
 import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.diagnosis.Diagnosis;
+import org.robopro.calibration.diagnosis.DiagnosisReport;
 import org.robopro.calibration.diagnosis.Effect;
 import org.robopro.calibration.identification.CalibrationResult;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.models.InputException;
 
 /**
@@ -123,7 +125,7 @@ public final class CalibrationPanel extends JPanel {
         findings.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         JScrollPane fs = new JScrollPane(findings);
         fs.setBorder(BorderFactory.createTitledBorder("Findings, outliers, what the data cannot tell, what to record next"));
-        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, then after each effect"));
+        rmsChart.setBorder(BorderFactory.createTitledBorder("RMS error: geometric model, after each effect, final fit"));
         rmsChart.setPreferredSize(new Dimension(600, 200));
         JSplitPane dsplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, rmsChart, fs);
         dsplit.setResizeWeight(0.3);
@@ -151,7 +153,9 @@ public final class CalibrationPanel extends JPanel {
     public boolean loadMeasurements(Path f) {
         try {
             measurements = wb.loadMeasurements(f);
-            file.setText(String.format(Locale.ROOT, "%s: %d training poses, %s", f.getFileName(), measurements.train().size(),
+            MeasurementSet tr = measurements.train();
+            String each = tr.isDistance() ? " (a distance each)" : tr.pointCount() > 1 ? " (" + tr.pointCount() + " points each)" : "";
+            file.setText(String.format(Locale.ROOT, "%s: %d training poses%s, %s", f.getFileName(), tr.size(), each,
                     measurements.validate() == null ? "no validation poses" : measurements.validate().size() + " validation poses"));
             result = null;
             diagnosis = null;
@@ -240,7 +244,8 @@ public final class CalibrationPanel extends JPanel {
         effects.setCaretPosition(0);
         List<CalibrationResult.PoseError> all = new ArrayList<>(r.train());
         all.addAll(r.validate());
-        plot.show(errorFigure(all, Double.isFinite(r.sigmaPosM()) ? r.sigmaPosM() * 1e3 * Math.sqrt(3) : Double.NaN));
+        plot.show(errorFigure(all, Double.isFinite(r.sigmaPosM()) ? r.sigmaPosM() * 1e3 * Math.sqrt(r.distance() ? 1 : 3) : Double.NaN,
+                r.distance(), !r.pointNames().isEmpty()));
         tabs.setSelectedIndex(0);
         updateButtons();
     }
@@ -258,20 +263,28 @@ public final class CalibrationPanel extends JPanel {
 
     /** The calibration's figures, one label each, on two lines (training, then validation). */
     static String rmsLines(CalibrationResult r) {
-        String train = String.format(Locale.ROOT, "Training RMS %.4f mm → %.4f mm (%d poses)", r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3,
-                r.train().size());
+        String train = String.format(Locale.ROOT, "Training RMS %.4f mm → %.4f mm (%s)", r.nominalTrainRmsM() * 1e3, r.trainRmsM() * 1e3,
+                counted(r, r.train()));
         if (r.validate().isEmpty()) return "<html>" + train + "<br>No validation poses</html>";
-        return "<html>" + train + String.format(Locale.ROOT, "<br>Validation RMS %.4f mm → %.4f mm (%d poses, largest %.4f mm)</html>",
-                r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3, r.validate().size(), r.validateMaxM() * 1e3);
+        return "<html>" + train + String.format(Locale.ROOT, "<br>Validation RMS %.4f mm → %.4f mm (%s, largest %.4f mm)</html>",
+                r.nominalValidateRmsM() * 1e3, r.validateRmsM() * 1e3, counted(r, r.validate()), r.validateMaxM() * 1e3);
+    }
+
+    /** What the errors are counted over: "30 poses", "90 points on 30 poses", "150 distances". */
+    static String counted(CalibrationResult r, List<CalibrationResult.PoseError> es) {
+        if (r.distance()) return es.size() + " distances";
+        if (r.pointNames().isEmpty()) return es.size() + " poses";
+        return es.size() + " points on " + CalibrationResult.poses(es) + " poses";
     }
 
     /** A diagnosis in plain words: findings (effect, joints, parameters with units, RMS, evidence), outliers, the rest. */
     static String diagnosisReport(Diagnosis d) {
         StringBuilder b = new StringBuilder();
         boolean val = Double.isFinite(d.geometricValidateRmsM());
-        b.append(String.format(Locale.ROOT, "Geometric model: RMS %.4f mm on the training poses%s. Noise floor about %.4f mm (sigma %.4f mm per axis).%n",
-                d.geometricTrainRmsM() * 1e3, val ? String.format(Locale.ROOT, ", %.4f mm on the validation poses", d.geometricValidateRmsM() * 1e3) : "",
-                Math.sqrt(3) * d.sigmaM() * 1e3, d.sigmaM() * 1e3));
+        String over = d.distances() ? "distances of the " : d.pointsPerPose() > 1 ? "measured points of the " : "";
+        b.append(String.format(Locale.ROOT, "Geometric model: RMS %.4f mm over the %straining poses%s. Noise floor about %.4f mm (sigma %.4f mm per %s).%n",
+                d.geometricTrainRmsM() * 1e3, over, val ? String.format(Locale.ROOT, ", %.4f mm on the validation poses", d.geometricValidateRmsM() * 1e3) : "",
+                d.noiseFloorM() * 1e3, d.sigmaM() * 1e3, d.distances() ? "distance" : "axis"));
         if (d.effects().isEmpty()) {
             b.append(String.format(Locale.ROOT, "%nNo non-geometric effect found: %d candidates tested at a family-wise false-positive rate of %.3g. "
                     + "The geometric calibration explains the data.%n", d.candidatesTested(), d.alpha()));
@@ -411,34 +424,25 @@ public final class CalibrationPanel extends JPanel {
      * scale, with the noise floor (mm; NaN: none drawn): the reports' figure routine.
      */
     static FigurePanel.Drawing errorFigure(List<CalibrationResult.PoseError> es, double noiseFloorMm) {
+        return errorFigure(es, noiseFloorMm, false, false);
+    }
+
+    /** {@link #errorFigure(List, double)} for distances (floor σ, one error per distance) or several points per pose (one per point). */
+    static FigurePanel.Drawing errorFigure(List<CalibrationResult.PoseError> es, double noiseFloorMm, boolean distances, boolean points) {
         double[] before = es.stream().mapToDouble(e -> e.nominalM() * 1e3).sorted().toArray();
         double[] after = es.stream().mapToDouble(e -> e.calibratedM() * 1e3).sorted().toArray();
         double[] rank = new double[before.length];
         for (int i = 0; i < rank.length; i++) rank[i] = i + 1;
         List<Svg.Series> series = List.of(new Svg.Series("nominal model", rank, before, "#8a9099", true),
                 new Svg.Series("calibrated model", rank, after, "#f07a1a", true));
-        List<Svg.Line> lines = noiseFloorMm > 0 ? List.of(new Svg.Line("noise floor (√3·σ)", noiseFloorMm, "#2e7d32")) : List.of();
-        return (c, w, h) -> Figure.plot(c, w, h, "", "pose, sorted by error", "error (mm)", series, true, lines);
+        List<Svg.Line> lines = noiseFloorMm > 0 ? List.of(new Svg.Line(distances ? "noise floor (σ)" : "noise floor (√3·σ)", noiseFloorMm, "#2e7d32"))
+                : List.of();
+        String x = distances ? "distance, sorted by error" : points ? "measured point, sorted by error" : "pose, sorted by error";
+        return (c, w, h) -> Figure.plot(c, w, h, "", x, distances ? "distance error (mm)" : "error (mm)", series, true, lines);
     }
 
-    /**
-     * Bars of the RMS error (mm): the geometric model, then after each effect; training dark,
-     * validation light; the noise floor dashed.
-     */
+    /** The diagnosis's RMS bars, the same drawing as in its HTML report. */
     static FigurePanel.Drawing rmsFigure(Diagnosis d) {
-        List<String> cats = new ArrayList<>();
-        List<double[]> v = new ArrayList<>();
-        cats.add("geometric");
-        v.add(new double[] {d.geometricTrainRmsM(), d.geometricValidateRmsM()});
-        for (Diagnosis.Finding f : d.effects()) {
-            cats.add("+ " + f.effect().label());
-            v.add(new double[] {f.trainRmsM(), f.validateRmsM()});
-        }
-        double[] train = v.stream().mapToDouble(x -> x[0] * 1e3).toArray(), val = v.stream().mapToDouble(x -> x[1] * 1e3).toArray();
-        List<Svg.Series> series = List.of(new Svg.Series("training", null, train, "#f07a1a", false),
-                new Svg.Series("validation", null, val, "#f5b77f", false));
-        double floor = Math.sqrt(3) * d.sigmaM() * 1e3;
-        List<Svg.Line> lines = floor > 0 ? List.of(new Svg.Line("noise floor (√3·σ)", floor, "#2e9e44")) : List.of();
-        return (c, w, h) -> Figure.bars(c, w, h, "", "RMS (mm)", cats, series, lines, "%.3f");
+        return (c, w, h) -> DiagnosisReport.rmsBars(c, w, h, "", d);
     }
 }

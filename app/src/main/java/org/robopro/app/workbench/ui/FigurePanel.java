@@ -17,7 +17,7 @@ import org.robopro.calibration.report.Figure;
  */
 final class FigurePanel extends JPanel {
     /** Draws the figure on a canvas of the given width and height. */
-    interface Drawing { void draw(Figure.Canvas c, double w, double h); }
+    interface Drawing extends Figure.Drawing { }
 
     private volatile Drawing drawing;
 

@@ -23,6 +23,7 @@ import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.table.AbstractTableModel;
 import org.robopro.app.workbench.WorkbenchSession;
+import org.robopro.app.workbench.model.EditHistory;
 import org.robopro.app.workbench.model.RobotWizardModel;
 import org.robopro.app.workbench.model.RobotWizardModel.JointRow;
 import org.robopro.app.workbench.model.WorkbenchModel;
@@ -55,12 +56,14 @@ public final class RobotWizard extends JPanel {
     private final JTextArea report = new JTextArea(14, 70);
     private final JComboBox<String> template = new JComboBox<>();
     private boolean loading;
-    /** The wizard's own edit history (its edits are not the project's until Use in cell): states before each edit. */
-    private final java.util.ArrayDeque<RobotWizardModel.State> undo = new java.util.ArrayDeque<>();
-    private final java.util.ArrayDeque<RobotWizardModel.State> redo = new java.util.ArrayDeque<>();
+    /**
+     * The state the last edit left: the "before" of the next one. Each edit is recorded in the
+     * workbench's one undo history (Edit &gt; Undo, Ctrl+Z) with {@link #applyState} to put it back.
+     */
     private RobotWizardModel.State shown;
-    private final JButton undoButton = button("Undo", "wizard-undo", this::undo);
-    private final JButton redoButton = button("Redo", "wizard-redo", this::redo);
+    /** What the edit being made is called in the Edit menu ("Robot model: j3 Z mm"). */
+    private String editLabel;
+    private final EditHistory.Editor<RobotWizardModel.State> editor = this::applyState;
     private RobotWizardModel.Result result;
     private Path savedTo;
 
@@ -90,35 +93,26 @@ public final class RobotWizard extends JPanel {
         head3.add(new JLabel("Display name"));
         head3.add(display);
         name.setName("wizard-name");
-        name.addActionListener(e -> rebuild());
+        name.addActionListener(e -> edited("name"));
         name.addFocusListener(new java.awt.event.FocusAdapter() {
-            @Override public void focusLost(java.awt.event.FocusEvent e) { rebuild(); }
+            @Override public void focusLost(java.awt.event.FocusEvent e) { edited("name"); }
         });
-        display.addActionListener(e -> rebuild());
+        display.addActionListener(e -> edited("display name"));
+        display.addFocusListener(new java.awt.event.FocusAdapter() {
+            @Override public void focusLost(java.awt.event.FocusEvent e) { edited("display name"); }
+        });
 
         jointTable.setName("wizard-joints");
         jointTable.setRowHeight(20);
         jointTable.getColumnModel().getColumn(1).setCellEditor(new DefaultCellEditor(new JComboBox<>(new String[] {"revolute", "prismatic"})));
         JPanel jointButtons = new JPanel(new WrapLayout(FlowLayout.LEFT, 4, 2));
-        jointButtons.add(button("Add joint", "wizard-add", () -> { wm.addJoint(); rebuild(); }));
+        jointButtons.add(button("Add joint", "wizard-add", this::addJoint));
         jointButtons.add(button("Remove joint", "wizard-remove", () -> {
             int r = jointTable.getSelectedRow();
-            if (r >= 0 && r < wm.jointCount()) { wm.removeJoint(r); rebuild(); }
+            if (r >= 0 && r < wm.jointCount()) removeJoint(r);
         }));
-        jointButtons.add(undoButton);
-        jointButtons.add(redoButton);
+        // Undo and redo are the window's (Edit menu, toolbar, Ctrl+Z / Ctrl+Y): one history for every edit.
         jointButtons.add(new JLabel("revolute: deg, deg/s; prismatic: mm, mm/s; base coordinates, joints at zero"));
-        // Ctrl+Z / Ctrl+Y (Ctrl+Shift+Z) undo and redo the wizard's edits while the focus is in it.
-        var im = getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT);
-        im.put(javax.swing.KeyStroke.getKeyStroke("ctrl Z"), "wizard-undo");
-        im.put(javax.swing.KeyStroke.getKeyStroke("ctrl Y"), "wizard-redo");
-        im.put(javax.swing.KeyStroke.getKeyStroke("ctrl shift Z"), "wizard-redo");
-        getActionMap().put("wizard-undo", new javax.swing.AbstractAction() {
-            @Override public void actionPerformed(java.awt.event.ActionEvent e) { undo(); }
-        });
-        getActionMap().put("wizard-redo", new javax.swing.AbstractAction() {
-            @Override public void actionPerformed(java.awt.event.ActionEvent e) { redo(); }
-        });
         JTable flangeTable = new FittingTable(flange);
         flangeTable.setName("wizard-flange");
         flangeTable.setRowHeight(20);
@@ -165,6 +159,9 @@ public final class RobotWizard extends JPanel {
     /** The panel was closed: the cell's robot is drawn again instead of the model being built. */
     void closed() { wb.model().setPreview(null); }
 
+    /** The panel is shown (again): the 3D view previews its model. */
+    void opened() { if (wb.model().preview() == null) rebuild(); }
+
     private JButton button(String text, String id, Runnable r) {
         JButton b = new JButton(text);
         b.setName(id);
@@ -172,25 +169,18 @@ public final class RobotWizard extends JPanel {
         return b;
     }
 
-    /** Undoes the wizard's last edit (a table cell, a joint added or removed, the name, a new start); false when there is none. */
-    public boolean undo() { return step(undo, redo); }
-
-    /** Redoes the last undone edit; false when there is none. */
-    public boolean redo() { return step(redo, undo); }
-
-    public boolean canUndo() { return !undo.isEmpty(); }
-
-    private boolean step(java.util.ArrayDeque<RobotWizardModel.State> from, java.util.ArrayDeque<RobotWizardModel.State> to) {
+    /**
+     * Puts the wizard back to a state of its own (Edit &gt; Undo or Redo of one of its edits);
+     * a closed wizard opens again so the user sees what was taken back.
+     */
+    private void applyState(RobotWizardModel.State s) {
         if (jointTable.isEditing()) jointTable.getCellEditor().cancelCellEditing();
-        RobotWizardModel.State s = from.poll();
-        if (s == null) return false;
-        to.push(wm.state());
+        if (owner != null && !owner.isDocked(this)) owner.openWizard();
         wm.restore(s);
         shown = s;
         name.setText(s.name());
         display.setText(s.displayName());
         rebuild();
-        return true;
     }
 
     // ---- the UI layer tests drive ---------------------------------------------------------------
@@ -214,10 +204,24 @@ public final class RobotWizard extends JPanel {
     public void setRobotName(String n, String displayName) {
         name.setText(n);
         display.setText(displayName);
+        edited("name");
+    }
+
+    public void addJoint() {
+        editLabel = "add joint " + wm.addJoint().name();
         rebuild();
     }
 
-    public void addJoint() { wm.addJoint(); rebuild(); }
+    public void removeJoint(int row) {
+        editLabel = "remove joint " + wm.joint(row).name();
+        wm.removeJoint(row);
+        rebuild();
+    }
+
+    private void edited(String what) {
+        editLabel = what;
+        rebuild();
+    }
 
     /** Starts over from a shipped robot, the current one, or a single joint. */
     public void startFrom(String what) {
@@ -230,6 +234,7 @@ public final class RobotWizard extends JPanel {
         loading = true;
         template.setSelectedItem(what);
         loading = false;
+        editLabel = "start from " + what;
         load();
     }
 
@@ -245,13 +250,10 @@ public final class RobotWizard extends JPanel {
         wm.setName(name.getText());
         wm.setDisplayName(display.getText());
         RobotWizardModel.State now = wm.state();
-        if (shown != null && !now.key().equals(shown.key())) {
-            undo.push(shown);
-            redo.clear();
-        }
+        if (shown != null && !now.key().equals(shown.key()))
+            wb.model().history().push("Robot model: " + (editLabel == null ? "edit" : editLabel), shown, now, editor);
         shown = now;
-        undoButton.setEnabled(!undo.isEmpty());
-        redoButton.setEnabled(!redo.isEmpty());
+        editLabel = null;
         result = wm.build();
         joints.fireTableDataChanged();
         flange.fireTableDataChanged();
@@ -341,6 +343,7 @@ public final class RobotWizard extends JPanel {
                 JointType t = c == 1 ? (v.toString().startsWith("p") ? JointType.PRISMATIC : JointType.REVOLUTE) : j.type();
                 wm.setJoint(r, new JointRow(c == 0 ? v.toString().trim() : j.name(), t, p, a, c == 8 ? x : j.minDeg(),
                         c == 9 ? x : j.maxDeg(), c == 10 ? x : j.speedDegPerS()));
+                editLabel = j.name() + " " + COLS[c];
             } catch (NumberFormatException e) {
                 error.setText("Not a number: '" + v + "' (" + COLS[c] + " of " + j.name() + ")");
                 return;
@@ -376,6 +379,7 @@ public final class RobotWizard extends JPanel {
             double[] o = wm.flangeOriginMm(), xa = wm.flangeX(), za = wm.flangeZ();
             (r == 0 ? o : r == 1 ? xa : za)[c - 1] = x;
             wm.setFlange(o, xa, za);
+            editLabel = "flange " + rows[r] + " " + getColumnName(c);
             rebuild();
         }
     }

@@ -140,6 +140,7 @@ public final class WorkbenchFrame extends JFrame {
         setContentPane(content);
 
         wb.model().addListener(this::modelChanged);
+        wb.model().history().addListener(() -> SwingUtilities.invokeLater(this::updateUndoActions));
         wb.addLogListener(line -> SwingUtilities.invokeLater(() -> appendLog(line)));
         wb.pathChecker().addListener(r -> SwingUtilities.invokeLater(this::pathChecked));
         Timer statusTimer = new Timer(500, e -> updateStatus());
@@ -246,14 +247,15 @@ public final class WorkbenchFrame extends JFrame {
         return calibration;
     }
 
-    /** Opens (or brings to front) the robot model wizard, docked beside the 3D view whose preview it drives. */
+    /**
+     * Opens (or brings to front) the robot model wizard, docked beside the 3D view whose preview
+     * it drives. The one wizard keeps its robot while closed, so its edits in the undo history
+     * can still be taken back (which opens it again).
+     */
     public RobotWizard openWizard() {
-        if (wizard == null || !isDocked(wizard)) {
-            RobotWizard w = new RobotWizard(this, wb);
-            wizard = w;
-            openDock("Robot model", w, w::closed);
-        }
+        if (wizard == null) wizard = new RobotWizard(this, wb);
         openDock("Robot model", wizard, wizard::closed);
+        wizard.opened();
         return wizard;
     }
 
@@ -391,8 +393,10 @@ public final class WorkbenchFrame extends JFrame {
         var h = wb.model().history();
         Action u = action("undo"), r = action("redo");
         u.putValue(Action.NAME, h.undoLabel().map(l -> "Undo " + l).orElse("Undo"));
+        u.putValue(Action.SHORT_DESCRIPTION, u.getValue(Action.NAME) + " (Ctrl+Z)");
         u.setEnabled(h.undoLabel().isPresent());
         r.putValue(Action.NAME, h.redoLabel().map(l -> "Redo " + l).orElse("Redo"));
+        r.putValue(Action.SHORT_DESCRIPTION, r.getValue(Action.NAME) + " (Ctrl+Y)");
         r.setEnabled(h.redoLabel().isPresent());
     }
 

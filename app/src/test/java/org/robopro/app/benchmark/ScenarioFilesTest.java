@@ -1,0 +1,99 @@
+package org.robopro.app.benchmark;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robopro.app.cli.CliHarness;
+import org.robopro.world.Scenario;
+
+/**
+ * Campaign files supplied from outside, each with its truth label: the benchmark reads them as a
+ * user's files and scores the diagnosis against the labels alone. A small set is written here by
+ * the world simulator (as someone outside would write theirs), plus one campaign with a label
+ * written by hand.
+ */
+class ScenarioFilesTest {
+    @TempDir Path dir;
+
+    static final List<String> SMALL = List.of("null irb2000, 50 poses", "lost motion j2, 50 poses", "outside: measured point sags with reach, 50 poses");
+
+    @Test
+    void scenariosDir_sameAnswersAsTheWorldRun_andTheLabelDecidesTheScore() throws Exception {
+        Path set = dir.resolve("held-out");
+        List<Scenario> ss = SMALL.stream().map(Scenario::named).toList();
+        assertEquals(3, ScenarioFiles.write(ss, 1, 11, set, false));
+        // A campaign labelled by hand, minimal fields, claiming lost motion on a joint other than the truth's (j2).
+        String lost = "lost-motion-j2-50-poses-s11";
+        Files.copy(set.resolve(lost + ".csv"), set.resolve("by-hand.csv"));
+        Files.writeString(set.resolve("by-hand" + ScenarioFiles.LABEL),
+                "{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": "
+                        + "[{\"family\": \"lost-motion\", \"joints\": [3]}]}}\n");
+
+        CliHarness h = new CliHarness();
+        int code = h.run("diagnose-benchmark", "--scenarios", set.toString(), "--verbose", "--out", dir.resolve("table.md").toString());
+        String table = Files.readString(dir.resolve("table.md"));
+        System.out.println(h.err() + table);
+        assertTrue(h.err().startsWith("4 campaign(s) from "), h.err());
+        for (String name : SMALL) assertTrue(table.contains("| " + name + " | 1 |"), name + " row in\n" + table);
+        assertTrue(table.contains("| by-hand | 1 | 0 | 1 |"), "the hand label's wrong joint makes the right answer a wrong name:\n" + table);
+        assertEquals(1, code, "a run scored wrong gives exit code 1");
+
+        // Each file gives what the same world trial gives when run in memory.
+        List<DiagnosisBenchmark.Case> cases = ScenarioFiles.read(set);
+        assertEquals(4, cases.size());
+        for (Scenario s : ss) {
+            DiagnosisBenchmark.Run mem = DiagnosisBenchmark.run(s, 11);
+            DiagnosisBenchmark.Run file = DiagnosisBenchmark.run(cases.stream().filter(c -> c.name().equals(s.name())).findFirst().orElseThrow());
+            assertEquals(mem.outcome(), file.outcome(), s.name());
+            assertEquals(mem.named(), file.named(), s.name());
+            assertEquals(mem.located(), file.located(), s.name());
+            assertEquals(mem.finalRatio(), file.finalRatio(), 1e-9, s.name());
+            assertEquals(11, file.seed());
+        }
+        DiagnosisBenchmark.Case byHand = cases.stream().filter(c -> c.name().equals("by-hand")).findFirst().orElseThrow();
+        assertEquals("held-out", byHand.group());
+        assertEquals(DiagnosisBenchmark.Outcome.NAMED_WRONG, DiagnosisBenchmark.run(byHand).outcome());
+    }
+
+    @Test
+    void badInput_oneLineNamingFileAndField_nothingRun() throws Exception {
+        Path set = Files.createDirectories(dir.resolve("bad"));
+        ScenarioFiles.write(List.of(Scenario.named("null irb2000, 50 poses")), 1, 3, set, false);
+        Files.writeString(set.resolve("orphan.csv"), Files.readString(set.resolve("null-irb2000-50-poses-s3.csv")));
+        CliHarness h = new CliHarness();
+        assertEquals(2, h.run("diagnose-benchmark", "--scenarios", set.toString()));
+        assertTrue(h.err().contains("orphan.csv") && h.err().contains("no truth label beside it: expected orphan.truth.json"), h.err());
+        assertEquals(1, h.err().strip().lines().count(), h.err());
+
+        String[][] labels = {
+                {"{\"robot\": \"irb2000\", \"expected\": {\"verdict\": \"null\"}}", "field 'sigma_mm'"},
+                {"{\"robot\": \"irb9999\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}}", "field 'robot'"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"maybe\"}}", "field 'expected.verdict'"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": [{\"family\": \"rust\", "
+                        + "\"joints\": [2]}]}}", "field 'expected.claims[0].family': unknown family 'rust'"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": [{\"family\": \"backlash\", "
+                        + "\"joints\": [7]}]}}", "field 'expected.claims[0].joints': joint numbers run from 1 to 6"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\"}}", "field 'expected.claims'"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02,", "orphan.truth.json:1"}};
+        for (String[] l : labels) {
+            Files.writeString(set.resolve("orphan.truth.json"), l[0]);
+            CliHarness g = new CliHarness();
+            assertEquals(2, g.run("diagnose-benchmark", "--scenarios", set.toString()), l[0]);
+            assertTrue(g.err().contains("orphan.truth.json") && g.err().contains(l[1]), l[0] + " -> " + g.err());
+            assertFalse(g.out().contains("| null"), "nothing run: " + g.out());
+        }
+        // Writing refuses to replace a file without --force, and writes nothing then.
+        CliHarness w = new CliHarness();
+        assertEquals(2, w.run("diagnose-benchmark", "--write-scenarios", set.toString(), "--scenario", "null irb2000, 50 poses", "--seeds", "1",
+                "--base-seed", "3"));
+        assertTrue(w.err().contains("null-irb2000-50-poses-s3.csv"), w.err());
+        assertEquals(0, w.run("diagnose-benchmark", "--write-scenarios", set.toString(), "--scenario", "null irb2000, 50 poses", "--seeds", "1",
+                "--base-seed", "3", "--force"), w.err());
+    }
+}
