@@ -122,8 +122,11 @@ public final class WorkbenchCommand implements Callable<Integer> {
         // A/B: window k (1 s) has shadows on when k is even; its first 0.25 s settles and is not counted.
         long[] abFrames = new long[2];
         double[] abSecs = new double[2];
+        double[] abCpu = new double[2];
         int abWindow = -1;
-        long abF = 0, abT = 0;
+        long abF = 0, abT = 0, abC = 0;
+        long pcpu0 = processCpu();
+        String variant = System.getProperty("robopro.benchmark.ab");
         boolean abCounting = false;
         while (System.nanoTime() < end) {
             double t = (System.nanoTime() - t0) / 1e9;
@@ -133,14 +136,17 @@ public final class WorkbenchCommand implements Callable<Integer> {
                     if (abCounting) {
                         abFrames[abWindow % 2] += wb.app().frameCount() - abF;
                         abSecs[abWindow % 2] += (System.nanoTime() - abT) / 1e9;
+                        abCpu[abWindow % 2] += (processCpu() - abC) / 1e6;
                     }
                     abWindow = w;
                     abCounting = false;
-                    wb.session().model().setShadows(w % 2 == 0);
+                    if (variant != null) wb.app().setVariant(w % 2 == 0);
+                    else wb.session().model().setShadows(w % 2 == 0);
                 } else if (!abCounting && t - w >= 0.25) {
                     abCounting = true;
                     abF = wb.app().frameCount();
                     abT = System.nanoTime();
+                    abC = processCpu();
                 }
             }
             double[] q = q0.clone();
@@ -160,6 +166,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
         long frames = wb.app().frameCount() - f0;
         double secs = (System.nanoTime() - t0) / 1e9;
         long[] cpu1 = threadCpu();
+        long pcpu1 = processCpu();
         spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: size %s, first frame after %.2f s, %.1f fps (%d frames in %.1f s)%s%n",
                 size, first, frames / secs, frames, secs, program.isEmpty() ? ""
                         : String.format(Locale.ROOT, "; program of %d moves, %d background path checks", program.size(),
@@ -167,9 +174,16 @@ public final class WorkbenchCommand implements Callable<Integer> {
         // CPU time per thread over the measurement: steadier than the frame rate when other work shares the machine.
         spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: CPU in %.1f s: path-check thread %.0f ms, render thread %.0f ms, Swing thread %.0f ms%n",
                 secs, (cpu1[0] - cpu0[0]) / 1e6, (cpu1[1] - cpu0[1]) / 1e6, (cpu1[2] - cpu0[2]) / 1e6);
+        spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: process CPU %.2f ms per frame%n", (pcpu1 - pcpu0) / 1e6 / Math.max(1, frames));
         if (shadowsAb && abSecs[0] > 0 && abSecs[1] > 0)
-            spec.commandLine().getOut().printf(Locale.ROOT, "shadows on: %.1f fps, off: %.1f fps (alternating 1 s windows, %.1f s measured each)%n",
-                    abFrames[0] / abSecs[0], abFrames[1] / abSecs[1], abSecs[0]);
+            spec.commandLine().getOut().printf(Locale.ROOT, "%s on: %.1f fps, off: %.1f fps (alternating 1 s windows, %.1f s measured each); "
+                            + "process CPU per frame on %.2f ms, off %.2f ms%n", variant != null ? variant : "shadows",
+                    abFrames[0] / abSecs[0], abFrames[1] / abSecs[1], abSecs[0], abCpu[0] / abFrames[0], abCpu[1] / abFrames[1]);
+    }
+
+    /** CPU time (ns) of the whole process so far. */
+    private static long processCpu() {
+        return ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
     }
 
     /** CPU time (ns) so far of the path-check, render (jME) and Swing event threads. */

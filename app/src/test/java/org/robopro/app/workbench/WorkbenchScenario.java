@@ -236,9 +236,12 @@ public final class WorkbenchScenario {
         var wb = win.session();
         var frame = win.frame();
         Path sim = out.resolve("campaign");
-        int code = new picocli.CommandLine(new org.robopro.app.cli.RoboproCommand()).execute("simulate", "--robot", "irb2000",
-                "--poses", "60", "--sigma", "0.02", "--seed", "11", "--out", sim.toString(), "--force");
-        r.setProperty("simulateExit", String.valueOf(code));
+        // The campaign of a robot drawn by the independent world simulator (60 poses, sigma 0.02 mm).
+        var irb = org.robopro.models.RobotLibrary.shipped("irb2000");
+        var worldRobot = org.robopro.world.Scenario.baseRobot(irb, new java.util.Random(11), 1e-3, Math.toRadians(0.1));
+        java.nio.file.Files.createDirectories(sim);
+        java.nio.file.Files.writeString(sim.resolve("measurements.csv"), org.robopro.world.Campaign.run(worldRobot, irb,
+                org.robopro.world.Campaign.Plan.defaults(11).withPoses(60, 0).withDirColumns(false).withConditionColumns(false)).text());
         AtomicReference<org.robopro.app.workbench.ui.CalibrationPanel> panel = new AtomicReference<>();
         AtomicReference<Boolean> ok = new AtomicReference<>();
         WorkbenchWindow.onEdt(() -> {

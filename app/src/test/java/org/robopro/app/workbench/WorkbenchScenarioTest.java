@@ -207,7 +207,6 @@ class WorkbenchScenarioTest {
         BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
         assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");
 
-        assertEquals("0", r.getProperty("simulateExit"));
         assertEquals("true", r.getProperty("calLoaded"));
         assertEquals("CancellationException", r.getProperty("calCancelled"), "Cancel stops the background calibration");
         assertEquals("true", r.getProperty("calSummarySameAsCli"), "the workbench and robopro calibrate give the same summary.json");
@@ -215,7 +214,7 @@ class WorkbenchScenarioTest {
         assertEquals("done", r.getProperty("calState"));
         assertEquals("1000", r.getProperty("calProgress"));
         double before = Double.parseDouble(r.getProperty("calNominalRmsMm")), after = Double.parseDouble(r.getProperty("calRmsMm"));
-        assertTrue(before > 1, "the simulated robot has millimetres of error: " + before);
+        assertTrue(before > 1, "the world's robot has millimetres of error: " + before);
         assertTrue(after < 0.1, "calibration reaches the noise floor: " + after);
         assertTrue(Double.parseDouble(r.getProperty("calValidateRmsMm")) < 0.1, r.getProperty("calValidateRmsMm"));
         assertTrue(r.getProperty("calRms").contains("Training RMS ") && r.getProperty("calRms").contains("Validation RMS "), r.getProperty("calRms"));

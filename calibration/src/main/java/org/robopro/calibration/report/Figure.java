@@ -42,13 +42,33 @@ public final class Figure {
 
     private static final double FONT = 11, TITLE = 13;
 
-    /** Room for the title (when there is one) and the legend row above the plot. */
-    private static Area area(double w, double h, String title, Axis.Ticks yt, Canvas c) {
+    /** Room for the title (when there is one) and the legend row above the plot, and for the y title left of the tick labels. */
+    private static Area area(double w, double h, String title, String yLabel, Axis.Ticks yt, Canvas c) {
         double labelW = 0;
         for (String l : yt.labels()) labelW = Math.max(labelW, c.textWidth(l, FONT));
-        double left = Math.max(50, 24 + labelW + 6);
-        double top = (title == null || title.isEmpty() ? 0 : 20) + 22;
-        return new Area(left, top, w - 15, h - 40);
+        double top = (title == null || title.isEmpty() ? 0 : 20) + 22, bottom = h - 40;
+        YTitle yTitle = yTitle(yLabel, bottom - top, c);
+        double titleW = yTitle.lines().size() < 2 ? 24 : 24 + yTitle.size() + 2;
+        double left = Math.max(50, titleW + labelW + 6);
+        return new Area(left, top, w - 15, bottom);
+    }
+
+    /** The rotated y title: one line, or two split at a space, at a size (at least 8) that fits the plot's height. */
+    record YTitle(List<String> lines, double size) { }
+
+    static YTitle yTitle(String label, double height, Canvas c) {
+        if (label == null || label.isEmpty()) return new YTitle(List.of(), FONT);
+        if (c.textWidth(label, FONT) <= height) return new YTitle(List.of(label), FONT);
+        int best = -1;
+        double bestW = Double.POSITIVE_INFINITY;
+        for (int i = label.indexOf(' '); i > 0; i = label.indexOf(' ', i + 1)) {
+            double wi = Math.max(c.textWidth(label.substring(0, i), FONT), c.textWidth(label.substring(i + 1), FONT));
+            if (wi < bestW) { bestW = wi; best = i; }
+        }
+        List<String> lines = best < 0 ? List.of(label) : List.of(label.substring(0, best), label.substring(best + 1));
+        double size = FONT;
+        while (size > 8 && lines.stream().mapToDouble(l -> c.textWidth(l, FONT)).max().orElse(0) * size / FONT > height) size -= 0.5;
+        return new YTitle(lines, size);
     }
 
     /** Points (or polylines) per series against x, with reference lines; {@code logY} plots log10 of positive values. */
@@ -65,9 +85,16 @@ public final class Figure {
         for (Line l : lines) if (Double.isFinite(l.y()) && (!logY || l.y() > 0)) { ymin = Math.min(ymin, l.y()); ymax = Math.max(ymax, l.y()); }
         if (!Double.isFinite(xmin)) { xmin = 0; xmax = 1; }
         if (!Double.isFinite(ymin)) { ymin = logY ? 0.1 : 0; ymax = 1; }
+        // Points (not lines) are kept off the frame: the axes reach 2 % past them.
+        if (series.stream().anyMatch(s -> !s.line())) {
+            double px = 0.02 * (xmax - xmin), py = 0.02 * (ymax - ymin);
+            xmin -= px;
+            xmax += px;
+            if (!logY) { ymin = ymin < 0 ? ymin - py : ymin; ymax += py; }
+        }
         Axis.Ticks xt = Axis.linear(xmin, xmax, Math.max(2, (int) (w / 90)));
         Axis.Ticks yt = logY ? Axis.log(ymin, ymax) : Axis.linear(Math.min(0, ymin), ymax, Math.max(2, (int) (h / 55)));
-        Area a = area(w, h, title, yt, c);
+        Area a = area(w, h, title, yLabel, yt, c);
         frame(c, w, h, a, title, xLabel, yLabel, xt, yt, null);
         for (Series s : series) {
             double[] xs = new double[s.x().length], ys = new double[s.x().length];
@@ -83,7 +110,7 @@ public final class Figure {
             if (s.line() && n > 0) c.polyline(xs, ys, n, s.color(), 1.6);
         }
         List<Key> keys = new ArrayList<>();
-        for (Series s : series) keys.add(new Key(s.name(), s.color(), false));
+        for (Series s : series) keys.add(new Key(s.name(), s.color(), s.line(), false));
         referenceLines(c, a, yt, logY, lines, keys);
         legend(c, a, title, keys);
     }
@@ -98,7 +125,7 @@ public final class Figure {
         for (Series s : series) for (double v : s.y()) if (Double.isFinite(v)) max = Math.max(max, v);
         for (Line l : lines) if (Double.isFinite(l.y())) max = Math.max(max, l.y());
         Axis.Ticks yt = Axis.linear(0, max > 0 ? max * 1.08 : 1, Math.max(2, (int) (h / 45)));
-        Area a = area(w, h, title, yt, c);
+        Area a = area(w, h, title, yLabel, yt, c);
         frame(c, w, h, a, title, "", yLabel, null, yt, categories);
         int n = Math.max(1, categories.size());
         double slot = (a.r() - a.l()) / n;
@@ -114,7 +141,7 @@ public final class Figure {
             }
         }
         List<Key> keys = new ArrayList<>();
-        for (Series s : series) keys.add(new Key(s.name(), s.color(), false));
+        for (Series s : series) keys.add(new Key(s.name(), s.color(), false, false));
         referenceLines(c, a, yt, false, lines, keys);
         legend(c, a, title, keys);
     }
@@ -138,7 +165,7 @@ public final class Figure {
             for (double n : counts[k]) top = Math.max(top, n);
         }
         Axis.Ticks yt = Axis.linear(0, top == 0 ? 1 : top, Math.max(2, (int) (h / 55)));
-        Area a = area(w, h, title, yt, c);
+        Area a = area(w, h, title, "fraction of poses", yt, c);
         frame(c, w, h, a, title, xLabel, "fraction of poses", xt, yt, null);
         double px = (a.sx(xt, bw) - a.sx(xt, 0)) / Math.max(1, samples.size());
         for (int k = 0; k < samples.size(); k++)
@@ -147,18 +174,19 @@ public final class Figure {
                 c.rect(x0, y0, px * 0.95, a.b() - y0, samples.get(k).color(), 0.8);
             }
         List<Key> keys = new ArrayList<>();
-        for (Series s : samples) keys.add(new Key(s.name(), s.color(), false));
+        for (Series s : samples) keys.add(new Key(s.name(), s.color(), false, false));
         legend(c, a, title, keys);
     }
 
-    private record Key(String name, String color, boolean line) { }
+    /** A legend entry: a filled square (points, bars), a solid line (a line series) or a dashed one (a reference line). */
+    private record Key(String name, String color, boolean line, boolean dashed) { }
 
     private static void referenceLines(Canvas c, Area a, Axis.Ticks yt, boolean logY, List<Line> lines, List<Key> keys) {
         for (Line l : lines) {
             if (!Double.isFinite(l.y()) || (logY && !(l.y() > 0))) continue;
             double py = a.sy(yt, l.y());
             c.line(a.l(), py, a.r(), py, l.color(), 1.4, true);
-            keys.add(new Key(l.name(), l.color(), true));
+            keys.add(new Key(l.name(), l.color(), true, true));
         }
     }
 
@@ -194,7 +222,9 @@ public final class Figure {
         c.line(a.l(), a.b(), a.r(), a.b(), "#333333", 1, false);
         c.line(a.l(), a.t(), a.l(), a.b(), "#333333", 1, false);
         if (xLabel != null && !xLabel.isEmpty()) c.text((a.l() + a.r()) / 2, h - 6, xLabel, 0, FONT, false, false);
-        if (yLabel != null && !yLabel.isEmpty()) c.text(12, (a.t() + a.b()) / 2, yLabel, 0, FONT, false, true);
+        YTitle yt2 = yTitle(yLabel, a.b() - a.t(), c);
+        for (int i = 0; i < yt2.lines().size(); i++)
+            c.text(12 + i * (yt2.size() + 2), (a.t() + a.b()) / 2, yt2.lines().get(i), 0, yt2.size(), false, true);
     }
 
     /** The legend as one row between the title and the plot area. */
@@ -202,7 +232,7 @@ public final class Figure {
         double x = a.l();
         double y = a.t() - 10;
         for (Key k : keys) {
-            if (k.line()) c.line(x, y - 3, x + 14, y - 3, k.color(), 1.4, true);
+            if (k.line()) c.line(x, y - 3, x + 14, y - 3, k.color(), k.dashed() ? 1.4 : 1.8, k.dashed());
             else c.rect(x + 2, y - 8, 10, 10, k.color(), 1);
             c.text(x + 18, y + 1, k.name(), -1, FONT, false, false);
             x += 30 + c.textWidth(k.name(), FONT);

@@ -108,6 +108,43 @@ class FigureTest {
         assertFalse(svg.contains("NaN"));
     }
 
+    @Test
+    void longYTitle_twoLinesWithinThePlotHeight_tickLabelsClearOfIt() {
+        Recorder c = new Recorder();
+        String yLabel = "residual along the structure's displacement (mm)";
+        double[] x = {-1, -1, 1, 1}, y = {0.1, 0.55, 0.05, 0.76};
+        Figure.plot(c, 720, 270, "Evidence", "approach direction", yLabel, List.of(new Svg.Series("residual", x, y, "#1f77b4", false)),
+                false, List.of());
+        double[] a = c.area();
+        double left = a[0], top = a[1], bottom = a[2];
+        List<Recorder.Text> title = c.texts.stream().filter(Recorder.Text::vertical).toList();
+        assertEquals(2, title.size(), "split into two lines");
+        assertEquals(yLabel, title.get(0).s() + " " + title.get(1).s());
+        double rightmost = 0;
+        for (Recorder.Text t : title) {
+            assertTrue(c.textWidth(t.s(), t.size()) <= bottom - top + 1e-9, "y title line longer than the plot: " + t.s());
+            assertTrue(t.x() - t.size() >= 0, "y title line off the figure");
+            rightmost = Math.max(rightmost, t.x());
+        }
+        for (Recorder.Text t : c.texts)
+            if (!t.vertical() && t.anchor() == 1) assertTrue(t.x() - c.textWidth(t.s(), t.size()) > rightmost + 2, "tick label over the y title: " + t.s());
+        // Points at the ends of the data range stay off the frame.
+        for (double[] p : c.points) assertTrue(p[0] > left + 2 && p[0] < 720 - 15 - 2, "point on the frame at x " + p[0]);
+    }
+
+    @Test
+    void legend_lineSeriesSolidReferenceLinesDashed() {
+        Recorder c = new Recorder();
+        double[] x = {1, 2, 3}, y = {3, 2, 1};
+        Figure.plot(c, 720, 270, "", "x", "y", List.of(new Svg.Series("fit", x, y, "#d62728", true)), false,
+                List.of(new Svg.Line("noise floor", 0.5, "#2e7d32")));
+        double top = c.area()[1];
+        List<Recorder.Seg> keys = c.lines.stream().filter(l -> l.y1() < top && l.y1() == l.y2() && l.x2() - l.x1() < 20).toList();
+        assertEquals(2, keys.size(), "two line keys in the legend row");
+        assertTrue(keys.stream().anyMatch(k -> k.color().equals("#d62728") && !k.dashed()), "a line series is keyed by a solid line");
+        assertTrue(keys.stream().anyMatch(k -> k.color().equals("#2e7d32") && k.dashed()), "a reference line by a dashed one");
+    }
+
     private static double min(double[] v) { double m = Double.POSITIVE_INFINITY; for (double x : v) m = Math.min(m, x); return m; }
     private static double max(double[] v) { double m = 0; for (double x : v) m = Math.max(m, x); return m; }
 }

@@ -51,6 +51,9 @@ public final class Shapes {
         return q;
     }
 
+    /** Share of a lit material's colour that the ambient light sees. */
+    static final float AMBIENT = 0.55f;
+
     /** Shaded material of an 0xRRGGBB colour, shared. */
     public Material lit(int rgb) {
         return materials.computeIfAbsent("lit" + rgb, k -> {
@@ -58,7 +61,7 @@ public final class Shapes {
             ColorRGBA c = color(rgb);
             m.setBoolean("UseMaterialColors", true);
             m.setColor("Diffuse", c);
-            m.setColor("Ambient", c.mult(0.55f));
+            m.setColor("Ambient", c.mult(AMBIENT));
             m.setColor("Specular", new ColorRGBA(0.35f, 0.35f, 0.35f, 1));
             m.setFloat("Shininess", 24f);
             return m;

@@ -10,8 +10,8 @@ import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.models.InputException;
 
 /**
- * Reads STL meshes (binary and ASCII) into a jME mesh, scaled to metres, with normals smoothed
- * across edges flatter than 30° (crisp where the CAD model has a real edge).
+ * Reads STL meshes (binary and ASCII) into an indexed jME mesh, scaled to metres, with normals
+ * smoothed across edges flatter than 30° (crisp where the CAD model has a real edge).
  * jME's plugins load OBJ and glTF but not STL, which is what most robot CAD exports are.
  */
 public final class StlReader {
@@ -32,13 +32,48 @@ public final class StlReader {
         float[] tri = ShippedMeshes.stlTriangles(b, file);
         float[] pos = new float[tri.length];
         for (int k = 0; k < pos.length; k++) pos[k] = tri[k] * scale;
-        Mesh m = new Mesh();
-        m.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(pos));
         // Smoothing indexes every corner; past SMOOTH_MAX triangles the facets' own normals are used.
-        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(normals(pos, pos.length / 9 <= SMOOTH_MAX ? CREASE_COS : 2f)));
+        float[] nor = normals(pos, pos.length / 9 <= SMOOTH_MAX ? CREASE_COS : 2f);
+        return indexed(pos, nor);
+    }
+
+    /**
+     * An indexed mesh of a triangle soup's corners: corners with the same position and normal
+     * become one vertex, so the vertex stage (a software rasteriser's main cost per triangle)
+     * runs once per vertex instead of once per corner.
+     */
+    static Mesh indexed(float[] pos, float[] nor) {
+        int nc = pos.length / 3;
+        java.util.Map<Corner, Integer> ids = new java.util.HashMap<>(nc);
+        int[] idx = new int[nc];
+        float[] vp = new float[pos.length];
+        float[] vn = new float[pos.length];
+        int nv = 0;
+        for (int c = 0; c < nc; c++) {
+            Corner k = new Corner(pos[3 * c], pos[3 * c + 1], pos[3 * c + 2], nor[3 * c], nor[3 * c + 1], nor[3 * c + 2]);
+            Integer id = ids.putIfAbsent(k, nv);
+            if (id == null) {
+                System.arraycopy(pos, 3 * c, vp, 3 * nv, 3);
+                System.arraycopy(nor, 3 * c, vn, 3 * nv, 3);
+                id = nv++;
+            }
+            idx[c] = id;
+        }
+        Mesh m = new Mesh();
+        m.setBuffer(VertexBuffer.Type.Position, 3, BufferUtils.createFloatBuffer(java.util.Arrays.copyOf(vp, 3 * nv)));
+        m.setBuffer(VertexBuffer.Type.Normal, 3, BufferUtils.createFloatBuffer(java.util.Arrays.copyOf(vn, 3 * nv)));
+        if (nv <= 65535) {
+            short[] s = new short[nc];
+            for (int c = 0; c < nc; c++) s[c] = (short) idx[c];
+            m.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createShortBuffer(s));
+        } else {
+            m.setBuffer(VertexBuffer.Type.Index, 3, BufferUtils.createIntBuffer(idx));
+        }
         m.updateBound();
         return m;
     }
+
+    private record Corner(float x, float y, float z, float nx, float ny, float nz) { }
 
     /** Largest mesh (triangles) whose normals are smoothed (the corner index costs memory per corner). */
     static final int SMOOTH_MAX = 300_000;

@@ -54,6 +54,7 @@ public final class WorkbenchApp extends SimpleApplication {
     private volatile double shadowFallbackFps;
     private volatile java.util.function.Consumer<String> shadowFallbackLog;
     private int slowWindows;
+    private static final boolean STATS = Boolean.getBoolean("robopro.render.stats");
 
     /** A scene over {@code model} that shows the results of {@code pathChecker} (owned by the caller). */
     public WorkbenchApp(WorkbenchModel model, PathChecker pathChecker, Function<String, Path> meshResolver) {
@@ -89,6 +90,10 @@ public final class WorkbenchApp extends SimpleApplication {
         // Both view ports: the panel resizes their cameras, and the renderer reads the frame back
         // with the last-used view port's size (a stale GUI camera garbles the picture).
         panel.attachTo(true, viewPort, guiViewPort);
+        // All lights in one pass (jME's default draws each lit object once per light, blending;
+        // a software rasteriser pays for every pass).
+        renderManager.setPreferredLightMode(com.jme3.material.TechniqueDef.LightMode.SinglePass);
+        renderManager.setSinglePassLightBatchSize(3);
         setPauseOnLostFocus(false);
         // robopro's scene is z-up; jME's world is y-up.
         world.rotate(-FastMath.HALF_PI, 0, 0);
@@ -128,6 +133,10 @@ public final class WorkbenchApp extends SimpleApplication {
 
     @Override
     public void simpleUpdate(float tpf) {
+        if (VARIANT.equals("singlepass")) {
+            renderManager.setPreferredLightMode(variant ? com.jme3.material.TechniqueDef.LightMode.SinglePass
+                    : com.jme3.material.TechniqueDef.LightMode.MultiPass);
+        }
         worldTriad.setCullHint(model.frameShown(WorkbenchModel.FrameKind.WORLD) ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
         if (cam.getWidth() != lastW || cam.getHeight() != lastH) {
             lastW = cam.getWidth();
@@ -148,6 +157,16 @@ public final class WorkbenchApp extends SimpleApplication {
             return;
         }
         windowFrames++;
+        if (STATS && n == 40) {
+            var st = rm.getRenderer().getStatistics();
+            String[] labels = st.getLabels();
+            int[] data = new int[labels.length];
+            st.getData(data);
+            StringBuilder b = new StringBuilder("render stats:");
+            for (int i = 0; i < labels.length; i++) b.append(' ').append(labels[i]).append('=').append(data[i]);
+            System.out.println(b);
+        }
+        if (STATS && n == 39) rm.getRenderer().getStatistics().setEnabled(true);
         // The first half second reports as it goes (the status bar shows a rate from the first view on), then per window.
         if (fps == 0 || now - windowStartNanos > 500_000_000L) fps = windowFrames * 1e9 / Math.max(1, now - windowStartNanos);
         if (now - windowStartNanos > 500_000_000L) {
@@ -208,6 +227,12 @@ public final class WorkbenchApp extends SimpleApplication {
             Thread.sleep(5);
         }
     }
+
+    private volatile boolean variant;
+    /** Benchmarks only: switches the render experiment named by robopro.benchmark.ab on or off. */
+    public void setVariant(boolean on) { variant = on; }
+    public boolean variant() { return variant; }
+    static final String VARIANT = System.getProperty("robopro.benchmark.ab", "");
 
     public long frameCount() { return frames.get(); }
     public double fps() { return fps; }
