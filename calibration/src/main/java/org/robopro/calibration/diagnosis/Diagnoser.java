@@ -1347,12 +1347,7 @@ public final class Diagnoser {
                 int df2 = m - n;
                 double fstat = (drss / mine.size()) / (rss / Math.max(1, df2));
                 double p = Stats.fUpperTail(fstat, mine.size(), df2);
-                Candidate c = new Candidate();
-                c.effect = selected.get(k);
-                c.estimate = Arrays.copyOfRange(f.full, a, b);
-                c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
-                c.absorbedMask = fixedMask(f, a, b);
-                plausibility(c);
+                Candidate c = judged(f, selected, k, sig);
                 double score = c.plausible ? p : 2;
                 if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; pOut[0] = p; }
             }
@@ -1361,7 +1356,11 @@ public final class Diagnoser {
 
         /** Whether selected effect {@code k}'s estimate in fit {@code f} is physically plausible ({@link #plausibility}). */
         boolean plausibleIn(Fit f, List<Effect> selected, int k) {
-            double[] sig = effectSigmas(f);
+            return judged(f, selected, k, effectSigmas(f)).plausible;
+        }
+
+        /** Selected effect {@code k}'s estimate and σ in fit {@code f} ({@code sig} from {@link #effectSigmas}), judged by {@link #plausibility}. */
+        static Candidate judged(Fit f, List<Effect> selected, int k, double[] sig) {
             int eff0 = f.problem.effectOffset(0), a = f.problem.effectOffset(k), b = a + selected.get(k).size();
             Candidate c = new Candidate();
             c.effect = selected.get(k);
@@ -1369,7 +1368,7 @@ public final class Diagnoser {
             c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
             c.absorbedMask = fixedMask(f, a, b);
             plausibility(c);
-            return c.plausible;
+            return c;
         }
 
         /** Which of the parameters a..b of a fit are held fixed (columns left to the geometry). */
