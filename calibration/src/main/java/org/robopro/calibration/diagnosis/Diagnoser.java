@@ -1326,7 +1326,6 @@ public final class Diagnoser {
             int n = f.nf, m = f.m;
             int[] free = f.problem.freeIndices();
             double[] sig = effectSigmas(f);
-            int eff0 = f.problem.effectOffset(0);
             double rss = 0;
             for (double v : f.r) rss += v * v;
             int worst = -1;
