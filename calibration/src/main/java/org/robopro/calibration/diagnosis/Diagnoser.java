@@ -456,20 +456,36 @@ public final class Diagnoser {
         Set<String> refusedAliases = new HashSet<>();
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
-            if (e.kind() == Effect.Kind.SMOOTH) continue;
             Tester at = w.tester(fit);
             double own = at.pressFull();
             Effect best = null;
             double bestPress = own;
+            // A selected smooth fallback holds every simpler shape of its joint's angle: a family of that angle that
+            // predicts left-out poses as well (within the margin) takes its place, to be judged against the fallback
+            // in the claim check (which also asks whether the fallback finds structure the family leaves).
+            boolean smooth = e.kind() == Effect.Kind.SMOOTH;
             for (Effect a : aliases(e, family, selected)) {
                 if (refusedAliases.contains(a.label())) continue;
+                if (smooth && (a.isFallback() || !checkedAgainstFallbacks(a) || a.target() != Effect.Target.DRIVE)) continue;
                 double pa = at.pressReplacing(k, a, w.conditions);
-                if (pa < bestPress * (1 - ALIAS_MARGIN)) { bestPress = pa; best = a; }
+                if (smooth ? pa <= bestPress * (1 + ALIAS_MARGIN) && (best == null || pa < bestPress)
+                        : pa < bestPress * (1 - ALIAS_MARGIN)) { bestPress = pa; best = a; }
             }
             if (best == null) continue;
             LOG.debug("alias: {} replaced by {} (PRESS {} -> {})", e.label(), best.label(), own, bestPress);
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, false);
-            if (selected.contains(best))
+            if (smooth && selected.contains(best)) {
+                // The linearised estimate must hold once the family is re-identified with the rest; else the fallback stays.
+                double refitted = w.tester(fit).pressFull();
+                if (refitted > own * (1 + ALIAS_MARGIN)) {
+                    LOG.debug("alias: {} back in place of {} (PRESS refitted {} against {})", e.label(), best.label(), refitted, own);
+                    refusedAliases.add(best.label());
+                    fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(best), e, false);
+                } else
+                    aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, the physical form of the same joint "
+                            + "angle's error, which predicts left-out poses as well (leave-one-pose-out error %.1f against %.1f)",
+                            e.label(), best.label(), refitted, own));
+            } else if (selected.contains(best))
                 aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
                         + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
             else {
@@ -745,7 +761,7 @@ public final class Diagnoser {
                     why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
                     best = null;
-                } else if (best != null && !(pressOwn < bestPress))
+                } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
                             bestPress, pressOwn);
@@ -857,6 +873,17 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>(es);
         out.remove(k);
         return out;
+    }
+
+    /**
+     * Whether the rival that predicts left-out poses as well is one of the family's own fallbacks
+     * (a smooth curve of the same joint angle, which holds the family's simpler shape) and within
+     * {@link #ALIAS_MARGIN} of it: then the two cannot be told apart by the held-out error, and the
+     * simpler physical form is kept only if the fallback finds no significant structure it leaves
+     * (the claim check's next test).
+     */
+    private static boolean nestedTie(Effect rival, List<Effect> own, double pressOwn, double pressRival) {
+        return own.stream().anyMatch(f -> f.label().equals(rival.label())) && pressOwn <= pressRival * (1 + ALIAS_MARGIN);
     }
 
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
