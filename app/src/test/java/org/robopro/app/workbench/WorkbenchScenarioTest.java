@@ -201,13 +201,13 @@ class WorkbenchScenarioTest {
         assertTrue(r.getProperty("moveCRunState").startsWith("IDLE"), r.getProperty("moveCRunState"));
         assertEquals(0, Double.parseDouble(r.getProperty("moveCGhostToP30Mm")), 0.05, "MoveC ends at its ToPoint on the controller");
         assertEquals("main,twice", r.getProperty("uploadOfferedProcs"));
-        assertEquals("MOVEJ p10;MOVEC p30;MOVEJ p10;MOVEC p30", r.getProperty("uploadTwiceProgram"), "PROC twice calls main twice");
-        assertEquals("4", r.getProperty("uploadCancelled"), "choosing no PROC leaves the program as it was");
+        assertEquals("RAPID main;|RAPID main;", r.getProperty("uploadTwiceProgram"), "PROC twice calls main twice: two calls kept as written");
+        assertEquals("MoveJ p10;MoveC p30;MoveJ p10;MoveC p30", r.getProperty("uploadTwiceMotions"), "the calls' motions are run, checked and drawn");
+        assertEquals("2", r.getProperty("uploadCancelled"), "choosing no PROC leaves the program as it was");
         assertEquals("false", r.getProperty("ghostAfterDisconnect"));
         BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
         assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");
 
-        assertEquals("0", r.getProperty("simulateExit"));
         assertEquals("true", r.getProperty("calLoaded"));
         assertEquals("CancellationException", r.getProperty("calCancelled"), "Cancel stops the background calibration");
         assertEquals("true", r.getProperty("calSummarySameAsCli"), "the workbench and robopro calibrate give the same summary.json");
@@ -215,7 +215,7 @@ class WorkbenchScenarioTest {
         assertEquals("done", r.getProperty("calState"));
         assertEquals("1000", r.getProperty("calProgress"));
         double before = Double.parseDouble(r.getProperty("calNominalRmsMm")), after = Double.parseDouble(r.getProperty("calRmsMm"));
-        assertTrue(before > 1, "the simulated robot has millimetres of error: " + before);
+        assertTrue(before > 1, "the world's robot has millimetres of error: " + before);
         assertTrue(after < 0.1, "calibration reaches the noise floor: " + after);
         assertTrue(Double.parseDouble(r.getProperty("calValidateRmsMm")) < 0.1, r.getProperty("calValidateRmsMm"));
         assertTrue(r.getProperty("calRms").contains("Training RMS ") && r.getProperty("calRms").contains("Validation RMS "), r.getProperty("calRms"));

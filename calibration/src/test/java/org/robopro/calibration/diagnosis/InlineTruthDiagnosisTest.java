@@ -12,14 +12,15 @@ import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.calibration.simulation.PoseSampler;
 import org.robopro.kinematics.KinematicModel;
-import org.robopro.kinematics.Pose;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
 /**
  * Diagnoses campaigns whose truth is written here, by hand, without the diagnosis' own effect
- * classes: the joint angles are perturbed with the physical formula before forward kinematics.
+ * classes: the joint angles are perturbed with the physical formula before forward kinematics,
+ * which is the independent world simulator's (its own product of exponentials, on a robot drawn
+ * with geometric errors, measured in its base frame).
  * Backlash: a driven output lags its motor-side encoder, q_out = q − (b/2)·dir with dir the sign
  * of the joint's last move in the measuring sequence, before the coupling θ = C q_out. The files carry no dir columns, so the
  * diagnosis must infer the directions from the measuring order (time_s).
@@ -27,7 +28,11 @@ import org.robopro.models.Vec3;
 class InlineTruthDiagnosisTest {
     private final RobotDescription robot = RobotLibrary.shipped("irb2000");
     private final KinematicModel model = KinematicModel.build(robot);
-    private final Pose tool = Pose.translation(0.03, -0.02, 0.11);
+    /** The real robot: the file's robot with geometric errors (world defaults), the measured point about (30, -20, 110) mm on the flange. */
+    private org.robopro.world.WorldRobot world(long seed) {
+        return org.robopro.world.Scenario.baseRobot(robot, new Random(seed * 7 + 1), 1e-3, Math.toRadians(0.1), new double[] {0.03, -0.02, 0.11})
+                .withInstrument(org.robopro.world.Rigid.IDENTITY);
+    }
 
     /**
      * One measuring sequence of {@code n} poses with lost motion {@code b} (rad) on joint
@@ -42,6 +47,9 @@ class InlineTruthDiagnosisTest {
     private MeasurementSet[] campaign(int n, int joint, double b, double sigma, int every, long seed,
                                       java.util.function.ToDoubleFunction<double[]> drive1) {
         Random rng = new Random(seed);
+        org.robopro.world.WorldRobot real = world(seed);
+        int[] still = new int[robot.dof()];
+        java.util.Arrays.fill(still, 1);
         List<double[]> qs = new PoseSampler(model).sample(n, rng);
         List<Measurement> train = new ArrayList<>(), val = new ArrayList<>();
         double[] prev = null;
@@ -52,7 +60,8 @@ class InlineTruthDiagnosisTest {
             double[] out = q.clone();
             out[joint] -= 0.5 * b * lastDir;                 // the drive's output lags its encoder (before the coupling)
             out[0] += drive1.applyAsDouble(q);
-            Vec3 p = model.flange(out).times(tool).position();
+            double[] t = real.target(out, still, Double.NaN, Double.NaN, 0).p(); // the world robot carries no drive error of its own
+            Vec3 p = new Vec3(t[0], t[1], t[2]);
             p = new Vec3(p.x() + sigma * rng.nextGaussian(), p.y() + sigma * rng.nextGaussian(), p.z() + sigma * rng.nextGaussian());
             boolean v = every > 0 && i % every == every - 1;
             Measurement m = new Measurement("p" + i, q, p, null, null, 20.0 * i, Double.NaN, Double.NaN,
