@@ -10,8 +10,9 @@ import org.robopro.models.RobotDescription;
 
 /**
  * The same campaign read by other instruments: several reflectors on the flange (a tracker
- * measuring three SMRs at every pose), or one length per pose from a fixed anchor (a draw-wire
- * sensor, a tracker in distance mode). Every pose of a {@link Campaign.Result} is measured again
+ * measuring three SMRs at every pose), one length per pose from a fixed anchor (a draw-wire
+ * sensor, a tracker in distance mode), or lengths between the point's places at two poses (a
+ * length artefact or ballbar probed by the robot). Every pose of a {@link Campaign.Result} is measured again
  * on the same {@link WorldRobot}, with the same joint values, approach directions, times,
  * temperatures and payloads, so that every concealed effect acts on the new readings as it did on
  * the campaign's. Written in the public measurement format (shared/formats/measurements.md:
@@ -75,6 +76,48 @@ public final class Readings {
             double d = Rigid.norm(Rigid.minus(p, anchorBaseM)) + c.plan().sigmaM() * noise.nextGaussian();
             sb.append(r.id());
             row(sb, nominal, c, r, Campaign.fmt(d * 1e3, 5));
+        }
+        return sb.toString();
+    }
+
+    /**
+     * The campaign as lengths between the measured target's places at consecutive poses (a length
+     * artefact or a ballbar probed by the robot, or a tracker's distance between two stops): one
+     * row per pose after the first, with the pose before it in {@code from_q1..} (and its
+     * directions in {@code from_dir1..}), each length with noise σ = the plan's. The instrument
+     * plays no part (a length does not depend on where it is seen from); the row's time and
+     * temperature are the second pose's, while each end is measured at its own.
+     */
+    public static String pairs(WorldRobot world, RobotDescription nominal, Campaign.Result c, long seed) {
+        check(c);
+        Random noise = new Random(seed * 2_147_483_647L + 23);
+        WorldRobot inBase = inBase(world);
+        List<Campaign.Row> rows = c.rows();
+        double[][] last = lastMoves(rows);
+        StringBuilder sb = header(nominal, c, "");
+        List<String> head = new ArrayList<>();
+        for (int j = 1; j <= nominal.dof(); j++) head.add("from_q" + j);
+        if (c.plan().dirColumns()) for (int j = 1; j <= nominal.dof(); j++) head.add("from_dir" + j);
+        sb.append(columns(nominal, c, false, "distance").replace("\n", "," + String.join(",", head) + "\n"));
+        double[] prev = null;
+        for (int i = 0; i < rows.size(); i++) {
+            Campaign.Row r = rows.get(i);
+            double[] p = inBase.target(r.q(), r.dir(), last[i], c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
+            if (prev != null) {
+                Campaign.Row a = rows.get(i - 1);
+                double d = Rigid.norm(Rigid.minus(p, prev)) + c.plan().sigmaM() * noise.nextGaussian();
+                sb.append(r.id());
+                StringBuilder tail = new StringBuilder();
+                for (int j = 0; j < nominal.dof(); j++) {
+                    boolean prismatic = nominal.joints().get(j).type() == JointType.PRISMATIC;
+                    tail.append(',').append(Campaign.fmt(prismatic ? a.q()[j] * 1e3 : Math.toDegrees(a.q()[j]), 7));
+                }
+                if (c.plan().dirColumns()) for (int dd : a.dir()) tail.append(',').append(dd);
+                StringBuilder line = new StringBuilder();
+                row(line, nominal, c, r, Campaign.fmt(d * 1e3, 5));
+                sb.append(line, 0, line.length() - 1).append(tail).append('\n');
+            }
+            prev = p;
         }
         return sb.toString();
     }

@@ -60,6 +60,26 @@ class ReadingsTest {
     }
 
     @Test
+    void pairs_areTheLengthsBetweenTheTruePointsOfConsecutivePoses_withTheFirstPoseInFromColumns() {
+        Scenario.Trial t = noiseFree("lost motion j2, directions recorded");
+        String text = Readings.pairs(t.world(), IRB2000, t.campaign(), 1);
+        String header = text.lines().filter(l -> !l.startsWith("#")).findFirst().orElseThrow();
+        assertTrue(header.startsWith("pose,q1,q2,q3,q4,q5,q6,distance,dir1") && header.endsWith("from_q6,from_dir1,from_dir2,from_dir3,from_dir4,from_dir5,from_dir6"), header);
+        List<String[]> rows = dataRows(text);
+        List<Campaign.Row> truth = t.campaign().rows();
+        assertEquals(truth.size() - 1, rows.size());
+        for (int i = 1; i < truth.size(); i++) {
+            String[] r = rows.get(i - 1);
+            assertEquals(truth.get(i).id(), r[0]);
+            // a length is the same seen from any frame: the campaign's instrument-frame truth
+            double len = Rigid.norm(Rigid.minus(truth.get(i).truePoint(), truth.get(i - 1).truePoint()));
+            assertEquals(len * 1e3, Double.parseDouble(r[7]), 1e-4);
+            int from = r.length - 12;
+            for (int j = 0; j < 6; j++) assertEquals(Math.toDegrees(truth.get(i - 1).q()[j]), Double.parseDouble(r[from + j]), 1e-6);
+        }
+    }
+
+    @Test
     void aJointByJointCampaign_isRefused() {
         Scenario.Trial t = Scenario.named("null irb2000").trial(4, p -> p.withPoses(20, 0).withMovedJoints(2));
         assertThrows(IllegalArgumentException.class, () -> Readings.points(t.world(), IRB2000, t.campaign(), new double[][] {{0, 0, 0.1}}, 1));

@@ -95,7 +95,7 @@ public final class CalibrateCommand implements Callable<Integer> {
         oc.write(out.dir(), out.force());
         CalibrationResult r = oc.result();
         var w = spec.commandLine().getOut();
-        String kind = r.sixD() ? "6-D" : r.distance() ? "distances" : r.pointNames().isEmpty() ? "positions"
+        String kind = r.sixD() ? "6-D" : r.pairs() ? "distances between pairs of poses" : r.distance() ? "distances" : r.pointNames().isEmpty() ? "positions"
                 : r.pointNames().size() + " points per pose, errors per point";
         w.printf(Locale.ROOT, "calibrated %s from %d poses (%s): RMS %.4f mm -> %.4f mm (train)%n", desc.name(),
                 CalibrationResult.poses(r.train()), kind, Units.mToMm(r.nominalTrainRmsM()), Units.mToMm(r.trainRmsM()));

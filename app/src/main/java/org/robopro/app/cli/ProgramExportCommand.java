@@ -37,15 +37,17 @@ public final class ProgramExportCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         String text = TextFiles.readUtf8(project);
         RapidModule m;
+        RapidExport e;
         if (ProjectStore.isProgramFile(text, project.toString())) {
             m = ProgramProject.parse(text, project.toString());
+            e = RapidWriter.export(m);
         } else {
             ProjectData data = ProjectStore.parse(text, project.toString(), project.toAbsolutePath().getParent());
             WorkbenchModel model = new WorkbenchModel(data.robotRef(), data.robot());
             model.load(data);
             m = ProgramModule.toRapid(model, WorkbenchSession.moduleName(out.file()));
+            e = ProgramModule.write(model, m);
         }
-        RapidExport e = RapidWriter.export(m);
         AtomicFiles.writeString(out.file(), e.text(), out.force());
         for (RapidExport.Rename r : e.renames()) spec.commandLine().getOut().println("renamed " + r);
         spec.commandLine().getOut().printf("wrote %s: module %s, %d declarations, %d procedures%n", out.file(), m.name(),

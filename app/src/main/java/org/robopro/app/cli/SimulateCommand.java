@@ -61,6 +61,11 @@ public final class SimulateCommand implements Callable<Integer> {
                     + "as a draw-wire sensor would; the anchor is written to truth.json only")
     String distanceTo;
 
+    @Option(names = "--distance-between-poses",
+            description = "measure distances instead of positions: the length between the point's places at each pose and the "
+                    + "pose before it (a length artefact or ballbar probed by the robot); written with the first pose in from_q1..")
+    boolean betweenPoses;
+
     @Option(names = "--six-d", description = "also measure the tool orientation")
     boolean sixD;
 
@@ -107,6 +112,11 @@ public final class SimulateCommand implements Callable<Integer> {
             double[] a = CliSupport.numbers("--distance-to", distanceTo, 3);
             c = CampaignSimulator.asDistances(c, new Vec3(Units.mmToM(a[0]), Units.mmToM(a[1]), Units.mmToM(a[2])));
         }
+        if (betweenPoses) {
+            if (sixD || !more.isEmpty() || distanceTo != null)
+                throw new IllegalArgumentException("--distance-between-poses measures one point, without --six-d or --distance-to");
+            c = CampaignSimulator.asPairs(c);
+        }
         List<JointType> types = new ArrayList<>();
         desc.joints().forEach(j -> types.add(j.type()));
         RobotDescription trueDesc = c.truth().model().toDescription()
@@ -123,7 +133,8 @@ public final class SimulateCommand implements Callable<Integer> {
         spec.commandLine().getOut().printf(Locale.ROOT,
                 "simulated %s: %d poses%s, sigma %.4f mm, nominal flange error %.3f mm RMS, %s%n  wrote %s%n",
                 desc.name(), poses, validatePoses > 0 ? " + " + validatePoses + " validation" : "", sigmaMm,
-                Units.mToMm(c.nominalErrorRmsM()), c.anchor() != null ? "distances to an anchor" : "frame " + c.measurements().frame(),
+                Units.mToMm(c.nominalErrorRmsM()), c.anchor() != null ? "distances to an anchor"
+                        : c.measurements().isPairs() ? "distances between consecutive poses" : "frame " + c.measurements().frame(),
                 out.dir().toAbsolutePath());
         if (ec != null)
             for (int i = 0; i < specs.size(); i++) {

@@ -96,10 +96,21 @@ public final class ProjectStore {
         ArrayNode programs = root.putArray("programs");
         ObjectNode main = programs.addObject();
         main.put("name", "main");
+        // An imported program keeps its module: the RAPID text, and per line the statement of the
+        // entry procedure it stands for (by index).
+        List<org.robopro.programs.rapid.RapidAst.Stmt> entryBody = List.of();
+        if (p.source() != null) {
+            main.put("name", p.source().entry());
+            main.put("rapid_module", org.robopro.programs.rapid.RapidAstWriter.write(p.source().module().tree()));
+            entryBody = entryBody(p.source());
+        }
         ArrayNode ins = main.putArray("instructions");
         for (Instruction i : p.program()) {
             ObjectNode n = ins.addObject();
             n.put("type", i.type().rapid());
+            int at = indexOf(entryBody, i.statement());
+            if (at >= 0) n.put("statement", at);
+            if (!i.type().motion()) continue;
             n.put("target", i.target());
             if (i.via() != null) n.put("via", i.via());
             n.put("speed_mm_s", i.speedMmPerS());
@@ -196,7 +207,9 @@ public final class ProjectStore {
      * (ProgramModule.fromRapid). Saving writes it as a project.
      */
     private static ProjectData migrated(String text, String fileName, JsonNode root) {
-        org.robopro.programs.RapidModule module = ProgramProject.parse(text, fileName);
+        // The module as a RAPID file holds it (the file's precision), so an export writes it as read.
+        org.robopro.programs.RapidModule module = org.robopro.programs.RapidParser.parse(
+                org.robopro.programs.RapidWriter.export(ProgramProject.parse(text, fileName)).text(), fileName);
         String robotName = root.path("robot").asText("irb2000");
         ProjectData cell = DefaultCell.irb2000Welding();
         if (!robotName.equalsIgnoreCase(cell.robotRef())) {
@@ -465,10 +478,37 @@ public final class ProjectStore {
                         new ConfData((int) c[0], (int) c[1], (int) c[2], (int) c[3]), wobj));
             }
             List<Instruction> program = new ArrayList<>();
+            org.robopro.app.workbench.model.ProgramModule.Source source = null;
+            List<org.robopro.programs.rapid.RapidAst.Stmt> entryBody = List.of();
+            if (size("/programs") > 0 && !at("/programs/0/rapid_module").isMissingNode()) {
+                String entry = text("/programs/0/name");
+                String rapid = text("/programs/0/rapid_module");
+                org.robopro.programs.RapidModule module;
+                try {
+                    module = org.robopro.programs.RapidParser.parse(rapid, file + " programs.0.rapid_module");
+                } catch (InputException e) {
+                    throw bad("/programs/0/rapid_module", e.getMessage());
+                }
+                source = new org.robopro.app.workbench.model.ProgramModule.Source(module, entry);
+                if (module.procedure(entry).isEmpty()) throw bad("/programs/0/name", "the module has no procedure " + entry);
+                entryBody = entryBody(source);
+            }
             if (size("/programs") > 0) {
                 for (int i = 0; i < size("/programs/0/instructions"); i++) {
                     String p = "/programs/0/instructions/" + i;
                     String type = text(p + "/type");
+                    org.robopro.programs.rapid.RapidAst.Stmt stmt = null;
+                    if (!at(p + "/statement").isMissingNode()) {
+                        double k = number(p + "/statement");
+                        if (k != Math.rint(k) || k < 0 || k >= entryBody.size())
+                            throw bad(p + "/statement", "no statement " + k + " in the program's rapid_module");
+                        stmt = entryBody.get((int) k);
+                    }
+                    if (type.equals(Instruction.Type.RAPID.rapid())) {
+                        if (stmt == null) throw bad(p + "/statement", "a RAPID line needs the index of its statement in rapid_module");
+                        program.add(Instruction.kept(stmt));
+                        continue;
+                    }
                     Instruction.Type t;
                     try {
                         t = Instruction.Type.ofRapid(type);
@@ -486,7 +526,7 @@ public final class ProjectStore {
                     } else if (!at(p + "/via").isMissingNode()) throw bad(p + "/via", t.rapid() + " takes no circle point");
                     double zone = number(p + "/zone_mm");
                     if (zone < 0) throw bad(p + "/zone_mm", "must be >= 0");
-                    program.add(new Instruction(t, target, positive(p + "/speed_mm_s"), zone, via));
+                    program.add(new Instruction(t, target, positive(p + "/speed_mm_s"), zone, via, stmt));
                 }
             }
             JsonNode cal = at("/calibration/reference");
@@ -500,8 +540,21 @@ public final class ProjectStore {
             }
             double[] q = at("/workbench_state/joints_deg").isMissingNode() ? null
                     : Units.degToRad(numbers("/workbench_state/joints_deg", robot.dof()));
-            return new ProjectData(ref, robot, placement, tool, objects, wobjs, targets, program, calRef, active, q);
+            return new ProjectData(ref, robot, placement, tool, objects, wobjs, targets, program, calRef, active, q, source);
         }
+    }
+
+    /** The statements of an imported program's entry procedure (the module's tree). */
+    private static List<org.robopro.programs.rapid.RapidAst.Stmt> entryBody(org.robopro.app.workbench.model.ProgramModule.Source s) {
+        for (org.robopro.programs.rapid.RapidAst.Item it : s.module().tree().items())
+            if (it instanceof org.robopro.programs.rapid.RapidAst.Routine r && r.name().equalsIgnoreCase(s.entry())) return r.body();
+        return List.of();
+    }
+
+    /** Index of this very statement node in {@code body}, -1 when absent. */
+    private static int indexOf(List<org.robopro.programs.rapid.RapidAst.Stmt> body, org.robopro.programs.rapid.RapidAst.Stmt s) {
+        for (int k = 0; s != null && k < body.size(); k++) if (body.get(k) == s) return k;
+        return -1;
     }
 
     // ---- autosave and recovery ---------------------------------------------------------------

@@ -215,7 +215,8 @@ public final class WorkbenchSession implements AutoCloseable {
         var cal = calibratedModel;
         var ext = extendedModel;
         var nominal = model.kinematics().kinematicModel();
-        if (cal != null && nominal.isPresent()) {
+        boolean compensated = cal != null && nominal.isPresent();
+        if (compensated) {
             var out = org.robopro.programs.compensation.ProgramCompensation.compensate(module, "main", nominal.get(),
                     compensator(nominal.get(), cal, ext, compensationConditions));
             module = out.module();
@@ -228,7 +229,8 @@ public final class WorkbenchSession implements AutoCloseable {
                     out.corrections().size(), ext != null && ext.hasEffects() ? "extended model (geometry and effects)" : "calibrated model",
                     max * 1e3));
         }
-        RapidExport ex = RapidWriter.export(module);
+        // A compensated program through the writer (every target rewritten at file precision).
+        RapidExport ex = compensated ? RapidWriter.export(module) : ProgramModule.write(model, module);
         AtomicFiles.writeString(file, ex.text(), overwrite);
         for (RapidExport.Rename r : ex.renames()) log("RAPID export renamed " + r);
         log("Exported RAPID module " + module.name() + " to " + file);
@@ -354,8 +356,8 @@ public final class WorkbenchSession implements AutoCloseable {
     /**
      * Uploads program {@code name} and makes the procedure {@code chooseProc} picks from the
      * module's procedures (called on the UI thread; null cancels and changes nothing) the
-     * workbench program. The procedure runs through the programs module's interpreter, so calls,
-     * loops, MoveC and Offs are flattened into the instructions it executes.
+     * workbench program ({@link ProgramModule#fromRapid}: its motions editable, its other
+     * statements kept as written; calls and loops run, checked and drawn through the module).
      */
     public java.util.concurrent.CompletableFuture<ProgramModule.Imported> uploadProgram(String name,
             java.util.function.Function<List<String>, String> chooseProc) {

@@ -76,11 +76,17 @@ class ProjectStoreTest {
                         new ConfData(-1, 0, 0, 1), "wobj_fixture"),
                 new Target("jHome", Pose.translation(1.0, 0, 1.2).times(Pose.rotY(Math.PI)), new double[] {0, 0.35, 0.17, 0, 0.87, 0},
                         new ConfData(0, 0, 0, 0)));
+        // Imported from a module: the MoveJ linked to its statement, a WaitTime kept as written.
+        var module = org.robopro.programs.RapidParser.parse("MODULE Cell\n  PROC main()\n    MoveJ p10, v500, z50, tool0;\n"
+                + "    WaitTime 0.5;\n  ENDPROC\nENDMODULE\n", "Cell.mod");
+        var body = ((org.robopro.programs.rapid.RapidAst.Routine) module.tree().items().get(0)).body();
         List<Instruction> program = List.of(new Instruction(Instruction.Type.MOVEABSJ, "jHome", 1000, 0),
-                new Instruction(Instruction.Type.MOVEJ, "p10", 500, 50), new Instruction(Instruction.Type.MOVEL, "p20", 123.5, 0),
+                new Instruction(Instruction.Type.MOVEJ, "p10", 500, 50).readFrom(body.get(0)), Instruction.kept(body.get(1)),
+                new Instruction(Instruction.Type.MOVEL, "p20", 123.5, 0),
                 new Instruction(Instruction.Type.MOVEC, "p30", 20, 1.5, "p20"), new Instruction(Instruction.Type.MOVEABSJ, "jHome", 1000, 0));
         return new ProjectData(d.robotRef(), d.robot(), Pose.translation(0.1, -0.05, 0.02).times(Pose.rotZ(0.2)), tool, objects, wobjs,
-                targets, program, "calib/irb2000-cal.robot.json", "wobj_fixture", new double[] {0.1, 0.2, 0.3, -0.4, 0.5, -0.6});
+                targets, program, "calib/irb2000-cal.robot.json", "wobj_fixture", new double[] {0.1, 0.2, 0.3, -0.4, 0.5, -0.6},
+                new org.robopro.app.workbench.model.ProgramModule.Source(module, "main"));
     }
 
     @Test

@@ -397,7 +397,6 @@ public final class WorkbenchScenario {
         r.setProperty("programAfterUpload", String.valueOf(wb.model().program().size()));
         r.setProperty("controllerLog", String.join("\n", wb.log().stream().filter(l -> l.startsWith("Controller:")).toList()));
 
-        List<Instruction> original = wb.model().program();
         // A program with MoveC: checked, downloaded and run on the simulated controller, which ends at the arc's end.
         WorkbenchWindow.onEdt(() -> wb.model().setProgram(List.of(new Instruction(Instruction.Type.MOVEJ, "p10", 500, 10),
                 new Instruction(Instruction.Type.MOVEC, "p30", 200, 0, "p20"))));
@@ -415,14 +414,17 @@ public final class WorkbenchScenario {
         AtomicReference<List<String>> offered = new AtomicReference<>();
         var twice = wb.uploadProgram("Twice", procs -> { offered.set(procs); return "twice"; }).get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("uploadOfferedProcs", String.join(",", offered.get()));
-        r.setProperty("uploadTwiceProgram", String.join(";", twice.program().stream().map(i -> i.type() + " " + i.target()).toList()));
+        r.setProperty("uploadTwiceProgram", String.join("|", twice.program().stream()
+                .map(i -> i.type().motion() ? i.type() + " " + i.target() : "RAPID " + i.statementText()).toList()));
+        r.setProperty("uploadTwiceMotions", String.join(";", wb.model().programRun().steps().stream()
+                .map(step -> step.label().replaceAll(".*#\\d+ ", "")).toList()));
         try {
             wb.uploadProgram("Twice", procs -> null).get(30, java.util.concurrent.TimeUnit.SECONDS);
             r.setProperty("uploadCancelled", "no");
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.CancellationException e) {
             r.setProperty("uploadCancelled", String.valueOf(wb.model().program().size()));
         }
-        WorkbenchWindow.onEdt(() -> wb.model().setProgram(original));
+        WorkbenchWindow.onEdt(() -> wb.model().undo()); // the upload: program and its module back as they were
         wb.disconnectController().get(10, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("ghostAfterDisconnect", String.valueOf(wb.model().ghostQ() != null));
     }

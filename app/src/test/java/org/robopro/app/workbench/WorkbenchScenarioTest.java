@@ -201,8 +201,9 @@ class WorkbenchScenarioTest {
         assertTrue(r.getProperty("moveCRunState").startsWith("IDLE"), r.getProperty("moveCRunState"));
         assertEquals(0, Double.parseDouble(r.getProperty("moveCGhostToP30Mm")), 0.05, "MoveC ends at its ToPoint on the controller");
         assertEquals("main,twice", r.getProperty("uploadOfferedProcs"));
-        assertEquals("MOVEJ p10;MOVEC p30;MOVEJ p10;MOVEC p30", r.getProperty("uploadTwiceProgram"), "PROC twice calls main twice");
-        assertEquals("4", r.getProperty("uploadCancelled"), "choosing no PROC leaves the program as it was");
+        assertEquals("RAPID main;|RAPID main;", r.getProperty("uploadTwiceProgram"), "PROC twice calls main twice: two calls kept as written");
+        assertEquals("MoveJ p10;MoveC p30;MoveJ p10;MoveC p30", r.getProperty("uploadTwiceMotions"), "the calls' motions are run, checked and drawn");
+        assertEquals("2", r.getProperty("uploadCancelled"), "choosing no PROC leaves the program as it was");
         assertEquals("false", r.getProperty("ghostAfterDisconnect"));
         BufferedImage ctl = ImageIO.read(out.resolve("06-controller.png").toFile());
         assertTrue(blueCount(ctl) > 500, "no ghost robot in 06-controller.png");

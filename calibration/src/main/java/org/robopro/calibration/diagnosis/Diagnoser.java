@@ -108,6 +108,13 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
+        // An effect acts at both poses of a pair, each under its own direction and angles; the effect
+        // signatures and the locate scan take one pose per row, so they would miss or misread it.
+        if (train.isPairs())
+            throw new org.robopro.models.InputException(train.source(), 0, 0, "from_q1", "the diagnosis reads positions or lengths "
+                    + "to an anchor, not distances between pairs of poses (an effect acts at both poses of a pair, each with its own "
+                    + "direction and angles); calibrate this file with 'robopro calibrate', and diagnose a campaign of positions or "
+                    + "of lengths to a fixed anchor");
         Directions.Prepared dirs = Directions.prepare(train, validate);
         train = dirs.train();
         validate = dirs.validate();

@@ -32,6 +32,7 @@ import org.robopro.models.Vec3;
  *                         the first is {@code flangeTtool}'s origin
  * @param anchor           distance data: the anchor in the robot base frame, m; null otherwise
  * @param anchorGiven      the anchor was given in the file and kept, not identified
+ * @param pairs            distance data between pairs of poses (no anchor)
  */
 public record CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
                                 List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
@@ -40,15 +41,29 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
                                 LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
                                 double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs,
                                 List<Correlation> correlations, List<String> pointNames, List<Vec3> toolPoints,
-                                Vec3 anchor, boolean anchorGiven) {
+                                Vec3 anchor, boolean anchorGiven, boolean pairs) {
 
     public CalibrationResult {
         pointNames = List.copyOf(pointNames);
         toolPoints = List.copyOf(toolPoints);
     }
 
-    /** Distance-only data (the errors are distance errors). */
-    public boolean distance() { return anchor != null; }
+    /** A result of data other than distances between pairs of poses. */
+    public CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
+                             List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
+                             double conditionNumber, double observability, List<Outlier> outliers,
+                             List<PoseError> train, List<PoseError> validate,
+                             LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
+                             double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs,
+                             List<Correlation> correlations, List<String> pointNames, List<Vec3> toolPoints,
+                             Vec3 anchor, boolean anchorGiven) {
+        this(nominal, calibrated, flangeTtool, instrumentTbase, parameters, unidentifiable, conditionNumber, observability, outliers,
+                train, validate, nominalFit, fit, sigmaPosM, sigmaRotRad, sixD, elapsedMs, correlations, pointNames, toolPoints,
+                anchor, anchorGiven, false);
+    }
+
+    /** Distance-only data, to an anchor or between pairs of poses (the errors are distance errors). */
+    public boolean distance() { return anchor != null || pairs; }
 
     /** Correlation coefficient ρ of the estimates of parameters {@code a} and {@code b}. */
     public record Correlation(String a, String b, double rho) { }

@@ -129,7 +129,8 @@ public final class Calibrator {
             if (o.knownInstrument() != null)
                 throw new InputException(train.source(), 0, 0, "anchor", "distance data have no instrument frame to give; "
                         + "write the anchor's position in the file ('# anchor: x, y, z', robot base frame) to keep it fixed");
-            anchor0 = train.anchor() != null ? train.anchor() : Registration.multilaterate(nominal, rows, tool0.position(), train.source());
+            if (!train.isPairs())
+                anchor0 = train.anchor() != null ? train.anchor() : Registration.multilaterate(nominal, rows, tool0.position(), train.source());
         } else if (instrument) {
             List<Vec3> pred = new ArrayList<>(), meas = new ArrayList<>();
             for (Measurement m : rows) {
@@ -288,7 +289,7 @@ public final class Calibrator {
         return new CalibrationResult(nominal, calibrated, tool, inst, params, structural.directions(),
                 data.conditionNumber(), data.observability(), outliers, trainErr, valErr, nf.result(), fit,
                 sig[0], sixD ? sig[1] : Double.NaN, sixD, (System.nanoTime() - t0) / 1e6, List.copyOf(correlations),
-                train.pointNames(), toolPoints, p.anchorOf(full), distance && train.anchor() != null);
+                train.pointNames(), toolPoints, p.anchorOf(full), distance && train.anchor() != null, train.isPairs());
     }
 
     /**
@@ -587,7 +588,8 @@ public final class Calibrator {
     static Identifiability.Result structural(KinematicModel nominal, boolean sixD, boolean instrument, List<EffectBlock> effects,
                                              double[] start, IdentificationProblem like, double tol, boolean[] known) {
         StringBuilder key = new StringBuilder().append(sixD).append('/').append(instrument).append('/').append(tol)
-                .append('/').append(like.pointCount()).append('/').append(like.distance()).append('/').append(Arrays.toString(known));
+                .append('/').append(like.pointCount()).append('/').append(like.distance()).append('/').append(like.pairs())
+                .append('/').append(Arrays.toString(known));
         for (EffectBlock e : effects) key.append('/').append(e.name()).append(e.parameterNames());
         synchronized (STRUCTURAL) {
             Identifiability.Result r = STRUCTURAL.getOrDefault(nominal, Map.of()).get(key.toString());
@@ -596,7 +598,8 @@ public final class Calibrator {
         Random rng = new Random(20261121L);
         List<Measurement> rows = new ArrayList<>();
         List<JointDescription> js = nominal.description().joints();
-        for (int i = 0; i < STRUCTURAL_POSES; i++) {
+        double[] prev = null;
+        for (int i = like.pairs() ? -1 : 0; i < STRUCTURAL_POSES; i++) {
             double[] q = new double[js.size()];
             for (int k = 0; k < q.length; k++) {
                 double lo = js.get(k).min(), hi = js.get(k).max();
@@ -607,7 +610,11 @@ public final class Calibrator {
                 }
                 q[k] = lo + (hi - lo) * rng.nextDouble();
             }
-            if (like.distance()) rows.add(Measurement.ofDistance("s" + i, q, 1));
+            if (like.pairs()) {
+                // each pose measured from the one before: random pairs
+                if (prev != null) rows.add(Measurement.ofPair("s" + i, prev, q, 1));
+                prev = q;
+            } else if (like.distance()) rows.add(Measurement.ofDistance("s" + i, q, 1));
             else if (like.pointCount() > 1) rows.add(Measurement.ofPoints("s" + i, q, java.util.Collections.nCopies(like.pointCount(), Vec3.ZERO)));
             else rows.add(new Measurement("s" + i, q, Vec3.ZERO, sixD ? new double[] {1, 0, 0, 0} : null,
                     null, Double.NaN, Double.NaN, Double.NaN, null, 0));

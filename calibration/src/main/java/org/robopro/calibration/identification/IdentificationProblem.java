@@ -38,7 +38,9 @@ public final class IdentificationProblem implements LeastSquaresProblem {
 
     private final KinematicModel model;
     private final List<Measurement> rows;
-    private final boolean sixD, instrument, distance;
+    private final boolean sixD, instrument, distance, pairs;
+    /** Distances between pairs of poses: the two ends of every row as position rows (no instrument), evaluated in metres. */
+    private final IdentificationProblem ends;
     private final int points;
     private final List<EffectBlock> effects;
     private final int nGeo, toolOff, toolSize, instOff, effOff, nFull;
@@ -71,10 +73,11 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         this.rows = List.copyOf(rows);
         Measurement first = this.rows.isEmpty() ? null : this.rows.get(0);
         this.distance = first != null && first.isDistance();
+        this.pairs = distance && first.isPair();
         this.points = first == null || distance ? 1 : first.points().size();
         for (Measurement r : this.rows)
-            if (r.isDistance() != distance || !distance && r.points().size() != points)
-                throw new IllegalArgumentException("pose " + r.poseId() + " is not shaped like the first pose (points, distance)");
+            if (r.isDistance() != distance || r.isPair() != pairs || !distance && r.points().size() != points)
+                throw new IllegalArgumentException("pose " + r.poseId() + " is not shaped like the first pose (points, distance, pair)");
         if (sixD && (points > 1 || distance))
             throw new IllegalArgumentException("orientations go with one measured point per pose");
         this.sixD = sixD;
@@ -99,9 +102,9 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             for (String s : new String[] {"instrument.x", "instrument.y", "instrument.z"}) { names.add(s); units.add("m"); blocks.add(Block.INSTRUMENT); }
             for (String s : new String[] {"instrument.rx", "instrument.ry", "instrument.rz"}) { names.add(s); units.add("rad"); blocks.add(Block.INSTRUMENT); }
         }
-        if (distance)
+        if (distance && !pairs)
             for (String s : new String[] {"anchor.x", "anchor.y", "anchor.z"}) { names.add(s); units.add("m"); blocks.add(Block.INSTRUMENT); }
-        effOff = instOff + (this.instrument ? 6 : distance ? 3 : 0);
+        effOff = instOff + (this.instrument ? 6 : distance && !pairs ? 3 : 0);
         effStart = new int[this.effects.size() + 1];
         int off = effOff;
         for (int k = 0; k < this.effects.size(); k++) {
@@ -130,6 +133,13 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             for (int i = effStart[k]; i < effStart[k + 1]; i++) priority[i] = this.effects.get(k).fixPriority();
         fixed = new boolean[nFull];
         free = allIndices(nFull);
+        if (pairs) {
+            // The same measurement function at both ends of each length: the layout (geometry, tool, effects) is the same.
+            List<Measurement> endRows = new ArrayList<>();
+            for (Measurement r : this.rows) { endRows.add(r.firstPose()); endRows.add(r.secondPose()); }
+            ends = new IdentificationProblem(model, endRows, false, false, this.effects, start);
+            ends.setSigmas(1, 1);
+        } else ends = null;
         m = this.rows.size() * rowsPerPose();
         ws = model.newWorkspace();
         jg = new double[6 * nGeo];
@@ -193,10 +203,12 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     public boolean hasInstrument() { return instrument; }
     /** Measured points per pose (1 for distance rows). */
     public int pointCount() { return points; }
-    /** Distance-only rows: one residual per pose, an anchor block. */
+    /** Distance-only rows: one residual per pose, an anchor block (none for pairs of poses). */
     public boolean distance() { return distance; }
-    /** Full index of anchor.x, or -1 without distance rows. */
-    public int anchorOffset() { return distance ? instOff : -1; }
+    /** Distances between pairs of poses: no anchor. */
+    public boolean pairs() { return pairs; }
+    /** Full index of anchor.x, or -1 without distance rows to an anchor. */
+    public int anchorOffset() { return distance && !pairs ? instOff : -1; }
     public List<Measurement> rows() { return rows; }
     public List<EffectBlock> effects() { return effects; }
     public double[] start() { return start.clone(); }
@@ -322,6 +334,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
      * row-major) at the full parameter vector.
      */
     public void evaluateFull(double[] full, double[] res, double[] jac) {
+        if (pairs) { evaluatePairs(full, res, jac); return; }
         KinematicModel mdl = model.withParameterValues(Arrays.copyOf(full, nGeo));
         double[] rft = new double[9];
         if (sixD) Se3.rotExp(full[toolOff + points * 3], full[toolOff + points * 3 + 1], full[toolOff + points * 3 + 2], rft);
@@ -503,6 +516,29 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         }
     }
 
+    /**
+     * Distances between pairs of poses: the measured point at both poses (the position rows of
+     * {@link #ends}, in metres, with their Jacobian), d_pred = |p_b − p_a|, residual
+     * (d_pred − d) / σ and ∂d_pred/∂k = uᵀ (∂p_b/∂k − ∂p_a/∂k) with u the unit vector from a to b.
+     */
+    private void evaluatePairs(double[] full, double[] res, double[] jac) {
+        int n = rows.size();
+        double[] r2 = new double[6 * n], j2 = jac == null ? null : new double[6 * n * nFull];
+        ends.evaluateFull(full, r2, j2);
+        double wp = 1 / sigmaPos;
+        for (int i = 0; i < n; i++) {
+            int a = 6 * i, b = 6 * i + 3;
+            double dx = r2[b] - r2[a], dy = r2[b + 1] - r2[a + 1], dz = r2[b + 2] - r2[a + 2];
+            double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            double ux = len > 0 ? dx / len : 0, uy = len > 0 ? dy / len : 0, uz = len > 0 ? dz / len : 0;
+            res[i] = (len - rows.get(i).distance()) * wp;
+            if (jac == null) continue;
+            for (int c = 0; c < nFull; c++)
+                jac[i * nFull + c] = (ux * (j2[b * nFull + c] - j2[a * nFull + c]) + uy * (j2[(b + 1) * nFull + c] - j2[(a + 1) * nFull + c])
+                        + uz * (j2[(b + 2) * nFull + c] - j2[(a + 2) * nFull + c])) * wp;
+        }
+    }
+
     private void effectColumns(KinematicModel mdl, double[] qEff, Pose flangeTtool, double[] pb, double[] rib,
                                double[][] dThetaDv, double[][] dpDv, double[] dpDpoint, double[] jac, int r0, double wp, double wr) {
         int dof = mdl.dof();
@@ -559,7 +595,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
 
     /** The anchor (base frame, m) at a full parameter vector, or null without distance rows. */
     public Vec3 anchorOf(double[] full) {
-        return distance ? new Vec3(full[instOff], full[instOff + 1], full[instOff + 2]) : null;
+        return distance && !pairs ? new Vec3(full[instOff], full[instOff + 1], full[instOff + 2]) : null;
     }
 
     /** flangeTtool at a full parameter vector (identity rotation for position-only data; the first point's). */

@@ -24,10 +24,15 @@ import org.robopro.models.Vec3;
  *                    {@code position}); a single-point pose has one; empty for a distance row
  * @param distance    distance-only row: the measured length from the fixed anchor to the
  *                    measured point, m ({@code position} null, {@code points} empty); NaN otherwise
+ * @param fromQ       a distance between two poses: the controller values of the first pose (the
+ *                    row's {@code q} is the second's; the distance is between the measured point's
+ *                    places at the two); null for a length to an anchor and for positions
+ * @param fromDirections the first pose's approach directions (with {@code fromQ}, when the row has
+ *                    directions), else null
  */
 public record Measurement(String poseId, double[] q, Vec3 position, double[] orientation, int[] directions,
                          double timeS, double tempC, double payloadKg, Split set, int line, List<Vec3> points,
-                         double distance) {
+                         double distance, double[] fromQ, int[] fromDirections) {
 
     /** The {@code set} column's values. */
     public enum Split {
@@ -61,6 +66,23 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
                 throw new IllegalArgumentException("directions " + Arrays.toString(directions) + " do not match " + q.length + " joints");
             directions = directions.clone();
         }
+        if (fromQ != null) {
+            if (Double.isNaN(distance)) throw new IllegalArgumentException("a first pose goes with a distance between two poses");
+            if (fromQ.length != q.length) throw new IllegalArgumentException("the first pose has " + fromQ.length + " joints, the second " + q.length);
+            fromQ = fromQ.clone();
+            if ((fromDirections == null) != (directions == null))
+                throw new IllegalArgumentException("approach directions at both poses of a distance, or at neither");
+            if (fromDirections != null) {
+                if (fromDirections.length != q.length) throw new IllegalArgumentException("first pose's directions do not match " + q.length + " joints");
+                fromDirections = fromDirections.clone();
+            }
+        } else if (fromDirections != null) throw new IllegalArgumentException("directions of a first pose without one");
+    }
+
+    /** A measurement as the formats without pairs of poses have it. */
+    public Measurement(String poseId, double[] q, Vec3 position, double[] orientation, int[] directions,
+                       double timeS, double tempC, double payloadKg, Split set, int line, List<Vec3> points, double distance) {
+        this(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, set, line, points, distance, null, null);
     }
 
     /** A measurement of one point (or with an orientation) as the single-point format has it. */
@@ -72,6 +94,11 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
     /** A measurement of several points on the tool at one pose (the first is {@link #position()}). */
     public static Measurement ofPoints(String poseId, double[] q, List<Vec3> points) {
         return new Measurement(poseId, q, null, null, null, Double.NaN, Double.NaN, Double.NaN, null, 0, points, Double.NaN);
+    }
+
+    /** A distance between two poses: the length between the measured point's places at {@code fromQ} and at {@code q}, m. */
+    public static Measurement ofPair(String poseId, double[] fromQ, double[] q, double distanceM) {
+        return new Measurement(poseId, q, null, null, null, Double.NaN, Double.NaN, Double.NaN, null, 0, null, distanceM, fromQ, null);
     }
 
     /** A distance-only measurement: the length from the fixed anchor to the measured point, m. */
@@ -87,6 +114,26 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
     @Override public double[] q() { return q.clone(); }
     @Override public double[] orientation() { return orientation == null ? null : orientation.clone(); }
     @Override public int[] directions() { return directions == null ? null : directions.clone(); }
+    @Override public double[] fromQ() { return fromQ == null ? null : fromQ.clone(); }
+    @Override public int[] fromDirections() { return fromDirections == null ? null : fromDirections.clone(); }
+
+    /** A distance between two poses (the first's joints in {@link #fromQ()}). */
+    public boolean isPair() { return fromQ != null; }
+
+    /**
+     * The first pose of a pair as a pose of its own: its joints and directions, the row's time,
+     * temperature, payload and set; the measured point at the origin (a placeholder: what is
+     * measured is the distance).
+     */
+    public Measurement firstPose() {
+        if (fromQ == null) throw new IllegalStateException("not a distance between two poses");
+        return new Measurement(poseId, fromQ, Vec3.ZERO, null, fromDirections, timeS, tempC, payloadKg, set, line);
+    }
+
+    /** The row's own (second) pose as a position row: the measured point at the origin (a placeholder). */
+    public Measurement secondPose() {
+        return new Measurement(poseId, q, Vec3.ZERO, null, directions, timeS, tempC, payloadKg, set, line);
+    }
 
     /** Joint value i (0-based) without copying the array. */
     public double q(int i) { return q[i]; }
@@ -113,6 +160,7 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
     /** The first field (q1.., x, y, z) that is non-finite or beyond the gross limits, or null. */
     public String grossField() {
         for (int k = 0; k < q.length; k++) if (!(Math.abs(q[k]) <= GROSS_JOINT)) return "q" + (k + 1);
+        if (fromQ != null) for (int k = 0; k < fromQ.length; k++) if (!(Math.abs(fromQ[k]) <= GROSS_JOINT)) return "from_q" + (k + 1);
         if (isDistance()) return distance >= 0 && distance <= GROSS_POSITION_M ? null : "distance";
         for (int k = 0; k < points.size(); k++) {
             Vec3 p = points.get(k);
@@ -129,7 +177,7 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
         if (field.equals("distance"))
             return String.format(java.util.Locale.ROOT, "distance is negative, not finite or beyond %.0f m: "
                     + "a misread value; correct or delete this row", GROSS_POSITION_M);
-        return field.startsWith("q")
+        return field.startsWith("q") || field.startsWith("from_q")
                 ? String.format(java.util.Locale.ROOT, "joint value is not finite or beyond %.0f rad (or m): "
                         + "not a joint position; correct or delete this row", GROSS_JOINT)
                 : String.format(java.util.Locale.ROOT, "coordinate is not finite or beyond %.0f m, outside any "
@@ -140,26 +188,29 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
     public Measurement withPosition(Vec3 p) {
         List<Vec3> pts = new ArrayList<>(points);
         pts.set(0, p);
-        return new Measurement(poseId, q, p, orientation, directions, timeS, tempC, payloadKg, set, line, pts, distance);
+        return new Measurement(poseId, q, p, orientation, directions, timeS, tempC, payloadKg, set, line, pts, distance, fromQ, fromDirections);
     }
 
     public Measurement withOrientation(double[] quaternionWxyz) {
-        return new Measurement(poseId, q, position, quaternionWxyz, directions, timeS, tempC, payloadKg, set, line, points, distance);
+        return new Measurement(poseId, q, position, quaternionWxyz, directions, timeS, tempC, payloadKg, set, line, points, distance, fromQ, fromDirections);
     }
 
     public Measurement withSet(Split s) {
-        return new Measurement(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, s, line, points, distance);
+        return new Measurement(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, s, line, points, distance, fromQ, fromDirections);
     }
 
     public Measurement withConditions(int[] dirs, double time, double temp, double payload) {
-        return new Measurement(poseId, q, position, orientation, dirs, time, temp, payload, set, line, points, distance);
+        // A pair keeps its first pose's directions when the row keeps directions (the first's or, if it had none, the same).
+        return new Measurement(poseId, q, position, orientation, dirs, time, temp, payload, set, line, points, distance, fromQ,
+                fromQ == null || dirs == null ? null : fromDirections != null ? fromDirections : dirs);
     }
 
     @Override
     public boolean equals(Object o) {
         return o instanceof Measurement m && poseId.equals(m.poseId) && Arrays.equals(q, m.q)
                 && java.util.Objects.equals(position, m.position) && points.equals(m.points)
-                && Double.compare(distance, m.distance) == 0 && Arrays.equals(orientation, m.orientation)
+                && Double.compare(distance, m.distance) == 0 && Arrays.equals(fromQ, m.fromQ)
+                && Arrays.equals(fromDirections, m.fromDirections) && Arrays.equals(orientation, m.orientation)
                 && Arrays.equals(directions, m.directions) && Double.compare(timeS, m.timeS) == 0
                 && Double.compare(tempC, m.tempC) == 0 && Double.compare(payloadKg, m.payloadKg) == 0
                 && set == m.set;
@@ -171,6 +222,6 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
     @Override
     public String toString() {
         return "Measurement[" + poseId + ", q=" + Arrays.toString(q)
-                + (isDistance() ? ", d=" + distance : points.size() > 1 ? ", points=" + points : ", p=" + position) + "]";
+                + (isPair() ? ", from=" + Arrays.toString(fromQ) + ", d=" + distance : isDistance() ? ", d=" + distance : points.size() > 1 ? ", points=" + points : ", p=" + position) + "]";
     }
 }

@@ -30,6 +30,8 @@ public final class MeasurementReader {
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
     private static final Pattern Q_COL = Pattern.compile("q([1-9]\\d{0,2})");
     private static final Pattern DIR_COL = Pattern.compile("dir([1-9]\\d{0,2})");
+    private static final Pattern FROM_Q_COL = Pattern.compile("from_q([1-9]\\d{0,2})");
+    private static final Pattern FROM_DIR_COL = Pattern.compile("from_dir([1-9]\\d{0,2})");
     private static final Pattern MULTI_POINT_COL = Pattern.compile("[xyz][1-9]\\d{0,2}");
     private static final String MAGIC = "robopro-measurements";
 
@@ -108,7 +110,7 @@ public final class MeasurementReader {
             char sep = separator(header);
             List<Field> cols = split(header, sep);
             Map<String, Integer> index = new HashMap<>();
-            int maxQ = 0, maxDir = 0;
+            int maxQ = 0, maxDir = 0, maxFromQ = 0, maxFromDir = 0;
             for (int c = 0; c < cols.size(); c++) {
                 Field f = cols.get(c);
                 String name = f.text.toLowerCase(Locale.ROOT);
@@ -119,6 +121,10 @@ public final class MeasurementReader {
                 if (qm.matches()) maxQ = Math.max(maxQ, Integer.parseInt(qm.group(1)));
                 var dm = DIR_COL.matcher(name);
                 if (dm.matches()) maxDir = Math.max(maxDir, Integer.parseInt(dm.group(1)));
+                var fm = FROM_Q_COL.matcher(name);
+                if (fm.matches()) maxFromQ = Math.max(maxFromQ, Integer.parseInt(fm.group(1)));
+                var fdm = FROM_DIR_COL.matcher(name);
+                if (fdm.matches()) maxFromDir = Math.max(maxFromDir, Integer.parseInt(fdm.group(1)));
             }
             if (!index.containsKey("pose"))
                 throw error(headerLine, 1, "pose", "required column 'pose' is missing from the header row");
@@ -224,6 +230,48 @@ public final class MeasurementReader {
                     pIdx[k][a] = index.get(c);
                     pName[k][a] = c;
                 }
+            // Distances between two poses: the first pose's joints (and directions) in from_q1..from_qN (from_dir1..N).
+            int[] fqIdx = null, fdIdx = null;
+            if (maxFromQ > 0 || maxFromDir > 0) {
+                String first = maxFromQ > 0 ? "from_q" + maxFromQ : "from_dir" + maxFromDir;
+                int firstCol = cols.get(index.get(first)).col;
+                if (distIdx == null)
+                    throw error(headerLine, firstCol, first, "columns from_q1..from_q" + dof + " give the first pose of a distance "
+                            + "between two poses; this file has no 'distance' column (a position file has no first pose)");
+                if (maxFromQ == 0)
+                    throw error(headerLine, firstCol, first, "first-pose directions without the first pose's joints: add from_q1..from_q" + dof);
+                if (maxFromQ != dof)
+                    throw error(headerLine, cols.get(index.get("from_q" + maxFromQ)).col, "from_q" + maxFromQ,
+                            "first-pose joint columns go to from_q" + maxFromQ + " but there are " + dof + " joints");
+                fqIdx = new int[dof];
+                for (int k = 0; k < dof; k++) {
+                    Integer c = index.get("from_q" + (k + 1));
+                    if (c == null) throw error(headerLine, 1, "from_q" + (k + 1), "first-pose joint column 'from_q" + (k + 1)
+                            + "' is missing (all of from_q1..from_q" + dof + ")");
+                    fqIdx[k] = c;
+                }
+                if ((maxFromDir > 0) != (dIdx != null))
+                    throw error(headerLine, maxFromDir > 0 ? cols.get(index.get("from_dir" + maxFromDir)).col : cols.get(dIdx[0]).col,
+                            maxFromDir > 0 ? "from_dir" + maxFromDir : "dir1", "a distance between two poses needs the approach "
+                            + "directions of both poses (dir1..dir" + dof + " and from_dir1..from_dir" + dof + ") or of neither");
+                if (maxFromDir > 0) {
+                    if (maxFromDir != dof)
+                        throw error(headerLine, cols.get(index.get("from_dir" + maxFromDir)).col, "from_dir" + maxFromDir,
+                                "first-pose direction columns go to from_dir" + maxFromDir + " but there are " + dof + " joints");
+                    fdIdx = new int[dof];
+                    for (int k = 0; k < dof; k++) {
+                        Integer c = index.get("from_dir" + (k + 1));
+                        if (c == null) throw error(headerLine, 1, "from_dir" + (k + 1), "first-pose direction column 'from_dir" + (k + 1)
+                                + "' is missing (all of from_dir1..from_dir" + dof + " or none)");
+                        fdIdx[k] = c;
+                    }
+                }
+                if (meta.containsKey("anchor")) {
+                    int[] pos = metaPos.get("anchor");
+                    throw error(pos[0], pos[1], "anchor", "a distance between two poses (from_q columns) has no anchor; delete the "
+                            + "'# anchor' line, or the from_q columns if the lengths are to a fixed anchor");
+                }
+            }
             int poseIdx = index.get("pose");
             Integer tIdx = index.get("time_s"), tempIdx = index.get("temp_c"), payIdx = index.get("payload_kg"),
                     setIdx = index.get("set");
@@ -305,17 +353,13 @@ public final class MeasurementReader {
                                 "orientation quaternion has length %.6g; it must be a unit quaternion", n));
                     for (int k = 0; k < 4; k++) o[k] /= n;
                 }
-                int[] dirs = null;
-                if (dIdx != null) {
-                    dirs = new int[dof];
-                    for (int k = 0; k < dof; k++) {
-                        Field f = fs.get(dIdx[k]);
-                        double v = number(lineNo, f, "dir" + (k + 1));
-                        if (v != 1 && v != -1 && v != 0)
-                            throw error(lineNo, f.col, "dir" + (k + 1), "direction must be 1, -1 or 0, not '" + f.text + "'");
-                        dirs[k] = (int) v;
-                    }
+                int[] dirs = directions(lineNo, fs, dIdx, "dir");
+                double[] fromQ = null;
+                if (fqIdx != null) {
+                    fromQ = new double[dof];
+                    for (int k = 0; k < dof; k++) fromQ[k] = number(lineNo, fs.get(fqIdx[k]), "from_q" + (k + 1)) * qScale[k];
                 }
+                int[] fromDirs = directions(lineNo, fs, fdIdx, "from_dir");
                 double time = tIdx == null ? Double.NaN : number(lineNo, fs.get(tIdx), "time_s");
                 double temp = tempIdx == null ? Double.NaN : number(lineNo, fs.get(tempIdx), "temp_c");
                 double pay = payIdx == null ? Double.NaN : number(lineNo, fs.get(payIdx), "payload_kg");
@@ -330,11 +374,12 @@ public final class MeasurementReader {
                     }
                 }
                 Measurement row = new Measurement(id, q, null, o, dirs, time, temp, pay, split, lineNo,
-                        distIdx != null ? null : pts, dist);
+                        distIdx != null ? null : pts, dist, fromQ, fromDirs);
                 String gross = row.grossField();
                 if (gross != null) {
                     int col;
                     if (gross.startsWith("q")) col = fs.get(qIdx[Integer.parseInt(gross.substring(1)) - 1]).col;
+                    else if (gross.startsWith("from_q")) col = fs.get(fqIdx[Integer.parseInt(gross.substring(6)) - 1]).col;
                     else if (gross.equals("distance")) col = fs.get(distIdx).col;
                     else {
                         int k = gross.length() > 1 ? Integer.parseInt(gross.substring(1)) - 1 : 0;
@@ -402,6 +447,20 @@ public final class MeasurementReader {
             for (String n : names) pts.add(rs.get(have.indexOf(n)).position());
             return new Measurement(id, first.q(), null, null, first.directions(), first.timeS(), first.tempC(), first.payloadKg(),
                     first.set(), first.line(), pts, Double.NaN);
+        }
+
+        /** The directions in columns {@code idx} (null: none) of a row; each 1, -1 or 0. */
+        int[] directions(int lineNo, List<Field> fs, int[] idx, String prefix) {
+            if (idx == null) return null;
+            int[] dirs = new int[idx.length];
+            for (int k = 0; k < idx.length; k++) {
+                Field f = fs.get(idx[k]);
+                double v = number(lineNo, f, prefix + (k + 1));
+                if (v != 1 && v != -1 && v != 0)
+                    throw error(lineNo, f.col, prefix + (k + 1), "direction must be 1, -1 or 0, not '" + f.text + "'");
+                dirs[k] = (int) v;
+            }
+            return dirs;
         }
 
         private static String name(Measurement.Split s) { return s == null ? "(none)" : s.fileName(); }

@@ -18,7 +18,8 @@ import org.robopro.models.Vec3;
  * @param pointNames names of the measured points of every pose, in order, when there are several
  *                   (tool points 1..P); empty for one point per pose and for distance rows
  * @param anchor     distance rows: the fixed anchor's position in the robot base frame when the
- *                   file gives it ({@code # anchor:}), m; null when unknown (identified)
+ *                   file gives it ({@code # anchor:}), m; null when unknown (identified) and for
+ *                   distances between pairs of poses
  */
 public record MeasurementSet(String source, Map<String, String> metadata, String frame, List<Measurement> rows,
                              List<String> pointNames, Vec3 anchor) {
@@ -39,6 +40,10 @@ public record MeasurementSet(String source, Map<String, String> metadata, String
             throw new IllegalArgumentException("positions and distances in one set");
         if (anchor != null && rows.stream().anyMatch(m -> !m.isDistance()))
             throw new IllegalArgumentException("an anchor belongs to distance rows only");
+        if (rows.stream().map(Measurement::isPair).distinct().count() > 1)
+            throw new IllegalArgumentException("lengths to an anchor and lengths between two poses in one set");
+        if (anchor != null && rows.stream().anyMatch(Measurement::isPair))
+            throw new IllegalArgumentException("a length between two poses has no anchor");
     }
 
     /** One measured point per pose (or distance rows), no anchor. */
@@ -57,8 +62,11 @@ public record MeasurementSet(String source, Map<String, String> metadata, String
     /** Measured points per pose (1 for single-point and distance data). */
     public int pointCount() { return pointNames.isEmpty() ? 1 : pointNames.size(); }
 
-    /** Distance-only data: every row a length to the anchor. */
+    /** Distance-only data: every row a length to the anchor, or between two poses. */
     public boolean isDistance() { return !rows.isEmpty() && rows.get(0).isDistance(); }
+
+    /** Distances between pairs of poses (a length artefact or ballbar probed by the robot): no anchor. */
+    public boolean isPairs() { return !rows.isEmpty() && rows.get(0).isPair(); }
 
     /** Positions are in the robot base frame: no instrument frame to identify. */
     public boolean inBaseFrame() { return BASE_FRAME.equalsIgnoreCase(frame.trim()); }

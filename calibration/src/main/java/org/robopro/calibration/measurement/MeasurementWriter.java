@@ -46,7 +46,7 @@ public final class MeasurementWriter {
         for (String n : set.pointNames())
             if (n.contains(",") || n.contains("\n") || n.startsWith("#") || n.isBlank())
                 throw new IllegalArgumentException("point name '" + n + "' cannot be written (comma, newline, leading # or blank)");
-        header(sb, set.metadata(), set.frame(), set.dof(), c, !set.pointNames().isEmpty(), set.isDistance(), set.anchor());
+        header(sb, set.metadata(), set.frame(), set.dof(), c, !set.pointNames().isEmpty(), set.isDistance(), set.anchor(), set.isPairs());
         for (Measurement m : set.rows()) {
             if (set.isDistance()) {
                 row(sb, m, set.dof(), jointTypes, c, null, m.distance(), null);
@@ -59,12 +59,15 @@ public final class MeasurementWriter {
 
     /** The magic line, metadata, units and the header row. */
     static void header(StringBuilder sb, Map<String, String> metadata, String frame, int dof, Columns c) {
-        header(sb, metadata, frame, dof, c, false, false, null);
+        header(sb, metadata, frame, dof, c, false, false, null, false);
     }
 
-    /** The header with a point column ({@code points}) or a distance column instead of x, y, z, and an anchor line. */
+    /**
+     * The header with a point column ({@code points}) or a distance column instead of x, y, z, and an
+     * anchor line; {@code pairs}: the first pose's joints (and directions) of distances between two poses.
+     */
     static void header(StringBuilder sb, Map<String, String> metadata, String frame, int dof, Columns c, boolean points,
-                       boolean distance, org.robopro.models.Vec3 anchor) {
+                       boolean distance, org.robopro.models.Vec3 anchor, boolean pairs) {
         sb.append("# robopro-measurements 1\n");
         boolean wroteFrame = false;
         for (Map.Entry<String, String> e : metadata.entrySet()) {
@@ -85,9 +88,11 @@ public final class MeasurementWriter {
         sb.append("pose");
         if (points) sb.append(",point");
         for (int k = 1; k <= dof; k++) sb.append(",q").append(k);
+        if (pairs) for (int k = 1; k <= dof; k++) sb.append(",from_q").append(k);
         sb.append(distance ? ",distance" : ",x,y,z");
         if (c.orientation()) sb.append(",qw,qx,qy,qz");
         if (c.directions()) for (int k = 1; k <= dof; k++) sb.append(",dir").append(k);
+        if (c.directions() && pairs) for (int k = 1; k <= dof; k++) sb.append(",from_dir").append(k);
         if (c.time()) sb.append(",time_s");
         if (c.temp()) sb.append(",temp_c");
         if (c.payload()) sb.append(",payload_kg");
@@ -112,12 +117,19 @@ public final class MeasurementWriter {
             boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
             sb.append(',').append(num(prismatic ? Units.mToMm(m.q(k)) : Units.radToDeg(m.q(k)), 9));
         }
+        double[] from = m.fromQ();
+        if (from != null)
+            for (int k = 0; k < dof; k++) {
+                boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
+                sb.append(',').append(num(prismatic ? Units.mToMm(from[k]) : Units.radToDeg(from[k]), 9));
+            }
         if (p == null) sb.append(',').append(num(Units.mToMm(distance), 6));
         else sb.append(',').append(num(Units.mToMm(p.x()), 6))
                 .append(',').append(num(Units.mToMm(p.y()), 6))
                 .append(',').append(num(Units.mToMm(p.z()), 6));
         if (c.orientation()) for (double v : m.orientation()) sb.append(',').append(num(v, 12));
         if (c.directions()) for (int v : m.directions()) sb.append(',').append(v);
+        if (c.directions() && from != null) for (int v : m.fromDirections()) sb.append(',').append(v);
         if (c.time()) sb.append(',').append(num(m.timeS(), 3));
         if (c.temp()) sb.append(',').append(num(m.tempC(), 3));
         if (c.payload()) sb.append(',').append(num(m.payloadKg(), 3));

@@ -158,6 +158,18 @@ public final class CalibrationReport {
      * robot base frame; each pose sees only the direction towards the anchor.
      */
     public static String distanceWords(CalibrationResult r) {
+        if (r.pairs()) {
+            List<String> kept = new ArrayList<>();
+            for (ParameterEstimate p : r.parameters())
+                if (p.fixed() && p.block().equals("geometry") && !p.name().startsWith("flange.")) kept.add(p.name());
+            return "distances between pairs of poses: a length between two places of the measured point does not change when "
+                    + "the whole robot is moved or turned, so where the robot stands is not observable: " + (kept.isEmpty()
+                    ? "the base placement" : String.join(", ", kept)) + " keep their nominal values. The data determine the "
+                    + "arm's shape (link lengths and offsets, joint zeros after joint 1) and the measured point on the flange: "
+                    + "the calibrated file predicts lengths and relative motions, not absolute positions; for those, measure "
+                    + "positions (x, y, z). Each pair shows only the length along the line between its two places, so vary "
+                    + "the pairs' directions and lengths";
+        }
         var a = r.anchor();
         String at = String.format(Locale.ROOT, "(%.3f, %.3f, %.3f) mm", Units.mToMm(a.x()), Units.mToMm(a.y()), Units.mToMm(a.z()));
         if (r.anchorGiven())
@@ -204,9 +216,12 @@ public final class CalibrationReport {
         if (r.distance()) {
             // Distance-only data: every error figure is a distance error |measured - predicted|.
             s.put("distance_only", true);
-            var a = r.anchor();
-            s.put("anchor_base_mm", List.of(Units.mToMm(a.x()), Units.mToMm(a.y()), Units.mToMm(a.z())));
-            s.put("anchor", r.anchorGiven() ? "given in the file, kept" : "identified");
+            if (r.pairs()) s.put("distances_between", "pairs of poses");
+            else {
+                var a = r.anchor();
+                s.put("anchor_base_mm", List.of(Units.mToMm(a.x()), Units.mToMm(a.y()), Units.mToMm(a.z())));
+                s.put("anchor", r.anchorGiven() ? "given in the file, kept" : "identified");
+            }
         }
         s.put("six_d", r.sixD());
         s.put("nominal_train_rms_mm", mm(r.nominalTrainRmsM()));
@@ -352,7 +367,7 @@ public final class CalibrationReport {
         h.append("<h1>Calibration of ").append(Html.esc(ctx.robot())).append("</h1>\n<p>Measurements: <code>")
          .append(Html.esc(ctx.measurements())).append("</code>");
         if (ctx.validation() != null) h.append("; validation: <code>").append(Html.esc(ctx.validation())).append("</code>");
-        String kind = r.sixD() ? " with orientations" : r.distance() ? " (distances to an anchor)"
+        String kind = r.sixD() ? " with orientations" : r.pairs() ? " (distances between pairs of poses)" : r.distance() ? " (distances to an anchor)"
                 : r.pointNames().isEmpty() ? " (positions)" : " (" + r.pointNames().size() + " points each: " + String.join(", ", r.pointNames()) + ")";
         h.append(". ").append(CalibrationResult.poses(r.train())).append(" training poses").append(kind)
          .append(", ").append(CalibrationResult.poses(r.validate())).append(" validation poses. Created ").append(Html.esc(ctx.created())).append(".</p>\n");

@@ -133,6 +133,43 @@ public final class CampaignSimulator {
     }
 
     /**
+     * The campaign as lengths between the true measured point's places at consecutive poses (a
+     * length artefact or a ballbar probed by the robot, a tracker's distance between two stops): a
+     * row per pose after the first of each file, with the pose before it as the first pose (its
+     * joints and directions; each end at its own conditions), the campaign's noise σ on each length
+     * (its own random stream).
+     */
+    public static Campaign asPairs(Campaign c) {
+        SimulationSettings s = c.settings();
+        if (s.sixD() || !c.morePoints().isEmpty()) throw new IllegalArgumentException("distances are measured to one point, without orientations");
+        Random rng = new Random(s.seed() * 31 + 37);
+        MeasurementSet train = pairs(c, c.measurements(), rng);
+        MeasurementSet validate = c.validation() == null ? null : pairs(c, c.validation(), rng);
+        return new Campaign(c.nominal(), c.truth(), s, train, validate, c.nominalErrorRmsM(), List.of(), null);
+    }
+
+    private static MeasurementSet pairs(Campaign c, MeasurementSet set, Random rng) {
+        if (set.size() < 2) throw new IllegalArgumentException("distances between consecutive poses need at least two poses per file");
+        List<Measurement> rows = new ArrayList<>();
+        Measurement prev = null;
+        Vec3 before = null;
+        for (Measurement m : set.rows()) {
+            Vec3 p = c.truth().tool(m.q(), PoseConditions.of(m)).position();
+            if (prev != null) {
+                double d = p.minus(before).norm() + c.truth().sigmaM() * rng.nextGaussian();
+                rows.add(new Measurement(m.poseId(), m.q(), null, null, m.directions(), m.timeS(), m.tempC(), m.payloadKg(), m.set(),
+                        m.line(), null, d, prev.q(), m.directions() == null ? null : prev.directions()));
+            }
+            prev = m;
+            before = p;
+        }
+        Map<String, String> meta = new LinkedHashMap<>(set.metadata());
+        meta.remove("frame");
+        meta.put("instrument", meta.getOrDefault("instrument", "simulated").replace("simulated", "simulated length between two poses"));
+        return new MeasurementSet(set.source(), meta, MeasurementSet.BASE_FRAME, rows, List.of(), null);
+    }
+
+    /**
      * The campaign as a draw-wire sensor (or a tracker in distance mode) would have measured it:
      * per pose the length from {@code anchorBase} (robot base frame, m) to the true measured
      * point, with the campaign's noise σ on the length (its own random stream). The anchor is not

@@ -388,7 +388,8 @@ public final class CalibrationWorkflow {
             }
             prov.put("calibration-measured-points-mm", String.join("; ", pts));
         }
-        if (r.distance()) {
+        if (r.pairs()) prov.put("calibration-distances", "between pairs of poses (no anchor)");
+        else if (r.distance()) {
             var a = r.anchor();
             prov.put("calibration-anchor-mm", String.format(Locale.ROOT, "%.5f,%.5f,%.5f%s", Units.mToMm(a.x()), Units.mToMm(a.y()),
                     Units.mToMm(a.z()), r.anchorGiven() ? " (given)" : " (identified, base frame)"));

@@ -83,6 +83,16 @@ class MultiPointDiagnosisTest {
     }
 
     @Test
+    void pairsOfPoses_areRefusedInWords_notMisread() {
+        Scenario.Trial t = Scenario.named("lost motion j2, directions recorded").trial(5, p -> p.withPoses(60, 0));
+        Data c = read("bar.csv", Readings.pairs(t.world(), IRB2000, t.campaign(), 5));
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> Diagnoser.diagnose(IRB2000, c.train(), null));
+        assertTrue(e.getMessage().startsWith("bar.csv") && e.getMessage().contains("not distances between pairs of poses")
+                && e.getMessage().contains("robopro calibrate"), e.getMessage());
+    }
+
+    @Test
     void distancesOnly_nothingConcealed_namesNothing() {
         Data c = distances("null irb2000", 3, 200, new double[] {1.3, -0.4, 0.05}, true);
         Diagnosis d = Diagnoser.diagnose(IRB2000, c.train(), c.validate());

@@ -22,6 +22,8 @@ class MeasurementReaderFuzzTest {
         parseOrInputError(text, null);
         // The spec example with a mutated data region exercises the row parser deeply.
         parseOrInputError(MeasurementReaderTest.GOOD + text, SIX);
+        // Distances between two poses: the first pose's columns and mutated rows.
+        parseOrInputError(PairDistanceTest.HEADER + text, SIX);
     }
 
     private static void parseOrInputError(String text, List<JointType> types) {

@@ -31,6 +31,13 @@ public final class RapidAstWriter {
         return b.append("ENDMODULE\n").toString();
     }
 
+    /** One statement as RAPID text without indentation (nested blocks indented; ends with a line break). */
+    public static String statement(Stmt s) {
+        StringBuilder b = new StringBuilder();
+        stmt(b, s, "");
+        return b.toString();
+    }
+
     /** One module item, each line starting with {@code ind}. */
     static void item(StringBuilder b, RapidAst.Item it, String ind) {
         if (it instanceof RapidAst.CommentLine c) b.append(ind).append('!').append(c.text()).append('\n');

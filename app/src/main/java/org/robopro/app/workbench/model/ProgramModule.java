@@ -28,7 +28,12 @@ import org.robopro.programs.ParsedModule;
 import org.robopro.programs.sim.MotionInterpreter;
 import org.robopro.programs.sim.MoveStep;
 import org.robopro.programs.sim.ProgramStep;
-import org.robopro.programs.sim.WaitStep;
+import org.robopro.programs.Declaration;
+import org.robopro.programs.Procedure;
+import org.robopro.programs.RapidParser;
+import org.robopro.programs.RapidValue;
+import org.robopro.programs.RapidWriter;
+import org.robopro.programs.rapid.RapidAst;
 
 /**
  * The workbench program as a RAPID module ({@link RapidModule}, programs module) and back.
@@ -42,21 +47,53 @@ import org.robopro.programs.sim.WaitStep;
  * (as the programs module's interpreter takes it): work object user frames are written as
  * {@code baseTuser = worldTbase^-1 worldTuser}.
  *
- * <p>From RAPID: the module's {@code main} is run by the interpreter (procedure calls inlined),
- * each motion becomes an instruction; a target or work object equal in value to one the cell
- * has already (same frame, same pose) is that one, so importing twice adds nothing; named
- * robtargets and jointtargets keep their names, inline ones get fresh names; MoveAbsJ stays
- * MoveAbsJ (its target holds the joints); waits are dropped. What was changed is listed in
+ * <p>From RAPID: the program is a view of the module's syntax tree. Each statement of the entry
+ * procedure is one line: a motion run once at the top level becomes an editable instruction
+ * (linked to its statement); every other statement (waits, I/O, calls, comments, loops, process
+ * instructions) is kept as written ({@link Instruction.Type#RAPID}, shown read-only). A target or
+ * work object equal in value to one the cell has already (same frame, same pose) is that one,
+ * so importing twice adds nothing; named robtargets and jointtargets keep their names, inline
+ * ones get fresh names; MoveAbsJ stays MoveAbsJ (its target holds the joints). The module is
+ * kept ({@link Source}); exporting writes it back with only what was edited rewritten
+ * ({@link #toRapid(WorkbenchModel, String)}): unchanged statements, declarations, other
+ * routines and comments come out as they were read. What was changed is listed in
  * {@link Imported#notes()}.
  */
 public final class ProgramModule {
     private ProgramModule() { }
 
-    /** The workbench program as a RAPID module named {@code name}. */
-    public static RapidModule toRapid(WorkbenchModel m, String name) { return toRapid(m, m.program(), name); }
+    /** The RAPID module a program was imported from and the procedure it was read from. */
+    public record Source(RapidModule module, String entry) {
+        public Source {
+            if (module == null || entry == null) throw new IllegalArgumentException("a source needs a module and an entry");
+        }
+    }
 
-    /** The model's targets, tool and work objects with {@code program} as PROC main. */
+    /**
+     * The workbench program as a RAPID module named {@code name}: for a program imported from
+     * RAPID, the imported module with the edits spliced in ({@link #spliced}); otherwise the
+     * module {@link #toRapid(WorkbenchModel, List, String)} writes.
+     */
+    public static RapidModule toRapid(WorkbenchModel m, String name) {
+        RapidModule own = toRapid(m, m.program(), name);
+        Optional<Source> src = m.programSource();
+        return src.isPresent() ? spliced(src.get(), own, m.program(), name) : own;
+    }
+
+    /**
+     * The RAPID text of {@code module} (the model's program, {@link #toRapid(WorkbenchModel, String)}):
+     * an imported program as its tree (what was not edited comes out byte for byte as read), a
+     * program taught here through {@link RapidWriter} (file precision, valid unique names).
+     */
+    public static org.robopro.programs.rapid.RapidExport write(WorkbenchModel m, RapidModule module) {
+        return m.programSource().isPresent()
+                ? new org.robopro.programs.rapid.RapidExport(org.robopro.programs.rapid.RapidAstWriter.write(module.tree()), List.of())
+                : RapidWriter.export(module);
+    }
+
+    /** The model's targets, tool and work objects with the motions of {@code program} as PROC main (kept statements left out). */
     public static RapidModule toRapid(WorkbenchModel m, List<Instruction> program, String name) {
+        program = program.stream().filter(i -> i.type().motion()).toList();
         Tool tool = m.tool();
         Pose worldTbase = m.worldTbase();
         RobotKinematics k = m.kinematics();
@@ -100,6 +137,7 @@ public final class ProgramModule {
                 // A target also reached by Cartesian moves is a robtarget by its name: its joints go inline.
                 case MOVEABSJ -> Move.moveAbsJ(cartesian.contains(i.target()) ? Ref.inline(jointTarget(to)) : Ref.to(i.target()),
                         speed(i.speedMmPerS()), zone(i.zoneMm()), tool.name(), wobj);
+                case RAPID -> throw new IllegalStateException("kept statements are left out above");
             });
         }
         b.procedure("main", body);
@@ -151,9 +189,120 @@ public final class ProgramModule {
         return Ref.inline(ZoneData.ofRapid(false, mm, 1.5 * mm, 1.5 * mm, 0.15 * mm, 1.5 * mm, 0.15 * mm));
     }
 
-    /** The program read from a RAPID module, in workbench terms. */
+    /**
+     * The imported module with the program's edits: the entry procedure's body is the program
+     * (kept statements as written; a motion still linked to its statement as written, unless it
+     * has an inline target that moved; other motions as {@code own} writes them), and the
+     * robtarget, jointtarget and wobjdata declarations whose values the workbench changed take
+     * {@code own}'s values; new ones a rewritten motion names are declared after the module's data. Every other item
+     * (tooldata, other data, routines, records, comments) is kept as read.
+     */
+    static RapidModule spliced(Source src, RapidModule own, List<Instruction> program, String name) {
+        // own at the file's precision, as an export writes it: what a changed part is written as.
+        RapidModule gen = RapidParser.parse(RapidWriter.export(own).text(), name);
+        RapidModule source = src.module();
+        RapidAst.Routine genMain = (RapidAst.Routine) gen.tree().items().stream()
+                .filter(it -> it instanceof RapidAst.Routine r && r.name().equalsIgnoreCase("main")).findFirst().orElseThrow();
+        Map<String, RapidAst.DataDecl> genDecls = new LinkedHashMap<>();
+        for (RapidAst.Item it : gen.tree().items())
+            if (it instanceof RapidAst.DataDecl d && TARGET_TYPES.contains(d.type().toLowerCase(Locale.ROOT)))
+                genDecls.put(d.name().toLowerCase(Locale.ROOT), d);
+        // A work object the workbench knows by another name (the cell's, same frame) keeps the module's name.
+        Map<String, String> sourceName = new java.util.HashMap<>();
+        for (RapidAst.DataDecl g : genDecls.values())
+            if (g.type().equalsIgnoreCase("wobjdata") && source.declaration(g.name()).isEmpty())
+                for (Declaration d : source.declarations())
+                    if (d.value() instanceof WObjData && sameValue(gen.declaration(g.name()), Optional.of(d)))
+                        sourceName.putIfAbsent(g.name().toLowerCase(Locale.ROOT), d.name());
+        List<RapidAst.Stmt> body = new ArrayList<>();
+        java.util.Set<String> named = new java.util.HashSet<>(); // data the rewritten statements name
+        int k = 0;
+        for (Instruction i : program) {
+            if (!i.type().motion()) { body.add(i.statement()); continue; }
+            RapidAst.Stmt fresh = genMain.body().get(k++);
+            if (i.statement() != null && inlineUnchanged(source, i, gen)) body.add(i.statement());
+            else {
+                if (fresh instanceof RapidAst.Call c) {
+                    List<RapidAst.Arg> args = new ArrayList<>();
+                    for (RapidAst.Arg a : c.args()) {
+                        if (a.value() instanceof RapidAst.Name n) {
+                            String to = sourceName.getOrDefault(n.name().toLowerCase(Locale.ROOT), n.name());
+                            named.add(to.toLowerCase(Locale.ROOT));
+                            a = new RapidAst.Arg(a.kind(), a.name(), new RapidAst.Name(to));
+                        }
+                        args.add(a);
+                    }
+                    fresh = new RapidAst.Call(c.name(), c.lateBinding(), args);
+                }
+                body.add(fresh);
+            }
+        }
+        List<RapidAst.Item> items = new ArrayList<>();
+        java.util.Set<String> declared = new java.util.HashSet<>();
+        int lastData = -1;
+        for (RapidAst.Item it : source.tree().items()) {
+            if (it instanceof RapidAst.DataDecl d) {
+                String key = d.name().toLowerCase(Locale.ROOT);
+                declared.add(key);
+                RapidAst.DataDecl g = genDecls.get(key);
+                boolean changed = g != null && d.dims().isEmpty() && g.type().equalsIgnoreCase(d.type())
+                        && !sameValue(source.declaration(d.name()), gen.declaration(d.name()));
+                items.add(changed ? new RapidAst.DataDecl(d.scope(), d.storage(), d.type(), d.name(), d.dims(), g.init()) : d);
+                lastData = items.size() - 1;
+            } else if (it instanceof RapidAst.Routine r && r.name().equalsIgnoreCase(src.entry()) && r.kind() == RapidAst.RoutineKind.PROC) {
+                items.add(new RapidAst.Routine(r.local(), r.kind(), r.returnType(), r.name(), r.params(), body, r.backward(),
+                        r.errorNumbers(), r.error(), r.undo()));
+            } else items.add(it);
+        }
+        List<RapidAst.Item> added = new ArrayList<>();
+        for (Map.Entry<String, RapidAst.DataDecl> e : genDecls.entrySet())
+            if (!declared.contains(e.getKey()) && named.contains(e.getKey())) added.add(e.getValue());
+        items.addAll(lastData + 1, added);
+        return RapidModule.of(new RapidAst.Module(name, source.tree().options(), items));
+    }
+
+    /** Data the workbench edits (targets and work objects); tooldata and everything else stays as read. */
+    private static final java.util.Set<String> TARGET_TYPES = java.util.Set.of("robtarget", "jointtarget", "wobjdata");
+
+    /** Poses and joints closer than this (m, rad) are unchanged by a write at the file's precision. */
+    private static final double UNCHANGED = 1e-6;
+
+    private static boolean sameValue(Optional<Declaration> a, Optional<Declaration> b) {
+        if (a.isEmpty() || b.isEmpty()) return a.isEmpty() == b.isEmpty();
+        return sameValue(a.get().value(), b.get().value());
+    }
+
+    private static boolean sameValue(RapidValue a, RapidValue b) {
+        if (a instanceof RobTarget x && b instanceof RobTarget y)
+            return samePose(x.pose(), y.pose(), UNCHANGED) && x.robconf().equals(y.robconf());
+        if (a instanceof org.robopro.programs.JointTarget x && b instanceof org.robopro.programs.JointTarget y) {
+            for (int k = 0; k < 6; k++) if (Math.abs(x.robax(k) - y.robax(k)) > UNCHANGED) return false;
+            return true;
+        }
+        if (a instanceof WObjData x && b instanceof WObjData y)
+            return x.robhold() == y.robhold() && samePose(x.uframe().toPose().times(x.oframe().toPose()),
+                    y.uframe().toPose().times(y.oframe().toPose()), UNCHANGED);
+        return a.equals(b);
+    }
+
+    /** A linked motion's inline targets (if any) still hold the workbench's targets. */
+    private static boolean inlineUnchanged(RapidModule source, Instruction i, RapidModule gen) {
+        Move mv = null;
+        for (Procedure p : source.procedures())
+            for (Statement st : p.body())
+                if (st instanceof Move m && source.node(m).orElse(null) == i.statement()) mv = m;
+        if (mv == null) return !(i.statement() instanceof RapidAst.Call c) || c.args().stream().noneMatch(a -> a.value() instanceof RapidAst.Aggregate);
+        if (mv.toPoint() instanceof Ref.Inline<?> to && !sameInline(to.value(), gen, i.target())) return false;
+        return !(mv.circPoint().orElse(null) instanceof Ref.Inline<?> c) || sameInline(c.value(), gen, i.via());
+    }
+
+    private static boolean sameInline(RapidValue v, RapidModule gen, String target) {
+        return target != null && gen.declaration(target).map(d -> sameValue(v, d.value())).orElse(false);
+    }
+
+    /** The program read from a RAPID module, in workbench terms; {@code source}: the module and procedure it came from. */
     public record Imported(String moduleName, Tool tool, List<WorkObject> workObjects, List<Target> targets,
-                           List<Instruction> program, List<String> notes) {
+                           List<Instruction> program, List<String> notes, Source source) {
         public Imported {
             workObjects = List.copyOf(workObjects);
             targets = List.copyOf(targets);
@@ -168,15 +317,26 @@ public final class ProgramModule {
      * unsupported frames) are InputExceptions naming the file, line and column.
      */
     public static Imported fromRapid(ParsedModule parsed, WorkbenchModel m, String entry) {
-        return imported(parsed.module().name(), MotionInterpreter.of(parsed).run(entry), m);
+        return imported(new Source(parsed.module(), entry), MotionInterpreter.of(parsed).run(entry), m);
     }
 
     /** Like {@link #fromRapid(ParsedModule, WorkbenchModel, String)} for a module not read from a RAPID file. */
     public static Imported fromRapid(RapidModule module, WorkbenchModel m, String entry) {
-        return imported(module.name(), MotionInterpreter.of(module).run(entry), m);
+        return imported(new Source(module, entry), MotionInterpreter.of(module).run(entry), m);
     }
 
-    private static Imported imported(String moduleName, List<ProgramStep> steps, WorkbenchModel m) {
+    private static Imported imported(Source src, List<ProgramStep> steps, WorkbenchModel m) {
+        String moduleName = src.module().name();
+        RapidAst.Routine routine = (RapidAst.Routine) src.module().tree().items().stream()
+                .filter(it -> it instanceof RapidAst.Routine r && r.name().equalsIgnoreCase(src.entry())).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("module " + moduleName + " has no procedure " + src.entry()));
+        // A motion is an instruction when its statement is one of the entry's own and runs once.
+        Map<RapidAst.Stmt, Integer> runs = new java.util.IdentityHashMap<>();
+        for (ProgramStep s : steps)
+            if (s instanceof MoveStep mv) mv.statement().ifPresent(st -> runs.merge(st, 1, Integer::sum));
+        java.util.Set<RapidAst.Stmt> own = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        for (RapidAst.Stmt st : routine.body()) if (runs.getOrDefault(st, 0) == 1) own.add(st);
+        Map<RapidAst.Stmt, Instruction> moves = new java.util.IdentityHashMap<>();
         RobotKinematics k = m.kinematics();
         Optional<InverseKinematics> ik = k.kinematicModel().map(InverseKinematics::of);
         Pose worldTbase = m.worldTbase();
@@ -191,10 +351,11 @@ public final class ProgramModule {
         Tool tool = null;
         double[] seed = m.q();
         int fresh = 0;
-        int waits = 0;
+        int elsewhere = 0;
         for (ProgramStep s : steps) {
-            if (s instanceof WaitStep) { waits++; continue; }
-            if (!(s instanceof MoveStep mv)) continue; // I/O and process instructions have no workbench instruction
+            if (!(s instanceof MoveStep mv)) continue; // waits, I/O and process instructions are kept as statements
+            if (mv.statement().isEmpty() || !own.contains(mv.statement().get())) { elsewhere++; continue; }
+            RapidAst.Stmt stmt = mv.statement().get();
             if (tool == null) {
                 Pose tcp = mv.tool().tframe().toPose();
                 Tool cur = m.tool();
@@ -219,7 +380,7 @@ public final class ProgramModule {
                     same = new Target(uniqueName(targets, mv.targetName(), fresh++), worldTtcp, q, k.confOf(q), wobj);
                     targets.put(same.name(), same);
                 }
-                program.add(new Instruction(Instruction.Type.MOVEABSJ, same.name(), speed, zone));
+                moves.put(stmt, new Instruction(Instruction.Type.MOVEABSJ, same.name(), speed, zone, null, stmt));
                 seed = q;
                 continue;
             }
@@ -241,17 +402,27 @@ public final class ProgramModule {
                 case MOVE_C -> Instruction.Type.MOVEC;
                 default -> Instruction.Type.MOVEJ;
             };
-            program.add(new Instruction(type, t.name(), speed, zone, via));
+            moves.put(stmt, new Instruction(type, t.name(), speed, zone, via, stmt));
         }
-        if (waits > 0) notes.add(waits + " WaitTime statement(s) dropped: the workbench program holds motions only");
+        int kept = 0;
+        for (RapidAst.Stmt st : routine.body()) {
+            Instruction i = moves.get(st);
+            if (i == null) kept++;
+            program.add(i != null ? i : Instruction.kept(st));
+        }
+        if (kept > 0) notes.add(kept + " statement(s) of " + src.entry() + " kept as written (shown read-only)");
+        if (elsewhere > 0)
+            notes.add(elsewhere + " motion(s) in called routines, loops or branches kept as written: not editable or drawn in the workbench");
         if (tool == null) tool = m.tool();
-        return new Imported(moduleName, tool, List.copyOf(wobjs.values()), List.copyOf(targets.values()), program, notes);
+        return new Imported(moduleName, tool, List.copyOf(wobjs.values()), List.copyOf(targets.values()), program, notes, src);
     }
 
     /** Poses closer than this (m, rad) are the same target or work object frame. */
     static final double SAME_POSE = 1e-6;
 
-    private static boolean samePose(Pose a, Pose b) { return a.distanceTo(b) < SAME_POSE && a.angleTo(b) < SAME_POSE; }
+    private static boolean samePose(Pose a, Pose b) { return samePose(a, b, SAME_POSE); }
+
+    private static boolean samePose(Pose a, Pose b, double tol) { return a.distanceTo(b) < tol && a.angleTo(b) < tol; }
 
     /**
      * The name an imported work object goes by: the cell's work object with the same frame (any

@@ -110,6 +110,7 @@ public final class ProgramRun {
         List<Integer> index = new ArrayList<>();
         for (int i = 0; i < program.size(); i++) {
             Instruction ins = program.get(i);
+            if (!ins.type().motion()) continue; // a statement kept from an imported module: not run here
             String missing = m.target(ins.target()).isEmpty() ? ins.target()
                     : ins.via() != null && m.target(ins.via()).isEmpty() ? ins.via() : null;
             if (missing != null) {
@@ -121,13 +122,26 @@ public final class ProgramRun {
             index.add(i);
         }
         RapidModule module = ProgramModule.toRapid(m, runnable, "Workbench");
-        List<ProgramStep> steps = runnable.isEmpty() ? List.of() : MotionInterpreter.of(module).run("main");
+        Optional<ProgramModule.Source> src = m.programSource();
+        // An imported program runs as the whole module with the edits spliced in: motions in
+        // called routines and loops are checked and drawn too, waits counted in the cycle time.
+        List<Instruction> lines = runnable;
+        if (src.isPresent()) {
+            lines = new ArrayList<>();
+            index.clear();
+            for (int i = 0; i < program.size(); i++)
+                if (!program.get(i).type().motion() || runnable.contains(program.get(i))) { lines.add(program.get(i)); index.add(i); }
+            module = ProgramModule.spliced(src.get(), module, lines, "Workbench");
+        }
+        String entry = src.map(ProgramModule.Source::entry).orElse("main");
+        List<ProgramStep> steps = lines.isEmpty() ? List.of() : MotionInterpreter.of(module).run(entry);
         Optional<KinematicModel> km = k.kinematicModel();
         CheckReport report = km.isPresent() && !steps.isEmpty() ? new PathChecker(km.get()).check(new Simulation(steps, List.of()), List.of(), cache) : null;
         List<Problem> collisions = clearance == null || report == null ? List.of() : clearance.check(steps, report, Optional.empty()).problems();
         List<double[]> qEnd = new ArrayList<>();
         for (int s = 0; s < steps.size(); s++) {
-            MoveStep mv = (MoveStep) steps.get(s);
+            if (!(steps.get(s) instanceof MoveStep mv)) { qEnd.add(null); continue; } // a wait or I/O: no motion
+            int line = src.isPresent() ? line(mv, entry) : s;
             List<Problem> ps = new ArrayList<>();
             double dur = 0;
             double[] q = null;
@@ -143,12 +157,27 @@ public final class ProgramRun {
                 q = sol.orElse(null);
             }
             for (Problem p : ps) if (p.severity() == Problem.Severity.ERROR) bad.add(p.target());
-            out.add(new Step(index.get(s), runnable.get(s), mv.label(), ps, dur));
+            if (line >= 0 && line < lines.size()) out.add(new Step(index.get(line), lines.get(line), mv.label(), ps, dur));
             qEnd.add(q);
         }
         out.sort((a, b) -> Integer.compare(a.index(), b.index()));
         for (Step st : out) if (!st.ok() && st.label().startsWith("main#?")) bad.add(st.problems().get(0).target());
         return sample(m, module, report, out, bad, steps, qEnd);
+    }
+
+    /**
+     * The line of the entry procedure a motion belongs to: its own statement at the top level,
+     * else the call or loop of the entry it ran in (the first element of its context,
+     * "main#4[i=2] > weld#3"); -1 when neither.
+     */
+    private static int line(MoveStep mv, String entry) {
+        String ctx = mv.context();
+        if (ctx.isEmpty()) return mv.procedure().equalsIgnoreCase(entry) ? mv.statementIndex() : -1;
+        String first = ctx.split(" > ", 2)[0];
+        int h = first.indexOf('#'), e = h + 1;
+        if (h < 0 || !first.substring(0, h).equalsIgnoreCase(entry)) return -1;
+        while (e < first.length() && Character.isDigit(first.charAt(e))) e++;
+        return e > h + 1 ? Integer.parseInt(first.substring(h + 1, e)) - 1 : -1;
     }
 
     private static ProgramRun sample(WorkbenchModel m, RapidModule module, CheckReport report, List<Step> out, Set<String> bad,

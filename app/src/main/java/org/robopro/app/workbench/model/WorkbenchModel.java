@@ -35,6 +35,8 @@ public final class WorkbenchModel {
     private List<WorkObject> workObjects = List.of();
     private List<Target> targets = List.of();
     private List<Instruction> program = List.of();
+    /** The RAPID module the program was imported from (its other statements and items are kept); null when taught here. */
+    private ProgramModule.Source source;
     private String calibrationReference;
     private volatile double[] q;
     private volatile String selection;
@@ -147,6 +149,7 @@ public final class WorkbenchModel {
             workObjects = s.workObjects();
             targets = s.targets();
             program = s.program();
+            source = s.source();
             if (!activeWorkObject.equalsIgnoreCase(Target.WOBJ0) && workObjects.stream().noneMatch(w -> w.name().equals(activeWorkObject)))
                 activeWorkObject = Target.WOBJ0;
             if (selection != null && !selectionExists(selection)) selection = null;
@@ -360,6 +363,9 @@ public final class WorkbenchModel {
 
     public synchronized List<Instruction> program() { return program; }
 
+    /** The RAPID module the program was imported from, empty when it was taught here. */
+    public synchronized Optional<ProgramModule.Source> programSource() { return Optional.ofNullable(source); }
+
     public void setProgram(List<Instruction> p) {
         synchronized (this) { program = List.copyOf(p); }
         fire(Change.PROGRAM);
@@ -448,6 +454,7 @@ public final class WorkbenchModel {
             workObjects = List.copyOf(w);
             targets = List.copyOf(imp.targets());
             program = List.copyOf(imp.program());
+            source = imp.source();
             selection = null;
         }
         for (Change c : new Change[] {Change.TOOL, Change.CELL, Change.TARGETS, Change.PROGRAM}) fire(c);
@@ -550,6 +557,7 @@ public final class WorkbenchModel {
             workObjects = List.copyOf(p.workObjects());
             targets = List.copyOf(p.targets());
             program = List.copyOf(p.program());
+            source = p.source();
             calibrationReference = p.calibrationReference();
             activeWorkObject = p.activeWorkObject().equalsIgnoreCase(Target.WOBJ0)
                     || workObjects.stream().anyMatch(w -> w.name().equals(p.activeWorkObject())) ? p.activeWorkObject() : Target.WOBJ0;
@@ -573,6 +581,6 @@ public final class WorkbenchModel {
     /** A snapshot of everything a project file holds. */
     public synchronized ProjectData snapshot() {
         return new ProjectData(robotRef, kinematics.description(), worldTbase, tool, objects, workObjects, targets,
-                program, calibrationReference, activeWorkObject, q);
+                program, calibrationReference, activeWorkObject, q, source);
     }
 }

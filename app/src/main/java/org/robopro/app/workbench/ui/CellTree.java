@@ -74,8 +74,8 @@ public final class CellTree extends JTree {
             root.add(targets);
             DefaultMutableTreeNode prog = new DefaultMutableTreeNode(new Item("Program main", null));
             for (Instruction i : model.program())
-                prog.add(new DefaultMutableTreeNode(new Item(i.type().rapid() + " " + (i.via() != null ? i.via() + ", " : "") + i.target(),
-                        "target:" + i.target())));
+                prog.add(new DefaultMutableTreeNode(!i.type().motion() ? new Item(i.statementText(), null)
+                        : new Item(i.type().rapid() + " " + (i.via() != null ? i.via() + ", " : "") + i.target(), "target:" + i.target())));
             root.add(prog);
             ((DefaultTreeModel) getModel()).setRoot(root);
             for (int r = 0; r < getRowCount() && r < 60; r++) expandRow(r);

@@ -209,13 +209,18 @@ public final class ProgramPanel extends JPanel {
         @Override public int getRowCount() { return wb.model().program().size(); }
         @Override public int getColumnCount() { return cols.length; }
         @Override public String getColumnName(int c) { return cols[c]; }
-        @Override public boolean isCellEditable(int r, int c) { return c >= 1 && c <= 5; }
+        /** Motions are edited here; a statement kept from an imported module is shown read-only. */
+        @Override public boolean isCellEditable(int r, int c) {
+            List<Instruction> p = wb.model().program();
+            return c >= 1 && c <= 5 && r < p.size() && p.get(r).type().motion();
+        }
 
         @Override
         public Object getValueAt(int r, int c) {
             List<Instruction> p = wb.model().program();
             if (r >= p.size()) return "";
             Instruction i = p.get(r);
+            if (!i.type().motion()) return c == 0 ? r + 1 : c == 1 ? "RAPID" : c == 2 ? i.statementText() : "";
             return switch (c) {
                 case 0 -> r + 1;
                 case 1 -> i.type().rapid();
@@ -245,6 +250,7 @@ public final class ProgramPanel extends JPanel {
                     case 5 -> new Instruction(i.type(), i.target(), i.speedMmPerS(), Double.parseDouble(v.toString()), i.via());
                     default -> i;
                 };
+                if (n.equals(new Instruction(i.type(), i.target(), i.speedMmPerS(), i.zoneMm(), i.via()))) return; // unchanged: stays linked
                 p.set(r, n);
                 wb.model().setProgram(p);
             } catch (IllegalArgumentException e) {

@@ -393,8 +393,10 @@ public final class WorkbenchFrame extends JFrame {
         var h = wb.model().history();
         Action u = action("undo"), r = action("redo");
         u.putValue(Action.NAME, h.undoLabel().map(l -> "Undo " + l).orElse("Undo"));
+        u.putValue(Action.SHORT_DESCRIPTION, u.getValue(Action.NAME) + " (Ctrl+Z)");
         u.setEnabled(h.undoLabel().isPresent());
         r.putValue(Action.NAME, h.redoLabel().map(l -> "Redo " + l).orElse("Redo"));
+        r.putValue(Action.SHORT_DESCRIPTION, r.getValue(Action.NAME) + " (Ctrl+Y)");
         r.setEnabled(h.redoLabel().isPresent());
     }
 

@@ -97,14 +97,16 @@ class ProgramModuleTest {
                 "  ENDPROC",
                 "ENDMODULE", "");
         ProgramModule.Imported imp = ProgramModule.fromRapid(RapidParser.parseDetailed(text, "Other.mod"), m, "main");
-        assertEquals(2, imp.program().size());
+        assertEquals(3, imp.program().size());
         assertEquals(Instruction.Type.MOVEABSJ, imp.program().get(0).type(), "MoveAbsJ stays MoveAbsJ");
         assertEquals(Instruction.Type.MOVEL, imp.program().get(1).type());
+        assertEquals(Instruction.Type.RAPID, imp.program().get(2).type(), "WaitTime kept as written");
+        assertEquals("WaitTime 0.5;", imp.program().get(2).statementText());
         assertEquals("tool0", imp.tool().name());
         Target t = imp.targets().stream().filter(x -> x.name().equals(imp.program().get(1).target())).findFirst().orElseThrow();
         assertEquals(1.1, t.worldTtcp().x(), 1e-9);
         assertEquals(0.9, t.worldTtcp().z(), 1e-9);
-        assertTrue(imp.notes().stream().anyMatch(n -> n.contains("WaitTime")), imp.notes().toString());
+        assertTrue(imp.notes().stream().anyMatch(n -> n.contains("kept as written")), imp.notes().toString());
         // MoveAbsJ's target holds its joints and is where they put the TCP.
         Target abs = imp.targets().stream().filter(x -> x.name().equals(imp.program().get(0).target())).findFirst().orElseThrow();
         assertEquals(Math.toRadians(20), abs.qTaught()[1], 1e-12);

@@ -31,6 +31,34 @@ class CalibrationPanelTest {
         assertTrue(text.contains("What to record next"), text);
     }
 
+    /** A world campaign read again by another instrument, parsed as a user's file. */
+    private static org.robopro.calibration.measurement.MeasurementSet read(String text) {
+        return org.robopro.calibration.measurement.MeasurementReader.parse("other.csv", text,
+                RobotLibrary.shipped("irb2000").joints().stream().map(j -> j.type()).toList());
+    }
+
+    @Test
+    void words_severalPointsAndDistances_countPointsAndDistancesNotPoses() {
+        var robot = RobotLibrary.shipped("irb2000");
+        Scenario.Trial t = Scenario.named("null irb2000").trial(7, p -> p.withPoses(60, 0));
+        var smr = read(org.robopro.world.Readings.points(t.world(), robot, t.campaign(),
+                new double[][] {{0.06, 0, 0.095}, {-0.03, 0.052, 0.095}, {-0.03, -0.052, 0.095}}, 7));
+        Diagnosis d = Diagnoser.diagnose(robot, smr, null);
+        assertTrue(CalibrationPanel.rmsLines(d.geometric()).contains("(180 points on 60 poses)"), CalibrationPanel.rmsLines(d.geometric()));
+        String text = CalibrationPanel.diagnosisReport(d);
+        assertTrue(text.contains("over the measured points of the training poses")
+                && text.contains(String.format(Locale.ROOT, "Noise floor about %.4f mm (sigma %.4f mm per axis)", Math.sqrt(3) * d.sigmaM() * 1e3,
+                d.sigmaM() * 1e3)), text);
+
+        var wire = read(org.robopro.world.Readings.distances(t.world(), robot, t.campaign(), new double[] {1.3, -0.4, 0.05}, true, 7));
+        Diagnosis w = Diagnoser.diagnose(robot, wire, null);
+        assertTrue(CalibrationPanel.rmsLines(w.geometric()).contains("(60 distances)"), CalibrationPanel.rmsLines(w.geometric()));
+        String wt = CalibrationPanel.diagnosisReport(w);
+        assertTrue(wt.contains("over the distances of the training poses")
+                && wt.contains(String.format(Locale.ROOT, "Noise floor about %.4f mm (sigma %.4f mm per distance)", w.sigmaM() * 1e3,
+                w.sigmaM() * 1e3)), wt);
+    }
+
     @Test
     void parameters_complianceScaleThermal_unitsAnEngineerReads() {
         assertEquals("c = 1.00e-06 ± 1.0e-08 rad/(N·m) (stiffness 1.00e+06 N·m/rad)",
