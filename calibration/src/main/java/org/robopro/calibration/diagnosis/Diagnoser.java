@@ -57,14 +57,16 @@ public final class Diagnoser {
      * @param progress       progress listener
      */
     public record Options(double alpha, double absorbedRatio, int maxEffects, double[] timeTaus, Cancellation cancel,
-                          Progress progress) {
+                          Progress progress, int folds) {
         public static Options defaults() {
-            return new Options(1e-3, 0.05, 4, new double[] {600, 1200, 2400, 4800}, Cancellation.NONE, Progress.NONE);
+            return new Options(1e-3, 0.05, 4, new double[] {600, 1200, 2400, 4800}, Cancellation.NONE, Progress.NONE, 5);
         }
 
-        public Options withAlpha(double a) { return new Options(a, absorbedRatio, maxEffects, timeTaus, cancel, progress); }
-        public Options withProgress(Progress p) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, p); }
-        public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress); }
+        public Options withAlpha(double a) { return new Options(a, absorbedRatio, maxEffects, timeTaus, cancel, progress, folds); }
+        public Options withProgress(Progress p) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, p, folds); }
+        public Options withCancel(Cancellation c) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, c, progress, folds); }
+        /** Folds of the cross-validation that judges the claims when no validation poses are given (below 2: none). */
+        public Options withFolds(int k) { return new Options(alpha, absorbedRatio, maxEffects, timeTaus, cancel, progress, k); }
     }
 
     // Physical plausibility bounds: what real joints and gears can have.
@@ -118,7 +120,103 @@ public final class Diagnoser {
         Directions.Prepared dirs = Directions.prepare(train, validate);
         train = dirs.train();
         validate = dirs.validate();
-        Run r = run(robot, train, validate, o, null, t0, dirs.source());
+        Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
+        if (validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()) return d;
+        return crossValidated(robot, train, o, t0, dirs.source(), d);
+    }
+
+    /** At least this many training poses per fold for the cross-validation of the claims. */
+    static final int MIN_POSES_PER_FOLD = 10;
+
+    /** What a named effect claims: its family and joints (a gear's harmonics or a mass model may differ between folds). */
+    static String claimKey(Effect e) {
+        StringBuilder b = new StringBuilder(e.kind().json);
+        for (int j : e.joints1()) b.append(" j").append(j);
+        return b.toString();
+    }
+
+    private static Set<String> namedKeys(Diagnosis d) {
+        Set<String> out = new java.util.LinkedHashSet<>();
+        for (Diagnosis.Finding f : d.effects()) if (!f.effect().isFallback()) out.add(claimKey(f.effect()));
+        return out;
+    }
+
+    /**
+     * Without validation poses, the claims are judged by K-fold cross-validation of the whole
+     * diagnosis: the training poses are dealt at random into K folds; the diagnosis runs K times,
+     * each time on the other folds with the held-out fold as its validation set (so every held-out
+     * gate inside it, selection included, sees poses it was not fitted to). A family stays named
+     * only when a majority of the folds name it on the same joints and the folds' diagnoses predict
+     * their held-out poses better than their geometric fits do; otherwise the diagnosis runs again
+     * without it (its structure stays located, and a fallback may model it).
+     */
+    private static Diagnosis crossValidated(RobotDescription robot, MeasurementSet train, Options o, long t0,
+                                            Directions.Source dirSource, Diagnosis d) {
+        int k = o.folds();
+        List<Measurement> rows = train.rows();
+        if (rows.size() < MIN_POSES_PER_FOLD * k) {
+            List<String> notes = new ArrayList<>(d.notes());
+            notes.add(String.format(Locale.ROOT, "no validation poses and only %d training poses: the claims were judged by "
+                    + "leave-one-pose-out error, not by %d-fold cross-validation (at least %d poses); measure validation poses to "
+                    + "confirm them", rows.size(), k, MIN_POSES_PER_FOLD * k));
+            return withNotes(d, notes);
+        }
+        Integer[] order = new Integer[rows.size()];
+        for (int i = 0; i < order.length; i++) order[i] = i;
+        java.util.Collections.shuffle(Arrays.asList(order), new java.util.Random(rows.size()));
+        int[] fold = new int[rows.size()];
+        for (int i = 0; i < order.length; i++) fold[order[i]] = i % k;
+        Options fo = o.withFolds(0).withProgress(Progress.NONE);
+        Map<String, Integer> count = new LinkedHashMap<>();
+        double geoSs = 0, effSs = 0;
+        for (int f = 0; f < k; f++) {
+            o.cancel().check();
+            o.progress().update("cross-validating the claims (fold " + (f + 1) + " of " + k + ")", (double) f / k);
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
+            Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of()).d;
+            for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
+            geoSs += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
+            effSs += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
+        }
+        double geoCv = Math.sqrt(geoSs / rows.size()), effCv = Math.sqrt(effSs / rows.size());
+        List<String> extra = new ArrayList<>();
+        extra.add(String.format(Locale.ROOT, "no validation poses: the claims were judged by %d-fold cross-validation of the whole "
+                + "diagnosis; held-out RMS %.4f mm with the geometric model, %.4f mm with each fold's effects", k, geoCv * 1e3, effCv * 1e3));
+        Set<String> excluded = new java.util.LinkedHashSet<>();
+        Diagnosis out = d;
+        for (int round = 0; round < 3; round++) {
+            Set<String> failing = new java.util.LinkedHashSet<>();
+            for (String key : namedKeys(out)) {
+                int n = count.getOrDefault(key, 0);
+                if (2 * n <= k || !(effCv < geoCv)) failing.add(key);
+            }
+            if (failing.isEmpty()) break;
+            for (String key : failing) {
+                int n = count.getOrDefault(key, 0);
+                extra.add(String.format(Locale.ROOT, "%s is not claimed: %s", key, 2 * n <= k
+                        ? String.format(Locale.ROOT, "only %d of %d cross-validation folds name it", n, k)
+                        : "the folds' effects do not lower the held-out error"));
+            }
+            excluded.addAll(failing);
+            out = prepared(robot, train, null, o, t0, dirSource, excluded);
+        }
+        List<String> notes = new ArrayList<>(out.notes());
+        notes.addAll(extra);
+        return withNotes(out, notes);
+    }
+
+    private static Diagnosis withNotes(Diagnosis d, List<String> notes) {
+        return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
+                d.finalTrainRmsM(), d.finalValidateRmsM(), d.outliers(), d.notIdentifiable(), d.implausible(), d.recommendations(),
+                notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
+                d.directions(), d.located(), d.warnings());
+    }
+
+    /** The diagnosis of data whose directions are prepared, with the outlier rule judged under the extended model. */
+    private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
+                                      Directions.Source dirSource, Set<String> excluded) {
+        Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
         Diagnosis d = r.d;
         if (d.effects().isEmpty()) return d;
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
@@ -128,7 +226,7 @@ public final class Diagnoser {
         if (!d.outliers().isEmpty()) {
             // The geometric fit's outliers may be the peak of a structure the effects now model, which a
             // model fitted without them cannot judge: judge them with the effects fitted to every pose.
-            Run all = run(robot, train, validate, o, List.of(), t0, dirs.source());
+            Run all = run(robot, train, validate, o, List.of(), t0, dirSource, excluded);
             if (!all.d.effects().isEmpty()) {
                 List<String> underAll = all.outliersUnder;
                 if (underAll.isEmpty()) return all.d;
@@ -138,7 +236,7 @@ public final class Diagnoser {
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
         // Many poses beyond 5 robust sigmas are a structure the model leaves (reported), not bad measurements.
         if (under.size() > Math.max(3, 0.05 * train.size())) return d;
-        return run(robot, train, validate, o, under, t0, dirs.source()).d;
+        return run(robot, train, validate, o, under, t0, dirSource, excluded).d;
     }
 
     /** A diagnosis and the poses the calibration's outlier rule flags under its extended model. */
@@ -175,9 +273,12 @@ public final class Diagnoser {
         return false;
     }
 
-    /** One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses are left out. */
+    /**
+     * One diagnosis; {@code forcedOutliers} null uses the calibration's rule, else exactly these poses
+     * are left out. Families whose {@link #claimKey} is in {@code excluded} are not candidates.
+     */
     private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
-                           List<String> forcedOutliers, long t0, Directions.Source dirSource) {
+                           List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
         o.progress().update("geometric calibration", 0);
@@ -210,7 +311,7 @@ public final class Diagnoser {
         double t0C = hasTemp ? rows.stream().mapToDouble(Measurement::tempC).average().orElse(0) : Double.NaN;
         List<Effect> family = new ArrayList<>();
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null))
-            if (e.testableOn(rows)) family.add(e);
+            if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
         if (manyOutliers)
             notes.add("more than 5 % of the poses lie beyond 5 robust sigmas of the geometric fit: too many to be bad "
                     + "measurements, so none was left out (the structure they show is located below)");
@@ -245,7 +346,8 @@ public final class Diagnoser {
         Tester geoTester = w.tester(fit);
         List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
-        family.addAll(fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime));
+        for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
+            if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
@@ -281,7 +383,10 @@ public final class Diagnoser {
                                 merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray());
                             }
                     String label = merged.label();
-                    if (family.stream().noneMatch(f -> f.label().equals(label))) { family.add(merged); remaining.add(merged); }
+                    if (family.stream().noneMatch(f -> f.label().equals(label)) && (merged.isFallback() || !excluded.contains(claimKey(merged)))) {
+                        family.add(merged);
+                        remaining.add(merged);
+                    }
                 }
                 scanned = t;
                 scannedFit = fit;
@@ -308,7 +413,9 @@ public final class Diagnoser {
             if (best == null || selected.size() >= o.maxEffects()) break;
             implausible.clear(); // only those still significant when selection stops are reported
             Effect chosen = best.effect;
-            remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL));
+            // One form per effect: a second thermal strain, or the same joint's compliance with other masses, is not a second effect.
+            remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL)
+                    || (chosen.kind() == Effect.Kind.COMPLIANCE && e.kind() == Effect.Kind.COMPLIANCE && e.joint() == chosen.joint()));
             notIdent.remove(chosen.label());
             int older = -1; // a periodic effect of the same joint whose harmonics the chosen one holds: one effect, not two
             for (int k = 0; k < selected.size(); k++)
@@ -346,6 +453,7 @@ public final class Diagnoser {
         timer.mark("stepwise");
         // Held-out rule: a named effect must beat its aliases on the leave-one-pose-out error; when the
         // smooth fallback or another family predicts better, the effect is replaced.
+        Set<String> refusedAliases = new HashSet<>();
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
             if (e.kind() == Effect.Kind.SMOOTH) continue;
@@ -354,14 +462,22 @@ public final class Diagnoser {
             Effect best = null;
             double bestPress = own;
             for (Effect a : aliases(e, family, selected)) {
+                if (refusedAliases.contains(a.label())) continue;
                 double pa = at.pressReplacing(k, a, w.conditions);
                 if (pa < bestPress * (1 - ALIAS_MARGIN)) { bestPress = pa; best = a; }
             }
             if (best == null) continue;
             LOG.debug("alias: {} replaced by {} (PRESS {} -> {})", e.label(), best.label(), own, bestPress);
-            aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
-                    + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, false);
+            if (selected.contains(best))
+                aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
+                        + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
+            else {
+                refusedAliases.add(best.label());
+                aliasNotes.add(String.format(Locale.ROOT, "%s predicts left-out poses better than %s (leave-one-pose-out "
+                        + "error %.1f against %.1f), but its estimate leaves the physical bounds once fitted with the rest, "
+                        + "so %s stays", best.label(), e.label(), bestPress, own, e.label()));
+            }
             k = -1; // re-check from the start with the new set
             if (++aliasRounds > 4) break;
         }
@@ -380,16 +496,23 @@ public final class Diagnoser {
         }
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
-        // With validation data, an effect whose addition did not lower the validation error is not claimed.
-        for (int k = selected.size() - 1; k >= 0; k--) {
-            double before = k == 0 ? geoVal : steps.get(k - 1).validateRms, after = steps.get(k).validateRms;
-            if (Double.isFinite(before) && Double.isFinite(after) && !(after < before)) {
-                Effect gone = selected.remove(k);
-                absorbedCols.remove(gone);
-                steps.remove(k);
-                aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
-                        + (gone.isFallback() ? "so it is not used (the structure stays reported as located)" : "so it is not claimed"));
-                fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+        fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
+        // With validation data, an effect is kept only when the final model predicts the validation poses better with
+        // it than refitted without it (position and orientation, each over its noise).
+        for (int k = selected.size() - 1; k >= 0 && w.validate != null && w.validate.size() > 0; k--) {
+            Fit without = w.fit(withoutOne(selected, k), absorbedCols, w.dropEffect(fit, k), null);
+            double with = w.validateError(fit), wo = w.validateError(without);
+            if (with < wo) continue;
+            LOG.debug("validation: dropped {} ({} with, {} without)", selected.get(k).label(), with, wo);
+            Effect gone = selected.remove(k);
+            absorbedCols.remove(gone);
+            steps.remove(k);
+            aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
+                    + (gone.isFallback() ? "so it is not used (the structure stays reported as located)" : "so it is not claimed"));
+            fit = without;
+            if (!steps.isEmpty()) {
+                Step last = steps.remove(steps.size() - 1);
+                steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
             }
         }
         timer.mark("aliases");
@@ -487,6 +610,10 @@ public final class Diagnoser {
                         + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
                         + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
         }
+        double stated = statedSigmaM(trainAll);
+        double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
+        if (Double.isFinite(stated) && !trainAll.isDistance() && heldOutRms > STATED_FLOOR_MARGIN * Math.sqrt(3) * stated)
+            warnings.add(0, aboveStatedFloor(heldOutRms, Double.isFinite(valFinal), stated, selected, foundFinal.isEmpty()));
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
@@ -521,11 +648,22 @@ public final class Diagnoser {
         selected.add(by);
         absorbedCols.put(by, bc.absorbedMask);
         Fit f = w.fit(selected, absorbedCols, without.full, bc);
-        double valWithout = w.validateRms(without), valWith = w.validateRms(f);
-        if (heldOut && Double.isFinite(valWithout) && !(valWith < valWithout)) {
+        double valWith = w.validateRms(f);
+        boolean worseHeldOut = heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without));
+        // A family whose estimate leaves physical bounds once fitted jointly with the rest does not take the place.
+        boolean implausible = !by.isFallback() && !w.plausibleIn(f, selected, selected.size() - 1);
+        if (worseHeldOut || implausible) {
             selected.remove(selected.size() - 1);
             absorbedCols.remove(by);
-            return without;
+            if (heldOut) return without;
+            // An alias that fails keeps the effect it was to replace.
+            Candidate ec = w.tester(without).test(e, w.conditions);
+            if (ec.keptColumns == 0) return without;
+            selected.add(e);
+            absorbedCols.put(e, ec.absorbedMask);
+            Fit back = w.fit(selected, absorbedCols, without.full, ec);
+            steps.add(new Step(old.candidate, back.trainRms, w.validateRms(back)));
+            return back;
         }
         bc.threshold = old.candidate.threshold;
         steps.add(new Step(bc, f.trainRms, valWith));
@@ -600,6 +738,9 @@ public final class Diagnoser {
                 }
                 String why = null;
                 double pressWithout = at.pressReplacing(k, null, null);
+                if (LOG.isDebugEnabled())
+                    LOG.debug(String.format(Locale.ROOT, "claim check %s: press own %.1f without %.1f best rival %s %.1f", e.label(),
+                            pressOwn, pressWithout, best == null ? "-" : best.label(), bestPress));
                 if (!(pressOwn < pressWithout)) {
                     why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
@@ -682,6 +823,42 @@ public final class Diagnoser {
         return fit;
     }
 
+    /**
+     * A named effect must still be needed in the model finally fitted: the fallbacks that took the
+     * place of withdrawn families may carry the structure it was selected for, leaving it a share
+     * of the noise that happens to lower the leave-one-pose-out error by a hair. Each named effect
+     * is tested once more against the whole final model (its partial F-test at the backward
+     * step's Holm threshold, and its physical plausibility); the weakest that fails leaves, until
+     * every one passes.
+     */
+    private static Fit stillSignificant(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
+                                        List<Step> steps, int familySize, List<String> notes) {
+        while (selected.stream().anyMatch(e -> !e.isFallback())) {
+            double threshold = w.o.alpha() / Math.max(1, familySize - selected.size() + 1);
+            double[] p = new double[1];
+            int drop = w.weakest(fit, selected, threshold, e -> !e.isFallback(), p);
+            if (drop < 0) break;
+            Effect gone = selected.remove(drop);
+            absorbedCols.remove(gone);
+            steps.remove(drop);
+            LOG.debug("final backward: dropped {} (p {})", gone.label(), p[0]);
+            notes.add(String.format(Locale.ROOT, "%s is not claimed: in the final model, beside the structures located, it "
+                    + "is no longer significant (p = %.2g against the threshold %.2g) or no longer plausible", gone.label(), p[0], threshold));
+            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
+            if (!steps.isEmpty()) {
+                Step last = steps.remove(steps.size() - 1);
+                steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
+            }
+        }
+        return fit;
+    }
+
+    private static List<Effect> withoutOne(List<Effect> es, int k) {
+        List<Effect> out = new ArrayList<>(es);
+        out.remove(k);
+        return out;
+    }
+
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
     private static List<Effect> refinements(Effect e, Work w, List<Measurement> rows) {
         List<Effect> out = new ArrayList<>();
@@ -751,6 +928,53 @@ public final class Diagnoser {
     private static double share(Locator.Found f, Tester t) { return t.rss0 > 0 ? Math.min(1, f.c.drss / t.rss0) : 0; }
 
     private static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
+
+    /** Above this multiple of the floor the instrument's stated noise gives, the report says first that error is left. */
+    static final double STATED_FLOOR_MARGIN = 1.2;
+
+    private static final java.util.regex.Pattern STATED_SIGMA =
+            java.util.regex.Pattern.compile("sigma\\s*[=:]?\\s*([0-9]*\\.?[0-9]+(?:e[-+]?[0-9]+)?)\\s*(mm|um|µm|m)(?![a-z])");
+
+    /**
+     * The instrument's noise per axis as the measurement file states it (metadata
+     * {@code # instrument: laser tracker, sigma 0.03 mm}), m; NaN when it is not stated. It is the
+     * user's statement of the instrument, not an estimate from the residuals: a residual-based
+     * floor grows with whatever structure the model leaves and cannot show it.
+     */
+    static double statedSigmaM(MeasurementSet s) {
+        String v = s.metadata() == null ? null : s.metadata().get("instrument");
+        if (v == null) return Double.NaN;
+        java.util.regex.Matcher m = STATED_SIGMA.matcher(v.toLowerCase(Locale.ROOT));
+        if (!m.find()) return Double.NaN;
+        double x = Double.parseDouble(m.group(1));
+        double scale = switch (m.group(2)) {
+            case "mm" -> 1e-3;
+            case "m" -> 1;
+            default -> 1e-6;
+        };
+        return x > 0 ? x * scale : Double.NaN;
+    }
+
+    /** The first warning when the error left exceeds the instrument's stated floor: how much, and what to measure. */
+    static String aboveStatedFloor(double rms, boolean validation, double sigma, List<Effect> selected, boolean nothingLocated) {
+        double floor = Math.sqrt(3) * sigma;
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "The final model misses the %s poses by %.4f mm RMS, "
+                + "%.1f x the noise floor of the instrument's stated sigma (%.4f mm, from %.4f mm per axis): error is left that "
+                + "the model does not hold", validation ? "validation" : "training", rms * 1e3, rms / floor, floor * 1e3, sigma * 1e3));
+        b.append(nothingLocated ? ", and the scan locates no structure in it." : " (where it lives is said below).");
+        for (Effect e : selected)
+            if (e.kind() == Effect.Kind.BACKLASH) {
+                int j = e.joint() + 1;
+                b.append(String.format(Locale.ROOT, " Lost motion of joint %d is modelled as a constant half-play; if the lag "
+                        + "grows with the size of the move before each pose (friction winding up) or differs between the two "
+                        + "flanks, a constant play leaves this. To tell: approach a few poses of joint %d from each side after "
+                        + "moves of several sizes (0.5, 2, 10 and 30 degrees) and compare the lag.", j, j));
+            }
+        if (selected.stream().noneMatch(e -> e.kind() == Effect.Kind.BACKLASH))
+            b.append(" Re-measure a few poses several times to check the instrument's noise, and measure more poses spread "
+                    + "over every joint's range.");
+        return b.toString();
+    }
 
     /** What the report says first when the model leaves error above the noise: what, where, what to measure next. */
     static List<String> warnings(List<Locator.Found> left, List<Effect> selected, Fit fit, Work w, double rssLeft, int dfLeft,
@@ -1017,6 +1241,25 @@ public final class Diagnoser {
             return q.measurementRms(r, 1);
         }
 
+        /**
+         * The held-out error on the validation poses as the fit weighs its training rows: the sum
+         * of squared residuals, each over its noise σ (position and, for 6-D data, orientation).
+         * An effect seen mostly in the orientation (a wrist joint's error) moves the position RMS
+         * by less than its noise; this judges it on what it predicts. NaN without validation poses.
+         */
+        double validateError(Fit f) {
+            if (validate == null || validate.size() == 0) return Double.NaN;
+            boolean six = sixD && validate.hasOrientation();
+            double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
+            IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, f.problem.effects(), full);
+            q.setSigmas(sigmaPos, sigmaRot);
+            double[] r = new double[q.residualCount()];
+            q.evaluateFull(full, r, null);
+            double ss = 0;
+            for (double v : r) ss += v * v;
+            return ss;
+        }
+
         private static double[] dropToolRotation(double[] full, int toolOff) {
             double[] out = new double[full.length - 3];
             System.arraycopy(full, 0, out, 0, toolOff + 3);
@@ -1075,6 +1318,11 @@ public final class Diagnoser {
          * beyond 3σ; the worst one, or -1 when all stay.
          */
         int weakest(Fit f, List<Effect> selected, double threshold) {
+            return weakest(f, selected, threshold, e -> true, new double[1]);
+        }
+
+        /** {@link #weakest(Fit, List, double)} among the effects {@code which} accepts; {@code pOut[0]} gets the dropped one's p. */
+        int weakest(Fit f, List<Effect> selected, double threshold, java.util.function.Predicate<Effect> which, double[] pOut) {
             int n = f.nf, m = f.m;
             int[] free = f.problem.freeIndices();
             double[] sig = effectSigmas(f);
@@ -1084,6 +1332,7 @@ public final class Diagnoser {
             int worst = -1;
             double worstP = -1;
             for (int k = 0; k < selected.size(); k++) {
+                if (!which.test(selected.get(k))) continue;
                 int a = f.problem.effectOffset(k), b = a + selected.get(k).size();
                 List<Integer> mine = new ArrayList<>(), rest = new ArrayList<>();
                 for (int c = 0; c < n; c++) (free[c] >= a && free[c] < b ? mine : rest).add(c);
@@ -1102,11 +1351,33 @@ public final class Diagnoser {
                 c.effect = selected.get(k);
                 c.estimate = Arrays.copyOfRange(f.full, a, b);
                 c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
+                c.absorbedMask = fixedMask(f, a, b);
                 plausibility(c);
                 double score = c.plausible ? p : 2;
-                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; }
+                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; pOut[0] = p; }
             }
             return worst;
+        }
+
+        /** Whether selected effect {@code k}'s estimate in fit {@code f} is physically plausible ({@link #plausibility}). */
+        boolean plausibleIn(Fit f, List<Effect> selected, int k) {
+            double[] sig = effectSigmas(f);
+            int eff0 = f.problem.effectOffset(0), a = f.problem.effectOffset(k), b = a + selected.get(k).size();
+            Candidate c = new Candidate();
+            c.effect = selected.get(k);
+            c.estimate = Arrays.copyOfRange(f.full, a, b);
+            c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
+            c.absorbedMask = fixedMask(f, a, b);
+            plausibility(c);
+            return c.plausible;
+        }
+
+        /** Which of the parameters a..b of a fit are held fixed (columns left to the geometry). */
+        static boolean[] fixedMask(Fit f, int a, int b) {
+            boolean[] mask = new boolean[b - a];
+            Arrays.fill(mask, true);
+            for (int i : f.problem.freeIndices()) if (i >= a && i < b) mask[i - a] = false;
+            return mask;
         }
 
         /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
@@ -1659,7 +1930,8 @@ public final class Diagnoser {
             case COMPLIANCE -> {
                 if (e.perMass()) {
                     boolean ok = true;
-                    for (int i = 0; i < v.length; i++) if (!overlaps(v[i], sd[i], 0, 3 / MIN_STIFFNESS)) ok = false;
+                    for (int i = 0; i < v.length; i++)
+                        if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, 3 / MIN_STIFFNESS)) ok = false;
                     c.plausible = ok;
                     c.plausibility = "every mass's compliance coefficient positive and below " + String.format(Locale.ROOT, "%.0e", 3 / MIN_STIFFNESS);
                     return;

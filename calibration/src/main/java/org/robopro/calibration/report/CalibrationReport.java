@@ -375,8 +375,9 @@ public final class CalibrationReport {
 
         // Distances: one length error per pose; several points: one error per pose and point.
         String err = r.distance() ? "distance error (mm)" : "position error (mm)";
-        String counted = r.pointNames().isEmpty() ? "poses" : "points", along = r.pointNames().isEmpty() ? "pose (file order)"
-                : "measured point (poses in file order, " + r.pointNames().size() + " each)";
+        String counted = r.pointNames().isEmpty() ? "poses" : "points", along = r.pointNames().isEmpty()
+                ? "pose (training, then validation; each in file order)"
+                : "measured point (training, then validation poses in file order, " + r.pointNames().size() + " each)";
         h.append("<h2>Result</h2><table><tr><th class=\"l\">").append(err).append("</th><th class=\"l\">model</th><th>").append(counted).append("</th>")
          .append("<th>RMS</th><th>mean</th><th>median</th><th>95th pct</th><th>max</th></tr>");
         statsRows(h, "training", r.train(), false);
@@ -396,10 +397,11 @@ public final class CalibrationReport {
                 r.conditionNumber(), r.observability()));
 
         List<Svg.Series> before = new ArrayList<>(), after = new ArrayList<>();
-        addSeries(before, r.train(), false, "training", "#1f77b4");
-        addSeries(before, r.validate(), false, "validation", "#ff7f0e");
-        addSeries(after, r.train(), true, "training", "#1f77b4");
-        addSeries(after, r.validate(), true, "validation", "#ff7f0e");
+        // Validation errors are numbered on from the training ones, so the two sets do not overlap.
+        addSeries(before, r.train(), false, "training", "#1f77b4", 0);
+        addSeries(before, r.validate(), false, "validation", "#ff7f0e", r.train().size());
+        addSeries(after, r.train(), true, "training", "#1f77b4", 0);
+        addSeries(after, r.validate(), true, "validation", "#ff7f0e", r.train().size());
         if (cv != null) {
             h.append(String.format(Locale.ROOT, "<h2>Cross-validation</h2>\n<p>%d folds (seed %d): each fold is predicted by the model "
                     + "fitted on the other folds; every training pose is held out once.</p><table><tr><th>fold</th><th>training poses</th>"
@@ -494,10 +496,10 @@ public final class CalibrationReport {
         }
     }
 
-    private static void addSeries(List<Svg.Series> out, List<PoseError> es, boolean calibrated, String name, String color) {
+    private static void addSeries(List<Svg.Series> out, List<PoseError> es, boolean calibrated, String name, String color, int first) {
         if (es.isEmpty()) return;
         double[] x = new double[es.size()];
-        for (int i = 0; i < x.length; i++) x[i] = i + 1;
+        for (int i = 0; i < x.length; i++) x[i] = first + i + 1;
         out.add(new Svg.Series(name, x, values(es, calibrated), color, false));
     }
 

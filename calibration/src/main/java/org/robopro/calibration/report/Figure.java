@@ -85,15 +85,13 @@ public final class Figure {
         for (Line l : lines) if (Double.isFinite(l.y()) && (!logY || l.y() > 0)) { ymin = Math.min(ymin, l.y()); ymax = Math.max(ymax, l.y()); }
         if (!Double.isFinite(xmin)) { xmin = 0; xmax = 1; }
         if (!Double.isFinite(ymin)) { ymin = logY ? 0.1 : 0; ymax = 1; }
-        // Points (not lines) are kept off the frame: the axes reach 2 % past them.
-        if (series.stream().anyMatch(s -> !s.line())) {
-            double px = 0.02 * (xmax - xmin), py = 0.02 * (ymax - ymin);
-            xmin -= px;
-            xmax += px;
-            if (!logY) { ymin = ymin < 0 ? ymin - py : ymin; ymax += py; }
-        }
         Axis.Ticks xt = Axis.linear(xmin, xmax, Math.max(2, (int) (w / 90)));
         Axis.Ticks yt = logY ? Axis.log(ymin, ymax) : Axis.linear(Math.min(0, ymin), ymax, Math.max(2, (int) (h / 55)));
+        // Points (not lines) on the first or last tick are kept off the frame: the axis reaches a little past that tick.
+        if (series.stream().anyMatch(s -> !s.line())) {
+            xt = margin(xt, xmin, xmax, true);
+            if (!logY) yt = margin(yt, ymin, ymax, yt.lo() < 0);
+        }
         Area a = area(w, h, title, yLabel, yt, c);
         frame(c, w, h, a, title, xLabel, yLabel, xt, yt, null);
         for (Series s : series) {
@@ -113,6 +111,15 @@ public final class Figure {
         for (Series s : series) keys.add(new Key(s.name(), s.color(), s.line(), false));
         referenceLines(c, a, yt, logY, lines, keys);
         legend(c, a, title, keys);
+    }
+
+    /** {@code t} reaching 3 % further at an end the data touch (the low end only when {@code low}); the same ticks. */
+    private static Axis.Ticks margin(Axis.Ticks t, double min, double max, boolean low) {
+        double span = t.hi() - t.lo(), lo = t.lo(), hi = t.hi();
+        if (!(span > 0)) return t;
+        if (low && min - lo < 0.01 * span) lo -= 0.03 * span;
+        if (hi - max < 0.01 * span) hi += 0.03 * span;
+        return new Axis.Ticks(lo, hi, t.values(), t.labels(), t.log());
     }
 
     /**

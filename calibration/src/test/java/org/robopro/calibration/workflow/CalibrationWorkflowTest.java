@@ -99,6 +99,21 @@ class CalibrationWorkflowTest {
                 "calibration-validate-rms-mm"))
             assertTrue(a.calibrated().provenance().containsKey(k), k);
         assertEquals(3, a.folds().size());
+        // The per-pose error plots number the validation poses on from the training ones: the two sets do not overlap.
+        String html = a.reportHtml();
+        int after = html.indexOf("After: calibrated model");
+        String svg = html.substring(html.lastIndexOf("<svg", after), html.indexOf("</svg>", after));
+        double trainMax = Double.NEGATIVE_INFINITY, valMin = Double.POSITIVE_INFINITY;
+        var circle = java.util.regex.Pattern.compile("<circle cx=\"([0-9.]+)\"[^>]*fill=\"(#[0-9a-f]+)\"").matcher(svg);
+        int n = 0;
+        while (circle.find()) {
+            double x = Double.parseDouble(circle.group(1));
+            if (circle.group(2).equals("#1f77b4")) trainMax = Math.max(trainMax, x);
+            else valMin = Math.min(valMin, x);
+            n++;
+        }
+        assertEquals(60, n, "one point per pose");
+        assertTrue(valMin > trainMax, "validation points right of every training point: " + valMin + " vs " + trainMax);
         Set<String> heldOut = new HashSet<>();
         for (var fold : a.folds()) for (var e : fold.result().validate()) assertTrue(heldOut.add(e.poseId()), "once: " + e.poseId());
         Set<String> train = new HashSet<>();
