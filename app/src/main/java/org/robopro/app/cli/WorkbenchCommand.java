@@ -126,7 +126,6 @@ public final class WorkbenchCommand implements Callable<Integer> {
         int abWindow = -1;
         long abF = 0, abT = 0, abC = 0;
         long pcpu0 = processCpu();
-        String variant = System.getProperty("robopro.benchmark.ab");
         boolean abCounting = false;
         while (System.nanoTime() < end) {
             double t = (System.nanoTime() - t0) / 1e9;
@@ -140,8 +139,7 @@ public final class WorkbenchCommand implements Callable<Integer> {
                     }
                     abWindow = w;
                     abCounting = false;
-                    if (variant != null) wb.app().setVariant(w % 2 == 0);
-                    else wb.session().model().setShadows(w % 2 == 0);
+                    wb.session().model().setShadows(w % 2 == 0);
                 } else if (!abCounting && t - w >= 0.25) {
                     abCounting = true;
                     abF = wb.app().frameCount();
@@ -176,8 +174,8 @@ public final class WorkbenchCommand implements Callable<Integer> {
                 secs, (cpu1[0] - cpu0[0]) / 1e6, (cpu1[1] - cpu0[1]) / 1e6, (cpu1[2] - cpu0[2]) / 1e6);
         spec.commandLine().getOut().printf(Locale.ROOT, "workbench benchmark: process CPU %.2f ms per frame%n", (pcpu1 - pcpu0) / 1e6 / Math.max(1, frames));
         if (shadowsAb && abSecs[0] > 0 && abSecs[1] > 0)
-            spec.commandLine().getOut().printf(Locale.ROOT, "%s on: %.1f fps, off: %.1f fps (alternating 1 s windows, %.1f s measured each); "
-                            + "process CPU per frame on %.2f ms, off %.2f ms%n", variant != null ? variant : "shadows",
+            spec.commandLine().getOut().printf(Locale.ROOT, "shadows on: %.1f fps, off: %.1f fps (alternating 1 s windows, %.1f s measured each); "
+                            + "process CPU per frame on %.2f ms, off %.2f ms%n",
                     abFrames[0] / abSecs[0], abFrames[1] / abSecs[1], abSecs[0], abCpu[0] / abFrames[0], abCpu[1] / abFrames[1]);
     }
 

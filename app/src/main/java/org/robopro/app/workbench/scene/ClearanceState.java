@@ -53,6 +53,7 @@ public final class ClearanceState extends BaseAppState {
 
     @Override protected void initialize(Application app) {
         shapes = new Shapes(app.getAssetManager());
+        node.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off); // highlights, not bodies
         red = translucent(app, COLLIDING_RGB);
         amber = translucent(app, NEAR_RGB);
     }

@@ -12,6 +12,8 @@ import com.jme3.math.Vector3f;
 import com.jme3.renderer.queue.RenderQueue.ShadowMode;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import com.jme3.bounding.BoundingBox;
 import com.jme3.scene.debug.Grid;
 import com.jme3.scene.shape.Quad;
 import com.jme3.shadow.DirectionalLightShadowRenderer;
@@ -21,9 +23,10 @@ import org.robopro.app.workbench.model.WorkbenchModel;
 /**
  * Lights, background, floor and floor grid (1 m and 0.25 m lines), all in the jME y-up root;
  * and the key light's shadows (View → Shadows): one 1024² shadow map over the nearest 12 m of
- * the view, filtered with jME's 4-tap PCF, cast by the robot, tool and cell objects onto
- * themselves and the floor. One split and a small map keep the cost low on a software
- * rasteriser (docs/performance.md).
+ * the view, bilinear edges, cast by the robot, tool and cell objects (not by targets, paths or
+ * frames) onto the floor. A software rasteriser pays per pixel (docs/performance.md), so the
+ * floor is drawn unlit in its lit colour, and only a patch of it under where the casters'
+ * shadows can fall takes the shadow pass.
  */
 public final class EnvironmentState extends BaseAppState {
     private final WorkbenchModel model;
@@ -38,7 +41,8 @@ public final class EnvironmentState extends BaseAppState {
     private DirectionalLightShadowRenderer shadows;
     private boolean shadowsOn;
     private static final int FLOOR = 0xA9AEB5;
-    private Geometry floor, patch;
+    /** The part of the floor that receives shadows (the rest takes no shadow pass), floor-coloured. */
+    private Geometry patch;
 
     public EnvironmentState(WorkbenchModel model) { this.model = model; }
 
@@ -59,9 +63,8 @@ public final class EnvironmentState extends BaseAppState {
         floor.setMaterial(floorMat);
         floor.rotate(-FastMath.HALF_PI, 0, 0);
         floor.setLocalTranslation(-6, -0.002f, 6);
-        floor.setShadowMode(ShadowMode.Receive);
+        floor.setShadowMode(ShadowMode.Off);
         env.attachChild(floor);
-        this.floor = floor;
         patch = new Geometry("floor-shadow", new Quad(1, 1));
         patch.setMaterial(floorMat);
         patch.rotate(-FastMath.HALF_PI, 0, 0);
@@ -87,6 +90,42 @@ public final class EnvironmentState extends BaseAppState {
 
     @Override protected void cleanup(Application app) { }
 
+    /** After every state has posed its objects: fits the shadow patch to this frame's casters. */
+    @Override
+    public void render(com.jme3.renderer.RenderManager rm) {
+        if (!shadowsOn) {
+            if (patch.getCullHint() != Spatial.CullHint.Always) patch.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
+        patch.setCullHint(Spatial.CullHint.Inherit);
+        fitPatch();
+        ((SimpleApplication) getApplication()).getRootNode().updateGeometricState();
+    }
+
+    /** Floor-plane extent (x0, z0, x1, z1) of the casters' shadows, grown by {@link #sweep}. */
+    private final float[] box = new float[4];
+
+    /** Grows {@link #box} by the shadow of every visible caster under {@code s} along {@code d}. */
+    private void sweep(Spatial s, Vector3f d) {
+        if (s.getShadowMode() == ShadowMode.Off || s.getShadowMode() == ShadowMode.Receive || s.getCullHint() == Spatial.CullHint.Always) return;
+        if (s instanceof Node n) {
+            for (Spatial c : n.getChildren()) sweep(c, d);
+            return;
+        }
+        if (!(s.getWorldBound() instanceof BoundingBox b)) return;
+        Vector3f c = b.getCenter();
+        for (int k = 0; k < 8; k++) {
+            float x = c.x + ((k & 1) == 0 ? -b.getXExtent() : b.getXExtent());
+            float y = Math.max(0, c.y + ((k & 2) == 0 ? -b.getYExtent() : b.getYExtent()));
+            float z = c.z + ((k & 4) == 0 ? -b.getZExtent() : b.getZExtent());
+            float t = y / -d.y; // to the floor along the light
+            box[0] = Math.min(box[0], Math.min(x, x + t * d.x));
+            box[2] = Math.max(box[2], Math.max(x, x + t * d.x));
+            box[1] = Math.min(box[1], Math.min(z, z + t * d.z));
+            box[3] = Math.max(box[3], Math.max(z, z + t * d.z));
+        }
+    }
+
     /**
      * Sizes the shadow-receiving floor patch to where the casters' shadows can fall: the
      * casters' bounding box swept along the key light down to the floor, plus a margin, clipped
@@ -94,34 +133,19 @@ public final class EnvironmentState extends BaseAppState {
      */
     private void fitPatch() {
         Node root = ((SimpleApplication) getApplication()).getRootNode();
-        float x0 = Float.MAX_VALUE, z0 = Float.MAX_VALUE, x1 = -Float.MAX_VALUE, z1 = -Float.MAX_VALUE;
-        Vector3f d = key.getDirection();
-        for (com.jme3.scene.Spatial s : root.getChildren()) {
-            if (s == env || !(s.getWorldBound() instanceof com.jme3.bounding.BoundingBox b)) continue;
-            Vector3f c = b.getCenter();
-            for (int k = 0; k < 8; k++) {
-                float x = c.x + ((k & 1) == 0 ? -b.getXExtent() : b.getXExtent());
-                float y = Math.max(0, c.y + ((k & 2) == 0 ? -b.getYExtent() : b.getYExtent()));
-                float z = c.z + ((k & 4) == 0 ? -b.getZExtent() : b.getZExtent());
-                for (float t : new float[] {0, y / -d.y}) {
-                    x0 = Math.min(x0, x + t * d.x); x1 = Math.max(x1, x + t * d.x);
-                    z0 = Math.min(z0, z + t * d.z); z1 = Math.max(z1, z + t * d.z);
-                }
-            }
-        }
+        box[0] = box[1] = Float.MAX_VALUE;
+        box[2] = box[3] = -Float.MAX_VALUE;
+        for (Spatial s : root.getChildren()) if (s != env) sweep(s, key.getDirection());
+        float x0 = box[0], z0 = box[1], x1 = box[2], z1 = box[3];
         float m = 0.1f;
         x0 = Math.max(-6, x0 - m); z0 = Math.max(-6, z0 - m); x1 = Math.min(6, x1 + m); z1 = Math.min(6, z1 + m);
-        if (x1 <= x0 || z1 <= z0) { patch.setCullHint(com.jme3.scene.Spatial.CullHint.Always); return; }
+        if (x1 <= x0 || z1 <= z0) { patch.setCullHint(Spatial.CullHint.Always); return; }
         patch.setLocalScale(x1 - x0, z1 - z0, 1);
         patch.setLocalTranslation(x0, -0.002f, z1);
     }
 
     @Override
     public void update(float tpf) {
-        boolean usePatch = !WorkbenchApp.VARIANT.equals("patch") || ((WorkbenchApp) getApplication()).variant();
-        floor.setShadowMode(usePatch ? ShadowMode.Off : ShadowMode.Receive);
-        patch.setCullHint(usePatch ? com.jme3.scene.Spatial.CullHint.Inherit : com.jme3.scene.Spatial.CullHint.Always);
-        if (usePatch) fitPatch();
         boolean on = model.shadows();
         if (on == shadowsOn) return;
         shadowsOn = on;

@@ -48,6 +48,8 @@ public final class PathState extends BaseAppState {
 
     @Override protected void initialize(Application app) {
         shapes = new Shapes(app.getAssetManager());
+        // Targets and paths are annotations, not things in the cell: they cast no shadow.
+        node.setShadowMode(com.jme3.renderer.queue.RenderQueue.ShadowMode.Off);
         if (result != null) rebuild(result);
     }
 

@@ -54,6 +54,7 @@ public final class WorkbenchApp extends SimpleApplication {
     private volatile double shadowFallbackFps;
     private volatile java.util.function.Consumer<String> shadowFallbackLog;
     private int slowWindows;
+    /** -Drobopro.render.stats=true: print jME's render statistics (triangles, vertices, objects) of one frame. */
     private static final boolean STATS = Boolean.getBoolean("robopro.render.stats");
 
     /** A scene over {@code model} that shows the results of {@code pathChecker} (owned by the caller). */
@@ -133,10 +134,6 @@ public final class WorkbenchApp extends SimpleApplication {
 
     @Override
     public void simpleUpdate(float tpf) {
-        if (VARIANT.equals("singlepass")) {
-            renderManager.setPreferredLightMode(variant ? com.jme3.material.TechniqueDef.LightMode.SinglePass
-                    : com.jme3.material.TechniqueDef.LightMode.MultiPass);
-        }
         worldTriad.setCullHint(model.frameShown(WorkbenchModel.FrameKind.WORLD) ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
         if (cam.getWidth() != lastW || cam.getHeight() != lastH) {
             lastW = cam.getWidth();
@@ -227,12 +224,6 @@ public final class WorkbenchApp extends SimpleApplication {
             Thread.sleep(5);
         }
     }
-
-    private volatile boolean variant;
-    /** Benchmarks only: switches the render experiment named by robopro.benchmark.ab on or off. */
-    public void setVariant(boolean on) { variant = on; }
-    public boolean variant() { return variant; }
-    static final String VARIANT = System.getProperty("robopro.benchmark.ab", "");
 
     public long frameCount() { return frames.get(); }
     public double fps() { return fps; }

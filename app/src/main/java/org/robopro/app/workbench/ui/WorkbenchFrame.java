@@ -67,6 +67,14 @@ public final class WorkbenchFrame extends JFrame {
     private final JTextArea logArea = new JTextArea(6, 60);
     private final JLabel status = new JLabel(" ");
     private final AtomicBoolean refreshQueued = new AtomicBoolean();
+    /** When the last refresh ran (System.nanoTime), for spacing joint-only refreshes. */
+    private volatile long lastRefreshNanos;
+    /**
+     * Joint changes come at frame rate (jogging, playback); the jog panel's HTML labels cost the
+     * event thread about as much as a frame costs the software rasteriser, so joint-only
+     * refreshes run at most this often (docs/performance.md).
+     */
+    private static final long JOINT_REFRESH_NANOS = 50_000_000L;
     private volatile boolean robotChanged;
     private volatile boolean structureChanged = true;
     private volatile boolean selectionChanged;
@@ -275,11 +283,20 @@ public final class WorkbenchFrame extends JFrame {
         // Joint changes (jogging, playback) come at frame rate: they only touch the jog panel.
         if (c == WorkbenchModel.Change.SELECTION || c == WorkbenchModel.Change.VIEW) selectionChanged = true;
         else if (c != WorkbenchModel.Change.JOINTS) structureChanged = true;
-        if (refreshQueued.compareAndSet(false, true)) SwingUtilities.invokeLater(this::refresh);
+        if (!refreshQueued.compareAndSet(false, true)) return;
+        long wait = c == WorkbenchModel.Change.JOINTS ? lastRefreshNanos + JOINT_REFRESH_NANOS - System.nanoTime() : 0;
+        if (wait <= 0) {
+            SwingUtilities.invokeLater(this::refresh);
+        } else {
+            Timer later = new Timer((int) Math.max(1, wait / 1_000_000L), e -> refresh());
+            later.setRepeats(false);
+            later.start();
+        }
     }
 
     private void refresh() {
         refreshQueued.set(false);
+        lastRefreshNanos = System.nanoTime();
         if (robotChanged) { robotChanged = false; jog.rebuild(); }
         jog.refresh();
         String sel = wb.model().selection();

@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.robopro.app.workbench.model.RobotKinematics;
+import org.robopro.app.workbench.model.ShippedMeshes;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.JointDescription;
 import org.robopro.models.RobotDescription;
@@ -21,7 +22,7 @@ import org.robopro.models.RobotLibrary;
 
 /**
  * The robots' looks against their robot files: every shipped link mesh sits on the joint axis
- * it turns about, and the IRB 2000's procedural parallel arm stays a closed parallelogram at
+ * it turns about, the PUMA's forearm meets its wrist without a step, and the IRB 2000's procedural parallel arm stays a closed parallelogram at
  * any pose (the rod's pins stay on both cranks).
  */
 class RobotAppearanceTest {
@@ -53,6 +54,41 @@ class RobotAppearanceTest {
                         res + ": joint " + part.link() + " axis misses the mesh (box centre " + c + ", nearest axis point " + nearest + ")");
             }
         }
+    }
+
+    /**
+     * The PUMA 560's forearm casting ends where its wrist starts: the cross-sections of link 3's
+     * top and link 4's bottom (base coordinates at zero, both around the robot file's axis 4)
+     * are centred within 2 mm of each other and of axis 4, and are about the same width.
+     */
+    @Test
+    void puma560_forearmMeetsTheWristWithoutAStep() throws Exception {
+        RobotDescription d = RobotLibrary.shipped("puma560");
+        Vector3f axis4 = Shapes.v(d.joints().get(3).point());
+        float[] top = slab(ShippedMeshes.triangles("puma560", part("link_3")).orElseThrow(), true);
+        float[] bottom = slab(ShippedMeshes.triangles("puma560", part("link_4")).orElseThrow(), false);
+        assertEquals(top[0], bottom[0], 0.002, "forearm top and wrist bottom centres in x");
+        assertEquals(top[1], bottom[1], 0.002, "forearm top and wrist bottom centres in y");
+        assertEquals(axis4.x, bottom[0], 0.002, "wrist on axis 4 (x)");
+        assertEquals(axis4.y, bottom[1], 0.002, "wrist on axis 4 (y)");
+        assertEquals(top[2], bottom[2], 0.006, "forearm top and wrist bottom widths in x");
+    }
+
+    private static ShippedMeshes.Part part(String file) {
+        return ShippedMeshes.BY_ROBOT.get("puma560").stream().filter(p -> p.file().equals(file)).findFirst().orElseThrow();
+    }
+
+    /** Centre x, centre y and width in x of the vertices within 30 mm of a mesh's top (or bottom). */
+    private static float[] slab(float[] tri, boolean top) {
+        float end = top ? -Float.MAX_VALUE : Float.MAX_VALUE;
+        for (int i = 2; i < tri.length; i += 3) end = top ? Math.max(end, tri[i]) : Math.min(end, tri[i]);
+        float x0 = Float.MAX_VALUE, x1 = -Float.MAX_VALUE, y0 = Float.MAX_VALUE, y1 = -Float.MAX_VALUE;
+        for (int i = 0; i < tri.length; i += 3) {
+            if (Math.abs(tri[i + 2] - end) > 0.03f) continue;
+            x0 = Math.min(x0, tri[i]); x1 = Math.max(x1, tri[i]);
+            y0 = Math.min(y0, tri[i + 1]); y1 = Math.max(y1, tri[i + 1]);
+        }
+        return new float[] {(x0 + x1) / 2, (y0 + y1) / 2, x1 - x0};
     }
 
     @Test
