@@ -33,7 +33,6 @@ import org.robopro.programs.rapid.SourcePos;
 public final class RapidParser {
     private final String file;
     private final ParsedAst ast;
-    private final IdentityHashMap<Statement, SourcePos> positions = new IdentityHashMap<>();
     /** Each typed item and statement to the tree node it was read from. */
     private final IdentityHashMap<Object, Object> nodes = new IdentityHashMap<>();
     /**
@@ -63,7 +62,7 @@ public final class RapidParser {
         ParsedAst a = RapidAstParser.parse(text, fileName);
         RapidParser p = new RapidParser(a, true);
         RapidModule m = new RapidModule(a.module(), new RapidModule.View(p.module(a.module()), p.nodes));
-        return new ParsedModule(m, p.file, p.positions, a);
+        return new ParsedModule(m, a);
     }
 
     /** The typed view of a tree (built in code or edited): read leniently, see {@link #strict}. */
@@ -207,8 +206,6 @@ public final class RapidParser {
             out = new AstStatement(s);
         }
         nodes.put(out, s);
-        SourcePos p = ast.position(s).orElse(null);
-        if (p != null) positions.put(out, p);
         return out;
     }
 
@@ -346,7 +343,7 @@ public final class RapidParser {
         for (ModuleItem it : items)
             if (it instanceof Procedure p) for (Statement s : p.body())
                 if (s instanceof Move mv) {
-                    SourcePos at = positions.get(s);
+                    SourcePos at = ast.position(nodes.get(s)).orElse(null);
                     check(mv.toPoint(), mv.kind() == Move.Kind.MOVE_ABS_J ? "jointtarget" : "robtarget", at, p.name());
                     mv.circPoint().ifPresent(c -> check(c, "robtarget", at, p.name()));
                     check(mv.speed(), "speeddata", at, p.name());

@@ -98,7 +98,8 @@ public final class Calibrator {
         checkData(nominal, train);
         if (validate != null) {
             checkData(nominal, validate);
-            if (!validate.pointNames().equals(train.pointNames()) || validate.isDistance() != train.isDistance())
+            if (!validate.pointNames().equals(train.pointNames()) || validate.isDistance() != train.isDistance()
+                    || validate.isPairs() != train.isPairs())
                 throw new InputException(validate.source(), 0, 0, "point", "validation data measure " + shape(validate)
                         + " but the training data " + shape(train) + "; validation needs the same measured points");
             if (!validate.isDistance() && !validate.frame().equalsIgnoreCase(train.frame()))
@@ -501,6 +502,7 @@ public final class Calibrator {
 
     /** "points A, B, C" / "one point" / "distances", for messages. */
     static String shape(MeasurementSet s) {
+        if (s.isPairs()) return "distances between pairs of poses";
         if (s.isDistance()) return "distances";
         return s.pointNames().isEmpty() ? "one point per pose" : "points " + String.join(", ", s.pointNames());
     }

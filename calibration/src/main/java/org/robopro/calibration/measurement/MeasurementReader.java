@@ -240,32 +240,12 @@ public final class MeasurementReader {
                             + "between two poses; this file has no 'distance' column (a position file has no first pose)");
                 if (maxFromQ == 0)
                     throw error(headerLine, firstCol, first, "first-pose directions without the first pose's joints: add from_q1..from_q" + dof);
-                if (maxFromQ != dof)
-                    throw error(headerLine, cols.get(index.get("from_q" + maxFromQ)).col, "from_q" + maxFromQ,
-                            "first-pose joint columns go to from_q" + maxFromQ + " but there are " + dof + " joints");
-                fqIdx = new int[dof];
-                for (int k = 0; k < dof; k++) {
-                    Integer c = index.get("from_q" + (k + 1));
-                    if (c == null) throw error(headerLine, 1, "from_q" + (k + 1), "first-pose joint column 'from_q" + (k + 1)
-                            + "' is missing (all of from_q1..from_q" + dof + ")");
-                    fqIdx[k] = c;
-                }
+                fqIdx = numbered(headerLine, cols, index, "from_q", maxFromQ, dof, "first-pose joint");
                 if ((maxFromDir > 0) != (dIdx != null))
                     throw error(headerLine, maxFromDir > 0 ? cols.get(index.get("from_dir" + maxFromDir)).col : cols.get(dIdx[0]).col,
                             maxFromDir > 0 ? "from_dir" + maxFromDir : "dir1", "a distance between two poses needs the approach "
                             + "directions of both poses (dir1..dir" + dof + " and from_dir1..from_dir" + dof + ") or of neither");
-                if (maxFromDir > 0) {
-                    if (maxFromDir != dof)
-                        throw error(headerLine, cols.get(index.get("from_dir" + maxFromDir)).col, "from_dir" + maxFromDir,
-                                "first-pose direction columns go to from_dir" + maxFromDir + " but there are " + dof + " joints");
-                    fdIdx = new int[dof];
-                    for (int k = 0; k < dof; k++) {
-                        Integer c = index.get("from_dir" + (k + 1));
-                        if (c == null) throw error(headerLine, 1, "from_dir" + (k + 1), "first-pose direction column 'from_dir" + (k + 1)
-                                + "' is missing (all of from_dir1..from_dir" + dof + " or none)");
-                        fdIdx[k] = c;
-                    }
-                }
+                if (maxFromDir > 0) fdIdx = numbered(headerLine, cols, index, "from_dir", maxFromDir, dof, "first-pose direction");
                 if (meta.containsKey("anchor")) {
                     int[] pos = metaPos.get("anchor");
                     throw error(pos[0], pos[1], "anchor", "a distance between two poses (from_q columns) has no anchor; delete the "
@@ -447,6 +427,24 @@ public final class MeasurementReader {
             for (String n : names) pts.add(rs.get(have.indexOf(n)).position());
             return new Measurement(id, first.q(), null, null, first.directions(), first.timeS(), first.tempC(), first.payloadKg(),
                     first.set(), first.line(), pts, Double.NaN);
+        }
+
+        /**
+         * The columns {@code prefix}1..{@code prefix}{@code dof} (one per joint; the header's highest
+         * is {@code max}), each present, or a header error naming the first wrong one.
+         */
+        int[] numbered(int headerLine, List<Field> cols, Map<String, Integer> index, String prefix, int max, int dof, String what) {
+            if (max != dof)
+                throw error(headerLine, cols.get(index.get(prefix + max)).col, prefix + max,
+                        what + " columns go to " + prefix + max + " but there are " + dof + " joints");
+            int[] idx = new int[dof];
+            for (int k = 0; k < dof; k++) {
+                Integer c = index.get(prefix + (k + 1));
+                if (c == null) throw error(headerLine, 1, prefix + (k + 1), what + " column '" + prefix + (k + 1)
+                        + "' is missing (all of " + prefix + "1.." + prefix + dof + ")");
+                idx[k] = c;
+            }
+            return idx;
         }
 
         /** The directions in columns {@code idx} (null: none) of a row; each 1, -1 or 0. */

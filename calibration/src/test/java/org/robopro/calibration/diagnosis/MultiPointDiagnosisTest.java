@@ -60,6 +60,18 @@ class MultiPointDiagnosisTest {
     }
 
     @Test
+    void threeSmrs_pointSaggingWithReach_isLocatedAtThePointsAndNoFamilyNamed() {
+        Data c = smr("outside: measured point sags with reach", 4, 200);
+        Diagnosis d = Diagnoser.diagnose(IRB2000, c.train(), c.validate());
+        List<String> families = d.effects().stream().filter(f -> !f.effect().isFallback()).map(f -> f.effect().label()).toList();
+        assertEquals(List.of(), families, "named a family for a sag outside every family; notes " + d.notes());
+        assertTrue(d.located().stream().anyMatch(l -> l.variable().equals("reach of the measured point")), d.located().toString());
+        // the structure's evidence plot has a dot per measured point
+        Diagnosis.Located reach = d.located().stream().filter(l -> l.variable().equals("reach of the measured point")).findFirst().orElseThrow();
+        assertEquals(3 * c.train().size() - 3 * d.outliers().size(), reach.plot().x().length);
+    }
+
+    @Test
     void threeSmrs_nothingConcealed_namesNothing() {
         Data c = smr("null irb2000", 3, 150);
         Diagnosis d = Diagnoser.diagnose(IRB2000, c.train(), c.validate());

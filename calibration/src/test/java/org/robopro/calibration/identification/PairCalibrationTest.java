@@ -57,5 +57,12 @@ class PairCalibrationTest {
         assertTrue(words.startsWith("distances between pairs of poses") && words.contains("j1.offset"), words);
         List<String> warnings = CalibrationReport.warnings(r, train, val);
         assertTrue(warnings.contains(words), warnings.toString());
+
+        // validation lengths to an anchor do not check lengths between poses: refused in words, naming the file
+        MeasurementSet wire = MeasurementReader.parse("wire.csv", Readings.distances(t.world(), nominal, t.campaign(),
+                new double[] {1.3, -0.4, 0.05}, false, 21), nominal.joints().stream().map(JointDescription::type).toList());
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> Calibrator.calibrate(model, train, wire, Calibrator.Options.defaults()));
+        assertTrue(e.getMessage().startsWith("wire.csv") && e.getMessage().contains("distances between pairs of poses"), e.getMessage());
     }
 }

@@ -14,8 +14,8 @@ import org.robopro.models.JointType;
 
 /**
  * The robot model being built in the model wizard (seed paper Fig. 7/8): at the zero position,
- * each joint drawn on its axis (revolute: an orange drum, prismatic: a blue sleeve) with the
- * links as grey beams from joint to joint and to the flange, and the model's frames as x/y/z
+ * each joint drawn on its axis (revolute: an orange drum, prismatic: a blue sleeve) and named
+ * beside it, with the links as grey beams from joint to joint and to the flange, and the model's frames as x/y/z
  * triads (the kinematic model's link frames). Rebuilt when the model's preview changes; while a
  * preview is shown the cell's robot is hidden ({@link RobotState}).
  */
@@ -67,6 +67,19 @@ public final class PreviewState extends BaseAppState {
             // The joint axis itself, thin and long, so its direction reads at a glance.
             node.attachChild(shapes.disc("preview-axis-" + (i + 1), c, a, r * 0.12f, r * 5f, shapes.flat(0x202020, false)));
             if (c.distance(prev) > 1e-6f) node.attachChild(shapes.beam("preview-link-" + i, prev, c, r * 0.45f, link));
+            // The joint's name above its drum, facing the camera and drawn over the drums and triads.
+            Node label = shapes.label("preview-label-" + (i + 1), j.name(), Math.max(0.06f, 0.05f * (float) reach), 0x101010);
+            label.depthFirstTraversal(sp -> {
+                if (sp instanceof com.jme3.scene.Geometry g) {
+                    g.setMaterial(g.getMaterial().clone()); // the font's page material is shared with every other label
+                    g.getMaterial().getAdditionalRenderState().setDepthTest(false);
+                }
+            });
+            // Joints on the same point (a wrist) stack their names instead of printing them over each other.
+            int same = 0;
+            for (int k = 0; k < i; k++) if (Shapes.v(js.get(k).point()).distance(c) < 1e-6f) same++;
+            label.setLocalTranslation(c.add(r * 1.3f, 0, r * 1.3f + same * 1.3f * Math.max(0.06f, 0.05f * (float) reach)));
+            node.attachChild(label);
             prev = c;
         }
         Pose[] f = p.frames();

@@ -154,7 +154,7 @@ public final class CalibrationPanel extends JPanel {
         try {
             measurements = wb.loadMeasurements(f);
             MeasurementSet tr = measurements.train();
-            String each = tr.isDistance() ? " (a distance each)" : tr.pointCount() > 1 ? " (" + tr.pointCount() + " points each)" : "";
+            String each = tr.isPairs() ? " (a length between two poses each)" : tr.isDistance() ? " (a distance each)" : tr.pointCount() > 1 ? " (" + tr.pointCount() + " points each)" : "";
             file.setText(String.format(Locale.ROOT, "%s: %d training poses%s, %s", f.getFileName(), tr.size(), each,
                     measurements.validate() == null ? "no validation poses" : measurements.validate().size() + " validation poses"));
             result = null;
