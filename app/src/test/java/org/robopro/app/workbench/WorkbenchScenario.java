@@ -416,6 +416,7 @@ public final class WorkbenchScenario {
         r.setProperty("uploadOfferedProcs", String.join(",", offered.get()));
         r.setProperty("uploadTwiceProgram", String.join("|", twice.program().stream()
                 .map(i -> i.type().motion() ? i.type() + " " + i.target() : "RAPID " + i.statementText()).toList()));
+        win.screenshot(out.resolve("10-kept-statements.png")); // the program panel: two calls kept read-only
         r.setProperty("uploadTwiceMotions", String.join(";", wb.model().programRun().steps().stream()
                 .map(step -> step.label().replaceAll(".*#\\d+ ", "")).toList()));
         try {
