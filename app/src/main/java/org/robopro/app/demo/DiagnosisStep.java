@@ -67,6 +67,7 @@ final class DiagnosisStep {
                             + " (%d candidate effects tested, family-wise false-positive rate %.3g). Full report: "
                             + "<a href=\"diagnosis/report.html\">diagnosis/report.html</a>.</p>\n",
                     Units.mToMm(d.geometricValidateRmsM()), Units.mToMm(d.finalValidateRmsM()), d.candidatesTested(), d.alpha()));
+            h.append(DiagnosisReport.rmsChart(d)).append('\n');
             if (d.effects().isEmpty()) h.append("<p>No non-geometric effect found.</p>\n");
             for (Diagnosis.Finding f : d.effects()) {
                 h.append("<h3>").append(Html.esc(f.effect().label())).append("</h3>\n<p>").append(Html.esc(f.words())).append("</p>\n");

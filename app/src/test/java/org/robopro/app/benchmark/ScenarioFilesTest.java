@@ -96,4 +96,11 @@ class ScenarioFilesTest {
         assertEquals(0, w.run("diagnose-benchmark", "--write-scenarios", set.toString(), "--scenario", "null irb2000, 50 poses", "--seeds", "1",
                 "--base-seed", "3", "--force"), w.err());
     }
+
+    @Test
+    void stems_everyScenarioOfTheCatalogueGetsItsOwnFile() {
+        java.util.Set<String> stems = new java.util.HashSet<>();
+        for (Scenario s : Scenario.catalogue()) assertTrue(stems.add(ScenarioFiles.stem(s.name(), 1)), "two scenarios share the file " + s.name());
+        assertEquals("lost-motion-j2-directions-not-recorded-s5", ScenarioFiles.stem("lost motion j2, directions not recorded", 5));
+    }
 }

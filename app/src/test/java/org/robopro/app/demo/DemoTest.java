@@ -69,6 +69,7 @@ class DemoTest {
 
         String html = Files.readString(out.resolve("report.html"));
         assertTrue(html.contains("<svg") && html.contains("Target errors"), "report with inline plots");
+        assertTrue(html.contains(">RMS error: geometric model, after each effect, final fit</text>"), "the diagnosis RMS bar chart");
         assertFalse(html.contains("<script"), "self-contained, no scripts");
         for (String f : List.of("DemoWeld.mod", "DemoWeldCal.mod", "DemoWeldDiag.mod", "measurements.csv", "calibration/report.html",
                 "diagnosis/report.html", "diagnosis/extended.robot.json", "truth.json"))

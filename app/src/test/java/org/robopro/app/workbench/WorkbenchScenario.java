@@ -416,6 +416,7 @@ public final class WorkbenchScenario {
         r.setProperty("uploadOfferedProcs", String.join(",", offered.get()));
         r.setProperty("uploadTwiceProgram", String.join("|", twice.program().stream()
                 .map(i -> i.type().motion() ? i.type() + " " + i.target() : "RAPID " + i.statementText()).toList()));
+        win.screenshot(out.resolve("10-kept-statements.png")); // the program panel: two calls kept read-only
         r.setProperty("uploadTwiceMotions", String.join(";", wb.model().programRun().steps().stream()
                 .map(step -> step.label().replaceAll(".*#\\d+ ", "")).toList()));
         try {
@@ -524,5 +525,21 @@ public final class WorkbenchScenario {
         wb.save(project);
         r.setProperty("reopenedRobot", ProjectStore.read(project).robot().name());
         win.screenshot(out.resolve("05-new-robot.png"));
+        // Edit > Undo after the wizard was closed: first Use in cell (the cell's robot back), then the
+        // wizard's last edit, which opens the wizard again to show it; Redo makes both again.
+        WorkbenchWindow.onEdt(() -> frame.action("undo").actionPerformed(null));
+        r.setProperty("undoUseInCellRobot", wb.model().robot().name());
+        WorkbenchWindow.onEdt(() -> frame.action("undo").actionPerformed(null));
+        WorkbenchWindow.onEdt(() -> {
+            r.setProperty("undoWizardReopened", String.valueOf(frame.isDocked(wiz)));
+            r.setProperty("undoWizardFlangeZ", String.valueOf(wiz.wizardModel().flangeOriginMm()[2]));
+        });
+        WorkbenchWindow.onEdt(() -> frame.action("redo").actionPerformed(null));
+        WorkbenchWindow.onEdt(() -> frame.action("redo").actionPerformed(null));
+        WorkbenchWindow.onEdt(() -> {
+            r.setProperty("redoWizardFlangeZ", String.valueOf(wiz.wizardModel().flangeOriginMm()[2]));
+            r.setProperty("redoRobot", wb.model().robot().name());
+            frame.closeDock(wiz);
+        });
     }
 }

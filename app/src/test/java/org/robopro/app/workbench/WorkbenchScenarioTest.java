@@ -263,6 +263,11 @@ class WorkbenchScenarioTest {
         assertEquals("Undo Robot model: flange origin mm z", r.getProperty("wizardUndoName"), "the Edit menu names the wizard's edit");
         assertEquals(-200, Double.parseDouble(r.getProperty("wizardCtrlZFlangeDelta")), 1e-9, "Ctrl+Z in the wizard undoes its last edit");
         assertEquals(0, Double.parseDouble(r.getProperty("wizardCtrlYFlangeDelta")), 1e-9, "Ctrl+Y redoes it");
+        assertEquals("irb2000", r.getProperty("undoUseInCellRobot"), "Undo takes Use in cell back first");
+        assertEquals("true", r.getProperty("undoWizardReopened"), "undoing a closed wizard's edit opens it again");
+        assertEquals(Double.parseDouble(r.getProperty("redoWizardFlangeZ")) - 200, Double.parseDouble(r.getProperty("undoWizardFlangeZ")), 1e-9,
+                "the wizard's last edit (flange z + 200 mm) taken back");
+        assertEquals("irb2000_long", r.getProperty("redoRobot"), "Redo makes both again");
         assertEquals("true", r.getProperty("wizardReportHasTable"));
         assertEquals("true", r.getProperty("wizardSaved"));
         assertEquals("true", r.getProperty("wizardOverwriteRefused"));

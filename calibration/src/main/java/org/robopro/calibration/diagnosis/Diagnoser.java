@@ -110,14 +110,10 @@ public final class Diagnoser {
 
     public static Diagnosis diagnose(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o) {
         long t0 = System.nanoTime();
-        // An effect acts at both poses of a pair, each under its own direction and angles; the effect
-        // signatures and the locate scan take one pose per row, so they would miss or misread it.
-        if (train.isPairs())
-            throw new org.robopro.models.InputException(train.source(), 0, 0, "from_q1", "the diagnosis reads positions or lengths "
-                    + "to an anchor, not distances between pairs of poses (an effect acts at both poses of a pair, each with its own "
-                    + "direction and angles); calibrate this file with 'robopro calibrate', and diagnose a campaign of positions or "
-                    + "of lengths to a fixed anchor");
-        Directions.Prepared dirs = Directions.prepare(train, validate);
+        // Pairs of poses: the directions of both poses are the file's, never inferred from the row order
+        // (the first pose of a row is not the row before it).
+        Directions.Prepared dirs = train.isPairs() && !train.hasDirections()
+                ? new Directions.Prepared(train, validate, Directions.Source.NONE) : Directions.prepare(train, validate);
         train = dirs.train();
         validate = dirs.validate();
         Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
@@ -318,7 +314,15 @@ public final class Diagnoser {
         if (gravity == null)
             notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
                     + "add a mass_model to test it");
-        if (geo.distance())
+        if (geo.pairs())
+            notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
+                    + "each pair shows an effect only through the change of the length between the point's two places, so a "
+                    + "displacement the same at both poses (a drift of the point, an error of joint 1 alone) is not seen at all; an "
+                    + "effect the geometry can absorb is reported as not identifiable. The effects are tested at both poses of "
+                    + "every pair, each with its own joints and directions; the locate scan and the evidence plots, which resolve "
+                    + "one pose per row, are not run, so structure outside the named families is not located: measure positions "
+                    + "(x, y, z) to locate it");
+        else if (geo.distance())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
                     + "line to the anchor is not seen at that pose; an effect whose length changes the geometry and the anchor can "
@@ -580,7 +584,8 @@ public final class Diagnoser {
             double[] s = Arrays.copyOfRange(sig, off, off + e.size());
             Step st = steps.get(k);
             Diagnosis.Evidence ev = st.candidate.evidence();
-            Diagnosis.Plot plot = Plots.partialResidual(plotTester, e, v);
+            // (the evidence plots resolve one pose per row: none for pairs of poses)
+            Diagnosis.Plot plot = fit.problem.pairs() ? null : Plots.partialResidual(plotTester, e, v);
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
                             k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource)));
@@ -1709,6 +1714,7 @@ public final class Diagnoser {
 
         /** The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose conditions. */
         double[] signature(Effect e, List<PoseConditions> conds) {
+            if (fit.problem.pairs()) return conds == w.conditions ? chainSignature(e) : new double[m * e.size()];
             int k = e.size();
             double[] s = new double[m * k];
             int poses = m / rpp;
@@ -1730,6 +1736,30 @@ public final class Diagnoser {
                     }
                 }
             }
+            return s;
+        }
+
+        /**
+         * The signature through the identification's measurement function (the effect's block added
+         * to the fit's at v = 0): for distances between pairs of poses, where the effect acts at both
+         * poses under each one's joints and directions. The rows' own conditions only.
+         */
+        double[] chainSignature(Effect e) {
+            int k = e.size();
+            List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
+            bl.add(e.block(w.model));
+            double[] full = Arrays.copyOf(fit.full, fit.full.length + k);
+            IdentificationProblem p = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
+            p.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
+            int nFull = p.fullSize(), off = nFull - k;
+            double[] jf = new double[m * nFull];
+            p.evaluateFull(full, new double[m], jf);
+            double[] s = new double[m * k];
+            for (int i = 0; i < m; i++)
+                for (int c = 0; c < k; c++) {
+                    double v = jf[i * nFull + off + c];
+                    s[i * k + c] = Double.isFinite(v) ? v : 0;
+                }
             return s;
         }
 

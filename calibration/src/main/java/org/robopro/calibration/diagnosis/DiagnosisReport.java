@@ -263,7 +263,8 @@ public final class DiagnosisReport {
         return h.append("</table>\n").toString();
     }
 
-    private static String rmsChart(Diagnosis d) {
+    /** The RMS bar chart ({@link #rmsBars}) as an inline SVG for HTML reports. */
+    public static String rmsChart(Diagnosis d) {
         return Svg.draw((c, w, h) -> rmsBars(c, w, h, "RMS error: geometric model, after each effect, final fit", d));
     }
 

@@ -75,6 +75,8 @@ final class Locator {
 
     /** The probes the data offer at this fit. */
     static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs) {
+        // The probes resolve one pose per row; a distance between two poses has two (the diagnosis says the scan is not run).
+        if (t.fit.problem.pairs()) return List.of();
         Diagnoser.Work w = t.w;
         int dof = t.dof, poses = w.rows.size(), m = t.m, rpp = t.rpp;
         List<Probe> out = new ArrayList<>();

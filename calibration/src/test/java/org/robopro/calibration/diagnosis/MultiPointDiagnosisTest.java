@@ -95,13 +95,30 @@ class MultiPointDiagnosisTest {
     }
 
     @Test
-    void pairsOfPoses_areRefusedInWords_notMisread() {
-        Scenario.Trial t = Scenario.named("lost motion j2, directions recorded").trial(5, p -> p.withPoses(60, 0));
+    void pairsOfPoses_concealedBacklash_testedAtBothPoses_andSaysWhatPairsCannotTell() {
+        Scenario.Trial t = Scenario.named("lost motion j2, directions recorded").trial(5, p -> p.withPoses(250, 100));
         Data c = read("bar.csv", Readings.pairs(t.world(), IRB2000, t.campaign(), 5));
-        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
-                () -> Diagnoser.diagnose(IRB2000, c.train(), null));
-        assertTrue(e.getMessage().startsWith("bar.csv") && e.getMessage().contains("not distances between pairs of poses")
-                && e.getMessage().contains("robopro calibrate"), e.getMessage());
+        assertTrue(c.train().isPairs());
+        Diagnosis d = Diagnoser.diagnose(IRB2000, c.train(), c.validate());
+        assertEquals(List.of("backlash j2"), labels(d), d.notes().toString());
+        // the lost motion the world concealed, against the one found at both poses of every pair
+        double truth = t.world().errors().stream().filter(x -> x instanceof org.robopro.world.JointError.LostMotion)
+                .mapToDouble(x -> ((org.robopro.world.JointError.LostMotion) x).width()).findFirst().orElseThrow();
+        Diagnosis.Finding f = d.effects().get(0);
+        assertEquals(truth, f.values()[0], Math.max(4 * f.sigmas()[0], 0.1 * truth), "found " + f.values()[0] + " ± " + f.sigmas()[0]);
+        assertTrue(d.finalValidateRmsM() < 0.5 * d.geometricValidateRmsM(), d.finalValidateRmsM() + " vs " + d.geometricValidateRmsM());
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("distances between pairs of poses") && n.contains("locate scan")),
+                d.notes().toString());
+        assertEquals("distances", d.measurementWords());
+    }
+
+    @Test
+    void pairsOfPoses_nothingConcealed_namesNothing() {
+        Scenario.Trial t = Scenario.named("null irb2000").trial(3, p -> p.withPoses(200, 100));
+        Data c = read("bar.csv", Readings.pairs(t.world(), IRB2000, t.campaign(), 3));
+        Diagnosis d = Diagnoser.diagnose(IRB2000, c.train(), c.validate());
+        assertEquals(List.of(), labels(d), d.notes().toString());
+        assertEquals(0.02e-3, d.sigmaM(), 0.005e-3);
     }
 
     @Test

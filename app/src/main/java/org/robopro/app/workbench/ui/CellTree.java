@@ -72,7 +72,7 @@ public final class CellTree extends JTree {
                 targets.add(new DefaultMutableTreeNode(new Item(t.name() + mark, "target:" + t.name())));
             }
             root.add(targets);
-            DefaultMutableTreeNode prog = new DefaultMutableTreeNode(new Item("Program main", null));
+            DefaultMutableTreeNode prog = new DefaultMutableTreeNode(new Item("Program " + model.programSource().map(org.robopro.app.workbench.model.ProgramModule.Source::entry).orElse("main"), null));
             for (Instruction i : model.program())
                 prog.add(new DefaultMutableTreeNode(!i.type().motion() ? new Item(i.statementText(), null)
                         : new Item(i.type().rapid() + " " + (i.via() != null ? i.via() + ", " : "") + i.target(), "target:" + i.target())));

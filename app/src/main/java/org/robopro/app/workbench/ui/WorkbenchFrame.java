@@ -345,7 +345,7 @@ public final class WorkbenchFrame extends JFrame {
         String clearance = wb.clearance().current().map(r -> "  |  " + r.text()).orElse("");
         status.setText(String.format(Locale.ROOT, "%s  |  TCP %.1f, %.1f, %.1f mm%s  |  %d targets, %d moves  |  %s",
                 wb.model().robot().displayName(), p.x() * 1000, p.y() * 1000, p.z() * 1000, clearance, wb.model().targets().size(),
-                wb.model().program().size(), fps > 0 ? String.format(Locale.ROOT, "%.0f fps", fps) : "3D view starting"));
+                wb.model().program().stream().filter(i -> i.type().motion()).count(), fps > 0 ? String.format(Locale.ROOT, "%.0f fps", fps) : "3D view starting"));
         updateTitle();
     }
 
