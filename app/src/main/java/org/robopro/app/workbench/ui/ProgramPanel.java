@@ -253,10 +253,24 @@ public final class ProgramPanel extends JPanel {
                 if (n.equals(new Instruction(i.type(), i.target(), i.speedMmPerS(), i.zoneMm(), i.via()))) return; // unchanged: stays linked
                 p.set(r, n);
                 wb.model().setProgram(p);
+                String dropped = unmodelledOptions(i.statement());
+                if (!dropped.isEmpty())
+                    wb.log("Line " + (r + 1) + " is rewritten in the workbench's terms on export: its RAPID option(s) " + dropped
+                            + " are not written back (edit them in RAPID to keep them)");
             } catch (IllegalArgumentException e) {
                 wb.log("Not changed: " + e.getMessage());
             }
         }
+    }
+
+    /** The optional arguments of an imported motion the workbench's own moves do not carry (all but {@code \WObj}), e.g. "\Conc, \V". */
+    static String unmodelledOptions(org.robopro.programs.rapid.RapidAst.Stmt statement) {
+        if (!(statement instanceof org.robopro.programs.rapid.RapidAst.Call call)) return "";
+        List<String> out = new ArrayList<>();
+        for (org.robopro.programs.rapid.RapidAst.Arg a : call.args())
+            if (a.kind() != org.robopro.programs.rapid.RapidAst.ArgKind.POSITIONAL && a.kind() != org.robopro.programs.rapid.RapidAst.ArgKind.NAMED
+                    && !"WObj".equalsIgnoreCase(a.name())) out.add("\\" + a.name());
+        return String.join(", ", out);
     }
 
     private ProgramRun.Step step(int r) {
