@@ -88,11 +88,21 @@ class EffectTest {
         for (Effect.Term t : terms()) e0 -= t.values().length;
         int k = e0;
         for (Effect.Term t : terms()) for (double v : t.values()) x[k++] = v;
+        assertColumnsMatchCentralDifferences(rows, blocks, x, e0, 1e-6, "");
+    }
+
+    /**
+     * Asserts that the analytic Jacobian columns e0.. of the problem at x match central differences
+     * within tol·(1 + |fd|); returns the largest |fd| seen (how much those parameters move the prediction).
+     */
+    private double assertColumnsMatchCentralDifferences(List<Measurement> rows, List<EffectBlock> blocks, double[] x, int e0,
+                                                        double tol, String label) {
         IdentificationProblem p = new IdentificationProblem(model, rows, false, true, blocks, x);
         p.setSigmas(1, 1);
         int m = p.residualCount(), n = p.fullSize();
         double[] jac = new double[m * n], r = new double[m], rp = new double[m], rm = new double[m];
         p.evaluateFull(x, r, jac);
+        double moved = 0;
         for (int c = e0; c < n; c++) {
             double h = 1e-3 * Math.max(Math.abs(x[c]), 1e-6);
             double[] xp = x.clone(), xm = x.clone();
@@ -102,9 +112,11 @@ class EffectTest {
             p.evaluateFull(xm, rm, null);
             for (int i = 0; i < m; i++) {
                 double fd = (rp[i] - rm[i]) / (2 * h);
-                assertEquals(fd, jac[i * n + c], 1e-6 * (1 + Math.abs(fd)), p.names().get(c) + " row " + i);
+                moved = Math.max(moved, Math.abs(fd));
+                assertEquals(fd, jac[i * n + c], tol * (1 + Math.abs(fd)), label + p.names().get(c) + " row " + i);
             }
         }
+        return moved;
     }
 
     /** The fallbacks of located structures (no physical family), with values of their size. */
@@ -136,27 +148,9 @@ class EffectTest {
             double[] x = IdentificationProblem.startVector(model, tool, false, inst, blocks);
             int e0 = x.length - t.values().length;
             System.arraycopy(t.values(), 0, x, e0, t.values().length);
-            IdentificationProblem p = new IdentificationProblem(model, rows, false, true, blocks, x);
-            p.setSigmas(1, 1);
-            int m = p.residualCount(), n = p.fullSize();
-            double[] jac = new double[m * n], r = new double[m], rp = new double[m], rm = new double[m];
-            p.evaluateFull(x, r, jac);
-            double moved = 0;
-            for (int c = e0; c < n; c++) {
-                double h = 1e-3 * Math.max(Math.abs(x[c]), 1e-6);
-                double[] xp = x.clone(), xm = x.clone();
-                xp[c] += h;
-                xm[c] -= h;
-                p.evaluateFull(xp, rp, null);
-                p.evaluateFull(xm, rm, null);
-                for (int i = 0; i < m; i++) {
-                    double fd = (rp[i] - rm[i]) / (2 * h);
-                    moved = Math.max(moved, Math.abs(fd));
-                    // a point displacement with reach also moves with the point the geometry predicts: a loose tolerance there
-                    double tol = t.effect().kind() == Effect.Kind.POINT_SMOOTH ? 1e-3 : 1e-6;
-                    assertEquals(fd, jac[i * n + c], tol * (1 + Math.abs(fd)), t.effect().label() + " " + p.names().get(c) + " row " + i);
-                }
-            }
+            // a point displacement with reach also moves with the point the geometry predicts: a loose tolerance there
+            double tol = t.effect().kind() == Effect.Kind.POINT_SMOOTH ? 1e-3 : 1e-6;
+            double moved = assertColumnsMatchCentralDifferences(rows, blocks, x, e0, tol, t.effect().label() + " ");
             assertEquals(true, moved > 0, t.effect().label() + " moves the prediction");
         }
     }
