@@ -48,20 +48,6 @@ public record CalibrationResult(KinematicModel nominal, KinematicModel calibrate
         toolPoints = List.copyOf(toolPoints);
     }
 
-    /** A result of data other than distances between pairs of poses. */
-    public CalibrationResult(KinematicModel nominal, KinematicModel calibrated, Pose flangeTtool, Pose instrumentTbase,
-                             List<ParameterEstimate> parameters, List<Identifiability.Direction> unidentifiable,
-                             double conditionNumber, double observability, List<Outlier> outliers,
-                             List<PoseError> train, List<PoseError> validate,
-                             LevenbergMarquardt.Result nominalFit, LevenbergMarquardt.Result fit,
-                             double sigmaPosM, double sigmaRotRad, boolean sixD, double elapsedMs,
-                             List<Correlation> correlations, List<String> pointNames, List<Vec3> toolPoints,
-                             Vec3 anchor, boolean anchorGiven) {
-        this(nominal, calibrated, flangeTtool, instrumentTbase, parameters, unidentifiable, conditionNumber, observability, outliers,
-                train, validate, nominalFit, fit, sigmaPosM, sigmaRotRad, sixD, elapsedMs, correlations, pointNames, toolPoints,
-                anchor, anchorGiven, false);
-    }
-
     /** Distance-only data, to an anchor or between pairs of poses (the errors are distance errors). */
     public boolean distance() { return anchor != null || pairs; }
 

@@ -49,7 +49,7 @@ class DiagnosisReportChartTest {
                         null, null, "scale on joint 2"));
         // A geometric calibration of measured points (no distance anchor, one tool point): only its kind is read here.
         var geometric = new org.robopro.calibration.identification.CalibrationResult(null, null, null, null, List.of(), List.of(), 0, 0,
-                List.of(), List.of(), List.of(), null, null, 0.03e-3, 0, false, 0, List.of(), List.of(), List.of(), null, false);
+                List.of(), List.of(), List.of(), null, null, 0.03e-3, 0, false, 0, List.of(), List.of(), List.of(), null, false, false);
         return new Diagnosis("irb2000", geometric, 0.03e-3, 0.62e-3, validation ? 0.70e-3 : nan, effects, 0.085e-3, validation ? 0.105e-3 : nan,
                 List.of(), List.of(), List.of(), List.of(), List.of(), null, null, null, 40, 0.05, 12,
                 Directions.Source.RECORDED, List.of(), List.of());
