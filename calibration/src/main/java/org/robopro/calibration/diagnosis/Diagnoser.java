@@ -157,11 +157,7 @@ public final class Diagnoser {
                     + "confirm them", rows.size(), k, MIN_POSES_PER_FOLD * k));
             return withNotes(d, notes);
         }
-        Integer[] order = new Integer[rows.size()];
-        for (int i = 0; i < order.length; i++) order[i] = i;
-        java.util.Collections.shuffle(Arrays.asList(order), new java.util.Random(rows.size()));
-        int[] fold = new int[rows.size()];
-        for (int i = 0; i < order.length; i++) fold[order[i]] = i % k;
+        int[] fold = MeasurementSet.folds(rows.size(), k, rows.size());
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
         Map<String, Integer> count = new LinkedHashMap<>();
         double geoSs = 0, effSs = 0;

@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Random;
 import java.util.function.Predicate;
 import org.robopro.models.Vec3;
 
@@ -101,5 +102,21 @@ public record MeasurementSet(String source, Map<String, String> metadata, String
 
     public MeasurementSet withRows(List<Measurement> newRows) {
         return new MeasurementSet(source, metadata, frame, newRows, pointNames, anchor);
+    }
+
+    /**
+     * Fold of each of {@code poses} poses (0..K-1) for K-fold cross-validation: the poses shuffled with
+     * {@code new Random(seed)} (specified by the JDK, so the same on every machine), then dealt
+     * round-robin, so fold sizes differ by at most one.
+     */
+    public static int[] folds(int poses, int k, long seed) {
+        if (k < 2) throw new IllegalArgumentException("--folds must be at least 2, got " + k);
+        if (k > poses) throw new IllegalArgumentException("--folds " + k + " is more than the " + poses + " training poses");
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < poses; i++) order.add(i);
+        Collections.shuffle(order, new Random(seed));
+        int[] fold = new int[poses];
+        for (int i = 0; i < poses; i++) fold[order.get(i)] = i % k;
+        return fold;
     }
 }

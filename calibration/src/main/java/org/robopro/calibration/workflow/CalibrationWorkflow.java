@@ -8,7 +8,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Random;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.Progress;
 import org.robopro.calibration.identification.CalibrationResult;
@@ -163,22 +162,6 @@ public final class CalibrationWorkflow {
         return f == null ? p.toString() : f.toString();
     }
 
-    /**
-     * Fold of each training pose (0..K-1) for K-fold cross-validation: the poses shuffled with
-     * {@code new Random(seed)} (specified by the JDK, so the same on every machine), then dealt
-     * round-robin, so fold sizes differ by at most one.
-     */
-    public static int[] folds(int poses, int k, long seed) {
-        if (k < 2) throw new IllegalArgumentException("--folds must be at least 2, got " + k);
-        if (k > poses) throw new IllegalArgumentException("--folds " + k + " is more than the " + poses + " training poses");
-        List<Integer> order = new ArrayList<>();
-        for (int i = 0; i < poses; i++) order.add(i);
-        Collections.shuffle(order, new Random(seed));
-        int[] fold = new int[poses];
-        for (int i = 0; i < poses; i++) fold[order.get(i)] = i % k;
-        return fold;
-    }
-
     /** A fit on the training part of one fold, evaluated on its held-out part. */
     public interface FoldFit<T> {
         T fit(int fold, MeasurementSet train, MeasurementSet heldOut);
@@ -191,7 +174,7 @@ public final class CalibrationWorkflow {
      */
     public static <T> List<T> crossValidate(MeasurementSet data, int k, long seed, FoldFit<T> fit) {
         List<Measurement> rows = data.rows();
-        int[] fold = folds(rows.size(), k, seed);
+        int[] fold = MeasurementSet.folds(rows.size(), k, seed);
         List<T> out = new ArrayList<>();
         for (int f = 0; f < k; f++) {
             List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
@@ -349,7 +332,7 @@ public final class CalibrationWorkflow {
         Progress main = progress;
         if (s.folds() >= 2) {
             List<Measurement> rows = c.train().rows();
-            int[] fold = folds(rows.size(), s.folds(), s.foldSeed());
+            int[] fold = MeasurementSet.folds(rows.size(), s.folds(), s.foldSeed());
             for (int i = 0; i < rows.size(); i++) foldOf.put(rows.get(i).poseId(), fold[i]);
             double share = 1.0 / (s.folds() + 1);
             List<CalibrationResult> rs = crossValidate(c.train(), s.folds(), s.foldSeed(), (k, tr, va) -> Calibrator.calibrate(nominal, tr, va,

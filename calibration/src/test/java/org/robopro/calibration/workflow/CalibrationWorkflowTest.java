@@ -17,6 +17,7 @@ import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.Progress;
 import org.robopro.calibration.measurement.Measurement;
@@ -73,7 +74,7 @@ class CalibrationWorkflowTest {
 
     @Test
     void folds_sameSeedSameFolds_partitionWithSizesWithinOne() {
-        int[] a = CalibrationWorkflow.folds(103, 5, 1), b = CalibrationWorkflow.folds(103, 5, 1), c = CalibrationWorkflow.folds(103, 5, 2);
+        int[] a = MeasurementSet.folds(103, 5, 1), b = MeasurementSet.folds(103, 5, 1), c = MeasurementSet.folds(103, 5, 2);
         assertArrayEquals(a, b);
         assertFalse(java.util.Arrays.equals(a, c), "another seed, other folds");
         int[] size = new int[5];
@@ -82,7 +83,7 @@ class CalibrationWorkflowTest {
         boolean inOrder = true;
         for (int i = 0; i < a.length; i++) inOrder &= a[i] == i % 5;
         assertFalse(inOrder, "folds are shuffled, not file order");
-        assertThrows(IllegalArgumentException.class, () -> CalibrationWorkflow.folds(3, 5, 1));
+        assertThrows(IllegalArgumentException.class, () -> MeasurementSet.folds(3, 5, 1));
     }
 
     @Test
