@@ -23,6 +23,7 @@ import org.robopro.app.workbench.WorkbenchSession;
 import org.robopro.app.workbench.model.Instruction;
 import org.robopro.app.workbench.model.ProgramRun;
 import org.robopro.app.workbench.model.Target;
+import org.robopro.programs.rapid.RapidAst;
 
 /**
  * The program: instructions in a table (editable type, target, circle point, speed, zone; after
@@ -264,12 +265,11 @@ public final class ProgramPanel extends JPanel {
     }
 
     /** The optional arguments of an imported motion the workbench's own moves do not carry (all but {@code \WObj}), e.g. "\Conc, \V". */
-    static String unmodelledOptions(org.robopro.programs.rapid.RapidAst.Stmt statement) {
-        if (!(statement instanceof org.robopro.programs.rapid.RapidAst.Call call)) return "";
+    static String unmodelledOptions(RapidAst.Stmt statement) {
+        if (!(statement instanceof RapidAst.Call call)) return "";
         List<String> out = new ArrayList<>();
-        for (org.robopro.programs.rapid.RapidAst.Arg a : call.args())
-            if (a.kind() != org.robopro.programs.rapid.RapidAst.ArgKind.POSITIONAL && a.kind() != org.robopro.programs.rapid.RapidAst.ArgKind.NAMED
-                    && !"WObj".equalsIgnoreCase(a.name())) out.add("\\" + a.name());
+        for (RapidAst.Arg a : call.args())
+            if (a.kind() != RapidAst.ArgKind.POSITIONAL && a.kind() != RapidAst.ArgKind.NAMED && !"WObj".equalsIgnoreCase(a.name())) out.add("\\" + a.name());
         return String.join(", ", out);
     }
 
