@@ -509,9 +509,7 @@ public final class WorkbenchSession implements AutoCloseable {
         var oc = lastCalibration;
         if (oc == null || oc.result() != r) throw new IllegalStateException("not the last calibration's result");
         org.robopro.models.RobotLibrary.write(oc.calibrated(), robotFile, overwrite);
-        calibratedModel = r.calibrated();
-        extendedModel = null;
-        model.setCalibrationReference(robotFile.toString());
+        changeApplied("Apply calibration " + robotFile.getFileName(), new Applied(r.calibrated(), null, robotFile.toString()));
         log("Applied the calibrated model " + robotFile + ": RAPID exports are compensated with it");
     }
 
@@ -543,16 +541,48 @@ public final class WorkbenchSession implements AutoCloseable {
         prov.put("diagnosed-nominal", model.robot().name());
         prov.put("diagnosis-train-rms-mm", String.format(java.util.Locale.ROOT, "%.5f", d.finalTrainRmsM() * 1e3));
         org.robopro.models.RobotLibrary.write(d.model().toDescription().withProvenance(prov), robotFile, overwrite);
-        calibratedModel = d.model().geometry();
-        extendedModel = d.model();
-        model.setCalibrationReference(robotFile.toString());
+        changeApplied("Apply extended model " + robotFile.getFileName(), new Applied(d.model().geometry(), d.model(), robotFile.toString()));
         log("Applied the extended model " + robotFile + " (" + d.effects().size() + " effects): RAPID exports are compensated with it");
     }
 
+    /** Stops compensating RAPID exports (undoable: Edit &gt; Undo applies the calibration again). */
     public void clearCalibration() {
-        calibratedModel = null;
-        extendedModel = null;
+        changeApplied("Stop compensating", new Applied(null, null, model.calibrationReference()));
         log("Calibration no longer applied: RAPID exports are nominal");
+    }
+
+    /**
+     * What compensation uses: the calibrated geometry, the extended model (or null), and the robot
+     * file the project records as its calibration reference.
+     */
+    private record Applied(org.robopro.kinematics.KinematicModel calibrated,
+                           org.robopro.calibration.diagnosis.ExtendedModel extended, String reference) {}
+
+    private synchronized Applied applied() { return new Applied(calibratedModel, extendedModel, model.calibrationReference()); }
+
+    /**
+     * Changes what compensation uses as one edit on the window's undo history (Edit &gt; Undo,
+     * Ctrl+Z), so applying a calibration can be taken back like any other edit. Undo puts the
+     * models in use back; a robot file the apply wrote stays on disk.
+     */
+    private void changeApplied(String label, Applied after) {
+        Applied before = applied();
+        putApplied(after);
+        model.history().push(label, before, after, this::restoreApplied);
+    }
+
+    private void restoreApplied(Applied a) {
+        putApplied(a);
+        log(a.calibrated() == null ? "Calibration no longer applied: RAPID exports are nominal"
+                : "Compensating RAPID exports with " + (a.extended() != null ? "the extended model " : "the calibrated model ") + a.reference());
+    }
+
+    private void putApplied(Applied a) {
+        synchronized (this) {
+            calibratedModel = a.calibrated();
+            extendedModel = a.extended();
+        }
+        if (!java.util.Objects.equals(model.calibrationReference(), a.reference())) model.setCalibrationReference(a.reference());
     }
 
     // ---- cell layout -------------------------------------------------------------------------

@@ -198,6 +198,54 @@ class WorkbenchSessionTest {
         assertEquals(robot.dof(), s.model().q().length);
     }
 
+    /**
+     * Applying a calibration is an edit like any other: Undo takes the calibrated model out of use
+     * (RAPID exports nominal again, the project's calibration reference back), Redo puts it back,
+     * and stopping compensation is undone the same way. The robot file written stays on disk.
+     */
+    @Test
+    void undo_applyCalibration_exportsNominalAgain_redoCompensatesAgain() throws Exception {
+        var trial = org.robopro.world.Scenario.named("null irb2000, 50 poses").trial(3);
+        Path file = dir.resolve("campaign.csv");
+        Files.writeString(file, trial.campaign().text());
+        var r = s.calibrate(s.loadMeasurements(file), org.robopro.calibration.Cancellation.NONE, org.robopro.calibration.Progress.NONE);
+        Target a = s.teach();
+        s.addMove(Instruction.Type.MOVEJ, a.name(), 200, 10);
+        Path nominal = dir.resolve("Nominal.mod"), before = dir.resolve("Before.mod");
+        s.exportRapid(nominal, false);
+        String referenceBefore = s.model().calibrationReference();
+
+        Path robotFile = dir.resolve("irb2000-calibrated.robot.json");
+        s.applyCalibration(r, robotFile, file.toString(), false);
+        assertTrue(s.calibratedModel().isPresent());
+        assertEquals(robotFile.toString(), s.model().calibrationReference());
+        assertEquals("Apply calibration irb2000-calibrated.robot.json", s.model().history().undoLabel().orElseThrow());
+        Path compensated = dir.resolve("Compensated.mod");
+        s.exportRapid(compensated, false);
+        assertFalse(sameProgram(nominal, compensated), "the applied calibration compensates the export");
+
+        s.undo();
+        assertTrue(s.calibratedModel().isEmpty(), "undo takes the calibration out of use");
+        assertEquals(referenceBefore, s.model().calibrationReference());
+        s.exportRapid(before, false);
+        assertTrue(sameProgram(nominal, before), "after undo the export is nominal again");
+        assertTrue(Files.exists(robotFile), "the written robot file stays");
+
+        s.redo();
+        assertEquals(r.calibrated(), s.calibratedModel().orElseThrow());
+        assertEquals(robotFile.toString(), s.model().calibrationReference());
+
+        s.clearCalibration();
+        assertTrue(s.calibratedModel().isEmpty());
+        s.undo();
+        assertEquals(r.calibrated(), s.calibratedModel().orElseThrow(), "stopping compensation is undone too");
+    }
+
+    private static boolean sameProgram(Path a, Path b) throws java.io.IOException {
+        String na = a.getFileName().toString().replace(".mod", ""), nb = b.getFileName().toString().replace(".mod", "");
+        return Files.readString(a).replace(na, "X").equals(Files.readString(b).replace(nb, "X"));
+    }
+
     @Test
     void undo_backToTheSavedState_isNotDirty() throws Exception {
         s.save(dir.resolve("u.robopro.json"));

@@ -295,6 +295,8 @@ public final class Diagnoser {
 
         Work w = new Work(model, rows, geo, validate, o);
         List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
+        // Each pose's last move per joint, in the measuring order of the whole file: a lost motion that builds up over the move.
+        Directions.Moves moves = geo.pairs() ? Directions.Moves.NONE : Directions.moves(trainAll, validate);
 
         // The candidate family, from what the data can support.
         boolean hasTemp = allFinite(rows, Measurement::tempC), hasTime = allFinite(rows, Measurement::timeS);
@@ -315,9 +317,10 @@ public final class Diagnoser {
                     + "each pair shows an effect only through the change of the length between the point's two places, so a "
                     + "displacement the same at both poses (a drift of the point, an error of joint 1 alone) is not seen at all; an "
                     + "effect the geometry can absorb is reported as not identifiable. The effects are tested at both poses of "
-                    + "every pair, each with its own joints and directions; the locate scan and the evidence plots, which resolve "
-                    + "one pose per row, are not run, so structure outside the named families is not located: measure positions "
-                    + "(x, y, z) to locate it");
+                    + "every pair, each with its own joints and directions, and so is the locate scan's search for structure "
+                    + "outside the named families (a located structure's plot puts each length at the pose that carries more of "
+                    + "its change); the effects' partial-residual plots, which resolve one pose per row, are not drawn. Measure "
+                    + "positions (x, y, z) to see the direction of an error");
         else if (geo.distance())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
@@ -464,6 +467,20 @@ public final class Diagnoser {
             // predicts left-out poses as well (within the margin) takes its place, to be judged against the fallback
             // in the claim check (which also asks whether the fallback finds structure the family leaves).
             boolean smooth = e.kind() == Effect.Kind.SMOOTH;
+            if (e.kind() == Effect.Kind.BACKLASH && !moves.isEmpty()) {
+                // The other form of the same lost motion: constant, or building up over the move (the build-up
+                // length that predicts left-out poses best). It takes the place only when clearly better.
+                Effect form = e.buildsUp() ? Effect.backlash(e.joint()) : null;
+                double formPress = form == null ? Double.POSITIVE_INFINITY : at.pressReplacing(k, form, w.conditions);
+                if (!e.buildsUp()) {
+                    Effect.Term wu = bestWindUp(at, k, e.joint(), moves, w.conditions);
+                    if (wu != null) { form = wu.effect(); formPress = wu.values()[0]; }
+                }
+                if (form != null && !refusedAliases.contains(form.label()) && formPress < own * (1 - ALIAS_MARGIN)) {
+                    best = form;
+                    bestPress = formPress;
+                }
+            }
             for (Effect a : aliases(e, family, selected)) {
                 if (refusedAliases.contains(a.label())) continue;
                 if (smooth && (a.isFallback() || !checkedAgainstFallbacks(a) || a.target() != Effect.Target.DRIVE)) continue;
@@ -531,6 +548,27 @@ public final class Diagnoser {
                 steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
             }
         }
+        // With validation data, a lost motion that builds up over the move is claimed only when it predicts the
+        // validation poses better than the constant lost motion of the same joint in its place.
+        for (int k = 0; k < selected.size() && w.validate != null && w.validate.size() > 0; k++) {
+            Effect e = selected.get(k);
+            if (!e.buildsUp()) continue;
+            double with = w.validateError(fit);
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, Effect.backlash(e.joint()), false);
+            double wo = w.validateError(plain);
+            int at = selected.size() - 1;
+            if (selected.get(at).kind() != Effect.Kind.BACKLASH || selected.get(at).buildsUp() || !(with < wo)) {
+                aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than a constant lost "
+                        + "motion but not the validation poses (weighted error %.1f against %.1f), so the lost motion is taken as "
+                        + "constant", e.label(), with, wo));
+                fit = plain;
+                continue;
+            }
+            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
+            aliasNotes.add(String.format(Locale.ROOT, "%s predicts the validation poses better than a constant lost motion of "
+                    + "joint %d (weighted error %.1f against %.1f)", e.label(), e.joint() + 1, w.validateError(fit), wo));
+            break;
+        }
         timer.mark("aliases");
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
@@ -584,7 +622,8 @@ public final class Diagnoser {
             Diagnosis.Plot plot = fit.problem.pairs() ? null : Plots.partialResidual(plotTester, e, v);
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
-                            k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource)));
+                            k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource,
+                            e.kind() == Effect.Kind.BACKLASH && !fit.problem.pairs() ? halfPlaySizeM(plotTester, e.joint(), v[0]) : Double.NaN)));
             terms.add(new Effect.Term(e, v));
         }
         List<Diagnosis.Finding> implausibleFindings = new ArrayList<>();
@@ -685,6 +724,54 @@ public final class Diagnoser {
         bc.threshold = old.candidate.threshold;
         steps.add(new Step(bc, f.trainRms, valWith));
         return f;
+    }
+
+    /**
+     * The displacement of the measured point by a lost motion of {@code b} on drive {@code joint} at
+     * its full half-play, RMS over the poses, m (position rows only).
+     */
+    static double halfPlaySizeM(Tester t, int joint, double b) {
+        double[] s = t.signature(Effect.backlash(joint), t.w.conditions);
+        double ss = 0;
+        int poses = t.m / t.rpp;
+        for (int i = 0; i < poses; i++)
+            for (int a = 0; a < t.posRows; a++) { double d = s[i * t.rpp + a] * b; ss += d * d; }
+        return Math.sqrt(ss / Math.max(1, poses * t.perPose)) * t.fit.problem.sigmaPos();
+    }
+
+    /** Build-up lengths of the wind-up grid, rad: 0.5° to 40° in steps of 25 %, refined between the neighbours of the best. */
+    static final double WINDUP_MIN_RAD = Math.toRadians(0.5), WINDUP_MAX_RAD = Math.toRadians(40), WINDUP_STEP = 1.25;
+
+    /**
+     * The lost motion of {@code joint} that builds up over the move, with the build-up length that
+     * predicts left-out poses best in place of selected effect {@code k}: a grid of lengths (b is
+     * linear at each), then a golden-section search in log length between the best one's
+     * neighbours. Returned as a term whose value is that leave-one-pose-out error; null when no
+     * length is testable.
+     */
+    static Effect.Term bestWindUp(Tester at, int k, int joint, Directions.Moves moves, List<PoseConditions> conds) {
+        List<Double> grid = new ArrayList<>();
+        for (double x = WINDUP_MIN_RAD; x <= WINDUP_MAX_RAD * 1.0001; x *= WINDUP_STEP) grid.add(x);
+        double[] press = new double[grid.size()];
+        int best = -1;
+        for (int i = 0; i < press.length; i++) {
+            press[i] = at.pressReplacing(k, Effect.windUp(joint, grid.get(i), moves), conds);
+            if (Double.isFinite(press[i]) && (best < 0 || press[i] < press[best])) best = i;
+        }
+        if (best < 0) return null;
+        double a = Math.log(grid.get(Math.max(0, best - 1))), b = Math.log(grid.get(Math.min(grid.size() - 1, best + 1)));
+        double xBest = grid.get(best), pBest = press[best];
+        double g = (Math.sqrt(5) - 1) / 2;
+        double c = b - g * (b - a), d = a + g * (b - a);
+        double pc = at.pressReplacing(k, Effect.windUp(joint, Math.exp(c), moves), conds);
+        double pd = at.pressReplacing(k, Effect.windUp(joint, Math.exp(d), moves), conds);
+        for (int it = 0; it < 8; it++) {
+            if (pc < pd) { b = d; d = c; pd = pc; c = b - g * (b - a); pc = at.pressReplacing(k, Effect.windUp(joint, Math.exp(c), moves), conds); }
+            else { a = c; c = d; pc = pd; d = a + g * (b - a); pd = at.pressReplacing(k, Effect.windUp(joint, Math.exp(d), moves), conds); }
+        }
+        if (pc < pBest) { pBest = pc; xBest = Math.exp(c); }
+        if (pd < pBest) { pBest = pd; xBest = Math.exp(d); }
+        return new Effect.Term(Effect.windUp(joint, xBest, moves), new double[] {pBest});
     }
 
     /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
@@ -993,7 +1080,13 @@ public final class Diagnoser {
         for (Effect e : selected)
             if (e.kind() == Effect.Kind.BACKLASH) {
                 int j = e.joint() + 1;
-                b.append(String.format(Locale.ROOT, " Lost motion of joint %d is modelled as a constant half-play; if the lag "
+                b.append(e.buildsUp()
+                        ? String.format(Locale.ROOT, " Lost motion of joint %d is modelled as building up over the move (build-up "
+                        + "length %.1f deg, from the last move before each pose); if it builds up over the travel since the last "
+                        + "reversal rather than the last move, or differs between the two flanks, that model leaves this. To "
+                        + "tell: approach a few poses of joint %d from each side after moves of several sizes (0.5, 2, 10 and 30 "
+                        + "degrees), once in one step and once in several, and compare the lag.", j, Math.toDegrees(e.buildUpRad()), j)
+                        : String.format(Locale.ROOT, " Lost motion of joint %d is modelled as a constant half-play; if the lag "
                         + "grows with the size of the move before each pose (friction winding up) or differs between the two "
                         + "flanks, a constant play leaves this. To tell: approach a few poses of joint %d from each side after "
                         + "moves of several sizes (0.5, 2, 10 and 30 degrees) and compare the lag.", j, j));
@@ -1493,6 +1586,19 @@ public final class Diagnoser {
         final double[][] pointBase; // predicted measured point per pose (the points' mean with several), base frame
         final double[][][] pointsBase; // predicted point per pose and measured point, base frame
         /**
+         * The poses each residual row depends on, "ends": one (the row's pose), or two for a
+         * distance between a pair of poses (the first pose, then the second). Per end, the rows as
+         * poses of their own, their conditions, the predicted measured point, and the sensitivities
+         * of {@link #dQ}, {@link #dStrain}, {@link #dTrans} to a change at that end alone (their sum
+         * over the ends is those arrays): an error that is a function of the pose acts at each end
+         * with its own value.
+         */
+        final int ends;
+        final List<List<Measurement>> endRows = new ArrayList<>();
+        final List<List<PoseConditions>> endConditions = new ArrayList<>();
+        final double[][][] endPoint;
+        final double[][] endDQ, endDStrain, endDTrans;
+        /**
          * The measurement layout of the residual rows: each pose's first {@code posRows} rows hold
          * {@code perPose} measurements of {@code dim} components each (3 per measured point, points in
          * order, or 1 for a distance), followed by rotation rows with orientations.
@@ -1537,6 +1643,43 @@ public final class Diagnoser {
                 for (int a = 0; a < 3; a++) dTrans[i * 3 + a] = jf[i * nFull + off + dof + 1 + a];
             }
             KinematicModel geo = fit.problem.modelOf(fit.full);
+            double[][][] ep = null;
+            if (fit.problem.pairs()) {
+                ends = 2;
+                double[][] jEnd = {new double[m * nFull], new double[m * nFull]};
+                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
+                endDQ = new double[2][m * dof];
+                endDStrain = new double[2][m];
+                endDTrans = new double[2][m * 3];
+                ep = new double[2][w.rows.size()][];
+                for (int e = 0; e < 2; e++) {
+                    List<Measurement> er = new ArrayList<>();
+                    List<PoseConditions> ec = new ArrayList<>();
+                    for (Measurement r : w.rows) {
+                        Measurement end = e == 0 ? r.firstPose() : r.secondPose();
+                        er.add(end);
+                        ec.add(PoseConditions.of(end));
+                    }
+                    endRows.add(er);
+                    endConditions.add(ec);
+                    for (int i = 0; i < m; i++) {
+                        for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
+                        endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
+                        for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
+                    }
+                    for (int i = 0; i < er.size(); i++) {
+                        org.robopro.models.Vec3 p = geo.flange(er.get(i).q()).apply(fit.problem.toolPointOf(fit.full, 0));
+                        ep[e][i] = new double[] {p.x(), p.y(), p.z()};
+                    }
+                }
+            } else {
+                ends = 1;
+                endRows.add(w.rows);
+                endConditions.add(w.conditions);
+                endDQ = new double[][] {dQ};
+                endDStrain = new double[][] {dStrain};
+                endDTrans = new double[][] {dTrans};
+            }
             int nPts = fit.problem.pointCount();
             pointBase = new double[w.rows.size()][3];
             pointsBase = new double[w.rows.size()][nPts][];
@@ -1548,6 +1691,7 @@ public final class Diagnoser {
                     for (int a = 0; a < 3; a++) pointBase[i][a] += pointsBase[i][k][a] / nPts;
                 }
             }
+            endPoint = ep != null ? ep : new double[][][] {pointBase};
             rPerp = project(fit.r);
             double s = 0;
             for (double v : rPerp) s += v * v;
@@ -1717,7 +1861,7 @@ public final class Diagnoser {
             Effect.Target t = e.target();
             double[] g = new double[t == Effect.Target.POSITION ? 3 * k : k];
             for (int i = 0; i < poses; i++) {
-                if (t != Effect.Target.POSITION) e.regressor(w.rows.get(i).q(), conds.get(i), g);
+                if (t != Effect.Target.POSITION) e.regressor(w.rows.get(i), conds.get(i), g);
                 for (int a = 0; a < rpp; a++) {
                     int row = i * rpp + a;
                     // An effect on the measured point moves each point by its own regressor (its place in the base frame).

@@ -124,6 +124,55 @@ public final class Directions {
         return out;
     }
 
+    /**
+     * Each pose's last move per joint, signed (rad, or m for a prismatic joint), in the measuring
+     * order of the whole file (as {@link #prepare}: training and validation rows of one file merged,
+     * by {@code time_s}, else by file line): the move from the previous pose, a joint that moved by
+     * less than {@link #PLAY_TOLERANCE} keeping its last real move (read-back jitter is no move);
+     * the first pose's move is from the zero position a measuring program starts at. Taken from the
+     * joint values whether or not the directions were recorded: a lost motion that builds up over
+     * the move (friction wind-up) depends on its size.
+     */
+    public static Moves moves(MeasurementSet train, MeasurementSet validate) {
+        if (train.size() == 0 || train.isPairs()) return Moves.NONE;
+        List<Measurement> file = new ArrayList<>(train.rows());
+        boolean sameFile = validate != null && validate.size() > 0 && Objects.equals(train.source(), validate.source());
+        if (sameFile) file.addAll(validate.rows());
+        Map<Measurement, double[]> out = new HashMap<>();
+        lastMoves(ordered(file), out);
+        if (validate != null && validate.size() > 0 && !sameFile) lastMoves(ordered(validate.rows()), out);
+        return new Moves(out);
+    }
+
+    private static void lastMoves(List<Measurement> inOrder, Map<Measurement, double[]> out) {
+        double[] prev = null, last = null;
+        for (Measurement m : inOrder) {
+            if (prev == null) { prev = new double[m.dof()]; last = new double[m.dof()]; }
+            for (int j = 0; j < m.dof(); j++) {
+                double moved = m.q(j) - prev[j];
+                if (Math.abs(moved) > PLAY_TOLERANCE) { last[j] = moved; prev[j] = m.q(j); }
+            }
+            out.put(m, last.clone());
+        }
+    }
+
+    /** Each pose's last move per joint ({@link #moves}); looked up by the row (pose id, joint values and conditions). */
+    public static final class Moves {
+        /** No move known: a lost motion is taken at its full size. */
+        public static final Moves NONE = new Moves(Map.of());
+        private final Map<Measurement, double[]> byRow;
+
+        Moves(Map<Measurement, double[]> byRow) { this.byRow = byRow; }
+
+        /** The signed last move of joint j before row m was measured, NaN when unknown. */
+        public double of(Measurement m, int j) {
+            double[] v = byRow.get(m);
+            return v == null ? Double.NaN : v[j];
+        }
+
+        public boolean isEmpty() { return byRow.isEmpty(); }
+    }
+
     private static MeasurementSet apply(MeasurementSet s, Map<String, int[]> dirs) {
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : s.rows()) {

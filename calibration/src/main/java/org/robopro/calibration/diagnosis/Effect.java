@@ -129,6 +129,8 @@ public final class Effect {
     private final int[] links;               // thermal-link: frame indices i whose vector s_i (frame i -> i+1) grows
     private final int nBasis;                // smooth, point-smooth, zero-drift: spline functions (per axis)
     private Along along;                     // point-smooth, zero-drift: the variable
+    private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
+    private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -176,6 +178,41 @@ public final class Effect {
     }
 
     public static Effect backlash(int joint) { return drive(Kind.BACKLASH, joint); }
+
+    /**
+     * Lost motion that builds up over the move (friction wind-up): the output lags by
+     * (b/2)·dir·(1 − exp(−|last move| / x0)), x0 = {@code buildUpRad}. Solid friction in the
+     * transmission winds up along the travel after a reversal and saturates (Dahl's model:
+     * F = Fc (1 − exp(−x/x0)); P. R. Dahl, "A solid friction model", Aerospace Corp.
+     * TOR-0158(3107-18)-1, 1968; B. Armstrong-Hélouvry, P. Dupont, C. Canudas de Wit, "A survey of
+     * models, analysis tools and compensation methods for the control of machines with friction",
+     * Automatica 30 (1994) 1083, §2.2 "pre-sliding displacement"), so a short move leaves a smaller
+     * lag than a long one. The move of each row comes from {@code moves} (the measuring order); where
+     * it is unknown (a compensated program, a row not in the campaign) the full lag of a long move is
+     * taken, which is plain backlash. b is the lag after a long move, as for {@link #backlash}.
+     */
+    public static Effect windUp(int joint, double buildUpRad, Directions.Moves moves) {
+        if (!(buildUpRad > 0)) throw new IllegalArgumentException("build-up length " + buildUpRad);
+        Effect e = drive(Kind.BACKLASH, joint);
+        e.buildUp = buildUpRad;
+        e.moves = moves == null ? Directions.Moves.NONE : moves;
+        return e;
+    }
+
+    /** Whether this is lost motion that builds up over the move ({@link #windUp}). */
+    public boolean buildsUp() { return kind == Kind.BACKLASH && Double.isFinite(buildUp); }
+
+    /** The build-up length of a lost motion that builds up over the move, rad (NaN for a constant one). */
+    public double buildUpRad() { return buildUp; }
+
+    /** A wind-up's share of its full lag after row m's last move of its joint (1 when the move is unknown). */
+    double windUpShare(Measurement m) {
+        double x = m == null ? Double.NaN : moves.of(m, joint);
+        return Double.isFinite(x) ? 1 - Math.exp(-Math.abs(x) / buildUp) : 1;
+    }
+
+    /** The signed last move of this effect's joint before row m (NaN when unknown). */
+    double lastMove(Measurement m) { return moves.of(m, joint); }
     public static Effect scale(int joint) { return drive(Kind.SCALE, joint); }
     /** q_out,target += κ q_source. */
     public static Effect coupling(int target, int source) {
@@ -370,6 +407,8 @@ public final class Effect {
                     Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (perMass ? " (masses re-estimated)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
+            case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
+                    Math.toDegrees(buildUp)) : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
             case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
@@ -406,8 +445,28 @@ public final class Effect {
     }
 
     /**
+     * The regressor of a drive or strain effect at a measured row under conditions c: as
+     * {@link #regressor(double[], PoseConditions, double[])} at the row's joint values, with the
+     * row's last move for a lost motion that builds up over the move.
+     */
+    public void regressor(Measurement row, PoseConditions c, double[] g) {
+        regressor(row.q(), c, g);
+        if (buildsUp()) g[0] *= windUpShare(row);
+    }
+
+    /** The drive or strain value at a measured row ({@link #regressor(Measurement, PoseConditions, double[])}). */
+    public double valueAt(double[] v, Measurement row, PoseConditions c) {
+        double[] g = new double[size()];
+        regressor(row, c, g);
+        double s = 0;
+        for (int i = 0; i < g.length; i++) s += g[i] * v[i];
+        return s;
+    }
+
+    /**
      * The regressor g (length {@link #size()}) of a drive or strain effect at controller values q
-     * under conditions c: Δq_joint = g·v, or ε = g·v.
+     * under conditions c: Δq_joint = g·v, or ε = g·v. (A lost motion that builds up over the move
+     * is taken at its full size here: the move is not known from q and c.)
      */
     public void regressor(double[] q, PoseConditions c, double[] g) {
         switch (kind) {
@@ -574,7 +633,7 @@ public final class Effect {
                 if (dThetaDv != null) Arrays.fill(dThetaDv, 0);
                 if (t != Target.DRIVE) return;
                 double[] g = new double[k];
-                regressor(row.q(), PoseConditions.of(row), g);
+                regressor(row, PoseConditions.of(row), g);
                 double s = 0;
                 for (int i = 0; i < k; i++) s += g[i] * values[i];
                 for (int i = 0; i < dof; i++) {
@@ -627,6 +686,7 @@ public final class Effect {
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP -> p.put("time_s_step", tauS);
+            case BACKLASH -> { if (buildsUp()) p.put("build_up_rad", buildUp); }
             default -> { }
         }
         return new EffectDescription(kind.json, joints1(), p);
@@ -661,7 +721,12 @@ public final class Effect {
                 if (hs.isEmpty()) throw new InputException(file, 0, 0, "effects.gear-periodic.parameters_si", "no harmonic a1, a2, ...");
                 yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
             }
-            case BACKLASH -> backlash(js.get(0) - 1);
+            case BACKLASH -> {
+                if (!ps.containsKey("build_up_rad")) yield backlash(js.get(0) - 1);
+                double x0 = require(d, "build_up_rad", file);
+                if (!(x0 > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.build_up_rad", "must be > 0, got " + x0);
+                yield windUp(js.get(0) - 1, x0, null);
+            }
             case SCALE -> scale(js.get(0) - 1);
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);
             case SMOOTH -> {

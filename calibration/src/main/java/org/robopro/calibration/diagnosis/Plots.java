@@ -43,15 +43,15 @@ final class Plots {
                 double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
                 proj += d * t.fit.r[i * rpp + a];
             }
-            double y = e.value(v, row.q(), c) - proj / dn[i]; // residual is predicted - measured
+            double y = e.valueAt(v, row, c) - proj / dn[i]; // residual is predicted - measured
             double x = xOf(e, row, c);
-            if (e.kind() == Effect.Kind.BACKLASH) x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
+            if (e.kind() == Effect.Kind.BACKLASH && !e.buildsUp()) x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
             pts.add(new double[] {x, y * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH ? 400 : 2;
+        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() ? 400 : 2;
         double[] cx = new double[nc], cy = new double[nc];
         for (int i = 0; i < nc; i++) {
             cx[i] = lo + (hi - lo) * i / (nc - 1);
@@ -80,7 +80,8 @@ final class Plots {
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
-            case BACKLASH -> "approach direction dir" + (e.joint() + 1);
+            case BACKLASH -> e.buildsUp() ? "last move of joint " + (e.joint() + 1) + " before the pose, signed (deg)"
+                    : "approach direction dir" + (e.joint() + 1);
             case THERMAL -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case COUPLING -> "joint " + (e.source() + 1) + " angle q" + (e.source() + 1) + " (deg)";
         };
@@ -96,7 +97,8 @@ final class Plots {
             case ZERO_STEP -> c.timeS();
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
-            case BACKLASH -> c.direction(e.joint());
+            case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
+                    ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.lastMove(row))) : c.direction(e.joint());
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
         };
@@ -128,7 +130,9 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case BACKLASH -> -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
+            case BACKLASH -> e.buildsUp() // the lag builds up with the move: −(b/2)·dir·(1 − exp(−|move|/x0))
+                    ? -0.5 * v[0] * Math.signum(x) * (1 - Math.exp(-Math.abs(Math.toRadians(x)) / e.buildUpRad()))
+                    : -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING -> v[0] * Math.toRadians(x);
         };

@@ -8,8 +8,13 @@ import java.util.Locale;
 final class Words {
     private Words() { }
 
+    /**
+     * @param sizeM for a lost motion, the displacement of the measured point by its full half-play (RMS over the
+     *              poses, m); NaN when not known
+     */
     static String finding(Effect e, double[] v, double[] s, Diagnosis.Evidence ev, double trainBefore, double trainAfter,
-                          double valBefore, double valAfter, Directions.Source dirs) {
+                          double valBefore, double valAfter, Directions.Source dirs, double sizeM) {
+        String at = Double.isFinite(sizeM) ? String.format(Locale.ROOT, ", %.4f mm at the measured point (RMS over the poses)", sizeM * 1e3) : "";
         String what = switch (e.kind()) {
             case COMPLIANCE -> e.perMass()
                     ? String.format(Locale.ROOT, "Joint %d gives way under gravity, and the robot file's masses do not match: with "
@@ -70,9 +75,17 @@ final class Words {
                     + "%.4f mm); the instrument or the robot's base moves. Compensation applies it only when the %s is given.",
                     e.usesTimeProxy() ? "with time" : "with temperature", 1e3 * Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]),
                     e.usesTimeProxy() ? "hour" : "K", 1e3 * v[0], 1e3 * v[1], 1e3 * v[2], e.usesTimeProxy() ? "time" : "temperature");
-            case BACKLASH -> String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
-                    + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in (directions %s).", e.joint() + 1,
-                    Math.toDegrees(v[0]), Math.toDegrees(s[0]), dirs.words);
+            case BACKLASH -> e.buildsUp()
+                    ? String.format(Locale.ROOT, "Joint %d has lost motion that builds up over the move (friction wind-up): after a "
+                    + "long move its output lags the motor-side encoder by half of %.4f ± %.4f deg behind the direction it last "
+                    + "moved in%s; after a shorter move the lag is smaller, reaching 63 %% of that after %.1f deg of travel "
+                    + "(build-up length, chosen by the leave-one-pose-out error; Dahl's solid-friction model). Directions %s, "
+                    + "move sizes from the joint values in the measuring order. Compensation does not know the next move's size "
+                    + "and takes the full lag.", e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(s[0]), at,
+                    Math.toDegrees(e.buildUpRad()), dirs.words)
+                    : String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
+                    + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in%s (directions %s).", e.joint() + 1,
+                    Math.toDegrees(v[0]), Math.toDegrees(s[0]), at, dirs.words);
             case THERMAL -> e.usesTimeProxy()
                     ? String.format(Locale.ROOT, "The arm grows while it warms up (thermal expansion, inferred from time): "
                     + "strain %.3g ± %.2g at saturation, time constant %.0f s.", v[0], s[0], e.tauS())

@@ -93,6 +93,7 @@ public final class ProgramPanel extends JPanel {
             showTime(plan.duration() * timeline.getValue() / 1000.0);
         });
         player = new Timer(30, e -> tick());
+        refreshWobjs();
     }
 
     private JButton button(String text, String name, java.awt.event.ActionListener l) {
