@@ -390,9 +390,10 @@ public final class Diagnoser {
                     + "each pair shows an effect only through the change of the length between the point's two places, so a "
                     + "displacement the same at both poses (a drift of the point, an error of joint 1 alone) is not seen at all; an "
                     + "effect the geometry can absorb is reported as not identifiable. The effects are tested at both poses of "
-                    + "every pair, each with its own joints and directions; the locate scan and the evidence plots, which resolve "
-                    + "one pose per row, are not run, so structure outside the named families is not located: measure positions "
-                    + "(x, y, z) to locate it");
+                    + "every pair, each with its own joints and directions, and so is the locate scan's search for structure "
+                    + "outside the named families (a located structure's plot puts each length at the pose that carries more of "
+                    + "its change); the effects' partial-residual plots, which resolve one pose per row, are not drawn. Measure "
+                    + "positions (x, y, z) to see the direction of an error");
         else if (geo.distance())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
@@ -1658,6 +1659,19 @@ public final class Diagnoser {
         final double[][] pointBase; // predicted measured point per pose (the points' mean with several), base frame
         final double[][][] pointsBase; // predicted point per pose and measured point, base frame
         /**
+         * The poses each residual row depends on, "ends": one (the row's pose), or two for a
+         * distance between a pair of poses (the first pose, then the second). Per end, the rows as
+         * poses of their own, their conditions, the predicted measured point, and the sensitivities
+         * of {@link #dQ}, {@link #dStrain}, {@link #dTrans} to a change at that end alone (their sum
+         * over the ends is those arrays): an error that is a function of the pose acts at each end
+         * with its own value.
+         */
+        final int ends;
+        final List<List<Measurement>> endRows = new ArrayList<>();
+        final List<List<PoseConditions>> endConditions = new ArrayList<>();
+        final double[][][] endPoint;
+        final double[][] endDQ, endDStrain, endDTrans;
+        /**
          * The measurement layout of the residual rows: each pose's first {@code posRows} rows hold
          * {@code perPose} measurements of {@code dim} components each (3 per measured point, points in
          * order, or 1 for a distance), followed by rotation rows with orientations.
@@ -1702,6 +1716,43 @@ public final class Diagnoser {
                 for (int a = 0; a < 3; a++) dTrans[i * 3 + a] = jf[i * nFull + off + dof + 1 + a];
             }
             KinematicModel geo = fit.problem.modelOf(fit.full);
+            double[][][] ep = null;
+            if (fit.problem.pairs()) {
+                ends = 2;
+                double[][] jEnd = {new double[m * nFull], new double[m * nFull]};
+                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
+                endDQ = new double[2][m * dof];
+                endDStrain = new double[2][m];
+                endDTrans = new double[2][m * 3];
+                ep = new double[2][w.rows.size()][];
+                for (int e = 0; e < 2; e++) {
+                    List<Measurement> er = new ArrayList<>();
+                    List<PoseConditions> ec = new ArrayList<>();
+                    for (Measurement r : w.rows) {
+                        Measurement end = e == 0 ? r.firstPose() : r.secondPose();
+                        er.add(end);
+                        ec.add(PoseConditions.of(end));
+                    }
+                    endRows.add(er);
+                    endConditions.add(ec);
+                    for (int i = 0; i < m; i++) {
+                        for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
+                        endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
+                        for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
+                    }
+                    for (int i = 0; i < er.size(); i++) {
+                        org.robopro.models.Vec3 p = geo.flange(er.get(i).q()).apply(fit.problem.toolPointOf(fit.full, 0));
+                        ep[e][i] = new double[] {p.x(), p.y(), p.z()};
+                    }
+                }
+            } else {
+                ends = 1;
+                endRows.add(w.rows);
+                endConditions.add(w.conditions);
+                endDQ = new double[][] {dQ};
+                endDStrain = new double[][] {dStrain};
+                endDTrans = new double[][] {dTrans};
+            }
             int nPts = fit.problem.pointCount();
             pointBase = new double[w.rows.size()][3];
             pointsBase = new double[w.rows.size()][nPts][];
@@ -1713,6 +1764,7 @@ public final class Diagnoser {
                     for (int a = 0; a < 3; a++) pointBase[i][a] += pointsBase[i][k][a] / nPts;
                 }
             }
+            endPoint = ep != null ? ep : new double[][][] {pointBase};
             rPerp = project(fit.r);
             double s = 0;
             for (double v : rPerp) s += v * v;

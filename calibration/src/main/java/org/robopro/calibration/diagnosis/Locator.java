@@ -5,7 +5,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.robopro.calibration.PoseConditions;
-import org.robopro.calibration.measurement.Measurement;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
 
@@ -55,7 +54,8 @@ final class Locator {
         double[] s;   // m x k, projected out of the model's span
         double[] n0;  // unprojected column norms
         int k;
-        double[] x;   // per pose, the variable (plots)
+        double[][] x; // per end and pose, the variable (plots)
+        double[][] endS; // with two ends: each end's own columns (m x k, unprojected), else null
         String xLabel;
     }
 
@@ -73,24 +73,34 @@ final class Locator {
 
     private Locator() { }
 
-    /** The probes the data offer at this fit. */
+    /**
+     * The probes the data offer at this fit. A residual row depends on one pose, or on two for a
+     * distance between a pair of poses ({@link Diagnoser.Tester#ends}): a probe's column is then
+     * the sum over both ends of each end's sensitivity times the regressor at that end's own
+     * joints, conditions and measured point (a joint error f(q) changes the length by
+     * uᵀ(J_b f(q_b) − J_a f(q_a)), not by a function of one pose's variable).
+     */
     static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs) {
-        // The probes resolve one pose per row; a distance between two poses has two (the diagnosis says the scan is not run).
-        if (t.fit.problem.pairs()) return List.of();
         Diagnoser.Work w = t.w;
-        int dof = t.dof, poses = w.rows.size(), m = t.m, rpp = t.rpp;
+        int dof = t.dof, poses = w.rows.size(), m = t.m, rpp = t.rpp, ends = t.ends;
         List<Probe> out = new ArrayList<>();
         int hMax = harmonicsFor(poses);
         for (int j = 0; j < dof; j++) {
             double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (Measurement r : w.rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+            double[][] qx = new double[ends][poses];
+            for (int e = 0; e < ends; e++)
+                for (int i = 0; i < poses; i++) {
+                    double q = t.endRows.get(e).get(i).q(j);
+                    lo = Math.min(lo, q);
+                    hi = Math.max(hi, q);
+                    qx[e][i] = Math.toDegrees(q);
+                }
             if (!(hi - lo > 1e-6) || w.model.isPrismatic(j)) continue;
-            double[] qx = new double[poses];
-            for (int i = 0; i < poses; i++) qx[i] = Math.toDegrees(w.rows.get(i).q(j));
+            final int jj = j;
             for (int h = 1; h <= hMax; h++) {
-                final int hh = h, jj = j;
-                Probe p = drive(t, j, 2, (i, g) -> {
-                    double q = w.rows.get(i).q(jj);
+                final int hh = h;
+                Probe p = drive(t, j, 2, (e, i, g) -> {
+                    double q = t.endRows.get(e).get(i).q(jj);
                     g[0] = Math.sin(hh * q);
                     g[1] = Math.cos(hh * q);
                 });
@@ -104,10 +114,9 @@ final class Locator {
                 out.add(p);
             }
             final double l0 = lo, h0 = hi;
-            final int jj = j;
             for (int nb : Effect.SMOOTH_RESOLUTIONS) {
                 if (nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
-                Probe p = drive(t, j, nb, (i, g) -> Effect.bspline(w.rows.get(i).q(jj), l0, h0, g));
+                Probe p = drive(t, j, nb, (e, i, g) -> Effect.bspline(t.endRows.get(e).get(i).q(jj), l0, h0, g));
                 p.var = Var.ANGLE_SMOOTH;
                 p.joint = j;
                 p.basis = nb;
@@ -124,7 +133,7 @@ final class Locator {
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
                 Effect pair = Effect.pair(j, k);
-                Probe p = drive(t, j, 4, (i, g) -> pair.regressor(w.rows.get(i).q(), null, g));
+                Probe p = drive(t, j, 4, (e, i, g) -> pair.regressor(t.endRows.get(e).get(i).q(), null, g));
                 p.var = Var.JOINT_PAIR;
                 p.joint = j;
                 p.other = k;
@@ -134,24 +143,24 @@ final class Locator {
                 p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);
             }
-            if (dirs != Directions.Source.NONE && w.rows.stream().allMatch(r -> r.directions() != null)) {
-                Probe d = drive(t, j, 1, (i, g) -> g[0] = -0.5 * w.conditions.get(i).direction(jj));
+            if (dirs != Directions.Source.NONE && t.endRows.stream().allMatch(er -> er.stream().allMatch(r -> r.directions() != null))) {
+                Probe d = drive(t, j, 1, (e, i, g) -> g[0] = -0.5 * t.endConditions.get(e).get(i).direction(jj));
                 d.var = Var.DIRECTION;
                 d.joint = j;
                 d.variable = "direction of joint " + (j + 1);
                 d.shape = "changes sign with the direction joint " + (j + 1) + " last moved in (directions " + dirs.words + ")";
-                d.x = new double[poses];
-                for (int i = 0; i < poses; i++) d.x[i] = w.conditions.get(i).direction(j);
+                d.x = new double[ends][poses];
+                for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) d.x[e][i] = t.endConditions.get(e).get(i).direction(j);
                 d.xLabel = "approach direction dir" + (j + 1);
                 out.add(d);
             }
         }
-        double[] time = column(w, c -> c.timeS()), temp = column(w, c -> c.tempC()), pay = column(w, c -> c.payloadKg());
+        double[][] time = column(t, c -> c.timeS()), temp = column(t, c -> c.tempC()), pay = column(t, c -> c.payloadKg());
         if (varies(time, 1)) {
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", true));
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", false));
             for (int j = 0; j < dof; j++) out.add(zero(t, j, Var.TIME, time, "time", "time since the start (s)"));
-            double[] sorted = time.clone();
+            double[] sorted = time[0].clone();
             Arrays.sort(sorted);
             double last = Double.NaN;
             for (int k = 1; k < STEP_QUANTILES; k++) {
@@ -163,7 +172,7 @@ final class Locator {
                 last = tau;
                 for (int j = 0; j < dof; j++) {
                     final double tt = tau;
-                    Probe p = drive(t, j, 1, (pi, g) -> g[0] = time[pi] > tt ? 1 : 0);
+                    Probe p = drive(t, j, 1, (e, pi, g) -> g[0] = time[e][pi] > tt ? 1 : 0);
                     p.var = Var.TIME_STEP;
                     p.joint = j;
                     p.lo = tau;
@@ -181,10 +190,11 @@ final class Locator {
             for (int j = 0; j < dof; j++) out.add(zero(t, j, Var.TEMPERATURE, temp, "temperature", "temperature (°C)"));
         }
         if (varies(pay, 0.1)) {
-            double[][] tau = payloadTorques(t, pay);
+            double[][][] tau = new double[ends][][];
+            for (int e = 0; e < ends; e++) tau[e] = payloadTorques(t, e, pay[e]);
             for (int j = 0; j < dof; j++) {
                 final int jj = j;
-                Probe p = drive(t, j, 1, (i, g) -> g[0] = tau[i][jj]);
+                Probe p = drive(t, j, 1, (e, i, g) -> g[0] = tau[e][i][jj]);
                 p.var = Var.PAYLOAD;
                 p.joint = j;
                 p.variable = "payload";
@@ -194,27 +204,22 @@ final class Locator {
                 out.add(p);
             }
         }
-        double[] reach = new double[poses], height = new double[poses];
-        for (int i = 0; i < poses; i++) {
-            reach[i] = Math.hypot(t.pointBase[i][0], t.pointBase[i][1]);
-            height[i] = t.pointBase[i][2];
-        }
+        double[][] reach = new double[ends][poses], height = new double[ends][poses];
+        for (int e = 0; e < ends; e++)
+            for (int i = 0; i < poses; i++) {
+                reach[e][i] = Math.hypot(t.endPoint[e][i][0], t.endPoint[e][i][1]);
+                height[e][i] = t.endPoint[e][i][2];
+            }
         if (varies(reach, 0.05)) out.add(scalar(t, Var.REACH, reach, "reach of the measured point", "reach (m)", true));
         if (varies(reach, 0.05) && varies(pay, 0.1)) {
-            Probe p = scalar(t, Var.PAYLOAD_REACH, reach, "payload and reach", "reach (m)", true);
             // the same spline of reach, times the payload
-            double lo = p.lo, hi = p.hi;
+            double lo = min(reach), hi = max(reach);
             int k = 3 * Effect.POINT_BASIS;
-            double[] s = new double[m * k], g = new double[Effect.POINT_BASIS];
-            for (int i = 0; i < poses; i++) {
-                Effect.bspline(reach[i], lo, hi, g);
-                for (int a = 0; a < rpp; a++) {
-                    int row = i * rpp + a;
-                    for (int b = 0; b < g.length; b++)
-                        for (int ax = 0; ax < 3; ax++) s[row * k + b * 3 + ax] = t.dTrans[row * 3 + ax] * g[b] * pay[i];
-                }
-            }
-            Probe q = finish(t, s, k);
+            Probe q = translation(t, k, (e, i, g) -> {
+                double[] b = new double[Effect.POINT_BASIS];
+                Effect.bspline(reach[e][i], lo, hi, b);
+                for (int c = 0; c < b.length; c++) g[c] = b[c] * pay[e][i];
+            });
             q.var = Var.PAYLOAD_REACH;
             q.variable = "payload and reach";
             q.shape = "the measured point moves with the payload, the more the farther it reaches";
@@ -229,12 +234,13 @@ final class Locator {
         return out;
     }
 
-    private interface Reg { void at(int pose, double[] g); }
+    /** A regressor: its k values at one end (0, or 0 and 1 for a pair of poses) of one residual row's pose. */
+    private interface Reg { void at(int end, int pose, double[] g); }
 
     /** Drive j's zero following a spline of x (time or temperature): encoder slip or creep, a drive warming up. */
-    private static Probe zero(Diagnoser.Tester t, int j, Var var, double[] x, String name, String xLabel) {
-        double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        Probe p = drive(t, j, Effect.POINT_BASIS, (i, g) -> Effect.bspline(x[i], lo, hi, g));
+    private static Probe zero(Diagnoser.Tester t, int j, Var var, double[][] x, String name, String xLabel) {
+        double lo = min(x), hi = max(x);
+        Probe p = drive(t, j, Effect.POINT_BASIS, (e, i, g) -> Effect.bspline(x[e][i], lo, hi, g));
         p.var = var;
         p.joint = j;
         p.variable = name;
@@ -247,36 +253,50 @@ final class Locator {
         return p;
     }
 
+    /** k columns on drive j: at each end, its sensitivity to drive j times the regressor there. */
     private static Probe drive(Diagnoser.Tester t, int j, int k, Reg reg) {
-        int m = t.m, rpp = t.rpp, poses = m / rpp;
-        double[] s = new double[m * k], g = new double[k];
-        for (int i = 0; i < poses; i++) {
-            reg.at(i, g);
-            for (int a = 0; a < rpp; a++) {
-                double d = t.dQ[(i * rpp + a) * t.dof + j];
-                for (int c = 0; c < k; c++) s[(i * rpp + a) * k + c] = d * g[c];
+        return columns(t, k, (e, row, g, col) -> t.endDQ[e][row * t.dof + j] * g[col], k, reg);
+    }
+
+    /** k / 3 functions moving the measured point along each base axis (column b·3 + axis): the point's sensitivity times the regressor. */
+    private static Probe translation(Diagnoser.Tester t, int k, Reg reg) {
+        return columns(t, k, (e, row, g, col) -> t.endDTrans[e][row * 3 + col % 3] * g[col / 3], k / 3, reg);
+    }
+
+    private interface Sens { double at(int end, int row, double[] g, int col); }
+
+    /**
+     * The k signature columns Σ_ends sens(end, row, g(end, pose), col), projected out of the model's
+     * span; with two ends, each end's own columns are kept too (the evidence plot's choice of end).
+     */
+    private static Probe columns(Diagnoser.Tester t, int k, Sens sens, int nReg, Reg reg) {
+        int m = t.m, rpp = t.rpp, poses = m / rpp, ends = t.ends;
+        double[] s = new double[m * k], g = new double[nReg];
+        double[][] own = ends > 1 ? new double[ends][m * k] : null;
+        for (int e = 0; e < ends; e++)
+            for (int i = 0; i < poses; i++) {
+                reg.at(e, i, g);
+                for (int a = 0; a < rpp; a++) {
+                    int row = i * rpp + a;
+                    for (int c = 0; c < k; c++) {
+                        double v = sens.at(e, row, g, c);
+                        s[row * k + c] += v;
+                        if (own != null) own[e][row * k + c] = v;
+                    }
+                }
             }
-        }
-        return finish(t, s, k);
+        Probe p = finish(t, s, k);
+        p.endS = own;
+        return p;
     }
 
     /** A translation of the point (3 x 4 columns) or a length change (4 columns) following a spline of x. */
-    private static Probe scalar(Diagnoser.Tester t, Var var, double[] x, String name, String xLabel, boolean translation) {
-        int m = t.m, rpp = t.rpp, poses = m / rpp, nb = Effect.POINT_BASIS;
-        double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int k = translation ? 3 * nb : nb;
-        double[] s = new double[m * k], g = new double[nb];
-        for (int i = 0; i < poses; i++) {
-            Effect.bspline(x[i], lo, hi, g);
-            for (int a = 0; a < rpp; a++) {
-                int row = i * rpp + a;
-                for (int b = 0; b < nb; b++) {
-                    if (translation) for (int ax = 0; ax < 3; ax++) s[row * k + b * 3 + ax] = t.dTrans[row * 3 + ax] * g[b];
-                    else s[row * k + b] = t.dStrain[row] * g[b];
-                }
-            }
-        }
-        Probe p = finish(t, s, k);
+    private static Probe scalar(Diagnoser.Tester t, Var var, double[][] x, String name, String xLabel, boolean translation) {
+        int nb = Effect.POINT_BASIS;
+        double lo = min(x), hi = max(x);
+        Reg spline = (e, i, g) -> Effect.bspline(x[e][i], lo, hi, g);
+        Probe p = translation ? translation(t, 3 * nb, spline)
+                : columns(t, nb, (e, row, g, col) -> t.endDStrain[e][row] * g[col], nb, spline);
         p.var = var;
         p.lengths = !translation;
         p.variable = name;
@@ -322,25 +342,31 @@ final class Locator {
         return p;
     }
 
-    private static double[] column(Diagnoser.Work w, java.util.function.ToDoubleFunction<PoseConditions> f) {
-        double[] out = new double[w.rows.size()];
-        for (int i = 0; i < out.length; i++) out[i] = f.applyAsDouble(w.conditions.get(i));
+    /** A condition per end and pose. */
+    private static double[][] column(Diagnoser.Tester t, java.util.function.ToDoubleFunction<PoseConditions> f) {
+        double[][] out = new double[t.ends][t.w.rows.size()];
+        for (int e = 0; e < t.ends; e++) for (int i = 0; i < out[e].length; i++) out[e][i] = f.applyAsDouble(t.endConditions.get(e).get(i));
         return out;
     }
 
-    private static boolean varies(double[] x, double minRange) {
+    private static double min(double[][] x) { return Arrays.stream(x).flatMapToDouble(Arrays::stream).min().orElse(0); }
+
+    private static double max(double[][] x) { return Arrays.stream(x).flatMapToDouble(Arrays::stream).max().orElse(1); }
+
+    private static boolean varies(double[][] x, double minRange) {
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-        for (double v : x) { if (!Double.isFinite(v)) return false; lo = Math.min(lo, v); hi = Math.max(hi, v); }
+        for (double[] xe : x)
+            for (double v : xe) { if (!Double.isFinite(v)) return false; lo = Math.min(lo, v); hi = Math.max(hi, v); }
         return hi - lo >= minRange;
     }
 
-    /** Torque of the payload (a point mass at the flange, gravity −z) on each drive: τ_q = Cᵀ τ_θ. */
-    static double[][] payloadTorques(Diagnoser.Tester t, double[] payload) {
+    /** Torque of the payload (a point mass at the flange, gravity −z) on each drive at one end's poses: τ_q = Cᵀ τ_θ. */
+    static double[][] payloadTorques(Diagnoser.Tester t, int end, double[] payload) {
         int dof = t.dof;
         double[][] c = t.w.model.couplingMatrix();
         double[][] out = new double[payload.length][dof];
         for (int i = 0; i < payload.length; i++) {
-            Pose[] f = t.w.model.linkFrames(t.w.rows.get(i).q());
+            Pose[] f = t.w.model.linkFrames(t.endRows.get(end).get(i).q());
             Vec3 pf = f[f.length - 1].position(), force = new Vec3(0, 0, -9.80665 * payload[i]);
             double[] th = new double[dof];
             for (int a = 0; a < dof; a++)
@@ -429,7 +455,9 @@ final class Locator {
     /**
      * Evidence plot: per measurement (each measured point of a pose, or each distance), the
      * structure's fitted displacement along its own direction plus the residual along it (mm),
-     * against the variable.
+     * against the variable. A distance between two poses is plotted at the value of the variable
+     * at the pose whose own part of the structure's change is the larger (the structure changes
+     * the length at both ends; its curve is the fitted change of that length).
      */
     static Diagnosis.Plot plot(Diagnoser.Tester t, Found f) {
         int q = f.c.df1, n = t.measurements(), d = t.dim;
@@ -445,11 +473,26 @@ final class Locator {
             if (norm == 0) continue;
             double along = 0;
             for (int a = 0; a < d; a++) along += c[a] / norm * t.rPerp[r0 + a];
-            pts.add(new double[] {f.probe.x[t.poseOf(mi)], along * unit, norm * unit});
+            pts.add(new double[] {f.probe.x[end(f, r0)][t.poseOf(mi)], along * unit, norm * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()], cy = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; cy[i] = pts.get(i)[2]; }
-        return new Diagnosis.Plot(f.probe.xLabel, d == 1 ? "distance residual along the structure's change (mm)"
+        String xLabel = f.probe.endS == null ? f.probe.xLabel : f.probe.xLabel + ", at the pose of the pair that carries more of the change";
+        return new Diagnosis.Plot(xLabel, d == 1 ? "distance residual along the structure's change (mm)"
                 : "residual along the structure's displacement (mm)", x, y, x.clone(), cy, null);
+    }
+
+    /** The end (pose of a pair) whose own columns, at the structure's estimate, change residual row {@code row} the more; 0 with one end. */
+    static int end(Found f, int row) {
+        double[][] own = f.probe.endS;
+        if (own == null) return 0;
+        int k = f.probe.k, best = 0;
+        double bestAbs = -1;
+        for (int e = 0; e < own.length; e++) {
+            double v = 0;
+            for (int c = 0; c < k; c++) v += own[e][row * k + c] * f.c.estimate[c];
+            if (Math.abs(v) > bestAbs) { bestAbs = Math.abs(v); best = e; }
+        }
+        return best;
     }
 }

@@ -521,9 +521,24 @@ public final class IdentificationProblem implements LeastSquaresProblem {
      * {@link #ends}, in metres, with their Jacobian), d_pred = |p_b − p_a|, residual
      * (d_pred − d) / σ and ∂d_pred/∂k = uᵀ (∂p_b/∂k − ∂p_a/∂k) with u the unit vector from a to b.
      */
-    private void evaluatePairs(double[] full, double[] res, double[] jac) {
+    private void evaluatePairs(double[] full, double[] res, double[] jac) { evaluatePairs(full, res, jac, null, null); }
+
+    /**
+     * Distances between pairs of poses: each length's Jacobian split by its two ends (m x fullSize
+     * each, row-major, weighted like the residuals): {@code jacFirst} = −uᵀ ∂p_a/∂k / σ at the first
+     * pose, {@code jacSecond} = uᵀ ∂p_b/∂k / σ at the second; their sum is {@link #evaluateFull}'s
+     * Jacobian. A parameter that takes its own value at each pose (an error that is a function of
+     * the pose's joints) changes the length by the two ends' columns, each times its own value.
+     */
+    public void evaluatePairEnds(double[] full, double[] jacFirst, double[] jacSecond) {
+        if (!pairs) throw new IllegalStateException("not distances between pairs of poses");
+        evaluatePairs(full, new double[m], null, jacFirst, jacSecond);
+    }
+
+    private void evaluatePairs(double[] full, double[] res, double[] jac, double[] jacFirst, double[] jacSecond) {
         int n = rows.size();
-        double[] r2 = new double[6 * n], j2 = jac == null ? null : new double[6 * n * nFull];
+        boolean any = jac != null || jacFirst != null;
+        double[] r2 = new double[6 * n], j2 = any ? new double[6 * n * nFull] : null;
         ends.evaluateFull(full, r2, j2);
         double wp = 1 / sigmaPos;
         for (int i = 0; i < n; i++) {
@@ -532,10 +547,13 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
             double ux = len > 0 ? dx / len : 0, uy = len > 0 ? dy / len : 0, uz = len > 0 ? dz / len : 0;
             res[i] = (len - rows.get(i).distance()) * wp;
-            if (jac == null) continue;
-            for (int c = 0; c < nFull; c++)
-                jac[i * nFull + c] = (ux * (j2[b * nFull + c] - j2[a * nFull + c]) + uy * (j2[(b + 1) * nFull + c] - j2[(a + 1) * nFull + c])
-                        + uz * (j2[(b + 2) * nFull + c] - j2[(a + 2) * nFull + c])) * wp;
+            if (!any) continue;
+            for (int c = 0; c < nFull; c++) {
+                double pa = (ux * j2[a * nFull + c] + uy * j2[(a + 1) * nFull + c] + uz * j2[(a + 2) * nFull + c]) * wp;
+                double pb = (ux * j2[b * nFull + c] + uy * j2[(b + 1) * nFull + c] + uz * j2[(b + 2) * nFull + c]) * wp;
+                if (jac != null) jac[i * nFull + c] = pb - pa;
+                if (jacFirst != null) { jacFirst[i * nFull + c] = -pa; jacSecond[i * nFull + c] = pb; }
+            }
         }
     }
 
