@@ -133,6 +133,8 @@ public final class Campaign {
     public static Result run(WorldRobot world, RobotDescription nominal, Plan plan) {
         Random rng = new Random(plan.seed() * 1_000_003L + 11);
         Random noise = new Random(plan.seed() * 7_919L + 3);
+        // the gross errors have their own stream, so that a campaign without them (a twin) keeps every other draw
+        Random gross = new Random(plan.seed() * 104_729L + 17);
         int total = plan.poses() + plan.validatePoses();
         List<double[]> drawn = new PoseRule(nominal).sample(total, rng);
         double[] start = plan.start() == Start.ELSEWHERE
@@ -175,7 +177,7 @@ public final class Campaign {
             Rigid pose = world.target(q, dir, lastMove, temp, t, payload);
             double[] truth = pose.p();
             double[] p = Rigid.plus(truth, Arm.gauss(noise, plan.sigmaM()));
-            if (outlier[i]) p = Rigid.plus(p, Rigid.scale(Rigid.unit(Arm.gauss(rng, 1)), 0.5e-3 + 2.5e-3 * rng.nextDouble()));
+            if (outlier[i]) p = Rigid.plus(p, Rigid.scale(Rigid.unit(Arm.gauss(gross, 1)), 0.5e-3 + 2.5e-3 * gross.nextDouble()));
             double[] quat = null;
             if (plan.sixD()) {
                 double[] rv = Arm.gauss(noise, plan.sigmaRotRad());

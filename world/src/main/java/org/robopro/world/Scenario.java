@@ -39,15 +39,41 @@ public record Scenario(String name, String family, String robot, Expected expect
         public String truthJson() { return Truth.json(scenario, seed, world, campaign); }
     }
 
+    /** Where the measured target sits nominally on the flange, m: 100 mm along its z axis. */
+    static final double[] TARGET_IN_FLANGE_M = {0, 0, 0.1};
+
     /** Draws the robot and measures it. */
     public Trial trial(long seed) { return trial(seed, p -> p); }
 
     /** Draws the robot and measures it with the scenario's plan changed by {@code adjust} (e.g. more poses). */
     public Trial trial(long seed, UnaryOperator<Campaign.Plan> adjust) {
-        WorldRobot world = robot(seed, new double[] {0, 0, 0.1});
-        Campaign.Plan p = adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
-        return new Trial(this, seed, world, Campaign.run(world, RobotLibrary.shipped(robot), p));
+        WorldRobot world = robot(seed, TARGET_IN_FLANGE_M);
+        return new Trial(this, seed, world, Campaign.run(world, RobotLibrary.shipped(robot), campaignPlan(seed, adjust)));
     }
+
+    /**
+     * The trial's geometry-only twin: the same robot (geometric errors, target, instrument), the
+     * same poses in the same measuring order, the same times, temperatures, payloads and noise
+     * draws, but none of the scenario's concealed effects and no gross outliers. Diagnosed like the
+     * trial, it shows what the campaign's size and noise allow when nothing but geometry is there:
+     * the achievable floor of that very run. For a scenario that conceals nothing and injects no
+     * outliers the twin is the trial itself.
+     */
+    public Trial twin(long seed) { return twin(seed, p -> p); }
+
+    /** {@link #twin(long)} of the trial {@link #trial(long, UnaryOperator)} gives with {@code adjust}. */
+    public Trial twin(long seed, UnaryOperator<Campaign.Plan> adjust) {
+        RobotDescription nominal = RobotLibrary.shipped(robot);
+        WorldRobot world = baseRobot(nominal, robotStream(seed), 1e-3, Math.toRadians(0.1), TARGET_IN_FLANGE_M);
+        return new Trial(this, seed, world, Campaign.run(world, nominal, campaignPlan(seed, adjust).withOutliers(0)));
+    }
+
+    private Campaign.Plan campaignPlan(long seed, UnaryOperator<Campaign.Plan> adjust) {
+        return adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
+    }
+
+    /** The random stream the scenario's robot of a seed is drawn from: geometric errors first, then the concealed effects. */
+    private Random robotStream(long seed) { return new Random(seed * 31 + name.hashCode()); }
 
     /**
      * The scenario's real robot of a seed, without a campaign (e.g. for a simulated controller),
@@ -55,7 +81,7 @@ public record Scenario(String name, String family, String robot, Expected expect
      */
     public WorldRobot robot(long seed, double[] targetInFlangeM) {
         RobotDescription nominal = RobotLibrary.shipped(robot);
-        Random rng = new Random(seed * 31 + name.hashCode());
+        Random rng = robotStream(seed);
         WorldRobot base = baseRobot(nominal, rng, 1e-3, Math.toRadians(0.1), targetInFlangeM);
         return effects.apply(nominal, rng).apply(base);
     }

@@ -1,5 +1,6 @@
 package org.robopro.world;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
@@ -109,5 +110,31 @@ class CampaignTest {
             max = Math.max(max, Rigid.norm(Rigid.minus(p, r.truePoint())));
         }
         assertTrue(max > 0.1e-3 && max < 2e-3, "lost motion moved the point by up to " + max + " m");
+    }
+
+    @Test
+    void twin_sameRobotPosesTimesAndNoise_withoutTheEffectOrOutliers() {
+        for (String name : List.of("lost motion j1, 4 gross outliers", "thermal growth per link", "outside: measured point sags with reach, 50 poses")) {
+            Scenario s = Scenario.named(name);
+            Scenario.Trial t = s.trial(5), twin = s.twin(5);
+            assertEquals(t.world().arm().flange().p()[0], twin.world().arm().flange().p()[0], 0.0, name);
+            assertTrue(twin.world().errors().isEmpty() && twin.world().thermal() == null && twin.world().sag() == null, name);
+            assertEquals(t.campaign().rows().size(), twin.campaign().rows().size(), name);
+            int outliers = 0;
+            for (int i = 0; i < t.campaign().rows().size(); i++) {
+                Campaign.Row a = t.campaign().rows().get(i), b = twin.campaign().rows().get(i);
+                assertArrayEquals(a.q(), b.q(), 0.0, name);
+                assertArrayEquals(a.dir(), b.dir(), name);
+                assertEquals(a.timeS(), b.timeS(), 0.0, name);
+                assertEquals(a.tempC(), b.tempC(), 0.0, name);
+                assertEquals(a.validate(), b.validate(), name);
+                assertFalse(b.outlier(), name);
+                if (a.outlier()) { outliers++; continue; }
+                // the same noise draw on a different true point
+                assertArrayEquals(Rigid.minus(a.point(), a.truePoint()), Rigid.minus(b.point(), b.truePoint()), 1e-12, name);
+            }
+            assertEquals(name.contains("outliers") ? 4 : 0, outliers, name);
+            assertFalse(t.campaign().text().equals(twin.campaign().text()), name);
+        }
     }
 }

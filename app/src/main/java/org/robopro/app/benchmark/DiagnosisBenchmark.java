@@ -35,7 +35,9 @@ import org.robopro.world.Scenario;
  * <li><b>false claim</b>: on a null campaign, anything named or located;</li>
  * <li><b>clean</b>: on a null campaign, nothing claimed (the right answer).</li>
  * </ul>
- * and by its validation RMS after the diagnosis over the noise floor √3 σ.
+ * and by its validation RMS after the diagnosis over the noise floor √3 σ, and over what the same
+ * diagnosis leaves on the run's geometry-only twin ({@link Scenario#twin}: the same robot, poses
+ * and noise draws without the concealed effects), the floor that campaign's size allows.
  */
 public final class DiagnosisBenchmark {
     private DiagnosisBenchmark() { }
@@ -63,18 +65,40 @@ public final class DiagnosisBenchmark {
      * @param sigmaM     the instrument's noise per axis, m (the floor is √3 σ)
      * @param outlierIds the poses whose readings were made grossly wrong on purpose
      * @param seed       the seed it was drawn with (0 when unknown)
+     * @param twinText   the measurement text of the campaign's geometry-only twin (same poses, order and noise
+     *                   draws, no concealed effect, no outlier), or null when there is none
      */
     public record Case(String name, String group, RobotDescription robot, String fileName, String text, Expected expected,
-                       double sigmaM, Set<String> outlierIds, long seed) {
+                       double sigmaM, Set<String> outlierIds, long seed, String twinText) {
         public Case { outlierIds = Set.copyOf(outlierIds); }
 
-        /** A world trial as a case: its campaign text and the scenario's expected answer. */
-        public static Case of(Scenario.Trial t) {
+        /** A world trial as a case: its campaign text and the scenario's expected answer, without a twin. */
+        public static Case of(Scenario.Trial t) { return of(t, null); }
+
+        /** A world trial and its geometry-only twin ({@link Scenario#twin}, or null) as a case. */
+        public static Case of(Scenario.Trial t, Scenario.Trial twin) {
             Set<String> outliers = new LinkedHashSet<>();
             for (var r : t.campaign().rows()) if (r.outlier()) outliers.add(r.id());
             return new Case(t.scenario().name(), t.scenario().family(), RobotLibrary.shipped(t.scenario().robot()),
-                    t.scenario().name() + ".csv", t.campaign().text(), t.scenario().expected(), t.campaign().plan().sigmaM(), outliers, t.seed());
+                    t.scenario().name() + ".csv", t.campaign().text(), t.scenario().expected(), t.campaign().plan().sigmaM(), outliers, t.seed(),
+                    twin == null ? null : twin.campaign().text());
         }
+
+        /** The twin's campaign as a case of its own: nothing concealed, nothing to find. */
+        Case twin() {
+            return new Case(name + " (twin)", group, robot, fileName.replaceAll("\\.csv$", "") + " (twin)", twinText, Expected.none(), sigmaM,
+                    Set.of(), seed, null);
+        }
+    }
+
+    /** When a run's geometry-only twin is diagnosed too. */
+    public enum Twins {
+        /** Every run that has a twin (the published benchmark: every run's ratio to its twin is reported). */
+        ALWAYS,
+        /** Only when the run misses the bar on the floor, so that the twin can decide (CI: same verdicts, less time). */
+        WHEN_NEEDED,
+        /** Never. */
+        NEVER
     }
 
     /**
@@ -86,28 +110,44 @@ public final class DiagnosisBenchmark {
      * @param located     what it located without naming
      * @param geoRatio    validation RMS of the geometric calibration over the floor
      * @param finalRatio  validation RMS after the diagnosis over the floor
+     * @param twinRatio   validation RMS the same diagnosis leaves on the geometry-only twin, over the floor (NaN: not run)
      * @param outliersInjected gross outliers in the campaign
      * @param outliersFound    of those, reported as outliers
      * @param cleanFlagged     clean poses reported as outliers
      */
     public record Run(String name, Expected expected, long seed, Outcome outcome, List<String> named, List<String> located, double geoRatio,
-                      double finalRatio, double ms, int outliersInjected, int outliersFound, int cleanFlagged) {
+                      double finalRatio, double twinRatio, double ms, int outliersInjected, int outliersFound, int cleanFlagged) {
         /**
          * The right answer for the scenario's kind, with the validation RMS brought to the bar where
-         * it applies, every injected outlier reported and no clean pose reported as one.
+         * it applies ({@link #rmsRoute}), every injected outlier reported and no clean pose reported as one.
          */
         public boolean correct(double bar) {
             if (outliersFound < outliersInjected || cleanFlagged > 0) return false;
             return switch (expected.verdict()) {
-                case NAMED -> outcome == Outcome.NAMED_RIGHT && finalRatio <= bar;
-                case NULL -> outcome == Outcome.CLEAN && finalRatio <= bar;
+                case NAMED -> outcome == Outcome.NAMED_RIGHT && rmsRoute(bar) != null;
+                case NULL -> outcome == Outcome.CLEAN && rmsRoute(bar) != null;
                 case OUTSIDE -> outcome == Outcome.LOCATED_ONLY;
             };
         }
 
+        /**
+         * How the run meets the validation-RMS bar: "floor" when it is within {@code bar} × the noise
+         * floor; "twin" when it is not, but its geometry-only twin itself ends above
+         * {@link #TWIN_ABOVE} × the floor (the campaign is too small for the bar, whatever is
+         * concealed) and the run is within {@link #TWIN_MARGIN} × the twin; null when it fails.
+         */
+        public String rmsRoute(double bar) {
+            if (finalRatio <= bar) return "floor";
+            if (twinRatio > TWIN_ABOVE && finalRatio <= TWIN_MARGIN * twinRatio) return "twin";
+            return null;
+        }
+
+        /** Validation RMS over the twin's (NaN without a twin). */
+        public double toTwin() { return finalRatio / twinRatio; }
+
         public String line() {
-            return String.format(Locale.ROOT, "%-62s seed %d: %-19s named %s located %s, val/floor %.3f -> %.3f, outliers %d/%d "
-                            + "(+%d clean flagged), %.0f ms", name, seed, outcome.words, named, located, geoRatio, finalRatio,
+            return String.format(Locale.ROOT, "%-62s seed %d: %-19s named %s located %s, val/floor %.3f -> %.3f (twin %.3f), outliers %d/%d "
+                            + "(+%d clean flagged), %.0f ms", name, seed, outcome.words, named, located, geoRatio, finalRatio, twinRatio,
                     outliersFound, outliersInjected, cleanFlagged, ms);
         }
     }
@@ -115,23 +155,38 @@ public final class DiagnosisBenchmark {
     /** The validation RMS a named (or null) run must reach, times the noise floor. */
     public static final double BAR = 1.15;
 
-    /** Runs the scenarios with {@code seeds} seeds each (seed = baseSeed + k). */
+    /**
+     * A twin above this many times the floor shows a campaign too small for {@link #BAR}: a null
+     * campaign of 50 poses fitted with the right model ends at 1.11–1.18 × (about 30 geometric
+     * parameters estimated from 150 numbers).
+     */
+    public static final double TWIN_ABOVE = 1.10;
+
+    /** What a run may cost beyond its twin when the twin is above {@link #TWIN_ABOVE}: 5 %. */
+    public static final double TWIN_MARGIN = 1.05;
+
+    /** Runs the scenarios with {@code seeds} seeds each (seed = baseSeed + k), each with its twin diagnosed. */
     public static List<Run> run(List<Scenario> scenarios, int seeds, long baseSeed, Consumer<String> log) {
+        return run(scenarios, seeds, baseSeed, Twins.ALWAYS, log);
+    }
+
+    /** Runs the scenarios with {@code seeds} seeds each (seed = baseSeed + k), their twins diagnosed as {@code twins} says. */
+    public static List<Run> run(List<Scenario> scenarios, int seeds, long baseSeed, Twins twins, Consumer<String> log) {
         List<Run> out = new ArrayList<>();
         for (Scenario s : scenarios)
             for (int k = 0; k < seeds; k++) {
-                Run r = run(s, baseSeed + k);
+                Run r = run(s, baseSeed + k, twins);
                 if (log != null) log.accept(r.line());
                 out.add(r);
             }
         return out;
     }
 
-    /** Runs the given cases (e.g. campaign files supplied from outside, {@link ScenarioFiles#read}). */
+    /** Runs the given cases (e.g. campaign files supplied from outside, {@link ScenarioFiles#read}), each twin diagnosed. */
     public static List<Run> runCases(List<Case> cases, Consumer<String> log) {
         List<Run> out = new ArrayList<>();
         for (Case c : cases) {
-            Run r = run(c);
+            Run r = run(c, Twins.ALWAYS);
             if (log != null) log.accept(r.line());
             out.add(r);
         }
@@ -152,11 +207,28 @@ public final class DiagnosisBenchmark {
         return new Sets(all.hasSplit() ? all.split(Measurement.Split.TRAIN) : all, validate);
     }
 
-    /** One run: measure, write, read, diagnose, score. */
-    public static Run run(Scenario s, long seed) { return run(Case.of(s.trial(seed))); }
+    /** One run: measure, write, read, diagnose, score; the twin diagnosed too. */
+    public static Run run(Scenario s, long seed) { return run(s, seed, Twins.ALWAYS); }
 
-    /** One run of a campaign text: read, diagnose blind, score against the case's answer. */
-    public static Run run(Case c) {
+    /** One run: measure, write, read, diagnose, score; the twin diagnosed as {@code twins} says. */
+    public static Run run(Scenario s, long seed, Twins twins) {
+        return run(Case.of(s.trial(seed), twins == Twins.NEVER ? null : s.twin(seed)), twins);
+    }
+
+    /** One run of a campaign text: read, diagnose blind, score against the case's answer; its twin, if any, diagnosed too. */
+    public static Run run(Case c) { return run(c, Twins.ALWAYS); }
+
+    /** One run of a campaign text, its twin diagnosed as {@code twins} says. */
+    public static Run run(Case c, Twins twins) {
+        Run r = diagnose(c);
+        boolean twin = c.twinText() != null && (twins == Twins.ALWAYS || twins == Twins.WHEN_NEEDED && r.finalRatio() > BAR);
+        if (!twin) return r;
+        double twinRatio = diagnose(c.twin()).finalRatio();
+        return new Run(r.name(), r.expected(), r.seed(), r.outcome(), r.named(), r.located(), r.geoRatio(), r.finalRatio(), twinRatio, r.ms(),
+                r.outliersInjected(), r.outliersFound(), r.cleanFlagged());
+    }
+
+    private static Run diagnose(Case c) {
         Sets sets = read(c);
         Diagnosis d = Diagnoser.diagnose(c.robot(), sets.train(), sets.validate());
         double floor = Math.sqrt(3) * c.sigmaM();
@@ -176,7 +248,7 @@ public final class DiagnosisBenchmark {
         Outcome o = score(c.expected().verdict(), want, claims, !located.isEmpty());
         int found = 0, clean = 0;
         for (String id : d.outliers()) if (c.outlierIds().contains(id)) found++; else clean++;
-        return new Run(c.name(), c.expected(), c.seed(), o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor,
+        return new Run(c.name(), c.expected(), c.seed(), o, named, located, d.geometricValidateRmsM() / floor, d.finalValidateRmsM() / floor, Double.NaN,
                 d.elapsedMs(), c.outlierIds().size(), found, clean);
     }
 
@@ -191,12 +263,16 @@ public final class DiagnosisBenchmark {
         return located || !got.isEmpty() ? Outcome.LOCATED_ONLY : Outcome.MISSED;
     }
 
-    /** The confusion table (rows: scenario groups; columns: outcomes) and the validation ratios, as markdown. */
+    /**
+     * The confusion table (rows: scenarios; columns: outcomes), the validation ratios to the floor
+     * and to the twin, and how the runs meet the RMS bar, as markdown.
+     */
     public static String markdown(List<Run> runs) {
         StringBuilder sb = new StringBuilder();
         sb.append("| scenario | runs | named right | named wrong | located only | missed | false claim (null) | clean (null) "
-                + "| val RMS / floor before | after (median) | after (max) | outliers found | clean flagged | ms (mean) |\n");
-        sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                + "| val RMS / floor before | after (median) | after (max) | twin / floor (median) | after / twin (median) | after / twin (max) "
+                + "| outliers found | clean flagged | ms (mean) |\n");
+        sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         Map<String, List<Run>> byScenario = new java.util.LinkedHashMap<>();
         for (Run r : runs) byScenario.computeIfAbsent(r.name(), k -> new ArrayList<>()).add(r);
         for (var e : byScenario.entrySet()) sb.append(row(e.getKey(), e.getValue()));
@@ -205,9 +281,21 @@ public final class DiagnosisBenchmark {
         sb.append("Validation RMS after the diagnosis over the noise floor (named and null scenarios): ")
                 .append(distribution(runs.stream().filter(r -> r.expected().verdict() != Expected.Verdict.OUTSIDE)
                         .mapToDouble(Run::finalRatio).toArray())).append('\n');
+        double[] toTwin = runs.stream().filter(r -> r.expected().verdict() != Expected.Verdict.OUTSIDE && !Double.isNaN(r.twinRatio()))
+                .mapToDouble(Run::toTwin).toArray();
+        if (toTwin.length > 0)
+            sb.append("\nValidation RMS after the diagnosis over its geometry-only twin's (named and null scenarios): ")
+                    .append(distribution(toTwin)).append('\n');
+        List<Run> barred = runs.stream().filter(r -> r.expected().verdict() != Expected.Verdict.OUTSIDE).toList();
+        long byFloor = barred.stream().filter(r -> "floor".equals(r.rmsRoute(BAR))).count();
+        long byTwin = barred.stream().filter(r -> "twin".equals(r.rmsRoute(BAR))).count();
+        sb.append(String.format(Locale.ROOT, "%nValidation RMS bar (named and null scenarios): %d of %d runs within %.2f × the floor, %d more within "
+                        + "%.2f × their twin where the twin itself is above %.2f × the floor, %d meet neither.%n", byFloor, barred.size(), BAR, byTwin,
+                TWIN_MARGIN, TWIN_ABOVE, barred.size() - byFloor - byTwin));
         long correct = runs.stream().filter(r -> r.correct(BAR)).count();
-        sb.append(String.format(Locale.ROOT, "%nRight answers (named right or clean with validation RMS ≤ %.2f × floor; outside: located "
-                + "and not named; every injected outlier reported, no clean pose reported): %d of %d runs.%n", BAR, correct, runs.size()));
+        sb.append(String.format(Locale.ROOT, "%nRight answers (named right or clean with validation RMS ≤ %.2f × floor, or ≤ %.2f × a twin "
+                + "above %.2f × floor; outside: located and not named; every injected outlier reported, no clean pose reported): %d of %d runs.%n",
+                BAR, TWIN_MARGIN, TWIN_ABOVE, correct, runs.size()));
         return sb.toString();
     }
 
@@ -218,12 +306,18 @@ public final class DiagnosisBenchmark {
         double[] after = rs.stream().mapToDouble(Run::finalRatio).sorted().toArray();
         double before = rs.stream().mapToDouble(Run::geoRatio).average().orElse(Double.NaN);
         int inj = rs.stream().mapToInt(Run::outliersInjected).sum(), found = rs.stream().mapToInt(Run::outliersFound).sum();
-        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %s | %d | %.0f |%n", name, rs.size(),
-                n.get(Outcome.NAMED_RIGHT), n.get(Outcome.NAMED_WRONG), n.get(Outcome.LOCATED_ONLY), n.get(Outcome.MISSED),
+        double[] twin = rs.stream().mapToDouble(Run::twinRatio).filter(v -> !Double.isNaN(v)).sorted().toArray();
+        double[] toTwin = rs.stream().mapToDouble(Run::toTwin).filter(v -> !Double.isNaN(v)).sorted().toArray();
+        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %s | %s | %s | %s | %d | %.0f |%n", name,
+                rs.size(), n.get(Outcome.NAMED_RIGHT), n.get(Outcome.NAMED_WRONG), n.get(Outcome.LOCATED_ONLY), n.get(Outcome.MISSED),
                 n.get(Outcome.FALSE_CLAIM), n.get(Outcome.CLEAN), before, after[after.length / 2], after[after.length - 1],
+                median(twin), median(toTwin), twin.length == 0 ? "-" : String.format(Locale.ROOT, "%.2f", toTwin[toTwin.length - 1]),
                 inj == 0 ? "-" : found + "/" + inj, rs.stream().mapToInt(Run::cleanFlagged).sum(),
                 rs.stream().mapToDouble(Run::ms).average().orElse(0));
     }
+
+    /** The median of sorted values to two decimals, "-" when there are none. */
+    static String median(double[] sorted) { return sorted.length == 0 ? "-" : String.format(Locale.ROOT, "%.2f", sorted[sorted.length / 2]); }
 
     /** How many runs fall in each bin: up to 1.05, 1.05–1.10, 1.10–1.15, 1.15–1.5, 1.5–2, above 2. */
     static String distribution(double[] ratios) {

@@ -36,7 +36,9 @@ import org.robopro.world.Scenario;
  *   "scenario": "any name",             optional: runs of one name share a table row (default: NAME)
  *   "family": "any group",              optional (default: held-out)
  *   "outlier_poses": ["17", "83"],      optional: poses made grossly wrong on purpose
- *   "seed": 7                           optional
+ *   "seed": 7,                          optional
+ *   "twin": "NAME.twin.csv"             optional: the campaign's geometry-only twin (same poses, order and noise
+ *                                       draws, nothing concealed, no outlier), a file beside the label
  * }
  * </pre>
  * A claim's family is one of transmission-error, lost-motion, gravity-elasticity, thermal-growth,
@@ -50,12 +52,16 @@ public final class ScenarioFiles {
     /** The label file's name ending, beside NAME.csv. */
     public static final String LABEL = ".truth.json";
 
+    /** The name ending of a twin campaign written by {@link #write}; such files are twins, not campaigns of their own. */
+    public static final String TWIN = ".twin.csv";
+
     /** Every {@code *.csv} of {@code dir} (in name order) with its label, read and checked; none is left out silently. */
     public static List<DiagnosisBenchmark.Case> read(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) throw new InputException(dir.toString(), 0, 0, null, "is not a directory of campaign files");
         List<Path> csvs;
         try (Stream<Path> s = Files.list(dir)) {
-            csvs = s.filter(p -> p.getFileName().toString().endsWith(".csv") && Files.isRegularFile(p)).sorted().toList();
+            csvs = s.filter(p -> p.getFileName().toString().endsWith(".csv") && !p.getFileName().toString().endsWith(TWIN)
+                    && Files.isRegularFile(p)).sorted().toList();
         }
         if (csvs.isEmpty()) throw new InputException(dir.toString(), 0, 0, null, "holds no campaign file (NAME.csv with NAME" + LABEL + ")");
         List<DiagnosisBenchmark.Case> out = new ArrayList<>();
@@ -93,8 +99,15 @@ public final class ScenarioFiles {
         String name = root.hasNonNull("scenario") ? root.get("scenario").asText() : stem;
         String group = root.hasNonNull("family") ? root.get("family").asText() : "held-out";
         long seed = root.hasNonNull("seed") && root.get("seed").canConvertToLong() ? root.get("seed").asLong() : 0;
+        String twin = null;
+        if (root.hasNonNull("twin")) {
+            Path t = csv.resolveSibling(root.get("twin").asText());
+            if (!root.get("twin").isTextual() || !Files.isRegularFile(t))
+                throw new InputException(where, 0, 0, "twin", "names no campaign file beside the label: " + root.get("twin"));
+            twin = Files.readString(t);
+        }
         return new DiagnosisBenchmark.Case(name, group, robot, csv.toString(), Files.readString(csv), expected, sigma.asDouble() * 1e-3,
-                outliers, seed);
+                outliers, seed, twin);
     }
 
     private static String text(String where, JsonNode root, String field) {
@@ -154,15 +167,16 @@ public final class ScenarioFiles {
 
     /**
      * Writes world trials as such a directory: for each scenario and seed (baseSeed + k) the
-     * campaign's measurement file and the world's truth record as its label. Refuses (writing
-     * nothing) when a file exists and {@code overwrite} is false. Returns the number of campaigns.
+     * campaign's measurement file, its geometry-only twin ({@code NAME.twin.csv}) and the world's
+     * truth record as its label (naming the twin). Refuses (writing nothing) when a file exists and
+     * {@code overwrite} is false. Returns the number of campaigns.
      */
     public static int write(List<Scenario> scenarios, int seeds, long baseSeed, Path dir, boolean overwrite) throws IOException {
         List<String> stems = new ArrayList<>();
         for (Scenario s : scenarios) for (int k = 0; k < seeds; k++) stems.add(stem(s.name(), baseSeed + k));
         if (!overwrite)
             for (String st : stems)
-                for (String f : List.of(st + ".csv", st + LABEL))
+                for (String f : List.of(st + ".csv", st + TWIN, st + LABEL))
                     if (Files.exists(dir.resolve(f))) throw new java.nio.file.FileAlreadyExistsException(dir.resolve(f).toString(), null,
                             "exists (use --force to replace)");
         Files.createDirectories(dir);
@@ -172,7 +186,11 @@ public final class ScenarioFiles {
                 Scenario.Trial t = s.trial(baseSeed + k);
                 String st = stems.get(i++);
                 AtomicFiles.writeString(dir.resolve(st + ".csv"), t.campaign().text(), true);
-                AtomicFiles.writeString(dir.resolve(st + LABEL), t.truthJson() + "\n", true);
+                AtomicFiles.writeString(dir.resolve(st + TWIN), s.twin(baseSeed + k).campaign().text(), true);
+                var label = (com.fasterxml.jackson.databind.node.ObjectNode) JsonMapper.create().readTree(t.truthJson());
+                label.put("twin", st + TWIN);
+                AtomicFiles.writeString(dir.resolve(st + LABEL),
+                        JsonMapper.create().writerWithDefaultPrettyPrinter().writeValueAsString(label) + "\n", true);
             }
         return stems.size();
     }

@@ -1,6 +1,7 @@
 package org.robopro.app.benchmark;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -46,7 +47,8 @@ class DiagnosisBenchmarkTest {
     @Test
     void ciScenarios_giveTheRightAnswerOrAreKnownFailures() {
         List<Scenario> scenarios = CI.stream().map(Scenario::named).toList();
-        List<DiagnosisBenchmark.Run> runs = DiagnosisBenchmark.run(scenarios, 1, SEED, System.out::println);
+        // a twin is diagnosed only where the bar on the floor is missed: the verdicts are those of the full benchmark
+        List<DiagnosisBenchmark.Run> runs = DiagnosisBenchmark.run(scenarios, 1, SEED, DiagnosisBenchmark.Twins.WHEN_NEEDED, System.out::println);
         System.out.println(DiagnosisBenchmark.markdown(runs));
         List<String> unexpected = new ArrayList<>(), nowPassing = new ArrayList<>();
         for (DiagnosisBenchmark.Run r : runs) {
@@ -56,6 +58,41 @@ class DiagnosisBenchmarkTest {
         }
         if (!nowPassing.isEmpty()) System.out.println("known failures that now pass (cut them from the list): " + nowPassing);
         assertEquals(List.of(), unexpected, "runs that went wrong and are not known failures");
+    }
+
+    @Test
+    void twinOfANullCampaign_isTheCampaign_sameValidationRms() {
+        Scenario s = Scenario.named("null irb2000, 50 poses");
+        assertEquals(s.trial(SEED).campaign().text(), s.twin(SEED).campaign().text());
+        DiagnosisBenchmark.Run r = DiagnosisBenchmark.run(s, SEED, DiagnosisBenchmark.Twins.ALWAYS);
+        assertEquals(r.finalRatio(), r.twinRatio(), 0.0, "the twin of a null campaign is diagnosed to the same validation RMS");
+        assertEquals(1.0, r.toTwin(), 0.0);
+        // with an effect, the twin is a different campaign that ends nearer the floor
+        DiagnosisBenchmark.Run lm = DiagnosisBenchmark.run(Scenario.named("lost motion j2, 50 poses"), SEED, DiagnosisBenchmark.Twins.ALWAYS);
+        assertTrue(lm.twinRatio() > 0.8 && lm.twinRatio() < 1.3 && lm.twinRatio() < lm.geoRatio(), lm.line());
+        DiagnosisBenchmark.Run none = DiagnosisBenchmark.run(s, SEED, DiagnosisBenchmark.Twins.NEVER);
+        assertTrue(Double.isNaN(none.twinRatio()) && none.finalRatio() == r.finalRatio(), none.line());
+    }
+
+    @Test
+    void rmsBar_metOnTheFloor_orWithinFivePercentOfATwinAboveTheFloor() {
+        assertEquals("floor", run(1.15, Double.NaN).rmsRoute(DiagnosisBenchmark.BAR));
+        assertEquals(null, run(1.16, Double.NaN).rmsRoute(DiagnosisBenchmark.BAR));
+        assertEquals("twin", run(1.18, 1.14).rmsRoute(DiagnosisBenchmark.BAR));
+        assertEquals("twin", run(1.196, 1.14).rmsRoute(DiagnosisBenchmark.BAR));
+        assertEquals(null, run(1.20, 1.14).rmsRoute(DiagnosisBenchmark.BAR), "5.3 % above its twin");
+        assertEquals(null, run(1.16, 1.10).rmsRoute(DiagnosisBenchmark.BAR), "a twin at 1.10 x the floor does not excuse the bar");
+        assertTrue(run(1.18, 1.14).correct(DiagnosisBenchmark.BAR));
+        assertFalse(run(1.20, 1.14).correct(DiagnosisBenchmark.BAR));
+        String md = DiagnosisBenchmark.markdown(List.of(run(1.02, 1.01), run(1.18, 1.14), run(1.3, 1.0)));
+        assertTrue(md.contains("1 of 3 runs within 1.15 × the floor, 1 more within 1.05 × their twin where the twin itself is above 1.10 × "
+                + "the floor, 1 meet neither"), md);
+        assertTrue(md.contains("over its geometry-only twin's (named and null scenarios): ≤ 1.05: 2, 1.05–1.10: 0, 1.10–1.15: 0, 1.15–1.5: 1"), md);
+    }
+
+    static DiagnosisBenchmark.Run run(double finalRatio, double twinRatio) {
+        return new DiagnosisBenchmark.Run("x", Expected.none(), 1, DiagnosisBenchmark.Outcome.CLEAN, List.of(), List.of(), 1.2, finalRatio,
+                twinRatio, 10, 0, 0, 0);
     }
 
     @Test

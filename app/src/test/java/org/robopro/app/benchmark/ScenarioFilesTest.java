@@ -54,6 +54,8 @@ class ScenarioFilesTest {
             assertEquals(mem.named(), file.named(), s.name());
             assertEquals(mem.located(), file.located(), s.name());
             assertEquals(mem.finalRatio(), file.finalRatio(), 1e-9, s.name());
+            assertEquals(mem.twinRatio(), file.twinRatio(), 1e-9, s.name() + ": the twin written beside the campaign");
+            assertTrue(Files.exists(set.resolve(ScenarioFiles.stem(s.name(), 11) + ScenarioFiles.TWIN)), s.name());
             assertEquals(11, file.seed());
         }
         DiagnosisBenchmark.Case byHand = cases.stream().filter(c -> c.name().equals("by-hand")).findFirst().orElseThrow();

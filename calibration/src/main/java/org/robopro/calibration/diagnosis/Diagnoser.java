@@ -117,8 +117,81 @@ public final class Diagnoser {
         train = dirs.train();
         validate = dirs.validate();
         Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
-        if (validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()) return d;
-        return crossValidated(robot, train, o, t0, dirs.source(), d);
+        List<String> flankNotes = new ArrayList<>();
+        if (dirs.source().inferred()) {
+            MeasurementSet[] flipped = startFlanks(d, train, validate, flankNotes);
+            if (flipped != null) {
+                train = flipped[0];
+                validate = flipped[1];
+                d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
+            }
+        }
+        if (!(validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()))
+            d = crossValidated(robot, train, o, t0, dirs.source(), d);
+        if (flankNotes.isEmpty()) return d;
+        List<String> notes = new ArrayList<>(d.notes());
+        notes.addAll(flankNotes);
+        return withNotes(d, notes);
+    }
+
+    /**
+     * With inferred directions, the flank of a joint with lost motion at the first poses of the
+     * measuring order (before that joint's first move) rests on the campaign starting at the zero
+     * position. When the robot started elsewhere (where the last program left it) that flank may be
+     * the other one, and the pose then misses by the whole play, which looks like a bad measurement.
+     * For each joint with lost motion named, the flank those poses share is taken from their
+     * residuals under the diagnosis' model: the other flank is taken when it lowers their sum of
+     * squared residuals by more than a pose's expected noise (3σ²). Returns the sets with those
+     * directions changed (null when none is), and says so in {@code notes}.
+     */
+    static MeasurementSet[] startFlanks(Diagnosis d, MeasurementSet train, MeasurementSet validate, List<String> notes) {
+        Map<String, int[]> flips = new LinkedHashMap<>();
+        double s2 = d.sigmaM() * d.sigmaM();
+        for (Diagnosis.Finding f : d.effects()) {
+            if (f.effect().kind() != Effect.Kind.BACKLASH) continue;
+            int j = f.effect().joint();
+            List<Measurement> start = Directions.fromStart(train, validate, j);
+            if (start.isEmpty() || start.stream().anyMatch(m -> m.isDistance() || m.points().size() > 1 || m.directions() == null)) continue;
+            int assumed = start.get(0).directions()[j];
+            double[] ss = new double[3];
+            for (int flank = -1; flank <= 1; flank += 2)
+                for (Measurement m : start) {
+                    int[] dir = m.directions();
+                    dir[j] = flank;
+                    PoseConditions c = new PoseConditions(dir, m.timeS(), m.tempC(), m.payloadKg());
+                    ss[flank + 1] += missed2(d, m, c);
+                }
+            int other = assumed > 0 ? -1 : 1;
+            double ssAssumed = assumed == 0 ? Math.min(ss[0], ss[2]) + 3 * s2 * start.size() : ss[assumed + 1];
+            if (!(ss[other + 1] + 3 * s2 * start.size() < ssAssumed)) continue;
+            for (Measurement m : start) flips.computeIfAbsent(m.poseId() + "|" + m.set(), k -> m.directions())[j] = other;
+            List<String> ids = start.stream().map(Measurement::poseId).toList();
+            notes.add(String.format(Locale.ROOT, "%s direction on joint %d taken from %s residual%s: the campaign seems to start away "
+                    + "from the zero position (a first move from zero gives %s, the residual%s support%s %s: RMS %.4f mm against "
+                    + "%.4f mm per pose); record dir1..dir%d, or start the measuring program at the zero position, to be sure",
+                    ids.size() == 1 ? "pose " + ids.get(0) + "'s" : "poses " + String.join(", ", ids) + "'", j + 1,
+                    ids.size() == 1 ? "its" : "their", ids.size() == 1 ? "" : "s", assumed > 0 ? "+" : assumed < 0 ? "-" : "no direction",
+                    ids.size() == 1 ? "" : "s", ids.size() == 1 ? "s" : "", other > 0 ? "+" : "-",
+                    Math.sqrt(ss[other + 1] / start.size()) * 1e3, Math.sqrt(ssAssumed / start.size()) * 1e3, d.model().geometry().dof()));
+        }
+        if (flips.isEmpty()) return null;
+        java.util.function.Function<MeasurementSet, MeasurementSet> apply = set -> {
+            if (set == null) return null;
+            List<Measurement> rows = new ArrayList<>();
+            for (Measurement m : set.rows()) {
+                int[] dir = flips.get(m.poseId() + "|" + m.set());
+                rows.add(dir == null ? m : m.withConditions(dir, m.timeS(), m.tempC(), m.payloadKg()));
+            }
+            return set.withRows(rows);
+        };
+        return new MeasurementSet[] {apply.apply(train), apply.apply(validate)};
+    }
+
+    /** The squared distance between row m's measured point and where the diagnosis' final model puts it under conditions c. */
+    private static double missed2(Diagnosis d, Measurement m, PoseConditions c) {
+        org.robopro.models.Vec3 p = d.finalInstrumentTbase().times(d.model().tool(m.q(), d.finalFlangeTtool(), c)).position();
+        double e = p.minus(m.position()).norm();
+        return e * e;
     }
 
     /** At least this many training poses per fold for the cross-validation of the claims. */
