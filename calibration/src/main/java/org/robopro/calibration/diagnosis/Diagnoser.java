@@ -801,8 +801,16 @@ public final class Diagnoser {
         }
         double stated = statedSigmaM(trainAll);
         double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
-        if (Double.isFinite(stated) && !trainAll.isDistance() && heldOutRms > STATED_FLOOR_MARGIN * Math.sqrt(3) * stated)
-            warnings.add(0, aboveStatedFloor(heldOutRms, Double.isFinite(valFinal), stated, selected, foundFinal.isEmpty()));
+        // The stated floor per kind of measurement, as the diagnosis sets it: √3·σ for points, σ for a length.
+        Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
+        // What a model without error leaves with p parameters fitted to n measured components: σ√(1 − p/n) on the
+        // training poses, σ√(1 + p/n) on new ones (one length per pose carries ten times the relative share of the
+        // parameters a point does; unaccounted, a null campaign of lengths comes out near 1.2 x σ on new poses).
+        int components = fit.m / fit.problem.rowsPerPose() * fit.problem.positionRowsPerPose();
+        boolean onValidation = Double.isFinite(valFinal);
+        double perfect = Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) fit.nf / Math.max(1, components)));
+        if (Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components))
+            warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fit.nf, selected, foundFinal.isEmpty()));
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
@@ -1203,12 +1211,38 @@ public final class Diagnoser {
         return x > 0 ? x * scale : Double.NaN;
     }
 
-    /** The first warning when the error left exceeds the instrument's stated floor: how much, and what to measure. */
+    /** What the file measures, for the stated floor: points (3 components each) or lengths (one). */
+    enum Measured {
+        POINTS(3), ANCHOR(1), PAIRS(1);
+        final int components;
+        Measured(int components) { this.components = components; }
+    }
+
+    /** The first warning when the error left exceeds the instrument's stated floor: how much, and what to measure (measured points). */
     static String aboveStatedFloor(double rms, boolean validation, double sigma, List<Effect> selected, boolean nothingLocated) {
-        double floor = Math.sqrt(3) * sigma;
-        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "The final model misses the %s poses by %.4f mm RMS, "
-                + "%.1f x the noise floor of the instrument's stated sigma (%.4f mm, from %.4f mm per axis): error is left that "
-                + "the model does not hold", validation ? "validation" : "training", rms * 1e3, rms / floor, floor * 1e3, sigma * 1e3));
+        return aboveStatedFloor(rms, validation, sigma, Measured.POINTS, 1, 0, selected, nothingLocated);
+    }
+
+    /**
+     * The first warning when the error left exceeds what the instrument's stated sigma leaves a
+     * model without error: the floor (√3·σ for points, σ for a length) times {@code perfect}, the
+     * factor of the {@code parameters} fitted (√(1 ± p/n), training or new poses); how much, and
+     * what to measure.
+     */
+    static String aboveStatedFloor(double rms, boolean validation, double sigma, Measured kind, double perfect, int parameters,
+                                   List<Effect> selected, boolean nothingLocated) {
+        double floor = noiseFloor(sigma, kind.components) * perfect;
+        String stated = kind == Measured.POINTS ? String.format(Locale.ROOT, "%.4f mm per axis", sigma * 1e3)
+                : String.format(Locale.ROOT, "%.4f mm per length", sigma * 1e3);
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "The final model misses the %s poses by %.4f mm RMS%s, "
+                + "%.1f x the noise floor of the instrument's stated sigma (%.4f mm, from %s%s): error is left that the model "
+                + "does not hold", validation ? "validation" : "training", rms * 1e3,
+                switch (kind) {
+                    case POINTS -> "";
+                    case ANCHOR -> " in the lengths to the anchor";
+                    case PAIRS -> " in the lengths between pairs of poses";
+                }, rms / floor, floor * 1e3, stated,
+                parameters > 0 ? String.format(Locale.ROOT, " and the %d parameters fitted", parameters) : ""));
         b.append(nothingLocated ? ", and the scan locates no structure in it." : " (where it lives is said below).");
         for (Effect e : selected)
             if (e.kind() == Effect.Kind.BACKLASH) {
@@ -1225,8 +1259,19 @@ public final class Diagnoser {
                         + "moves of several sizes (0.5, 2, 10 and 30 degrees) and compare the lag.", j, j));
             }
         if (selected.stream().noneMatch(e -> e.kind() == Effect.Kind.BACKLASH))
-            b.append(" Re-measure a few poses several times to check the instrument's noise, and measure more poses spread "
+            b.append(kind == Measured.PAIRS
+                    ? " Re-measure a few pairs several times to check the instrument's noise, and measure more pairs spread over "
+                    + "every joint's range."
+                    : " Re-measure a few poses several times to check the instrument's noise, and measure more poses spread "
                     + "over every joint's range.");
+        // A length sees an error only along one line (to the anchor, or between the pair's two places).
+        if (kind == Measured.ANCHOR)
+            b.append(" A length to the anchor shows only the part of an error along the line to the anchor: measure the "
+                    + "positions (x, y, z) of some poses, or the same poses from a second anchor, to see where the rest lives.");
+        else if (kind == Measured.PAIRS)
+            b.append(" A length between two poses shows only the change of an error along the line between the two places "
+                    + "(what is the same at both poses is not seen): measure the positions (x, y, z) of some poses to see "
+                    + "where the rest lives.");
         return b.toString();
     }
 
