@@ -34,6 +34,7 @@ final class Truth {
         root.put("expected", exp);
         if (campaign != null) {
             Campaign.Plan p = campaign.plan();
+            root.put("campaign_seed", p.seed());
             root.put("sigma_mm", p.sigmaM() * 1e3);
             root.put("sigma_rot_deg", p.sixD() ? Math.toDegrees(p.sigmaRotRad()) : 0);
             root.put("poses", p.poses());
