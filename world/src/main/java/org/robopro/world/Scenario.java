@@ -193,14 +193,15 @@ public record Scenario(String name, String family, String robot, Expected expect
     }
 
     /**
-     * Thermal growth: each link's own coefficient, 10–24·10⁻⁶/K (steel to cast aluminium), and, if
-     * asked, an instrument drift of 1–3 µm/K in a random direction.
+     * Thermal growth: each link's own coefficient, 10–24·10⁻⁶/K (steel to cast aluminium), the
+     * aluminium target holder at 23·10⁻⁶/K, and, if asked, an instrument drift of 1–3 µm/K in a
+     * random direction.
      */
     public static WorldRobot.Thermal thermal(RobotDescription nominal, Random r, boolean drift) {
         double[] a = new double[nominal.dof() + 1];
         for (int i = 0; i < a.length; i++) a[i] = uniform(r, 10e-6, 24e-6);
         double[] d = drift ? Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 1e-6, 3e-6)) : new double[3];
-        return new WorldRobot.Thermal(20, a, d, new double[3]);
+        return new WorldRobot.Thermal(20, a, d, new double[3], WorldRobot.Thermal.ALUMINIUM_HOLDER_ALPHA);
     }
 
     /** Joint elasticity on one drive, stiffness 0.5–2·10⁶ N·m/rad, with the file's masses off by up to ±30 % link by link. */
