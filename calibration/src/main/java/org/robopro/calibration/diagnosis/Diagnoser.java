@@ -214,10 +214,11 @@ public final class Diagnoser {
      * Without validation poses, the claims are judged by K-fold cross-validation of the whole
      * diagnosis: the training poses are dealt at random into K folds; the diagnosis runs K times,
      * each time on the other folds with the held-out fold as its validation set (so every held-out
-     * gate inside it, selection included, sees poses it was not fitted to). A family stays named
-     * only when a majority of the folds name it on the same joints and the folds' diagnoses predict
-     * their held-out poses better than their geometric fits do; otherwise the diagnosis runs again
-     * without it (its structure stays located, and a fallback may model it).
+     * gate inside it, selection included, sees poses it was not fitted to). Each named family is then
+     * judged on its own: it stays named only when a majority of the folds name it on the same joints
+     * and the final model without it predicts the folds' held-out poses worse than with it
+     * ({@link #perFamilyHeldOut}); otherwise the diagnosis runs again without it (its structure stays
+     * located, and a fallback may model it).
      */
     private static Diagnosis crossValidated(RobotDescription robot, MeasurementSet train, Options o, long t0,
                                             Directions.Source dirSource, Diagnosis d) {
@@ -233,6 +234,7 @@ public final class Diagnoser {
         int[] fold = MeasurementSet.folds(rows.size(), k, rows.size());
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
         Map<String, Integer> count = new LinkedHashMap<>();
+        List<Diagnosis> folds = new ArrayList<>();
         double geoSs = 0, effSs = 0;
         for (int f = 0; f < k; f++) {
             o.cancel().check();
@@ -240,6 +242,7 @@ public final class Diagnoser {
             List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
             for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
             Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of()).d;
+            folds.add(df);
             for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
             geoSs += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
             effSs += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
@@ -251,17 +254,25 @@ public final class Diagnoser {
         Set<String> excluded = new java.util.LinkedHashSet<>();
         Diagnosis out = d;
         for (int round = 0; round < 3; round++) {
+            Map<String, double[]> held = perFamilyHeldOut(robot, train, fold, folds, out, o);
             Set<String> failing = new java.util.LinkedHashSet<>();
             for (String key : namedKeys(out)) {
                 int n = count.getOrDefault(key, 0);
-                if (2 * n <= k || !(effCv < geoCv)) failing.add(key);
+                double[] h = held.get(key);
+                boolean helps = h != null && h[0] < h[1];
+                if (2 * n <= k || !helps) failing.add(key);
+                else extra.add(String.format(Locale.ROOT, "%s: named by %d of %d folds; the folds' held-out error %.1f with it, "
+                        + "%.1f without it (each residual over its noise)", key, n, k, h[0], h[1]));
             }
             if (failing.isEmpty()) break;
             for (String key : failing) {
                 int n = count.getOrDefault(key, 0);
+                double[] h = held.get(key);
                 extra.add(String.format(Locale.ROOT, "%s is not claimed: %s", key, 2 * n <= k
                         ? String.format(Locale.ROOT, "only %d of %d cross-validation folds name it", n, k)
-                        : "the folds' effects do not lower the held-out error"));
+                        : h == null ? "the folds could not judge it on its own"
+                        : String.format(Locale.ROOT, "the final model without it predicts the folds' held-out poses as well or "
+                        + "better (error %.1f with it, %.1f without it)", h[0], h[1])));
             }
             excluded.addAll(failing);
             out = prepared(robot, train, null, o, t0, dirSource, excluded);
@@ -269,6 +280,55 @@ public final class Diagnoser {
         List<String> notes = new ArrayList<>(out.notes());
         notes.addAll(extra);
         return withNotes(out, notes);
+    }
+
+    /**
+     * Each named family of {@code d} judged by the folds on its own: per fold, the final model's
+     * effects (families and fallbacks, with the columns the full fit left to the geometry left to it
+     * again) are fitted jointly with the geometry to the fold's training poses (without the fold
+     * diagnosis' outliers), from the fold's geometric calibration, once with every effect and once
+     * without each family; the held-out fold's error (each residual over its noise, orientation
+     * included) is summed over the folds. Returns claim key to {error with it, error without it}.
+     */
+    static Map<String, double[]> perFamilyHeldOut(RobotDescription robot, MeasurementSet train, int[] fold, List<Diagnosis> folds,
+                                                  Diagnosis d, Options o) {
+        Map<String, double[]> out = new LinkedHashMap<>();
+        List<Effect> effects = new ArrayList<>();
+        Map<Effect, boolean[]> masks = new java.util.IdentityHashMap<>();
+        for (Diagnosis.Finding f : d.effects()) {
+            Effect e = f.effect();
+            effects.add(e);
+            boolean[] m = new boolean[e.size()];
+            List<String> names = e.parameterNames();
+            for (int i = 0; i < m.length; i++) m[i] = f.evidence().absorbed().contains(names.get(i));
+            masks.put(e, m);
+        }
+        KinematicModel model = KinematicModel.build(robot);
+        List<Measurement> rows = train.rows();
+        for (int f = 0; f < folds.size(); f++) {
+            o.cancel().check();
+            Diagnosis df = folds.get(f);
+            Set<String> outl = new HashSet<>(df.outliers());
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++)
+                if (fold[i] == f) va.add(rows.get(i));
+                else if (!outl.contains(rows.get(i).poseId())) tr.add(rows.get(i));
+            Work w = new Work(model, tr, df.geometric(), train.withRows(va), o);
+            double[] start = Arrays.copyOf(w.geoFull, w.geoFull.length + d.effects().stream().mapToInt(x -> x.effect().size()).sum());
+            int off = w.geoFull.length;
+            for (Diagnosis.Finding x : d.effects()) for (double v : x.values()) start[off++] = v; // from the full fit's values
+            Fit all = w.fit(effects, masks, start, null);
+            double with = w.validateError(all);
+            for (int i = 0; i < effects.size(); i++) {
+                Effect e = effects.get(i);
+                if (e.isFallback()) continue;
+                double without = w.validateError(w.fit(withoutOne(effects, i), masks, w.dropEffect(all, i), null));
+                double[] h = out.computeIfAbsent(claimKey(e), x -> new double[2]);
+                h[0] += with;
+                h[1] += without;
+            }
+        }
+        return out;
     }
 
     private static Diagnosis withNotes(Diagnosis d, List<String> notes) {
