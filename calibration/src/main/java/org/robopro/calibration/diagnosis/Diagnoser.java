@@ -117,8 +117,81 @@ public final class Diagnoser {
         train = dirs.train();
         validate = dirs.validate();
         Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
-        if (validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()) return d;
-        return crossValidated(robot, train, o, t0, dirs.source(), d);
+        List<String> flankNotes = new ArrayList<>();
+        if (dirs.source().inferred()) {
+            MeasurementSet[] flipped = startFlanks(d, train, validate, flankNotes);
+            if (flipped != null) {
+                train = flipped[0];
+                validate = flipped[1];
+                d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
+            }
+        }
+        if (!(validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()))
+            d = crossValidated(robot, train, o, t0, dirs.source(), d);
+        if (flankNotes.isEmpty()) return d;
+        List<String> notes = new ArrayList<>(d.notes());
+        notes.addAll(flankNotes);
+        return withNotes(d, notes);
+    }
+
+    /**
+     * With inferred directions, the flank of a joint with lost motion at the first poses of the
+     * measuring order (before that joint's first move) rests on the campaign starting at the zero
+     * position. When the robot started elsewhere (where the last program left it) that flank may be
+     * the other one, and the pose then misses by the whole play, which looks like a bad measurement.
+     * For each joint with lost motion named, the flank those poses share is taken from their
+     * residuals under the diagnosis' model: the other flank is taken when it lowers their sum of
+     * squared residuals by more than a pose's expected noise (3σ²). Returns the sets with those
+     * directions changed (null when none is), and says so in {@code notes}.
+     */
+    static MeasurementSet[] startFlanks(Diagnosis d, MeasurementSet train, MeasurementSet validate, List<String> notes) {
+        Map<String, int[]> flips = new LinkedHashMap<>();
+        double s2 = d.sigmaM() * d.sigmaM();
+        for (Diagnosis.Finding f : d.effects()) {
+            if (f.effect().kind() != Effect.Kind.BACKLASH) continue;
+            int j = f.effect().joint();
+            List<Measurement> start = Directions.fromStart(train, validate, j);
+            if (start.isEmpty() || start.stream().anyMatch(m -> m.isDistance() || m.points().size() > 1 || m.directions() == null)) continue;
+            int assumed = start.get(0).directions()[j];
+            double[] ss = new double[3];
+            for (int flank = -1; flank <= 1; flank += 2)
+                for (Measurement m : start) {
+                    int[] dir = m.directions();
+                    dir[j] = flank;
+                    PoseConditions c = new PoseConditions(dir, m.timeS(), m.tempC(), m.payloadKg());
+                    ss[flank + 1] += missed2(d, m, c);
+                }
+            int other = assumed > 0 ? -1 : 1;
+            double ssAssumed = assumed == 0 ? Math.min(ss[0], ss[2]) + 3 * s2 * start.size() : ss[assumed + 1];
+            if (!(ss[other + 1] + 3 * s2 * start.size() < ssAssumed)) continue;
+            for (Measurement m : start) flips.computeIfAbsent(m.poseId() + "|" + m.set(), k -> m.directions())[j] = other;
+            List<String> ids = start.stream().map(Measurement::poseId).toList();
+            notes.add(String.format(Locale.ROOT, "%s direction on joint %d taken from %s residual%s: the campaign seems to start away "
+                    + "from the zero position (a first move from zero gives %s, the residual%s support%s %s: RMS %.4f mm against "
+                    + "%.4f mm per pose); record dir1..dir%d, or start the measuring program at the zero position, to be sure",
+                    ids.size() == 1 ? "pose " + ids.get(0) + "'s" : "poses " + String.join(", ", ids) + "'", j + 1,
+                    ids.size() == 1 ? "its" : "their", ids.size() == 1 ? "" : "s", assumed > 0 ? "+" : assumed < 0 ? "-" : "no direction",
+                    ids.size() == 1 ? "" : "s", ids.size() == 1 ? "s" : "", other > 0 ? "+" : "-",
+                    Math.sqrt(ss[other + 1] / start.size()) * 1e3, Math.sqrt(ssAssumed / start.size()) * 1e3, d.model().geometry().dof()));
+        }
+        if (flips.isEmpty()) return null;
+        java.util.function.Function<MeasurementSet, MeasurementSet> apply = set -> {
+            if (set == null) return null;
+            List<Measurement> rows = new ArrayList<>();
+            for (Measurement m : set.rows()) {
+                int[] dir = flips.get(m.poseId() + "|" + m.set());
+                rows.add(dir == null ? m : m.withConditions(dir, m.timeS(), m.tempC(), m.payloadKg()));
+            }
+            return set.withRows(rows);
+        };
+        return new MeasurementSet[] {apply.apply(train), apply.apply(validate)};
+    }
+
+    /** The squared distance between row m's measured point and where the diagnosis' final model puts it under conditions c. */
+    private static double missed2(Diagnosis d, Measurement m, PoseConditions c) {
+        org.robopro.models.Vec3 p = d.finalInstrumentTbase().times(d.model().tool(m.q(), d.finalFlangeTtool(), c)).position();
+        double e = p.minus(m.position()).norm();
+        return e * e;
     }
 
     /** At least this many training poses per fold for the cross-validation of the claims. */
@@ -141,10 +214,11 @@ public final class Diagnoser {
      * Without validation poses, the claims are judged by K-fold cross-validation of the whole
      * diagnosis: the training poses are dealt at random into K folds; the diagnosis runs K times,
      * each time on the other folds with the held-out fold as its validation set (so every held-out
-     * gate inside it, selection included, sees poses it was not fitted to). A family stays named
-     * only when a majority of the folds name it on the same joints and the folds' diagnoses predict
-     * their held-out poses better than their geometric fits do; otherwise the diagnosis runs again
-     * without it (its structure stays located, and a fallback may model it).
+     * gate inside it, selection included, sees poses it was not fitted to). Each named family is then
+     * judged on its own: it stays named only when a majority of the folds name it on the same joints
+     * and the final model without it predicts the folds' held-out poses worse than with it
+     * ({@link #perFamilyHeldOut}); otherwise the diagnosis runs again without it (its structure stays
+     * located, and a fallback may model it).
      */
     private static Diagnosis crossValidated(RobotDescription robot, MeasurementSet train, Options o, long t0,
                                             Directions.Source dirSource, Diagnosis d) {
@@ -160,6 +234,7 @@ public final class Diagnoser {
         int[] fold = MeasurementSet.folds(rows.size(), k, rows.size());
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
         Map<String, Integer> count = new LinkedHashMap<>();
+        List<Diagnosis> folds = new ArrayList<>();
         double geoSs = 0, effSs = 0;
         for (int f = 0; f < k; f++) {
             o.cancel().check();
@@ -167,6 +242,7 @@ public final class Diagnoser {
             List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
             for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
             Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of()).d;
+            folds.add(df);
             for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
             geoSs += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
             effSs += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
@@ -178,17 +254,25 @@ public final class Diagnoser {
         Set<String> excluded = new java.util.LinkedHashSet<>();
         Diagnosis out = d;
         for (int round = 0; round < 3; round++) {
+            Map<String, double[]> held = perFamilyHeldOut(robot, train, fold, folds, out, o);
             Set<String> failing = new java.util.LinkedHashSet<>();
             for (String key : namedKeys(out)) {
                 int n = count.getOrDefault(key, 0);
-                if (2 * n <= k || !(effCv < geoCv)) failing.add(key);
+                double[] h = held.get(key);
+                boolean helps = h != null && h[0] < h[1];
+                if (2 * n <= k || !helps) failing.add(key);
+                else extra.add(String.format(Locale.ROOT, "%s: named by %d of %d folds; the folds' held-out error %.1f with it, "
+                        + "%.1f without it (each residual over its noise)", key, n, k, h[0], h[1]));
             }
             if (failing.isEmpty()) break;
             for (String key : failing) {
                 int n = count.getOrDefault(key, 0);
+                double[] h = held.get(key);
                 extra.add(String.format(Locale.ROOT, "%s is not claimed: %s", key, 2 * n <= k
                         ? String.format(Locale.ROOT, "only %d of %d cross-validation folds name it", n, k)
-                        : "the folds' effects do not lower the held-out error"));
+                        : h == null ? "the folds could not judge it on its own"
+                        : String.format(Locale.ROOT, "the final model without it predicts the folds' held-out poses as well or "
+                        + "better (error %.1f with it, %.1f without it)", h[0], h[1])));
             }
             excluded.addAll(failing);
             out = prepared(robot, train, null, o, t0, dirSource, excluded);
@@ -196,6 +280,55 @@ public final class Diagnoser {
         List<String> notes = new ArrayList<>(out.notes());
         notes.addAll(extra);
         return withNotes(out, notes);
+    }
+
+    /**
+     * Each named family of {@code d} judged by the folds on its own: per fold, the final model's
+     * effects (families and fallbacks, with the columns the full fit left to the geometry left to it
+     * again) are fitted jointly with the geometry to the fold's training poses (without the fold
+     * diagnosis' outliers), from the fold's geometric calibration, once with every effect and once
+     * without each family; the held-out fold's error (each residual over its noise, orientation
+     * included) is summed over the folds. Returns claim key to {error with it, error without it}.
+     */
+    static Map<String, double[]> perFamilyHeldOut(RobotDescription robot, MeasurementSet train, int[] fold, List<Diagnosis> folds,
+                                                  Diagnosis d, Options o) {
+        Map<String, double[]> out = new LinkedHashMap<>();
+        List<Effect> effects = new ArrayList<>();
+        Map<Effect, boolean[]> masks = new java.util.IdentityHashMap<>();
+        for (Diagnosis.Finding f : d.effects()) {
+            Effect e = f.effect();
+            effects.add(e);
+            boolean[] m = new boolean[e.size()];
+            List<String> names = e.parameterNames();
+            for (int i = 0; i < m.length; i++) m[i] = f.evidence().absorbed().contains(names.get(i));
+            masks.put(e, m);
+        }
+        KinematicModel model = KinematicModel.build(robot);
+        List<Measurement> rows = train.rows();
+        for (int f = 0; f < folds.size(); f++) {
+            o.cancel().check();
+            Diagnosis df = folds.get(f);
+            Set<String> outl = new HashSet<>(df.outliers());
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++)
+                if (fold[i] == f) va.add(rows.get(i));
+                else if (!outl.contains(rows.get(i).poseId())) tr.add(rows.get(i));
+            Work w = new Work(model, tr, df.geometric(), train.withRows(va), o);
+            double[] start = Arrays.copyOf(w.geoFull, w.geoFull.length + d.effects().stream().mapToInt(x -> x.effect().size()).sum());
+            int off = w.geoFull.length;
+            for (Diagnosis.Finding x : d.effects()) for (double v : x.values()) start[off++] = v; // from the full fit's values
+            Fit all = w.fit(effects, masks, start, null);
+            double with = w.validateError(all);
+            for (int i = 0; i < effects.size(); i++) {
+                Effect e = effects.get(i);
+                if (e.isFallback()) continue;
+                double without = w.validateError(w.fit(withoutOne(effects, i), masks, w.dropEffect(all, i), null));
+                double[] h = out.computeIfAbsent(claimKey(e), x -> new double[2]);
+                h[0] += with;
+                h[1] += without;
+            }
+        }
+        return out;
     }
 
     private static Diagnosis withNotes(Diagnosis d, List<String> notes) {
@@ -668,8 +801,16 @@ public final class Diagnoser {
         }
         double stated = statedSigmaM(trainAll);
         double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
-        if (Double.isFinite(stated) && !trainAll.isDistance() && heldOutRms > STATED_FLOOR_MARGIN * Math.sqrt(3) * stated)
-            warnings.add(0, aboveStatedFloor(heldOutRms, Double.isFinite(valFinal), stated, selected, foundFinal.isEmpty()));
+        // The stated floor per kind of measurement, as the diagnosis sets it: √3·σ for points, σ for a length.
+        Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
+        // What a model without error leaves with p parameters fitted to n measured components: σ√(1 − p/n) on the
+        // training poses, σ√(1 + p/n) on new ones (one length per pose carries ten times the relative share of the
+        // parameters a point does; unaccounted, a null campaign of lengths comes out near 1.2 x σ on new poses).
+        int components = fit.m / fit.problem.rowsPerPose() * fit.problem.positionRowsPerPose();
+        boolean onValidation = Double.isFinite(valFinal);
+        double perfect = Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) fit.nf / Math.max(1, components)));
+        if (Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components))
+            warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fit.nf, selected, foundFinal.isEmpty()));
         o.progress().update("done", 1);
         double rssFinal = 0;
         for (double v : fit.r) rssFinal += v * v;
@@ -1070,12 +1211,38 @@ public final class Diagnoser {
         return x > 0 ? x * scale : Double.NaN;
     }
 
-    /** The first warning when the error left exceeds the instrument's stated floor: how much, and what to measure. */
+    /** What the file measures, for the stated floor: points (3 components each) or lengths (one). */
+    enum Measured {
+        POINTS(3), ANCHOR(1), PAIRS(1);
+        final int components;
+        Measured(int components) { this.components = components; }
+    }
+
+    /** The first warning when the error left exceeds the instrument's stated floor: how much, and what to measure (measured points). */
     static String aboveStatedFloor(double rms, boolean validation, double sigma, List<Effect> selected, boolean nothingLocated) {
-        double floor = Math.sqrt(3) * sigma;
-        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "The final model misses the %s poses by %.4f mm RMS, "
-                + "%.1f x the noise floor of the instrument's stated sigma (%.4f mm, from %.4f mm per axis): error is left that "
-                + "the model does not hold", validation ? "validation" : "training", rms * 1e3, rms / floor, floor * 1e3, sigma * 1e3));
+        return aboveStatedFloor(rms, validation, sigma, Measured.POINTS, 1, 0, selected, nothingLocated);
+    }
+
+    /**
+     * The first warning when the error left exceeds what the instrument's stated sigma leaves a
+     * model without error: the floor (√3·σ for points, σ for a length) times {@code perfect}, the
+     * factor of the {@code parameters} fitted (√(1 ± p/n), training or new poses); how much, and
+     * what to measure.
+     */
+    static String aboveStatedFloor(double rms, boolean validation, double sigma, Measured kind, double perfect, int parameters,
+                                   List<Effect> selected, boolean nothingLocated) {
+        double floor = noiseFloor(sigma, kind.components) * perfect;
+        String stated = kind == Measured.POINTS ? String.format(Locale.ROOT, "%.4f mm per axis", sigma * 1e3)
+                : String.format(Locale.ROOT, "%.4f mm per length", sigma * 1e3);
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "The final model misses the %s poses by %.4f mm RMS%s, "
+                + "%.1f x the noise floor of the instrument's stated sigma (%.4f mm, from %s%s): error is left that the model "
+                + "does not hold", validation ? "validation" : "training", rms * 1e3,
+                switch (kind) {
+                    case POINTS -> "";
+                    case ANCHOR -> " in the lengths to the anchor";
+                    case PAIRS -> " in the lengths between pairs of poses";
+                }, rms / floor, floor * 1e3, stated,
+                parameters > 0 ? String.format(Locale.ROOT, " and the %d parameters fitted", parameters) : ""));
         b.append(nothingLocated ? ", and the scan locates no structure in it." : " (where it lives is said below).");
         for (Effect e : selected)
             if (e.kind() == Effect.Kind.BACKLASH) {
@@ -1092,8 +1259,19 @@ public final class Diagnoser {
                         + "moves of several sizes (0.5, 2, 10 and 30 degrees) and compare the lag.", j, j));
             }
         if (selected.stream().noneMatch(e -> e.kind() == Effect.Kind.BACKLASH))
-            b.append(" Re-measure a few poses several times to check the instrument's noise, and measure more poses spread "
+            b.append(kind == Measured.PAIRS
+                    ? " Re-measure a few pairs several times to check the instrument's noise, and measure more pairs spread over "
+                    + "every joint's range."
+                    : " Re-measure a few poses several times to check the instrument's noise, and measure more poses spread "
                     + "over every joint's range.");
+        // A length sees an error only along one line (to the anchor, or between the pair's two places).
+        if (kind == Measured.ANCHOR)
+            b.append(" A length to the anchor shows only the part of an error along the line to the anchor: measure the "
+                    + "positions (x, y, z) of some poses, or the same poses from a second anchor, to see where the rest lives.");
+        else if (kind == Measured.PAIRS)
+            b.append(" A length between two poses shows only the change of an error along the line between the two places "
+                    + "(what is the same at both poses is not seen): measure the positions (x, y, z) of some poses to see "
+                    + "where the rest lives.");
         return b.toString();
     }
 

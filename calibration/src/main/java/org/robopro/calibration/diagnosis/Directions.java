@@ -125,6 +125,31 @@ public final class Directions {
     }
 
     /**
+     * The rows whose inferred direction on joint {@code j} rests on where the campaign started (the
+     * zero position is assumed): in the measuring order of the whole file, those before the joint's
+     * first move of more than {@link #PLAY_TOLERANCE}. Their flank is unknown when the robot really
+     * started elsewhere. Empty when the directions were recorded.
+     */
+    public static List<Measurement> fromStart(MeasurementSet train, MeasurementSet validate, int j) {
+        List<Measurement> out = new ArrayList<>();
+        if (train.size() == 0 || train.isPairs()) return out;
+        boolean sameFile = validate != null && validate.size() > 0 && Objects.equals(train.source(), validate.source());
+        List<Measurement> file = new ArrayList<>(train.rows());
+        if (sameFile) file.addAll(validate.rows());
+        startRows(ordered(file), j, out);
+        if (validate != null && validate.size() > 0 && !sameFile) startRows(ordered(validate.rows()), j, out);
+        return out;
+    }
+
+    private static void startRows(List<Measurement> inOrder, int j, List<Measurement> out) {
+        Map<String, int[]> unknownStart = infer(inOrder, null);
+        for (Measurement m : inOrder) {
+            if (unknownStart.get(m.poseId())[j] != 0) break;
+            out.add(m);
+        }
+    }
+
+    /**
      * Each pose's last move per joint, signed (rad, or m for a prismatic joint), in the measuring
      * order of the whole file (as {@link #prepare}: training and validation rows of one file merged,
      * by {@code time_s}, else by file line): the move from the previous pose, a joint that moved by

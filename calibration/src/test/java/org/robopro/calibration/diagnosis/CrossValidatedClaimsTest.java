@@ -3,9 +3,14 @@ package org.robopro.calibration.diagnosis;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.robopro.calibration.WorldCampaigns;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.world.Scenario;
@@ -48,6 +53,43 @@ class CrossValidatedClaimsTest {
         assertEquals(List.of("backlash j2"), families(d), "notes " + d.notes());
         assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("no validation poses: the claims were judged by 5-fold")),
                 d.notes().toString());
+    }
+
+    /**
+     * Each named family is judged by the folds on its own: a real lost motion (the world's truth)
+     * beside a chance-level family put into the final model (a gear harmonic set of joint 4 fitted
+     * to noise; the world has no error on joint 4). Pooled, the two lower the held-out error
+     * together; on its own, dropping the chance family does not raise the folds' held-out error,
+     * while dropping the lost motion does.
+     */
+    @Test
+    void eachFamily_isJudgedOnItsOwnByTheFolds() {
+        WorldCampaigns.Sim c = world("lost motion j2, directions recorded", 7);
+        MeasurementSet train = c.train();
+        Diagnosis d = Diagnoser.diagnose(irb2000, train, null);
+        assertEquals(List.of("backlash j2"), families(d), "notes " + d.notes());
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("backlash j2: named by 5 of 5 folds; the folds' held-out error")),
+                d.notes().toString());
+        Effect chance = Effect.periodic(3, new int[] {11, 12, 13, 14, 15, 16, 17, 18, 19, 20});
+        Diagnosis.Finding real = d.effects().get(0);
+        List<Diagnosis.Finding> both = List.of(real, new Diagnosis.Finding(chance, new double[chance.size()], new double[chance.size()],
+                Double.NaN, Double.NaN, real.evidence(), null, ""));
+        Diagnosis withChance = new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(),
+                both, d.finalTrainRmsM(), d.finalValidateRmsM(), d.outliers(), d.notIdentifiable(), d.implausible(), d.recommendations(),
+                d.notes(), d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
+                d.directions(), d.located(), d.warnings());
+        int k = 5, n = train.size();
+        int[] fold = MeasurementSet.folds(n, k, n);
+        List<Diagnosis> folds = new ArrayList<>();
+        for (int f = 0; f < k; f++) {
+            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+            for (int i = 0; i < n; i++) (fold[i] == f ? va : tr).add(train.rows().get(i));
+            folds.add(Diagnoser.diagnose(irb2000, train.withRows(tr), train.withRows(va)));
+        }
+        Map<String, double[]> held = Diagnoser.perFamilyHeldOut(irb2000, train, fold, folds, withChance, Diagnoser.Options.defaults());
+        double[] lost = held.get("backlash j2"), gear = held.get("gear-periodic j4");
+        assertTrue(lost[0] < 0.5 * lost[1], "the lost motion predicts the held-out poses: " + Arrays.toString(lost));
+        assertTrue(gear[0] >= gear[1], "the chance family does not: " + Arrays.toString(gear));
     }
 
     /** Too few poses for the folds: the report says the claims rest on the leave-one-pose-out error only. */
