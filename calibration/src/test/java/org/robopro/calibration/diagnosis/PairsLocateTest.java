@@ -49,19 +49,25 @@ class PairsLocateTest {
         assertEquals("joint 3 angle", l.variable(), d.located().toString());
         assertTrue(l.words().contains("in the measured distances"), l.words());
         assertTrue(l.share() > 0.8, l.words());
-        // The plot puts each length at the pose of the pair that carries more of the change: where
-        // the fitted change is largest, that pose's joint 3 is on the world's bump.
+        // The plot is joint 3's error at the pose of each pair that carries more of the change: the
+        // dots follow the world's bump, and the fitted curve peaks where the bump is, as high.
         Diagnosis.Plot p = l.plot();
         assertEquals(p.x().length, p.y().length);
-        assertTrue(p.xLabel().contains("joint 3 angle") && p.xLabel().contains("pair"), p.xLabel());
-        Integer[] order = new Integer[p.curveY().length];
-        for (int i = 0; i < order.length; i++) order[i] = i;
-        Arrays.sort(order, (a, b) -> Double.compare(p.curveY()[b], p.curveY()[a]));
-        double centre = Math.toDegrees(bump.centre()), width = Math.toDegrees(bump.width());
-        for (int i = 0; i < 10; i++)
-            assertEquals(centre, p.curveX()[order[i]], 1.5 * width, "largest fitted changes at q3 " + p.curveX()[order[i]]);
-        // and the residuals along the change follow the fitted change (a structure, not noise)
-        assertTrue(correlation(p.y(), p.curveY()) > 0.9, "correlation " + correlation(p.y(), p.curveY()));
+        assertTrue(p.x().length > 150, "lengths plotted: " + p.x().length);
+        assertTrue(p.xLabel().contains("joint 3 angle") && p.xLabel().contains("pair") && p.yLabel().contains("mdeg"), p.xLabel() + " / " + p.yLabel());
+        double[] truth = new double[p.x().length];
+        for (int i = 0; i < truth.length; i++) {
+            double u = (Math.toRadians(p.x()[i]) - bump.centre()) / bump.width();
+            truth[i] = bump.amplitude() * Math.exp(-u * u);
+        }
+        assertTrue(correlation(p.y(), truth) > 0.9, "partial residuals against the world's bump: " + correlation(p.y(), truth));
+        double sign = Math.signum(bump.amplitude());
+        int peak = 0;
+        for (int i = 0; i < p.curveY().length; i++) if (sign * p.curveY()[i] > sign * p.curveY()[peak]) peak = i;
+        assertEquals(Math.toDegrees(bump.centre()), p.curveX()[peak], 0.3 * Math.toDegrees(bump.width()), "curve's peak");
+        double lowest = Arrays.stream(p.curveY()).map(v -> sign * v).min().orElseThrow();
+        assertEquals(Math.abs(Math.toDegrees(bump.amplitude()) * 1e3), sign * p.curveY()[peak] - lowest,
+                0.25 * Math.abs(Math.toDegrees(bump.amplitude()) * 1e3), "bump height, mdeg");
         assertTrue(d.finalValidateRmsM() < 0.3 * d.geometricValidateRmsM(), d.finalValidateRmsM() + " vs " + d.geometricValidateRmsM());
     }
 
