@@ -405,7 +405,7 @@ public final class Diagnoser {
     private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
                            List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
         KinematicModel model = KinematicModel.build(robot);
-        GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
+        GravityTorques gravity = GravityTorques.of(model, robot);
         o.progress().update("geometric calibration", 0);
         Set<String> forced = forcedOutliers == null ? Set.of() : new HashSet<>(forcedOutliers);
         MeasurementSet train = forced.isEmpty() ? trainAll : trainAll.filter(m -> !forced.contains(m.poseId()));
@@ -442,9 +442,13 @@ public final class Diagnoser {
         if (manyOutliers)
             notes.add("more than 5 % of the poses lie beyond 5 robust sigmas of the geometric fit: too many to be bad "
                     + "measurements, so none was left out (the structure they show is located below)");
-        if (gravity == null)
-            notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
-                    + "add a mass_model to test it");
+        if (gravity.massesUnknown())
+            notes.add(Effect.complianceRemassed(0, gravity).testableOn(rows)
+                    ? "the robot file has no mass model: joint compliance (deflection under gravity) was tested through the "
+                    + "payload's torque, with the masses of the arm unknown (estimated with it)"
+                    : "the robot file has no mass model and the payload does not vary, so joint compliance (deflection under "
+                    + "gravity) was not tested: the arm's own weight alone cannot tell a compliance from unknown masses; measure "
+                    + "with two or three payloads, or add a mass_model to the robot file");
         if (geo.pairs())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pair shows an effect only through the change of the length between the point's two places, so a "
@@ -467,7 +471,7 @@ public final class Diagnoser {
                     + ", the sign of each joint's last move before the pose was measured; backlash was tested with them");
         if (!hasTemp && !hasTime) notes.add("no temp_c or time_s column: thermal expansion was not tested directly");
         else if (!hasTemp) notes.add("no temp_c column: thermal expansion tested with time_s as a warm-up proxy");
-        if (gravity != null && !hasPayload)
+        if (!gravity.massesUnknown() && !hasPayload)
             notes.add("no payload_kg column: compliance tested with the arm's own weight only (payload taken as 0 kg)");
 
         // Stepwise selection: forward by BIC among the candidates that pass, backward when one stops being needed.
@@ -679,6 +683,7 @@ public final class Diagnoser {
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
+        fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
@@ -964,6 +969,51 @@ public final class Diagnoser {
             default -> { }
         }
         return out;
+    }
+
+    /**
+     * Without payload steps a drive's gravity torque is a function of the arm's pose alone, and on
+     * a parallel-linkage arm a low-harmonic function of the drive's own angle: a compliance with
+     * the arm's masses unknown and a transmission error of one cycle per turn can then be near
+     * exact aliases. A named transmission error whose place that compliance (every link's mass and
+     * centre unknown, {@link GravityTorques#massesUnknown}) takes predicting left-out poses as well
+     * (within {@link #ALIAS_MARGIN}) is not claimed: neither is named as physics, the joint's smooth
+     * fallback models the shape where it holds on held-out data, and the report says to measure
+     * with payload steps, which separate the two.
+     */
+    private static Fit gravityAliases(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                      KinematicModel model, List<Measurement> rows, List<String> notes, List<String> recs) {
+        double pLo = Double.POSITIVE_INFINITY, pHi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) {
+            double p = Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0;
+            pLo = Math.min(pLo, p);
+            pHi = Math.max(pHi, p);
+        }
+        if (pHi - pLo >= Effect.MIN_PAYLOAD_SPAN_KG) return fit;
+        GravityTorques unknown = GravityTorques.massesUnknown(model);
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.PERIODIC) continue;
+            Tester at = w.tester(fit);
+            double own = at.pressFull(), grav = at.pressReplacing(k, Effect.complianceRemassed(e.joint(), unknown), w.conditions);
+            LOG.debug("gravity alias of {}: press own {} compliance (masses unknown) {}", e.label(), own, grav);
+            if (!(grav <= own * (1 + ALIAS_MARGIN))) continue;
+            int j = e.joint();
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+            int before = selected.size();
+            fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, hi > lo ? Effect.smooth(j, lo, hi) : null, true);
+            notes.add(String.format(Locale.ROOT, "%s is not claimed: joint %d giving way under the arm's own weight (a compliance, "
+                    + "with the masses unknown) predicts left-out poses as well (leave-one-pose-out error %.1f against %.1f); "
+                    + "without payload steps a transmission error of one cycle per turn and a deflection under gravity cannot "
+                    + "be told apart on these poses%s", e.label(), j + 1, grav, own, selected.size() == before
+                    ? ", so the joint's smooth fallback models the shape instead" : ", and nothing models it"));
+            recs.add(String.format(Locale.ROOT, "Joint %d's error follows its angle the way a deflection under the arm's weight "
+                    + "would: measure the same poses with two or three payloads (record payload_kg) to tell a compliance from a "
+                    + "transmission error, or give the robot file a mass_model.", j + 1));
+            k = -1;
+        }
+        return fit;
     }
 
     /**
@@ -1384,7 +1434,7 @@ public final class Diagnoser {
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
                 if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
-            if (gravity != null) out.add(Effect.complianceRemassed(j, gravity));
+            if (gravity != null && Effect.complianceRemassed(j, gravity).testableOn(rows)) out.add(Effect.complianceRemassed(j, gravity));
         }
         if (hasTemp) {
             out.add(Effect.thermalLinks(model, t0C));
@@ -2320,6 +2370,14 @@ public final class Diagnoser {
         Effect e = c.effect;
         switch (e.kind()) {
             case COMPLIANCE -> {
+                if (e.gravity().massesUnknown()) {
+                    // only the payload's coefficient is a compliance; the others are it times unknown masses and centres
+                    int p = e.gravity().payloadIndex();
+                    c.plausible = c.absorbedMask != null && c.absorbedMask[p] || overlaps(v[p], sd[p], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS);
+                    c.plausibility = String.format(Locale.ROOT, "stiffness from the payload %.3g N·m/rad within %.0e..%.0e (positive)",
+                            1 / v[p], MIN_STIFFNESS, MAX_STIFFNESS);
+                    return;
+                }
                 if (e.perMass()) {
                     boolean ok = true;
                     for (int i = 0; i < v.length; i++)

@@ -101,6 +101,8 @@ public final class Effect {
         }
     }
 
+    /** The payload must vary by this much for a compliance with the masses unknown to be tested, kg. */
+    static final double MIN_PAYLOAD_SPAN_KG = 0.1;
     /** Harmonics of a default (single-stage) gear-periodic effect. */
     public static final int HARMONICS = 3;
     private static final int[] LOW = {1, 2, 3};
@@ -420,7 +422,7 @@ public final class Effect {
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
-            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (perMass ? " (masses re-estimated)" : "");
+            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
                     Math.toDegrees(buildUp)) : "");
@@ -439,6 +441,12 @@ public final class Effect {
 
     /** Whether the conditions this effect needs are present on every row. */
     public boolean testableOn(List<Measurement> rows) {
+        if (kind == Kind.COMPLIANCE && gravity.massesUnknown()) {
+            // with the masses unknown only the payload's torque tells a compliance from them: the payload must vary
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (Measurement m : rows) { lo = Math.min(lo, m.payloadKg()); hi = Math.max(hi, m.payloadKg()); }
+            if (!(hi - lo >= MIN_PAYLOAD_SPAN_KG)) return false;
+        }
         for (Measurement m : rows) {
             switch (kind) {
                 case BACKLASH -> { if (m.directions() == null) return false; }
@@ -792,7 +800,7 @@ public final class Effect {
         List<Effect> out = new ArrayList<>();
         int n = model.dof();
         for (int j = 0; j < n; j++) {
-            if (gravity != null) out.add(compliance(j, gravity));
+            if (gravity != null && !gravity.massesUnknown()) out.add(compliance(j, gravity));
             out.add(periodic(j));
             out.add(backlash(j));
             out.add(scale(j));

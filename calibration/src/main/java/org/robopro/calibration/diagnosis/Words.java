@@ -16,7 +16,12 @@ final class Words {
                           double valBefore, double valAfter, Directions.Source dirs, double sizeM) {
         String at = Double.isFinite(sizeM) ? String.format(Locale.ROOT, ", %.4f mm at the measured point (RMS over the poses)", sizeM * 1e3) : "";
         String what = switch (e.kind()) {
-            case COMPLIANCE -> e.perMass()
+            case COMPLIANCE -> e.gravity().massesUnknown()
+                    ? String.format(Locale.ROOT, "Joint %d gives way under gravity: the payload steps give its compliance %.3g ± %.2g "
+                    + "rad/(N·m), a stiffness of %.3g N·m/rad. The robot file has no mass model, so the arm's own weight was "
+                    + "estimated with it (unknown masses and centres of links 1-3, coefficients %s).", e.joint() + 1,
+                    v[e.gravity().payloadIndex()], s[e.gravity().payloadIndex()], 1 / v[e.gravity().payloadIndex()], fmtList(v))
+                    : e.perMass()
                     ? String.format(Locale.ROOT, "Joint %d gives way under gravity, and the robot file's masses do not match: with "
                     + "each mass's torque on drive %d given its own coefficient (the mass model re-estimated from the data) the "
                     + "deflection is explained; coefficients %s rad/(N·m) per N·m of the file's torque (%s).", e.joint() + 1,
