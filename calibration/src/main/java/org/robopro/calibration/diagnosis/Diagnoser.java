@@ -489,7 +489,7 @@ public final class Diagnoser {
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
         Map<String, Effect> rivals = new LinkedHashMap<>();
-        for (Effect e : locatedFallbacks(foundGeo, rows)) rivals.putIfAbsent(e.label(), e);
+        for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
         int hMax = Locator.harmonicsFor(rows.size());
         if (hMax < Locator.WANTED_HARMONIC)
@@ -511,7 +511,7 @@ public final class Diagnoser {
             if (step > 0 && scannedFit != fit) {
                 // Locate again after each accepted effect: what is left may call for other families or harmonics.
                 List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource), o.alpha(), MAX_LOCATED);
-                for (Effect e : locatedFallbacks(more, rows)) rivals.putIfAbsent(e.label(), e);
+                for (Effect e : locatedFallbacks(more, rows, model)) rivals.putIfAbsent(e.label(), e);
                 for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
                     Effect merged = e;
                     if (e.kind() == Effect.Kind.PERIODIC)
@@ -655,13 +655,15 @@ public final class Diagnoser {
         // family's: another family's claim on the same drive's angle is withdrawn (the fallback models it).
         for (int k = selected.size() - 1; k >= 0; k--) {
             Effect e = selected.get(k);
-            boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH;
-            if (!angleFamily || selected.stream().noneMatch(x -> x.kind() == Effect.Kind.SMOOTH && x.joint() == e.joint())) continue;
+            boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH
+                    && e.kind() != Effect.Kind.ANGLE_STEP;
+            if (!angleFamily || selected.stream().noneMatch(x -> (x.kind() == Effect.Kind.SMOOTH || x.kind() == Effect.Kind.ANGLE_STEP)
+                    && x.joint() == e.joint())) continue;
             selected.remove(k);
             absorbedCols.remove(e);
             steps.remove(k);
             aliasNotes.add(e.label() + " is not claimed: the angle-dependent error of joint " + (e.joint() + 1)
-                    + " needed the smooth fallback as well, so it is not that family's alone");
+                    + " needed a fallback of its angle (a smooth curve or a step) as well, so it is not that family's alone");
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
         // Likewise where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
@@ -684,6 +686,7 @@ public final class Diagnoser {
             k = selected.size();
         }
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
+        fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
@@ -847,7 +850,10 @@ public final class Diagnoser {
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
-        return new Run(result, selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll));
+        List<String> under = selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll);
+        if (LOG.isDebugEnabled())
+            LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
+        return new Run(result, under);
     }
 
     /**
@@ -1012,6 +1018,67 @@ public final class Diagnoser {
                     + "would: measure the same poses with two or three payloads (record payload_kg) to tell a compliance from a "
                     + "transmission error, or give the robot file a mass_model.", j + 1));
             k = -1;
+        }
+        return fit;
+    }
+
+    /**
+     * Several families on one joint's angle (harmonic sets, a scale error) can together mimic a
+     * shape located on that angle that none of them holds alone (a step of the reading: a Fourier
+     * series of it), and each then beats that shape's fallback when judged one at a time. Where two
+     * or more families share a joint's angle, the located fallbacks of that angle (a step of the
+     * reading, a smooth curve) are put in the place of all of them together; one that predicts
+     * left-out poses better (and, with validation poses, those too) takes their place, and the notes
+     * say so.
+     */
+    private static Fit jointContest(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                    java.util.Collection<Effect> rivals, List<String> notes) {
+        for (int j = 0; j < w.model.dof(); j++) {
+            final int jj = j;
+            List<Effect> fams = selected.stream().filter(e -> !e.isFallback() && e.joint() == jj
+                    && (e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SCALE)).toList();
+            if (fams.size() < 2) continue;
+            double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
+            boolean hasVal = w.validate != null && w.validate.size() > 0;
+            for (Effect r : rivals) {
+                if (r.joint() != j || r.kind() != Effect.Kind.ANGLE_STEP && r.kind() != Effect.Kind.SMOOTH
+                        || selected.stream().anyMatch(x -> x.label().equals(r.label()))) continue;
+                List<Effect> sel0 = new ArrayList<>(selected);
+                Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
+                List<Step> steps0 = new ArrayList<>(steps);
+                double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
+                Fit f = fit;
+                for (Effect e : fams) {
+                    int k = selected.indexOf(e);
+                    selected.remove(k);
+                    absorbedCols.remove(e);
+                    steps.remove(k);
+                    f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
+                }
+                Candidate bc = w.tester(f).test(r, w.conditions);
+                if (bc.keptColumns > 0 && bc.pressAfter < bc.pressBefore) {
+                    selected.add(r);
+                    absorbedCols.put(r, bc.absorbedMask);
+                    Fit g = w.fit(selected, absorbedCols, f.full, bc);
+                    double pr = w.tester(g).pressFull();
+                    LOG.debug("joint contest j{}: {} against {} (PRESS {} -> {})", j + 1, r.label(), fams, own, pr);
+                    if (pr < own && (!hasVal || w.validateError(g) < ownVal)) {
+                        bc.threshold = thr;
+                        steps.add(new Step(bc, g.trainRms, w.validateRms(g)));
+                        notes.add(String.format(Locale.ROOT, "%s are not claimed: together they mimic a shape located on joint %d's "
+                                + "angle, and %s in their place predicts left-out poses better (leave-one-pose-out error %.1f against %.1f)",
+                                String.join(", ", fams.stream().map(Effect::label).toList()), j + 1, r.label(), pr, own));
+                        fit = g;
+                        break;
+                    }
+                }
+                selected.clear();
+                selected.addAll(sel0);
+                absorbedCols.clear();
+                absorbedCols.putAll(abs0);
+                steps.clear();
+                steps.addAll(steps0);
+            }
         }
         return fit;
     }
@@ -1191,15 +1258,23 @@ public final class Diagnoser {
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
                     out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
-        } else if (e.kind() == Effect.Kind.ZERO_STEP) {
-            double[] t = w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
+        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.ANGLE_STEP) {
+            boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
+            double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).sorted().toArray()
+                    : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
+            double place = angle ? e.rangeLo() : e.tauS();
             int at = 0;
-            while (at < t.length && t[at] <= e.tauS()) at++;
-            // the midpoints between the poses within a twentieth of the campaign either side
+            while (at < t.length && t[at] <= place) at++;
+            // the midpoints between the poses within a twentieth of the campaign (of the joint's poses) either side
             int reach = Math.max(1, t.length / Locator.STEP_QUANTILES);
             for (int i = Math.max(1, at - reach); i <= Math.min(t.length - 1, at + reach); i++) {
                 double tau = 0.5 * (t[i - 1] + t[i]);
-                if (tau != e.tauS() && t[i] > t[i - 1]) out.add(Effect.zeroStep(e.joint(), tau));
+                if (tau == place || !(t[i] > t[i - 1])) continue;
+                out.add(switch (e.kind()) {
+                    case ANGLE_STEP -> Effect.angleStep(e.joint(), tau);
+                    case TARGET_STEP -> Effect.targetStep(w.model, tau);
+                    default -> Effect.zeroStep(e.joint(), tau);
+                });
             }
         }
         return out;
@@ -1211,7 +1286,7 @@ public final class Diagnoser {
             Effect.Kind k = e.kind();
             boolean thermal = k == Effect.Kind.THERMAL || k == Effect.Kind.THERMAL_LINK || k == Effect.Kind.DRIFT;
             switch (f.probe.var) {
-                case ANGLE_PERIODIC, ANGLE_SMOOTH -> {
+                case ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP -> {
                     if (e.target() == Effect.Target.DRIVE && k != Effect.Kind.BACKLASH
                             && (e.joint() == f.probe.joint || (k == Effect.Kind.COUPLING && e.source() == f.probe.joint))) return e;
                 }
@@ -1230,6 +1305,7 @@ public final class Diagnoser {
                 case TIME_STEP -> {
                     if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
                 }
+                case TARGET_STEP -> { if (k == Effect.Kind.TARGET_STEP) return e; }
                 case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE) return e; }
                 case REACH, HEIGHT -> { return e; }
@@ -1395,6 +1471,13 @@ public final class Diagnoser {
             case TIME_STEP -> String.format(Locale.ROOT, "check joint %d's zero (its calibration mark or reference position) and "
                     + "the log near %.0f s for a collision or an encoder fault; re-measure a few poses from before that time.",
                     f.probe.joint + 1, f.probe.lo);
+            case ANGLE_STEP -> String.format(Locale.ROOT, "move joint %d slowly across %.1f deg in small steps, in both "
+                    + "directions, with the other joints still, and compare its reading with an independent measure: a jump there "
+                    + "is in the encoder (an absolute encoder's code track, a misread bit) or a damaged scale.", f.probe.joint + 1,
+                    Math.toDegrees(f.probe.lo));
+            case TARGET_STEP -> String.format(Locale.ROOT, "check the measured target's mounting on the flange (knocked, "
+                    + "slipped in its nest) and re-measure a few poses from before %.0f s; mark the target's nest and check it "
+                    + "between sessions.", f.probe.lo);
             case PAYLOAD_REACH -> "measure the same poses stretched and folded with two or three payloads, and check the "
                     + "stiffness of the arm and of the point's holder.";
             case PAYLOAD -> "measure with two or three payloads at the same poses to separate deflection from geometry.";
@@ -1421,6 +1504,7 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
+                if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(Effect.angleStep(j, f.probe.lo));
             }
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
@@ -1442,6 +1526,8 @@ public final class Diagnoser {
         }
         if (hasTime) out.add(Effect.driftWithTime());
         for (Locator.Found f : found)
+            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(Effect.targetStep(model, f.probe.lo));
+        for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
         return out;
@@ -1454,7 +1540,7 @@ public final class Diagnoser {
      * are rivals only, not stepwise candidates: with many functions they would take a gear's few
      * harmonics before the periodic family is tried.
      */
-    static List<Effect> locatedFallbacks(List<Locator.Found> found, List<Measurement> rows) {
+    static List<Effect> locatedFallbacks(List<Locator.Found> found, List<Measurement> rows, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         for (Locator.Found f : found)
             switch (f.probe.var) {
@@ -1463,6 +1549,8 @@ public final class Diagnoser {
                 case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH,
                         f.probe.lo, f.probe.hi));
                 case TIME_STEP -> out.add(Effect.zeroStep(f.probe.joint, f.probe.lo));
+                case ANGLE_STEP -> out.add(Effect.angleStep(f.probe.joint, f.probe.lo));
+                case TARGET_STEP -> out.add(Effect.targetStep(model, f.probe.lo));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
