@@ -660,6 +660,25 @@ public final class Diagnoser {
                     + " needed the smooth fallback as well, so it is not that family's alone");
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
+        // Likewise where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
+        // joints, and the fallback holds j's scale error and the coupling of j from k (its linear terms), so a claim
+        // of j's own angle (scale, harmonics) or of k's is not that family's alone; the fallback is then re-tested so
+        // that its terms, left to the family while it was there, are its own again.
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            Effect e = selected.get(k);
+            Effect pair = selected.stream().filter(x -> x.kind() == Effect.Kind.PAIR && x.joint() == e.joint()
+                    && (e.kind() == Effect.Kind.SCALE || e.kind() == Effect.Kind.PERIODIC
+                    || e.kind() == Effect.Kind.COUPLING && e.source() == x.source())).findFirst().orElse(null);
+            if (pair == null) continue;
+            selected.remove(k);
+            absorbedCols.remove(e);
+            steps.remove(k);
+            aliasNotes.add(e.label() + " is not claimed: joint " + (e.joint() + 1) + "'s error needed the two-joint fallback "
+                    + pair.label() + " as well, which holds this family's shape, so it is not that family's alone");
+            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+            fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
+            k = selected.size();
+        }
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
