@@ -126,7 +126,7 @@ public final class Readings {
     static WorldRobot inBase(WorldRobot w) {
         WorldRobot b = w.withInstrument(Rigid.IDENTITY);
         WorldRobot.Thermal t = w.thermal();
-        if (t != null) b = b.withThermal(new WorldRobot.Thermal(t.refC(), t.linkAlpha(), new double[3], new double[3]));
+        if (t != null) b = b.withThermal(new WorldRobot.Thermal(t.refC(), t.linkAlpha(), new double[3], new double[3], t.holderAlpha()));
         return b;
     }
 

@@ -69,7 +69,23 @@ public record Scenario(String name, String family, String robot, Expected expect
     }
 
     private Campaign.Plan campaignPlan(long seed, UnaryOperator<Campaign.Plan> adjust) {
-        return adjust.apply(plan.apply(Campaign.Plan.defaults(seed)));
+        return adjust.apply(plan.apply(Campaign.Plan.defaults(campaignSeed(seed))));
+    }
+
+    /**
+     * The seed of the scenario's campaign (poses, order, validation split, warm-up, noise) for a
+     * trial seed: drawn from the seed and the scenario's name, so that two scenarios of one seed
+     * measure different poses with different noise (their runs are independent), while a scenario
+     * and a seed always give the same campaign and its twin shares it.
+     */
+    public long campaignSeed(long seed) { return mix(seed, name); }
+
+    /** A 64-bit mix of a seed and a name (the finaliser of SplitMix64: nearby seeds give unrelated results). */
+    static long mix(long seed, String name) {
+        long z = seed * 0x9E3779B97F4A7C15L + name.hashCode();
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
     }
 
     /** The random stream the scenario's robot of a seed is drawn from: geometric errors first, then the concealed effects. */
@@ -177,14 +193,15 @@ public record Scenario(String name, String family, String robot, Expected expect
     }
 
     /**
-     * Thermal growth: each link's own coefficient, 10–24·10⁻⁶/K (steel to cast aluminium), and, if
-     * asked, an instrument drift of 1–3 µm/K in a random direction.
+     * Thermal growth: each link's own coefficient, 10–24·10⁻⁶/K (steel to cast aluminium), the
+     * aluminium target holder at 23·10⁻⁶/K, and, if asked, an instrument drift of 1–3 µm/K in a
+     * random direction.
      */
     public static WorldRobot.Thermal thermal(RobotDescription nominal, Random r, boolean drift) {
         double[] a = new double[nominal.dof() + 1];
         for (int i = 0; i < a.length; i++) a[i] = uniform(r, 10e-6, 24e-6);
         double[] d = drift ? Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 1e-6, 3e-6)) : new double[3];
-        return new WorldRobot.Thermal(20, a, d, new double[3]);
+        return new WorldRobot.Thermal(20, a, d, new double[3], WorldRobot.Thermal.ALUMINIUM_HOLDER_ALPHA);
     }
 
     /** Joint elasticity on one drive, stiffness 0.5–2·10⁶ N·m/rad, with the file's masses off by up to ±30 % link by link. */

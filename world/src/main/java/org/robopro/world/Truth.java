@@ -34,6 +34,7 @@ final class Truth {
         root.put("expected", exp);
         if (campaign != null) {
             Campaign.Plan p = campaign.plan();
+            root.put("campaign_seed", p.seed());
             root.put("sigma_mm", p.sigmaM() * 1e3);
             root.put("sigma_rot_deg", p.sixD() ? Math.toDegrees(p.sigmaRotRad()) : 0);
             root.put("poses", p.poses());
@@ -63,6 +64,7 @@ final class Truth {
         if (w.thermal() != null) {
             WorldRobot.Thermal th = w.thermal();
             root.put("thermal", Map.of("ref_c", th.refC(), "link_alpha_per_k", Arrays.stream(th.linkAlpha()).boxed().toList(),
+                    "holder_alpha_per_k", th.holderAlpha(),
                     "instrument_drift_mm_per_k", mm(th.driftPerK()), "instrument_drift_mm_per_s", mm(th.driftPerS())));
         }
         if (w.compliance() != null) {

@@ -17,7 +17,7 @@ import org.robopro.models.RobotDescription;
  * <li>joint elasticity: the gravity torques of the true masses (and payload) on the model angles,
  *     tau_theta, reach the drives as tau_q = C^T tau_theta (virtual work), each drive yields
  *     dq = tau_q / k, so theta += C dq;</li>
- * <li>each link grown by its own thermal strain, {@link Arm#grown};</li>
+ * <li>each link grown by its own thermal strain, {@link Arm#grown}, and the target holder by its own;</li>
  * <li>product of exponentials to the flange, then the tool (measured target);</li>
  * <li>an optional position-dependent error of the measured point ({@link Sag});</li>
  * <li>the measured target may be knocked on the flange mid-campaign ({@link ToolBump});</li>
@@ -54,15 +54,33 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * Thermal growth: the structure's temperature is the recorded one; link i (pedestal = 0, last
      * link to the flange = n) grows by alpha_i (T - refC) (linear expansion, e.g. steel about
      * 11.5e-6/K, aluminium cast about 23e-6/K: CRC Handbook of Chemistry and Physics, "Thermal
-     * expansion of metals"); the instrument's view of the base drifts by driftPerK (T - refC) +
-     * driftPerS t (a tracker on a stand on a warming floor), in instrument coordinates.
+     * expansion of metals"); the target holder, the part bolted to the flange that carries the
+     * measured target, grows by holderAlpha (T - refC) along the flange-to-target offset; the
+     * instrument's view of the base drifts by driftPerK (T - refC) + driftPerS t (a tracker on a
+     * stand on a warming floor), in instrument coordinates.
      */
-    public record Thermal(double refC, double[] linkAlpha, double[] driftPerK, double[] driftPerS) {
+    public record Thermal(double refC, double[] linkAlpha, double[] driftPerK, double[] driftPerS, double holderAlpha) {
         public Thermal {
             linkAlpha = linkAlpha.clone();
             driftPerK = driftPerK.clone();
             driftPerS = driftPerS.clone();
         }
+
+        /** Links and instrument only: the target holder does not grow. */
+        public Thermal(double refC, double[] linkAlpha, double[] driftPerK, double[] driftPerS) {
+            this(refC, linkAlpha, driftPerK, driftPerS, 0);
+        }
+
+        /**
+         * An aluminium target holder: 23·10⁻⁶/K, the linear expansion of aluminium near room
+         * temperature (23.1·10⁻⁶/K at 25 °C: CRC Handbook of Chemistry and Physics, "Thermal
+         * expansion of metals"; laser-tracker reflector nests and adapter plates are commonly
+         * machined from aluminium alloy).
+         */
+        public static final double ALUMINIUM_HOLDER_ALPHA = 23e-6;
+
+        /** The same growth with the target holder growing by {@code alpha} per kelvin. */
+        public Thermal withHolderAlpha(double alpha) { return new Thermal(refC, linkAlpha, driftPerK, driftPerS, alpha); }
 
         @Override public double[] linkAlpha() { return linkAlpha.clone(); }
         @Override public double[] driftPerK() { return driftPerK.clone(); }
@@ -207,6 +225,8 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             for (int i = 0; i < n; i++) theta[i] += dTheta[i];
         }
         Rigid onFlange = toolBump != null && Double.isFinite(timeS) && timeS >= toolBump.atS() ? toolBump.apply(flangeToTool) : flangeToTool;
+        if (thermal != null && thermal.holderAlpha != 0 && Double.isFinite(tempC))
+            onFlange = new Rigid(onFlange.r(), Rigid.scale(onFlange.p(), 1 + thermal.holderAlpha * (tempC - thermal.refC)));
         Rigid tool = a.flange(theta).times(onFlange);
         if (sag != null) {
             double[] p = tool.p();

@@ -137,4 +137,27 @@ class CampaignTest {
             assertFalse(t.campaign().text().equals(twin.campaign().text()), name);
         }
     }
+
+    @Test
+    void scenariosOfOneSeed_measureDifferentPosesWithDifferentNoise_reproducibly() {
+        // the same campaign plan (defaults) on the same robot file: only the scenario's name differs
+        Scenario a = Scenario.named("null irb2000"), b = Scenario.named("lost motion j1, directions recorded");
+        Campaign.Result ca = a.trial(7).campaign(), cb = b.trial(7).campaign();
+        assertNotEquals(a.campaignSeed(7), b.campaignSeed(7));
+        int samePose = 0, sameNoise = 0, sameSplit = 0;
+        for (int i = 0; i < ca.rows().size(); i++) {
+            Campaign.Row x = ca.rows().get(i), y = cb.rows().get(i);
+            if (java.util.Arrays.equals(x.q(), y.q())) samePose++;
+            if (Rigid.norm(Rigid.minus(Rigid.minus(x.point(), x.truePoint()), Rigid.minus(y.point(), y.truePoint()))) < 1e-12) sameNoise++;
+            if (x.validate() == y.validate()) sameSplit++;
+        }
+        assertEquals(0, samePose, "poses shared by two scenarios of one seed");
+        assertEquals(0, sameNoise, "noise draws shared by two scenarios of one seed");
+        assertTrue(sameSplit < 0.75 * ca.rows().size(), "validation split nearly the same: " + sameSplit);
+        assertNotEquals(ca.warmup(), cb.warmup());
+        // reproducible: the same scenario and seed give the same file, and another seed another file
+        assertEquals(ca.text(), a.trial(7).campaign().text());
+        assertNotEquals(ca.text(), a.trial(8).campaign().text());
+        assertTrue(a.trial(7).truthJson().contains("\"campaign_seed\" : " + a.campaignSeed(7)));
+    }
 }

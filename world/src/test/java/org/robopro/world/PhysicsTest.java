@@ -80,6 +80,28 @@ class PhysicsTest {
     }
 
     @Test
+    void targetHolderGrowsAlongItselfWithTemperature() {
+        // Only the aluminium holder grows: 100 mm x 23e-6/K x 10 K = 23 µm along the flange-to-target offset, at any pose.
+        WorldRobot.Thermal holder = new WorldRobot.Thermal(20, new double[7], new double[3], new double[3])
+                .withHolderAlpha(WorldRobot.Thermal.ALUMINIUM_HOLDER_ALPHA);
+        WorldRobot w = WorldRobot.nominal(IRB2000, new double[] {0, 0, 0.1}).withThermal(holder);
+        WorldRobot flange = WorldRobot.nominal(IRB2000, new double[3]);
+        int[] dir = {1, 1, 1, 1, 1, 1};
+        for (double[] q : List.of(new double[6], new double[] {0.3, -0.2, 0.4, 1.0, -0.7, 2.0})) {
+            double[] cold = w.target(q, dir, 20, 0, 0).p(), warm = w.target(q, dir, 30, 0, 0).p();
+            double[] along = Rigid.minus(cold, flange.target(q, dir, 20, 0, 0).p()); // the holder, flange to target
+            assertEquals(0.1, Rigid.norm(along), 1e-12);
+            double[] grow = Rigid.minus(warm, cold);
+            assertEquals(23e-6, Rigid.norm(grow), 1e-12);
+            assertEquals(23e-6 * 0.1, Rigid.dot(grow, along), 1e-15);
+        }
+        // without the holder's coefficient the target does not move with temperature when no link grows
+        WorldRobot still = WorldRobot.nominal(IRB2000, new double[] {0, 0, 0.1})
+                .withThermal(new WorldRobot.Thermal(20, new double[7], new double[3], new double[3]));
+        assertEquals(0, Rigid.norm(Rigid.minus(still.target(new double[6], dir, 30, 0, 0).p(), still.target(new double[6], dir, 20, 0, 0).p())), 0);
+    }
+
+    @Test
     void driveErrorsActBeforeTheCoupling() {
         // A gear-ratio error on drive 2 of the parallel-arm IRB 2000 turns the upper arm and, through
         // theta3 = q3 - q2, turns the forearm back: the forearm stays horizontal.

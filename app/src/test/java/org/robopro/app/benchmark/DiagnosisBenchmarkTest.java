@@ -42,7 +42,12 @@ class DiagnosisBenchmarkTest {
             "outside: j3 zero creeping with time", "outside: arm bends with payload and reach");
 
     /** Scenario -> what the diagnosis did on the CI seed when it was last checked. */
-    static final Map<String, String> KNOWN_FAILURES = Map.of();
+    static final Map<String, String> KNOWN_FAILURES = Map.of(
+            // Gaussian noise draws beyond the outlier detector's 5 robust sigmas (about 1 point in 65 000): the
+            // diagnosis reports them, and a clean pose reported as an outlier scores the run wrong.
+            "null irb2000, 50 poses", "clean at 1.11 x the floor, but training pose 24 (its noise draw 5.2 sigma) reported as an outlier",
+            "lost motion j2 + thermal growth per link", "named right at 1.02 x the floor, but training pose 141 (noise draw 5.5 sigma) "
+                    + "reported as an outlier");
 
     @Test
     void ciScenarios_giveTheRightAnswerOrAreKnownFailures() {

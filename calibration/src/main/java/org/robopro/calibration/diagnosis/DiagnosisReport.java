@@ -207,7 +207,8 @@ public final class DiagnosisReport {
                 Diagnosis.Plot p = l.plot();
                 if (p != null && p.x().length > 0)
                     h.append(Svg.plot("Evidence: " + l.shape(), p.xLabel(), p.yLabel(),
-                            List.of(new Svg.Series("residual along it", p.x(), p.y(), "#1f77b4", false),
+                            List.of(new Svg.Series(p.yLabel().contains("partial residual") ? "partial residual" : "residual along it",
+                                            p.x(), p.y(), "#1f77b4", false),
                                     new Svg.Series("located structure", p.curveX(), p.curveY(), "#d62728", false)), false));
                 h.append("</div>\n");
             }

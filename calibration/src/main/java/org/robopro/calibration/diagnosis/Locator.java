@@ -56,6 +56,7 @@ final class Locator {
         int k;
         double[][] x; // per end and pose, the variable (plots)
         double[][] endS; // with two ends: each end's own columns (m x k, unprojected), else null
+        Angle angle;     // a drive's error as a function of its joint angle: the regressor (ANGLE_PERIODIC, ANGLE_SMOOTH)
         String xLabel;
     }
 
@@ -99,11 +100,9 @@ final class Locator {
             final int jj = j;
             for (int h = 1; h <= hMax; h++) {
                 final int hh = h;
-                Probe p = drive(t, j, 2, (e, i, g) -> {
-                    double q = t.endRows.get(e).get(i).q(jj);
-                    g[0] = Math.sin(hh * q);
-                    g[1] = Math.cos(hh * q);
-                });
+                Angle f = (q, g) -> { g[0] = Math.sin(hh * q); g[1] = Math.cos(hh * q); };
+                Probe p = drive(t, j, 2, (e, i, g) -> f.at(t.endRows.get(e).get(i).q(jj), g));
+                p.angle = f;
                 p.var = Var.ANGLE_PERIODIC;
                 p.joint = j;
                 p.harmonic = h;
@@ -116,7 +115,9 @@ final class Locator {
             final double l0 = lo, h0 = hi;
             for (int nb : Effect.SMOOTH_RESOLUTIONS) {
                 if (nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
-                Probe p = drive(t, j, nb, (e, i, g) -> Effect.bspline(t.endRows.get(e).get(i).q(jj), l0, h0, g));
+                Angle f = (q, g) -> Effect.bspline(q, l0, h0, g);
+                Probe p = drive(t, j, nb, (e, i, g) -> f.at(t.endRows.get(e).get(i).q(jj), g));
+                p.angle = f;
                 p.var = Var.ANGLE_SMOOTH;
                 p.joint = j;
                 p.basis = nb;
@@ -132,8 +133,9 @@ final class Locator {
             }
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
-                Effect pair = Effect.pair(j, k);
-                Probe p = drive(t, j, 4, (e, i, g) -> pair.regressor(t.endRows.get(e).get(i).q(), null, g));
+                final int kk = k;
+                // the products only: the linear terms are scale and coupling shapes, which the families' own tests hold
+                Probe p = drive(t, j, 4, (e, i, g) -> Effect.pairProducts(t.endRows.get(e).get(i).q(), jj, kk, g));
                 p.var = Var.JOINT_PAIR;
                 p.joint = j;
                 p.other = k;
@@ -233,6 +235,9 @@ final class Locator {
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
         return out;
     }
+
+    /** A drive's error as a function of its own joint's angle (rad): the regressor's k values. */
+    interface Angle { void at(double q, double[] g); }
 
     /** A regressor: its k values at one end (0, or 0 and 1 for a pair of poses) of one residual row's pose. */
     private interface Reg { void at(int end, int pose, double[] g); }
@@ -460,6 +465,7 @@ final class Locator {
      * the length at both ends; its curve is the fitted change of that length).
      */
     static Diagnosis.Plot plot(Diagnoser.Tester t, Found f) {
+        if (f.probe.endS != null && f.probe.angle != null) return pairPartialResidual(t, f);
         int q = f.c.df1, n = t.measurements(), d = t.dim;
         double unit = t.fit.problem.sigmaPos() * 1e3;
         List<double[]> pts = new ArrayList<>();
@@ -494,5 +500,53 @@ final class Locator {
             if (Math.abs(v) > bestAbs) { bestAbs = Math.abs(v); best = e; }
         }
         return best;
+    }
+
+    /**
+     * Evidence plot of a joint-angle structure located in distances between pairs of poses: the
+     * joint's error itself. Each length is put at the pose of the pair that carries more of the
+     * fitted change (e), and the error there is estimated as the fitted function plus what the
+     * structure leaves of the length's residual, resolved through that pose's sensitivity d_e to
+     * the joint: y = f̂(q_e) − (r⊥ − c) / d_e (r = predicted − measured, c the structure's fitted part
+     * of it). The other pose's share of the error is noise to this estimate. Lengths whose d_e is
+     * below 0.3 x the median carry little about the joint and are left out. Millidegrees against the
+     * joint angle, with the fitted f̂ as the curve: the same reading as an effect's partial residual.
+     */
+    static Diagnosis.Plot pairPartialResidual(Diagnoser.Tester t, Found f) {
+        int q = f.c.df1, k = f.probe.k, rows = t.m, j = f.probe.joint;
+        double unit = Math.toDegrees(1) * 1e3;
+        double[] g = new double[k], d = new double[rows];
+        int[] end = new int[rows];
+        for (int i = 0; i < rows; i++) {
+            end[i] = end(f, i);
+            d[i] = Math.abs(t.endDQ[end[i]][i * t.dof + j]);
+        }
+        double[] sorted = d.clone();
+        Arrays.sort(sorted);
+        double cut = 0.3 * sorted[rows / 2];
+        List<double[]> pts = new ArrayList<>();
+        for (int i = 0; i < rows; i++) {
+            if (!(d[i] > cut)) continue;
+            double c = 0;
+            for (int b = 0; b < q; b++) c += f.c.basis[i * q + b] * f.c.coef[b];
+            double qe = t.endRows.get(end[i]).get(i).q(j);
+            f.probe.angle.at(qe, g);
+            double fit = 0;
+            for (int b = 0; b < k; b++) fit += g[b] * f.c.estimate[b];
+            double y = fit - (t.rPerp[i] - c) / t.endDQ[end[i]][i * t.dof + j];
+            pts.add(new double[] {Math.toDegrees(qe), y * unit});
+        }
+        double[] x = new double[pts.size()], y = new double[pts.size()];
+        for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
+        int nc = 400;
+        double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
+        double[] cx = new double[nc], cy = new double[nc];
+        for (int i = 0; i < nc; i++) {
+            cx[i] = lo + (hi - lo) * i / (nc - 1);
+            f.probe.angle.at(Math.toRadians(cx[i]), g);
+            for (int b = 0; b < k; b++) cy[i] += g[b] * f.c.estimate[b] * unit;
+        }
+        return new Diagnosis.Plot(f.probe.xLabel + ", at the pose of the pair that carries more of the change",
+                "joint " + (j + 1) + " error at that pose, partial residual (mdeg)", x, y, cx, cy, null);
     }
 }

@@ -22,8 +22,9 @@ import org.robopro.world.Scenario;
 class CrossValidatedClaimsTest {
     private final RobotDescription irb2000 = RobotLibrary.shipped("irb2000");
 
+    /** The world trial of a seed, its campaign drawn from the plan seeded with that seed (the campaigns these claims were checked on). */
     private static WorldCampaigns.Sim world(String scenario, long seed) {
-        return WorldCampaigns.of(Scenario.named(scenario).trial(seed, p -> p));
+        return WorldCampaigns.of(Scenario.named(scenario).trial(seed, p -> p.withSeed(seed)));
     }
 
     private static List<String> families(Diagnosis d) {

@@ -35,7 +35,8 @@ class DirectionsWorldTest {
     void inferredDirections_equalTheWorldsTrueDirections_onEveryPoseAndDrive(String robot, Campaign.Order order, int moved, long seed) {
         Scenario s = Scenario.ofFamily("null").stream().filter(x -> x.robot().equals(robot)).findFirst().orElseThrow();
         // moved > 0: a joint-by-joint campaign, the still joints showing only the controller's read-back jitter
-        UnaryOperator<Campaign.Plan> plan = p -> p.withDirColumns(false).withOrder(order).withMovedJoints(moved);
+        // the campaign drawn from the plan seeded with the case's seed
+        UnaryOperator<Campaign.Plan> plan = p -> p.withSeed(seed).withDirColumns(false).withOrder(order).withMovedJoints(moved);
         Campaign.Result c = s.trial(seed, plan).campaign();
         RobotDescription r = RobotLibrary.shipped(robot);
         MeasurementSet all = MeasurementReader.parse("world.csv", c.text(), r.joints().stream().map(JointDescription::type).toList());
