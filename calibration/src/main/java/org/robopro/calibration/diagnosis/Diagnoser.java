@@ -1428,6 +1428,9 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         for (Effect a : family) {
             if (a == e || selected.contains(a)) continue;
+            // one lost motion per joint: its other form is the alias, not a second play beside a selected one
+            if (a.kind() == Effect.Kind.BACKLASH && selected.stream().anyMatch(x -> x != e && x.kind() == Effect.Kind.BACKLASH && x.joint() == a.joint()))
+                continue;
             boolean thermalE = e.kind() == Effect.Kind.THERMAL || e.kind() == Effect.Kind.THERMAL_LINK || e.kind() == Effect.Kind.DRIFT;
             boolean thermalA = a.kind() == Effect.Kind.THERMAL || a.kind() == Effect.Kind.THERMAL_LINK || a.kind() == Effect.Kind.DRIFT;
             if (thermalE && thermalA) out.add(a);
