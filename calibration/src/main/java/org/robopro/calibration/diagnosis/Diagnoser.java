@@ -455,9 +455,8 @@ public final class Diagnoser {
                     + "displacement the same at both poses (a drift of the point, an error of joint 1 alone) is not seen at all; an "
                     + "effect the geometry can absorb is reported as not identifiable. The effects are tested at both poses of "
                     + "every pair, each with its own joints and directions, and so is the locate scan's search for structure "
-                    + "outside the named families (a located structure's plot puts each length at the pose that carries more of "
-                    + "its change); the effects' partial-residual plots, which resolve one pose per row, are not drawn. Measure "
-                    + "positions (x, y, z) to see the direction of an error");
+                    + "outside the named families; the evidence plots put each length at the pose of its pair that carries more "
+                    + "of the change. Measure positions (x, y, z) to see the direction of an error");
         else if (geo.distance())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
@@ -778,8 +777,8 @@ public final class Diagnoser {
             double[] s = Arrays.copyOfRange(sig, off, off + e.size());
             Step st = steps.get(k);
             Diagnosis.Evidence ev = st.candidate.evidence();
-            // (the evidence plots resolve one pose per row: none for pairs of poses)
-            Diagnosis.Plot plot = fit.problem.pairs() ? null : Plots.partialResidual(plotTester, e, v);
+            // (for pairs of poses, the partial residuals of joint and strain effects; none for an effect on the measured point)
+            Diagnosis.Plot plot = fit.problem.pairs() && e.target() == Effect.Target.POSITION ? null : Plots.partialResidual(plotTester, e, v);
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
                             k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource,
@@ -1567,6 +1566,9 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         for (Effect a : family) {
             if (a == e || selected.contains(a)) continue;
+            // one lost motion per joint: its other form is the alias, not a second play beside a selected one
+            if (a.kind() == Effect.Kind.BACKLASH && selected.stream().anyMatch(x -> x != e && x.kind() == Effect.Kind.BACKLASH && x.joint() == a.joint()))
+                continue;
             boolean thermalE = e.kind() == Effect.Kind.THERMAL || e.kind() == Effect.Kind.THERMAL_LINK || e.kind() == Effect.Kind.DRIFT;
             boolean thermalA = a.kind() == Effect.Kind.THERMAL || a.kind() == Effect.Kind.THERMAL_LINK || a.kind() == Effect.Kind.DRIFT;
             if (thermalE && thermalA) out.add(a);
@@ -1966,8 +1968,12 @@ public final class Diagnoser {
             pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
             int nFull = pp.fullSize();
             double[] jf = new double[m * nFull];
-            double[] rr = new double[m];
-            pp.evaluateFull(full, rr, jf);
+            // Pairs of poses: the Jacobian split by end (their sum is the whole Jacobian), one evaluation for both.
+            double[][] jEnd = fit.problem.pairs() ? new double[][] {new double[m * nFull], new double[m * nFull]} : null;
+            if (jEnd != null) {
+                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
+                for (int i = 0; i < jf.length; i++) jf[i] = jEnd[0][i] + jEnd[1][i];
+            } else pp.evaluateFull(full, new double[m], jf);
             int off = nFull - np;
             dQ = new double[m * dof];
             dStrain = new double[m];
@@ -1981,8 +1987,6 @@ public final class Diagnoser {
             double[][][] ep = null;
             if (fit.problem.pairs()) {
                 ends = 2;
-                double[][] jEnd = {new double[m * nFull], new double[m * nFull]};
-                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
                 endDQ = new double[2][m * dof];
                 endDStrain = new double[2][m];
                 endDTrans = new double[2][m * 3];
@@ -2187,54 +2191,41 @@ public final class Diagnoser {
             return total;
         }
 
-        /** The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose conditions. */
+        /**
+         * The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose
+         * conditions. For distances between pairs of poses, the sum over the pair's two poses of each
+         * one's sensitivity times the effect's regressor there (its own joints, directions and
+         * measured point: the same chain as the identification's measurement function); only with the
+         * rows' own conditions (zero otherwise).
+         */
         double[] signature(Effect e, List<PoseConditions> conds) {
-            if (fit.problem.pairs()) return conds == w.conditions ? chainSignature(e) : new double[m * e.size()];
             int k = e.size();
             double[] s = new double[m * k];
+            if (ends > 1 && conds != w.conditions) return s;
             int poses = m / rpp;
             Effect.Target t = e.target();
             double[] g = new double[t == Effect.Target.POSITION ? 3 * k : k];
-            for (int i = 0; i < poses; i++) {
-                if (t != Effect.Target.POSITION) e.regressor(w.rows.get(i), conds.get(i), g);
-                for (int a = 0; a < rpp; a++) {
-                    int row = i * rpp + a;
-                    // An effect on the measured point moves each point by its own regressor (its place in the base frame).
-                    if (t == Effect.Target.POSITION && (a == 0 || pointOfRow(a) != pointOfRow(a - 1)))
-                        e.positionRegressor(w.rows.get(i).q(), conds.get(i), pointsBase[i][pointOfRow(a)], g);
-                    for (int col = 0; col < k; col++) {
-                        double v;
-                        if (t == Effect.Target.POSITION)
-                            v = dTrans[row * 3] * g[col] + dTrans[row * 3 + 1] * g[k + col] + dTrans[row * 3 + 2] * g[2 * k + col];
-                        else v = (t == Effect.Target.STRAIN ? dStrain[row] : dQ[row * dof + e.joint()]) * g[col];
-                        s[row * k + col] = Double.isFinite(v) ? v : 0;
+            for (int end = 0; end < ends; end++) {
+                List<Measurement> er = endRows.get(end);
+                List<PoseConditions> ec = ends > 1 ? endConditions.get(end) : conds;
+                double[] dq = endDQ[end], ds = endDStrain[end], dt = endDTrans[end];
+                for (int i = 0; i < poses; i++) {
+                    if (t != Effect.Target.POSITION) e.regressor(er.get(i), ec.get(i), g);
+                    for (int a = 0; a < rpp; a++) {
+                        int row = i * rpp + a;
+                        // An effect on the measured point moves each point by its own regressor (its place in the base frame).
+                        if (t == Effect.Target.POSITION && (a == 0 || pointOfRow(a) != pointOfRow(a - 1)))
+                            e.positionRegressor(er.get(i).q(), ec.get(i), ends > 1 ? endPoint[end][i] : pointsBase[i][pointOfRow(a)], g);
+                        for (int col = 0; col < k; col++) {
+                            double v;
+                            if (t == Effect.Target.POSITION)
+                                v = dt[row * 3] * g[col] + dt[row * 3 + 1] * g[k + col] + dt[row * 3 + 2] * g[2 * k + col];
+                            else v = (t == Effect.Target.STRAIN ? ds[row] : dq[row * dof + e.joint()]) * g[col];
+                            if (Double.isFinite(v)) s[row * k + col] += v;
+                        }
                     }
                 }
             }
-            return s;
-        }
-
-        /**
-         * The signature through the identification's measurement function (the effect's block added
-         * to the fit's at v = 0): for distances between pairs of poses, where the effect acts at both
-         * poses under each one's joints and directions. The rows' own conditions only.
-         */
-        double[] chainSignature(Effect e) {
-            int k = e.size();
-            List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
-            bl.add(e.block(w.model));
-            double[] full = Arrays.copyOf(fit.full, fit.full.length + k);
-            IdentificationProblem p = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
-            p.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
-            int nFull = p.fullSize(), off = nFull - k;
-            double[] jf = new double[m * nFull];
-            p.evaluateFull(full, new double[m], jf);
-            double[] s = new double[m * k];
-            for (int i = 0; i < m; i++)
-                for (int c = 0; c < k; c++) {
-                    double v = jf[i * nFull + off + c];
-                    s[i * k + c] = Double.isFinite(v) ? v : 0;
-                }
             return s;
         }
 
