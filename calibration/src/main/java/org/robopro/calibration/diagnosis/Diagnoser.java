@@ -451,9 +451,8 @@ public final class Diagnoser {
                     + "displacement the same at both poses (a drift of the point, an error of joint 1 alone) is not seen at all; an "
                     + "effect the geometry can absorb is reported as not identifiable. The effects are tested at both poses of "
                     + "every pair, each with its own joints and directions, and so is the locate scan's search for structure "
-                    + "outside the named families (a located structure's plot puts each length at the pose that carries more of "
-                    + "its change); the effects' partial-residual plots, which resolve one pose per row, are not drawn. Measure "
-                    + "positions (x, y, z) to see the direction of an error");
+                    + "outside the named families; the evidence plots put each length at the pose of its pair that carries more "
+                    + "of the change. Measure positions (x, y, z) to see the direction of an error");
         else if (geo.distance())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
@@ -770,8 +769,8 @@ public final class Diagnoser {
             double[] s = Arrays.copyOfRange(sig, off, off + e.size());
             Step st = steps.get(k);
             Diagnosis.Evidence ev = st.candidate.evidence();
-            // (the evidence plots resolve one pose per row: none for pairs of poses)
-            Diagnosis.Plot plot = fit.problem.pairs() ? null : Plots.partialResidual(plotTester, e, v);
+            // (for pairs of poses, the partial residuals of joint and strain effects; none for an effect on the measured point)
+            Diagnosis.Plot plot = fit.problem.pairs() && e.target() == Effect.Target.POSITION ? null : Plots.partialResidual(plotTester, e, v);
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
                             k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource,

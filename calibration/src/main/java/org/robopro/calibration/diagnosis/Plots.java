@@ -20,11 +20,22 @@ final class Plots {
     static Diagnosis.Plot partialResidual(Diagnoser.Tester t, Effect e, double[] v) {
         if (e.target() == Effect.Target.POSITION) return alongDisplacement(t, e, v);
         int rpp = t.rpp, poses = t.m / rpp, dof = t.dof;
+        // A distance between two poses is put at the pose that carries more of the effect's change
+        // of it (its own sensitivity times the effect's value there); the other pose's share is noise.
+        int[] end = new int[poses];
+        for (int i = 0; t.ends > 1 && i < poses; i++) {
+            double best = -1;
+            for (int k = 0; k < t.ends; k++) {
+                double d = e.isStrain() ? t.endDStrain[k][i] : t.endDQ[k][i * dof + e.joint()];
+                double c = Math.abs(d * e.valueAt(v, t.endRows.get(k).get(i), t.endConditions.get(k).get(i)));
+                if (c > best) { best = c; end[i] = k; }
+            }
+        }
         double[] dn = new double[poses];
         for (int i = 0; i < poses; i++) {
             double s = 0;
             for (int a = 0; a < t.posRows; a++) {
-                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : t.endDQ[end[i]][(i * rpp + a) * dof + e.joint()];
                 s += d * d;
             }
             dn[i] = s;
@@ -36,11 +47,11 @@ final class Plots {
         List<double[]> pts = new ArrayList<>();
         for (int i = 0; i < poses; i++) {
             if (!(dn[i] > cut) || dn[i] == 0) continue;
-            Measurement row = t.w.rows.get(i);
-            PoseConditions c = t.w.conditions.get(i);
+            Measurement row = t.endRows.get(end[i]).get(i);
+            PoseConditions c = t.endConditions.get(end[i]).get(i);
             double proj = 0;
             for (int a = 0; a < t.posRows; a++) {
-                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : t.endDQ[end[i]][(i * rpp + a) * dof + e.joint()];
                 proj += d * t.fit.r[i * rpp + a];
             }
             double y = e.valueAt(v, row, c) - proj / dn[i]; // residual is predicted - measured
@@ -60,7 +71,7 @@ final class Plots {
         if (nc > 0 && Double.isNaN(cy[0])) { cx = new double[0]; cy = new double[0]; } // no curve in this variable
         double[] gram = null;
         if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, Math.max(8, e.harmonics()[e.harmonics().length - 1] + 2));
-        return new Diagnosis.Plot(xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
+        return new Diagnosis.Plot(t.ends > 1 ? xLabel(e) + ", at the pose of the pair that carries more of the change" : xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
                 : "partial residual of joint " + (e.joint() + 1) + " angle (mdeg)", x, y, cx, cy, gram);
     }
 

@@ -91,6 +91,31 @@ class PairsLocateTest {
         assertTrue(d.finalValidateRmsM() < 1.2 * d.noiseFloorM(), d.finalValidateRmsM() + " vs floor " + d.noiseFloorM());
     }
 
+    /**
+     * A named effect's evidence on pairs: the partial residual of joint 2 at the pose of each pair
+     * that carries more of the change, against that pose's approach direction. The world's lost
+     * motion lags: the two columns of points sit the world's play apart, the +1 side below.
+     */
+    @Test
+    void lostMotionOnPairs_itsEvidencePlotShowsTheWorldsPlayBetweenTheTwoDirections() {
+        Trial t = diagnose("lost motion j2, directions recorded", 5, 250);
+        Diagnosis d = t.diagnosis();
+        assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), d.notes().toString());
+        double truth = t.world().world().errors().stream().filter(x -> x instanceof JointError.LostMotion)
+                .mapToDouble(x -> ((JointError.LostMotion) x).width()).findFirst().orElseThrow();
+        Diagnosis.Plot p = d.effects().get(0).plot();
+        assertTrue(p != null && p.x().length > 150, "plotted " + (p == null ? "nothing" : p.x().length + " lengths"));
+        assertTrue(p.xLabel().contains("pair"), p.xLabel());
+        double up = 0, down = 0;
+        int nUp = 0, nDown = 0;
+        for (int i = 0; i < p.x().length; i++) {
+            if (p.x()[i] > 0.5) { up += p.y()[i]; nUp++; } else if (p.x()[i] < -0.5) { down += p.y()[i]; nDown++; }
+        }
+        assertTrue(nUp > 30 && nDown > 30, nUp + " / " + nDown);
+        double gapMdeg = down / nDown - up / nUp, truthMdeg = Math.toDegrees(truth) * 1e3;
+        assertEquals(truthMdeg, gapMdeg, 0.15 * truthMdeg, "play between the two directions, mdeg");
+    }
+
     @Test
     void nothingConcealed_locatesNothing() {
         for (long seed : new long[] {3, 8}) {
