@@ -24,7 +24,12 @@ import org.robopro.world.Scenario;
 class PairsLocateTest {
     private static final RobotDescription IRB2000 = RobotLibrary.shipped("irb2000");
 
-    record Trial(Scenario.Trial world, Diagnosis diagnosis) { }
+    record Trial(Scenario.Trial world, Diagnosis diagnosis) {
+        /** The world's concealed joint error of this type. */
+        <T extends JointError> T truth(Class<T> type) {
+            return world.world().errors().stream().filter(type::isInstance).map(type::cast).findFirst().orElseThrow();
+        }
+    }
 
     static Trial diagnose(String scenario, long seed, int poses) {
         Scenario.Trial t = Scenario.named(scenario).trial(seed, p -> p.withPoses(poses, 100));
@@ -41,8 +46,7 @@ class PairsLocateTest {
     void bumpInJoint3_isLocatedOnJoint3_notNamed_andItsPlotPeaksWhereTheBumpIs() {
         Trial t = diagnose("outside: bump in the angle of j3", 5, 250);
         Diagnosis d = t.diagnosis();
-        JointError.Bump bump = t.world().world().errors().stream().filter(e -> e instanceof JointError.Bump)
-                .map(e -> (JointError.Bump) e).findFirst().orElseThrow();
+        JointError.Bump bump = t.truth(JointError.Bump.class);
         assertEquals(List.of(), families(d), "named a family for a bump outside every family; notes " + d.notes());
         Diagnosis.Located l = d.located().stream().filter(x -> x.stage().equals("geometric")).findFirst().orElseThrow(
                 () -> new AssertionError("nothing located: " + d.notes()));
@@ -75,8 +79,7 @@ class PairsLocateTest {
     void cycloidalJoint1_stageHarmonicsLocatedAtTheWorldsHarmonics_andNamed() {
         Trial t = diagnose("transmission error j1, cycloidal k up to 40", 5, 250);
         Diagnosis d = t.diagnosis();
-        JointError.Harmonics truth = t.world().world().errors().stream().filter(e -> e instanceof JointError.Harmonics)
-                .map(e -> (JointError.Harmonics) e).findFirst().orElseThrow();
+        JointError.Harmonics truth = t.truth(JointError.Harmonics.class);
         Set<Integer> stages = new TreeSet<>();
         for (int k : truth.k()) if (k > 3) stages.add(k);
         Set<Integer> located = new TreeSet<>();
@@ -101,8 +104,7 @@ class PairsLocateTest {
         Trial t = diagnose("lost motion j2, directions recorded", 5, 250);
         Diagnosis d = t.diagnosis();
         assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), d.notes().toString());
-        double truth = t.world().world().errors().stream().filter(x -> x instanceof JointError.LostMotion)
-                .mapToDouble(x -> ((JointError.LostMotion) x).width()).findFirst().orElseThrow();
+        double truth = t.truth(JointError.LostMotion.class).width();
         Diagnosis.Plot p = d.effects().get(0).plot();
         assertTrue(p != null && p.x().length > 150, "plotted " + (p == null ? "nothing" : p.x().length + " lengths"));
         assertTrue(p.xLabel().contains("pair"), p.xLabel());
