@@ -111,17 +111,22 @@ final class Words {
         return "[" + String.join(", ", out) + "]";
     }
 
-    /** RMS of a smooth error's curve over its range, rad. */
+    /**
+     * RMS of a smooth error's curve over its range about its mean, rad: the angle-dependent part.
+     * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
+     * the spline's constant is only nearly the zero's and can come out large and uncertain).
+     */
     static double rmsSmooth(Effect e, double[] v) {
-        double s = 0;
         int n = 200;
-        double[] g = new double[e.basisCount()];
+        double[] g = new double[e.basisCount()], y = new double[n];
+        double mean = 0;
         for (int i = 0; i < n; i++) {
             Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
-            double y = 0;
-            for (int k = 0; k < g.length; k++) y += g[k] * v[k];
-            s += y * y;
+            for (int k = 0; k < g.length; k++) y[i] += g[k] * v[k];
+            mean += y[i] / n;
         }
+        double s = 0;
+        for (double yi : y) s += (yi - mean) * (yi - mean);
         return Math.sqrt(s / n);
     }
 

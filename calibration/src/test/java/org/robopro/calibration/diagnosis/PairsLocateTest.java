@@ -118,6 +118,25 @@ class PairsLocateTest {
         assertEquals(truthMdeg, gapMdeg, 0.15 * truthMdeg, "play between the two directions, mdeg");
     }
 
+    /**
+     * A smooth fallback's size (its plausibility and its words) is its angle-dependent part: a
+     * constant is the joint's zero, which the geometry holds. On lengths between pairs of poses the
+     * spline's constant is only nearly the zero's, came out at 0.24° beside a 0.01° error and made
+     * the fallback "implausible" (a cycloidal joint 3 then left 5 x σ unmodelled).
+     */
+    @Test
+    void smoothErrorSize_isItsAngleDependentPart() {
+        Effect e = Effect.smooth(2, -0.9, 0.9, 7);
+        double[] constant = new double[7], bump = new double[7];
+        Arrays.fill(constant, Math.toRadians(0.25));
+        bump[3] = Math.toRadians(0.01);
+        assertEquals(0, Words.rmsSmooth(e, constant), 1e-12);
+        double[] both = new double[7];
+        for (int i = 0; i < 7; i++) both[i] = constant[i] + bump[i];
+        assertEquals(Words.rmsSmooth(e, bump), Words.rmsSmooth(e, both), 1e-12);
+        assertTrue(Words.rmsSmooth(e, bump) > Math.toRadians(0.001), "a bump has a size: " + Words.rmsSmooth(e, bump));
+    }
+
     @Test
     void nothingConcealed_locatesNothing() {
         for (long seed : new long[] {3, 8}) {
