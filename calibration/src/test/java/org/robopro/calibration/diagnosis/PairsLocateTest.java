@@ -73,6 +73,9 @@ class PairsLocateTest {
         assertEquals(Math.abs(Math.toDegrees(bump.amplitude()) * 1e3), sign * p.curveY()[peak] - lowest,
                 0.25 * Math.abs(Math.toDegrees(bump.amplitude()) * 1e3), "bump height, mdeg");
         assertTrue(d.finalValidateRmsM() < 0.3 * d.geometricValidateRmsM(), d.finalValidateRmsM() + " vs " + d.geometricValidateRmsM());
+        // the report draws it, titled by its variable (the long shape is in the words above it)
+        String html = DiagnosisReport.html(d, new DiagnosisReport.Context("bar.csv", "bar.csv", "test"));
+        assertTrue(html.contains("Evidence: joint 3 angle") && html.contains("partial residual"), "report's located plot");
     }
 
     @Test
