@@ -87,7 +87,8 @@ final class Plots {
                 case TEMPERATURE -> "temperature (°C)";
                 case PAYLOAD_REACH -> "reach of the measured point (m), times the payload";
             };
-            case ZERO_STEP -> "time since start (s)";
+            case ZERO_STEP, TARGET_STEP -> "time since start (s)";
+            case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
@@ -105,7 +106,8 @@ final class Plots {
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
-            case ZERO_STEP -> c.timeS();
+            case ZERO_STEP, TARGET_STEP -> c.timeS();
+            case ANGLE_STEP -> Math.toDegrees(row.q(e.joint()));
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
@@ -134,6 +136,8 @@ final class Plots {
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
+            case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() ? v[0] : 0;
+            case TARGET_STEP -> Double.NaN;
             case ZERO_DRIFT -> {
                 double[] g = new double[e.basisCount()];
                 Effect.bspline(x, e.rangeLo(), e.rangeHi(), g);

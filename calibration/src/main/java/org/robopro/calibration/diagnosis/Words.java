@@ -16,7 +16,12 @@ final class Words {
                           double valBefore, double valAfter, Directions.Source dirs, double sizeM) {
         String at = Double.isFinite(sizeM) ? String.format(Locale.ROOT, ", %.4f mm at the measured point (RMS over the poses)", sizeM * 1e3) : "";
         String what = switch (e.kind()) {
-            case COMPLIANCE -> e.perMass()
+            case COMPLIANCE -> e.gravity().massesUnknown()
+                    ? String.format(Locale.ROOT, "Joint %d gives way under gravity: the payload steps give its compliance %.3g ± %.2g "
+                    + "rad/(N·m), a stiffness of %.3g N·m/rad. The robot file has no mass model, so the arm's own weight was "
+                    + "estimated with it (unknown masses and centres of links 1-3, coefficients %s).", e.joint() + 1,
+                    v[e.gravity().payloadIndex()], s[e.gravity().payloadIndex()], 1 / v[e.gravity().payloadIndex()], fmtList(v))
+                    : e.perMass()
                     ? String.format(Locale.ROOT, "Joint %d gives way under gravity, and the robot file's masses do not match: with "
                     + "each mass's torque on drive %d given its own coefficient (the mass model re-estimated from the data) the "
                     + "deflection is explained; coefficients %s rad/(N·m) per N·m of the file's torque (%s).", e.joint() + 1,
@@ -57,6 +62,16 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
+            case ANGLE_STEP -> String.format(Locale.ROOT, "Joint %d's reading jumps by %.4f deg where the joint passes %.1f deg, "
+                    + "and none of the known effects explains it (an absolute encoder's code track or a bit misread over part of "
+                    + "the turn, a damaged scale); it is modelled as such so compensation can use it, but its cause is unknown: "
+                    + "move the joint slowly across that angle in both directions and compare with an independent measure.",
+                    e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(e.rangeLo()));
+            case TARGET_STEP -> String.format(Locale.ROOT, "The measured point moved on the flange by %.4f mm (%.4f, %.4f, %.4f mm "
+                    + "along the flange's axes) at about %.0f s into the campaign, and none of the known effects explains it (a "
+                    + "target knocked in its nest, a holder that slipped); the poses before it are modelled with the point where it "
+                    + "was then, but check the target's mounting and re-measure a few poses from before that time.",
+                    Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * 1e3, v[0] * 1e3, v[1] * 1e3, v[2] * 1e3, e.tauS());
             case ZERO_STEP -> String.format(Locale.ROOT, "Joint %d's zero jumped by %.4f deg at about %.0f s into the campaign "
                     + "and none of the known effects explains it (an encoder slip, a collision, a re-synchronisation); the poses "
                     + "before and after it do not belong to one robot: re-measure after checking the joint's zero.", e.joint() + 1,
@@ -128,17 +143,22 @@ final class Words {
         return "[" + String.join(", ", out) + "]";
     }
 
-    /** RMS of a smooth error's curve over its range, rad. */
+    /**
+     * RMS of a smooth error's curve over its range about its mean, rad: the angle-dependent part.
+     * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
+     * the spline's constant is only nearly the zero's and can come out large and uncertain).
+     */
     static double rmsSmooth(Effect e, double[] v) {
-        double s = 0;
         int n = 200;
-        double[] g = new double[e.basisCount()];
+        double[] g = new double[e.basisCount()], y = new double[n];
+        double mean = 0;
         for (int i = 0; i < n; i++) {
             Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
-            double y = 0;
-            for (int k = 0; k < g.length; k++) y += g[k] * v[k];
-            s += y * y;
+            for (int k = 0; k < g.length; k++) y[i] += g[k] * v[k];
+            mean += y[i] / n;
         }
+        double s = 0;
+        for (double yi : y) s += (yi - mean) * (yi - mean);
         return Math.sqrt(s / n);
     }
 
