@@ -207,7 +207,8 @@ public final class DiagnosisReport {
                 h.append("<div class=\"finding\"><p>").append(Html.esc(l.words())).append("</p>\n");
                 Diagnosis.Plot p = l.plot();
                 if (p != null && p.x().length > 0)
-                    h.append(Svg.plot("Evidence: " + l.shape(), p.xLabel(), p.yLabel(),
+                    // the shape in words is in the paragraph above; a long one would run off the figure's title line
+                    h.append(Svg.plot("Evidence: " + (l.shape().length() <= 60 ? l.shape() : l.variable()), p.xLabel(), p.yLabel(),
                             List.of(new Svg.Series(p.yLabel().contains("partial residual") ? "partial residual" : "residual along it",
                                             p.x(), p.y(), "#1f77b4", false),
                                     new Svg.Series("located structure", p.curveX(), p.curveY(), "#d62728", false)), false));

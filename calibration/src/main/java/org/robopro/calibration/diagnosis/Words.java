@@ -49,7 +49,8 @@ final class Words {
             case SMOOTH -> String.format(Locale.ROOT, "Joint %d has an angle-dependent error of %.4f deg (RMS over its range) that "
                     + "none of the known effects explains; it is modelled as a smooth curve of the joint angle (%d-function "
                     + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
-                    Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()));
+                    Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
+                    + shortRange(e);
             case PAIR -> String.format(Locale.ROOT, "Joint %d's error depends on joints %d and %d together (%.4f deg RMS over the "
                     + "poses, in products of their sines and cosines, beside terms linear in each angle and in their product) and none of the known effects explains it; it is modelled "
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
@@ -120,23 +121,44 @@ final class Words {
         return what + fit;
     }
 
+    /**
+     * On a joint sampled over less than three quarters of a turn, two harmonics closer than 360°/range cycles per turn
+     * cannot be told apart (the frequency resolution of a record of that length), and a few
+     * stage harmonics look like a place-bound shape: a smooth error found there may be a
+     * multi-stage or cycloidal reducer's transmission error that these poses cannot resolve.
+     */
+    static String shortRange(Effect e) {
+        double range = e.rangeHi() - e.rangeLo();
+        if (!(range < 1.5 * Math.PI)) return "";
+        return String.format(Locale.ROOT, " Over a range of %.0f deg, harmonics of the joint closer than %.1f cycles per turn "
+                + "cannot be told apart, so a multi-stage or cycloidal reducer's stage harmonics cannot be told from such a "
+                + "shape here: if joint %d has such a reducer, this may be its transmission error; measure the joint over as "
+                + "much of a turn as its limits allow, with at least 5 poses per cycle of the highest stage, to tell.",
+                Math.toDegrees(range), 2 * Math.PI / range, e.joint() + 1);
+    }
+
     static String fmtList(double[] v) {
         List<String> out = new ArrayList<>();
         for (double x : v) out.add(String.format(Locale.ROOT, "%.3g", x));
         return "[" + String.join(", ", out) + "]";
     }
 
-    /** RMS of a smooth error's curve over its range, rad. */
+    /**
+     * RMS of a smooth error's curve over its range about its mean, rad: the angle-dependent part.
+     * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
+     * the spline's constant is only nearly the zero's and can come out large and uncertain).
+     */
     static double rmsSmooth(Effect e, double[] v) {
-        double s = 0;
         int n = 200;
-        double[] g = new double[e.basisCount()];
+        double[] g = new double[e.basisCount()], y = new double[n];
+        double mean = 0;
         for (int i = 0; i < n; i++) {
             Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
-            double y = 0;
-            for (int k = 0; k < g.length; k++) y += g[k] * v[k];
-            s += y * y;
+            for (int k = 0; k < g.length; k++) y[i] += g[k] * v[k];
+            mean += y[i] / n;
         }
+        double s = 0;
+        for (double yi : y) s += (yi - mean) * (yi - mean);
         return Math.sqrt(s / n);
     }
 
