@@ -144,4 +144,22 @@ public sealed interface JointError {
     record DriveThermal(int joint, double perK, double refC) implements JointError {
         @Override public double delta(double[] q, Moment m) { return Double.isFinite(m.tempC()) ? perK * (m.tempC() - refC) : 0; }
     }
+
+    /**
+     * Outside every catalogue family: the error follows the product of two joints' angles,
+     * k q_a q_b (rad). Where one of them is the drive's own joint, its part linear in the other
+     * looks like a cross-coupling, but the coupling's size changes with the drive's own angle.
+     */
+    record AngleProduct(int joint, int a, int b, double k) implements JointError {
+        @Override public double delta(double[] q, Moment m) { return k * q[a] * q[b]; }
+    }
+
+    /**
+     * Outside every catalogue family: an absolute encoder whose reading jumps by {@code step} where
+     * the joint passes {@code at} (a code-track defect, a misread bit): the output is off by the
+     * step wherever q_joint is beyond that angle, whatever the time or the direction.
+     */
+    record AngleStep(int joint, double at, double step) implements JointError {
+        @Override public double delta(double[] q, Moment m) { return q[joint] > at ? step : 0; }
+    }
 }

@@ -660,6 +660,25 @@ public final class Diagnoser {
                     + " needed the smooth fallback as well, so it is not that family's alone");
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
+        // Likewise where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
+        // joints, and the fallback holds j's scale error and the coupling of j from k (its linear terms), so a claim
+        // of j's own angle (scale, harmonics) or of k's is not that family's alone; the fallback is then re-tested so
+        // that its terms, left to the family while it was there, are its own again.
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            Effect e = selected.get(k);
+            Effect pair = selected.stream().filter(x -> x.kind() == Effect.Kind.PAIR && x.joint() == e.joint()
+                    && (e.kind() == Effect.Kind.SCALE || e.kind() == Effect.Kind.PERIODIC
+                    || e.kind() == Effect.Kind.COUPLING && e.source() == x.source())).findFirst().orElse(null);
+            if (pair == null) continue;
+            selected.remove(k);
+            absorbedCols.remove(e);
+            steps.remove(k);
+            aliasNotes.add(e.label() + " is not claimed: joint " + (e.joint() + 1) + "'s error needed the two-joint fallback "
+                    + pair.label() + " as well, which holds this family's shape, so it is not that family's alone");
+            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+            fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
+            k = selected.size();
+        }
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
@@ -1410,6 +1429,9 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         for (Effect a : family) {
             if (a == e || selected.contains(a)) continue;
+            // one lost motion per joint: its other form is the alias, not a second play beside a selected one
+            if (a.kind() == Effect.Kind.BACKLASH && selected.stream().anyMatch(x -> x != e && x.kind() == Effect.Kind.BACKLASH && x.joint() == a.joint()))
+                continue;
             boolean thermalE = e.kind() == Effect.Kind.THERMAL || e.kind() == Effect.Kind.THERMAL_LINK || e.kind() == Effect.Kind.DRIFT;
             boolean thermalA = a.kind() == Effect.Kind.THERMAL || a.kind() == Effect.Kind.THERMAL_LINK || a.kind() == Effect.Kind.DRIFT;
             if (thermalE && thermalA) out.add(a);
@@ -1809,8 +1831,12 @@ public final class Diagnoser {
             pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
             int nFull = pp.fullSize();
             double[] jf = new double[m * nFull];
-            double[] rr = new double[m];
-            pp.evaluateFull(full, rr, jf);
+            // Pairs of poses: the Jacobian split by end (their sum is the whole Jacobian), one evaluation for both.
+            double[][] jEnd = fit.problem.pairs() ? new double[][] {new double[m * nFull], new double[m * nFull]} : null;
+            if (jEnd != null) {
+                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
+                for (int i = 0; i < jf.length; i++) jf[i] = jEnd[0][i] + jEnd[1][i];
+            } else pp.evaluateFull(full, new double[m], jf);
             int off = nFull - np;
             dQ = new double[m * dof];
             dStrain = new double[m];
@@ -1824,8 +1850,6 @@ public final class Diagnoser {
             double[][][] ep = null;
             if (fit.problem.pairs()) {
                 ends = 2;
-                double[][] jEnd = {new double[m * nFull], new double[m * nFull]};
-                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
                 endDQ = new double[2][m * dof];
                 endDStrain = new double[2][m];
                 endDTrans = new double[2][m * 3];
@@ -2030,54 +2054,41 @@ public final class Diagnoser {
             return total;
         }
 
-        /** The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose conditions. */
+        /**
+         * The signature S (m x k, row-major) of an effect: ∂r/∂v at v = 0, with the given per-pose
+         * conditions. For distances between pairs of poses, the sum over the pair's two poses of each
+         * one's sensitivity times the effect's regressor there (its own joints, directions and
+         * measured point: the same chain as the identification's measurement function); only with the
+         * rows' own conditions (zero otherwise).
+         */
         double[] signature(Effect e, List<PoseConditions> conds) {
-            if (fit.problem.pairs()) return conds == w.conditions ? chainSignature(e) : new double[m * e.size()];
             int k = e.size();
             double[] s = new double[m * k];
+            if (ends > 1 && conds != w.conditions) return s;
             int poses = m / rpp;
             Effect.Target t = e.target();
             double[] g = new double[t == Effect.Target.POSITION ? 3 * k : k];
-            for (int i = 0; i < poses; i++) {
-                if (t != Effect.Target.POSITION) e.regressor(w.rows.get(i), conds.get(i), g);
-                for (int a = 0; a < rpp; a++) {
-                    int row = i * rpp + a;
-                    // An effect on the measured point moves each point by its own regressor (its place in the base frame).
-                    if (t == Effect.Target.POSITION && (a == 0 || pointOfRow(a) != pointOfRow(a - 1)))
-                        e.positionRegressor(w.rows.get(i).q(), conds.get(i), pointsBase[i][pointOfRow(a)], g);
-                    for (int col = 0; col < k; col++) {
-                        double v;
-                        if (t == Effect.Target.POSITION)
-                            v = dTrans[row * 3] * g[col] + dTrans[row * 3 + 1] * g[k + col] + dTrans[row * 3 + 2] * g[2 * k + col];
-                        else v = (t == Effect.Target.STRAIN ? dStrain[row] : dQ[row * dof + e.joint()]) * g[col];
-                        s[row * k + col] = Double.isFinite(v) ? v : 0;
+            for (int end = 0; end < ends; end++) {
+                List<Measurement> er = endRows.get(end);
+                List<PoseConditions> ec = ends > 1 ? endConditions.get(end) : conds;
+                double[] dq = endDQ[end], ds = endDStrain[end], dt = endDTrans[end];
+                for (int i = 0; i < poses; i++) {
+                    if (t != Effect.Target.POSITION) e.regressor(er.get(i), ec.get(i), g);
+                    for (int a = 0; a < rpp; a++) {
+                        int row = i * rpp + a;
+                        // An effect on the measured point moves each point by its own regressor (its place in the base frame).
+                        if (t == Effect.Target.POSITION && (a == 0 || pointOfRow(a) != pointOfRow(a - 1)))
+                            e.positionRegressor(er.get(i).q(), ec.get(i), ends > 1 ? endPoint[end][i] : pointsBase[i][pointOfRow(a)], g);
+                        for (int col = 0; col < k; col++) {
+                            double v;
+                            if (t == Effect.Target.POSITION)
+                                v = dt[row * 3] * g[col] + dt[row * 3 + 1] * g[k + col] + dt[row * 3 + 2] * g[2 * k + col];
+                            else v = (t == Effect.Target.STRAIN ? ds[row] : dq[row * dof + e.joint()]) * g[col];
+                            if (Double.isFinite(v)) s[row * k + col] += v;
+                        }
                     }
                 }
             }
-            return s;
-        }
-
-        /**
-         * The signature through the identification's measurement function (the effect's block added
-         * to the fit's at v = 0): for distances between pairs of poses, where the effect acts at both
-         * poses under each one's joints and directions. The rows' own conditions only.
-         */
-        double[] chainSignature(Effect e) {
-            int k = e.size();
-            List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
-            bl.add(e.block(w.model));
-            double[] full = Arrays.copyOf(fit.full, fit.full.length + k);
-            IdentificationProblem p = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
-            p.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
-            int nFull = p.fullSize(), off = nFull - k;
-            double[] jf = new double[m * nFull];
-            p.evaluateFull(full, new double[m], jf);
-            double[] s = new double[m * k];
-            for (int i = 0; i < m; i++)
-                for (int c = 0; c < k; c++) {
-                    double v = jf[i * nFull + off + c];
-                    s[i * k + c] = Double.isFinite(v) ? v : 0;
-                }
             return s;
         }
 

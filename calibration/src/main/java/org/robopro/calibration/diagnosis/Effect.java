@@ -230,12 +230,27 @@ public final class Effect {
 
     /**
      * Error of drive {@code joint} that depends on its own angle and joint {@code other}'s together:
-     * Δq = v·(sin q_j sin q_k, sin q_j cos q_k, cos q_j sin q_k, cos q_j cos q_k), the first-order
-     * products, which no function of one joint alone holds.
+     * Δq = v·(sin q_j sin q_k, sin q_j cos q_k, cos q_j sin q_k, cos q_j cos q_k, q_j, q_k, q_j q_k):
+     * the first-order products of the sines and cosines, which no function of one joint alone
+     * holds, and the two angles' Taylor terms to the first interaction (linear in each, and their
+     * product), so that a scale error of j and a coupling of j from k are nested in it (a coupling
+     * must beat it on held-out error) and an interaction that is not periodic is held too.
      */
     public static Effect pair(int joint, int other) {
         if (joint == other) throw new IllegalArgumentException("a joint pair needs two joints");
-        return new Effect(Kind.PAIR, joint, other, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 4);
+        return new Effect(Kind.PAIR, joint, other, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, PAIR_COLUMNS);
+    }
+
+    /** Columns of the two-joint fallback: four products, then q_j, q_k and q_j q_k. */
+    static final int PAIR_COLUMNS = 7;
+
+    /** The four first-order products of joints j and k's sines and cosines (the two-joint locate probe; the fallback's first columns). */
+    static void pairProducts(double[] q, int j, int k, double[] g) {
+        double sj = Math.sin(q[j]), cj = Math.cos(q[j]), so = Math.sin(q[k]), co = Math.cos(q[k]);
+        g[0] = sj * so;
+        g[1] = sj * co;
+        g[2] = cj * so;
+        g[3] = cj * co;
     }
 
     /**
@@ -367,7 +382,7 @@ public final class Effect {
             case SCALE -> out.add("eps");
             case COUPLING -> out.add("kappa");
             case SMOOTH -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
-            case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); }
+            case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); out.add("lin_j"); out.add("lin_k"); out.add("lin_jk"); }
             case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case ZERO_STEP -> out.add("step");
@@ -486,11 +501,10 @@ public final class Effect {
             case COUPLING -> g[0] = q[source];
             case SMOOTH -> bspline(q[joint], lo, hi, g);
             case PAIR -> {
-                double sj = Math.sin(q[joint]), cj = Math.cos(q[joint]), so = Math.sin(q[source]), co = Math.cos(q[source]);
-                g[0] = sj * so;
-                g[1] = sj * co;
-                g[2] = cj * so;
-                g[3] = cj * co;
+                pairProducts(q, joint, source, g);
+                g[4] = q[joint];
+                g[5] = q[source];
+                g[6] = q[joint] * q[source];
             }
             // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
@@ -751,7 +765,10 @@ public final class Effect {
         };
         List<String> names = e.parameterNames();
         double[] v = new double[names.size()];
-        for (int i = 0; i < v.length; i++) v[i] = require(d, names.get(i), file);
+        for (int i = 0; i < v.length; i++)
+            // a two-joint error written before it had its Taylor terms has none
+            v[i] = kind == Kind.PAIR && names.get(i).startsWith("lin_") && !d.parameters().containsKey(names.get(i)) ? 0
+                    : require(d, names.get(i), file);
         return new Term(e, v);
     }
 

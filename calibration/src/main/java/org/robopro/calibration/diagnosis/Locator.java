@@ -133,8 +133,9 @@ final class Locator {
             }
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
-                Effect pair = Effect.pair(j, k);
-                Probe p = drive(t, j, 4, (e, i, g) -> pair.regressor(t.endRows.get(e).get(i).q(), null, g));
+                final int kk = k;
+                // the products only: the linear terms are scale and coupling shapes, which the families' own tests hold
+                Probe p = drive(t, j, 4, (e, i, g) -> Effect.pairProducts(t.endRows.get(e).get(i).q(), jj, kk, g));
                 p.var = Var.JOINT_PAIR;
                 p.joint = j;
                 p.other = k;

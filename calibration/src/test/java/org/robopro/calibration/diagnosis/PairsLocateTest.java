@@ -101,6 +101,52 @@ class PairsLocateTest {
         }
     }
 
+    /**
+     * The fast signature of an effect on pairs (each pose's sensitivity times the effect's
+     * regressor there, summed over the pair) against the identification's own measurement
+     * function with the effect's block added (its Jacobian columns at v = 0), at a fit that already
+     * carries an effect: the same numbers (effects on the measured point to 1e-3, see below).
+     */
+    @Test
+    void pairSignature_isTheIdentificationsMeasurementFunction() {
+        Scenario.Trial tr = Scenario.named("lost motion j2, directions recorded").trial(5, p -> p.withPoses(120, 40));
+        MultiPointDiagnosisTest.Data c = MultiPointDiagnosisTest.read("bar.csv", Readings.pairs(tr.world(), IRB2000, tr.campaign(), 5));
+        org.robopro.kinematics.KinematicModel model = org.robopro.kinematics.KinematicModel.build(IRB2000);
+        org.robopro.calibration.identification.CalibrationResult geo = org.robopro.calibration.identification.Calibrator.calibrate(
+                model, c.train(), c.validate(), org.robopro.calibration.identification.Calibrator.Options.defaults());
+        Diagnoser.Work w = new Diagnoser.Work(model, c.train().rows(), geo, c.validate(), Diagnoser.Options.defaults());
+        Diagnoser.Fit fit = w.fit(List.of(Effect.backlash(1)), new java.util.IdentityHashMap<>(), w.geoFull, null);
+        Diagnoser.Tester t = w.tester(fit);
+        GravityTorques gravity = new GravityTorques(model, IRB2000.massModel().orElseThrow());
+        for (Effect e : List.of(Effect.backlash(2), Effect.periodic(1, new int[] {1, 7, 26}), Effect.smooth(2, -0.9, 0.9, 13),
+                Effect.pair(1, 3), Effect.scale(4), Effect.coupling(2, 1), Effect.compliance(1, gravity), Effect.thermal(20),
+                Effect.thermalLinks(model, 20), Effect.pointSmooth(Effect.Along.REACH, 0.5, 2.0))) {
+            double[] fast = t.signature(e, w.conditions);
+            int k = e.size();
+            List<org.robopro.calibration.identification.EffectBlock> bl = new java.util.ArrayList<>(fit.problem.effects());
+            bl.add(e.block(model));
+            double[] full = Arrays.copyOf(fit.full, fit.full.length + k);
+            var p = new org.robopro.calibration.identification.IdentificationProblem(model, w.rows, w.sixD, w.instrument, bl, full);
+            p.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
+            int nFull = p.fullSize();
+            double[] jac = new double[t.m * nFull];
+            p.evaluateFull(full, new double[t.m], jac);
+            double scale = 0, diff = 0;
+            for (int i = 0; i < t.m; i++)
+                for (int col = 0; col < k; col++) {
+                    double oracle = jac[i * nFull + nFull - k + col];
+                    scale = Math.max(scale, Math.abs(oracle));
+                    diff = Math.max(diff, Math.abs(oracle - fast[i * k + col]));
+                }
+            assertTrue(scale > 0, e.label() + ": no signature");
+            // An effect on the measured point is taken at the point's place without the other effects'
+            // small motions (and link growth along the robot file's links), the identification at its
+            // exact place (millimetres over metres): the per-pose signature makes the same approximation.
+            double tol = e.target() == Effect.Target.POSITION ? 1e-3 : 1e-6;
+            assertTrue(diff <= tol * scale, e.label() + ": differs by " + diff + " of " + scale);
+        }
+    }
+
     static double correlation(double[] a, double[] b) {
         double ma = Arrays.stream(a).average().orElse(0), mb = Arrays.stream(b).average().orElse(0), sab = 0, saa = 0, sbb = 0;
         for (int i = 0; i < a.length; i++) {

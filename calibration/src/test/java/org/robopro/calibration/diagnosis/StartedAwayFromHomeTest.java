@@ -22,34 +22,45 @@ class StartedAwayFromHomeTest {
     private static final String AWAY = "lost motion j2, directions not recorded, started away from home";
     private final RobotDescription irb2000 = RobotLibrary.shipped("irb2000");
 
-    @Test
-    void firstPosesFlank_isTakenFromItsResidual_whenTheCampaignStartedElsewhere() {
-        // 20261124: pose 1 is a training pose (it was flagged as an outlier); 20261125: a validation pose (1.47 x the floor)
-        for (long seed : new long[] {20261124, 20261125}) {
+    /** Seeds of the scenario whose first pose's true flank on joint 2 differs from (or agrees with) a move from zero. */
+    private static List<Scenario.Trial> trials(boolean differs, int n) {
+        List<Scenario.Trial> out = new java.util.ArrayList<>();
+        for (long seed = 20261124; seed < 20261164 && out.size() < n; seed++) {
             Scenario.Trial t = Scenario.named(AWAY).trial(seed, p -> p);
             Campaign.Row first = t.campaign().rows().get(0);
-            assertTrue(first.q()[1] * first.dir()[1] < 0, "the world started elsewhere: a move from zero gives the other flank");
+            if ((first.q()[1] * first.dir()[1] < 0) == differs) out.add(t);
+        }
+        assertEquals(n, out.size(), "the world draws both kinds of start");
+        return out;
+    }
+
+    @Test
+    void firstPosesFlank_isTakenFromItsResidual_whenTheCampaignStartedElsewhere() {
+        // before: a training pose 1 on the other flank was flagged as an outlier; a validation pose 1 left up to 1.47 x the floor
+        for (Scenario.Trial t : trials(true, 3)) {
             WorldCampaigns.Sim c = WorldCampaigns.of(t);
             Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
-            assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), "seed " + seed);
-            assertEquals(List.of(), d.outliers(), "seed " + seed + ": no bad measurement in the campaign");
-            assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x floor");
-            assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("pose 1's direction on joint 2 taken from its residual: the "
-                    + "campaign seems to start away from the zero position")), "seed " + seed + ": " + d.notes());
+            String id = t.campaign().rows().get(0).id();
+            assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), "seed " + t.seed());
+            assertEquals(List.of(), d.outliers(), "seed " + t.seed() + ": no bad measurement in the campaign");
+            assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + t.seed() + ": " + d.finalValidateRmsM() / c.floorM() + " x floor");
+            assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("pose " + id + "'s direction on joint 2 taken from its residual: the "
+                    + "campaign seems to start away from the zero position")), "seed " + t.seed() + ": " + d.notes());
         }
     }
 
     @Test
     void firstPosesFlank_staysWhenItAgreesWithAMoveFromZero() {
-        for (String s : List.of(AWAY, "lost motion j2, directions not recorded")) {
-            long seed = s.equals(AWAY) ? 20261126 : 20261124;
-            Scenario.Trial t = Scenario.named(s).trial(seed, p -> p);
-            Campaign.Row first = t.campaign().rows().get(0);
-            assertTrue(first.q()[1] * first.dir()[1] > 0, "the world's first flank is that of a move from zero");
+        List<Scenario.Trial> ts = new java.util.ArrayList<>(trials(false, 1));
+        Scenario.Trial home = Scenario.named("lost motion j2, directions not recorded").trial(20261124, p -> p);
+        Campaign.Row first = home.campaign().rows().get(0);
+        assertTrue(first.q()[1] * first.dir()[1] > 0, "from the home position: the flank of a move from zero");
+        ts.add(home);
+        for (Scenario.Trial t : ts) {
             WorldCampaigns.Sim c = WorldCampaigns.of(t);
             Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
-            assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), s);
-            assertTrue(d.notes().stream().noneMatch(n -> n.contains("start away from the zero position")), s + ": " + d.notes());
+            assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), t.scenario().name());
+            assertTrue(d.notes().stream().noneMatch(n -> n.contains("start away from the zero position")), t.scenario().name() + ": " + d.notes());
         }
     }
 }

@@ -56,6 +56,17 @@ class WindUpLostMotionTest {
         }
     }
 
+    /** Without validation poses (300 poses, the K-fold path): the folds name it again and it reaches the floor on training. */
+    @Test
+    void windUp_withoutValidationPoses_isNamedByTheFolds() {
+        WorldCampaigns.Sim c = WorldCampaigns.of(Scenario.named(WIND_UP).trial(20261126, p -> p.withPoses(300, 0)));
+        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), null);
+        assertEquals(1, d.effects().size(), d.effects() + " notes " + d.notes());
+        assertTrue(d.effects().get(0).effect().buildsUp(), d.effects().get(0).effect().label());
+        assertTrue(d.finalTrainRmsM() <= 1.15 * c.floorM(), d.finalTrainRmsM() / c.floorM() + " x floor");
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("backlash j3: named by 5 of 5 folds")), d.notes().toString());
+    }
+
     /** A constant lost motion (world truth) must not be named as one that builds up. */
     @Test
     void constantLostMotion_staysConstant() {
