@@ -405,7 +405,7 @@ public final class Diagnoser {
     private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
                            List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
         KinematicModel model = KinematicModel.build(robot);
-        GravityTorques gravity = robot.massModel().map(mm -> new GravityTorques(model, mm)).orElse(null);
+        GravityTorques gravity = GravityTorques.of(model, robot);
         o.progress().update("geometric calibration", 0);
         Set<String> forced = forcedOutliers == null ? Set.of() : new HashSet<>(forcedOutliers);
         MeasurementSet train = forced.isEmpty() ? trainAll : trainAll.filter(m -> !forced.contains(m.poseId()));
@@ -442,18 +442,21 @@ public final class Diagnoser {
         if (manyOutliers)
             notes.add("more than 5 % of the poses lie beyond 5 robust sigmas of the geometric fit: too many to be bad "
                     + "measurements, so none was left out (the structure they show is located below)");
-        if (gravity == null)
-            notes.add("the robot file has no mass model, so joint compliance (deflection under gravity) was not tested; "
-                    + "add a mass_model to test it");
+        if (gravity.massesUnknown())
+            notes.add(Effect.complianceRemassed(0, gravity).testableOn(rows)
+                    ? "the robot file has no mass model: joint compliance (deflection under gravity) was tested through the "
+                    + "payload's torque, with the masses of the arm unknown (estimated with it)"
+                    : "the robot file has no mass model and the payload does not vary, so joint compliance (deflection under "
+                    + "gravity) was not tested: the arm's own weight alone cannot tell a compliance from unknown masses; measure "
+                    + "with two or three payloads, or add a mass_model to the robot file");
         if (geo.pairs())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pair shows an effect only through the change of the length between the point's two places, so a "
                     + "displacement the same at both poses (a drift of the point, an error of joint 1 alone) is not seen at all; an "
                     + "effect the geometry can absorb is reported as not identifiable. The effects are tested at both poses of "
                     + "every pair, each with its own joints and directions, and so is the locate scan's search for structure "
-                    + "outside the named families (a located structure's plot puts each length at the pose that carries more of "
-                    + "its change); the effects' partial-residual plots, which resolve one pose per row, are not drawn. Measure "
-                    + "positions (x, y, z) to see the direction of an error");
+                    + "outside the named families; the evidence plots put each length at the pose of its pair that carries more "
+                    + "of the change. Measure positions (x, y, z) to see the direction of an error");
         else if (geo.distance())
             notes.add(org.robopro.calibration.report.CalibrationReport.distanceWords(geo) + ". For the diagnosis this means: "
                     + "each pose shows an effect only through the change of its length to the anchor, so a displacement across the "
@@ -467,7 +470,7 @@ public final class Diagnoser {
                     + ", the sign of each joint's last move before the pose was measured; backlash was tested with them");
         if (!hasTemp && !hasTime) notes.add("no temp_c or time_s column: thermal expansion was not tested directly");
         else if (!hasTemp) notes.add("no temp_c column: thermal expansion tested with time_s as a warm-up proxy");
-        if (gravity != null && !hasPayload)
+        if (!gravity.massesUnknown() && !hasPayload)
             notes.add("no payload_kg column: compliance tested with the arm's own weight only (payload taken as 0 kg)");
 
         // Stepwise selection: forward by BIC among the candidates that pass, backward when one stops being needed.
@@ -485,7 +488,7 @@ public final class Diagnoser {
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
         Map<String, Effect> rivals = new LinkedHashMap<>();
-        for (Effect e : locatedFallbacks(foundGeo, rows)) rivals.putIfAbsent(e.label(), e);
+        for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
         int hMax = Locator.harmonicsFor(rows.size());
         if (hMax < Locator.WANTED_HARMONIC)
@@ -507,7 +510,7 @@ public final class Diagnoser {
             if (step > 0 && scannedFit != fit) {
                 // Locate again after each accepted effect: what is left may call for other families or harmonics.
                 List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource), o.alpha(), MAX_LOCATED);
-                for (Effect e : locatedFallbacks(more, rows)) rivals.putIfAbsent(e.label(), e);
+                for (Effect e : locatedFallbacks(more, rows, model)) rivals.putIfAbsent(e.label(), e);
                 for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
                     Effect merged = e;
                     if (e.kind() == Effect.Kind.PERIODIC)
@@ -651,13 +654,15 @@ public final class Diagnoser {
         // family's: another family's claim on the same drive's angle is withdrawn (the fallback models it).
         for (int k = selected.size() - 1; k >= 0; k--) {
             Effect e = selected.get(k);
-            boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH;
-            if (!angleFamily || selected.stream().noneMatch(x -> x.kind() == Effect.Kind.SMOOTH && x.joint() == e.joint())) continue;
+            boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH
+                    && e.kind() != Effect.Kind.ANGLE_STEP;
+            if (!angleFamily || selected.stream().noneMatch(x -> (x.kind() == Effect.Kind.SMOOTH || x.kind() == Effect.Kind.ANGLE_STEP)
+                    && x.joint() == e.joint())) continue;
             selected.remove(k);
             absorbedCols.remove(e);
             steps.remove(k);
             aliasNotes.add(e.label() + " is not claimed: the angle-dependent error of joint " + (e.joint() + 1)
-                    + " needed the smooth fallback as well, so it is not that family's alone");
+                    + " needed a fallback of its angle (a smooth curve or a step) as well, so it is not that family's alone");
             fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
         }
         // Likewise where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
@@ -679,6 +684,8 @@ public final class Diagnoser {
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
+        fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
+        fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
@@ -770,8 +777,8 @@ public final class Diagnoser {
             double[] s = Arrays.copyOfRange(sig, off, off + e.size());
             Step st = steps.get(k);
             Diagnosis.Evidence ev = st.candidate.evidence();
-            // (the evidence plots resolve one pose per row: none for pairs of poses)
-            Diagnosis.Plot plot = fit.problem.pairs() ? null : Plots.partialResidual(plotTester, e, v);
+            // (for pairs of poses, the partial residuals of joint and strain effects; none for an effect on the measured point)
+            Diagnosis.Plot plot = fit.problem.pairs() && e.target() == Effect.Target.POSITION ? null : Plots.partialResidual(plotTester, e, v);
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
                             k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource,
@@ -842,7 +849,10 @@ public final class Diagnoser {
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
-        return new Run(result, selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll));
+        List<String> under = selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll);
+        if (LOG.isDebugEnabled())
+            LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
+        return new Run(result, under);
     }
 
     /**
@@ -964,6 +974,112 @@ public final class Diagnoser {
             default -> { }
         }
         return out;
+    }
+
+    /**
+     * Without payload steps a drive's gravity torque is a function of the arm's pose alone, and on
+     * a parallel-linkage arm a low-harmonic function of the drive's own angle: a compliance with
+     * the arm's masses unknown and a transmission error of one cycle per turn can then be near
+     * exact aliases. A named transmission error whose place that compliance (every link's mass and
+     * centre unknown, {@link GravityTorques#massesUnknown}) takes predicting left-out poses as well
+     * (within {@link #ALIAS_MARGIN}) is not claimed: neither is named as physics, the joint's smooth
+     * fallback models the shape where it holds on held-out data, and the report says to measure
+     * with payload steps, which separate the two.
+     */
+    private static Fit gravityAliases(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                      KinematicModel model, List<Measurement> rows, List<String> notes, List<String> recs) {
+        double pLo = Double.POSITIVE_INFINITY, pHi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) {
+            double p = Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0;
+            pLo = Math.min(pLo, p);
+            pHi = Math.max(pHi, p);
+        }
+        if (pHi - pLo >= Effect.MIN_PAYLOAD_SPAN_KG) return fit;
+        GravityTorques unknown = GravityTorques.massesUnknown(model);
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.PERIODIC) continue;
+            Tester at = w.tester(fit);
+            double own = at.pressFull(), grav = at.pressReplacing(k, Effect.complianceRemassed(e.joint(), unknown), w.conditions);
+            LOG.debug("gravity alias of {}: press own {} compliance (masses unknown) {}", e.label(), own, grav);
+            if (!(grav <= own * (1 + ALIAS_MARGIN))) continue;
+            int j = e.joint();
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+            int before = selected.size();
+            fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, hi > lo ? Effect.smooth(j, lo, hi) : null, true);
+            notes.add(String.format(Locale.ROOT, "%s is not claimed: joint %d giving way under the arm's own weight (a compliance, "
+                    + "with the masses unknown) predicts left-out poses as well (leave-one-pose-out error %.1f against %.1f); "
+                    + "without payload steps a transmission error of one cycle per turn and a deflection under gravity cannot "
+                    + "be told apart on these poses%s", e.label(), j + 1, grav, own, selected.size() == before
+                    ? ", so the joint's smooth fallback models the shape instead" : ", and nothing models it"));
+            recs.add(String.format(Locale.ROOT, "Joint %d's error follows its angle the way a deflection under the arm's weight "
+                    + "would: measure the same poses with two or three payloads (record payload_kg) to tell a compliance from a "
+                    + "transmission error, or give the robot file a mass_model.", j + 1));
+            k = -1;
+        }
+        return fit;
+    }
+
+    /**
+     * Several families on one joint's angle (harmonic sets, a scale error) can together mimic a
+     * shape located on that angle that none of them holds alone (a step of the reading: a Fourier
+     * series of it), and each then beats that shape's fallback when judged one at a time. Where two
+     * or more families share a joint's angle, the located fallbacks of that angle (a step of the
+     * reading, a smooth curve) are put in the place of all of them together; one that predicts
+     * left-out poses better (and, with validation poses, those too) takes their place, and the notes
+     * say so.
+     */
+    private static Fit jointContest(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                    java.util.Collection<Effect> rivals, List<String> notes) {
+        for (int j = 0; j < w.model.dof(); j++) {
+            final int jj = j;
+            List<Effect> fams = selected.stream().filter(e -> !e.isFallback() && e.joint() == jj
+                    && (e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SCALE)).toList();
+            if (fams.size() < 2) continue;
+            double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
+            boolean hasVal = w.validate != null && w.validate.size() > 0;
+            for (Effect r : rivals) {
+                if (r.joint() != j || r.kind() != Effect.Kind.ANGLE_STEP && r.kind() != Effect.Kind.SMOOTH
+                        || selected.stream().anyMatch(x -> x.label().equals(r.label()))) continue;
+                List<Effect> sel0 = new ArrayList<>(selected);
+                Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
+                List<Step> steps0 = new ArrayList<>(steps);
+                double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
+                Fit f = fit;
+                for (Effect e : fams) {
+                    int k = selected.indexOf(e);
+                    selected.remove(k);
+                    absorbedCols.remove(e);
+                    steps.remove(k);
+                    f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
+                }
+                Candidate bc = w.tester(f).test(r, w.conditions);
+                if (bc.keptColumns > 0 && bc.pressAfter < bc.pressBefore) {
+                    selected.add(r);
+                    absorbedCols.put(r, bc.absorbedMask);
+                    Fit g = w.fit(selected, absorbedCols, f.full, bc);
+                    double pr = w.tester(g).pressFull();
+                    LOG.debug("joint contest j{}: {} against {} (PRESS {} -> {})", j + 1, r.label(), fams, own, pr);
+                    if (pr < own && (!hasVal || w.validateError(g) < ownVal)) {
+                        bc.threshold = thr;
+                        steps.add(new Step(bc, g.trainRms, w.validateRms(g)));
+                        notes.add(String.format(Locale.ROOT, "%s are not claimed: together they mimic a shape located on joint %d's "
+                                + "angle, and %s in their place predicts left-out poses better (leave-one-pose-out error %.1f against %.1f)",
+                                String.join(", ", fams.stream().map(Effect::label).toList()), j + 1, r.label(), pr, own));
+                        fit = g;
+                        break;
+                    }
+                }
+                selected.clear();
+                selected.addAll(sel0);
+                absorbedCols.clear();
+                absorbedCols.putAll(abs0);
+                steps.clear();
+                steps.addAll(steps0);
+            }
+        }
+        return fit;
     }
 
     /**
@@ -1141,15 +1257,23 @@ public final class Diagnoser {
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
                     out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
-        } else if (e.kind() == Effect.Kind.ZERO_STEP) {
-            double[] t = w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
+        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.ANGLE_STEP) {
+            boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
+            double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).sorted().toArray()
+                    : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
+            double place = angle ? e.rangeLo() : e.tauS();
             int at = 0;
-            while (at < t.length && t[at] <= e.tauS()) at++;
-            // the midpoints between the poses within a twentieth of the campaign either side
+            while (at < t.length && t[at] <= place) at++;
+            // the midpoints between the poses within a twentieth of the campaign (of the joint's poses) either side
             int reach = Math.max(1, t.length / Locator.STEP_QUANTILES);
             for (int i = Math.max(1, at - reach); i <= Math.min(t.length - 1, at + reach); i++) {
                 double tau = 0.5 * (t[i - 1] + t[i]);
-                if (tau != e.tauS() && t[i] > t[i - 1]) out.add(Effect.zeroStep(e.joint(), tau));
+                if (tau == place || !(t[i] > t[i - 1])) continue;
+                out.add(switch (e.kind()) {
+                    case ANGLE_STEP -> Effect.angleStep(e.joint(), tau);
+                    case TARGET_STEP -> Effect.targetStep(w.model, tau);
+                    default -> Effect.zeroStep(e.joint(), tau);
+                });
             }
         }
         return out;
@@ -1161,7 +1285,7 @@ public final class Diagnoser {
             Effect.Kind k = e.kind();
             boolean thermal = k == Effect.Kind.THERMAL || k == Effect.Kind.THERMAL_LINK || k == Effect.Kind.DRIFT;
             switch (f.probe.var) {
-                case ANGLE_PERIODIC, ANGLE_SMOOTH -> {
+                case ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP -> {
                     if (e.target() == Effect.Target.DRIVE && k != Effect.Kind.BACKLASH
                             && (e.joint() == f.probe.joint || (k == Effect.Kind.COUPLING && e.source() == f.probe.joint))) return e;
                 }
@@ -1180,6 +1304,7 @@ public final class Diagnoser {
                 case TIME_STEP -> {
                     if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
                 }
+                case TARGET_STEP -> { if (k == Effect.Kind.TARGET_STEP) return e; }
                 case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE) return e; }
                 case REACH, HEIGHT -> { return e; }
@@ -1345,6 +1470,13 @@ public final class Diagnoser {
             case TIME_STEP -> String.format(Locale.ROOT, "check joint %d's zero (its calibration mark or reference position) and "
                     + "the log near %.0f s for a collision or an encoder fault; re-measure a few poses from before that time.",
                     f.probe.joint + 1, f.probe.lo);
+            case ANGLE_STEP -> String.format(Locale.ROOT, "move joint %d slowly across %.1f deg in small steps, in both "
+                    + "directions, with the other joints still, and compare its reading with an independent measure: a jump there "
+                    + "is in the encoder (an absolute encoder's code track, a misread bit) or a damaged scale.", f.probe.joint + 1,
+                    Math.toDegrees(f.probe.lo));
+            case TARGET_STEP -> String.format(Locale.ROOT, "check the measured target's mounting on the flange (knocked, "
+                    + "slipped in its nest) and re-measure a few poses from before %.0f s; mark the target's nest and check it "
+                    + "between sessions.", f.probe.lo);
             case PAYLOAD_REACH -> "measure the same poses stretched and folded with two or three payloads, and check the "
                     + "stiffness of the arm and of the point's holder.";
             case PAYLOAD -> "measure with two or three payloads at the same poses to separate deflection from geometry.";
@@ -1371,6 +1503,7 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
+                if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(Effect.angleStep(j, f.probe.lo));
             }
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
@@ -1384,13 +1517,15 @@ public final class Diagnoser {
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
                 if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
-            if (gravity != null) out.add(Effect.complianceRemassed(j, gravity));
+            if (gravity != null && Effect.complianceRemassed(j, gravity).testableOn(rows)) out.add(Effect.complianceRemassed(j, gravity));
         }
         if (hasTemp) {
             out.add(Effect.thermalLinks(model, t0C));
             out.add(Effect.driftWithTemperature(t0C));
         }
         if (hasTime) out.add(Effect.driftWithTime());
+        for (Locator.Found f : found)
+            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(Effect.targetStep(model, f.probe.lo));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -1404,7 +1539,7 @@ public final class Diagnoser {
      * are rivals only, not stepwise candidates: with many functions they would take a gear's few
      * harmonics before the periodic family is tried.
      */
-    static List<Effect> locatedFallbacks(List<Locator.Found> found, List<Measurement> rows) {
+    static List<Effect> locatedFallbacks(List<Locator.Found> found, List<Measurement> rows, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         for (Locator.Found f : found)
             switch (f.probe.var) {
@@ -1413,6 +1548,8 @@ public final class Diagnoser {
                 case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH,
                         f.probe.lo, f.probe.hi));
                 case TIME_STEP -> out.add(Effect.zeroStep(f.probe.joint, f.probe.lo));
+                case ANGLE_STEP -> out.add(Effect.angleStep(f.probe.joint, f.probe.lo));
+                case TARGET_STEP -> out.add(Effect.targetStep(model, f.probe.lo));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
@@ -2312,6 +2449,14 @@ public final class Diagnoser {
         Effect e = c.effect;
         switch (e.kind()) {
             case COMPLIANCE -> {
+                if (e.gravity().massesUnknown()) {
+                    // only the payload's coefficient is a compliance; the others are it times unknown masses and centres
+                    int p = e.gravity().payloadIndex();
+                    c.plausible = c.absorbedMask != null && c.absorbedMask[p] || overlaps(v[p], sd[p], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS);
+                    c.plausibility = String.format(Locale.ROOT, "stiffness from the payload %.3g N·m/rad within %.0e..%.0e (positive)",
+                            1 / v[p], MIN_STIFFNESS, MAX_STIFFNESS);
+                    return;
+                }
                 if (e.perMass()) {
                     boolean ok = true;
                     for (int i = 0; i < v.length; i++)

@@ -98,6 +98,7 @@ public final class DiagnosisReport {
             u.put(n, e.units().get(i));
         }
         if (e.kind() == Effect.Kind.THERMAL) p.put(e.usesTimeProxy() ? "tau_s" : "t0_c", e.usesTimeProxy() ? e.tauS() : e.t0C());
+        if (e.buildsUp()) { p.put("build_up_rad", e.buildUpRad()); u.put("build_up_rad", "rad"); }
         m.put("parameters", p);
         m.put("parameter_sigmas", s);
         m.put("units", u);
@@ -187,7 +188,7 @@ public final class DiagnosisReport {
                 h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " "
                         + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
-                                new Svg.Series("fitted " + f.effect().kind().json, p.curveX(), p.curveY(), "#d62728", true)), false));
+                                new Svg.Series("fitted " + (f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728", true)), false));
                 if (p.periodogram() != null) {
                     double[] hx = new double[p.periodogram().length];
                     for (int i = 0; i < hx.length; i++) hx[i] = i + 1;
@@ -206,7 +207,8 @@ public final class DiagnosisReport {
                 h.append("<div class=\"finding\"><p>").append(Html.esc(l.words())).append("</p>\n");
                 Diagnosis.Plot p = l.plot();
                 if (p != null && p.x().length > 0)
-                    h.append(Svg.plot("Evidence: " + l.shape(), p.xLabel(), p.yLabel(),
+                    // the shape in words is in the paragraph above; a long one would run off the figure's title line
+                    h.append(Svg.plot("Evidence: " + (l.shape().length() <= 60 ? l.shape() : l.variable()), p.xLabel(), p.yLabel(),
                             List.of(new Svg.Series(p.yLabel().contains("partial residual") ? "partial residual" : "residual along it",
                                             p.x(), p.y(), "#1f77b4", false),
                                     new Svg.Series("located structure", p.curveX(), p.curveY(), "#d62728", false)), false));

@@ -67,7 +67,9 @@ public final class Effect {
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
         POINT_SMOOTH("point-smooth-error", "Displacement of the measured point with its reach, height, time or temperature, of no known family"),
         ZERO_DRIFT("joint-zero-drift", "Joint zero that moves with time or temperature, of no known family"),
-        ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family");
+        ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
+        ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
+        TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family");
 
         public final String json;
         public final String title;
@@ -101,6 +103,8 @@ public final class Effect {
         }
     }
 
+    /** The payload must vary by this much for a compliance with the masses unknown to be tested, kg. */
+    static final double MIN_PAYLOAD_SPAN_KG = 0.1;
     /** Harmonics of a default (single-stage) gear-periodic effect. */
     public static final int HARMONICS = 3;
     private static final int[] LOW = {1, 2, 3};
@@ -288,9 +292,30 @@ public final class Effect {
         return new Effect(Kind.ZERO_STEP, joint, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null, 1);
     }
 
+    /**
+     * Drive {@code joint}'s reading jumps by v where the joint passes {@code atRad}: Δq = v for
+     * q_j > atRad, 0 below (an absolute encoder's code track misread over part of the turn).
+     */
+    public static Effect angleStep(int joint, double atRad) {
+        if (!Double.isFinite(atRad)) throw new IllegalArgumentException("step angle " + atRad);
+        return new Effect(Kind.ANGLE_STEP, joint, -1, null, false, Double.NaN, Double.NaN, null, atRad, Double.NaN, null, null, 1);
+    }
+
+    /**
+     * The measured point moved on the flange at time {@code tauS} (a target knocked in its nest, a
+     * holder that slipped): its offset in the flange frame changed by d there. Δp = −R_flange(q)·d
+     * before the move, 0 after it and at an unknown time (the state the campaign ended in, which
+     * the tool offset of the geometry holds). {@code model} gives the flange's orientation.
+     */
+    public static Effect targetStep(KinematicModel model, double tauS) {
+        if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
+        return new Effect(Kind.TARGET_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, model, null, 1);
+    }
+
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP;
+        return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP;
     }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
@@ -328,7 +353,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -362,7 +387,7 @@ public final class Effect {
             case SMOOTH, PAIR, ZERO_DRIFT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length;
-            case DRIFT -> 3;
+            case DRIFT, TARGET_STEP -> 3;
             default -> 1;
         };
     }
@@ -385,7 +410,8 @@ public final class Effect {
             case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); out.add("lin_j"); out.add("lin_k"); out.add("lin_jk"); }
             case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
-            case ZERO_STEP -> out.add("step");
+            case ZERO_STEP, ANGLE_STEP -> out.add("step");
+            case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
         }
         return out;
     }
@@ -401,8 +427,8 @@ public final class Effect {
     public List<String> units() {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
-            case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP -> "rad";
-            case POINT_SMOOTH -> "m";
+            case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
+            case POINT_SMOOTH, TARGET_STEP -> "m";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -420,7 +446,7 @@ public final class Effect {
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
-            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (perMass ? " (masses re-estimated)" : "");
+            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
                     Math.toDegrees(buildUp)) : "");
@@ -428,6 +454,8 @@ public final class Effect {
             case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case ANGLE_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo));
+            case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             default -> kind.json + " j" + (joint + 1);
         };
     }
@@ -439,6 +467,12 @@ public final class Effect {
 
     /** Whether the conditions this effect needs are present on every row. */
     public boolean testableOn(List<Measurement> rows) {
+        if (kind == Kind.COMPLIANCE && gravity.massesUnknown()) {
+            // with the masses unknown only the payload's torque tells a compliance from them: the payload must vary
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (Measurement m : rows) { lo = Math.min(lo, m.payloadKg()); hi = Math.max(hi, m.payloadKg()); }
+            if (!(hi - lo >= MIN_PAYLOAD_SPAN_KG)) return false;
+        }
         for (Measurement m : rows) {
             switch (kind) {
                 case BACKLASH -> { if (m.directions() == null) return false; }
@@ -508,13 +542,14 @@ public final class Effect {
             }
             // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
+            case ANGLE_STEP -> g[0] = q[joint] > lo ? 1 : 0;
             case ZERO_DRIFT -> {
                 double x = along == Along.TIME ? c.timeS() : c.tempC();
                 if (!Double.isFinite(x) && along == Along.TIME) x = hi; // unknown time: the state the campaign ended in
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -528,6 +563,12 @@ public final class Effect {
         int k = size();
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
+            case TARGET_STEP -> {
+                // before the move the point sat −d (flange frame) from where it ended; an unknown time: where it ended
+                if (!(c.timeS() <= tauS)) break;
+                Pose f = model.flange(q);
+                for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
+            }
             case POINT_SMOOTH -> {
                 double[] b = new double[nBasis];
                 double u = switch (along) {
@@ -699,7 +740,8 @@ public final class Effect {
             case THERMAL_LINK -> p.put("t0_c", t0C);
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
-            case ZERO_STEP -> p.put("time_s_step", tauS);
+            case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
+            case ANGLE_STEP -> p.put("q_step", lo);
             case BACKLASH -> { if (buildsUp()) p.put("build_up_rad", buildUp); }
             default -> { }
         }
@@ -711,7 +753,7 @@ public final class Effect {
         Kind kind = Kind.of(d.effect());
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
-        int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH -> 0; case COUPLING, PAIR -> 2; default -> 1; };
+        int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP -> 0; case COUPLING, PAIR -> 2; default -> 1; };
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
         if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT) && along == null)
@@ -754,6 +796,8 @@ public final class Effect {
             }
             case POINT_SMOOTH -> pointSmooth(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
+            case ANGLE_STEP -> angleStep(js.get(0) - 1, require(d, "q_step", file));
+            case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
             case ZERO_DRIFT -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
                     throw new InputException(file, 0, 0, "effects.joint-zero-drift.parameters_si", "a joint zero drifts with time_s or temp_c");
@@ -792,7 +836,7 @@ public final class Effect {
         List<Effect> out = new ArrayList<>();
         int n = model.dof();
         for (int j = 0; j < n; j++) {
-            if (gravity != null) out.add(compliance(j, gravity));
+            if (gravity != null && !gravity.massesUnknown()) out.add(compliance(j, gravity));
             out.add(periodic(j));
             out.add(backlash(j));
             out.add(scale(j));

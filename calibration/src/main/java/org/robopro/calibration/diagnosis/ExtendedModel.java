@@ -32,7 +32,7 @@ public final class ExtendedModel {
      */
     public static ExtendedModel of(RobotDescription robot, String file) {
         KinematicModel m = KinematicModel.build(robot);
-        GravityTorques g = robot.massModel().map(mm -> new GravityTorques(m, mm)).orElse(null);
+        GravityTorques g = GravityTorques.of(m, robot);
         List<Effect.Term> ts = new ArrayList<>();
         for (EffectDescription d : robot.effects()) ts.add(Effect.fromDescription(d, m, g, file));
         return new ExtendedModel(m, ts);

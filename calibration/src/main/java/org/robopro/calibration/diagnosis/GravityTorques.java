@@ -23,8 +23,75 @@ public final class GravityTorques {
     private final Vec3[] local;     // centre of mass in that frame
     private final Vec3 gravity;
     private final int payloadSlot;  // index of the payload entry (mass set per pose)
+    private final boolean massesUnknown;
+    private final String[] names;
+
+    /** Links (1-based frames) whose unknown first moments stand for the arm's weight when the file has no mass model. */
+    static final int UNKNOWN_MASS_LINKS = 3;
+    /** Lever of the unit point masses that span a link's first moments, m. */
+    static final double UNKNOWN_MASS_LEVER_M = 0.5;
+
+    private GravityTorques(KinematicModel model, int[] frameIndex, double[] mass, Vec3[] local, Vec3 gravity, int payloadSlot,
+                           boolean massesUnknown, String[] names) {
+        this.model = model;
+        this.frameIndex = frameIndex;
+        this.mass = mass;
+        this.local = local;
+        this.gravity = gravity;
+        this.payloadSlot = payloadSlot;
+        this.massesUnknown = massesUnknown;
+        this.names = names;
+    }
+
+    /** The robot file's mass model, or, without one, {@link #massesUnknown(KinematicModel)}. */
+    public static GravityTorques of(KinematicModel model, org.robopro.models.RobotDescription robot) {
+        return robot.massModel().map(mm -> new GravityTorques(model, mm)).orElseGet(() -> massesUnknown(model));
+    }
+
+    /**
+     * Gravity torques of an arm whose masses are not known (a robot file without a mass model): the
+     * payload at the flange (its mass given per pose), and for each of links 1..3 four unit point
+     * masses, at the link frame's origin and {@link #UNKNOWN_MASS_LEVER_M} along each of its axes.
+     * A link's weight torque, −g·(m (p + R c) − o) × z, is linear in its mass m and first moments
+     * m·c, so these four span every mass and centre the link can have; the wrist's masses are
+     * taken at the wrist centre, which rides on link 3 (a spherical wrist). Only with the masses
+     * re-estimated (one coefficient each) does this mean anything, and only the payload's
+     * coefficient is a compliance: the arm's own weight alone cannot separate a compliance from
+     * the unknown masses.
+     */
+    public static GravityTorques massesUnknown(KinematicModel model) {
+        int n = model.dof(), links = Math.min(UNKNOWN_MASS_LINKS, n);
+        int count = 4 * links + 1;
+        int[] fi = new int[count];
+        double[] m = new double[count];
+        Vec3[] loc = new Vec3[count];
+        String[] names = new String[count];
+        // the payload first: its coefficient is the compliance itself, and is kept before any of the arm's columns
+        fi[0] = n + 1;
+        loc[0] = Vec3.ZERO;
+        names[0] = "payload";
+        String[] axis = {"o", "x", "y", "z"};
+        Vec3[] offs = {Vec3.ZERO, new Vec3(UNKNOWN_MASS_LEVER_M, 0, 0), new Vec3(0, UNKNOWN_MASS_LEVER_M, 0), new Vec3(0, 0, UNKNOWN_MASS_LEVER_M)};
+        for (int i = 1; i <= links; i++)
+            for (int a = 0; a < 4; a++) {
+                int k = 1 + 4 * (i - 1) + a;
+                fi[k] = i;
+                m[k] = 1;
+                loc[k] = offs[a];
+                names[k] = "link" + i + "_" + axis[a];
+            }
+        return new GravityTorques(model, fi, m, loc, new Vec3(0, 0, -9.80665), 0, true, names);
+    }
+
+    /** Whether the masses are unknown ({@link #massesUnknown(KinematicModel)}): only the payload's coefficient is a compliance. */
+    public boolean massesUnknown() { return massesUnknown; }
+
+    /** Index of the payload among the masses. */
+    public int payloadIndex() { return payloadSlot; }
 
     public GravityTorques(KinematicModel model, MassModel masses) {
+        this.massesUnknown = false;
+        this.names = null;
         this.model = model;
         int n = model.dof();
         Pose[] zero = model.linkFrames(new double[n]);
@@ -104,7 +171,7 @@ public final class GravityTorques {
     public int massCount() { return mass.length; }
 
     /** Name of mass k: "link3" (the mass the file puts on joint 3's link) or "payload". */
-    public String massName(int k) { return k == payloadSlot ? "payload" : "link" + frameIndex[k]; }
+    public String massName(int k) { return names != null ? names[k] : k == payloadSlot ? "payload" : "link" + frameIndex[k]; }
 
     /** The file's value of mass k, kg (0 for the payload, which is given per pose). */
     public double massKg(int k) { return mass[k]; }

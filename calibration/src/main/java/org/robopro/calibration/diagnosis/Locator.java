@@ -39,9 +39,9 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT }
 
-    /** Candidate times of a joint's zero step: these quantiles of the poses' times. */
+    /** Candidate times of a joint's zero step or the target's move, and angles of a reading's step: these quantiles of the poses' values. */
     static final int STEP_QUANTILES = 20;
 
     /** One probe: a block of signature columns. */
@@ -56,6 +56,7 @@ final class Locator {
         int k;
         double[][] x; // per end and pose, the variable (plots)
         double[][] endS; // with two ends: each end's own columns (m x k, unprojected), else null
+        double[][][] rf; // a move of the target on the flange: each end's and pose's flange rotation (row-major)
         Angle angle;     // a drive's error as a function of its joint angle: the regressor (ANGLE_PERIODIC, ANGLE_SMOOTH)
         String xLabel;
     }
@@ -131,6 +132,8 @@ final class Locator {
                 p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);
             }
+            // the reading jumps where the joint passes one angle (an absolute encoder's track): a step at quantiles of q_j
+            for (double q0 : stepPlaces(qx[0])) out.add(angleStep(t, j, Math.toRadians(q0), qx));
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
                 final int kk = k;
@@ -162,28 +165,12 @@ final class Locator {
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", true));
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", false));
             for (int j = 0; j < dof; j++) out.add(zero(t, j, Var.TIME, time, "time", "time since the start (s)"));
-            double[] sorted = time[0].clone();
-            Arrays.sort(sorted);
-            double last = Double.NaN;
-            for (int k = 1; k < STEP_QUANTILES; k++) {
-                // the step between two poses' times, halfway
-                int i = k * poses / STEP_QUANTILES;
-                if (i < 3 || i > poses - 3) continue;
-                double tau = 0.5 * (sorted[i - 1] + sorted[i]);
-                if (tau == last) continue;
-                last = tau;
-                for (int j = 0; j < dof; j++) {
-                    final double tt = tau;
-                    Probe p = drive(t, j, 1, (e, pi, g) -> g[0] = time[e][pi] > tt ? 1 : 0);
-                    p.var = Var.TIME_STEP;
-                    p.joint = j;
-                    p.lo = tau;
-                    p.variable = "time";
-                    p.shape = String.format(Locale.ROOT, "joint %d's zero jumps at about %.0f s", j + 1, tau);
-                    p.x = time;
-                    p.xLabel = "time since the start (s)";
-                    out.add(p);
-                }
+            // each pose's flange orientation (row-major), for a move of the measured point on the flange
+            double[][][] rf = new double[ends][poses][];
+            for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
+            for (double tau : stepPlaces(time[0])) {
+                out.add(targetStep(t, tau, time, rf));
+                for (int j = 0; j < dof; j++) out.add(zeroStep(t, j, tau, time));
             }
         }
         if (varies(temp, 0.5)) {
@@ -238,6 +225,97 @@ final class Locator {
 
     /** A drive's error as a function of its own joint's angle (rad): the regressor's k values. */
     interface Angle { void at(double q, double[] g); }
+
+    /**
+     * Places of a step in a variable: halfway between two poses' values at the quantiles k/{@link #STEP_QUANTILES}
+     * (k = 1..19), leaving at least 3 poses on each side.
+     */
+    static List<Double> stepPlaces(double[] x) {
+        double[] sorted = x.clone();
+        Arrays.sort(sorted);
+        int poses = sorted.length;
+        List<Double> out = new ArrayList<>();
+        double last = Double.NaN;
+        for (int k = 1; k < STEP_QUANTILES; k++) {
+            int i = k * poses / STEP_QUANTILES;
+            if (i < 3 || i > poses - 3 || !(sorted[i] > sorted[i - 1])) continue;
+            double at = 0.5 * (sorted[i - 1] + sorted[i]);
+            if (at == last) continue;
+            last = at;
+            out.add(at);
+        }
+        return out;
+    }
+
+    /** Drive j's reading jumps where it passes {@code at} (rad). */
+    private static Probe angleStep(Diagnoser.Tester t, int j, double at, double[][] qx) {
+        Probe p = drive(t, j, 1, (e, i, g) -> g[0] = t.endRows.get(e).get(i).q(j) > at ? 1 : 0);
+        p.var = Var.ANGLE_STEP;
+        p.joint = j;
+        p.lo = at;
+        p.variable = "joint " + (j + 1) + " angle";
+        p.shape = String.format(Locale.ROOT, "joint %d's reading jumps where it passes about %.1f deg", j + 1, Math.toDegrees(at));
+        p.x = qx;
+        p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+        return p;
+    }
+
+    /** The measured point moved on the flange (3 translations in the flange frame, {@code rf} each pose's flange rotation) at tau. */
+    private static Probe targetStep(Diagnoser.Tester t, double tau, double[][] time, double[][][] rf) {
+        int rpp = t.rpp;
+        Probe tp = columns(t, 3, (e, row, g, col) -> {
+            double[] r = rf[e][row / rpp];
+            double v = 0;
+            for (int a = 0; a < 3; a++) v += t.endDTrans[e][row * 3 + a] * r[3 * a + col];
+            return v * g[0];
+        }, 1, (e, pi, g) -> g[0] = time[e][pi] > tau ? 1 : 0);
+        tp.var = Var.TARGET_STEP;
+        tp.lo = tau;
+        tp.variable = "time";
+        tp.shape = String.format(Locale.ROOT, "the measured point moved on the flange at about %.0f s", tau);
+        tp.x = time;
+        tp.xLabel = "time since the start (s)";
+        tp.rf = rf;
+        return tp;
+    }
+
+    /** Drive j's zero jumps at tau. */
+    private static Probe zeroStep(Diagnoser.Tester t, int j, double tau, double[][] time) {
+        Probe p = drive(t, j, 1, (e, pi, g) -> g[0] = time[e][pi] > tau ? 1 : 0);
+        p.var = Var.TIME_STEP;
+        p.joint = j;
+        p.lo = tau;
+        p.variable = "time";
+        p.shape = String.format(Locale.ROOT, "joint %d's zero jumps at about %.0f s", j + 1, tau);
+        p.x = time;
+        p.xLabel = "time since the start (s)";
+        return p;
+    }
+
+    /**
+     * The step probes at every place between two poses' values within a twentieth of the poses
+     * either side of a found step's place (the scan's places are quantiles; a step's place matters
+     * to the pose: the poses between a quantile and the true place would be mispredicted).
+     */
+    static List<Probe> finerSteps(Diagnoser.Tester t, Probe p) {
+        if (p.var != Var.ANGLE_STEP && p.var != Var.TIME_STEP && p.var != Var.TARGET_STEP) return List.of();
+        double[] v = p.var == Var.ANGLE_STEP ? t.endRows.get(0).stream().mapToDouble(r -> r.q(p.joint)).toArray() : p.x[0].clone();
+        Arrays.sort(v);
+        int at = 0;
+        while (at < v.length && v[at] <= p.lo) at++;
+        int reach = Math.max(1, v.length / STEP_QUANTILES);
+        List<Probe> out = new ArrayList<>();
+        for (int i = Math.max(1, at - reach); i <= Math.min(v.length - 1, at + reach); i++) {
+            double place = 0.5 * (v[i - 1] + v[i]);
+            if (place == p.lo || !(v[i] > v[i - 1])) continue;
+            out.add(switch (p.var) {
+                case ANGLE_STEP -> angleStep(t, p.joint, place, p.x);
+                case TARGET_STEP -> targetStep(t, place, p.x, p.rf);
+                default -> zeroStep(t, p.joint, place, p.x);
+            });
+        }
+        return out;
+    }
 
     /** A regressor: its k values at one end (0, or 0 and 1 for a pair of poses) of one residual row's pose. */
     private interface Reg { void at(int end, int pose, double[] g); }
@@ -404,6 +482,15 @@ final class Locator {
             }
             if (best == null) break;
             used[probes.indexOf(best.probe)] = true;
+            // a step: the place between two poses that explains most, near the quantile found
+            for (Probe fine : finerSteps(t, best.probe)) {
+                Diagnoser.Candidate c = test(t, fine, q, nq, best.c.threshold);
+                if (c != null && c.p < best.c.threshold && c.drss > best.c.drss) {
+                    c.threshold = best.c.threshold;
+                    best.probe = fine;
+                    best.c = c;
+                }
+            }
             found.add(best);
             int add = best.c.df1;
             double[] nqArr = new double[t.m * (nq + add)];

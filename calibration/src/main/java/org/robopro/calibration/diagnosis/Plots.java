@@ -20,11 +20,22 @@ final class Plots {
     static Diagnosis.Plot partialResidual(Diagnoser.Tester t, Effect e, double[] v) {
         if (e.target() == Effect.Target.POSITION) return alongDisplacement(t, e, v);
         int rpp = t.rpp, poses = t.m / rpp, dof = t.dof;
+        // A distance between two poses is put at the pose that carries more of the effect's change
+        // of it (its own sensitivity times the effect's value there); the other pose's share is noise.
+        int[] end = new int[poses];
+        for (int i = 0; t.ends > 1 && i < poses; i++) {
+            double best = -1;
+            for (int k = 0; k < t.ends; k++) {
+                double d = e.isStrain() ? t.endDStrain[k][i] : t.endDQ[k][i * dof + e.joint()];
+                double c = Math.abs(d * e.valueAt(v, t.endRows.get(k).get(i), t.endConditions.get(k).get(i)));
+                if (c > best) { best = c; end[i] = k; }
+            }
+        }
         double[] dn = new double[poses];
         for (int i = 0; i < poses; i++) {
             double s = 0;
             for (int a = 0; a < t.posRows; a++) {
-                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : t.endDQ[end[i]][(i * rpp + a) * dof + e.joint()];
                 s += d * d;
             }
             dn[i] = s;
@@ -36,11 +47,11 @@ final class Plots {
         List<double[]> pts = new ArrayList<>();
         for (int i = 0; i < poses; i++) {
             if (!(dn[i] > cut) || dn[i] == 0) continue;
-            Measurement row = t.w.rows.get(i);
-            PoseConditions c = t.w.conditions.get(i);
+            Measurement row = t.endRows.get(end[i]).get(i);
+            PoseConditions c = t.endConditions.get(end[i]).get(i);
             double proj = 0;
             for (int a = 0; a < t.posRows; a++) {
-                double d = e.isStrain() ? t.dStrain[i * rpp + a] : t.dQ[(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : t.endDQ[end[i]][(i * rpp + a) * dof + e.joint()];
                 proj += d * t.fit.r[i * rpp + a];
             }
             double y = e.valueAt(v, row, c) - proj / dn[i]; // residual is predicted - measured
@@ -60,7 +71,7 @@ final class Plots {
         if (nc > 0 && Double.isNaN(cy[0])) { cx = new double[0]; cy = new double[0]; } // no curve in this variable
         double[] gram = null;
         if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, Math.max(8, e.harmonics()[e.harmonics().length - 1] + 2));
-        return new Diagnosis.Plot(xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
+        return new Diagnosis.Plot(t.ends > 1 ? xLabel(e) + ", at the pose of the pair that carries more of the change" : xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
                 : "partial residual of joint " + (e.joint() + 1) + " angle (mdeg)", x, y, cx, cy, gram);
     }
 
@@ -76,7 +87,8 @@ final class Plots {
                 case TEMPERATURE -> "temperature (°C)";
                 case PAYLOAD_REACH -> "reach of the measured point (m), times the payload";
             };
-            case ZERO_STEP -> "time since start (s)";
+            case ZERO_STEP, TARGET_STEP -> "time since start (s)";
+            case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
@@ -94,7 +106,8 @@ final class Plots {
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
-            case ZERO_STEP -> c.timeS();
+            case ZERO_STEP, TARGET_STEP -> c.timeS();
+            case ANGLE_STEP -> Math.toDegrees(row.q(e.joint()));
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
@@ -123,6 +136,8 @@ final class Plots {
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
+            case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() ? v[0] : 0;
+            case TARGET_STEP -> Double.NaN;
             case ZERO_DRIFT -> {
                 double[] g = new double[e.basisCount()];
                 Effect.bspline(x, e.rangeLo(), e.rangeHi(), g);

@@ -16,7 +16,12 @@ final class Words {
                           double valBefore, double valAfter, Directions.Source dirs, double sizeM) {
         String at = Double.isFinite(sizeM) ? String.format(Locale.ROOT, ", %.4f mm at the measured point (RMS over the poses)", sizeM * 1e3) : "";
         String what = switch (e.kind()) {
-            case COMPLIANCE -> e.perMass()
+            case COMPLIANCE -> e.gravity().massesUnknown()
+                    ? String.format(Locale.ROOT, "Joint %d gives way under gravity: the payload steps give its compliance %.3g ± %.2g "
+                    + "rad/(N·m), a stiffness of %.3g N·m/rad. The robot file has no mass model, so the arm's own weight was "
+                    + "estimated with it (unknown masses and centres of links 1-3, coefficients %s).", e.joint() + 1,
+                    v[e.gravity().payloadIndex()], s[e.gravity().payloadIndex()], 1 / v[e.gravity().payloadIndex()], fmtList(v))
+                    : e.perMass()
                     ? String.format(Locale.ROOT, "Joint %d gives way under gravity, and the robot file's masses do not match: with "
                     + "each mass's torque on drive %d given its own coefficient (the mass model re-estimated from the data) the "
                     + "deflection is explained; coefficients %s rad/(N·m) per N·m of the file's torque (%s).", e.joint() + 1,
@@ -44,7 +49,8 @@ final class Words {
             case SMOOTH -> String.format(Locale.ROOT, "Joint %d has an angle-dependent error of %.4f deg (RMS over its range) that "
                     + "none of the known effects explains; it is modelled as a smooth curve of the joint angle (%d-function "
                     + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
-                    Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()));
+                    Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
+                    + shortRange(e);
             case PAIR -> String.format(Locale.ROOT, "Joint %d's error depends on joints %d and %d together (%.4f deg RMS over the "
                     + "poses, in products of their sines and cosines, beside terms linear in each angle and in their product) and none of the known effects explains it; it is modelled "
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
@@ -56,6 +62,16 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
+            case ANGLE_STEP -> String.format(Locale.ROOT, "Joint %d's reading jumps by %.4f deg where the joint passes %.1f deg, "
+                    + "and none of the known effects explains it (an absolute encoder's code track or a bit misread over part of "
+                    + "the turn, a damaged scale); it is modelled as such so compensation can use it, but its cause is unknown: "
+                    + "move the joint slowly across that angle in both directions and compare with an independent measure.",
+                    e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(e.rangeLo()));
+            case TARGET_STEP -> String.format(Locale.ROOT, "The measured point moved on the flange by %.4f mm (%.4f, %.4f, %.4f mm "
+                    + "along the flange's axes) at about %.0f s into the campaign, and none of the known effects explains it (a "
+                    + "target knocked in its nest, a holder that slipped); the poses before it are modelled with the point where it "
+                    + "was then, but check the target's mounting and re-measure a few poses from before that time.",
+                    Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * 1e3, v[0] * 1e3, v[1] * 1e3, v[2] * 1e3, e.tauS());
             case ZERO_STEP -> String.format(Locale.ROOT, "Joint %d's zero jumped by %.4f deg at about %.0f s into the campaign "
                     + "and none of the known effects explains it (an encoder slip, a collision, a re-synchronisation); the poses "
                     + "before and after it do not belong to one robot: re-measure after checking the joint's zero.", e.joint() + 1,
@@ -105,23 +121,44 @@ final class Words {
         return what + fit;
     }
 
+    /**
+     * On a joint sampled over less than three quarters of a turn, two harmonics closer than 360°/range cycles per turn
+     * cannot be told apart (the frequency resolution of a record of that length), and a few
+     * stage harmonics look like a place-bound shape: a smooth error found there may be a
+     * multi-stage or cycloidal reducer's transmission error that these poses cannot resolve.
+     */
+    static String shortRange(Effect e) {
+        double range = e.rangeHi() - e.rangeLo();
+        if (!(range < 1.5 * Math.PI)) return "";
+        return String.format(Locale.ROOT, " Over a range of %.0f deg, harmonics of the joint closer than %.1f cycles per turn "
+                + "cannot be told apart, so a multi-stage or cycloidal reducer's stage harmonics cannot be told from such a "
+                + "shape here: if joint %d has such a reducer, this may be its transmission error; measure the joint over as "
+                + "much of a turn as its limits allow, with at least 5 poses per cycle of the highest stage, to tell.",
+                Math.toDegrees(range), 2 * Math.PI / range, e.joint() + 1);
+    }
+
     static String fmtList(double[] v) {
         List<String> out = new ArrayList<>();
         for (double x : v) out.add(String.format(Locale.ROOT, "%.3g", x));
         return "[" + String.join(", ", out) + "]";
     }
 
-    /** RMS of a smooth error's curve over its range, rad. */
+    /**
+     * RMS of a smooth error's curve over its range about its mean, rad: the angle-dependent part.
+     * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
+     * the spline's constant is only nearly the zero's and can come out large and uncertain).
+     */
     static double rmsSmooth(Effect e, double[] v) {
-        double s = 0;
         int n = 200;
-        double[] g = new double[e.basisCount()];
+        double[] g = new double[e.basisCount()], y = new double[n];
+        double mean = 0;
         for (int i = 0; i < n; i++) {
             Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
-            double y = 0;
-            for (int k = 0; k < g.length; k++) y += g[k] * v[k];
-            s += y * y;
+            for (int k = 0; k < g.length; k++) y[i] += g[k] * v[k];
+            mean += y[i] / n;
         }
+        double s = 0;
+        for (double yi : y) s += (yi - mean) * (yi - mean);
         return Math.sqrt(s / n);
     }
 

@@ -24,7 +24,12 @@ import org.robopro.world.Scenario;
 class PairsLocateTest {
     private static final RobotDescription IRB2000 = RobotLibrary.shipped("irb2000");
 
-    record Trial(Scenario.Trial world, Diagnosis diagnosis) { }
+    record Trial(Scenario.Trial world, Diagnosis diagnosis) {
+        /** The world's concealed joint error of this type. */
+        <T extends JointError> T truth(Class<T> type) {
+            return world.world().errors().stream().filter(type::isInstance).map(type::cast).findFirst().orElseThrow();
+        }
+    }
 
     static Trial diagnose(String scenario, long seed, int poses) {
         Scenario.Trial t = Scenario.named(scenario).trial(seed, p -> p.withPoses(poses, 100));
@@ -41,8 +46,7 @@ class PairsLocateTest {
     void bumpInJoint3_isLocatedOnJoint3_notNamed_andItsPlotPeaksWhereTheBumpIs() {
         Trial t = diagnose("outside: bump in the angle of j3", 5, 250);
         Diagnosis d = t.diagnosis();
-        JointError.Bump bump = t.world().world().errors().stream().filter(e -> e instanceof JointError.Bump)
-                .map(e -> (JointError.Bump) e).findFirst().orElseThrow();
+        JointError.Bump bump = t.truth(JointError.Bump.class);
         assertEquals(List.of(), families(d), "named a family for a bump outside every family; notes " + d.notes());
         Diagnosis.Located l = d.located().stream().filter(x -> x.stage().equals("geometric")).findFirst().orElseThrow(
                 () -> new AssertionError("nothing located: " + d.notes()));
@@ -69,14 +73,16 @@ class PairsLocateTest {
         assertEquals(Math.abs(Math.toDegrees(bump.amplitude()) * 1e3), sign * p.curveY()[peak] - lowest,
                 0.25 * Math.abs(Math.toDegrees(bump.amplitude()) * 1e3), "bump height, mdeg");
         assertTrue(d.finalValidateRmsM() < 0.3 * d.geometricValidateRmsM(), d.finalValidateRmsM() + " vs " + d.geometricValidateRmsM());
+        // the report draws it, titled by its variable (the long shape is in the words above it)
+        String html = DiagnosisReport.html(d, new DiagnosisReport.Context("bar.csv", "bar.csv", "test"));
+        assertTrue(html.contains("Evidence: joint 3 angle") && html.contains("partial residual"), "report's located plot");
     }
 
     @Test
     void cycloidalJoint1_stageHarmonicsLocatedAtTheWorldsHarmonics_andNamed() {
         Trial t = diagnose("transmission error j1, cycloidal k up to 40", 5, 250);
         Diagnosis d = t.diagnosis();
-        JointError.Harmonics truth = t.world().world().errors().stream().filter(e -> e instanceof JointError.Harmonics)
-                .map(e -> (JointError.Harmonics) e).findFirst().orElseThrow();
+        JointError.Harmonics truth = t.truth(JointError.Harmonics.class);
         Set<Integer> stages = new TreeSet<>();
         for (int k : truth.k()) if (k > 3) stages.add(k);
         Set<Integer> located = new TreeSet<>();
@@ -89,6 +95,49 @@ class PairsLocateTest {
         assertEquals(1, d.effects().size(), d.notes().toString());
         assertTrue(d.effects().get(0).effect().label().startsWith("gear-periodic j1"), d.effects().get(0).effect().label());
         assertTrue(d.finalValidateRmsM() < 1.2 * d.noiseFloorM(), d.finalValidateRmsM() + " vs floor " + d.noiseFloorM());
+    }
+
+    /**
+     * A named effect's evidence on pairs: the partial residual of joint 2 at the pose of each pair
+     * that carries more of the change, against that pose's approach direction. The world's lost
+     * motion lags: the two columns of points sit the world's play apart, the +1 side below.
+     */
+    @Test
+    void lostMotionOnPairs_itsEvidencePlotShowsTheWorldsPlayBetweenTheTwoDirections() {
+        Trial t = diagnose("lost motion j2, directions recorded", 5, 250);
+        Diagnosis d = t.diagnosis();
+        assertEquals(List.of("backlash j2"), d.effects().stream().map(f -> f.effect().label()).toList(), d.notes().toString());
+        double truth = t.truth(JointError.LostMotion.class).width();
+        Diagnosis.Plot p = d.effects().get(0).plot();
+        assertTrue(p != null && p.x().length > 150, "plotted " + (p == null ? "nothing" : p.x().length + " lengths"));
+        assertTrue(p.xLabel().contains("pair"), p.xLabel());
+        double up = 0, down = 0;
+        int nUp = 0, nDown = 0;
+        for (int i = 0; i < p.x().length; i++) {
+            if (p.x()[i] > 0.5) { up += p.y()[i]; nUp++; } else if (p.x()[i] < -0.5) { down += p.y()[i]; nDown++; }
+        }
+        assertTrue(nUp > 30 && nDown > 30, nUp + " / " + nDown);
+        double gapMdeg = down / nDown - up / nUp, truthMdeg = Math.toDegrees(truth) * 1e3;
+        assertEquals(truthMdeg, gapMdeg, 0.15 * truthMdeg, "play between the two directions, mdeg");
+    }
+
+    /**
+     * A smooth fallback's size (its plausibility and its words) is its angle-dependent part: a
+     * constant is the joint's zero, which the geometry holds. On lengths between pairs of poses the
+     * spline's constant is only nearly the zero's, came out at 0.24° beside a 0.01° error and made
+     * the fallback "implausible" (a cycloidal joint 3 then left 5 x σ unmodelled).
+     */
+    @Test
+    void smoothErrorSize_isItsAngleDependentPart() {
+        Effect e = Effect.smooth(2, -0.9, 0.9, 7);
+        double[] constant = new double[7], bump = new double[7];
+        Arrays.fill(constant, Math.toRadians(0.25));
+        bump[3] = Math.toRadians(0.01);
+        assertEquals(0, Words.rmsSmooth(e, constant), 1e-12);
+        double[] both = new double[7];
+        for (int i = 0; i < 7; i++) both[i] = constant[i] + bump[i];
+        assertEquals(Words.rmsSmooth(e, bump), Words.rmsSmooth(e, both), 1e-12);
+        assertTrue(Words.rmsSmooth(e, bump) > Math.toRadians(0.001), "a bump has a size: " + Words.rmsSmooth(e, bump));
     }
 
     @Test
