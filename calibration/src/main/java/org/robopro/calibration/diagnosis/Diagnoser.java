@@ -338,10 +338,38 @@ public final class Diagnoser {
                 d.directions(), d.located(), d.warnings());
     }
 
-    /** The diagnosis of data whose directions are prepared, with the outlier rule judged under the extended model. */
+    /**
+     * The diagnosis of data whose directions are prepared, with the outlier rule judged under the
+     * extended model. A validation pose beyond the same rule (5 robust sigmas of the validation
+     * poses under the final model) is a bad measurement too: it would decide the validation gates
+     * and dominate the validation error. It is reported as an outlier, the diagnosis is run again
+     * without it, and the notes say so with its error.
+     */
     private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                       Directions.Source dirSource, Set<String> excluded) {
         Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
+        if (r.validationOutliers.isEmpty()) return judged(r, robot, train, validate, o, t0, dirSource, excluded);
+        Set<String> bad = new HashSet<>();
+        for (CalibrationResult.Outlier ol : r.validationOutliers) bad.add(ol.poseId());
+        MeasurementSet clean = validate.filter(m -> !bad.contains(m.poseId()));
+        Diagnosis d = judged(run(robot, train, clean, o, null, t0, dirSource, excluded), robot, train, clean, o, t0, dirSource, excluded);
+        List<String> outliers = new ArrayList<>(d.outliers()), notes = new ArrayList<>(d.notes());
+        for (CalibrationResult.Outlier ol : r.validationOutliers) {
+            if (!outliers.contains(ol.poseId())) outliers.add(ol.poseId());
+            notes.add(String.format(Locale.ROOT, "validation pose %s misses by %.4f mm, more than %.0f robust sigmas (%.4f mm) of the "
+                    + "validation poses under the final model: it is reported as an outlier and left out of the validation error "
+                    + "and of every decision taken on the validation poses", ol.poseId(), ol.residualM() * 1e3, OUTLIER_K,
+                    ol.robustSigmaM() * 1e3));
+        }
+        return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
+                d.finalTrainRmsM(), d.finalValidateRmsM(), outliers, d.notIdentifiable(), d.implausible(), d.recommendations(),
+                notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
+                d.directions(), d.located(), d.warnings());
+    }
+
+    /** {@link #prepared}'s outlier rule under the extended model, given the first run. */
+    private static Diagnosis judged(Run r, RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
+                                    Directions.Source dirSource, Set<String> excluded) {
         Diagnosis d = r.d;
         if (d.effects().isEmpty()) return d;
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
@@ -365,7 +393,7 @@ public final class Diagnoser {
     }
 
     /** A diagnosis and the poses the calibration's outlier rule flags under its extended model. */
-    private record Run(Diagnosis d, List<String> outliersUnder) { }
+    private record Run(Diagnosis d, List<String> outliersUnder, List<CalibrationResult.Outlier> validationOutliers) { }
 
     /** Robust sigmas beyond which a pose is an outlier under the extended model (the calibration's default rule). */
     static final double OUTLIER_K = 5;
@@ -852,7 +880,10 @@ public final class Diagnoser {
         List<String> under = selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll);
         if (LOG.isDebugEnabled())
             LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
-        return new Run(result, under);
+        // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them).
+        List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 || !foundFinal.isEmpty() ? List.of()
+                : new ArrayList<>(Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).values());
+        return new Run(result, under, valOut);
     }
 
     /**
@@ -1518,6 +1549,11 @@ public final class Diagnoser {
                 if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
             if (gravity != null && Effect.complianceRemassed(j, gravity).testableOn(rows)) out.add(Effect.complianceRemassed(j, gravity));
+            // with payload steps, also the masses and their centres unknown (a centre off the file's moves the torque's phase)
+            if (gravity != null && !gravity.massesUnknown()) {
+                Effect free = Effect.complianceRemassed(j, GravityTorques.massesUnknown(model));
+                if (free.testableOn(rows)) out.add(free);
+            }
         }
         if (hasTemp) {
             out.add(Effect.thermalLinks(model, t0C));
@@ -1788,6 +1824,7 @@ public final class Diagnoser {
             for (double v : f.r) rss += v * v;
             int worst = -1;
             double worstP = -1;
+            boolean worstPlausible = true;
             for (int k = 0; k < selected.size(); k++) {
                 if (!which.test(selected.get(k))) continue;
                 int a = f.problem.effectOffset(k), b = a + selected.get(k).size();
@@ -1805,8 +1842,15 @@ public final class Diagnoser {
                 double fstat = (drss / mine.size()) / (rss / Math.max(1, df2));
                 double p = Stats.fUpperTail(fstat, mine.size(), df2);
                 Candidate c = judged(f, selected, k, sig);
-                double score = c.plausible ? p : 2;
-                if ((!c.plausible || !(p < threshold)) && score > worstP) { worstP = score; worst = k; pOut[0] = p; }
+                // an implausible effect before an insignificant one; among either, the least significant (two aliases
+                // fitted together can both leave the bounds: the one the data need less goes first)
+                boolean fails = !c.plausible || !(p < threshold);
+                if (fails && (worst < 0 || !c.plausible && worstPlausible || c.plausible == worstPlausible && p > worstP)) {
+                    worstP = p;
+                    worstPlausible = c.plausible;
+                    worst = k;
+                    pOut[0] = p;
+                }
             }
             return worst;
         }

@@ -177,4 +177,24 @@ class HeldOutFormsTest {
         assertEquals(1500, at, 150, l.shape());
         assertEquals(List.of(), d.outliers(), "the campaign has no bad measurement");
     }
+
+    /**
+     * A gross error on a validation pose (2 mm, as on a training pose): it was not reported, and the
+     * validation error it dominated stayed at 4.8 x the floor. It is reported as an outlier and left
+     * out of the validation error, with a note; no clean pose is reported.
+     */
+    @Test
+    void grossErrorOnAValidationPose_isReportedAndLeftOutOfTheValidationError() {
+        WorldCampaigns.Sim c = world("irb2400", Expected.outside(), List.of(new JointError.Scale(0, 2e-4)), p -> p, 12);
+        List<org.robopro.calibration.measurement.Measurement> rows = new ArrayList<>(c.validation().rows());
+        var bad = rows.get(17);
+        rows.set(17, bad.withPosition(bad.position().plus(new org.robopro.models.Vec3(1.2e-3, -1.0e-3, 1.3e-3))));
+        var validation = new org.robopro.calibration.measurement.MeasurementSet(c.validation().source(), c.validation().metadata(),
+                c.validation().frame(), rows);
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), validation);
+        assertEquals(List.of("joint-scale j1"), families(d), "notes " + d.notes());
+        assertEquals(List.of(bad.poseId()), d.outliers());
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("validation pose " + bad.poseId())), d.notes().toString());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+    }
 }
