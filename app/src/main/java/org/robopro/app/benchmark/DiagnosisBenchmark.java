@@ -305,6 +305,13 @@ public final class DiagnosisBenchmark {
         sb.append(String.format(Locale.ROOT, "%nValidation RMS bar (named and null scenarios): %d of %d runs within %.2f × the floor, %d more within "
                         + "%.2f × their twin where the twin itself is above %.2f × the floor, %d meet neither.%n", byFloor, barred.size(), BAR, byTwin,
                 TWIN_MARGIN, TWIN_ABOVE, barred.size() - byFloor - byTwin));
+        List<Run> namedRight = runs.stream().filter(r -> r.outcome() == Outcome.NAMED_RIGHT).toList();
+        List<String> besides = namedRight.stream().filter(r -> !r.located().isEmpty())
+                .map(r -> r.name() + " (seed " + r.seed() + "): " + String.join("; ", r.located())).toList();
+        if (!namedRight.isEmpty())
+            sb.append(String.format(Locale.ROOT, "%nNamed right, with a structure located beside that no named effect explains: %d of %d runs%s%n",
+                    besides.size(), namedRight.size(), besides.isEmpty() ? "." : ":"));
+        for (String b : besides) sb.append("- ").append(b).append('\n');
         long correct = runs.stream().filter(r -> r.correct(BAR)).count();
         sb.append(String.format(Locale.ROOT, "%nRight answers (named right or clean with validation RMS ≤ %.2f × floor, or ≤ %.2f × a twin "
                 + "above %.2f × floor; outside: located and not named; every injected outlier reported, no clean pose reported): %d of %d runs.%n",

@@ -95,6 +95,18 @@ class DiagnosisBenchmarkTest {
         assertTrue(md.contains("over its geometry-only twin's (named and null scenarios): ≤ 1.05: 2, 1.05–1.10: 0, 1.10–1.15: 0, 1.15–1.5: 1"), md);
     }
 
+    @Test
+    void table_listsNamedRightRunsWithAStructureLocatedBeside() {
+        Expected lm = Expected.named(Expected.claim(Expected.Family.LOST_MOTION, 2));
+        var plain = new DiagnosisBenchmark.Run("a", lm, 1, DiagnosisBenchmark.Outcome.NAMED_RIGHT, List.of("backlash j2"), List.of(), 5, 1.02,
+                1.01, 10, 0, 0, 0);
+        var beside = new DiagnosisBenchmark.Run("b", lm, 2, DiagnosisBenchmark.Outcome.NAMED_RIGHT, List.of("backlash j2"),
+                List.of("joint 3's zero jumps at about 316 s"), 5, 1.03, 1.01, 10, 0, 0, 0);
+        String md = DiagnosisBenchmark.markdown(List.of(plain, beside));
+        assertTrue(md.contains("Named right, with a structure located beside that no named effect explains: 1 of 2 runs:\n"
+                + "- b (seed 2): joint 3's zero jumps at about 316 s\n"), md);
+    }
+
     static DiagnosisBenchmark.Run run(double finalRatio, double twinRatio) {
         return new DiagnosisBenchmark.Run("x", Expected.none(), 1, DiagnosisBenchmark.Outcome.CLEAN, List.of(), List.of(), 1.2, finalRatio,
                 twinRatio, 10, 0, 0, 0);

@@ -82,6 +82,8 @@ class ScenarioFilesTest {
                 {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": [{\"family\": \"backlash\", "
                         + "\"joints\": [7]}]}}", "field 'expected.claims[0].joints': joint numbers run from 1 to 6"},
                 {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\"}}", "field 'expected.claims'"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"twin\": \"gone.twin.csv\"}",
+                        "field 'twin': names no campaign file beside the label"},
                 {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02,", "orphan.truth.json:1"}};
         for (String[] l : labels) {
             Files.writeString(set.resolve("orphan.truth.json"), l[0]);
