@@ -537,7 +537,8 @@ public final class Diagnoser {
             Tester t = scanned != null && scannedFit == fit ? scanned : w.tester(fit);
             if (step > 0 && scannedFit != fit) {
                 // Locate again after each accepted effect: what is left may call for other families or harmonics.
-                List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource), o.alpha(), MAX_LOCATED);
+                // (the steps of a reading and of the target are looked for in the geometric fit's and the final residuals only)
+                List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource, false), o.alpha(), MAX_LOCATED);
                 for (Effect e : locatedFallbacks(more, rows, model)) rivals.putIfAbsent(e.label(), e);
                 for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
                     Effect merged = e;

@@ -88,7 +88,14 @@ final class Locator {
      * joints, conditions and measured point (a joint error f(q) changes the length by
      * uᵀ(J_b f(q_b) − J_a f(q_a)), not by a function of one pose's variable).
      */
-    static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs) {
+    static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs) { return probes(t, dirs, true); }
+
+    /**
+     * As above; without {@code steps} the steps of a joint's reading at one angle and of the target
+     * on the flange at one time are left out (the stepwise search's re-scans: such a step shows in the
+     * geometric fit's residuals already, and its probes are a good share of the scan's cost).
+     */
+    static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs, boolean steps) {
         Diagnoser.Work w = t.w;
         int dof = t.dof, poses = w.rows.size(), m = t.m, rpp = t.rpp, ends = t.ends;
         List<Probe> out = new ArrayList<>();
@@ -139,7 +146,7 @@ final class Locator {
                 out.add(p);
             }
             // the reading jumps where the joint passes one angle (an absolute encoder's track): a step at quantiles of q_j
-            for (double q0 : stepPlaces(qx[0], ANGLE_STEP_PLACES)) out.add(angleStep(t, j, Math.toRadians(q0), qx));
+            if (steps) for (double q0 : stepPlaces(qx[0], ANGLE_STEP_PLACES)) out.add(angleStep(t, j, Math.toRadians(q0), qx));
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
                 final int kk = k;
@@ -175,7 +182,7 @@ final class Locator {
             double[][][] rf = new double[ends][poses][];
             for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
             for (double tau : stepPlaces(time[0], STEP_QUANTILES)) {
-                out.add(targetStep(t, tau, time, rf));
+                if (steps) out.add(targetStep(t, tau, time, rf));
                 for (int j = 0; j < dof; j++) out.add(zeroStep(t, j, tau, time));
             }
         }
