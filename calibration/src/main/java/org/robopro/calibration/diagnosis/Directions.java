@@ -20,8 +20,8 @@ import org.robopro.calibration.measurement.MeasurementSet;
  * before the output moves again. So a joint that did not move, or reversed by less than
  * {@link #PLAY_TOLERANCE} (a controller's read-back jitter, far below any lost motion worth
  * modelling), stays on the flank of its last real motion, and small moves in one direction add up
- * from the point the flank was last taken. The direction is on the drive, so it is inferred from the
- * controller's values q (the file's columns), not from model angles: on a parallel-arm robot
+ * from where the joint stood (the mean of its readings since its last real move). The direction
+ * is on the drive, so it is inferred from the controller's values q (the file's columns), not from model angles: on a parallel-arm robot
  * (theta3 = q3 - q2) drive 3's direction is that of q3, whatever theta3 does.
  *
  * <p>The first pose: a campaign program starts from the controller's zero position (the
