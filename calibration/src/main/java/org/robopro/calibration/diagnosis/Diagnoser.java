@@ -448,7 +448,7 @@ public final class Diagnoser {
         }
         Set<String> outlierIds = new HashSet<>(forced);
         List<String> outliers = new ArrayList<>(forced.isEmpty() ? List.of() : forcedOutliers);
-        if (forcedOutliers == null)
+        if (forcedOutliers == null && !manyOutliers) // with many, the calibration only reports them: none is left out
             for (CalibrationResult.Outlier ol : geo.outliers())
                 if (outlierIds.add(ol.poseId())) outliers.add(ol.poseId());
         List<Measurement> rows = new ArrayList<>();
@@ -883,7 +883,38 @@ public final class Diagnoser {
         // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them).
         List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 || !foundFinal.isEmpty() ? List.of()
                 : new ArrayList<>(Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).values());
+        if (!valOut.isEmpty()) {
+            // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
+            Map<String, Measurement> byId = new LinkedHashMap<>();
+            for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
+            org.robopro.kinematics.Pose tool = fit.problem.toolOf(fit.full);
+            valOut.removeIf(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool));
+        }
         return new Run(result, under, valOut);
+    }
+
+    /** Whether a pose lies beyond the range a selected fallback's variable was fitted over (its prediction there is an extrapolation). */
+    private static boolean outsideFitted(List<Effect> selected, Measurement m, ExtendedModel ext, org.robopro.kinematics.Pose tool) {
+        if (m == null) return false;
+        PoseConditions c = PoseConditions.of(m);
+        for (Effect e : selected) {
+            double x = switch (e.kind()) {
+                case SMOOTH -> m.q(e.joint());
+                case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
+                case POINT_SMOOTH -> switch (e.along()) {
+                    case TIME -> c.timeS();
+                    case TEMPERATURE -> c.tempC();
+                    default -> {
+                        var p = ext.tool(m.q(), tool, c).position();
+                        yield e.pointVariable(new double[] {p.x(), p.y(), p.z()});
+                    }
+                };
+                default -> Double.NaN;
+            };
+            double span = e.rangeHi() - e.rangeLo();
+            if (Double.isFinite(x) && (x < e.rangeLo() - 0.01 * span || x > e.rangeHi() + 0.01 * span)) return true;
+        }
+        return false;
     }
 
     /**

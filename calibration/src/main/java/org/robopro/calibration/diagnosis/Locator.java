@@ -41,7 +41,13 @@ final class Locator {
 
     enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT }
 
-    /** Candidate times of a joint's zero step or the target's move, and angles of a reading's step: these quantiles of the poses' values. */
+    /**
+     * Places of a reading's step in a joint's angle: these quantiles of the poses' angles (a step found
+     * is then placed between the two poses that explain it best; at 10 places a step between two of
+     * them lost to the smooth curve before it could be placed).
+     */
+    static final int ANGLE_STEP_PLACES = 20;
+    /** Candidate times of a joint's zero step or the target's move: these quantiles of the poses' times. */
     static final int STEP_QUANTILES = 20;
 
     /** One probe: a block of signature columns. */
@@ -133,7 +139,7 @@ final class Locator {
                 out.add(p);
             }
             // the reading jumps where the joint passes one angle (an absolute encoder's track): a step at quantiles of q_j
-            for (double q0 : stepPlaces(qx[0])) out.add(angleStep(t, j, Math.toRadians(q0), qx));
+            for (double q0 : stepPlaces(qx[0], ANGLE_STEP_PLACES)) out.add(angleStep(t, j, Math.toRadians(q0), qx));
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
                 final int kk = k;
@@ -168,7 +174,7 @@ final class Locator {
             // each pose's flange orientation (row-major), for a move of the measured point on the flange
             double[][][] rf = new double[ends][poses][];
             for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
-            for (double tau : stepPlaces(time[0])) {
+            for (double tau : stepPlaces(time[0], STEP_QUANTILES)) {
                 out.add(targetStep(t, tau, time, rf));
                 for (int j = 0; j < dof; j++) out.add(zeroStep(t, j, tau, time));
             }
@@ -230,14 +236,14 @@ final class Locator {
      * Places of a step in a variable: halfway between two poses' values at the quantiles k/{@link #STEP_QUANTILES}
      * (k = 1..19), leaving at least 3 poses on each side.
      */
-    static List<Double> stepPlaces(double[] x) {
+    static List<Double> stepPlaces(double[] x, int quantiles) {
         double[] sorted = x.clone();
         Arrays.sort(sorted);
         int poses = sorted.length;
         List<Double> out = new ArrayList<>();
         double last = Double.NaN;
-        for (int k = 1; k < STEP_QUANTILES; k++) {
-            int i = k * poses / STEP_QUANTILES;
+        for (int k = 1; k < quantiles; k++) {
+            int i = k * poses / quantiles;
             if (i < 3 || i > poses - 3 || !(sorted[i] > sorted[i - 1])) continue;
             double at = 0.5 * (sorted[i - 1] + sorted[i]);
             if (at == last) continue;
@@ -303,7 +309,7 @@ final class Locator {
         Arrays.sort(v);
         int at = 0;
         while (at < v.length && v[at] <= p.lo) at++;
-        int reach = Math.max(1, v.length / STEP_QUANTILES);
+        int reach = Math.max(1, v.length / (p.var == Var.ANGLE_STEP ? ANGLE_STEP_PLACES : STEP_QUANTILES));
         List<Probe> out = new ArrayList<>();
         for (int i = Math.max(1, at - reach); i <= Math.min(v.length - 1, at + reach); i++) {
             double place = 0.5 * (v[i - 1] + v[i]);
