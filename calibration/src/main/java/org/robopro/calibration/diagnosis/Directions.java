@@ -20,8 +20,8 @@ import org.robopro.calibration.measurement.MeasurementSet;
  * before the output moves again. So a joint that did not move, or reversed by less than
  * {@link #PLAY_TOLERANCE} (a controller's read-back jitter, far below any lost motion worth
  * modelling), stays on the flank of its last real motion, and small moves in one direction add up
- * from the point the flank was last taken. The direction is on the drive, so it is inferred from the
- * controller's values q (the file's columns), not from model angles: on a parallel-arm robot
+ * from where the joint stood (the mean of its readings since its last real move). The direction
+ * is on the drive, so it is inferred from the controller's values q (the file's columns), not from model angles: on a parallel-arm robot
  * (theta3 = q3 - q2) drive 3's direction is that of q3, whatever theta3 does.
  *
  * <p>The first pose: a campaign program starts from the controller's zero position (the
@@ -105,19 +105,15 @@ public final class Directions {
      */
     static Map<String, int[]> infer(List<Measurement> inOrder, double[] start) {
         Map<String, int[]> out = new HashMap<>();
-        double[] taken = start == null ? null : start.clone();
+        StillPoints at = start == null ? null : new StillPoints(start, false);
         int[] d = null;
         for (Measurement m : inOrder) {
             int n = m.dof();
-            if (taken == null) taken = m.q();
+            if (at == null) at = new StillPoints(m.q(), true);
             if (d == null) d = new int[n];
             for (int j = 0; j < n; j++) {
-                double q = m.q(j), moved = q - taken[j];
-                if (d[j] != 0 && moved * d[j] >= 0) taken[j] = q;               // further along the same flank
-                else if (Math.abs(moved) > PLAY_TOLERANCE) {                    // took up the play the other way (or first real move)
-                    d[j] = moved > 0 ? 1 : -1;
-                    taken[j] = q;
-                }                                                               // else: within the play, still on its flank
+                double moved = at.moved(j, m.q(j));
+                if (moved != 0) d[j] = moved > 0 ? 1 : -1;                      // further along its flank, or took up the play the other way
             }
             out.put(m.poseId(), d.clone());
         }
@@ -170,14 +166,50 @@ public final class Directions {
     }
 
     private static void lastMoves(List<Measurement> inOrder, Map<Measurement, double[]> out) {
-        double[] prev = null, last = null;
+        StillPoints at = null;
+        double[] last = null;
         for (Measurement m : inOrder) {
-            if (prev == null) { prev = new double[m.dof()]; last = new double[m.dof()]; }
+            if (at == null) { at = new StillPoints(new double[m.dof()], false); last = new double[m.dof()]; }
             for (int j = 0; j < m.dof(); j++) {
-                double moved = m.q(j) - prev[j];
-                if (Math.abs(moved) > PLAY_TOLERANCE) { last[j] = moved; prev[j] = m.q(j); }
+                double moved = at.moved(j, m.q(j));
+                if (moved != 0) last[j] = moved;
             }
             out.put(m, last.clone());
+        }
+    }
+
+    /**
+     * Where each joint stands since its last real move: the mean of its readings since then. A
+     * reading within {@link #PLAY_TOLERANCE} of that mean is read-back jitter, not a move: it
+     * neither turns the joint nor moves its standing point, and joins the mean. Against the mean
+     * a jitter of σ differs by about σ, where against one earlier reading it would differ by
+     * √2·σ, and against the jitter's running extreme (taking every reading "further along the
+     * flank" as a move) by more with every pose, until an ordinary reading crosses the tolerance
+     * and turns a joint that never moved.
+     */
+    private static final class StillPoints {
+        private final double[] sum;
+        private final int[] count;
+
+        /** {@code measured}: {@code q} is a first reading (it joins the mean); else a known position (the zero a program starts at). */
+        StillPoints(double[] q, boolean measured) {
+            sum = q.clone();
+            count = new int[q.length];
+            java.util.Arrays.fill(count, 1);
+            if (!measured) java.util.Arrays.fill(count, -1);
+        }
+
+        /** The real move to reading {@code q} of joint {@code j} (then standing there), or 0 when within the tolerance. */
+        double moved(int j, double q) {
+            double here = count[j] < 0 ? sum[j] : sum[j] / count[j];
+            double moved = q - here;
+            if (Math.abs(moved) <= PLAY_TOLERANCE) {
+                if (count[j] > 0) { sum[j] += q; count[j]++; }
+                return 0;
+            }
+            sum[j] = q;
+            count[j] = 1;
+            return moved;
         }
     }
 

@@ -39,15 +39,19 @@ class DirectionsTest {
 
     @Test
     void infer_reversalWithinThePlayTolerance_keepsTheFlank_andSmallMovesAddUp() {
-        double e = 0.4 * Directions.PLAY_TOLERANCE;
-        // joint 1 goes up to 1, then jitters back by e (read-back noise), then goes on down in steps of e.
+        double t = Directions.PLAY_TOLERANCE, e = 0.38 * t;
+        // joint 1 goes up to 1, then creeps back in steps of e (each within the tolerance, read as
+        // jitter about where it stands: the mean of its readings since it moved), then up by 0.5 tolerance.
         Map<String, int[]> d = Directions.infer(List.of(row("a", 0, 1, null, 1), row("b", 1, 2, null, 1 - e),
-                row("c", 2, 3, null, 1 - 2 * e), row("d", 3, 4, null, 1 - 3 * e), row("e", 4, 5, null, 1 - 2.5 * e)));
+                row("c", 2, 3, null, 1 - 2 * e), row("d", 3, 4, null, 1 - 3 * e), row("e", 4, 5, null, 1 - 4 * e),
+                row("f", 5, 6, null, 1 - 5 * e), row("g", 6, 7, null, 1 - 5 * e + 0.5 * t)));
         assertArrayEquals(new int[] {1}, d.get("a"));
-        assertArrayEquals(new int[] {1}, d.get("b"), "0.4 tolerance back: still on the + flank");
-        assertArrayEquals(new int[] {1}, d.get("c"), "0.8 tolerance back from where it took the flank: still +");
-        assertArrayEquals(new int[] {-1}, d.get("d"), "1.2 tolerance back: the play is taken the other way");
-        assertArrayEquals(new int[] {-1}, d.get("e"), "0.5 tolerance up again: stays on the - flank");
+        assertArrayEquals(new int[] {1}, d.get("b"), "0.38 tolerance back: still on the + flank");
+        assertArrayEquals(new int[] {1}, d.get("c"), "0.57 tolerance below where it stands (the mean of its two readings): still +");
+        assertArrayEquals(new int[] {1}, d.get("d"), "0.76 below the mean of three readings: still +");
+        assertArrayEquals(new int[] {1}, d.get("e"), "0.95 below the mean of four: still +");
+        assertArrayEquals(new int[] {-1}, d.get("f"), "1.14 below the mean of five: the creep has added up, the play is taken the other way");
+        assertArrayEquals(new int[] {-1}, d.get("g"), "0.5 tolerance up again: stays on the - flank");
     }
 
     @Test

@@ -33,10 +33,24 @@ class DirectionsWorldTest {
     @CsvSource({"irb2000,NEAREST,0,1", "irb2000,AS_DRAWN,0,2", "irb2400,NEAREST,0,3", "puma560,NEAREST,0,4", "puma560,AS_DRAWN,0,5",
             "irb2000,NEAREST,2,6", "irb2000,NEAREST,1,7", "puma560,NEAREST,3,8"})
     void inferredDirections_equalTheWorldsTrueDirections_onEveryPoseAndDrive(String robot, Campaign.Order order, int moved, long seed) {
-        Scenario s = Scenario.ofFamily("null").stream().filter(x -> x.robot().equals(robot)).findFirst().orElseThrow();
         // moved > 0: a joint-by-joint campaign, the still joints showing only the controller's read-back jitter
         // the campaign drawn from the plan seeded with the case's seed
-        UnaryOperator<Campaign.Plan> plan = p -> p.withSeed(seed).withDirColumns(false).withOrder(order).withMovedJoints(moved);
+        check(robot, seed, p -> p.withSeed(seed).withDirColumns(false).withOrder(order).withMovedJoints(moved));
+    }
+
+    /**
+     * Joint-by-joint campaigns on the world's own draws (each scenario's stream): long runs of a
+     * still joint, whose read-back jitter must never add up to a reversal.
+     */
+    @ParameterizedTest(name = "irb2000, one joint moved per pose, seed {0}")
+    @org.junit.jupiter.params.provider.ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
+            21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39, 40})
+    void stillJointsJitter_neverTurnTheirFlank(long seed) {
+        check("irb2000", seed, p -> p.withDirColumns(false).withMovedJoints(1));
+    }
+
+    private static void check(String robot, long seed, UnaryOperator<Campaign.Plan> plan) {
+        Scenario s = Scenario.ofFamily("null").stream().filter(x -> x.robot().equals(robot)).findFirst().orElseThrow();
         Campaign.Result c = s.trial(seed, plan).campaign();
         RobotDescription r = RobotLibrary.shipped(robot);
         MeasurementSet all = MeasurementReader.parse("world.csv", c.text(), r.joints().stream().map(JointDescription::type).toList());
