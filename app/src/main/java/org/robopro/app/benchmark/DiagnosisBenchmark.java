@@ -134,9 +134,13 @@ public final class DiagnosisBenchmark {
          * How the run meets the validation-RMS bar: "floor" when it is within {@code bar} × the noise
          * floor; "twin" when it is not, but its geometry-only twin itself ends above
          * {@link #TWIN_ABOVE} × the floor (the campaign is too small for the bar, whatever is
-         * concealed) and the run is within {@link #TWIN_MARGIN} × the twin; null when it fails.
+         * concealed) and the run is within {@link #TWIN_MARGIN} × the twin; {@link #UNMEASURED} when
+         * the file has no validation poses (the diagnosis judged its claims by K-fold
+         * cross-validation; the verdict alone is scored and the summary counts these apart); null
+         * when it fails.
          */
         public String rmsRoute(double bar) {
+            if (Double.isNaN(finalRatio) && Double.isNaN(geoRatio)) return UNMEASURED;
             if (finalRatio <= bar) return "floor";
             if (twinRatio > TWIN_ABOVE && finalRatio <= TWIN_MARGIN * twinRatio) return "twin";
             return null;
@@ -151,6 +155,9 @@ public final class DiagnosisBenchmark {
                     outliersFound, outliersInjected, cleanFlagged, ms);
         }
     }
+
+    /** {@link Run#rmsRoute}'s answer for a campaign file without validation poses. */
+    public static final String UNMEASURED = "no validation poses";
 
     /** The validation RMS a named (or null) run must reach, times the noise floor. */
     public static final double BAR = 1.15;
@@ -302,9 +309,11 @@ public final class DiagnosisBenchmark {
         List<Run> barred = runs.stream().filter(r -> r.expected().verdict() != Expected.Verdict.OUTSIDE).toList();
         long byFloor = barred.stream().filter(r -> "floor".equals(r.rmsRoute(BAR))).count();
         long byTwin = barred.stream().filter(r -> "twin".equals(r.rmsRoute(BAR))).count();
+        long unmeasured = barred.stream().filter(r -> UNMEASURED.equals(r.rmsRoute(BAR))).count();
         sb.append(String.format(Locale.ROOT, "%nValidation RMS bar (named and null scenarios): %d of %d runs within %.2f × the floor, %d more within "
-                        + "%.2f × their twin where the twin itself is above %.2f × the floor, %d meet neither.%n", byFloor, barred.size(), BAR, byTwin,
-                TWIN_MARGIN, TWIN_ABOVE, barred.size() - byFloor - byTwin));
+                        + "%.2f × their twin where the twin itself is above %.2f × the floor, %d meet neither%s.%n", byFloor, barred.size(), BAR, byTwin,
+                TWIN_MARGIN, TWIN_ABOVE, barred.size() - byFloor - byTwin - unmeasured,
+                unmeasured == 0 ? "" : String.format(Locale.ROOT, "; files without validation poses, verdict scored alone: %d", unmeasured)));
         List<Run> namedRight = runs.stream().filter(r -> r.outcome() == Outcome.NAMED_RIGHT).toList();
         List<String> besides = namedRight.stream().filter(r -> !r.located().isEmpty())
                 .map(r -> r.name() + " (seed " + r.seed() + "): " + String.join("; ", r.located())).toList();

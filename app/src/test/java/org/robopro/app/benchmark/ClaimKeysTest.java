@@ -27,4 +27,18 @@ class ClaimKeysTest {
         var keys = DiagnosisBenchmark.keys(new Expected.Claim(Expected.Family.CROSS_COUPLING, List.of(3, 2)));
         assertEquals(List.of(DiagnosisBenchmark.key(Expected.Family.CROSS_COUPLING, List.of(3, 2))), keys);
     }
+
+    /** A file without validation poses has no validation RMS: its verdict is scored alone, and counted apart. */
+    @Test
+    void noValidationPoses_verdictScoredAlone_andNamedAsSuch() {
+        Expected named = new Expected(Expected.Verdict.NAMED, List.of(new Expected.Claim(Expected.Family.LOST_MOTION, List.of(2))));
+        var right = new DiagnosisBenchmark.Run("f", named, 0, DiagnosisBenchmark.Outcome.NAMED_RIGHT, List.of("backlash j2"), List.of(),
+                Double.NaN, Double.NaN, Double.NaN, 1, 0, 0, 0);
+        assertEquals(DiagnosisBenchmark.UNMEASURED, right.rmsRoute(DiagnosisBenchmark.BAR));
+        org.junit.jupiter.api.Assertions.assertTrue(right.correct(DiagnosisBenchmark.BAR));
+        var measured = new DiagnosisBenchmark.Run("f", named, 0, DiagnosisBenchmark.Outcome.NAMED_RIGHT, List.of("backlash j2"), List.of(),
+                4.0, 1.3, Double.NaN, 1, 0, 0, 0);
+        org.junit.jupiter.api.Assertions.assertFalse(measured.correct(DiagnosisBenchmark.BAR), "1.3 x the floor with validation poses fails");
+        org.junit.jupiter.api.Assertions.assertTrue(DiagnosisBenchmark.markdown(List.of(right, measured)).contains("files without validation poses, verdict scored alone: 1"));
+    }
 }
