@@ -21,8 +21,9 @@ import org.robopro.calibration.measurement.MeasurementSet;
  * {@link #PLAY_TOLERANCE} (a controller's read-back jitter, far below any lost motion worth
  * modelling), stays on the flank of its last real motion, and small moves in one direction add up
  * from where the joint stood (the mean of its readings since its last real move). The direction
- * is on the drive, so it is inferred from the controller's values q (the file's columns), not from model angles: on a parallel-arm robot
- * (theta3 = q3 - q2) drive 3's direction is that of q3, whatever theta3 does.
+ * is on the drive, so it is inferred from the controller's values q (the file's columns), not from
+ * model angles: on a parallel-arm robot (theta3 = q3 - q2) drive 3's direction is that of q3,
+ * whatever theta3 does.
  *
  * <p>The first pose: a campaign program starts from the controller's zero position (the
  * synchronisation position every axis reads 0 in, where a robot is parked and a measuring program
@@ -68,16 +69,27 @@ public final class Directions {
     public static Prepared prepare(MeasurementSet train, MeasurementSet validate) {
         if (train.size() == 0 || train.hasDirections())
             return new Prepared(train, validate, train.size() > 0 ? Source.RECORDED : Source.NONE);
-        boolean sameFile = validate != null && validate.size() > 0 && Objects.equals(train.source(), validate.source());
-        List<Measurement> file = new ArrayList<>(train.rows());
-        if (sameFile) file.addAll(validate.rows());
-        Source src = orderSource(file);
-        Map<String, int[]> dirs = infer(ordered(file));
+        List<List<Measurement>> seqs = sequences(train, validate);
+        Source src = orderSource(seqs.get(0));
+        Map<String, int[]> dirs = infer(seqs.get(0));
         MeasurementSet t = apply(train, dirs);
         MeasurementSet v = validate;
         if (validate != null && validate.size() > 0 && !validate.hasDirections())
-            v = apply(validate, sameFile ? dirs : infer(ordered(validate.rows())));
+            v = apply(validate, seqs.size() > 1 ? infer(seqs.get(1)) : dirs);
         return new Prepared(t, v, src);
+    }
+
+    /**
+     * The campaign's measuring sequences, each in measuring order ({@link #ordered}): the training
+     * rows together with the validation rows of the same file (same {@link MeasurementSet#source()}),
+     * then a validation set from another file on its own. Pose ids are unique within a sequence only.
+     */
+    private static List<List<Measurement>> sequences(MeasurementSet train, MeasurementSet validate) {
+        boolean otherRows = validate != null && validate.size() > 0;
+        boolean sameFile = otherRows && Objects.equals(train.source(), validate.source());
+        List<Measurement> file = new ArrayList<>(train.rows());
+        if (sameFile) file.addAll(validate.rows());
+        return otherRows && !sameFile ? List.of(ordered(file), ordered(validate.rows())) : List.of(ordered(file));
     }
 
     private static Source orderSource(List<Measurement> rows) {
@@ -129,11 +141,7 @@ public final class Directions {
     public static List<Measurement> fromStart(MeasurementSet train, MeasurementSet validate, int j) {
         List<Measurement> out = new ArrayList<>();
         if (train.size() == 0 || train.isPairs()) return out;
-        boolean sameFile = validate != null && validate.size() > 0 && Objects.equals(train.source(), validate.source());
-        List<Measurement> file = new ArrayList<>(train.rows());
-        if (sameFile) file.addAll(validate.rows());
-        startRows(ordered(file), j, out);
-        if (validate != null && validate.size() > 0 && !sameFile) startRows(ordered(validate.rows()), j, out);
+        for (List<Measurement> seq : sequences(train, validate)) startRows(seq, j, out);
         return out;
     }
 
@@ -156,12 +164,8 @@ public final class Directions {
      */
     public static Moves moves(MeasurementSet train, MeasurementSet validate) {
         if (train.size() == 0 || train.isPairs()) return Moves.NONE;
-        List<Measurement> file = new ArrayList<>(train.rows());
-        boolean sameFile = validate != null && validate.size() > 0 && Objects.equals(train.source(), validate.source());
-        if (sameFile) file.addAll(validate.rows());
         Map<Measurement, double[]> out = new HashMap<>();
-        lastMoves(ordered(file), out);
-        if (validate != null && validate.size() > 0 && !sameFile) lastMoves(ordered(validate.rows()), out);
+        for (List<Measurement> seq : sequences(train, validate)) lastMoves(seq, out);
         return new Moves(out);
     }
 
