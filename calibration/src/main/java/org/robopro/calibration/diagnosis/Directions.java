@@ -117,11 +117,11 @@ public final class Directions {
      */
     static Map<String, int[]> infer(List<Measurement> inOrder, double[] start) {
         Map<String, int[]> out = new HashMap<>();
-        StillPoints at = start == null ? null : new StillPoints(start, false);
+        StillPoints at = null;
         int[] d = null;
         for (Measurement m : inOrder) {
             int n = m.dof();
-            if (at == null) at = new StillPoints(m.q(), true);
+            if (at == null) at = new StillPoints(n, start);
             if (d == null) d = new int[n];
             for (int j = 0; j < n; j++) {
                 double moved = at.moved(j, m.q(j));
@@ -173,7 +173,7 @@ public final class Directions {
         StillPoints at = null;
         double[] last = null;
         for (Measurement m : inOrder) {
-            if (at == null) { at = new StillPoints(new double[m.dof()], false); last = new double[m.dof()]; }
+            if (at == null) { at = new StillPoints(m.dof(), new double[m.dof()]); last = new double[m.dof()]; }
             for (int j = 0; j < m.dof(); j++) {
                 double moved = at.moved(j, m.q(j));
                 if (moved != 0) last[j] = moved;
@@ -192,19 +192,24 @@ public final class Directions {
      * and turns a joint that never moved.
      */
     private static final class StillPoints {
+        /** Per joint: the sum of its readings since its last real move, or the known start position. */
         private final double[] sum;
+        /** Per joint: how many readings {@link #sum} holds; -1: it holds the known start; 0: nothing yet. */
         private final int[] count;
 
-        /** {@code measured}: {@code q} is a first reading (it joins the mean); else a known position (the zero a program starts at). */
-        StillPoints(double[] q, boolean measured) {
-            sum = q.clone();
-            count = new int[q.length];
-            java.util.Arrays.fill(count, 1);
-            if (!measured) java.util.Arrays.fill(count, -1);
+        /**
+         * {@code n} joints starting at {@code start}, a known position (the zero a program starts at),
+         * or, when null, where the first reading finds them.
+         */
+        StillPoints(int n, double[] start) {
+            sum = start == null ? new double[n] : start.clone();
+            count = new int[n];
+            if (start != null) java.util.Arrays.fill(count, -1);
         }
 
         /** The real move to reading {@code q} of joint {@code j} (then standing there), or 0 when within the tolerance. */
         double moved(int j, double q) {
+            if (count[j] == 0) { sum[j] = q; count[j] = 1; return 0; }
             double here = count[j] < 0 ? sum[j] : sum[j] / count[j];
             double moved = q - here;
             if (Math.abs(moved) <= PLAY_TOLERANCE) {
