@@ -766,7 +766,8 @@ public final class Effect {
         Map<String, Double> ps = d.parameters();
         Effect e = switch (kind) {
             case COMPLIANCE -> {
-                if (gravity == null)
+                // a compliance "c" is a stiffness on the file's masses; without them only the remassed form means anything
+                if (gravity == null || gravity.massesUnknown() && ps.containsKey("c"))
                     throw new InputException(file, 0, 0, "mass_model", "joint-compliance needs the robot's mass_model");
                 yield ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }

@@ -50,6 +50,18 @@ class ExtendedModelTest {
         }
     }
 
+    /** A compliance given as a stiffness on the file's masses, in a robot file that has no masses, is refused, not evaluated on stand-ins. */
+    @Test
+    void robotFile_complianceOnMassesTheFileDoesNotHave_refusedNamingTheMassModel() {
+        RobotDescription noMasses = RobotLibrary.shipped("irb2400");
+        assertTrue(noMasses.massModel().isEmpty(), "the IRB 2400 file has no mass model");
+        RobotDescription withCompliance = noMasses.withEffects(List.of(
+                new org.robopro.models.EffectDescription("joint-compliance", List.of(2), java.util.Map.of("c", 1e-6))));
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> ExtendedModel.of(withCompliance, "x.robot.json"));
+        assertTrue(e.getMessage().contains("x.robot.json") && e.getMessage().contains("mass_model"), e.getMessage());
+    }
+
     @Test
     void robotFile_roundTrip_predictsTheSame() {
         ExtendedModel ext = new ExtendedModel(model, terms);
