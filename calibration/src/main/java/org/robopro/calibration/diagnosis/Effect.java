@@ -212,8 +212,14 @@ public final class Effect {
     /** A wind-up's share of its full lag after row m's last move of its joint (1 when the move is unknown). */
     double windUpShare(Measurement m) {
         double x = m == null ? Double.NaN : moves.of(m, joint);
-        return Double.isFinite(x) ? 1 - Math.exp(-Math.abs(x) / buildUp) : 1;
+        return Double.isFinite(x) ? windUpShare(x, buildUp) : 1;
     }
+
+    /**
+     * The share of its full lag a lost motion has built up after a move of {@code moveRad} (either
+     * sign), with build-up length {@code buildUpRad}: 1 − exp(−|move|/x0) (Dahl's solid friction).
+     */
+    static double windUpShare(double moveRad, double buildUpRad) { return 1 - Math.exp(-Math.abs(moveRad) / buildUpRad); }
 
     /** The signed last move of this effect's joint before row m (NaN when unknown). */
     double lastMove(Measurement m) { return moves.of(m, joint); }

@@ -23,8 +23,7 @@ public final class GravityTorques {
     private final Vec3[] local;     // centre of mass in that frame
     private final Vec3 gravity;
     private final int payloadSlot;  // index of the payload entry (mass set per pose)
-    private final boolean massesUnknown;
-    private final String[] names;
+    private final String[] names;   // the unknown-mass form's column names; null for a file's mass model
 
     /** Links (1-based frames) whose unknown first moments stand for the arm's weight when the file has no mass model. */
     static final int UNKNOWN_MASS_LINKS = 3;
@@ -32,14 +31,13 @@ public final class GravityTorques {
     static final double UNKNOWN_MASS_LEVER_M = 0.5;
 
     private GravityTorques(KinematicModel model, int[] frameIndex, double[] mass, Vec3[] local, Vec3 gravity, int payloadSlot,
-                           boolean massesUnknown, String[] names) {
+                           String[] names) {
         this.model = model;
         this.frameIndex = frameIndex;
         this.mass = mass;
         this.local = local;
         this.gravity = gravity;
         this.payloadSlot = payloadSlot;
-        this.massesUnknown = massesUnknown;
         this.names = names;
     }
 
@@ -80,17 +78,16 @@ public final class GravityTorques {
                 loc[k] = offs[a];
                 names[k] = "link" + i + "_" + axis[a];
             }
-        return new GravityTorques(model, fi, m, loc, new Vec3(0, 0, -9.80665), 0, true, names);
+        return new GravityTorques(model, fi, m, loc, new Vec3(0, 0, -9.80665), 0, names);
     }
 
     /** Whether the masses are unknown ({@link #massesUnknown(KinematicModel)}): only the payload's coefficient is a compliance. */
-    public boolean massesUnknown() { return massesUnknown; }
+    public boolean massesUnknown() { return names != null; }
 
     /** Index of the payload among the masses. */
     public int payloadIndex() { return payloadSlot; }
 
     public GravityTorques(KinematicModel model, MassModel masses) {
-        this.massesUnknown = false;
         this.names = null;
         this.model = model;
         int n = model.dof();

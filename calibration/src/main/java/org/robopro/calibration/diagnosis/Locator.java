@@ -97,7 +97,7 @@ final class Locator {
      */
     static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs, boolean steps) {
         Diagnoser.Work w = t.w;
-        int dof = t.dof, poses = w.rows.size(), m = t.m, rpp = t.rpp, ends = t.ends;
+        int dof = t.dof, poses = w.rows.size(), ends = t.ends;
         List<Probe> out = new ArrayList<>();
         int hMax = harmonicsFor(poses);
         for (int j = 0; j < dof; j++) {
@@ -179,8 +179,9 @@ final class Locator {
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", false));
             for (int j = 0; j < dof; j++) out.add(zero(t, j, Var.TIME, time, "time", "time since the start (s)"));
             // each pose's flange orientation (row-major), for a move of the measured point on the flange
-            double[][][] rf = new double[ends][poses][];
-            for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
+            double[][][] rf = steps ? new double[ends][poses][] : null;
+            if (steps)
+                for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
             for (double tau : stepPlaces(time[0], STEP_QUANTILES)) {
                 if (steps) out.add(targetStep(t, tau, time, rf));
                 for (int j = 0; j < dof; j++) out.add(zeroStep(t, j, tau, time));
@@ -218,9 +219,8 @@ final class Locator {
             double lo = min(reach), hi = max(reach);
             int k = 3 * Effect.POINT_BASIS;
             Probe q = translation(t, k, (e, i, g) -> {
-                double[] b = new double[Effect.POINT_BASIS];
-                Effect.bspline(reach[e][i], lo, hi, b);
-                for (int c = 0; c < b.length; c++) g[c] = b[c] * pay[e][i];
+                Effect.bspline(reach[e][i], lo, hi, g); // g holds the POINT_BASIS functions; then times the payload
+                for (int c = 0; c < Effect.POINT_BASIS; c++) g[c] *= pay[e][i];
             });
             q.var = Var.PAYLOAD_REACH;
             q.variable = "payload and reach";

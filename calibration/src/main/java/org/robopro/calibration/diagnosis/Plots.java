@@ -146,7 +146,7 @@ final class Plots {
                 yield s;
             }
             case BACKLASH -> e.buildsUp() // the lag builds up with the move: −(b/2)·dir·(1 − exp(−|move|/x0))
-                    ? -0.5 * v[0] * Math.signum(x) * (1 - Math.exp(-Math.abs(Math.toRadians(x)) / e.buildUpRad()))
+                    ? -0.5 * v[0] * Math.signum(x) * Effect.windUpShare(Math.toRadians(x), e.buildUpRad())
                     : -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING -> v[0] * Math.toRadians(x);
