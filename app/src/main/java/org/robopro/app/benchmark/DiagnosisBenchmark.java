@@ -67,9 +67,10 @@ public final class DiagnosisBenchmark {
      * @param seed       the seed it was drawn with (0 when unknown)
      * @param twinText   the measurement text of the campaign's geometry-only twin (same poses, order and noise
      *                   draws, no concealed effect, no outlier), or null when there is none
+     * @param twinFileName the twin's measurement file name (for messages), or null when there is none
      */
     public record Case(String name, String group, RobotDescription robot, String fileName, String text, Expected expected,
-                       double sigmaM, Set<String> outlierIds, long seed, String twinText) {
+                       double sigmaM, Set<String> outlierIds, long seed, String twinText, String twinFileName) {
         public Case { outlierIds = Set.copyOf(outlierIds); }
 
         /** A world trial as a case: its campaign text and the scenario's expected answer, without a twin. */
@@ -81,13 +82,12 @@ public final class DiagnosisBenchmark {
             for (var r : t.campaign().rows()) if (r.outlier()) outliers.add(r.id());
             return new Case(t.scenario().name(), t.scenario().family(), RobotLibrary.shipped(t.scenario().robot()),
                     t.scenario().name() + ".csv", t.campaign().text(), t.scenario().expected(), t.campaign().plan().sigmaM(), outliers, t.seed(),
-                    twin == null ? null : twin.campaign().text());
+                    twin == null ? null : twin.campaign().text(), twin == null ? null : t.scenario().name() + ScenarioFiles.TWIN);
         }
 
         /** The twin's campaign as a case of its own: nothing concealed, nothing to find. */
         Case twin() {
-            return new Case(name + " (twin)", group, robot, fileName.replaceAll("\\.csv$", "") + " (twin)", twinText, Expected.none(), sigmaM,
-                    Set.of(), seed, null);
+            return new Case(name + " (twin)", group, robot, twinFileName, twinText, Expected.none(), sigmaM, Set.of(), seed, null, null);
         }
     }
 

@@ -103,8 +103,12 @@ public final class ScenarioFiles {
             twin = csv.resolveSibling(tn.asString());
             if (!Files.isRegularFile(twin)) throw tn.error("names no campaign file beside the label: \"" + tn.asString() + "\"");
         }
-        return new DiagnosisBenchmark.Case(name, group, robot, csv.toString(), Files.readString(csv), expected, sigmaMm * 1e-3,
-                outliers, seed, twin == null ? null : Files.readString(twin));
+        DiagnosisBenchmark.Case c = new DiagnosisBenchmark.Case(name, group, robot, csv.toString(), Files.readString(csv), expected, sigmaMm * 1e-3,
+                outliers, seed, twin == null ? null : Files.readString(twin), twin == null ? null : twin.toString());
+        // Both measurement files read now, so that a bad one stops the benchmark before anything is diagnosed.
+        DiagnosisBenchmark.read(c);
+        if (twin != null) DiagnosisBenchmark.read(c.twin());
+        return c;
     }
 
     /** The error for {@code field} of {@code obj}: at the value when it is given, else at the object. */

@@ -120,6 +120,26 @@ class ScenarioFilesTest {
             assertEquals(1, g.err().strip().lines().count(), l[0] + " -> " + g.err());
             assertFalse(g.out().contains("| null"), "nothing run: " + g.out());
         }
+        // A bad measurement file, the campaign's or its twin's, is refused when the set is read, naming that file and its
+        // line, before any campaign is diagnosed (the campaign sorted before it included).
+        String good = Files.readString(set.resolve("null-irb2000-50-poses-s3.csv"));
+        String bad = good.replaceFirst("\n([^\n]*)\n", "\n$1\nnot,a,row\n");
+        int badLine = (int) good.substring(0, good.indexOf('\n', good.indexOf('\n') + 1)).lines().count() + 1;
+        Files.writeString(set.resolve("orphan.truth.json"),
+                "{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"twin\": \"orphan.twin.csv\"}");
+        for (String f : List.of("orphan.twin.csv", "orphan.csv")) {
+            Files.writeString(set.resolve("orphan.csv"), good);
+            Files.writeString(set.resolve("orphan.twin.csv"), good);
+            Files.writeString(set.resolve(f), bad);
+            CliHarness g = new CliHarness();
+            assertEquals(2, g.run("diagnose-benchmark", "--scenarios", set.toString(), "--verbose"), f);
+            assertTrue(g.err().contains(set.resolve(f) + ":" + badLine + ":"), f + " -> " + g.err());
+            assertEquals(1, g.err().strip().lines().count(), "one line, nothing diagnosed: " + g.err());
+        }
+        Files.delete(set.resolve("orphan.csv"));
+        Files.delete(set.resolve("orphan.twin.csv"));
+        Files.delete(set.resolve("orphan.truth.json"));
+
         // Writing refuses to replace a file without --force, and writes nothing then.
         CliHarness w = new CliHarness();
         assertEquals(2, w.run("diagnose-benchmark", "--write-scenarios", set.toString(), "--scenario", "null irb2000, 50 poses", "--seeds", "1",
