@@ -1100,24 +1100,38 @@ public final class Diagnoser {
             List<Effect> fams = selected.stream().filter(e -> !e.isFallback() && e.joint() == jj
                     && (e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SCALE)).toList();
             if (fams.size() < 2) continue;
+            List<Effect> eligible = rivals.stream().filter(r -> r.joint() == jj
+                    && (r.kind() == Effect.Kind.ANGLE_STEP || r.kind() == Effect.Kind.SMOOTH)
+                    && selected.stream().noneMatch(x -> x.label().equals(r.label()))).toList();
+            if (eligible.isEmpty()) continue;
             double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
             boolean hasVal = w.validate != null && w.validate.size() > 0;
-            for (Effect r : rivals) {
-                if (r.joint() != j || r.kind() != Effect.Kind.ANGLE_STEP && r.kind() != Effect.Kind.SMOOTH
-                        || selected.stream().anyMatch(x -> x.label().equals(r.label()))) continue;
-                List<Effect> sel0 = new ArrayList<>(selected);
-                Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
-                List<Step> steps0 = new ArrayList<>(steps);
-                double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
-                Fit f = fit;
-                for (Effect e : fams) {
-                    int k = selected.indexOf(e);
-                    selected.remove(k);
-                    absorbedCols.remove(e);
-                    steps.remove(k);
-                    f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
-                }
-                Candidate bc = w.tester(f).test(r, w.conditions);
+            List<Effect> sel0 = new ArrayList<>(selected);
+            Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> steps0 = new ArrayList<>(steps);
+            double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
+            // The joint's families taken out once: the model every rival is tested on and added to.
+            Fit f = fit;
+            for (Effect e : fams) {
+                int k = selected.indexOf(e);
+                selected.remove(k);
+                absorbedCols.remove(e);
+                steps.remove(k);
+                f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
+            }
+            Tester ft = w.tester(f);
+            List<Effect> selF = new ArrayList<>(selected);
+            Map<Effect, boolean[]> absF = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> stepsF = new ArrayList<>(steps);
+            boolean taken = false;
+            for (Effect r : eligible) {
+                selected.clear();
+                selected.addAll(selF);
+                absorbedCols.clear();
+                absorbedCols.putAll(absF);
+                steps.clear();
+                steps.addAll(stepsF);
+                Candidate bc = ft.test(r, w.conditions);
                 if (bc.keptColumns > 0 && bc.pressAfter < bc.pressBefore) {
                     selected.add(r);
                     absorbedCols.put(r, bc.absorbedMask);
@@ -1131,9 +1145,12 @@ public final class Diagnoser {
                                 + "angle, and %s in their place predicts left-out poses better (leave-one-pose-out error %.1f against %.1f)",
                                 String.join(", ", fams.stream().map(Effect::label).toList()), j + 1, r.label(), pr, own));
                         fit = g;
+                        taken = true;
                         break;
                     }
                 }
+            }
+            if (!taken) {
                 selected.clear();
                 selected.addAll(sel0);
                 absorbedCols.clear();
