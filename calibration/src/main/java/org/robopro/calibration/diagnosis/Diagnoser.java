@@ -937,7 +937,6 @@ public final class Diagnoser {
         selected.add(by);
         absorbedCols.put(by, bc.absorbedMask);
         Fit f = w.fit(selected, absorbedCols, without.full, bc);
-        double valWith = w.validateRms(f);
         boolean worseHeldOut = heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without));
         // A family whose estimate leaves physical bounds once fitted jointly with the rest does not take the place.
         boolean implausible = !by.isFallback() && !w.plausibleIn(f, selected, selected.size() - 1);
@@ -946,7 +945,7 @@ public final class Diagnoser {
             absorbedCols.remove(by);
             if (heldOut) return without;
             // An alias that fails keeps the effect it was to replace.
-            Candidate ec = w.tester(without).test(e, w.conditions);
+            Candidate ec = wt.test(e, w.conditions);
             if (ec.keptColumns == 0) return without;
             selected.add(e);
             absorbedCols.put(e, ec.absorbedMask);
@@ -955,7 +954,7 @@ public final class Diagnoser {
             return back;
         }
         bc.threshold = old.candidate.threshold;
-        steps.add(new Step(bc, f.trainRms, valWith));
+        steps.add(new Step(bc, f.trainRms, w.validateRms(f)));
         return f;
     }
 
