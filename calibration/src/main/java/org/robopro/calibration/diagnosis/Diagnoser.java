@@ -1915,17 +1915,9 @@ public final class Diagnoser {
             c.effect = selected.get(k);
             c.estimate = Arrays.copyOfRange(f.full, a, b);
             c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
-            c.absorbedMask = fixedMask(f, a, b);
+            c.absorbedMask = Arrays.copyOfRange(f.problem.fixedMask(), a, b);
             plausibility(c);
             return c;
-        }
-
-        /** Which of the parameters a..b of a fit are held fixed (columns left to the geometry). */
-        static boolean[] fixedMask(Fit f, int a, int b) {
-            boolean[] mask = new boolean[b - a];
-            Arrays.fill(mask, true);
-            for (int i : f.problem.freeIndices()) if (i >= a && i < b) mask[i - a] = false;
-            return mask;
         }
 
         /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
