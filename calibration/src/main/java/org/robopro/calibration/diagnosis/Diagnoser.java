@@ -2001,18 +2001,15 @@ public final class Diagnoser {
         final Fit fit;
         final int m, rpp, dof, rank;
         final double[] u;        // m x rank orthonormal basis of the model Jacobian's span
-        final double[] dQ;       // m x dof: ∂r/∂q_j (drive outputs, weighted)
-        final double[] dStrain;  // m: ∂r/∂ε
-        final double[] dTrans;   // m x 3: ∂r/∂p (base-frame translation of the point)
         final double[][] pointBase; // predicted measured point per pose (the points' mean with several), base frame
         final double[][][] pointsBase; // predicted point per pose and measured point, base frame
         /**
          * The poses each residual row depends on, "ends": one (the row's pose), or two for a
          * distance between a pair of poses (the first pose, then the second). Per end, the rows as
          * poses of their own, their conditions, the predicted measured point, and the sensitivities
-         * of {@link #dQ}, {@link #dStrain}, {@link #dTrans} to a change at that end alone (their sum
-         * over the ends is those arrays): an error that is a function of the pose acts at each end
-         * with its own value.
+         * to a change at that end alone (their sum over the ends is the whole row's): ∂r/∂q_j (drive
+         * outputs, weighted; m x dof), ∂r/∂ε (m) and ∂r/∂p (base-frame translation of the point;
+         * m x 3). An error that is a function of the pose acts at each end with its own value.
          */
         final int ends;
         final List<List<Measurement>> endRows = new ArrayList<>();
@@ -2051,29 +2048,25 @@ public final class Diagnoser {
             IdentificationProblem pp = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
             pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
             int nFull = pp.fullSize();
-            double[] jf = new double[m * nFull];
-            // Pairs of poses: the Jacobian split by end (their sum is the whole Jacobian), one evaluation for both.
-            double[][] jEnd = fit.problem.pairs() ? new double[][] {new double[m * nFull], new double[m * nFull]} : null;
-            if (jEnd != null) {
-                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
-                for (int i = 0; i < jf.length; i++) jf[i] = jEnd[0][i] + jEnd[1][i];
-            } else pp.evaluateFull(full, new double[m], jf);
+            // The Jacobian per end: the whole one for single poses; for pairs of poses split by end
+            // (their sum is the whole Jacobian), one evaluation for both.
+            ends = fit.problem.pairs() ? 2 : 1;
+            double[][] jEnd = new double[ends][m * nFull];
+            if (ends == 2) pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
+            else pp.evaluateFull(full, new double[m], jEnd[0]);
             int off = nFull - np;
-            dQ = new double[m * dof];
-            dStrain = new double[m];
-            dTrans = new double[m * 3];
-            for (int i = 0; i < m; i++) {
-                for (int j = 0; j < dof; j++) dQ[i * dof + j] = jf[i * nFull + off + j];
-                dStrain[i] = jf[i * nFull + off + dof];
-                for (int a = 0; a < 3; a++) dTrans[i * 3 + a] = jf[i * nFull + off + dof + 1 + a];
-            }
+            endDQ = new double[ends][m * dof];
+            endDStrain = new double[ends][m];
+            endDTrans = new double[ends][m * 3];
+            for (int e = 0; e < ends; e++)
+                for (int i = 0; i < m; i++) {
+                    for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
+                    endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
+                    for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
+                }
             KinematicModel geo = fit.problem.modelOf(fit.full);
             double[][][] ep = null;
-            if (fit.problem.pairs()) {
-                ends = 2;
-                endDQ = new double[2][m * dof];
-                endDStrain = new double[2][m];
-                endDTrans = new double[2][m * 3];
+            if (ends == 2) {
                 ep = new double[2][w.rows.size()][];
                 for (int e = 0; e < 2; e++) {
                     List<Measurement> er = new ArrayList<>();
@@ -2085,23 +2078,14 @@ public final class Diagnoser {
                     }
                     endRows.add(er);
                     endConditions.add(ec);
-                    for (int i = 0; i < m; i++) {
-                        for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
-                        endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
-                        for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
-                    }
                     for (int i = 0; i < er.size(); i++) {
                         org.robopro.models.Vec3 p = geo.flange(er.get(i).q()).apply(fit.problem.toolPointOf(fit.full, 0));
                         ep[e][i] = new double[] {p.x(), p.y(), p.z()};
                     }
                 }
             } else {
-                ends = 1;
                 endRows.add(w.rows);
                 endConditions.add(w.conditions);
-                endDQ = new double[][] {dQ};
-                endDStrain = new double[][] {dStrain};
-                endDTrans = new double[][] {dTrans};
             }
             int nPts = fit.problem.pointCount();
             pointBase = new double[w.rows.size()][3];
