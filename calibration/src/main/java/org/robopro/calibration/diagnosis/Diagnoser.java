@@ -720,7 +720,7 @@ public final class Diagnoser {
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
         // With validation data, an effect is kept only when the final model predicts the validation poses better with
         // it than refitted without it (position and orientation, each over its noise).
-        for (int k = selected.size() - 1; k >= 0 && w.validate != null && w.validate.size() > 0; k--) {
+        for (int k = selected.size() - 1; k >= 0 && w.hasValidation(); k--) {
             Fit without = w.fit(withoutOne(selected, k), absorbedCols, w.dropEffect(fit, k), null);
             double with = w.validateError(fit), wo = w.validateError(without);
             if (with < wo) continue;
@@ -738,7 +738,7 @@ public final class Diagnoser {
         }
         // With validation data, a lost motion that builds up over the move is claimed only when it predicts the
         // validation poses better than the constant lost motion of the same joint in its place.
-        for (int k = 0; k < selected.size() && w.validate != null && w.validate.size() > 0; k++) {
+        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
             Effect e = selected.get(k);
             if (!e.buildsUp()) continue;
             double with = w.validateError(fit);
@@ -937,7 +937,7 @@ public final class Diagnoser {
         selected.add(by);
         absorbedCols.put(by, bc.absorbedMask);
         Fit f = w.fit(selected, absorbedCols, without.full, bc);
-        boolean worseHeldOut = heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without));
+        boolean worseHeldOut = heldOut && w.hasValidation() && !(w.validateError(f) < w.validateError(without));
         // A family whose estimate leaves physical bounds once fitted jointly with the rest does not take the place.
         boolean implausible = !by.isFallback() && !w.plausibleIn(f, selected, selected.size() - 1);
         if (worseHeldOut || implausible) {
@@ -1104,7 +1104,7 @@ public final class Diagnoser {
                     && selected.stream().noneMatch(x -> x.label().equals(r.label()))).toList();
             if (eligible.isEmpty()) continue;
             double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
-            boolean hasVal = w.validate != null && w.validate.size() > 0;
+            boolean hasVal = w.hasValidation();
             List<Effect> sel0 = new ArrayList<>(selected);
             Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
             List<Step> steps0 = new ArrayList<>(steps);
@@ -1771,8 +1771,11 @@ public final class Diagnoser {
             return f;
         }
 
+        /** Whether there are validation poses (a set given and not empty). */
+        boolean hasValidation() { return validate != null && validate.size() > 0; }
+
         double validateRms(Fit f) {
-            if (validate == null || validate.size() == 0) return Double.NaN;
+            if (!hasValidation()) return Double.NaN;
             boolean six = sixD && validate.hasOrientation();
             double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
             List<EffectBlock> bl = f.problem.effects();
@@ -1790,7 +1793,7 @@ public final class Diagnoser {
          * by less than its noise; this judges it on what it predicts. NaN without validation poses.
          */
         double validateError(Fit f) {
-            if (validate == null || validate.size() == 0) return Double.NaN;
+            if (!hasValidation()) return Double.NaN;
             boolean six = sixD && validate.hasOrientation();
             double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
             IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, f.problem.effects(), full);
