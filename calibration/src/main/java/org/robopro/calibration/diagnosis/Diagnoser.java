@@ -1596,7 +1596,10 @@ public final class Diagnoser {
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
                 if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
-            if (gravity != null && Effect.complianceRemassed(j, gravity).testableOn(rows)) out.add(Effect.complianceRemassed(j, gravity));
+            if (gravity != null) {
+                Effect remassed = Effect.complianceRemassed(j, gravity);
+                if (remassed.testableOn(rows)) out.add(remassed);
+            }
             // with payload steps, also the masses and their centres unknown (a centre off the file's moves the torque's phase)
             if (gravity != null && !gravity.massesUnknown()) {
                 Effect free = Effect.complianceRemassed(j, GravityTorques.massesUnknown(model));
