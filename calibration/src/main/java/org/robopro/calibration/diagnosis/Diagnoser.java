@@ -131,7 +131,7 @@ public final class Diagnoser {
         if (flankNotes.isEmpty()) return d;
         List<String> notes = new ArrayList<>(d.notes());
         notes.addAll(flankNotes);
-        return withNotes(d, notes);
+        return with(d, d.outliers(), notes);
     }
 
     /**
@@ -229,7 +229,7 @@ public final class Diagnoser {
             notes.add(String.format(Locale.ROOT, "no validation poses and only %d training poses: the claims were judged by "
                     + "leave-one-pose-out error, not by %d-fold cross-validation (at least %d poses); measure validation poses to "
                     + "confirm them", rows.size(), k, MIN_POSES_PER_FOLD * k));
-            return withNotes(d, notes);
+            return with(d, d.outliers(), notes);
         }
         int[] fold = MeasurementSet.folds(rows.size(), k, rows.size());
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
@@ -279,7 +279,7 @@ public final class Diagnoser {
         }
         List<String> notes = new ArrayList<>(out.notes());
         notes.addAll(extra);
-        return withNotes(out, notes);
+        return with(out, out.outliers(), notes);
     }
 
     /**
@@ -331,9 +331,10 @@ public final class Diagnoser {
         return out;
     }
 
-    private static Diagnosis withNotes(Diagnosis d, List<String> notes) {
+    /** {@code d} with the given outliers and notes, everything else as it is. */
+    private static Diagnosis with(Diagnosis d, List<String> outliers, List<String> notes) {
         return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
-                d.finalTrainRmsM(), d.finalValidateRmsM(), d.outliers(), d.notIdentifiable(), d.implausible(), d.recommendations(),
+                d.finalTrainRmsM(), d.finalValidateRmsM(), outliers, d.notIdentifiable(), d.implausible(), d.recommendations(),
                 notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
                 d.directions(), d.located(), d.warnings());
     }
@@ -361,10 +362,7 @@ public final class Diagnoser {
                     + "and of every decision taken on the validation poses", ol.poseId(), ol.residualM() * 1e3, OUTLIER_K,
                     ol.robustSigmaM() * 1e3));
         }
-        return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
-                d.finalTrainRmsM(), d.finalValidateRmsM(), outliers, d.notIdentifiable(), d.implausible(), d.recommendations(),
-                notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
-                d.directions(), d.located(), d.warnings());
+        return with(d, outliers, notes);
     }
 
     /** {@link #prepared}'s outlier rule under the extended model, given the first run. */
