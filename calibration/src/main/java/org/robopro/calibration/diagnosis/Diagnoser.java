@@ -253,9 +253,14 @@ public final class Diagnoser {
                 + "diagnosis; held-out RMS %.4f mm with the geometric model, %.4f mm with each fold's effects", k, geoCv * 1e3, effCv * 1e3));
         Set<String> excluded = new java.util.LinkedHashSet<>();
         Diagnosis out = d;
+        // Where the last round's notes on the keys it kept start in extra, and how many: a key kept in
+        // several rounds is reported once, by the last round that judged it.
+        int namedAt = 0, namedCount = 0;
         for (int round = 0; round < 3; round++) {
             Map<String, double[]> held = perFamilyHeldOut(robot, train, fold, folds, out, o);
             Set<String> failing = new java.util.LinkedHashSet<>();
+            extra.subList(namedAt, namedAt + namedCount).clear();
+            namedAt = extra.size();
             for (String key : namedKeys(out)) {
                 int n = count.getOrDefault(key, 0);
                 double[] h = held.get(key);
@@ -264,6 +269,7 @@ public final class Diagnoser {
                 else extra.add(String.format(Locale.ROOT, "%s: named by %d of %d folds; the folds' held-out error %.1f with it, "
                         + "%.1f without it (each residual over its noise)", key, n, k, h[0], h[1]));
             }
+            namedCount = extra.size() - namedAt;
             if (failing.isEmpty()) break;
             for (String key : failing) {
                 int n = count.getOrDefault(key, 0);
