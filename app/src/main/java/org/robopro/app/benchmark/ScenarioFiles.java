@@ -1,7 +1,5 @@
 package org.robopro.app.benchmark;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,6 +12,8 @@ import java.util.stream.Stream;
 import org.robopro.models.AtomicFiles;
 import org.robopro.models.InputException;
 import org.robopro.models.JsonMapper;
+import org.robopro.models.LocatedJson;
+import org.robopro.models.LocatedJson.Kind;
 import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotLibrary;
 import org.robopro.world.Expected;
@@ -76,91 +76,130 @@ public final class ScenarioFiles {
         Path labelPath = csv.resolveSibling(stem + LABEL);
         if (!Files.isRegularFile(labelPath))
             throw new InputException(csv.toString(), 0, 0, null, "no truth label beside it: expected " + labelPath.getFileName());
-        String where = labelPath.toString();
-        JsonNode root;
-        try {
-            root = JsonMapper.create().readTree(Files.readString(labelPath));
-        } catch (JsonProcessingException e) {
-            throw new InputException(where, e.getLocation() == null ? 0 : e.getLocation().getLineNr(),
-                    e.getLocation() == null ? 0 : e.getLocation().getColumnNr(), null, "not JSON: " + e.getOriginalMessage());
-        }
-        if (root == null || !root.isObject()) throw new InputException(where, 0, 0, null, "must be a JSON object");
-        RobotDescription robot = robot(where, csv.getParent(), text(where, root, "robot"));
-        JsonNode sigma = root.get("sigma_mm");
-        if (sigma == null || !sigma.isNumber() || !(sigma.asDouble() > 0) || !Double.isFinite(sigma.asDouble()))
-            throw new InputException(where, 0, 0, "sigma_mm", "the instrument's noise per axis in mm, a number > 0, is required");
-        Expected expected = expected(where, root.get("expected"), robot.dof());
+        LocatedJson.Node root = LocatedJson.parse(labelPath.toString(), Files.readString(labelPath));
+        if (root.kind() != Kind.OBJECT) throw root.error("must be a JSON object");
+        RobotDescription robot = robot(csv.getParent(), root);
+        LocatedJson.Node sigma = root.opt("sigma_mm");
+        double sigmaMm = sigma == null || sigma.kind() != Kind.NUMBER ? Double.NaN : Double.parseDouble(sigma.numberText());
+        if (!(sigmaMm > 0) || !Double.isFinite(sigmaMm))
+            throw at(root, sigma, "sigma_mm", "the instrument's noise per axis in mm, a number > 0, is required");
+        Expected expected = expected(root, robot.dof());
         Set<String> outliers = new LinkedHashSet<>();
-        JsonNode op = root.get("outlier_poses");
-        if (op != null && !op.isNull()) {
-            if (!op.isArray()) throw new InputException(where, 0, 0, "outlier_poses", "must be a list of pose names");
-            op.forEach(n -> outliers.add(n.asText()));
+        LocatedJson.Node op = root.opt("outlier_poses");
+        if (op != null) {
+            if (op.kind() != Kind.ARRAY) throw op.error("must be a list of pose names");
+            for (LocatedJson.Node n : op.items()) {
+                if (n.kind() == Kind.STRING) outliers.add(n.asString());
+                else if (n.kind() == Kind.NUMBER) outliers.add(n.numberText());
+                else throw n.error("a pose name (text or number) is required");
+            }
         }
-        String name = root.hasNonNull("scenario") ? root.get("scenario").asText() : stem;
-        String group = root.hasNonNull("family") ? root.get("family").asText() : "held-out";
-        long seed = root.hasNonNull("seed") && root.get("seed").canConvertToLong() ? root.get("seed").asLong() : 0;
-        String twin = null;
-        if (root.hasNonNull("twin")) {
-            Path t = csv.resolveSibling(root.get("twin").asText());
-            if (!root.get("twin").isTextual() || !Files.isRegularFile(t))
-                throw new InputException(where, 0, 0, "twin", "names no campaign file beside the label: " + root.get("twin"));
-            twin = Files.readString(t);
+        String name = root.has("scenario") ? root.get("scenario").asString() : stem;
+        String group = root.has("family") ? root.get("family").asString() : "held-out";
+        long seed = root.has("seed") ? seed(root.get("seed")) : 0;
+        Path twin = null;
+        if (root.has("twin")) {
+            LocatedJson.Node tn = root.get("twin");
+            twin = csv.resolveSibling(tn.asString());
+            if (!Files.isRegularFile(twin)) throw tn.error("names no campaign file beside the label: \"" + tn.asString() + "\"");
         }
-        return new DiagnosisBenchmark.Case(name, group, robot, csv.toString(), Files.readString(csv), expected, sigma.asDouble() * 1e-3,
-                outliers, seed, twin);
+        DiagnosisBenchmark.Case c = new DiagnosisBenchmark.Case(name, group, robot, csv.toString(), Files.readString(csv), expected, sigmaMm * 1e-3,
+                outliers, seed, twin == null ? null : Files.readString(twin), twin == null ? null : twin.toString());
+        // Both measurement files read now, so that a bad one stops the benchmark before anything is diagnosed.
+        DiagnosisBenchmark.read(c);
+        if (twin != null) DiagnosisBenchmark.read(c.twin());
+        return c;
     }
 
-    private static String text(String where, JsonNode root, String field) {
-        JsonNode n = root.get(field);
-        if (n == null || !n.isTextual() || n.asText().isBlank()) throw new InputException(where, 0, 0, field, "required (text)");
-        return n.asText();
+    /** The error for {@code field} of {@code obj}: at the value when it is given, else at the object. */
+    private static InputException at(LocatedJson.Node obj, LocatedJson.Node value, String field, String problem) {
+        if (value != null) return value.error(problem);
+        return new InputException(obj.file(), obj.line(), obj.column(), obj.path().isEmpty() ? field : obj.path() + "." + field, problem);
     }
 
-    private static RobotDescription robot(String where, Path dir, String robot) {
+    private static String text(LocatedJson.Node root, String field) {
+        LocatedJson.Node n = root.opt(field);
+        if (n == null || n.kind() != Kind.STRING || n.asString().isBlank()) throw at(root, n, field, "required (text)");
+        return n.asString();
+    }
+
+    private static long seed(LocatedJson.Node n) {
+        try {
+            return n.asDecimal().longValueExact();
+        } catch (ArithmeticException e) {
+            throw n.error("the seed must be a whole number, got " + n.numberText());
+        }
+    }
+
+    private static RobotDescription robot(Path dir, LocatedJson.Node root) {
+        String robot = text(root, "robot");
         Path f = dir == null ? Path.of(robot) : dir.resolve(robot);
         if (Files.isRegularFile(f)) return RobotLibrary.load(f.toString()); // a bad robot file names itself
         try {
             return RobotLibrary.shipped(robot);
         } catch (RuntimeException e) {
-            throw new InputException(where, 0, 0, "robot", "'" + robot + "' is neither a shipped robot nor a robot file beside the label");
+            throw root.get("robot").error("'" + robot + "' is neither a shipped robot nor a robot file beside the label");
         }
     }
 
-    private static Expected expected(String where, JsonNode e, int dof) {
-        if (e == null || !e.isObject()) throw new InputException(where, 0, 0, "expected", "required: {\"verdict\": ..., \"claims\": [...]}");
-        JsonNode v = e.get("verdict");
+    /** A joint number of a claim: a whole number from 1 to {@code dof}. */
+    private static boolean isJoint(LocatedJson.Node j, int dof) {
+        if (j.kind() != Kind.NUMBER) return false;
+        double d = Double.parseDouble(j.numberText());
+        return d == Math.rint(d) && d >= 1 && d <= dof;
+    }
+
+    /** A scalar value as it is written in the file (text quoted), for messages. */
+    private static String shown(LocatedJson.Node n) {
+        return switch (n.kind()) {
+            case STRING -> "\"" + n.asString() + "\"";
+            case NUMBER -> n.numberText();
+            case BOOLEAN -> String.valueOf(n.asBoolean());
+            case NULL -> "null";
+            case OBJECT -> "an object";
+            case ARRAY -> "a list";
+        };
+    }
+
+    private static Expected expected(LocatedJson.Node root, int dof) {
+        LocatedJson.Node e = root.opt("expected");
+        if (e == null || e.kind() != Kind.OBJECT) throw at(root, e, "expected", "required: {\"verdict\": ..., \"claims\": [...]}");
+        LocatedJson.Node v = e.opt("verdict");
         Expected.Verdict verdict = null;
-        if (v != null && v.isTextual())
-            for (Expected.Verdict x : Expected.Verdict.values()) if (x.name().equalsIgnoreCase(v.asText().strip())) verdict = x;
-        if (verdict == null) throw new InputException(where, 0, 0, "expected.verdict", "must be named, outside or null");
+        if (v != null && v.kind() == Kind.STRING)
+            for (Expected.Verdict x : Expected.Verdict.values()) if (x.name().equalsIgnoreCase(v.asString().strip())) verdict = x;
+        if (verdict == null) throw at(e, v, "verdict", "must be named, outside or null");
         List<Expected.Claim> claims = new ArrayList<>();
-        JsonNode cs = e.get("claims");
-        if (cs != null && !cs.isNull()) {
-            if (!cs.isArray()) throw new InputException(where, 0, 0, "expected.claims", "must be a list");
-            for (int i = 0; i < cs.size(); i++) {
-                String f = "expected.claims[" + i + "]";
-                JsonNode c = cs.get(i);
-                Expected.Family fam = Expected.Family.parse(c.path("family").asText(null));
-                if (fam == null && c.path("diagnosis_names").isArray() && c.path("diagnosis_names").size() > 0)
-                    fam = Expected.Family.parse(c.path("diagnosis_names").get(0).asText());
+        LocatedJson.Node cs = e.opt("claims");
+        if (cs != null) {
+            if (cs.kind() != Kind.ARRAY) throw cs.error("must be a list");
+            for (LocatedJson.Node c : cs.items()) {
+                if (c.kind() != Kind.OBJECT) throw c.error("a claim must be an object: {\"family\": ..., \"joints\": [...]}");
+                LocatedJson.Node fn = c.opt("family");
+                Expected.Family fam = fn != null && fn.kind() == Kind.STRING ? Expected.Family.parse(fn.asString()) : null;
+                LocatedJson.Node dn = c.opt("diagnosis_names");
+                if (fam == null && dn != null && dn.kind() == Kind.ARRAY && !dn.items().isEmpty() && dn.items().get(0).kind() == Kind.STRING)
+                    fam = Expected.Family.parse(dn.items().get(0).asString());
                 if (fam == null)
-                    throw new InputException(where, 0, 0, f + ".family", "unknown family '" + c.path("family").asText("") + "'; one of "
+                    throw at(c, fn, "family", "unknown family '" + (fn == null ? "" : fn.kind() == Kind.STRING ? fn.asString() : shown(fn)) + "'; one of "
                             + String.join(", ", java.util.Arrays.stream(Expected.Family.values())
                                     .map(x -> x.name().toLowerCase(Locale.ROOT).replace('_', '-')).toList()));
                 List<Integer> joints = new ArrayList<>();
-                JsonNode js = c.get("joints");
-                if (js != null && js.isArray())
-                    for (JsonNode j : js) {
-                        if (!j.canConvertToInt() || j.asInt() < 1 || j.asInt() > dof)
-                            throw new InputException(where, 0, 0, f + ".joints", "joint numbers run from 1 to " + dof + ", not " + j);
+                LocatedJson.Node js = c.opt("joints");
+                if (js != null) {
+                    if (js.kind() != Kind.ARRAY) throw js.error("must be a list of joint numbers");
+                    for (LocatedJson.Node j : js.items()) {
+                        if (!isJoint(j, dof))
+                            throw new InputException(j.file(), j.line(), j.column(), js.path(), "joint numbers run from 1 to " + dof + ", not " + shown(j));
                         joints.add(j.asInt());
                     }
-                if (!fam.jointless() && joints.isEmpty()) throw new InputException(where, 0, 0, f + ".joints", "the joints it acts on are required");
+                }
+                if (!fam.jointless() && joints.isEmpty()) throw at(c, js, "joints", "the joints it acts on are required");
                 claims.add(new Expected.Claim(fam, joints));
             }
         }
         if ((verdict == Expected.Verdict.NAMED) == claims.isEmpty())
-            throw new InputException(where, 0, 0, "expected.claims", verdict == Expected.Verdict.NAMED
+            throw at(e, cs, "claims", verdict == Expected.Verdict.NAMED
                     ? "a named verdict lists what must be named" : "only a named verdict lists claims");
         return new Expected(verdict, claims);
     }

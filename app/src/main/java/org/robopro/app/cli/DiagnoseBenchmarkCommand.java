@@ -3,6 +3,7 @@ package org.robopro.app.cli;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.function.Consumer;
 import org.robopro.app.benchmark.DiagnosisBenchmark;
 import org.robopro.app.benchmark.ScenarioFiles;
 import org.robopro.models.AtomicFiles;
@@ -64,6 +65,9 @@ public final class DiagnoseBenchmarkCommand implements Callable<Integer> {
         if (scenarios != null && writeScenarios != null) throw new IllegalArgumentException("--scenarios and --write-scenarios exclude each other");
         var w = spec.commandLine().getOut();
         var err = spec.commandLine().getErr();
+        Consumer<String> log = line -> {
+            if (verbose) { err.println(line); err.flush(); }
+        };
         List<DiagnosisBenchmark.Run> runs;
         if (scenarios != null) {
             List<DiagnosisBenchmark.Case> cases = ScenarioFiles.read(scenarios);
@@ -72,9 +76,7 @@ public final class DiagnoseBenchmarkCommand implements Callable<Integer> {
             if (cases.isEmpty()) throw new IllegalArgumentException("--scenarios " + scenarios + ": no campaign left after --family/--scenario");
             err.println(cases.size() + " campaign(s) from " + scenarios);
             err.flush();
-            runs = DiagnosisBenchmark.runCases(cases, line -> {
-                if (verbose) { err.println(line); err.flush(); }
-            });
+            runs = DiagnosisBenchmark.runCases(cases, log);
         } else {
             List<Scenario> chosen = family == null ? Scenario.catalogue() : Scenario.ofFamily(family);
             if (chosen.isEmpty())
@@ -88,9 +90,7 @@ public final class DiagnoseBenchmarkCommand implements Callable<Integer> {
                 w.println("wrote " + n + " campaign(s) with their truth labels to " + writeScenarios);
                 return 0;
             }
-            runs = DiagnosisBenchmark.run(chosen, seeds, baseSeed, line -> {
-                if (verbose) { err.println(line); err.flush(); }
-            });
+            runs = DiagnosisBenchmark.run(chosen, seeds, baseSeed, log);
         }
         String table = DiagnosisBenchmark.markdown(runs);
         w.print(table);

@@ -567,6 +567,7 @@ public final class WorkbenchSession implements AutoCloseable {
      */
     private void changeApplied(String label, Applied after) {
         Applied before = applied();
+        if (before.equals(after)) return; // nothing changes: no edit to undo
         putApplied(after);
         model.history().push(label, before, after, this::restoreApplied);
     }

@@ -71,6 +71,9 @@ class DiagnosisBenchmarkTest {
         assertEquals(s.trial(SEED).campaign().text(), s.twin(SEED).campaign().text());
         DiagnosisBenchmark.Run r = DiagnosisBenchmark.run(s, SEED, DiagnosisBenchmark.Twins.ALWAYS);
         assertEquals(r.finalRatio(), r.twinRatio(), 0.0, "the twin of a null campaign is diagnosed to the same validation RMS");
+        // the run takes its own ratio for such a twin: the twin diagnosed as a case of its own ends exactly there
+        var twinCase = DiagnosisBenchmark.Case.of(s.trial(SEED), s.twin(SEED)).twin();
+        assertEquals(r.finalRatio(), DiagnosisBenchmark.run(twinCase, DiagnosisBenchmark.Twins.NEVER).finalRatio(), 0.0);
         assertEquals(1.0, r.toTwin(), 0.0);
         // with an effect, the twin is a different campaign that ends nearer the floor
         DiagnosisBenchmark.Run lm = DiagnosisBenchmark.run(Scenario.named("lost motion j2, 50 poses"), SEED, DiagnosisBenchmark.Twins.ALWAYS);
@@ -93,6 +96,9 @@ class DiagnosisBenchmarkTest {
         assertTrue(md.contains("1 of 3 runs within 1.15 × the floor, 1 more within 1.05 × their twin where the twin itself is above 1.10 × "
                 + "the floor, 1 meet neither"), md);
         assertTrue(md.contains("over its geometry-only twin's (named and null scenarios): ≤ 1.05: 2, 1.05–1.10: 0, 1.10–1.15: 0, 1.15–1.5: 1"), md);
+        // a run without a validation RMS beside one whose twin was diagnosed: no ratio to the twin, its column says so
+        String row = DiagnosisBenchmark.row("y", List.of(run(Double.NaN, 1.14)));
+        assertTrue(row.contains("| 1.14 | - | - |"), row);
     }
 
     @Test

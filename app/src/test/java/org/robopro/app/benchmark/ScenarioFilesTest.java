@@ -84,14 +84,62 @@ class ScenarioFilesTest {
                 {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\"}}", "field 'expected.claims'"},
                 {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"twin\": \"gone.twin.csv\"}",
                         "field 'twin': names no campaign file beside the label"},
-                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02,", "orphan.truth.json:1"}};
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02,", "orphan.truth.json:1"},
+                // Each refusal names the line (and column) of the offending value.
+                {"{\"robot\": \"irb2000\",\n \"sigma_mm\": -1,\n \"expected\": {\"verdict\": \"null\"}}", "orphan.truth.json:2:14: field 'sigma_mm'"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02,\n \"expected\": {\"verdict\": \"named\", \"claims\": [\n {\"family\": \"backlash\", "
+                        + "\"joints\": [2, 7]}]}}", "orphan.truth.json:3:39: field 'expected.claims[0].joints': joint numbers run from 1 to 6, not 7"},
+                // A syntax error in plain words, located, without the parser's character codes.
+                {"{\"robot\": \"irb2000\",\n \"sigma_mm\": 0.02, }", "orphan.truth.json:2:20: malformed JSON: unexpected character ('}')"},
+                // Values of the wrong kind are refused, not coerced.
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"outlier_poses\": [\"17\", {\"id\": 83}]}",
+                        "field 'outlier_poses[1]': a pose name (text or number) is required"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"seed\": 7.5}",
+                        "field 'seed': the seed must be a whole number, got 7.5"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"seed\": \"7\"}",
+                        "field 'seed': expected a number, got a string"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"scenario\": 3}",
+                        "field 'scenario': expected a string, got a number"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"family\": [\"null\"]}",
+                        "field 'family': expected a string, got an array"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"twin\": 1}",
+                        "field 'twin': expected a string, got a number"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": [{\"family\": \"backlash\", "
+                        + "\"joints\": [2.5]}]}}", "field 'expected.claims[0].joints': joint numbers run from 1 to 6, not 2.5"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": [{\"family\": \"thermal-growth\", "
+                        + "\"joints\": 2}]}}", "field 'expected.claims[0].joints': must be a list of joint numbers"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"named\", \"claims\": [\"backlash\"]}}",
+                        "field 'expected.claims[0]': a claim must be an object"},
+                {"{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"sigma_mm\": 0.03, \"expected\": {\"verdict\": \"null\"}}",
+                        "field 'sigma_mm': duplicate field"}};
         for (String[] l : labels) {
             Files.writeString(set.resolve("orphan.truth.json"), l[0]);
             CliHarness g = new CliHarness();
             assertEquals(2, g.run("diagnose-benchmark", "--scenarios", set.toString()), l[0]);
             assertTrue(g.err().contains("orphan.truth.json") && g.err().contains(l[1]), l[0] + " -> " + g.err());
+            assertEquals(1, g.err().strip().lines().count(), l[0] + " -> " + g.err());
             assertFalse(g.out().contains("| null"), "nothing run: " + g.out());
         }
+        // A bad measurement file, the campaign's or its twin's, is refused when the set is read, naming that file and its
+        // line, before any campaign is diagnosed (the campaign sorted before it included).
+        String good = Files.readString(set.resolve("null-irb2000-50-poses-s3.csv"));
+        String bad = good.replaceFirst("\n([^\n]*)\n", "\n$1\nnot,a,row\n");
+        int badLine = (int) good.substring(0, good.indexOf('\n', good.indexOf('\n') + 1)).lines().count() + 1;
+        Files.writeString(set.resolve("orphan.truth.json"),
+                "{\"robot\": \"irb2000\", \"sigma_mm\": 0.02, \"expected\": {\"verdict\": \"null\"}, \"twin\": \"orphan.twin.csv\"}");
+        for (String f : List.of("orphan.twin.csv", "orphan.csv")) {
+            Files.writeString(set.resolve("orphan.csv"), good);
+            Files.writeString(set.resolve("orphan.twin.csv"), good);
+            Files.writeString(set.resolve(f), bad);
+            CliHarness g = new CliHarness();
+            assertEquals(2, g.run("diagnose-benchmark", "--scenarios", set.toString(), "--verbose"), f);
+            assertTrue(g.err().contains(set.resolve(f) + ":" + badLine + ":"), f + " -> " + g.err());
+            assertEquals(1, g.err().strip().lines().count(), "one line, nothing diagnosed: " + g.err());
+        }
+        Files.delete(set.resolve("orphan.csv"));
+        Files.delete(set.resolve("orphan.twin.csv"));
+        Files.delete(set.resolve("orphan.truth.json"));
+
         // Writing refuses to replace a file without --force, and writes nothing then.
         CliHarness w = new CliHarness();
         assertEquals(2, w.run("diagnose-benchmark", "--write-scenarios", set.toString(), "--scenario", "null irb2000, 50 poses", "--seeds", "1",

@@ -237,6 +237,7 @@ class WorkbenchSessionTest {
 
         s.clearCalibration();
         assertTrue(s.calibratedModel().isEmpty());
+        s.clearCalibration(); // stopping again changes nothing and is no edit: one undo still brings the calibration back
         s.undo();
         assertEquals(r.calibrated(), s.calibratedModel().orElseThrow(), "stopping compensation is undone too");
     }
