@@ -56,6 +56,7 @@ public final class PreviewState extends BaseAppState {
         double reach = 0.3;
         for (Pose f : p.frames()) reach = Math.max(reach, f.position().norm());
         float r = (float) (0.05 * reach);
+        float textHeight = Math.max(0.06f, 0.05f * (float) reach);
         Material drum = shapes.lit(DefaultCell.ABB_ORANGE), sleeve = shapes.lit(0x4F7CAC), link = shapes.lit(0x8A9099);
         Vector3f prev = new Vector3f();
         for (int i = 0; i < js.size(); i++) {
@@ -68,17 +69,11 @@ public final class PreviewState extends BaseAppState {
             node.attachChild(shapes.disc("preview-axis-" + (i + 1), c, a, r * 0.12f, r * 5f, shapes.flat(0x202020, false)));
             if (c.distance(prev) > 1e-6f) node.attachChild(shapes.beam("preview-link-" + i, prev, c, r * 0.45f, link));
             // The joint's name above its drum, facing the camera and drawn over the drums and triads.
-            Node label = shapes.label("preview-label-" + (i + 1), j.name(), Math.max(0.06f, 0.05f * (float) reach), 0x101010);
-            label.depthFirstTraversal(sp -> {
-                if (sp instanceof com.jme3.scene.Geometry g) {
-                    g.setMaterial(g.getMaterial().clone()); // the font's page material is shared with every other label
-                    g.getMaterial().getAdditionalRenderState().setDepthTest(false);
-                }
-            });
+            Node label = shapes.label("preview-label-" + (i + 1), j.name(), textHeight, 0x101010, true);
             // Joints on the same point (a wrist) stack their names instead of printing them over each other.
             int same = 0;
             for (int k = 0; k < i; k++) if (Shapes.v(js.get(k).point()).distance(c) < 1e-6f) same++;
-            label.setLocalTranslation(c.add(r * 1.3f, 0, r * 1.3f + same * 1.3f * Math.max(0.06f, 0.05f * (float) reach)));
+            label.setLocalTranslation(c.add(r * 1.3f, 0, r * 1.3f + same * 1.3f * textHeight));
             node.attachChild(label);
             prev = c;
         }

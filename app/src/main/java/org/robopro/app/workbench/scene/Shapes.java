@@ -210,7 +210,10 @@ public final class Shapes {
      * A text label in the 3D scene that always faces the camera, {@code height} metres tall,
      * its bottom-left corner at the node's origin.
      */
-    public Node label(String name, String text, float height, int rgb) {
+    public Node label(String name, String text, float height, int rgb) { return label(name, text, height, rgb, false); }
+
+    /** {@link #label(String, String, float, int)}, optionally drawn over everything (as {@link #flat}'s {@code onTop}). */
+    public Node label(String name, String text, float height, int rgb, boolean onTop) {
         com.jme3.font.BitmapFont font = assets.loadFont("Interface/Fonts/Default.fnt");
         com.jme3.font.BitmapText t = new com.jme3.font.BitmapText(font);
         t.setName(name + "-text");
@@ -225,6 +228,12 @@ public final class Shapes {
         face.attachChild(t);
         t.setLocalTranslation(0, t.getLineHeight(), 0);
         n.attachChild(face);
+        if (onTop) n.depthFirstTraversal(sp -> {
+            if (sp instanceof Geometry g) {
+                g.setMaterial(g.getMaterial().clone()); // the font's page material is shared with every other label
+                g.getMaterial().getAdditionalRenderState().setDepthTest(false);
+            }
+        });
         return n;
     }
 }
