@@ -131,7 +131,7 @@ public final class Diagnoser {
         if (flankNotes.isEmpty()) return d;
         List<String> notes = new ArrayList<>(d.notes());
         notes.addAll(flankNotes);
-        return withNotes(d, notes);
+        return with(d, d.outliers(), notes);
     }
 
     /**
@@ -229,7 +229,7 @@ public final class Diagnoser {
             notes.add(String.format(Locale.ROOT, "no validation poses and only %d training poses: the claims were judged by "
                     + "leave-one-pose-out error, not by %d-fold cross-validation (at least %d poses); measure validation poses to "
                     + "confirm them", rows.size(), k, MIN_POSES_PER_FOLD * k));
-            return withNotes(d, notes);
+            return with(d, d.outliers(), notes);
         }
         int[] fold = MeasurementSet.folds(rows.size(), k, rows.size());
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
@@ -253,9 +253,14 @@ public final class Diagnoser {
                 + "diagnosis; held-out RMS %.4f mm with the geometric model, %.4f mm with each fold's effects", k, geoCv * 1e3, effCv * 1e3));
         Set<String> excluded = new java.util.LinkedHashSet<>();
         Diagnosis out = d;
+        // Where the last round's notes on the keys it kept start in extra, and how many: a key kept in
+        // several rounds is reported once, by the last round that judged it.
+        int namedAt = 0, namedCount = 0;
         for (int round = 0; round < 3; round++) {
             Map<String, double[]> held = perFamilyHeldOut(robot, train, fold, folds, out, o);
             Set<String> failing = new java.util.LinkedHashSet<>();
+            extra.subList(namedAt, namedAt + namedCount).clear();
+            namedAt = extra.size();
             for (String key : namedKeys(out)) {
                 int n = count.getOrDefault(key, 0);
                 double[] h = held.get(key);
@@ -264,6 +269,7 @@ public final class Diagnoser {
                 else extra.add(String.format(Locale.ROOT, "%s: named by %d of %d folds; the folds' held-out error %.1f with it, "
                         + "%.1f without it (each residual over its noise)", key, n, k, h[0], h[1]));
             }
+            namedCount = extra.size() - namedAt;
             if (failing.isEmpty()) break;
             for (String key : failing) {
                 int n = count.getOrDefault(key, 0);
@@ -279,7 +285,7 @@ public final class Diagnoser {
         }
         List<String> notes = new ArrayList<>(out.notes());
         notes.addAll(extra);
-        return withNotes(out, notes);
+        return with(out, out.outliers(), notes);
     }
 
     /**
@@ -331,9 +337,10 @@ public final class Diagnoser {
         return out;
     }
 
-    private static Diagnosis withNotes(Diagnosis d, List<String> notes) {
+    /** {@code d} with the given outliers and notes, everything else as it is. */
+    private static Diagnosis with(Diagnosis d, List<String> outliers, List<String> notes) {
         return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
-                d.finalTrainRmsM(), d.finalValidateRmsM(), d.outliers(), d.notIdentifiable(), d.implausible(), d.recommendations(),
+                d.finalTrainRmsM(), d.finalValidateRmsM(), outliers, d.notIdentifiable(), d.implausible(), d.recommendations(),
                 notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
                 d.directions(), d.located(), d.warnings());
     }
@@ -361,10 +368,7 @@ public final class Diagnoser {
                     + "and of every decision taken on the validation poses", ol.poseId(), ol.residualM() * 1e3, OUTLIER_K,
                     ol.robustSigmaM() * 1e3));
         }
-        return new Diagnosis(d.robot(), d.geometric(), d.sigmaM(), d.geometricTrainRmsM(), d.geometricValidateRmsM(), d.effects(),
-                d.finalTrainRmsM(), d.finalValidateRmsM(), outliers, d.notIdentifiable(), d.implausible(), d.recommendations(),
-                notes, d.model(), d.finalFlangeTtool(), d.finalInstrumentTbase(), d.candidatesTested(), d.alpha(), d.elapsedMs(),
-                d.directions(), d.located(), d.warnings());
+        return with(d, outliers, notes);
     }
 
     /** {@link #prepared}'s outlier rule under the extended model, given the first run. */
@@ -720,7 +724,7 @@ public final class Diagnoser {
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
         // With validation data, an effect is kept only when the final model predicts the validation poses better with
         // it than refitted without it (position and orientation, each over its noise).
-        for (int k = selected.size() - 1; k >= 0 && w.validate != null && w.validate.size() > 0; k--) {
+        for (int k = selected.size() - 1; k >= 0 && w.hasValidation(); k--) {
             Fit without = w.fit(withoutOne(selected, k), absorbedCols, w.dropEffect(fit, k), null);
             double with = w.validateError(fit), wo = w.validateError(without);
             if (with < wo) continue;
@@ -738,7 +742,7 @@ public final class Diagnoser {
         }
         // With validation data, a lost motion that builds up over the move is claimed only when it predicts the
         // validation poses better than the constant lost motion of the same joint in its place.
-        for (int k = 0; k < selected.size() && w.validate != null && w.validate.size() > 0; k++) {
+        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
             Effect e = selected.get(k);
             if (!e.buildsUp()) continue;
             double with = w.validateError(fit);
@@ -937,8 +941,7 @@ public final class Diagnoser {
         selected.add(by);
         absorbedCols.put(by, bc.absorbedMask);
         Fit f = w.fit(selected, absorbedCols, without.full, bc);
-        double valWith = w.validateRms(f);
-        boolean worseHeldOut = heldOut && w.validate != null && w.validate.size() > 0 && !(w.validateError(f) < w.validateError(without));
+        boolean worseHeldOut = heldOut && w.hasValidation() && !(w.validateError(f) < w.validateError(without));
         // A family whose estimate leaves physical bounds once fitted jointly with the rest does not take the place.
         boolean implausible = !by.isFallback() && !w.plausibleIn(f, selected, selected.size() - 1);
         if (worseHeldOut || implausible) {
@@ -946,7 +949,7 @@ public final class Diagnoser {
             absorbedCols.remove(by);
             if (heldOut) return without;
             // An alias that fails keeps the effect it was to replace.
-            Candidate ec = w.tester(without).test(e, w.conditions);
+            Candidate ec = wt.test(e, w.conditions);
             if (ec.keptColumns == 0) return without;
             selected.add(e);
             absorbedCols.put(e, ec.absorbedMask);
@@ -955,7 +958,7 @@ public final class Diagnoser {
             return back;
         }
         bc.threshold = old.candidate.threshold;
-        steps.add(new Step(bc, f.trainRms, valWith));
+        steps.add(new Step(bc, f.trainRms, w.validateRms(f)));
         return f;
     }
 
@@ -1100,24 +1103,38 @@ public final class Diagnoser {
             List<Effect> fams = selected.stream().filter(e -> !e.isFallback() && e.joint() == jj
                     && (e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SCALE)).toList();
             if (fams.size() < 2) continue;
+            List<Effect> eligible = rivals.stream().filter(r -> r.joint() == jj
+                    && (r.kind() == Effect.Kind.ANGLE_STEP || r.kind() == Effect.Kind.SMOOTH)
+                    && selected.stream().noneMatch(x -> x.label().equals(r.label()))).toList();
+            if (eligible.isEmpty()) continue;
             double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
-            boolean hasVal = w.validate != null && w.validate.size() > 0;
-            for (Effect r : rivals) {
-                if (r.joint() != j || r.kind() != Effect.Kind.ANGLE_STEP && r.kind() != Effect.Kind.SMOOTH
-                        || selected.stream().anyMatch(x -> x.label().equals(r.label()))) continue;
-                List<Effect> sel0 = new ArrayList<>(selected);
-                Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
-                List<Step> steps0 = new ArrayList<>(steps);
-                double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
-                Fit f = fit;
-                for (Effect e : fams) {
-                    int k = selected.indexOf(e);
-                    selected.remove(k);
-                    absorbedCols.remove(e);
-                    steps.remove(k);
-                    f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
-                }
-                Candidate bc = w.tester(f).test(r, w.conditions);
+            boolean hasVal = w.hasValidation();
+            List<Effect> sel0 = new ArrayList<>(selected);
+            Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> steps0 = new ArrayList<>(steps);
+            double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
+            // The joint's families taken out once: the model every rival is tested on and added to.
+            Fit f = fit;
+            for (Effect e : fams) {
+                int k = selected.indexOf(e);
+                selected.remove(k);
+                absorbedCols.remove(e);
+                steps.remove(k);
+                f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
+            }
+            Tester ft = w.tester(f);
+            List<Effect> selF = new ArrayList<>(selected);
+            Map<Effect, boolean[]> absF = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> stepsF = new ArrayList<>(steps);
+            boolean taken = false;
+            for (Effect r : eligible) {
+                selected.clear();
+                selected.addAll(selF);
+                absorbedCols.clear();
+                absorbedCols.putAll(absF);
+                steps.clear();
+                steps.addAll(stepsF);
+                Candidate bc = ft.test(r, w.conditions);
                 if (bc.keptColumns > 0 && bc.pressAfter < bc.pressBefore) {
                     selected.add(r);
                     absorbedCols.put(r, bc.absorbedMask);
@@ -1131,9 +1148,12 @@ public final class Diagnoser {
                                 + "angle, and %s in their place predicts left-out poses better (leave-one-pose-out error %.1f against %.1f)",
                                 String.join(", ", fams.stream().map(Effect::label).toList()), j + 1, r.label(), pr, own));
                         fit = g;
+                        taken = true;
                         break;
                     }
                 }
+            }
+            if (!taken) {
                 selected.clear();
                 selected.addAll(sel0);
                 absorbedCols.clear();
@@ -1580,7 +1600,10 @@ public final class Diagnoser {
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
                 if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
-            if (gravity != null && Effect.complianceRemassed(j, gravity).testableOn(rows)) out.add(Effect.complianceRemassed(j, gravity));
+            if (gravity != null) {
+                Effect remassed = Effect.complianceRemassed(j, gravity);
+                if (remassed.testableOn(rows)) out.add(remassed);
+            }
             // with payload steps, also the masses and their centres unknown (a centre off the file's moves the torque's phase)
             if (gravity != null && !gravity.massesUnknown()) {
                 Effect free = Effect.complianceRemassed(j, GravityTorques.massesUnknown(model));
@@ -1755,8 +1778,11 @@ public final class Diagnoser {
             return f;
         }
 
+        /** Whether there are validation poses (a set given and not empty). */
+        boolean hasValidation() { return validate != null && validate.size() > 0; }
+
         double validateRms(Fit f) {
-            if (validate == null || validate.size() == 0) return Double.NaN;
+            if (!hasValidation()) return Double.NaN;
             boolean six = sixD && validate.hasOrientation();
             double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
             List<EffectBlock> bl = f.problem.effects();
@@ -1774,7 +1800,7 @@ public final class Diagnoser {
          * by less than its noise; this judges it on what it predicts. NaN without validation poses.
          */
         double validateError(Fit f) {
-            if (validate == null || validate.size() == 0) return Double.NaN;
+            if (!hasValidation()) return Double.NaN;
             boolean six = sixD && validate.hasOrientation();
             double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
             IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, f.problem.effects(), full);
@@ -1899,17 +1925,9 @@ public final class Diagnoser {
             c.effect = selected.get(k);
             c.estimate = Arrays.copyOfRange(f.full, a, b);
             c.sd = Arrays.copyOfRange(sig, a - eff0, b - eff0);
-            c.absorbedMask = fixedMask(f, a, b);
+            c.absorbedMask = Arrays.copyOfRange(f.problem.fixedMask(), a, b);
             plausibility(c);
             return c;
-        }
-
-        /** Which of the parameters a..b of a fit are held fixed (columns left to the geometry). */
-        static boolean[] fixedMask(Fit f, int a, int b) {
-            boolean[] mask = new boolean[b - a];
-            Arrays.fill(mask, true);
-            for (int i : f.problem.freeIndices()) if (i >= a && i < b) mask[i - a] = false;
-            return mask;
         }
 
         /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
@@ -1993,18 +2011,15 @@ public final class Diagnoser {
         final Fit fit;
         final int m, rpp, dof, rank;
         final double[] u;        // m x rank orthonormal basis of the model Jacobian's span
-        final double[] dQ;       // m x dof: ∂r/∂q_j (drive outputs, weighted)
-        final double[] dStrain;  // m: ∂r/∂ε
-        final double[] dTrans;   // m x 3: ∂r/∂p (base-frame translation of the point)
         final double[][] pointBase; // predicted measured point per pose (the points' mean with several), base frame
         final double[][][] pointsBase; // predicted point per pose and measured point, base frame
         /**
          * The poses each residual row depends on, "ends": one (the row's pose), or two for a
          * distance between a pair of poses (the first pose, then the second). Per end, the rows as
          * poses of their own, their conditions, the predicted measured point, and the sensitivities
-         * of {@link #dQ}, {@link #dStrain}, {@link #dTrans} to a change at that end alone (their sum
-         * over the ends is those arrays): an error that is a function of the pose acts at each end
-         * with its own value.
+         * to a change at that end alone (their sum over the ends is the whole row's): ∂r/∂q_j (drive
+         * outputs, weighted; m x dof), ∂r/∂ε (m) and ∂r/∂p (base-frame translation of the point;
+         * m x 3). An error that is a function of the pose acts at each end with its own value.
          */
         final int ends;
         final List<List<Measurement>> endRows = new ArrayList<>();
@@ -2043,29 +2058,25 @@ public final class Diagnoser {
             IdentificationProblem pp = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
             pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
             int nFull = pp.fullSize();
-            double[] jf = new double[m * nFull];
-            // Pairs of poses: the Jacobian split by end (their sum is the whole Jacobian), one evaluation for both.
-            double[][] jEnd = fit.problem.pairs() ? new double[][] {new double[m * nFull], new double[m * nFull]} : null;
-            if (jEnd != null) {
-                pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
-                for (int i = 0; i < jf.length; i++) jf[i] = jEnd[0][i] + jEnd[1][i];
-            } else pp.evaluateFull(full, new double[m], jf);
+            // The Jacobian per end: the whole one for single poses; for pairs of poses split by end
+            // (their sum is the whole Jacobian), one evaluation for both.
+            ends = fit.problem.pairs() ? 2 : 1;
+            double[][] jEnd = new double[ends][m * nFull];
+            if (ends == 2) pp.evaluatePairEnds(full, jEnd[0], jEnd[1]);
+            else pp.evaluateFull(full, new double[m], jEnd[0]);
             int off = nFull - np;
-            dQ = new double[m * dof];
-            dStrain = new double[m];
-            dTrans = new double[m * 3];
-            for (int i = 0; i < m; i++) {
-                for (int j = 0; j < dof; j++) dQ[i * dof + j] = jf[i * nFull + off + j];
-                dStrain[i] = jf[i * nFull + off + dof];
-                for (int a = 0; a < 3; a++) dTrans[i * 3 + a] = jf[i * nFull + off + dof + 1 + a];
-            }
+            endDQ = new double[ends][m * dof];
+            endDStrain = new double[ends][m];
+            endDTrans = new double[ends][m * 3];
+            for (int e = 0; e < ends; e++)
+                for (int i = 0; i < m; i++) {
+                    for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
+                    endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
+                    for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
+                }
             KinematicModel geo = fit.problem.modelOf(fit.full);
             double[][][] ep = null;
-            if (fit.problem.pairs()) {
-                ends = 2;
-                endDQ = new double[2][m * dof];
-                endDStrain = new double[2][m];
-                endDTrans = new double[2][m * 3];
+            if (ends == 2) {
                 ep = new double[2][w.rows.size()][];
                 for (int e = 0; e < 2; e++) {
                     List<Measurement> er = new ArrayList<>();
@@ -2077,23 +2088,14 @@ public final class Diagnoser {
                     }
                     endRows.add(er);
                     endConditions.add(ec);
-                    for (int i = 0; i < m; i++) {
-                        for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
-                        endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
-                        for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
-                    }
                     for (int i = 0; i < er.size(); i++) {
                         org.robopro.models.Vec3 p = geo.flange(er.get(i).q()).apply(fit.problem.toolPointOf(fit.full, 0));
                         ep[e][i] = new double[] {p.x(), p.y(), p.z()};
                     }
                 }
             } else {
-                ends = 1;
                 endRows.add(w.rows);
                 endConditions.add(w.conditions);
-                endDQ = new double[][] {dQ};
-                endDStrain = new double[][] {dStrain};
-                endDTrans = new double[][] {dTrans};
             }
             int nPts = fit.problem.pointCount();
             pointBase = new double[w.rows.size()][3];

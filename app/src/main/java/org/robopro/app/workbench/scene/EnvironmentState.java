@@ -97,13 +97,14 @@ public final class EnvironmentState extends BaseAppState {
             if (patch.getCullHint() != Spatial.CullHint.Always) patch.setCullHint(Spatial.CullHint.Always);
             return;
         }
-        patch.setCullHint(Spatial.CullHint.Inherit);
-        fitPatch();
-        ((SimpleApplication) getApplication()).getRootNode().updateGeometricState();
+        // The scene's geometric state is brought up to date again only when the patch changed.
+        if (fitPatch()) ((SimpleApplication) getApplication()).getRootNode().updateGeometricState();
     }
 
     /** Floor-plane extent (x0, z0, x1, z1) of the casters' shadows, grown by {@link #sweep}. */
     private final float[] box = new float[4];
+    /** The patch's extent (x0, z0, x1, z1) as last set on it; NaN until it is first set. */
+    private final float[] shown = {Float.NaN, Float.NaN, Float.NaN, Float.NaN};
 
     /** Grows {@link #box} by the shadow of every visible caster under {@code s} along {@code d}. */
     private void sweep(Spatial s, Vector3f d) {
@@ -129,9 +130,10 @@ public final class EnvironmentState extends BaseAppState {
     /**
      * Sizes the shadow-receiving floor patch to where the casters' shadows can fall: the
      * casters' bounding box swept along the key light down to the floor, plus a margin, clipped
-     * to the floor. The rest of the floor takes no shadow pass.
+     * to the floor. The rest of the floor takes no shadow pass. Returns whether the patch changed
+     * (shown or hidden, moved or resized); a patch that still fits is left untouched.
      */
-    private void fitPatch() {
+    private boolean fitPatch() {
         Node root = ((SimpleApplication) getApplication()).getRootNode();
         box[0] = box[1] = Float.MAX_VALUE;
         box[2] = box[3] = -Float.MAX_VALUE;
@@ -139,9 +141,15 @@ public final class EnvironmentState extends BaseAppState {
         float x0 = box[0], z0 = box[1], x1 = box[2], z1 = box[3];
         float m = 0.1f;
         x0 = Math.max(-6, x0 - m); z0 = Math.max(-6, z0 - m); x1 = Math.min(6, x1 + m); z1 = Math.min(6, z1 + m);
-        if (x1 <= x0 || z1 <= z0) { patch.setCullHint(Spatial.CullHint.Always); return; }
+        boolean empty = x1 <= x0 || z1 <= z0;
+        Spatial.CullHint hint = empty ? Spatial.CullHint.Always : Spatial.CullHint.Inherit;
+        boolean changed = patch.getCullHint() != hint;
+        if (changed) patch.setCullHint(hint);
+        if (empty || (x0 == shown[0] && z0 == shown[1] && x1 == shown[2] && z1 == shown[3])) return changed;
         patch.setLocalScale(x1 - x0, z1 - z0, 1);
         patch.setLocalTranslation(x0, -0.002f, z1);
+        shown[0] = x0; shown[1] = z0; shown[2] = x1; shown[3] = z1;
+        return true;
     }
 
     @Override
