@@ -742,18 +742,37 @@ public final class Diagnoser {
         }
         // With validation data, a lost motion that builds up over the move is claimed only when it predicts the
         // validation poses better than the constant lost motion of the same joint in its place.
+        // Whether the swap took is read from the list itself (the constant play is in it), not from its last entry:
+        // when the constant play is not identifiable or not plausible, the wind-up stays as it was.
         for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
             Effect e = selected.get(k);
             if (!e.buildsUp()) continue;
             double with = w.validateError(fit);
-            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, Effect.backlash(e.joint()), false);
+            List<Effect> sel0 = new ArrayList<>(selected);
+            Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> steps0 = new ArrayList<>(steps);
+            Effect constant = Effect.backlash(e.joint());
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, constant, false);
+            int at = selected.indexOf(constant);
+            if (at < 0) {
+                selected.clear();
+                selected.addAll(sel0);
+                absorbedCols.clear();
+                absorbedCols.putAll(abs0);
+                steps.clear();
+                steps.addAll(steps0);
+                aliasNotes.add(String.format(Locale.ROOT, "%s could not be compared with a constant lost motion of joint %d on the "
+                        + "validation poses (in its place a constant lost motion is not identifiable or not plausible), so it stays",
+                        e.label(), e.joint() + 1));
+                continue;
+            }
             double wo = w.validateError(plain);
-            int at = selected.size() - 1;
-            if (selected.get(at).kind() != Effect.Kind.BACKLASH || selected.get(at).buildsUp() || !(with < wo)) {
+            if (!(with < wo)) {
                 aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than a constant lost "
                         + "motion but not the validation poses (weighted error %.1f against %.1f), so the lost motion is taken as "
                         + "constant", e.label(), with, wo));
                 fit = plain;
+                k--; // the effect after it now stands at k
                 continue;
             }
             fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
