@@ -1361,22 +1361,12 @@ public final class Diagnoser {
                     out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.ANGLE_STEP) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
-            double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).sorted().toArray()
-                    : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
-            double place = angle ? e.rangeLo() : e.tauS();
-            int at = 0;
-            while (at < t.length && t[at] <= place) at++;
+            Locator.Var var = angle ? Locator.Var.ANGLE_STEP
+                    : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP : Locator.Var.TIME_STEP;
+            double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
+                    : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).toArray();
             // the midpoints between the poses within a twentieth of the campaign (of the joint's poses) either side
-            int reach = Math.max(1, t.length / Locator.STEP_QUANTILES);
-            for (int i = Math.max(1, at - reach); i <= Math.min(t.length - 1, at + reach); i++) {
-                double tau = 0.5 * (t[i - 1] + t[i]);
-                if (tau == place || !(t[i] > t[i - 1])) continue;
-                out.add(switch (e.kind()) {
-                    case ANGLE_STEP -> Effect.angleStep(e.joint(), tau);
-                    case TARGET_STEP -> Effect.targetStep(w.model, tau);
-                    default -> Effect.zeroStep(e.joint(), tau);
-                });
-            }
+            for (double tau : Locator.placesNear(t, angle ? e.rangeLo() : e.tauS())) out.add(stepEffect(var, e.joint(), tau, w.model));
         }
         return out;
     }
@@ -1605,7 +1595,7 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
-                if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(Effect.angleStep(j, f.probe.lo));
+                if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
@@ -1635,11 +1625,25 @@ public final class Diagnoser {
         }
         if (hasTime) out.add(Effect.driftWithTime());
         for (Locator.Found f : found)
-            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(Effect.targetStep(model, f.probe.lo));
+            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
         return out;
+    }
+
+    /**
+     * The effect of a step located in {@code var} at {@code place}: a reading's step in joint
+     * {@code joint}'s angle (rad), that joint's zero stepping at a time (s), or the target's move at a
+     * time (s).
+     */
+    static Effect stepEffect(Locator.Var var, int joint, double place, KinematicModel model) {
+        return switch (var) {
+            case ANGLE_STEP -> Effect.angleStep(joint, place);
+            case TIME_STEP -> Effect.zeroStep(joint, place);
+            case TARGET_STEP -> Effect.targetStep(model, place);
+            default -> throw new IllegalArgumentException("not a step: " + var);
+        };
     }
 
     /**
@@ -1657,9 +1661,7 @@ public final class Diagnoser {
                 case JOINT_PAIR -> out.add(Effect.pair(f.probe.joint, f.probe.other));
                 case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH,
                         f.probe.lo, f.probe.hi));
-                case TIME_STEP -> out.add(Effect.zeroStep(f.probe.joint, f.probe.lo));
-                case ANGLE_STEP -> out.add(Effect.angleStep(f.probe.joint, f.probe.lo));
-                case TARGET_STEP -> out.add(Effect.targetStep(model, f.probe.lo));
+                case TIME_STEP, ANGLE_STEP, TARGET_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
