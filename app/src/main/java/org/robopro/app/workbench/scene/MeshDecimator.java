@@ -42,21 +42,11 @@ public final class MeshDecimator {
      */
     public static float[] decimate(float[] soup, int targetTriangles, double maxError) {
         // Corners at exactly the same position are one vertex (STL repeats them verbatim).
-        Map<List<Float>, Integer> ids = new HashMap<>();
-        int nc = soup.length / 3;
-        int[] corner = new int[nc];
-        List<double[]> pos = new ArrayList<>();
-        for (int c = 0; c < nc; c++) {
-            List<Float> key = List.of(soup[3 * c], soup[3 * c + 1], soup[3 * c + 2]);
-            Integer id = ids.get(key);
-            if (id == null) {
-                id = pos.size();
-                ids.put(key, id);
-                pos.add(new double[] {soup[3 * c], soup[3 * c + 1], soup[3 * c + 2]});
-            }
-            corner[c] = id;
-        }
-        Mesh m = new Mesh(pos.toArray(new double[0][]), corner);
+        int[] corner = StlReader.weld(soup);
+        double[][] pos = new double[StlReader.count(corner)][];
+        for (int c = 0; c < corner.length; c++)
+            if (pos[corner[c]] == null) pos[corner[c]] = new double[] {soup[3 * c], soup[3 * c + 1], soup[3 * c + 2]};
+        Mesh m = new Mesh(pos, corner);
         m.run(targetTriangles, maxError * maxError);
         return m.soup();
     }

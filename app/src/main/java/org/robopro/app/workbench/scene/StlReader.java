@@ -44,17 +44,24 @@ public final class StlReader {
      */
     static Mesh indexed(float[] pos, float[] nor) {
         int nc = pos.length / 3;
-        java.util.Map<Corner, Integer> ids = new java.util.HashMap<>(nc);
+        int[] at = weld(pos);
+        // The vertices made so far at each position, chained: a corner joins the one with its normal.
+        int[] first = new int[count(at)];
+        java.util.Arrays.fill(first, -1);
+        int[] sibling = new int[nc];
         int[] idx = new int[nc];
         float[] vp = new float[pos.length];
         float[] vn = new float[pos.length];
         int nv = 0;
         for (int c = 0; c < nc; c++) {
-            Corner k = new Corner(pos[3 * c], pos[3 * c + 1], pos[3 * c + 2], nor[3 * c], nor[3 * c + 1], nor[3 * c + 2]);
-            Integer id = ids.putIfAbsent(k, nv);
-            if (id == null) {
+            int id = first[at[c]];
+            while (id >= 0 && !(bits(vn[3 * id]) == bits(nor[3 * c]) && bits(vn[3 * id + 1]) == bits(nor[3 * c + 1])
+                    && bits(vn[3 * id + 2]) == bits(nor[3 * c + 2]))) id = sibling[id];
+            if (id < 0) {
                 System.arraycopy(pos, 3 * c, vp, 3 * nv, 3);
                 System.arraycopy(nor, 3 * c, vn, 3 * nv, 3);
+                sibling[nv] = first[at[c]];
+                first[at[c]] = nv;
                 id = nv++;
             }
             idx[c] = id;
@@ -73,7 +80,42 @@ public final class StlReader {
         return m;
     }
 
-    private record Corner(float x, float y, float z, float nx, float ny, float nz) { }
+    /** A float's bits as {@link Float#equals} compares them (every NaN one value, -0 apart from +0). */
+    private static int bits(float f) { return Float.floatToIntBits(f); }
+
+    /**
+     * The point each corner of a triangle soup (x, y, z of each corner) stands on: corners at
+     * exactly the same position (bit for bit, as {@link Float#equals} compares; STL repeats each
+     * shared vertex verbatim) get the same id, numbered 0, 1, ... in the order the points first
+     * appear. One open-addressed table of corner numbers; no key objects.
+     */
+    static int[] weld(float[] pos) {
+        int nc = pos.length / 3;
+        int[] id = new int[nc];
+        int size = Integer.highestOneBit(Math.max(2, 2 * nc - 1)) << 1; // a power of two, at least twice the corners
+        int[] table = new int[size]; // 1 + the first corner at a point, 0 where empty
+        int mask = size - 1, n = 0;
+        for (int c = 0; c < nc; c++) {
+            int x = bits(pos[3 * c]), y = bits(pos[3 * c + 1]), z = bits(pos[3 * c + 2]);
+            int h = (x * 0x9E3779B1 + y) * 0x9E3779B1 + z;
+            h ^= h >>> 15;
+            h *= 0x85EBCA6B;
+            h ^= h >>> 13;
+            for (int s = h & mask; ; s = (s + 1) & mask) {
+                int f = table[s] - 1;
+                if (f < 0) { table[s] = c + 1; id[c] = n++; break; }
+                if (bits(pos[3 * f]) == x && bits(pos[3 * f + 1]) == y && bits(pos[3 * f + 2]) == z) { id[c] = id[f]; break; }
+            }
+        }
+        return id;
+    }
+
+    /** How many points the ids of {@link #weld} name. */
+    static int count(int[] ids) {
+        int n = 0;
+        for (int i : ids) n = Math.max(n, i + 1);
+        return n;
+    }
 
     /** Largest mesh (triangles) whose normals are smoothed (the corner index costs memory per corner). */
     static final int SMOOTH_MAX = 300_000;
@@ -107,19 +149,22 @@ public final class StlReader {
             for (int c = 0; c < nt * 3; c++) System.arraycopy(fn, 3 * (c / 3), out, 3 * c, 3);
             return out;
         }
-        // Corners at the same position (exactly: STL repeats each shared vertex verbatim), chained per position.
-        java.util.Map<java.util.List<Float>, Integer> head = new java.util.HashMap<>();
+        // Corners at the same position (exactly: STL repeats each shared vertex verbatim), chained
+        // per position from the last corner there back to the first.
+        int[] at = weld(pos);
+        int[] head = new int[count(at)];
+        java.util.Arrays.fill(head, -1);
         int[] next = new int[nt * 3];
         for (int c = 0; c < nt * 3; c++) {
-            Integer h = head.put(java.util.List.of(pos[3 * c], pos[3 * c + 1], pos[3 * c + 2]), c);
-            next[c] = h == null ? -1 : h;
+            next[c] = head[at[c]];
+            head[at[c]] = c;
         }
         float[] out = new float[nt * 9];
-        for (var e : head.entrySet()) {
-            for (int c = e.getValue(); c >= 0; c = next[c]) {
+        for (int h : head) {
+            for (int c = h; c >= 0; c = next[c]) {
                 int t = c / 3;
                 float sx = 0, sy = 0, sz = 0;
-                for (int d = e.getValue(); d >= 0; d = next[d]) {
+                for (int d = h; d >= 0; d = next[d]) {
                     int u = d / 3;
                     float dot = fn[3 * t] * fn[3 * u] + fn[3 * t + 1] * fn[3 * u + 1] + fn[3 * t + 2] * fn[3 * u + 2];
                     if (u != t && dot < creaseCos) continue;

@@ -78,4 +78,27 @@ class StlReaderTest {
         // Cap corners stay straight up although they share their position with side corners.
         for (int k = 0; k < 3; k++) assertEquals(1, nor[9 * 2 + 3 * k + 2], 1e-6);
     }
+
+    @Test
+    void weldingJoinsExactlyEqualPositionsInTheOrderTheyFirstAppear() {
+        float nan = Float.NaN;
+        float[] pos = {1, 2, 3,   0, 0, 0,   1, 2, 3,   -0f, 0, 0,   nan, 0, 0,   0, 0, 0,   nan, 0, 0,   1, 2, 3.0000005f};
+        // +0 and -0 are different points (as Float.equals has them), every NaN one point, and a
+        // position one float step away is another point.
+        assertEquals(java.util.List.of(0, 1, 0, 2, 3, 1, 3, 4), java.util.Arrays.stream(StlReader.weld(pos)).boxed().toList());
+        assertEquals(5, StlReader.count(StlReader.weld(pos)));
+        assertEquals(0, StlReader.weld(new float[0]).length);
+    }
+
+    @Test
+    void indexingKeepsCornersAtOnePointApartWhenTheirNormalsDiffer() {
+        // Two triangles sharing an edge, folded at 90 deg (a crease): the shared corners split.
+        float[] pos = {0, 0, 0, 1, 0, 0, 0, 1, 0,   1, 0, 0, 0, 0, 0, 0, 0, 1};
+        assertEquals(6, StlReader.indexed(pos, StlReader.normals(pos, StlReader.CREASE_COS)).getVertexCount());
+        // Two triangles in one plane: the shared corners become one vertex each.
+        float[] flat = {0, 0, 0, 1, 0, 0, 0, 1, 0,   1, 0, 0, 1, 1, 0, 0, 1, 0};
+        Mesh m = StlReader.indexed(flat, StlReader.normals(flat, StlReader.CREASE_COS));
+        assertEquals(4, m.getVertexCount());
+        assertEquals(2, m.getTriangleCount());
+    }
 }
