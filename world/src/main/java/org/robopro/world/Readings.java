@@ -37,7 +37,7 @@ public final class Readings {
         List<Campaign.Row> rows = c.rows();
         double[][] last = lastMoves(rows);
         StringBuilder sb = header(nominal, c, "# frame: " + c.frame() + "\n");
-        sb.append(columns(nominal, c, true, "x,y,z"));
+        sb.append(columns(nominal, c, true, "x,y,z", false));
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
             for (int k = 0; k < flangePointsM.length; k++) {
@@ -47,7 +47,7 @@ public final class Readings {
                         Arm.gauss(noise, c.plan().sigmaM()));
                 sb.append(r.id()).append(",P").append(k + 1);
                 row(sb, nominal, c, r, String.format(Locale.ROOT, "%s,%s,%s",
-                        Campaign.fmt(p[0] * 1e3, 5), Campaign.fmt(p[1] * 1e3, 5), Campaign.fmt(p[2] * 1e3, 5)));
+                        Campaign.fmt(p[0] * 1e3, 5), Campaign.fmt(p[1] * 1e3, 5), Campaign.fmt(p[2] * 1e3, 5)), null);
             }
         }
         return sb.toString();
@@ -69,13 +69,13 @@ public final class Readings {
         String anchor = writeAnchor ? String.format(Locale.ROOT, "# anchor: %s, %s, %s\n", Campaign.fmt(anchorBaseM[0] * 1e3, 4),
                 Campaign.fmt(anchorBaseM[1] * 1e3, 4), Campaign.fmt(anchorBaseM[2] * 1e3, 4)) : "";
         StringBuilder sb = header(nominal, c, anchor);
-        sb.append(columns(nominal, c, false, "distance"));
+        sb.append(columns(nominal, c, false, "distance", false));
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
             double[] p = inBase.target(r.q(), r.dir(), last[i], c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
             double d = Rigid.norm(Rigid.minus(p, anchorBaseM)) + c.plan().sigmaM() * noise.nextGaussian();
             sb.append(r.id());
-            row(sb, nominal, c, r, Campaign.fmt(d * 1e3, 5));
+            row(sb, nominal, c, r, Campaign.fmt(d * 1e3, 5), null);
         }
         return sb.toString();
     }
@@ -95,10 +95,7 @@ public final class Readings {
         List<Campaign.Row> rows = c.rows();
         double[][] last = lastMoves(rows);
         StringBuilder sb = header(nominal, c, "");
-        List<String> head = new ArrayList<>();
-        for (int j = 1; j <= nominal.dof(); j++) head.add("from_q" + j);
-        if (c.plan().dirColumns()) for (int j = 1; j <= nominal.dof(); j++) head.add("from_dir" + j);
-        sb.append(columns(nominal, c, false, "distance").replace("\n", "," + String.join(",", head) + "\n"));
+        sb.append(columns(nominal, c, false, "distance", true));
         double[] prev = null;
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
@@ -107,15 +104,7 @@ public final class Readings {
                 Campaign.Row a = rows.get(i - 1);
                 double d = Rigid.norm(Rigid.minus(p, prev)) + c.plan().sigmaM() * noise.nextGaussian();
                 sb.append(r.id());
-                StringBuilder tail = new StringBuilder();
-                for (int j = 0; j < nominal.dof(); j++) {
-                    boolean prismatic = nominal.joints().get(j).type() == JointType.PRISMATIC;
-                    tail.append(',').append(Campaign.fmt(prismatic ? a.q()[j] * 1e3 : Math.toDegrees(a.q()[j]), 7));
-                }
-                if (c.plan().dirColumns()) for (int dd : a.dir()) tail.append(',').append(dd);
-                StringBuilder line = new StringBuilder();
-                row(line, nominal, c, r, Campaign.fmt(d * 1e3, 5));
-                sb.append(line, 0, line.length() - 1).append(tail).append('\n');
+                row(sb, nominal, c, r, Campaign.fmt(d * 1e3, 5), a);
             }
             prev = p;
         }
@@ -169,7 +158,8 @@ public final class Readings {
         return sb;
     }
 
-    private static String columns(RobotDescription robot, Campaign.Result c, boolean point, String measured) {
+    /** The header row; {@code pairs} adds the first pose's columns (from_q1.., from_dir1..) at the end. */
+    private static String columns(RobotDescription robot, Campaign.Result c, boolean point, String measured, boolean pairs) {
         Campaign.Plan plan = c.plan();
         List<String> head = new ArrayList<>(List.of("pose"));
         if (point) head.add("point");
@@ -179,20 +169,34 @@ public final class Readings {
         if (plan.conditionColumns()) head.addAll(List.of("time_s", "temp_c"));
         if (plan.payloadStepsKg().length > 0) head.add("payload_kg");
         if (plan.validatePoses() > 0) head.add("set");
+        if (pairs) {
+            for (int j = 1; j <= robot.dof(); j++) head.add("from_q" + j);
+            if (plan.dirColumns()) for (int j = 1; j <= robot.dof(); j++) head.add("from_dir" + j);
+        }
         return String.join(",", head) + "\n";
     }
 
-    private static void row(StringBuilder sb, RobotDescription robot, Campaign.Result c, Campaign.Row r, String measured) {
+    /** A data row after its leading column(s); {@code from} (or null) is the first pose of a length between two poses. */
+    private static void row(StringBuilder sb, RobotDescription robot, Campaign.Result c, Campaign.Row r, String measured, Campaign.Row from) {
         Campaign.Plan plan = c.plan();
-        for (int j = 0; j < robot.dof(); j++) {
-            boolean prismatic = robot.joints().get(j).type() == JointType.PRISMATIC;
-            sb.append(',').append(Campaign.fmt(prismatic ? r.q()[j] * 1e3 : Math.toDegrees(r.q()[j]), 7));
-        }
+        joints(sb, robot, r.q());
         sb.append(',').append(measured);
         if (plan.dirColumns()) for (int d : r.dir()) sb.append(',').append(d);
         if (plan.conditionColumns()) sb.append(',').append(Campaign.fmt(r.timeS(), 1)).append(',').append(Campaign.fmt(r.tempC(), 2));
         if (plan.payloadStepsKg().length > 0) sb.append(',').append(Campaign.fmt(r.payloadKg(), 2));
         if (plan.validatePoses() > 0) sb.append(',').append(r.validate() ? "validate" : "train");
+        if (from != null) {
+            joints(sb, robot, from.q());
+            if (plan.dirColumns()) for (int d : from.dir()) sb.append(',').append(d);
+        }
         sb.append('\n');
+    }
+
+    /** The joint values, each after a comma, in the file's units (degrees; mm for a prismatic joint). */
+    private static void joints(StringBuilder sb, RobotDescription robot, double[] q) {
+        for (int j = 0; j < robot.dof(); j++) {
+            boolean prismatic = robot.joints().get(j).type() == JointType.PRISMATIC;
+            sb.append(',').append(Campaign.fmt(prismatic ? q[j] * 1e3 : Math.toDegrees(q[j]), 7));
+        }
     }
 }

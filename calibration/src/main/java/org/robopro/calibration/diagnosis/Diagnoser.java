@@ -742,18 +742,37 @@ public final class Diagnoser {
         }
         // With validation data, a lost motion that builds up over the move is claimed only when it predicts the
         // validation poses better than the constant lost motion of the same joint in its place.
+        // Whether the swap took is read from the list itself (the constant play is in it), not from its last entry:
+        // when the constant play is not identifiable or not plausible, the wind-up stays as it was.
         for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
             Effect e = selected.get(k);
             if (!e.buildsUp()) continue;
             double with = w.validateError(fit);
-            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, Effect.backlash(e.joint()), false);
+            List<Effect> sel0 = new ArrayList<>(selected);
+            Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> steps0 = new ArrayList<>(steps);
+            Effect constant = Effect.backlash(e.joint());
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, constant, false);
+            int at = selected.indexOf(constant);
+            if (at < 0) {
+                selected.clear();
+                selected.addAll(sel0);
+                absorbedCols.clear();
+                absorbedCols.putAll(abs0);
+                steps.clear();
+                steps.addAll(steps0);
+                aliasNotes.add(String.format(Locale.ROOT, "%s could not be compared with a constant lost motion of joint %d on the "
+                        + "validation poses (in its place a constant lost motion is not identifiable or not plausible), so it stays",
+                        e.label(), e.joint() + 1));
+                continue;
+            }
             double wo = w.validateError(plain);
-            int at = selected.size() - 1;
-            if (selected.get(at).kind() != Effect.Kind.BACKLASH || selected.get(at).buildsUp() || !(with < wo)) {
+            if (!(with < wo)) {
                 aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than a constant lost "
                         + "motion but not the validation poses (weighted error %.1f against %.1f), so the lost motion is taken as "
                         + "constant", e.label(), with, wo));
                 fit = plain;
+                k--; // the effect after it now stands at k
                 continue;
             }
             fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
@@ -1342,22 +1361,12 @@ public final class Diagnoser {
                     out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.ANGLE_STEP) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
-            double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).sorted().toArray()
-                    : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).sorted().toArray();
-            double place = angle ? e.rangeLo() : e.tauS();
-            int at = 0;
-            while (at < t.length && t[at] <= place) at++;
+            Locator.Var var = angle ? Locator.Var.ANGLE_STEP
+                    : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP : Locator.Var.TIME_STEP;
+            double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
+                    : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).toArray();
             // the midpoints between the poses within a twentieth of the campaign (of the joint's poses) either side
-            int reach = Math.max(1, t.length / Locator.STEP_QUANTILES);
-            for (int i = Math.max(1, at - reach); i <= Math.min(t.length - 1, at + reach); i++) {
-                double tau = 0.5 * (t[i - 1] + t[i]);
-                if (tau == place || !(t[i] > t[i - 1])) continue;
-                out.add(switch (e.kind()) {
-                    case ANGLE_STEP -> Effect.angleStep(e.joint(), tau);
-                    case TARGET_STEP -> Effect.targetStep(w.model, tau);
-                    default -> Effect.zeroStep(e.joint(), tau);
-                });
-            }
+            for (double tau : Locator.placesNear(t, angle ? e.rangeLo() : e.tauS())) out.add(stepEffect(var, e.joint(), tau, w.model));
         }
         return out;
     }
@@ -1586,7 +1595,7 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
-                if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(Effect.angleStep(j, f.probe.lo));
+                if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
@@ -1616,11 +1625,25 @@ public final class Diagnoser {
         }
         if (hasTime) out.add(Effect.driftWithTime());
         for (Locator.Found f : found)
-            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(Effect.targetStep(model, f.probe.lo));
+            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
         return out;
+    }
+
+    /**
+     * The effect of a step located in {@code var} at {@code place}: a reading's step in joint
+     * {@code joint}'s angle (rad), that joint's zero stepping at a time (s), or the target's move at a
+     * time (s).
+     */
+    static Effect stepEffect(Locator.Var var, int joint, double place, KinematicModel model) {
+        return switch (var) {
+            case ANGLE_STEP -> Effect.angleStep(joint, place);
+            case TIME_STEP -> Effect.zeroStep(joint, place);
+            case TARGET_STEP -> Effect.targetStep(model, place);
+            default -> throw new IllegalArgumentException("not a step: " + var);
+        };
     }
 
     /**
@@ -1638,9 +1661,7 @@ public final class Diagnoser {
                 case JOINT_PAIR -> out.add(Effect.pair(f.probe.joint, f.probe.other));
                 case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH,
                         f.probe.lo, f.probe.hi));
-                case TIME_STEP -> out.add(Effect.zeroStep(f.probe.joint, f.probe.lo));
-                case ANGLE_STEP -> out.add(Effect.angleStep(f.probe.joint, f.probe.lo));
-                case TARGET_STEP -> out.add(Effect.targetStep(model, f.probe.lo));
+                case TIME_STEP, ANGLE_STEP, TARGET_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;

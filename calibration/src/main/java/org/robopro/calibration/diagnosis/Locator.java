@@ -42,13 +42,13 @@ final class Locator {
     enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT }
 
     /**
-     * Places of a reading's step in a joint's angle: these quantiles of the poses' angles (a step found
-     * is then placed between the two poses that explain it best; at 10 places a step between two of
-     * them lost to the smooth curve before it could be placed).
+     * Places of a step (a reading's step in a joint's angle, a joint's zero step or the target's move
+     * in time): these quantiles of the poses' values, and a found step's finer places within this
+     * share of the poses either side (a step found is then placed between the two poses that explain
+     * it best; at 10 places a step in an angle between two of them lost to the smooth curve before it
+     * could be placed).
      */
-    static final int ANGLE_STEP_PLACES = 20;
-    /** Candidate times of a joint's zero step or the target's move: these quantiles of the poses' times. */
-    static final int STEP_QUANTILES = 20;
+    static final int STEP_PLACES = 20;
 
     /** One probe: a block of signature columns. */
     static final class Probe {
@@ -146,7 +146,7 @@ final class Locator {
                 out.add(p);
             }
             // the reading jumps where the joint passes one angle (an absolute encoder's track): a step at quantiles of q_j
-            if (steps) for (double q0 : stepPlaces(qx[0], ANGLE_STEP_PLACES)) out.add(angleStep(t, j, Math.toRadians(q0), qx));
+            if (steps) for (double q0 : stepPlaces(qx[0], STEP_PLACES)) out.add(angleStep(t, j, Math.toRadians(q0), qx));
             for (int k = 0; k < dof; k++) {
                 if (k == j || w.model.isPrismatic(k)) continue;
                 final int kk = k;
@@ -182,7 +182,7 @@ final class Locator {
             double[][][] rf = steps ? new double[ends][poses][] : null;
             if (steps)
                 for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
-            for (double tau : stepPlaces(time[0], STEP_QUANTILES)) {
+            for (double tau : stepPlaces(time[0], STEP_PLACES)) {
                 if (steps) out.add(targetStep(t, tau, time, rf));
                 for (int j = 0; j < dof; j++) out.add(zeroStep(t, j, tau, time));
             }
@@ -240,7 +240,7 @@ final class Locator {
     interface Angle { void at(double q, double[] g); }
 
     /**
-     * Places of a step in a variable: halfway between two poses' values at the quantiles k/{@link #STEP_QUANTILES}
+     * Places of a step in a variable: halfway between two poses' values at the quantiles k/{@link #STEP_PLACES}
      * (k = 1..19), leaving at least 3 poses on each side.
      */
     static List<Double> stepPlaces(double[] x, int quantiles) {
@@ -312,20 +312,33 @@ final class Locator {
      */
     static List<Probe> finerSteps(Diagnoser.Tester t, Probe p) {
         if (p.var != Var.ANGLE_STEP && p.var != Var.TIME_STEP && p.var != Var.TARGET_STEP) return List.of();
-        double[] v = p.var == Var.ANGLE_STEP ? t.endRows.get(0).stream().mapToDouble(r -> r.q(p.joint)).toArray() : p.x[0].clone();
-        Arrays.sort(v);
-        int at = 0;
-        while (at < v.length && v[at] <= p.lo) at++;
-        int reach = Math.max(1, v.length / (p.var == Var.ANGLE_STEP ? ANGLE_STEP_PLACES : STEP_QUANTILES));
+        double[] v = p.var == Var.ANGLE_STEP ? t.endRows.get(0).stream().mapToDouble(r -> r.q(p.joint)).toArray() : p.x[0];
         List<Probe> out = new ArrayList<>();
-        for (int i = Math.max(1, at - reach); i <= Math.min(v.length - 1, at + reach); i++) {
-            double place = 0.5 * (v[i - 1] + v[i]);
-            if (place == p.lo || !(v[i] > v[i - 1])) continue;
+        for (double place : placesNear(v, p.lo))
             out.add(switch (p.var) {
                 case ANGLE_STEP -> angleStep(t, p.joint, place, p.x);
                 case TARGET_STEP -> targetStep(t, place, p.x, p.rf);
                 default -> zeroStep(t, p.joint, place, p.x);
             });
+        return out;
+    }
+
+    /**
+     * The places of a step near {@code place}: halfway between two neighbouring values (sorted) within
+     * a {@link #STEP_PLACES}th of the values either side of it, without {@code place} itself and
+     * without ties.
+     */
+    static List<Double> placesNear(double[] values, double place) {
+        double[] v = values.clone();
+        Arrays.sort(v);
+        int at = 0;
+        while (at < v.length && v[at] <= place) at++;
+        int reach = Math.max(1, v.length / STEP_PLACES);
+        List<Double> out = new ArrayList<>();
+        for (int i = Math.max(1, at - reach); i <= Math.min(v.length - 1, at + reach); i++) {
+            double mid = 0.5 * (v[i - 1] + v[i]);
+            if (mid == place || !(v[i] > v[i - 1])) continue;
+            out.add(mid);
         }
         return out;
     }

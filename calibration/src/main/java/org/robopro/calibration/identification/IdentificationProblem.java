@@ -41,6 +41,8 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     private final boolean sixD, instrument, distance, pairs;
     /** Distances between pairs of poses: the two ends of every row as position rows (no instrument), evaluated in metres. */
     private final IdentificationProblem ends;
+    /** The residuals of {@link #ends} (its Jacobian goes to its own {@code jFull}), kept so that an evaluation allocates neither. */
+    private final double[] endRes;
     private final int points;
     private final List<EffectBlock> effects;
     private final int nGeo, toolOff, toolSize, instOff, effOff, nFull;
@@ -139,7 +141,11 @@ public final class IdentificationProblem implements LeastSquaresProblem {
             for (Measurement r : this.rows) { endRows.add(r.firstPose()); endRows.add(r.secondPose()); }
             ends = new IdentificationProblem(model, endRows, false, false, this.effects, start);
             ends.setSigmas(1, 1);
-        } else ends = null;
+            endRes = new double[ends.residualCount()];
+        } else {
+            ends = null;
+            endRes = null;
+        }
         m = this.rows.size() * rowsPerPose();
         ws = model.newWorkspace();
         jg = new double[6 * nGeo];
@@ -538,7 +544,8 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     private void evaluatePairs(double[] full, double[] res, double[] jac, double[] jacFirst, double[] jacSecond) {
         int n = rows.size();
         boolean any = jac != null || jacFirst != null;
-        double[] r2 = new double[6 * n], j2 = any ? new double[6 * n * nFull] : null;
+        // ends' evaluateFull writes every residual and zero-fills the Jacobian first, so its buffers can be reused.
+        double[] r2 = endRes, j2 = any ? ends.jFull : null;
         ends.evaluateFull(full, r2, j2);
         double wp = 1 / sigmaPos;
         for (int i = 0; i < n; i++) {

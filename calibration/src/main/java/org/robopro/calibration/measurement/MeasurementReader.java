@@ -196,18 +196,7 @@ public final class MeasurementReader {
                                 + " joints; measure with the robot the file was taken on");
             int[] qIdx = new int[dof];
             for (int k = 0; k < dof; k++) qIdx[k] = index.get("q" + (k + 1));
-            int[] dIdx = null;
-            if (maxDir > 0) {
-                if (maxDir != dof)
-                    throw error(headerLine, cols.get(index.get("dir" + maxDir)).col, "dir" + maxDir,
-                            "direction columns go to dir" + maxDir + " but there are " + dof + " joints");
-                dIdx = new int[dof];
-                for (int k = 0; k < dof; k++) {
-                    Integer c = index.get("dir" + (k + 1));
-                    if (c == null) throw error(headerLine, 1, "dir" + (k + 1), "direction column 'dir" + (k + 1) + "' is missing (all of dir1..dir" + dof + " or none)");
-                    dIdx[k] = c;
-                }
-            }
+            int[] dIdx = maxDir > 0 ? numbered(headerLine, cols, index, "dir", maxDir, dof, "direction", " or none") : null;
             int[] oIdx = null;
             int present = 0;
             for (String s : quat) if (index.containsKey(s)) present++;
@@ -240,12 +229,12 @@ public final class MeasurementReader {
                             + "between two poses; this file has no 'distance' column (a position file has no first pose)");
                 if (maxFromQ == 0)
                     throw error(headerLine, firstCol, first, "first-pose directions without the first pose's joints: add from_q1..from_q" + dof);
-                fqIdx = numbered(headerLine, cols, index, "from_q", maxFromQ, dof, "first-pose joint");
+                fqIdx = numbered(headerLine, cols, index, "from_q", maxFromQ, dof, "first-pose joint", "");
                 if ((maxFromDir > 0) != (dIdx != null))
                     throw error(headerLine, maxFromDir > 0 ? cols.get(index.get("from_dir" + maxFromDir)).col : cols.get(dIdx[0]).col,
                             maxFromDir > 0 ? "from_dir" + maxFromDir : "dir1", "a distance between two poses needs the approach "
                             + "directions of both poses (dir1..dir" + dof + " and from_dir1..from_dir" + dof + ") or of neither");
-                if (maxFromDir > 0) fdIdx = numbered(headerLine, cols, index, "from_dir", maxFromDir, dof, "first-pose direction");
+                if (maxFromDir > 0) fdIdx = numbered(headerLine, cols, index, "from_dir", maxFromDir, dof, "first-pose direction", "");
                 if (meta.containsKey("anchor")) {
                     int[] pos = metaPos.get("anchor");
                     throw error(pos[0], pos[1], "anchor", "a distance between two poses (from_q columns) has no anchor; delete the "
@@ -306,8 +295,7 @@ public final class MeasurementReader {
                     Integer prev = seen.putIfAbsent(id, lineNo);
                     if (prev != null) throw error(lineNo, pf.col, "pose", "duplicate pose id '" + id + "' (first on line " + prev + ")");
                 }
-                double[] q = new double[dof];
-                for (int k = 0; k < dof; k++) q[k] = number(lineNo, fs.get(qIdx[k]), "q" + (k + 1)) * qScale[k];
+                double[] q = joints(lineNo, fs, qIdx, "q", qScale);
                 List<Vec3> pts = new ArrayList<>();
                 for (int k = 0; k < perRow; k++)
                     pts.add(new Vec3(number(lineNo, fs.get(pIdx[k][0]), pName[k][0]) * lengthScale,
@@ -334,11 +322,7 @@ public final class MeasurementReader {
                     for (int k = 0; k < 4; k++) o[k] /= n;
                 }
                 int[] dirs = directions(lineNo, fs, dIdx, "dir");
-                double[] fromQ = null;
-                if (fqIdx != null) {
-                    fromQ = new double[dof];
-                    for (int k = 0; k < dof; k++) fromQ[k] = number(lineNo, fs.get(fqIdx[k]), "from_q" + (k + 1)) * qScale[k];
-                }
+                double[] fromQ = fqIdx == null ? null : joints(lineNo, fs, fqIdx, "from_q", qScale);
                 int[] fromDirs = directions(lineNo, fs, fdIdx, "from_dir");
                 double time = tIdx == null ? Double.NaN : number(lineNo, fs.get(tIdx), "time_s");
                 double temp = tempIdx == null ? Double.NaN : number(lineNo, fs.get(tempIdx), "temp_c");
@@ -431,9 +415,11 @@ public final class MeasurementReader {
 
         /**
          * The columns {@code prefix}1..{@code prefix}{@code dof} (one per joint; the header's highest
-         * is {@code max}), each present, or a header error naming the first wrong one.
+         * is {@code max}), each present, or a header error naming the first wrong one; {@code orNone} ends
+         * the missing column's message (" or none" where the columns are optional, else "").
          */
-        int[] numbered(int headerLine, List<Field> cols, Map<String, Integer> index, String prefix, int max, int dof, String what) {
+        int[] numbered(int headerLine, List<Field> cols, Map<String, Integer> index, String prefix, int max, int dof, String what,
+                       String orNone) {
             if (max != dof)
                 throw error(headerLine, cols.get(index.get(prefix + max)).col, prefix + max,
                         what + " columns go to " + prefix + max + " but there are " + dof + " joints");
@@ -441,10 +427,17 @@ public final class MeasurementReader {
             for (int k = 0; k < dof; k++) {
                 Integer c = index.get(prefix + (k + 1));
                 if (c == null) throw error(headerLine, 1, prefix + (k + 1), what + " column '" + prefix + (k + 1)
-                        + "' is missing (all of " + prefix + "1.." + prefix + dof + ")");
+                        + "' is missing (all of " + prefix + "1.." + prefix + dof + orNone + ")");
                 idx[k] = c;
             }
             return idx;
+        }
+
+        /** The joint values in columns {@code idx} ({@code prefix}1..N) of a row, times each joint's unit scale. */
+        double[] joints(int lineNo, List<Field> fs, int[] idx, String prefix, double[] qScale) {
+            double[] q = new double[idx.length];
+            for (int k = 0; k < idx.length; k++) q[k] = number(lineNo, fs.get(idx[k]), prefix + (k + 1)) * qScale[k];
+            return q;
         }
 
         /** The directions in columns {@code idx} (null: none) of a row; each 1, -1 or 0. */

@@ -113,16 +113,9 @@ public final class MeasurementWriter {
             throw new IllegalArgumentException("pose id '" + id + "' cannot be written (comma, newline or leading #)");
         sb.append(id);
         if (point != null) sb.append(',').append(point);
-        for (int k = 0; k < dof; k++) {
-            boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
-            sb.append(',').append(num(prismatic ? Units.mToMm(m.q(k)) : Units.radToDeg(m.q(k)), 9));
-        }
+        joints(sb, m.q(), dof, jointTypes);
         double[] from = m.fromQ();
-        if (from != null)
-            for (int k = 0; k < dof; k++) {
-                boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
-                sb.append(',').append(num(prismatic ? Units.mToMm(from[k]) : Units.radToDeg(from[k]), 9));
-            }
+        if (from != null) joints(sb, from, dof, jointTypes);
         if (p == null) sb.append(',').append(num(Units.mToMm(distance), 6));
         else sb.append(',').append(num(Units.mToMm(p.x()), 6))
                 .append(',').append(num(Units.mToMm(p.y()), 6))
@@ -135,6 +128,14 @@ public final class MeasurementWriter {
         if (c.payload()) sb.append(',').append(num(m.payloadKg(), 3));
         if (c.split()) sb.append(',').append(m.set().fileName());
         sb.append('\n');
+    }
+
+    /** The first {@code dof} joint values of {@code q}, each after a comma, in the file's units (degrees, mm for a prismatic joint). */
+    private static void joints(StringBuilder sb, double[] q, int dof, List<JointType> jointTypes) {
+        for (int k = 0; k < dof; k++) {
+            boolean prismatic = jointTypes != null && jointTypes.get(k) == JointType.PRISMATIC;
+            sb.append(',').append(num(prismatic ? Units.mToMm(q[k]) : Units.radToDeg(q[k]), 9));
+        }
     }
 
     public static void write(MeasurementSet set, List<JointType> jointTypes, Path file, boolean overwrite) throws IOException {
