@@ -194,6 +194,22 @@ public final class Diagnoser {
         return e * e;
     }
 
+    /** The stepwise selection's state (effects, their absorbed columns, their steps) as it was, to be put back. */
+    private record Selection(List<Effect> selected, Map<Effect, boolean[]> absorbed, List<Step> steps) {
+        static Selection of(List<Effect> selected, Map<Effect, boolean[]> absorbed, List<Step> steps) {
+            return new Selection(new ArrayList<>(selected), new java.util.IdentityHashMap<>(absorbed), new ArrayList<>(steps));
+        }
+
+        void restore(List<Effect> selectedNow, Map<Effect, boolean[]> absorbedNow, List<Step> stepsNow) {
+            selectedNow.clear();
+            selectedNow.addAll(selected);
+            absorbedNow.clear();
+            absorbedNow.putAll(absorbed);
+            stepsNow.clear();
+            stepsNow.addAll(steps);
+        }
+    }
+
     /** At least this many training poses per fold for the cross-validation of the claims. */
     static final int MIN_POSES_PER_FOLD = 10;
 
@@ -748,19 +764,12 @@ public final class Diagnoser {
             Effect e = selected.get(k);
             if (!e.buildsUp()) continue;
             double with = w.validateError(fit);
-            List<Effect> sel0 = new ArrayList<>(selected);
-            Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
-            List<Step> steps0 = new ArrayList<>(steps);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
             Effect constant = Effect.backlash(e.joint());
             Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, constant, false);
             int at = selected.indexOf(constant);
             if (at < 0) {
-                selected.clear();
-                selected.addAll(sel0);
-                absorbedCols.clear();
-                absorbedCols.putAll(abs0);
-                steps.clear();
-                steps.addAll(steps0);
+                saved.restore(selected, absorbedCols, steps);
                 aliasNotes.add(String.format(Locale.ROOT, "%s could not be compared with a constant lost motion of joint %d on the "
                         + "validation poses (in its place a constant lost motion is not identifiable or not plausible), so it stays",
                         e.label(), e.joint() + 1));
@@ -1128,9 +1137,7 @@ public final class Diagnoser {
             if (eligible.isEmpty()) continue;
             double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
             boolean hasVal = w.hasValidation();
-            List<Effect> sel0 = new ArrayList<>(selected);
-            Map<Effect, boolean[]> abs0 = new java.util.IdentityHashMap<>(absorbedCols);
-            List<Step> steps0 = new ArrayList<>(steps);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
             double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
             // The joint's families taken out once: the model every rival is tested on and added to.
             Fit f = fit;
@@ -1173,12 +1180,7 @@ public final class Diagnoser {
                 }
             }
             if (!taken) {
-                selected.clear();
-                selected.addAll(sel0);
-                absorbedCols.clear();
-                absorbedCols.putAll(abs0);
-                steps.clear();
-                steps.addAll(steps0);
+                saved.restore(selected, absorbedCols, steps);
             }
         }
         return fit;
