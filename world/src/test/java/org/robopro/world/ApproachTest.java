@@ -128,6 +128,14 @@ class ApproachTest {
     }
 
     @Test
+    void oneSidedScenarios_formTheirOwnGroup_theirAnswerBelongsToTheirCampaign() {
+        List<Scenario> one = Scenario.ofFamily(Scenario.ONE_SIDED);
+        assertEquals(4, one.size());
+        for (Scenario s : Scenario.catalogue()) assertEquals(one.contains(s), s.answerNeedsItsCampaign(), s.name());
+        for (Scenario s : one) assertTrue(s.trial(1, p -> p.withPoses(5, 0)).campaign().plan().approach() != null, s.name());
+    }
+
+    @Test
     void badRules_refused() {
         assertThrows(IllegalArgumentException.class, () -> new Campaign.Approach(new int[] {2, 0, 0, 0, 0, 0}, 0.01, 0.01, 0));
         assertThrows(IllegalArgumentException.class, () -> Campaign.Approach.all(6, 1, 0, 0.01, 0));

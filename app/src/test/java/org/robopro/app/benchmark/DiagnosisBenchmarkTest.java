@@ -69,6 +69,13 @@ class DiagnosisBenchmarkTest {
         assertEquals(List.of(), unexpected, "runs that went wrong and are not known failures");
     }
 
+    /** The one-sided campaigns' answers belong to their own campaigns: the demo, which measures with its own, does not offer them. */
+    @Test
+    void oneSidedScenarios_areNotConcealedByTheDemo() {
+        assertFalse(org.robopro.app.demo.Demo.concealGroups().contains(Scenario.ONE_SIDED));
+        assertTrue(org.robopro.app.demo.Demo.concealGroups().contains("lost-motion"));
+    }
+
     @Test
     void twinOfANullCampaign_isTheCampaign_sameValidationRms() {
         Scenario s = Scenario.named("null irb2000, 50 poses");
