@@ -131,7 +131,8 @@ class ApproachTest {
     void oneSidedScenarios_formTheirOwnGroup_theirAnswerBelongsToTheirCampaign() {
         List<Scenario> one = Scenario.ofFamily(Scenario.ONE_SIDED);
         assertEquals(4, one.size());
-        for (Scenario s : Scenario.catalogue()) assertEquals(one.contains(s), s.answerNeedsItsCampaign(), s.name());
+        List<String> names = one.stream().map(Scenario::name).toList();
+        for (Scenario s : Scenario.catalogue()) assertEquals(names.contains(s.name()), s.answerNeedsItsCampaign(), s.name());
         for (Scenario s : one) assertTrue(s.trial(1, p -> p.withPoses(5, 0)).campaign().plan().approach() != null, s.name());
     }
 
