@@ -21,6 +21,7 @@ import org.robopro.calibration.identification.IdentificationProblem;
 import org.robopro.calibration.identification.LevenbergMarquardt;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.calibration.workflow.CalibrationWorkflow;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.models.RobotDescription;
 import org.slf4j.Logger;
@@ -250,20 +251,17 @@ public final class Diagnoser {
         int[] fold = MeasurementSet.folds(rows.size(), k, rows.size());
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
         Map<String, Integer> count = new LinkedHashMap<>();
-        List<Diagnosis> folds = new ArrayList<>();
-        double geoSs = 0, effSs = 0;
-        for (int f = 0; f < k; f++) {
+        double[] heldSs = new double[2]; // the held-out sums of squares: geometric model, each fold's effects
+        List<Diagnosis> folds = CalibrationWorkflow.crossValidate(train, fold, k, (f, tr, va) -> {
             o.cancel().check();
             o.progress().update("cross-validating the claims (fold " + (f + 1) + " of " + k + ")", (double) f / k);
-            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-            for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
-            Diagnosis df = run(robot, train.withRows(tr), train.withRows(va), fo, null, t0, dirSource, Set.of()).d;
-            folds.add(df);
+            Diagnosis df = run(robot, tr, va, fo, null, t0, dirSource, Set.of()).d;
             for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
-            geoSs += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
-            effSs += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
-        }
-        double geoCv = Math.sqrt(geoSs / rows.size()), effCv = Math.sqrt(effSs / rows.size());
+            heldSs[0] += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
+            heldSs[1] += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
+            return df;
+        });
+        double geoCv = Math.sqrt(heldSs[0] / rows.size()), effCv = Math.sqrt(heldSs[1] / rows.size());
         List<String> extra = new ArrayList<>();
         extra.add(String.format(Locale.ROOT, "no validation poses: the claims were judged by %d-fold cross-validation of the whole "
                 + "diagnosis; held-out RMS %.4f mm with the geometric model, %.4f mm with each fold's effects", k, geoCv * 1e3, effCv * 1e3));
@@ -326,16 +324,12 @@ public final class Diagnoser {
             masks.put(e, m);
         }
         KinematicModel model = KinematicModel.build(robot);
-        List<Measurement> rows = train.rows();
         for (int f = 0; f < folds.size(); f++) {
             o.cancel().check();
             Diagnosis df = folds.get(f);
             Set<String> outl = new HashSet<>(df.outliers());
-            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-            for (int i = 0; i < rows.size(); i++)
-                if (fold[i] == f) va.add(rows.get(i));
-                else if (!outl.contains(rows.get(i).poseId())) tr.add(rows.get(i));
-            Work w = new Work(model, tr, df.geometric(), train.withRows(va), o);
+            MeasurementSet.FoldSplit split = train.foldSplit(fold, f);
+            Work w = new Work(model, split.train().filter(m -> !outl.contains(m.poseId())).rows(), df.geometric(), split.heldOut(), o);
             double[] start = Arrays.copyOf(w.geoFull, w.geoFull.length + d.effects().stream().mapToInt(x -> x.effect().size()).sum());
             int off = w.geoFull.length;
             for (Diagnosis.Finding x : d.effects()) for (double v : x.values()) start[off++] = v; // from the full fit's values
@@ -344,7 +338,7 @@ public final class Diagnoser {
             for (int i = 0; i < effects.size(); i++) {
                 Effect e = effects.get(i);
                 if (e.isFallback()) continue;
-                double without = w.validateError(w.fit(withoutOne(effects, i), masks, w.dropEffect(all, i), null));
+                double without = w.validateError(w.refitWithout(all, effects, masks, i));
                 double[] h = out.computeIfAbsent(claimKey(e), x -> new double[2]);
                 h[0] += with;
                 h[1] += without;
@@ -626,15 +620,9 @@ public final class Diagnoser {
             if (selected.size() >= 2) {
                 int drop = w.weakest(fit, selected, threshold);
                 if (drop >= 0) {
-                    Effect gone = selected.remove(drop);
-                    absorbedCols.remove(gone);
-                    steps.remove(drop);
-                    LOG.debug("backward: dropped {}", gone.label());
-                    fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
-                    if (!steps.isEmpty()) {
-                        Step last = steps.remove(steps.size() - 1);
-                        steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
-                    }
+                    LOG.debug("backward: dropped {}", selected.get(drop).label());
+                    fit = dropAndRefit(w, fit, selected, absorbedCols, steps, drop);
+                    restampLast(w, fit, steps);
                 }
             }
         }
@@ -707,12 +695,9 @@ public final class Diagnoser {
                     && e.kind() != Effect.Kind.ANGLE_STEP;
             if (!angleFamily || selected.stream().noneMatch(x -> (x.kind() == Effect.Kind.SMOOTH || x.kind() == Effect.Kind.ANGLE_STEP)
                     && x.joint() == e.joint())) continue;
-            selected.remove(k);
-            absorbedCols.remove(e);
-            steps.remove(k);
             aliasNotes.add(e.label() + " is not claimed: the angle-dependent error of joint " + (e.joint() + 1)
                     + " needed a fallback of its angle (a smooth curve or a step) as well, so it is not that family's alone");
-            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
         }
         // Likewise where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
         // joints, and the fallback holds j's scale error and the coupling of j from k (its linear terms), so a claim
@@ -724,12 +709,9 @@ public final class Diagnoser {
                     && (e.kind() == Effect.Kind.SCALE || e.kind() == Effect.Kind.PERIODIC
                     || e.kind() == Effect.Kind.COUPLING && e.source() == x.source())).findFirst().orElse(null);
             if (pair == null) continue;
-            selected.remove(k);
-            absorbedCols.remove(e);
-            steps.remove(k);
             aliasNotes.add(e.label() + " is not claimed: joint " + (e.joint() + 1) + "'s error needed the two-joint fallback "
                     + pair.label() + " as well, which holds this family's shape, so it is not that family's alone");
-            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
@@ -741,20 +723,16 @@ public final class Diagnoser {
         // With validation data, an effect is kept only when the final model predicts the validation poses better with
         // it than refitted without it (position and orientation, each over its noise).
         for (int k = selected.size() - 1; k >= 0 && w.hasValidation(); k--) {
-            Fit without = w.fit(withoutOne(selected, k), absorbedCols, w.dropEffect(fit, k), null);
+            Fit without = w.refitWithout(fit, selected, absorbedCols, k);
             double with = w.validateError(fit), wo = w.validateError(without);
             if (with < wo) continue;
-            LOG.debug("validation: dropped {} ({} with, {} without)", selected.get(k).label(), with, wo);
-            Effect gone = selected.remove(k);
-            absorbedCols.remove(gone);
-            steps.remove(k);
+            Effect gone = selected.get(k);
+            LOG.debug("validation: dropped {} ({} with, {} without)", gone.label(), with, wo);
+            drop(selected, absorbedCols, steps, k);
             aliasNotes.add(gone.label() + " was significant on the training poses but did not lower the validation error, "
                     + (gone.isFallback() ? "so it is not used (the structure stays reported as located)" : "so it is not claimed"));
             fit = without;
-            if (!steps.isEmpty()) {
-                Step last = steps.remove(steps.size() - 1);
-                steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
-            }
+            restampLast(w, fit, steps);
         }
         // With validation data, a lost motion that builds up over the move is claimed only when it predicts the
         // validation poses better than the constant lost motion of the same joint in its place.
@@ -958,10 +936,9 @@ public final class Diagnoser {
      */
     private static Fit replaceEffect(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                      int k, Effect by, boolean heldOut) {
-        Effect e = selected.remove(k);
-        absorbedCols.remove(e);
-        Step old = steps.remove(k);
-        Fit without = w.fit(selected, absorbedCols, w.dropEffect(fit, k), null);
+        Effect e = selected.get(k);
+        Step old = steps.get(k);
+        Fit without = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
         if (by == null) return without;
         Tester wt = w.tester(without);
         Candidate bc = wt.test(by, w.conditions);
@@ -1141,13 +1118,7 @@ public final class Diagnoser {
             double thr = steps.get(selected.indexOf(fams.get(0))).candidate.threshold;
             // The joint's families taken out once: the model every rival is tested on and added to.
             Fit f = fit;
-            for (Effect e : fams) {
-                int k = selected.indexOf(e);
-                selected.remove(k);
-                absorbedCols.remove(e);
-                steps.remove(k);
-                f = w.fit(selected, absorbedCols, w.dropEffect(f, k), null);
-            }
+            for (Effect e : fams) f = dropAndRefit(w, f, selected, absorbedCols, steps, selected.indexOf(e));
             Tester ft = w.tester(f);
             List<Effect> selF = new ArrayList<>(selected);
             Map<Effect, boolean[]> absF = new java.util.IdentityHashMap<>(absorbedCols);
@@ -1322,17 +1293,12 @@ public final class Diagnoser {
             double[] p = new double[1];
             int drop = w.weakest(fit, selected, threshold, e -> !e.isFallback(), p);
             if (drop < 0) break;
-            Effect gone = selected.remove(drop);
-            absorbedCols.remove(gone);
-            steps.remove(drop);
+            Effect gone = selected.get(drop);
             LOG.debug("final backward: dropped {} (p {})", gone.label(), p[0]);
             notes.add(String.format(Locale.ROOT, "%s is not claimed: in the final model, beside the structures located, it "
                     + "is no longer significant (p = %.2g against the threshold %.2g) or no longer plausible", gone.label(), p[0], threshold));
-            fit = w.fit(selected, absorbedCols, w.dropEffect(fit, drop), null);
-            if (!steps.isEmpty()) {
-                Step last = steps.remove(steps.size() - 1);
-                steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
-            }
+            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, drop);
+            restampLast(w, fit, steps);
         }
         return fit;
     }
@@ -1341,6 +1307,27 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>(es);
         out.remove(k);
         return out;
+    }
+
+    /** Takes selected effect {@code k} out of the selection: the effect, its absorbed columns and its step. */
+    private static void drop(List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps, int k) {
+        absorbedCols.remove(selected.remove(k));
+        steps.remove(k);
+    }
+
+    /** Takes selected effect {@code k} out ({@link #drop}) and refits the rest from {@code fit}'s values. */
+    private static Fit dropAndRefit(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                    int k) {
+        Fit without = w.refitWithout(fit, selected, absorbedCols, k);
+        drop(selected, absorbedCols, steps, k);
+        return without;
+    }
+
+    /** The last step's RMS figures made those of {@code fit}, the model once an effect before it has left. */
+    private static void restampLast(Work w, Fit fit, List<Step> steps) {
+        if (steps.isEmpty()) return;
+        Step last = steps.remove(steps.size() - 1);
+        steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
     }
 
     /**
@@ -1804,17 +1791,8 @@ public final class Diagnoser {
         /** Whether there are validation poses (a set given and not empty). */
         boolean hasValidation() { return validate != null && validate.size() > 0; }
 
-        double validateRms(Fit f) {
-            if (!hasValidation()) return Double.NaN;
-            boolean six = sixD && validate.hasOrientation();
-            double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
-            List<EffectBlock> bl = f.problem.effects();
-            IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, bl, full);
-            q.setSigmas(1, 1);
-            double[] r = new double[q.residualCount()];
-            q.evaluateFull(full, r, null);
-            return q.measurementRms(r, 1);
-        }
+        /** The RMS error of the validation poses' measurements under {@code f}, m; NaN without validation poses. */
+        double validateRms(Fit f) { return validation(f, false); }
 
         /**
          * The held-out error on the validation poses as the fit weighs its training rows: the sum
@@ -1822,14 +1800,23 @@ public final class Diagnoser {
          * An effect seen mostly in the orientation (a wrist joint's error) moves the position RMS
          * by less than its noise; this judges it on what it predicts. NaN without validation poses.
          */
-        double validateError(Fit f) {
+        double validateError(Fit f) { return validation(f, true); }
+
+        /**
+         * The validation poses under {@code f} (its geometry and effects; the tool's rotation left out
+         * when the training data have orientations and the validation data do not): with {@code
+         * weighted}, the sum of squared residuals each over its noise σ; else the measurements' RMS, m.
+         */
+        private double validation(Fit f, boolean weighted) {
             if (!hasValidation()) return Double.NaN;
             boolean six = sixD && validate.hasOrientation();
             double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
             IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, f.problem.effects(), full);
-            q.setSigmas(sigmaPos, sigmaRot);
+            if (weighted) q.setSigmas(sigmaPos, sigmaRot);
+            else q.setSigmas(1, 1);
             double[] r = new double[q.residualCount()];
             q.evaluateFull(full, r, null);
+            if (!weighted) return q.measurementRms(r, 1);
             double ss = 0;
             for (double v : r) ss += v * v;
             return ss;
@@ -1876,6 +1863,11 @@ public final class Diagnoser {
                 out[free[c] - eff0] = Math.sqrt(s2 * a.get(c, c)) / scale[c];
             }
             return out;
+        }
+
+        /** {@code effects} without effect {@code k} refitted, from {@code f}'s values without that effect's. */
+        Fit refitWithout(Fit f, List<Effect> effects, Map<Effect, boolean[]> absorbed, int k) {
+            return fit(withoutOne(effects, k), absorbed, dropEffect(f, k), null);
         }
 
         /** The full vector of a fit without effect {@code k}'s parameters. */
@@ -2136,16 +2128,7 @@ public final class Diagnoser {
             double s = 0;
             for (double v : rPerp) s += v * v;
             rss0 = s;
-            int poses = m / rpp;
-            h0 = new double[poses][rpp * rpp];
-            for (int i = 0; i < poses; i++)
-                for (int a1 = 0; a1 < rpp; a1++)
-                    for (int b1 = 0; b1 < rpp; b1++) {
-                        double h = 0;
-                        int ra = (i * rpp + a1) * rank, rb = (i * rpp + b1) * rank;
-                        for (int k = 0; k < rank; k++) h += u[ra + k] * u[rb + k];
-                        h0[i][a1 * rpp + b1] = h;
-                    }
+            h0 = hatBlocks(u, rank);
             press0 = press(rPerp, null, 0);
         }
 
@@ -2171,24 +2154,7 @@ public final class Diagnoser {
          * Leave-one-pose-out prediction error sum of squares of a linear model with residual e and
          * hat blocks h0 + Q_i Q_iᵀ (Q: m x q extra orthonormal columns, or null): Σ ‖(I − H_ii)⁻¹ e_i‖².
          */
-        double press(double[] e, double[] qm, int q) {
-            int poses = m / rpp;
-            double total = 0;
-            double[] h = new double[rpp * rpp], b = new double[rpp];
-            for (int i = 0; i < poses; i++) {
-                for (int a1 = 0; a1 < rpp; a1++)
-                    for (int b1 = 0; b1 < rpp; b1++) {
-                        double v = -h0[i][a1 * rpp + b1];
-                        if (qm != null)
-                            for (int k = 0; k < q; k++) v -= qm[(i * rpp + a1) * q + k] * qm[(i * rpp + b1) * q + k];
-                        h[a1 * rpp + b1] = v + (a1 == b1 ? 1 : 0);
-                    }
-                for (int a1 = 0; a1 < rpp; a1++) b[a1] = e[i * rpp + a1];
-                if (!solve(h, b, rpp)) return Double.POSITIVE_INFINITY; // a pose fully determines a parameter
-                for (double v : b) total += v * v;
-            }
-            return total;
-        }
+        double press(double[] e, double[] qm, int q) { return pressBlocks(h0, e, qm, q); }
 
         /** The linearised model without selected effect k: a basis of its other free columns, and the residual without the effect. */
         private int withoutK = -1;
@@ -2286,7 +2252,7 @@ public final class Diagnoser {
                         h[a1 * rpp + b1] = (a1 == b1 ? 1 : 0) - v;
                     }
                 for (int a1 = 0; a1 < rpp; a1++) bb[a1] = e[i * rpp + a1];
-                if (!solve(h, bb, rpp)) return Double.POSITIVE_INFINITY;
+                if (!solve(h, bb, rpp)) return Double.POSITIVE_INFINITY; // a pose fully determines a parameter
                 for (double v : bb) total += v * v;
             }
             return total;

@@ -104,6 +104,16 @@ public record MeasurementSet(String source, Map<String, String> metadata, String
         return new MeasurementSet(source, metadata, frame, newRows, pointNames, anchor);
     }
 
+    /** One fold of a K-fold split: the rows of the other folds (training) and the fold's own rows (held out). */
+    public record FoldSplit(MeasurementSet train, MeasurementSet heldOut) { }
+
+    /** The rows in fold {@code f} of {@code fold} (one entry a row, as {@link #folds} deals them) held out, the others for training; each in file order. */
+    public FoldSplit foldSplit(int[] fold, int f) {
+        List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+        for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
+        return new FoldSplit(withRows(tr), withRows(va));
+    }
+
     /**
      * Fold of each of {@code poses} poses (0..K-1) for K-fold cross-validation: the poses shuffled with
      * {@code new Random(seed)} (specified by the JDK, so the same on every machine), then dealt

@@ -173,13 +173,15 @@ public final class CalibrationWorkflow {
      * and the fold as held-out data; the results in fold order.
      */
     public static <T> List<T> crossValidate(MeasurementSet data, int k, long seed, FoldFit<T> fit) {
-        List<Measurement> rows = data.rows();
-        int[] fold = MeasurementSet.folds(rows.size(), k, seed);
+        return crossValidate(data, MeasurementSet.folds(data.size(), k, seed), k, fit);
+    }
+
+    /** {@link #crossValidate(MeasurementSet, int, long, FoldFit)} over a given split: {@code fold} holds each pose's fold, 0..k-1. */
+    public static <T> List<T> crossValidate(MeasurementSet data, int[] fold, int k, FoldFit<T> fit) {
         List<T> out = new ArrayList<>();
         for (int f = 0; f < k; f++) {
-            List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
-            for (int i = 0; i < rows.size(); i++) (fold[i] == f ? va : tr).add(rows.get(i));
-            out.add(fit.fit(f, data.withRows(tr), data.withRows(va)));
+            MeasurementSet.FoldSplit s = data.foldSplit(fold, f);
+            out.add(fit.fit(f, s.train(), s.heldOut()));
         }
         return out;
     }
