@@ -12,14 +12,34 @@ import org.ejml.dense.row.SingularOps_DDRM;
  * by the closed form of the nearly-spherical geometry for calibrated arms). Immutable; each call
  * allocates its own buffers, so one instance may be shared between threads.
  *
- * <p>Configuration data follows ABB's confdata: cf1, cf4, cf6 are the quadrants
- * floor(q / 90 deg) of axes 1, 4 and 6; cfx = 4 (wrist centre behind axis 1) + 2 (wrist centre
- * behind the lower arm) + 1 (axis 5 negative), where "in front" is the side the wrist centre
- * is on at the zero position. See docs/kinematics.md.
+ * <p>Configuration data follows ABB's confdata: cf1, cf4, cf6 are the quadrant numbers
+ * floor(q / 90 deg) of axes 1, 4 and 6 (quadrant 0 is 0..90 deg, -1 is 0..-90 deg); cfx = 4
+ * (wrist centre behind axis 1) + 2 (wrist centre behind the lower arm) + 1 (axis 5 negative),
+ * where "in front" is the side the wrist centre is on at the zero position. The cfx table (0 =
+ * front/front/positive ... 7 = behind/behind/negative) as ABB's RAPID reference manual gives it
+ * is reproduced in CEAD-group/py-opw-kinematics, AXIS_CONFIGURATION.md. See docs/kinematics.md.
+ *
+ * <p>A joint on a quadrant boundary (axis 4 at 0, axis 6 at 90 deg, axis 5 at 0 for the cfx
+ * bit) lies in both quadrants it separates. Joint values that are exactly on a boundary in
+ * theory come out of forward and inverse kinematics, and out of a robtarget written to RAPID
+ * and read back, a few 1e-15 to 1e-9 rad to either side, so a strict floor would give either
+ * quadrant depending on rounding. Therefore {@link #confOf} counts a value within
+ * {@link #CONF_TOLERANCE} below a boundary as on it (the quadrant above, as floor gives for the
+ * exact value), and {@link #inConfiguration} and {@link #solveWithConf} accept a solution whose
+ * joints are within CONF_TOLERANCE of the asked quadrants.
  */
 public final class InverseKinematics {
     /** Convergence of the numerical solver: position (m) and orientation (rad). */
     public static final double TOLERANCE = 1e-10;
+
+    /**
+     * Joint values closer than this (rad) to a quadrant boundary are on it (see the class
+     * comment). A robtarget written at RAPID's precision (positions to 1e-6 mm, quaternions to
+     * 10 digits) and solved again moves the joints by about 1e-9 rad away from singularities;
+     * 1e-6 rad (0.2 arc seconds, 1 um at 1 m) leaves a wide margin over that and is far below any
+     * joint difference a robot or a program means.
+     */
+    public static final double CONF_TOLERANCE = 1e-6;
 
     private final KinematicModel model;
     private final ClosedFormIk closed;
@@ -96,10 +116,42 @@ public final class InverseKinematics {
         return Optional.of(new IkSolution(q, confOf(q), model.withinLimits(q), solver.manipulabilityAt(q)));
     }
 
-    /** The solution with the given configuration data (inside the limits), or empty. */
+    /**
+     * The solution with the given configuration data (inside the limits), or empty: one whose
+     * confdata is {@code conf}, else one whose joints are in {@code conf}'s quadrants within
+     * {@link #CONF_TOLERANCE} ({@link #inConfiguration}), so a target on a quadrant boundary is
+     * reached in the configuration it was taught in whichever side rounding puts the solution.
+     */
     public Optional<IkSolution> solveWithConf(Pose baseTflange, ConfData conf) {
-        for (IkSolution s : solveAll(baseTflange)) if (s.withinLimits() && s.conf().equals(conf)) return Optional.of(s);
+        List<IkSolution> all = solveAll(baseTflange);
+        for (IkSolution s : all) if (s.withinLimits() && s.conf().equals(conf)) return Optional.of(s);
+        for (IkSolution s : all) if (s.withinLimits() && matches(s.q(), s.conf(), conf)) return Optional.of(s);
         return Optional.empty();
+    }
+
+    /**
+     * Whether joint values q are in configuration {@code conf}: their confdata is {@code conf}, or
+     * differs only where a joint is within {@link #CONF_TOLERANCE} of the boundary of the asked
+     * quadrant (axes 1, 4, 6) or axis 5 is within it of 0 (the cfx sign bit). The arm bits of cfx
+     * (wrist centre behind axis 1 / the lower arm) must be equal.
+     */
+    public boolean inConfiguration(double[] q, ConfData conf) {
+        return matches(q, confOf(q), conf);
+    }
+
+    private static boolean matches(double[] q, ConfData have, ConfData want) {
+        if (have.equals(want)) return true;
+        int n = q.length;
+        if ((have.cfx() & 6) != (want.cfx() & 6)) return false;
+        if ((have.cfx() & 1) != (want.cfx() & 1) && !(n > 4 && Math.abs(q[4]) <= CONF_TOLERANCE)) return false;
+        return inQuadrant(q[0], want.cf1()) && (n > 3 ? inQuadrant(q[3], want.cf4()) : want.cf4() == 0)
+                && (n > 5 ? inQuadrant(q[5], want.cf6()) : want.cf6() == 0);
+    }
+
+    /** q within [k, k + 1] quarter turns, widened by CONF_TOLERANCE on both sides. */
+    static boolean inQuadrant(double q, int k) {
+        double quarter = Math.PI / 2;
+        return q >= k * quarter - CONF_TOLERANCE && q <= (k + 1) * quarter + CONF_TOLERANCE;
     }
 
     /** ABB configuration data of joint values q. */
@@ -118,14 +170,24 @@ public final class InverseKinematics {
         return new ConfData(c[0], c[1], c[2], c[3]);
     }
 
-    /** cf1, cf4, cf6, cfx of q into out[off..off+3]; cfxArm holds the arm bits (4, 2) of cfx. */
+    /**
+     * cf1, cf4, cf6, cfx of q into out[off..off+3]; cfxArm holds the arm bits (4, 2) of cfx. A
+     * joint within {@link #CONF_TOLERANCE} below a quadrant boundary is on it and gets the
+     * quadrant above (floor of the exact value); axis 5 counts as negative only below
+     * -CONF_TOLERANCE. So a joint taught at 0 or 90 deg gets the same confdata whichever side
+     * of the boundary rounding leaves it.
+     */
     static void confInto(double[] q, int cfxArm, int[] out, int off) {
         int n = q.length;
-        double perQuarter = 2 / Math.PI; // a multiplication: the 1e-12 slack covers its rounding
-        out[off] = (int) Math.floor(q[0] * perQuarter + 1e-12);
-        out[off + 1] = n > 3 ? (int) Math.floor(q[3] * perQuarter + 1e-12) : 0;
-        out[off + 2] = n > 5 ? (int) Math.floor(q[5] * perQuarter + 1e-12) : 0;
-        out[off + 3] = cfxArm | (n > 4 && q[4] < 0 ? 1 : 0);
+        out[off] = quadrant(q[0]);
+        out[off + 1] = n > 3 ? quadrant(q[3]) : 0;
+        out[off + 2] = n > 5 ? quadrant(q[5]) : 0;
+        out[off + 3] = cfxArm | (n > 4 && q[4] < -CONF_TOLERANCE ? 1 : 0);
+    }
+
+    /** ABB's quadrant number floor(q / 90 deg), a value within CONF_TOLERANCE below a boundary on it (-0.0 and 0 give 0). */
+    static int quadrant(double q) {
+        return (int) Math.floor((q + CONF_TOLERANCE) * (2 / Math.PI));
     }
 
     /**

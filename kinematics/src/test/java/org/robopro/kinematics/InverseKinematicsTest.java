@@ -70,6 +70,85 @@ class InverseKinematicsTest {
     }
 
     @Test
+    void confOf_quadrantNumbers_followAbbDefinitionAndBoundariesDoNotFlipWithRounding() {
+        InverseKinematics ik = InverseKinematics.of(KinematicModel.build(ReferenceRobots.irb2000()));
+        // ABB's confdata: quadrant 0 is 0..90 deg, 1 is 90..180 deg, -1 is 0..-90 deg, -2 is -90..-180 deg (floor(q / 90 deg)).
+        double[][] degAndQuadrant = {{45, 0}, {135, 1}, {200, 2}, {300, 3}, {-45, -1}, {-135, -2}, {-200, -3}, {-300, -4},
+                {0, 0}, {90, 1}, {-90, -1}, {180, 2}, {-180, -2}};
+        for (double[] dq : degAndQuadrant) {
+            double r = Math.toRadians(dq[0]);
+            ConfData c = ik.confOf(new double[] {0, 0, 0, r, 0.5, r});
+            assertEquals((int) dq[1], c.cf4(), dq[0] + " deg on axis 4");
+            assertEquals((int) dq[1], c.cf6(), dq[0] + " deg on axis 6");
+        }
+        // A joint on a boundary, as rounding leaves it: -0.0, a few ulps or 1e-9 rad to either side, is on it.
+        for (double base : new double[] {0, Math.PI / 2, -Math.PI / 2, Math.PI}) {
+            int expected = (int) Math.round(base / (Math.PI / 2));
+            for (double noise : new double[] {0, -0.0, 1e-15, -1e-15, 6.3e-15, -6.3e-15, 1e-9, -1e-9, 5e-7, -5e-7}) {
+                ConfData c = ik.confOf(new double[] {base + noise, 0, 0, base + noise, 0.5, base + noise});
+                assertEquals(new ConfData(expected, expected, expected, 0), c, "boundary " + Math.toDegrees(base) + " deg, noise " + noise);
+            }
+            // beyond the tolerance the quadrant below is meant
+            ConfData below = ik.confOf(new double[] {0, 0, 0, base - 1e-5, 0.5, base - 1e-5});
+            assertEquals(expected - 1, below.cf4(), "1e-5 rad below " + Math.toDegrees(base) + " deg");
+            assertEquals(expected - 1, below.cf6());
+        }
+        // Axis 5 at 0 (the wrist singularity) is positive whatever the rounding; clearly negative sets bit 0 of cfx.
+        for (double q5 : new double[] {0, -0.0, -1e-15, -1e-9, 1e-9})
+            assertEquals(0, ik.confOf(new double[] {0, 0, 0, 0, q5, 0}).cfx() & 1, "axis 5 at " + q5);
+        assertEquals(1, ik.confOf(new double[] {0, 0, 0, 0, -1e-4, 0}).cfx() & 1);
+    }
+
+    @Test
+    void solveWithConf_targetTaughtOnQuadrantBoundaries_reachedInItsConfigurationWhicheverSideRoundingPutsIt() {
+        KinematicModel m = KinematicModel.build(ReferenceRobots.irb2000());
+        InverseKinematics ik = InverseKinematics.of(m);
+        Random rnd = new Random(31);
+        // Taught with axes 4 and 6 at 0 (the workbench's ready pose jogged), and at +-90 deg.
+        double[][] taught = {{Math.toRadians(10), Math.toRadians(29.86), Math.toRadians(8.39), 0, Math.toRadians(56.6), 0},
+                {0, Math.toRadians(25), Math.toRadians(5), Math.PI / 2, Math.toRadians(60), -Math.PI / 2}};
+        for (double[] q0 : taught) {
+            ConfData conf = ik.confOf(q0);
+            Pose exact = m.flange(q0);
+            boolean below4 = false, above4 = false;
+            for (int k = 0; k < 60; k++) {
+                // what a robtarget written at RAPID's precision and read back can be: the pose moved by about 1e-9 m and rad
+                org.robopro.models.Vec3 axis = new org.robopro.models.Vec3(rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian());
+                Pose rounded = Pose.translation(1e-9 * rnd.nextGaussian(), 1e-9 * rnd.nextGaussian(), 1e-9 * rnd.nextGaussian())
+                        .times(exact).times(Pose.rotAxis(axis, 1e-9));
+                double[] nearest = ik.solveNear(rounded, q0).orElseThrow().q();
+                double d4 = nearest[3] - q0[3];
+                if (d4 < 0) below4 = true;
+                if (d4 > 0) above4 = true;
+                Optional<IkSolution> s = ik.solveWithConf(rounded, conf);
+                assertTrue(s.isPresent(), "taught at " + java.util.Arrays.toString(q0) + " in " + conf + ": the rounded pose has no solution in it");
+                for (int j = 0; j < 6; j++) assertEquals(q0[j], s.get().q()[j], 1e-6, "joint " + (j + 1));
+                assertTrue(ik.inConfiguration(s.get().q(), conf));
+            }
+            assertTrue(below4 && above4, "the perturbations put axis 4 on both sides of its boundary");
+        }
+    }
+
+    @Test
+    void inConfiguration_jointOnBoundaryInBothQuadrants_clearlyInsideOneOnlyThere() {
+        InverseKinematics ik = InverseKinematics.of(KinematicModel.build(ReferenceRobots.irb2000()));
+        double[] onZero = {0.2, 0.3, 0.1, -1e-9, 0.8, 1e-12};
+        assertTrue(ik.inConfiguration(onZero, new ConfData(0, 0, 0, 0)));
+        assertTrue(ik.inConfiguration(onZero, new ConfData(0, -1, 0, 0)));
+        assertTrue(ik.inConfiguration(onZero, new ConfData(0, -1, -1, 0)));
+        assertFalse(ik.inConfiguration(onZero, new ConfData(0, 1, 0, 0)), "90 deg away");
+        assertFalse(ik.inConfiguration(onZero, new ConfData(0, 0, 0, 4)), "the arm bits of cfx must agree");
+        double[] inside = {0.2, 0.3, 0.1, -1e-3, 0.8, 0.4};
+        assertTrue(ik.inConfiguration(inside, new ConfData(0, -1, 0, 0)));
+        assertFalse(ik.inConfiguration(inside, new ConfData(0, 0, 0, 0)), "1e-3 rad is inside quadrant -1, not on its boundary");
+        // axis 5 at the wrist singularity: both signs
+        double[] wrist = {0.2, 0.3, 0.1, 0.3, -1e-9, 0.4};
+        assertTrue(ik.inConfiguration(wrist, new ConfData(0, 0, 0, 0)));
+        assertTrue(ik.inConfiguration(wrist, new ConfData(0, 0, 0, 1)));
+        assertFalse(ik.inConfiguration(new double[] {0.2, 0.3, 0.1, 0.3, -0.1, 0.4}, new ConfData(0, 0, 0, 0)));
+    }
+
+    @Test
     void solveWithConf_roundTripKeepsConfiguration() {
         KinematicModel m = KinematicModel.build(ReferenceRobots.irb2400());
         InverseKinematics ik = InverseKinematics.of(m);

@@ -55,10 +55,12 @@ public final class Campaign {
      * @param movedJoints    0: every joint moves between poses (drawn poses, in {@code order}); k: each pose moves only k
      *                       joints, chosen at random, from the one before (the sequence is the order), and the controller
      *                       reports its values with a read-back jitter of {@link #READBACK_JITTER_RAD}
+     * @param approach       null: each pose is reached by one move from the pose before; else the drives it rules take
+     *                       each pose by a short move from a fixed side ({@link Approach})
      */
     public record Plan(int poses, int validatePoses, double sigmaM, double sigmaRotRad, boolean sixD, boolean dirColumns,
                        boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers, Start start,
-                       int movedJoints) {
+                       int movedJoints, Approach approach) {
         public Plan {
             if (poses < 1 || validatePoses < 0) throw new IllegalArgumentException("poses " + poses + ", validate " + validatePoses);
             if (outliers < 0 || outliers > poses / 10) throw new IllegalArgumentException("outliers " + outliers + " of " + poses + " poses");
@@ -70,21 +72,64 @@ public final class Campaign {
 
         /** 200 training and 100 validation poses, σ 0.02 mm, directions, time and temperature written, no payload, nearest order. */
         public static Plan defaults(long seed) {
-            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME, 0);
+            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME, 0, null);
         }
 
-        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
-        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
-        public Plan withSigmaRot(double rad) { return new Plan(poses, validatePoses, sigmaM, rad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
-        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
-        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints); }
-        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start, movedJoints); }
-        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start, movedJoints); }
-        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start, movedJoints); }
-        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start, movedJoints); }
-        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s, movedJoints); }
-        public Plan withMovedJoints(int k) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, k); }
-        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start, movedJoints); }
+        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withSigmaRot(double rad) { return new Plan(poses, validatePoses, sigmaM, rad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start, movedJoints, approach); }
+        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start, movedJoints, approach); }
+        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start, movedJoints, approach); }
+        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s, movedJoints, approach); }
+        public Plan withMovedJoints(int k) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, k, approach); }
+        public Plan withApproach(Approach a) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, a); }
+        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start, movedJoints, approach); }
+    }
+
+    /**
+     * A one-sided approach, as a careful calibration engineer programs it to take the play out of
+     * the data: each pose is reached through an approach pose short of it, so that every drive the
+     * rule holds takes the pose by a short move from a fixed side (e.g. every last move positive).
+     * The controller moves all drives at once to the approach pose (the drives without a rule
+     * straight to their values at the pose), stops there, then moves the ruled drives onto the pose.
+     * The file records only the measured pose, with the side in its dir columns; the move lengths
+     * are in the controller's program, not in the file.
+     *
+     * <p>What a drive's play and friction see is its last motion since it last reversed: the
+     * approach move alone when the travel to the approach pose went the other way (the motor turns
+     * round at the approach pose and crosses the play), the travel and the approach together when
+     * both went the same way (a stop does not reverse the gear's flank nor unwind its friction).
+     *
+     * @param side       per drive: +1 (each pose taken moving up), -1 (moving down), 0 (no rule: one move, as without
+     *                   an approach)
+     * @param minRad     the shortest approach move (rad, or m for a prismatic drive)
+     * @param maxRad     the longest; each pose and drive draws its approach length between the two, log-uniformly
+     *                   (equal to the shortest: a fixed approach length); never beyond the drive's limits
+     * @param otherSide  the share of poses (drawn at random) at which every ruled drive is approached from the other side
+     */
+    public record Approach(int[] side, double minRad, double maxRad, double otherSide) {
+        public Approach {
+            side = side.clone();
+            for (int s : side) if (s < -1 || s > 1) throw new IllegalArgumentException("approach side " + s + " is not -1, 0 or 1");
+            if (!(minRad > 0) || !(maxRad >= minRad)) throw new IllegalArgumentException("approach length " + minRad + ".." + maxRad);
+            if (!(otherSide >= 0 && otherSide < 1)) throw new IllegalArgumentException("share from the other side " + otherSide);
+        }
+
+        @Override public int[] side() { return side.clone(); }
+
+        /** Every drive approached from {@code side}, by {@code minRad}..{@code maxRad}, a share {@code otherSide} of the poses from the other side. */
+        public static Approach all(int dof, int side, double minRad, double maxRad, double otherSide) {
+            int[] s = new int[dof];
+            Arrays.fill(s, side);
+            return new Approach(s, minRad, maxRad, otherSide);
+        }
+
+        /** Whether drive j is ruled. */
+        boolean rules(int j) { return j < side.length && side[j] != 0; }
     }
 
     /**
@@ -114,12 +159,14 @@ public final class Campaign {
      *
      * @param q           the controller's values as it reports them (with read-back jitter in a joint-by-joint campaign)
      * @param dir         the side of the play each drive really rests on (the sign of its last real motion)
+     * @param lastMove    each drive's last motion since it last reversed, signed (rad or m; infinite: none yet, taken as long);
+     *                    with an {@link Approach} the approach move, or the travel and the approach together
      * @param point       measured position, instrument frame, m (with noise)
      * @param quaternion  measured orientation (w, x, y, z), or null
      * @param truePoint   the position without noise, m
      * @param outlier     the reading is grossly wrong (an injected outlier)
      */
-    public record Row(String id, double[] q, int[] dir, double timeS, double tempC, double payloadKg, double[] point,
+    public record Row(String id, double[] q, int[] dir, double[] lastMove, double timeS, double tempC, double payloadKg, double[] point,
                       double[] quaternion, double[] truePoint, boolean validate, boolean outlier) { }
 
     /** A campaign: the measurement file's text, the rows, and the warm-up the temperatures followed. */
@@ -142,6 +189,7 @@ public final class Campaign {
         List<double[]> seq = plan.movedJoints() > 0 ? new PoseRule(nominal).walk(total, plan.movedJoints(), rng)
                 : plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn, start) : drawn;
         Random jitter = new Random(plan.seed() * 524_287L + 13);
+        Random approach = new Random(plan.seed() * 2_305_843L + 29);
         boolean[] validate = new boolean[total];
         List<Integer> idx = new ArrayList<>();
         for (int i = 0; i < total; i++) idx.add(i);
@@ -166,12 +214,28 @@ public final class Campaign {
         double[] payloads = plan.payloadStepsKg();
         for (int i = 0; i < total; i++) {
             double[] q = seq.get(i);
-            t += travelS(nominal, prev, q) + 3 + 5 + 4 * rng.nextDouble(); // travel, settle, measure, operator
-            for (int j = 0; j < n; j++)
-                if (q[j] != prev[j]) {
-                    dir[j] = q[j] > prev[j] ? 1 : -1;
-                    lastMove[j] = q[j] - prev[j];
+            double travel;
+            if (plan.approach() == null) {
+                travel = travelS(nominal, prev, q);
+                for (int j = 0; j < n; j++)
+                    if (q[j] != prev[j]) {
+                        dir[j] = q[j] > prev[j] ? 1 : -1;
+                        lastMove[j] = q[j] - prev[j];
+                    }
+            } else {
+                double[] via = approachPose(nominal, plan.approach(), q, approach);
+                travel = travelS(nominal, prev, via) + travelS(nominal, via, q);
+                for (int j = 0; j < n; j++) {
+                    double first = via[j] - prev[j], last = q[j] - via[j];
+                    if (last == 0) last = first;                      // no approach move: the travel was the last motion
+                    else if (first != 0 && (first > 0) == (last > 0)) last += first; // one motion with a stop in it
+                    if (last != 0) {
+                        dir[j] = last > 0 ? 1 : -1;
+                        lastMove[j] = last;
+                    }
                 }
+            }
+            t += travel + 3 + 5 + 4 * rng.nextDouble(); // travel, settle, measure, operator
             double temp = warm.at(t);
             double payload = payloads.length == 0 ? 0 : payloads[(i / POSES_PER_PAYLOAD) % payloads.length];
             Rigid pose = world.target(q, dir, lastMove, temp, t, payload);
@@ -188,12 +252,29 @@ public final class Campaign {
             double tempRead = temp + warm.sensorNoiseK() * noise.nextGaussian();
             double[] read = q.clone();
             if (plan.movedJoints() > 0) for (int j = 0; j < n; j++) read[j] += READBACK_JITTER_RAD * jitter.nextGaussian();
-            rows.add(new Row(Integer.toString(i + 1), read, dir.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
+            rows.add(new Row(Integer.toString(i + 1), read, dir.clone(), lastMove.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
             prev = q;
         }
         boolean base = isIdentity(world.instrumentFromBase());
         String frame = base ? "base" : "tracker";
         return new Result(write(nominal, plan, rows, frame), rows, warm, plan, frame);
+    }
+
+    /**
+     * The approach pose before {@code q}: each ruled drive short of its value by a length drawn from
+     * the rule's range, on the rule's side (the other side at a drawn share of the poses), within
+     * the drive's limits; the other drives at their values.
+     */
+    static double[] approachPose(RobotDescription robot, Approach a, double[] q, Random r) {
+        int flip = r.nextDouble() < a.otherSide() ? -1 : 1;
+        double[] via = q.clone();
+        for (int j = 0; j < q.length; j++) {
+            double len = a.minRad() * Math.pow(a.maxRad() / a.minRad(), r.nextDouble());
+            if (!a.rules(j)) continue;
+            JointDescription d = robot.joints().get(j);
+            via[j] = Math.min(d.max(), Math.max(d.min(), q[j] - flip * a.side()[j] * len));
+        }
+        return via;
     }
 
     /** The measurement file text (shared/formats/measurements.md): mm and degrees. */

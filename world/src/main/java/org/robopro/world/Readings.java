@@ -1,7 +1,6 @@
 package org.robopro.world;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
@@ -20,8 +19,8 @@ import org.robopro.models.RobotDescription;
  * {@code # anchor:} line).
  * <p>
  * Limits: the campaign must not be joint-by-joint (there the file holds the controller's read-back,
- * not the true values) and must have no injected outliers; a drive's last move before the first
- * pose is taken as long (it matters only for lost motion that builds up over the move).
+ * not the true values) and must have no injected outliers. Each drive's last move is the campaign's
+ * (it matters only for lost motion that builds up over the move).
  */
 public final class Readings {
     private Readings() { }
@@ -35,7 +34,6 @@ public final class Readings {
         check(c);
         Random noise = new Random(seed * 2_147_483_647L + 17);
         List<Campaign.Row> rows = c.rows();
-        double[][] last = lastMoves(rows);
         StringBuilder sb = header(nominal, c, "# frame: " + c.frame() + "\n");
         sb.append(columns(nominal, c, true, "x,y,z", false));
         for (int i = 0; i < rows.size(); i++) {
@@ -43,7 +41,7 @@ public final class Readings {
             for (int k = 0; k < flangePointsM.length; k++) {
                 double[] pt = flangePointsM[k];
                 WorldRobot w = at(world, Rigid.translation(pt[0], pt[1], pt[2]));
-                double[] p = Rigid.plus(w.target(r.q(), r.dir(), last[i], c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p(),
+                double[] p = Rigid.plus(w.target(r.q(), r.dir(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p(),
                         Arm.gauss(noise, c.plan().sigmaM()));
                 sb.append(r.id()).append(",P").append(k + 1);
                 row(sb, nominal, c, r, String.format(Locale.ROOT, "%s,%s,%s",
@@ -65,14 +63,13 @@ public final class Readings {
         Random noise = new Random(seed * 2_147_483_647L + 19);
         WorldRobot inBase = inBase(world);
         List<Campaign.Row> rows = c.rows();
-        double[][] last = lastMoves(rows);
         String anchor = writeAnchor ? String.format(Locale.ROOT, "# anchor: %s, %s, %s\n", Campaign.fmt(anchorBaseM[0] * 1e3, 4),
                 Campaign.fmt(anchorBaseM[1] * 1e3, 4), Campaign.fmt(anchorBaseM[2] * 1e3, 4)) : "";
         StringBuilder sb = header(nominal, c, anchor);
         sb.append(columns(nominal, c, false, "distance", false));
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
-            double[] p = inBase.target(r.q(), r.dir(), last[i], c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
+            double[] p = inBase.target(r.q(), r.dir(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
             double d = Rigid.norm(Rigid.minus(p, anchorBaseM)) + c.plan().sigmaM() * noise.nextGaussian();
             sb.append(r.id());
             row(sb, nominal, c, r, Campaign.fmt(d * 1e3, 5), null);
@@ -93,13 +90,12 @@ public final class Readings {
         Random noise = new Random(seed * 2_147_483_647L + 23);
         WorldRobot inBase = inBase(world);
         List<Campaign.Row> rows = c.rows();
-        double[][] last = lastMoves(rows);
         StringBuilder sb = header(nominal, c, "");
         sb.append(columns(nominal, c, false, "distance", true));
         double[] prev = null;
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
-            double[] p = inBase.target(r.q(), r.dir(), last[i], c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
+            double[] p = inBase.target(r.q(), r.dir(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
             if (prev != null) {
                 Campaign.Row a = rows.get(i - 1);
                 double d = Rigid.norm(Rigid.minus(p, prev)) + c.plan().sigmaM() * noise.nextGaussian();
@@ -129,24 +125,6 @@ public final class Readings {
             throw new IllegalArgumentException("a joint-by-joint campaign writes the controller's read-back, not the true joint values");
         if (c.plan().outliers() > 0) throw new IllegalArgumentException("a campaign with injected outliers cannot be read again");
         if (c.plan().sixD()) throw new IllegalArgumentException("other readings of a 6-D campaign are not written");
-    }
-
-    /** Each drive's last move before each pose, in the measuring order (the first pose: long moves). */
-    static double[][] lastMoves(List<Campaign.Row> rows) {
-        double[][] out = new double[rows.size()][];
-        double[] last = null;
-        for (int i = 0; i < rows.size(); i++) {
-            double[] q = rows.get(i).q();
-            if (i == 0) {
-                last = new double[q.length];
-                Arrays.fill(last, Double.POSITIVE_INFINITY);
-            } else {
-                double[] prev = rows.get(i - 1).q();
-                for (int j = 0; j < q.length; j++) if (q[j] != prev[j]) last[j] = q[j] - prev[j];
-            }
-            out[i] = last.clone();
-        }
-        return out;
     }
 
     private static StringBuilder header(RobotDescription robot, Campaign.Result c, String more) {

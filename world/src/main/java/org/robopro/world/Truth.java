@@ -41,6 +41,11 @@ final class Truth {
             root.put("validate_poses", p.validatePoses());
             root.put("order", p.order().name().toLowerCase(java.util.Locale.ROOT));
             root.put("start", p.start().name().toLowerCase(java.util.Locale.ROOT));
+            if (p.approach() != null) {
+                Campaign.Approach a = p.approach();
+                root.put("approach", Map.of("side", Arrays.stream(a.side()).boxed().toList(), "min_deg", Math.toDegrees(a.minRad()),
+                        "max_deg", Math.toDegrees(a.maxRad()), "other_side_share", a.otherSide()));
+            }
             root.put("frame", campaign.frame());
             root.put("outlier_poses", campaign.rows().stream().filter(Campaign.Row::outlier).map(Campaign.Row::id).toList());
             Campaign.Warmup wu = campaign.warmup();

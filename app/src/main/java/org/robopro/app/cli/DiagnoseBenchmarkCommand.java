@@ -33,7 +33,7 @@ public final class DiagnoseBenchmarkCommand implements Callable<Integer> {
 
     @Option(names = "--family", paramLabel = "GROUP",
             description = "only the scenarios of one group: null, outside, transmission-error, lost-motion, thermal-growth, "
-                    + "gravity-elasticity, gear-ratio, cross-coupling, pair")
+                    + "gravity-elasticity, gear-ratio, cross-coupling, pair, one-sided")
     String family;
 
     @Option(names = "--scenario", paramLabel = "TEXT", description = "only the scenarios whose name contains TEXT")

@@ -144,10 +144,16 @@ public final class Demo {
         public Options(long seed, String effect, int poses, int passes, Path out) { this(seed, effect, poses, passes, out, null); }
     }
 
+    /**
+     * Whether the demo can conceal a world scenario: one on the IRB-2000 whose answer does not belong
+     * to its own campaign (the demo measures with its own).
+     */
+    private static boolean concealable(org.robopro.world.Scenario s) { return s.robot().equals("irb2000") && !s.answerNeedsItsCampaign(); }
+
     /** The groups of world scenarios the demo can conceal with {@code --conceal} (those on the IRB-2000). */
     public static List<String> concealGroups() {
         return org.robopro.world.Scenario.families().stream()
-                .filter(f -> org.robopro.world.Scenario.ofFamily(f).stream().anyMatch(s -> s.robot().equals("irb2000"))).toList();
+                .filter(f -> org.robopro.world.Scenario.ofFamily(f).stream().anyMatch(Demo::concealable)).toList();
     }
 
     /**
@@ -157,8 +163,7 @@ public final class Demo {
      * @throws IllegalArgumentException for an unknown group, naming the choices
      */
     static String concealedScenario(String group, long seed) {
-        List<org.robopro.world.Scenario> ss = org.robopro.world.Scenario.ofFamily(group.strip()).stream()
-                .filter(s -> s.robot().equals("irb2000")).toList();
+        List<org.robopro.world.Scenario> ss = org.robopro.world.Scenario.ofFamily(group.strip()).stream().filter(Demo::concealable).toList();
         if (ss.isEmpty())
             throw new IllegalArgumentException("--conceal: unknown group '" + group + "'; choose one of " + String.join(", ", concealGroups()));
         return ss.get(new Random(seed * 1_000_003L + 11).nextInt(ss.size())).name();

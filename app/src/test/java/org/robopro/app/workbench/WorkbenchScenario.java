@@ -57,12 +57,21 @@ public final class WorkbenchScenario {
         return sb.toString().trim();
     }
 
+    /**
+     * Screenshot {@code name}.png, and the program table's Check column as it shows in it
+     * ("table.NAME": rows joined by " | "), read on the Swing thread right after the picture.
+     */
+    static void shot(WorkbenchWindow win, Path out, String name, Properties r) throws Exception {
+        win.screenshot(out.resolve(name + ".png"));
+        WorkbenchWindow.onEdt(() -> r.setProperty("table." + name, String.join(" | ", win.frame().programPanel().checkColumn())));
+    }
+
     static void run(WorkbenchWindow win, Path out, Properties r) throws Exception {
         var wb = win.session();
         var frame = win.frame();
         r.setProperty("firstFrameSeconds", String.valueOf(win.secondsToFirstFrame()));
         r.setProperty("objects", String.valueOf(wb.model().objects().size()));
-        win.screenshot(out.resolve("01-cell.png"));
+        shot(win, out, "01-cell", r);
         clipped(frame, r, "clippedMain");
 
         // Jog by joints through the spinners, then in Cartesian through the jog buttons.
@@ -130,7 +139,7 @@ public final class WorkbenchScenario {
             frame.programPanel().showTime(plan.get().duration() * 0.4);
             wb.model().setShowFrames(true);
         });
-        win.screenshot(out.resolve("02-path.png"));
+        shot(win, out, "02-path", r);
         WorkbenchWindow.onEdt(() -> {
             var p = new java.util.ArrayList<>(wb.model().program());
             p.remove(p.size() - 1);
@@ -161,6 +170,10 @@ public final class WorkbenchScenario {
         r.setProperty("importSameProgram", String.valueOf(programBefore.equals(
                 String.join(";", wb.model().program().stream().map(Instruction::toString).toList()))));
         r.setProperty("importTargets", String.join(",", wb.model().targets().stream().map(Target::name).toList()));
+        // What the program table says about the imported program once its check is in (the same
+        // wait a screenshot makes): each target taught at the robot's pose is reachable in its own configuration.
+        wb.awaitPathCheck();
+        WorkbenchWindow.onEdt(() -> r.setProperty("importCheck", String.join(" | ", frame.programPanel().checkColumn())));
         Path broken = out.resolve("Broken.mod");
         Files.writeString(broken, Files.readString(mod).replaceFirst("MoveL p20,", "MoveL p20 v500,"));
         WorkbenchWindow.onEdt(() -> imported.set(frame.importRapid(broken)));
@@ -187,7 +200,7 @@ public final class WorkbenchScenario {
             frame.action("redo").actionPerformed(null);
         });
         r.setProperty("objectsAfterRedo", String.valueOf(wb.model().objects().size()));
-        win.screenshot(out.resolve("03-layout.png"));
+        shot(win, out, "03-layout", r);
         Path project = out.resolve("cell.robopro.json");
         Files.deleteIfExists(project);
         wb.save(project);
@@ -223,7 +236,7 @@ public final class WorkbenchScenario {
         WorkbenchWindow.onEdt(() -> { frame.sizeTo(1920, 1080); frame.openWizard(); });
         Thread.sleep(300);
         clipped(frame, r, "clippedLarge");
-        win.screenshot(out.resolve("09-large.png"));
+        shot(win, out, "09-large", r);
         WorkbenchWindow.onEdt(() -> { frame.closeDock(frame.openWizard()); frame.sizeTo(1280, 720); });
     }
 
@@ -285,7 +298,7 @@ public final class WorkbenchScenario {
         r.setProperty("calCliFigures", String.format(Locale.ROOT, "Training RMS %.4f mm → %.4f mm|Validation RMS %.4f mm → %.4f mm",
                 cliSummary.get("nominal_train_rms_mm").asDouble(), cliSummary.get("train_rms_mm").asDouble(),
                 cliSummary.get("nominal_validate_rms_mm").asDouble(), cliSummary.get("validate_rms_mm").asDouble()));
-        win.screenshot(out.resolve("07-calibration.png"));
+        shot(win, out, "07-calibration", r);
         clipped(frame, r, "clippedCalibration");
         Path nominalMod = out.resolve("Nominal.mod"), compensatedMod = out.resolve("Compensated.mod");
         Files.deleteIfExists(nominalMod);
@@ -346,7 +359,7 @@ public final class WorkbenchScenario {
         r.setProperty("diagGeometricValidateMm", String.valueOf(d.geometricValidateRmsM() * 1e3));
         r.setProperty("diagFinalValidateMm", String.valueOf(d.finalValidateRmsM() * 1e3));
         r.setProperty("diagFloorMm", String.valueOf(Math.sqrt(3) * d.sigmaM() * 1e3));
-        win.screenshot(out.resolve("08-diagnosis.png"));
+        shot(win, out, "08-diagnosis", r);
         clipped(frame, r, "clippedDiagnosis");
         Path nominalMod = out.resolve("NominalD.mod"), compensatedMod = out.resolve("Extended.mod");
         Files.deleteIfExists(nominalMod);
@@ -390,7 +403,7 @@ public final class WorkbenchScenario {
             frame.jogPanel().setJointDegrees(0, -35);
             frame.jogPanel().setJointDegrees(1, 0);
         });
-        win.screenshot(out.resolve("06-controller.png"));
+        shot(win, out, "06-controller", r);
         clipped(frame, r, "clippedController");
         var imp = wb.uploadProgram(info.name()).get(30, java.util.concurrent.TimeUnit.SECONDS);
         r.setProperty("uploadedInstructions", String.valueOf(imp.program().size()));
@@ -416,7 +429,7 @@ public final class WorkbenchScenario {
         r.setProperty("uploadOfferedProcs", String.join(",", offered.get()));
         r.setProperty("uploadTwiceProgram", String.join("|", twice.program().stream()
                 .map(i -> i.type().motion() ? i.type() + " " + i.target() : "RAPID " + i.statementText()).toList()));
-        win.screenshot(out.resolve("10-kept-statements.png")); // the program panel: two calls kept read-only
+        shot(win, out, "10-kept-statements", r); // the program panel: two calls kept read-only
         r.setProperty("uploadTwiceMotions", String.join(";", wb.model().programRun().steps().stream()
                 .map(step -> step.label().replaceAll(".*#\\d+ ", "")).toList()));
         try {
@@ -502,7 +515,7 @@ public final class WorkbenchScenario {
         win.app().camera().orbit(0.55, 0.2);
         win.app().camera().focus(0.5, 0, 1.05);
         win.app().camera().zoom(0.95);
-        win.screenshot(out.resolve("04-wizard.png"));
+        shot(win, out, "04-wizard", r);
         clipped(frame, r, "clippedWizard");
         Path robotFile = out.resolve("irb2000_long.robot.json");
         Files.deleteIfExists(robotFile);
@@ -524,7 +537,7 @@ public final class WorkbenchScenario {
         Files.deleteIfExists(project);
         wb.save(project);
         r.setProperty("reopenedRobot", ProjectStore.read(project).robot().name());
-        win.screenshot(out.resolve("05-new-robot.png"));
+        shot(win, out, "05-new-robot", r);
         // Edit > Undo after the wizard was closed: first Use in cell (the cell's robot back), then the
         // wizard's last edit, which opens the wizard again to show it; Redo makes both again.
         WorkbenchWindow.onEdt(() -> frame.action("undo").actionPerformed(null));

@@ -164,6 +164,18 @@ class WorkbenchScenarioTest {
         assertEquals("true", r.getProperty("importOk"));
         assertEquals("true", r.getProperty("importSameProgram"), "export then import must give the same program");
         assertEquals("p10,p20,p30", r.getProperty("importTargets"));
+        // The program table of the imported program, right after the import and in the 03-layout
+        // picture: p10, taught at the robot's own pose (axes 4 and 6 at 0), exported and read back,
+        // is reachable in its own configuration, and so is every other move.
+        for (String key : new String[] {"importCheck", "table.03-layout"}) {
+            String[] rows = r.getProperty(key, "").split(" \\| ");
+            assertEquals(4, rows.length, key + ": " + r.getProperty(key));
+            for (String row : rows) assertTrue(row.startsWith("ok "), key + ": " + r.getProperty(key));
+        }
+        String[] pathRows = r.getProperty("table.02-path", "").split(" \\| ");
+        assertEquals(5, pathRows.length, r.getProperty("table.02-path"));
+        for (int i = 0; i < 4; i++) assertTrue(pathRows[i].startsWith("ok "), "02-path: " + r.getProperty("table.02-path"));
+        assertTrue(pathRows[4].startsWith("FAIL unreachable"), "02-path: the far target p99 fails: " + r.getProperty("table.02-path"));
         assertEquals("false", r.getProperty("brokenImportOk"));
         assertTrue(r.getProperty("brokenImportError").contains("Broken.mod") && r.getProperty("brokenImportError").contains("line "),
                 r.getProperty("brokenImportError"));

@@ -89,6 +89,40 @@ class WorkbenchSessionTest {
         assertEquals(b.name(), s.model().program().get(1).target());
     }
 
+    /**
+     * The user's steps of the workbench scenario without a window: from the ready pose (axes 4
+     * and 6 at 0) jog the joints and down in Cartesian, teach three targets, program them, export
+     * RAPID and import it back. Every move of the imported program is reachable in its target's
+     * configuration, the same answer as before the export, and the same on every run.
+     */
+    @Test
+    void teachAtReadyPoseExportImport_importedProgramReachableInEachTargetsOwnConfiguration() throws Exception {
+        s.jogJointDeg(0, 10);
+        s.jogJointDeg(1, 30);
+        for (int i = 0; i < 5; i++) assertTrue(s.jogCartesian(WorkbenchSession.JogFrame.WORLD, 0, 0, -0.01, 0, 0, 0));
+        assertEquals(0, Math.toDegrees(s.model().q()[3]), 1e-9, "axis 4 stays on its quadrant boundary");
+        Target p10 = s.teach();
+        for (int i = 0; i < 15; i++) s.jogCartesian(WorkbenchSession.JogFrame.WORLD, 0, 0.01, 0, 0, 0, 0);
+        s.teach();
+        for (int i = 0; i < 10; i++) s.jogCartesian(WorkbenchSession.JogFrame.TOOL, 0.01, 0, 0, 0, 0, 0);
+        s.teach();
+        for (String t : new String[] {"p10", "p20", "p30", "p10"})
+            s.addMove(t.equals("p10") && s.model().program().isEmpty() ? Instruction.Type.MOVEJ : Instruction.Type.MOVEL, t, 500, 10);
+        var before = s.checkProgram();
+        assertTrue(before.ok() && before.steps().stream().allMatch(x -> x.problems().isEmpty()), before.problemLines().toString());
+        Path mod = dir.resolve("Weld.mod");
+        String text = s.exportRapid(mod, false);
+        assertTrue(text.contains("CONST robtarget p10:=") && text.contains(",[0,0,0,0],"), "p10 in its taught configuration:\n" + text);
+        s.importRapid(mod);
+        assertTrue(s.model().programSource().isPresent(), "the program is now a view of the imported module");
+        var after = s.checkProgram();
+        assertEquals(4, after.steps().size());
+        for (var st : after.steps())
+            assertTrue(st.ok() && st.problems().isEmpty(), "instruction " + (st.index() + 1) + ": " + st.message() + "\n" + text);
+        for (int i = 0; i < 4; i++) assertEquals(before.steps().get(i).seconds(), after.steps().get(i).seconds(), 1e-3, "instruction " + (i + 1));
+        assertEquals(p10.conf(), s.model().target("p10").orElseThrow().conf());
+    }
+
     @Test
     void addPlaceDeleteObject_andSaveOpen() throws Exception {
         int n = s.model().objects().size();

@@ -613,7 +613,7 @@ public final class PathChecker {
         }
         if (reported) return new Outcome(null, 0, n);
         ConfData reached = ik.confOf(prev);
-        if (!reached.equals(conf))
+        if (!ik.inConfiguration(prev, conf)) // a joint on a quadrant boundary is in both quadrants
             problems.add(new Problem(reached.cfx() != conf.cfx() ? Problem.Severity.ERROR : Problem.Severity.WARNING,
                     Problem.Kind.CONFIGURATION_MISMATCH, m.label(), m.targetName(), m.source(),
                     "the path ends in configuration " + confText(reached) + ", the target asks for " + confText(conf)));

@@ -72,10 +72,11 @@ public final class PathChecker implements AutoCloseable {
 
     private void check(long id) {
         try {
-            // Snapshots first: the run and statuses are computed from the same model version.
+            // Snapshots first: the run and statuses are computed from the same model version; the
+            // program is the one the run checked, so its results are never shown beside another.
             List<Target> targets = model.targets();
-            List<Instruction> program = model.program();
             ProgramRun run = model.programRun();
+            List<Instruction> program = run.program();
             Map<String, TargetStatus> st = Map.copyOf(model.statuses(run));
             Result r = new Result(id, run, st, targets, program);
             checks.incrementAndGet();

@@ -45,6 +45,7 @@ public final class ProgramRun {
         }
     }
 
+    private final List<Instruction> program;
     private final RapidModule module;
     private final CheckReport report;
     private final List<Step> steps;
@@ -53,8 +54,9 @@ public final class ProgramRun {
     private final double[][] qs;
     private final Vec3[] tcpWorld;
 
-    private ProgramRun(RapidModule module, CheckReport report, List<Step> steps, Set<String> badTargets, double[] times,
+    private ProgramRun(List<Instruction> program, RapidModule module, CheckReport report, List<Step> steps, Set<String> badTargets, double[] times,
                        double[][] qs, Vec3[] tcpWorld) {
+        this.program = List.copyOf(program);
         this.module = module;
         this.report = report;
         this.steps = List.copyOf(steps);
@@ -64,6 +66,8 @@ public final class ProgramRun {
         this.tcpWorld = tcpWorld;
     }
 
+    /** The program this run checked (the model's at the time; results are shown only beside this program). */
+    public List<Instruction> program() { return program; }
     public RapidModule module() { return module; }
     /** The path checker's report; null when the robot has no kinematics-module model. */
     public CheckReport report() { return report; }
@@ -162,7 +166,7 @@ public final class ProgramRun {
         }
         out.sort((a, b) -> Integer.compare(a.index(), b.index()));
         for (Step st : out) if (!st.ok() && st.label().startsWith("main#?")) bad.add(st.problems().get(0).target());
-        return sample(m, module, report, out, bad, steps, qEnd);
+        return sample(m, program, module, report, out, bad, steps, qEnd);
     }
 
     /**
@@ -180,7 +184,7 @@ public final class ProgramRun {
         return e > h + 1 ? Integer.parseInt(first.substring(h + 1, e)) - 1 : -1;
     }
 
-    private static ProgramRun sample(WorkbenchModel m, RapidModule module, CheckReport report, List<Step> out, Set<String> bad,
+    private static ProgramRun sample(WorkbenchModel m, List<Instruction> program, RapidModule module, CheckReport report, List<Step> out, Set<String> bad,
                                      List<ProgramStep> steps, List<double[]> qEnd) {
         RobotKinematics k = m.kinematics();
         Pose worldTbase = m.worldTbase();
@@ -237,7 +241,7 @@ public final class ProgramRun {
             tcp[i] = worldTbase.apply(new Vec3(f[0] * tt.x() + f[1] * tt.y() + f[2] * tt.z() + f[3],
                     f[4] * tt.x() + f[5] * tt.y() + f[6] * tt.z() + f[7], f[8] * tt.x() + f[9] * tt.y() + f[10] * tt.z() + f[11]));
         }
-        return new ProgramRun(module, report, out, bad, ta, qs.toArray(new double[0][]), tcp);
+        return new ProgramRun(program, module, report, out, bad, ta, qs.toArray(new double[0][]), tcp);
     }
 
     /** Messages for a log: one line per problem, by instruction and target. */

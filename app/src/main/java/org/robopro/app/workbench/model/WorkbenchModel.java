@@ -47,6 +47,13 @@ public final class WorkbenchModel {
     private volatile double[] ghostQ;
     private final AtomicLong ghostVersion = new AtomicLong();
     private ProgramRun run;
+    /**
+     * Bumped, with {@link #run} cleared, inside the lock of every change a program run depends on
+     * (robot, placement, tool, cell, work objects, targets, program, clearance checker): a run
+     * computed while one happened is then never kept (joint changes do not count: a run does not
+     * depend on where the robot stands).
+     */
+    private long runInputs;
     /** Path-check results by motion, kept across edits: a check after an edit solves only the motions it changed. */
     private final org.robopro.programs.check.CheckCache checkCache = new org.robopro.programs.check.CheckCache();
     private volatile java.util.function.Supplier<Optional<org.robopro.programs.collision.ClearanceChecker>> clearance = Optional::empty;
@@ -69,7 +76,7 @@ public final class WorkbenchModel {
     public void removeListener(Listener l) { listeners.remove(l); }
 
     private void fire(Change c) {
-        if (c != Change.SELECTION && c != Change.VIEW && c != Change.JOINTS) synchronized (this) { run = null; }
+        if (c != Change.SELECTION && c != Change.VIEW && c != Change.JOINTS) synchronized (this) { runInputsChanged(); }
         version.incrementAndGet();
         if (c != Change.SELECTION && c != Change.VIEW) dirty = true;
         if (!restoring) {
@@ -127,6 +134,12 @@ public final class WorkbenchModel {
     /** Makes the last undone edit again; returns its label, empty when there was none. */
     public Optional<String> redo() { return history.popRedo().map(c -> { apply(c, c.after()); return c.label(); }); }
 
+    /** The program run's inputs changed (the caller holds the lock): the kept run is dropped. */
+    private void runInputsChanged() {
+        run = null;
+        runInputs++;
+    }
+
     /** A project edit restores the project; another editor's edit (the robot wizard) is handed to that editor. */
     private void apply(EditHistory.Command c, Object state) {
         if (c.project()) restore((ProjectData) state);
@@ -153,6 +166,7 @@ public final class WorkbenchModel {
             if (!activeWorkObject.equalsIgnoreCase(Target.WOBJ0) && workObjects.stream().noneMatch(w -> w.name().equals(activeWorkObject)))
                 activeWorkObject = Target.WOBJ0;
             if (selection != null && !selectionExists(selection)) selection = null;
+            runInputsChanged();
         }
         restoring = true;
         try {
@@ -200,6 +214,7 @@ public final class WorkbenchModel {
                 n.add(t.qTaught().length == robot.dof() ? t
                         : new Target(t.name(), t.worldTtcp(), java.util.Arrays.copyOf(t.qTaught(), robot.dof()), t.conf(), t.wobj()));
             targets = List.copyOf(n);
+            runInputsChanged();
         }
         jointVersion.incrementAndGet();
         fire(Change.ROBOT);
@@ -212,7 +227,7 @@ public final class WorkbenchModel {
     public synchronized Pose worldTbase() { return worldTbase; }
 
     public void setWorldTbase(Pose p) {
-        synchronized (this) { worldTbase = Objects.requireNonNull(p); }
+        synchronized (this) { worldTbase = Objects.requireNonNull(p); runInputsChanged(); }
         fire(Change.CELL);
     }
 
@@ -254,7 +269,7 @@ public final class WorkbenchModel {
     public synchronized Tool tool() { return tool; }
 
     public void setTool(Tool t) {
-        synchronized (this) { tool = Objects.requireNonNull(t); }
+        synchronized (this) { tool = Objects.requireNonNull(t); runInputsChanged(); }
         fire(Change.TOOL);
     }
 
@@ -281,6 +296,7 @@ public final class WorkbenchModel {
             List<CellObject> n = new ArrayList<>(objects);
             n.add(o);
             objects = List.copyOf(n);
+            runInputsChanged();
         }
         fire(Change.CELL);
     }
@@ -292,6 +308,7 @@ public final class WorkbenchModel {
             int i = indexOf(n, o.id());
             n.set(i, o);
             objects = List.copyOf(n);
+            runInputsChanged();
         }
         fire(Change.CELL);
     }
@@ -302,6 +319,7 @@ public final class WorkbenchModel {
             n.remove(indexOf(n, id));
             objects = List.copyOf(n);
             if (("object:" + id).equals(selection)) selection = null;
+            runInputsChanged();
         }
         fire(Change.CELL);
     }
@@ -314,7 +332,7 @@ public final class WorkbenchModel {
     public synchronized List<WorkObject> workObjects() { return workObjects; }
 
     public void setWorkObjects(List<WorkObject> w) {
-        synchronized (this) { workObjects = List.copyOf(w); }
+        synchronized (this) { workObjects = List.copyOf(w); runInputsChanged(); }
         fire(Change.CELL);
     }
 
@@ -341,6 +359,7 @@ public final class WorkbenchModel {
             n.removeIf(x -> x.name().equals(t.name()));
             n.add(t);
             targets = List.copyOf(n);
+            runInputsChanged();
         }
         fire(Change.TARGETS);
     }
@@ -356,6 +375,7 @@ public final class WorkbenchModel {
             programChanged = p.removeIf(i -> i.uses(name));
             program = List.copyOf(p);
             if (("target:" + name).equals(selection)) selection = null;
+            runInputsChanged();
         }
         fire(Change.TARGETS);
         if (programChanged) fire(Change.PROGRAM);
@@ -367,7 +387,7 @@ public final class WorkbenchModel {
     public synchronized Optional<ProgramModule.Source> programSource() { return Optional.ofNullable(source); }
 
     public void setProgram(List<Instruction> p) {
-        synchronized (this) { program = List.copyOf(p); }
+        synchronized (this) { program = List.copyOf(p); runInputsChanged(); }
         fire(Change.PROGRAM);
     }
 
@@ -387,11 +407,13 @@ public final class WorkbenchModel {
         long v;
         synchronized (this) {
             if (run != null) return run;
-            v = version.get();
+            v = runInputs;
         }
         ProgramRun r = ProgramRun.of(this, checkCache, clearance.get().orElse(null));
+        // Kept only when nothing it depends on changed meanwhile (such a run may mix the states
+        // before and after the change; the change requests a check of its own).
         synchronized (this) {
-            if (version.get() == v) run = r;
+            if (runInputs == v) run = r;
         }
         return r;
     }
@@ -401,8 +423,10 @@ public final class WorkbenchModel {
      * sets it); without one, programs are not checked for collisions.
      */
     public void setClearance(java.util.function.Supplier<Optional<org.robopro.programs.collision.ClearanceChecker>> c) {
-        clearance = c;
-        synchronized (this) { run = null; }
+        synchronized (this) {
+            clearance = c;
+            runInputsChanged();
+        }
     }
 
     /** The path check's results by motion, kept across edits (its hit and miss counts show what a check solved). */
@@ -456,6 +480,7 @@ public final class WorkbenchModel {
             program = List.copyOf(imp.program());
             source = imp.source();
             selection = null;
+            runInputsChanged();
         }
         for (Change c : new Change[] {Change.TOOL, Change.CELL, Change.TARGETS, Change.PROGRAM}) fire(c);
     }
@@ -564,6 +589,7 @@ public final class WorkbenchModel {
             double[] pq = p.q();
             if (pq != null && pq.length == q.length) q = pq;
             selection = null;
+            runInputsChanged();
         }
         jointVersion.incrementAndGet();
         restoring = true;

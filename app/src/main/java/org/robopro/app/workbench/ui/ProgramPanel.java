@@ -196,6 +196,13 @@ public final class ProgramPanel extends JPanel {
         time.setText(String.format(Locale.ROOT, "%.2f / %.2f s", t, plan.duration()));
     }
 
+    /** The Check column as shown, one entry per row ("ok 0.42 s", "FAIL unreachable: ..."): what the user reads. */
+    public List<String> checkColumn() {
+        List<String> out = new ArrayList<>();
+        for (int r = 0; r < rows.getRowCount(); r++) out.add(String.valueOf(rows.getValueAt(r, rows.getColumnCount() - 1)));
+        return out;
+    }
+
     /** The model's program changed. */
     public void refresh() {
         // Keep check results live once checked, from the background check (never computed on this thread).
