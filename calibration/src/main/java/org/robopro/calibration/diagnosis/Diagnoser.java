@@ -428,6 +428,26 @@ public final class Diagnoser {
     }
 
     /**
+     * The joints approached from the same side at every pose (a one-sided campaign), in words: there a
+     * constant lost motion lags alike at every pose and the zero offset takes it, so the campaign
+     * cannot tell it; empty when every joint was approached from both sides.
+     */
+    static java.util.Optional<String> oneSidedNote(List<Measurement> rows, int dof) {
+        List<String> joints = new ArrayList<>();
+        for (int j = 0; j < dof && !rows.isEmpty(); j++) {
+            int jj = j, first = rows.get(0).directions()[j];
+            if (first != 0 && rows.stream().allMatch(m -> m.directions()[jj] == first)) joints.add(Integer.toString(j + 1));
+        }
+        if (joints.isEmpty()) return java.util.Optional.empty();
+        String which = joints.size() == 1 ? "joint " + joints.get(0) : "joints " + String.join(", ", joints.subList(0, joints.size() - 1))
+                + " and " + joints.get(joints.size() - 1);
+        return java.util.Optional.of(which + (joints.size() == 1 ? " was" : " were") + " approached from the same side at every pose: "
+                + "a lost motion there lags alike at every pose and the zero offset takes it whole, so this campaign cannot tell "
+                + "whether there is any (backlash is not identifiable there); a lag that builds up over the move can still vary with "
+                + "the motion before each pose. To tell either, approach some poses from the other side");
+    }
+
+    /**
      * Whether a pose's direction is unknown (0: the first pose of an inferred measuring order) on a
      * joint with backlash: its lost motion may sit on either side, so its residual is no sign of a
      * bad measurement.
@@ -510,6 +530,7 @@ public final class Diagnoser {
         else if (dirSource.inferred())
             notes.add("no dir1..dir" + model.dof() + " columns: approach directions " + dirSource.words
                     + ", the sign of each joint's last move before the pose was measured; backlash was tested with them");
+        if (hasDirs) oneSidedNote(rows, model.dof()).ifPresent(notes::add);
         if (!hasTemp && !hasTime) notes.add("no temp_c or time_s column: thermal expansion was not tested directly");
         else if (!hasTemp) notes.add("no temp_c column: thermal expansion tested with time_s as a warm-up proxy");
         if (!gravity.massesUnknown() && !hasPayload)

@@ -27,6 +27,20 @@ class CrossValidatedClaimsTest {
         return WorldCampaigns.of(Scenario.named(scenario).trial(seed, p -> p.withSeed(seed)));
     }
 
+    /** The lost-motion campaign of seed 7, without its validation poses, and its diagnosis (the K-fold path): made once, read by several tests. */
+    private static WorldCampaigns.Sim lostMotion;
+    private static Diagnosis lostMotionDiagnosis;
+
+    private static synchronized WorldCampaigns.Sim lostMotion() {
+        if (lostMotion == null) lostMotion = world("lost motion j2, directions recorded", 7);
+        return lostMotion;
+    }
+
+    private static synchronized Diagnosis lostMotionDiagnosed() {
+        if (lostMotionDiagnosis == null) lostMotionDiagnosis = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), lostMotion().train(), null);
+        return lostMotionDiagnosis;
+    }
+
     private static List<String> families(Diagnosis d) {
         return d.effects().stream().filter(f -> !f.effect().isFallback()).map(f -> f.effect().label()).toList();
     }
@@ -48,8 +62,7 @@ class CrossValidatedClaimsTest {
     /** Real lost motion is named by the folds too, and their held-out error says how much it helps. */
     @Test
     void anEffectTheFoldsFindAgain_staysNamed() {
-        WorldCampaigns.Sim c = world("lost motion j2, directions recorded", 7);
-        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), null);
+        Diagnosis d = lostMotionDiagnosed();
         assertEquals(List.of("backlash j2"), families(d), "notes " + d.notes());
         assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("no validation poses: the claims were judged by 5-fold")),
                 d.notes().toString());
@@ -64,9 +77,8 @@ class CrossValidatedClaimsTest {
      */
     @Test
     void eachFamily_isJudgedOnItsOwnByTheFolds() {
-        WorldCampaigns.Sim c = world("lost motion j2, directions recorded", 7);
-        MeasurementSet train = c.train();
-        Diagnosis d = Diagnoser.diagnose(irb2000, train, null);
+        MeasurementSet train = lostMotion().train();
+        Diagnosis d = lostMotionDiagnosed();
         assertEquals(List.of("backlash j2"), families(d), "notes " + d.notes());
         assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("backlash j2: named by 5 of 5 folds; the folds' held-out error")),
                 d.notes().toString());
@@ -95,8 +107,7 @@ class CrossValidatedClaimsTest {
     /** Too few poses for the folds: the report says the claims rest on the leave-one-pose-out error only. */
     @Test
     void tooFewPosesForTheFolds_saysSo() {
-        WorldCampaigns.Sim c = world("lost motion j2, directions recorded", 7);
-        var small = c.train().withRows(c.train().rows().subList(0, 45));
+        var small = lostMotion().train().withRows(lostMotion().train().rows().subList(0, 45));
         Diagnosis d = Diagnoser.diagnose(irb2000, small, null);
         assertEquals(List.of("backlash j2"), families(d), "notes " + d.notes());
         assertTrue(d.notes().stream().anyMatch(n -> n.contains("not by 5-fold cross-validation")), d.notes().toString());
