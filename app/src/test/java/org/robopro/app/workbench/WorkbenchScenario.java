@@ -63,7 +63,19 @@ public final class WorkbenchScenario {
      */
     static void shot(WorkbenchWindow win, Path out, String name, Properties r) throws Exception {
         win.screenshot(out.resolve(name + ".png"));
-        WorkbenchWindow.onEdt(() -> r.setProperty("table." + name, String.join(" | ", win.frame().programPanel().checkColumn())));
+        WorkbenchWindow.onEdt(() -> {
+            List<String> shown = win.frame().programPanel().checkColumn();
+            r.setProperty("table." + name, String.join(" | ", shown));
+            // The table shows the last check of the program it lists (not an earlier program's).
+            var latest = win.session().pathChecker().latest();
+            List<String> stale = new ArrayList<>();
+            if (latest != null && latest.program().equals(win.session().model().program()))
+                for (int i = 0; i < shown.size(); i++) {
+                    String want = latest.run().line(i).map(ProgramRun.Step::message).orElse("");
+                    if (!shown.get(i).endsWith(want)) stale.add("row " + (i + 1) + " shows '" + shown.get(i) + "', the check says '" + want + "'");
+                }
+            r.setProperty("stale." + name, String.join("; ", stale));
+        });
     }
 
     static void run(WorkbenchWindow win, Path out, Properties r) throws Exception {

@@ -176,6 +176,18 @@ class WorkbenchScenarioTest {
         assertEquals(5, pathRows.length, r.getProperty("table.02-path"));
         for (int i = 0; i < 4; i++) assertTrue(pathRows[i].startsWith("ok "), "02-path: " + r.getProperty("table.02-path"));
         assertTrue(pathRows[4].startsWith("FAIL unreachable"), "02-path: the far target p99 fails: " + r.getProperty("table.02-path"));
+        // Every other picture's program is sound: no FAIL or warning in its table, and the kept
+        // calls of 10-kept-statements show the outcome of the motions they ran.
+        for (String shot : new String[] {"03-layout", "04-wizard", "05-new-robot", "06-controller", "07-calibration", "08-diagnosis",
+                "09-large", "10-kept-statements"}) {
+            String table = r.getProperty("table." + shot, "");
+            assertTrue(!table.isEmpty() && !table.contains("FAIL") && !table.contains("warning"), shot + ": " + table);
+        }
+        assertTrue(r.getProperty("table.10-kept-statements").matches("ok [0-9.]+ s \\| ok [0-9.]+ s"), r.getProperty("table.10-kept-statements"));
+        // In every picture the table shows the last check of the program it lists.
+        for (String shot : new String[] {"02-path", "03-layout", "04-wizard", "05-new-robot", "06-controller", "07-calibration",
+                "08-diagnosis", "09-large", "10-kept-statements"})
+            assertEquals("", r.getProperty("stale." + shot), shot);
         assertEquals("false", r.getProperty("brokenImportOk"));
         assertTrue(r.getProperty("brokenImportError").contains("Broken.mod") && r.getProperty("brokenImportError").contains("line "),
                 r.getProperty("brokenImportError"));

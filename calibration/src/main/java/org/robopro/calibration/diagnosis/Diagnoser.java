@@ -860,11 +860,12 @@ public final class Diagnoser {
         List<Diagnosis.Located> located = new ArrayList<>();
         for (Locator.Found f : foundGeo) {
             boolean left = foundFinal.stream().anyMatch(g -> g.probe.variable.equals(f.probe.variable) && g.probe.shape.equals(f.probe.shape));
-            Effect by = left ? null : explainer(f, selected);
-            located.add(located(f, geoTester, "geometric", by, left));
+            Effect named = left ? null : explainer(f, selected);
+            String by = named != null ? named.label() : left ? null : takenBy(f, geoTester, selected);
+            located.add(located(f, geoTester, "geometric", by, named == null && by != null, left));
         }
         if (!selected.isEmpty())
-            for (Locator.Found f : foundFinal) located.add(located(f, lastTester, "final", null, true));
+            for (Locator.Found f : foundFinal) located.add(located(f, lastTester, "final", null, false, true));
         // The noise floor without every structure still located; above 1.2x it the report says so first.
         double rssLeft = lastTester.rss0;
         int dfLeft = lastTester.m - lastTester.rank;
@@ -1381,6 +1382,71 @@ public final class Diagnoser {
         return out;
     }
 
+    /**
+     * What took a structure found after the geometric fit that the final model no longer leaves,
+     * though no effect of its own variable was named: the selected effect with which, added to the
+     * geometric model, the structure is no longer significant at its own threshold (the one that
+     * leaves it least significant), else the selected effects together if they do; null when the
+     * structure holds even beside all of them. What the geometric fit leaves of a warm-up, for one,
+     * has a step in time among its nearest shapes (a joint's zero jumping, the target moving on the
+     * flange): once the thermal growth is fitted the step is gone; it was the growth's.
+     */
+    static String takenBy(Locator.Found f, Tester geo, List<Effect> selected) {
+        double thr = f.c.threshold;
+        Effect best = null;
+        double bestP = 0;
+        List<double[]> cols = new ArrayList<>(); // every selected effect's columns, orthonormal, out of the geometric span
+        for (Effect e : selected) {
+            Candidate c = geo.test(e, geo.w.conditions);
+            if (c.keptColumns == 0) continue;
+            Candidate s = Locator.test(geo, f.probe, c.basis, c.keptColumns, thr);
+            double p = s == null ? 1 : s.p;
+            LOG.debug("located {}: p {} beside {} (threshold {})", f.probe.shape, p, e.label(), thr);
+            if (!(p < thr) && p > bestP) { bestP = p; best = e; }
+            for (int t = 0; t < c.keptColumns; t++) {
+                double[] x = new double[geo.m];
+                for (int i = 0; i < geo.m; i++) x[i] = c.basis[i * c.keptColumns + t];
+                cols.add(x);
+            }
+        }
+        if (best != null) return best.label();
+        if (selected.size() < 2 || cols.isEmpty()) return null;
+        List<double[]> qs = orthonormal(cols, null, geo.m);
+        int nq = qs.size();
+        double[] q = new double[geo.m * nq];
+        for (int t = 0; t < nq; t++) for (int i = 0; i < geo.m; i++) q[i * nq + t] = qs.get(t)[i];
+        Candidate s = Locator.test(geo, f.probe, q, nq, thr);
+        return s == null || !(s.p < thr) ? String.join(" and ", selected.stream().map(Effect::label).toList()) + " together" : null;
+    }
+
+    /**
+     * An orthonormal basis of the span of {@code cols} (each m long), Gram–Schmidt twice: a column
+     * whose squared norm left is within the rank tolerance (1e-20) of {@code n0[c]} (its squared norm
+     * before any projection the caller made; null: its own) is dropped.
+     */
+    static List<double[]> orthonormal(List<double[]> cols, double[] n0s, int m) {
+        List<double[]> qs = new ArrayList<>();
+        for (int c = 0; c < cols.size(); c++) {
+            double[] x = cols.get(c).clone();
+            double n0 = 0;
+            if (n0s != null) n0 = n0s[c];
+            else for (double v : x) n0 += v * v;
+            for (int pass = 0; pass < 2; pass++)
+                for (double[] qv : qs) {
+                    double d = 0;
+                    for (int i = 0; i < m; i++) d += qv[i] * x[i];
+                    for (int i = 0; i < m; i++) x[i] -= d * qv[i];
+                }
+            double n1 = 0;
+            for (double v : x) n1 += v * v;
+            if (n0 == 0 || n1 < 1e-20 * n0) continue;
+            double nn = Math.sqrt(n1);
+            for (int i = 0; i < m; i++) x[i] /= nn;
+            qs.add(x);
+        }
+        return qs;
+    }
+
     /** The selected effect that explains a structure found after the geometric fit, or null. */
     static Effect explainer(Locator.Found f, List<Effect> selected) {
         for (Effect e : selected) {
@@ -1408,22 +1474,24 @@ public final class Diagnoser {
                 }
                 case TARGET_STEP -> { if (k == Effect.Kind.TARGET_STEP) return e; }
                 case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
-                case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE) return e; }
+                case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE && e.joint() == f.probe.joint) return e; }
                 case REACH, HEIGHT -> { return e; }
             }
         }
         return null;
     }
 
-    static Diagnosis.Located located(Locator.Found f, Tester t, String stage, Effect by, boolean left) {
+    static Diagnosis.Located located(Locator.Found f, Tester t, String stage, String by, boolean taken, boolean left) {
         String words = String.format(Locale.ROOT, "%s: %.4f mm RMS %s, %.0f %% of the %s sum of squares "
                 + "(F = %.1f on %d degrees of freedom, p %s below the corrected threshold %.2g)", capital(f.probe.shape),
                 f.sizeM * 1e3, t.where(), 100 * share(f, t), stage.equals("geometric") ? "geometric fit's unexplained" : "remaining",
                 f.c.f, f.c.df1, Words.p(f.c.p), f.c.threshold);
-        if (by != null) words += "; explained by " + by.label() + ".";
+        if (taken) words += "; explained by " + by + ": with it fitted the structure is no longer significant, so it is "
+                + "that effect's seen through the geometric fit, not a structure of its own.";
+        else if (by != null) words += "; explained by " + by + ".";
         else if (left) words += "; no named effect explains it.";
         return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, share(f, t), f.c.f, f.c.df1, f.c.p, f.c.threshold,
-                stage, by == null ? null : by.label(), words, Locator.plot(t, f));
+                stage, by, words, Locator.plot(t, f));
     }
 
     /** Share of the scanned fit's unexplained sum of squares a structure removes. */
@@ -2226,26 +2294,17 @@ public final class Diagnoser {
             if (alias == null) return pressBlocks(withoutH, e, null, 0);
             int ka = alias.size();
             double[] s = signature(alias, conds);
-            List<double[]> qs = new ArrayList<>();
+            List<double[]> ys = new ArrayList<>();
+            double[] n0s = new double[ka];
             double[] x = new double[m];
             for (int c = 0; c < ka; c++) {
                 double n0 = 0;
                 for (int i = 0; i < m; i++) { x[i] = s[i * ka + c]; n0 += x[i] * x[i]; }
                 if (n0 == 0) continue;
-                double[] y = projectOut(withoutU, rk, m, x);
-                for (int pass = 0; pass < 2; pass++)
-                    for (double[] qv : qs) {
-                        double d = 0;
-                        for (int i = 0; i < m; i++) d += qv[i] * y[i];
-                        for (int i = 0; i < m; i++) y[i] -= d * qv[i];
-                    }
-                double n1 = 0;
-                for (double v : y) n1 += v * v;
-                if (n1 < 1e-20 * n0) continue; // rank tolerance of the model's basis
-                double nn = Math.sqrt(n1);
-                for (int i = 0; i < m; i++) y[i] /= nn;
-                qs.add(y);
+                n0s[ys.size()] = n0;
+                ys.add(projectOut(withoutU, rk, m, x));
             }
+            List<double[]> qs = orthonormal(ys, n0s, m); // rank tolerance against each column's norm before the projection
             int q = qs.size();
             double[] qm = new double[m * q];
             for (int t = 0; t < q; t++) {

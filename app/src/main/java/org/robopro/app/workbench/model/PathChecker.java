@@ -36,6 +36,8 @@ public final class PathChecker implements AutoCloseable {
     private final WorkbenchModel.Listener modelListener;
     private ScheduledFuture<?> pending;
     private volatile Result latest;
+    /** The last result every listener has been handed (what {@link #awaitCurrent} waits for). */
+    private Result delivered;
 
     public PathChecker(WorkbenchModel model, long debounceMs) {
         this.model = model;
@@ -80,8 +82,10 @@ public final class PathChecker implements AutoCloseable {
             Map<String, TargetStatus> st = Map.copyOf(model.statuses(run));
             Result r = new Result(id, run, st, targets, program);
             checks.incrementAndGet();
-            // Listeners first, then publish: a caller of awaitCurrent (a screenshot, a test) must
-            // find the result already handed to the scene and the UI, not on its way there.
+            // Published before the listeners run: a listener that hands the news to another
+            // thread (the UI's invokeLater) must find this result as latest() there, not the one
+            // before it (it would show the previous program's results beside this one).
+            latest = r;
             for (Consumer<Result> l : listeners) {
                 try {
                     l.accept(r);
@@ -89,8 +93,10 @@ public final class PathChecker implements AutoCloseable {
                     LOG.log(Level.WARNING, "path check listener failed", e);
                 }
             }
+            // Delivered after the listeners: a caller of awaitCurrent (a screenshot, a test) must
+            // find the result already handed to the scene and the UI, not on its way there.
             synchronized (this) {
-                latest = r;
+                delivered = r;
                 notifyAll();
             }
         } catch (RuntimeException e) {
@@ -107,12 +113,12 @@ public final class PathChecker implements AutoCloseable {
     public Result awaitCurrent(long timeoutMs) throws InterruptedException {
         long end = System.currentTimeMillis() + timeoutMs;
         synchronized (this) {
-            while (latest == null || latest.request() < requested.get()) {
+            while (delivered == null || delivered.request() < requested.get()) {
                 long left = end - System.currentTimeMillis();
                 if (left <= 0) return null;
                 wait(left);
             }
-            return latest;
+            return delivered;
         }
     }
 

@@ -73,6 +73,23 @@ public final class ProgramRun {
     public CheckReport report() { return report; }
     public List<Step> steps() { return steps; }
     public boolean ok() { return steps.stream().allMatch(Step::ok); }
+
+    /**
+     * The outcome of program line {@code index} as one step: a motion's own step, or for a kept
+     * statement (a call, a loop) the motions it ran merged (every problem, the durations added);
+     * empty for a line that moved nothing (a wait, I/O, a comment).
+     */
+    public Optional<Step> line(int index) {
+        List<Step> of = steps.stream().filter(s -> s.index() == index).toList();
+        if (of.size() <= 1) return of.stream().findFirst();
+        List<Problem> problems = new ArrayList<>();
+        double seconds = 0;
+        for (Step s : of) {
+            problems.addAll(s.problems());
+            seconds += s.seconds();
+        }
+        return Optional.of(new Step(index, of.get(0).instruction(), of.get(0).label(), problems, seconds));
+    }
     /** Targets named by an error (drawn red). */
     public Set<String> badTargets() { return badTargets; }
     public int sampleCount() { return times.length; }

@@ -140,6 +140,11 @@ public final class JogPanel extends JPanel {
         revalidate();
     }
 
+    /** v rounded to the displayed step, a value that rounds to zero as 0 (never "-0.0000"). */
+    static double shown(double v, double step) {
+        return Math.rint(v / step) * step + 0.0;
+    }
+
     /** Shows the model's joint values and TCP. */
     public void refresh() {
         WorkbenchModel m = wb.model();
@@ -160,7 +165,8 @@ public final class JogPanel extends JPanel {
         Pose p = m.worldTtcp(q);
         double[] qq = p.quaternion();
         tcp.setText(String.format(Locale.ROOT, "<html>TCP (world): <b>%.1f, %.1f, %.1f</b> mm<br>q: [%.4f, %.4f, %.4f, %.4f]</html>",
-                p.x() * 1000, p.y() * 1000, p.z() * 1000, qq[0], qq[1], qq[2], qq[3]));
+                shown(p.x() * 1000, 0.1), shown(p.y() * 1000, 0.1), shown(p.z() * 1000, 0.1),
+                shown(qq[0], 1e-4), shown(qq[1], 1e-4), shown(qq[2], 1e-4), shown(qq[3], 1e-4)));
         ConfData c = m.kinematics().confOf(q);
         boolean ok = m.kinematics().withinLimits(q);
         conf.setText(String.format(Locale.ROOT, "<html>confdata [%d, %d, %d, %d] %s</html>", c.cf1(), c.cf4(), c.cf6(), c.cfx(),

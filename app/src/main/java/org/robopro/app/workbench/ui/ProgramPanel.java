@@ -47,6 +47,8 @@ public final class ProgramPanel extends JPanel {
     private long playStart;
     private double playFrom;
     private boolean scrubbing;
+    /** The program time (s) the timeline shows. */
+    private double shownTime;
 
     public ProgramPanel(WorkbenchSession wb) {
         super(new BorderLayout(4, 4));
@@ -83,6 +85,8 @@ public final class ProgramPanel extends JPanel {
         add(buttons, BorderLayout.NORTH);
         JPanel tl = new JPanel(new BorderLayout(4, 0));
         play.setName("play");
+        timeline.setName("timeline");
+        time.setName("timeline-time");
         play.addActionListener(e -> togglePlay());
         tl.add(play, BorderLayout.WEST);
         tl.add(timeline, BorderLayout.CENTER);
@@ -159,6 +163,7 @@ public final class ProgramPanel extends JPanel {
     /** Checks the program and shows the outcome per row. */
     public ProgramRun check() {
         plan = wb.checkProgram();
+        showTimeline();
         rows.fireTableDataChanged();
         return plan;
     }
@@ -183,9 +188,6 @@ public final class ProgramPanel extends JPanel {
         double t = playFrom + (System.nanoTime() - playStart) / 1e9;
         if (t >= plan.duration()) { t = plan.duration(); stop(); }
         showTime(t);
-        scrubbing = true;
-        timeline.setValue((int) Math.round(1000 * t / Math.max(1e-9, plan.duration())));
-        scrubbing = false;
     }
 
     /** Puts the robot where the program has it at time t (s). */
@@ -193,7 +195,18 @@ public final class ProgramPanel extends JPanel {
         if (plan == null) plan = wb.model().programRun();
         if (plan.sampleCount() == 0) return;
         wb.model().setQ(plan.qAtTime(t));
-        time.setText(String.format(Locale.ROOT, "%.2f / %.2f s", t, plan.duration()));
+        shownTime = t;
+        showTimeline();
+    }
+
+    /** The time label and the slider at the shown time of the current plan (its duration may have changed since). */
+    private void showTimeline() {
+        double d = plan == null ? 0 : plan.duration();
+        double t = Math.max(0, Math.min(shownTime, d));
+        time.setText(String.format(Locale.ROOT, "%.2f / %.2f s", t, d));
+        scrubbing = true;
+        timeline.setValue(d > 0 ? (int) Math.round(1000 * t / d) : 0);
+        scrubbing = false;
     }
 
     /** The Check column as shown, one entry per row ("ok 0.42 s", "FAIL unreachable: ..."): what the user reads. */
@@ -207,7 +220,10 @@ public final class ProgramPanel extends JPanel {
     public void refresh() {
         // Keep check results live once checked, from the background check (never computed on this thread).
         var latest = wb.pathChecker().latest();
-        if (plan != null && !player.isRunning() && latest != null && latest.program().equals(wb.model().program())) plan = latest.run();
+        if (plan != null && !player.isRunning() && latest != null && latest.program().equals(wb.model().program())) {
+            plan = latest.run();
+            showTimeline();
+        }
         refreshWobjs();
         rows.fireTableDataChanged();
     }
@@ -229,6 +245,10 @@ public final class ProgramPanel extends JPanel {
             List<Instruction> p = wb.model().program();
             if (r >= p.size()) return "";
             Instruction i = p.get(r);
+            if (c == 6) { // a kept call or loop shows the outcome of the motions it ran
+                ProgramRun.Step s = step(r);
+                return s == null ? "" : (!s.ok() ? "FAIL " : s.problems().isEmpty() ? "ok " : "warning ") + s.message();
+            }
             if (!i.type().motion()) return c == 0 ? r + 1 : c == 1 ? "RAPID" : c == 2 ? i.statementText() : "";
             return switch (c) {
                 case 0 -> r + 1;
@@ -236,9 +256,7 @@ public final class ProgramPanel extends JPanel {
                 case 2 -> i.target();
                 case 3 -> i.via() == null ? "" : i.via();
                 case 4 -> i.speedMmPerS();
-                case 5 -> i.zoneMm();
-                default -> step(r) == null ? "" : (!step(r).ok() ? "FAIL " : step(r).problems().isEmpty() ? "ok " : "warning ")
-                        + step(r).message();
+                default -> i.zoneMm();
             };
         }
 
@@ -282,8 +300,7 @@ public final class ProgramPanel extends JPanel {
     }
 
     private ProgramRun.Step step(int r) {
-        if (plan == null) return null;
-        return plan.steps().stream().filter(s -> s.index() == r).findFirst().orElse(null);
+        return plan == null ? null : plan.line(r).orElse(null);
     }
 
     private final class StatusRenderer extends DefaultTableCellRenderer {

@@ -35,6 +35,32 @@ class PathCheckerTest {
         }
     }
 
+    /**
+     * A listener (the window hands each result to the Swing thread, which then reads latest())
+     * finds the result it was handed as latest(): were the previous one still published, the
+     * program table would show the previous program's results beside the new program until the
+     * next edit.
+     */
+    @Test
+    void listener_findsTheResultItIsHandedAsLatest() throws Exception {
+        WorkbenchModel m = ProgramRunTest.modelWithTargets();
+        try (PathChecker c = new PathChecker(m, 20)) {
+            c.awaitCurrent(30_000);
+            List<String> seen = java.util.Collections.synchronizedList(new ArrayList<>());
+            c.addListener(r -> seen.add(c.latest() == r ? "same" : "other: latest is request "
+                    + (c.latest() == null ? "none" : c.latest().request()) + ", handed " + r.request()));
+            for (int i = 1; i <= 3; i++) {
+                List<Instruction> p = new ArrayList<>();
+                for (int k = 0; k < i; k++) p.add(new Instruction(Instruction.Type.MOVEJ, k % 2 == 0 ? "p10" : "p20", 200, 0));
+                m.setProgram(p);
+                PathChecker.Result r = c.awaitCurrent(30_000);
+                assertEquals(i, r.program().size());
+                assertTrue(r.program() == r.run().program(), "the result's program is the one its run checked");
+            }
+            assertEquals(List.of("same", "same", "same"), seen);
+        }
+    }
+
     @Test
     void jogging_noCheck_butAnUnreachableTargetIsMarked() throws Exception {
         WorkbenchModel m = ProgramRunTest.modelWithTargets();
