@@ -554,10 +554,6 @@ public final class Diagnoser {
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
         int hMax = Locator.harmonicsFor(rows.size());
-        if (hMax < Locator.WANTED_HARMONIC)
-            notes.add(String.format(Locale.ROOT, "with %d poses the scan can tell apart harmonics up to %d cycles per turn of a "
-                    + "joint (%d poses per cycle); gear stages up to %d cycles per turn need at least %d poses",
-                    rows.size(), hMax, 3, Locator.WANTED_HARMONIC, Locator.WANTED_HARMONIC * 3));
         Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
         Map<String, Candidate> implausible = new LinkedHashMap<>();
         List<Effect> remaining = new ArrayList<>(family);
@@ -1572,6 +1568,7 @@ public final class Diagnoser {
                 + "that effect's seen through the geometric fit, not a structure of its own.";
         else if (by != null) words += "; explained by " + by + ".";
         else if (left) words += "; no named effect explains it.";
+        words += Locator.placement(f);
         return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, share(f, t), f.c.f, f.c.df1, f.c.p, f.c.threshold,
                 stage, by, words, Locator.plot(t, f));
     }
@@ -1754,6 +1751,7 @@ public final class Diagnoser {
                 if (f.probe.joint != j) continue;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
+                if (f.probe.var == Locator.Var.ANGLE_SMOOTH && f.sparseClaim()) for (int h : f.sparse) hs.add(h);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
