@@ -736,6 +736,7 @@ public final class Diagnoser {
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
+        fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
@@ -1110,6 +1111,168 @@ public final class Diagnoser {
                     + "would: measure the same poses with two or three payloads (record payload_kg) to tell a compliance from a "
                     + "transmission error, or give the robot file a mass_model.", j + 1));
             k = -1;
+        }
+        return fit;
+    }
+
+    /** Shares of the poses left free (gravity torque below the holding torque) tried for a backlash held by gravity. */
+    static final double[] HELD_FREE_SHARES = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8};
+    /** Half-widths of the hand-over between free and held tried, a share of the holding torque (0: sharp). */
+    static final double[] HELD_WIDTHS = {0, 0.25, 0.5};
+    /** Factors of a file mass tried when re-estimating the masses of a backlash held by gravity. */
+    static final double[] HELD_MASS_SCALES = {0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4};
+
+    /** The holding torque that leaves {@code share} of the poses (|τ| given) free: halfway between two poses' torques. */
+    static double heldTorqueAt(double[] absTau, double share) {
+        double[] sorted = absTau.clone();
+        Arrays.sort(sorted);
+        int at = (int) Math.floor(share * (sorted.length - 1));
+        return at + 1 < sorted.length ? 0.5 * (sorted[at] + sorted[at + 1]) : sorted[at];
+    }
+
+    /**
+     * Leave-one-pose-out error with a backlash held by gravity of joint {@code j} in the place of
+     * selected effect {@code k}: masses scaled by {@code scales} (null: the file's), holding torque
+     * leaving {@code share} of the poses free, hand-over half-width {@code width}.
+     */
+    private static double heldPress(Tester t, int k, int j, GravityTorques gravity, double[] scales, double share, double width,
+                                    List<Measurement> rows, List<PoseConditions> conds) {
+        GravityTorques g = scales == null ? gravity : gravity.withMassScales(scales);
+        double[] tau = new double[rows.size()];
+        for (int i = 0; i < tau.length; i++) tau[i] = Math.abs(g.driveTorques(rows.get(i).q(), rows.get(i).payloadKg())[j]);
+        double nm = heldTorqueAt(tau, share);
+        if (!(nm > 0)) return Double.POSITIVE_INFINITY;
+        return t.pressReplacing(k, Effect.heldByGravity(j, gravity, nm, width, scales), conds);
+    }
+
+    /**
+     * Backlash held on one flank by gravity ({@link Effect#heldByGravity}): where the gravity torque
+     * on a joint is large its gear sits on the flank the torque pushes it to whatever the last
+     * motion, and only where the torque is small does the direction decide. Fitted as plain
+     * backlash that form leaves a step with the sign of the torque, which a compliance of the same
+     * joint (a deflection proportional to the torque) takes in part, so the pair "compliance +
+     * backlash" is named for what is one lost motion. For each joint with a constant backlash
+     * named (and the robot file's masses known), the held form with the holding torque that
+     * predicts left-out poses best (a grid of torque quantiles) is put in the place of the backlash
+     * and of the same joint's compliance together. It takes their place when its leave-one-pose-out
+     * error is lower by {@link #ALIAS_MARGIN} (and the validation error too, when given); within
+     * the margin of a named compliance + backlash the data cannot tell the two apart: the held
+     * form (one effect, one play) is named, and the notes say so and what to measure.
+     */
+    private static Fit heldByGravity(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                     GravityTorques gravity, List<Measurement> rows, List<String> notes, List<String> recs) {
+        if (gravity == null || gravity.massesUnknown()) return fit;
+        for (int j = 0; j < w.model.dof(); j++) {
+            final int jj = j;
+            // (a lost motion that builds up over the move may stand in for it: the wind-up's shorter lags after short
+            // moves take up part of what the held flank leaves)
+            Effect plain = selected.stream().filter(e -> e.kind() == Effect.Kind.BACKLASH && e.joint() == jj
+                    && !e.heldByGravity()).findFirst().orElse(null);
+            if (plain == null) continue;
+            Effect comp = selected.stream().filter(e -> e.kind() == Effect.Kind.COMPLIANCE && e.joint() == jj).findFirst().orElse(null);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
+            double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
+            double thr = steps.get(selected.indexOf(plain)).candidate.threshold;
+            Fit base = comp == null ? fit : dropAndRefit(w, fit, selected, absorbedCols, steps, selected.indexOf(comp));
+            Tester bt = w.tester(base);
+            int k = selected.indexOf(plain);
+            // the holding torque as a share of the poses left free, the hand-over's width, then the masses that bear on the joint
+            double[] best = {Double.POSITIVE_INFINITY, HELD_FREE_SHARES[0], 0}; // press, share, width
+            double[] scales = null;
+            for (int wi = 0; wi < HELD_WIDTHS.length; wi++) {
+                double[] bw = {Double.POSITIVE_INFINITY, 0, HELD_WIDTHS[wi]};
+                for (double share : HELD_FREE_SHARES) {
+                    double pr = heldPress(bt, k, j, gravity, null, share, HELD_WIDTHS[wi], rows, w.conditions);
+                    if (pr < bw[0]) { bw[0] = pr; bw[1] = share; }
+                }
+                // the sharpest hand-over unless a gradual one predicts left-out poses clearly better
+                if (wi == 0 || bw[0] < best[0] * (1 - ALIAS_MARGIN)) best = bw;
+            }
+            if (Double.isFinite(best[0])) {
+                // Each mass that bears on the joint scaled in turn (the data sheet's masses are rarely better than ±30 %);
+                // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
+                double[] sc = new double[gravity.massCount()];
+                Arrays.fill(sc, 1);
+                double pr0 = best[0], pr = pr0;
+                for (int round = 0; round < 2; round++)
+                    for (int m = 0; m < sc.length; m++) {
+                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                        double keep = sc[m];
+                        double bestF = keep;
+                        for (double f : HELD_MASS_SCALES) {
+                            sc[m] = f;
+                            double p = heldPress(bt, k, j, gravity, sc, best[1], best[2], rows, w.conditions);
+                            if (p < pr) { pr = p; bestF = f; }
+                        }
+                        sc[m] = bestF;
+                    }
+                if (pr < pr0 * (1 - ALIAS_MARGIN)) {
+                    scales = sc;
+                    for (double share : HELD_FREE_SHARES) { // the holding torque again, with the masses re-estimated
+                        double p = heldPress(bt, k, j, gravity, sc, share, best[2], rows, w.conditions);
+                        if (p < pr) { pr = p; best[1] = share; }
+                    }
+                    best[0] = pr;
+                }
+            }
+            double bestPress = best[0], bestWidth = best[2];
+            GravityTorques gs = scales == null ? gravity : gravity.withMassScales(scales);
+            double[] tau = new double[rows.size()];
+            for (int i = 0; i < tau.length; i++) tau[i] = Math.abs(gs.driveTorques(rows.get(i).q(), rows.get(i).payloadKg())[j]);
+            double bestNm = heldTorqueAt(tau, best[1]);
+            LOG.debug("held by gravity j{}: above {} N·m ± {}, masses {}: PRESS {} against {}", j + 1, bestNm, bestWidth,
+                    scales == null ? "file" : Arrays.toString(scales), bestPress, own);
+            if (!Double.isFinite(bestNm) || !(bestNm > 0) || !(bestPress < own * (1 + ALIAS_MARGIN)) || comp == null && !(bestPress < own * (1 - ALIAS_MARGIN))) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            Effect held = Effect.heldByGravity(j, gravity, bestNm, bestWidth, scales);
+            Fit f = replaceEffect(w, base, selected, absorbedCols, steps, k, held, false);
+            double pressHeld = w.tester(f).pressFull();
+            boolean valWorse = w.hasValidation() && !(w.validateError(f) < ownVal * (1 + ALIAS_MARGIN));
+            if (!selected.contains(held) || valWorse || !(pressHeld < own * (1 + ALIAS_MARGIN))) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            steps.get(selected.indexOf(held)).candidate.threshold = thr;
+            double free = 0;
+            for (double t : tau) if (t < bestNm) free++;
+            String was = comp == null ? plain.label() : comp.label() + " and " + plain.label();
+            if (pressHeld < own * (1 - ALIAS_MARGIN))
+                notes.add(String.format(Locale.ROOT, "%s %s replaced by %s: joint %d's lost motion shows only where the gravity "
+                        + "torque on it is below %.1f N·m (%.0f %% of the poses); elsewhere gravity holds the gear on one flank. "
+                        + "It predicts left-out poses better (leave-one-pose-out error %.1f against %.1f)", was,
+                        comp == null ? "was" : "were", held.label(), j + 1, bestNm, 100 * free / tau.length, pressHeld, own));
+            else {
+                notes.add(String.format(Locale.ROOT, "%s cannot be told from %s on these poses (leave-one-pose-out error %.1f "
+                        + "against %.1f): a gear held on one flank by gravity leaves a step with the sign of the torque, which a "
+                        + "deflection proportional to the torque mimics. One lost motion is named, not a compliance beside it",
+                        held.label(), was, pressHeld, own));
+                recs.add(String.format(Locale.ROOT, "To tell joint %d's backlash held by gravity from a compliance beside it, "
+                        + "measure some poses where the gravity torque on joint %d is large with two or three payloads (record "
+                        + "payload_kg): a compliance moves with the load, a gear held on one flank does not.", j + 1, j + 1));
+            }
+            fit = f;
+            // What the stepwise search added on the same drive to take up the misfit of the wrong form (harmonics of its
+            // angle, a scale error) leaves when it no longer lowers the leave-one-pose-out error or is no longer significant.
+            for (boolean again = true; again; ) {
+                again = false;
+                Tester ft = w.tester(fit);
+                double full = ft.pressFull();
+                for (int i = 0; i < selected.size() && !again; i++) {
+                    Effect o = selected.get(i);
+                    if (o == held || o.isFallback() || o.joint() != j || o.target() != Effect.Target.DRIVE) continue;
+                    double without = ft.pressReplacing(i, null, w.conditions);
+                    double[] pv = new double[1];
+                    boolean weak = w.weakest(fit, selected, thr, x -> x == o, pv) >= 0;
+                    if (!weak && without > full * (1 + ALIAS_MARGIN)) continue;
+                    notes.add(String.format(Locale.ROOT, "%s is not claimed: beside %s it no longer lowers the leave-one-pose-out "
+                            + "error clearly (%.1f without it against %.1f) or is no longer significant", o.label(), held.label(), without, full));
+                    fit = dropAndRefit(w, fit, selected, absorbedCols, steps, i);
+                    restampLast(w, fit, steps);
+                    again = true;
+                }
+            }
         }
         return fit;
     }
