@@ -76,6 +76,12 @@ public final class Diagnoser {
     static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
     static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
+    /**
+     * Bound of one link's growth per kelvin of the reading, 1/K: a link near its drives warms more
+     * than the air the sensor reads (motor and gear losses conduct into it), up to about four times
+     * the air's rise for an aluminium link (4 × 23e-6).
+     */
+    static final double MAX_LINK_ALPHA = 1e-4;
     static final double MAX_STRAIN = 2e-3;
     static final double MAX_DRIFT_PER_K = 1e-4, MAX_DRIFT_PER_H = 1e-3; // m/K, m/h
 
@@ -550,6 +556,15 @@ public final class Diagnoser {
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
+        // Thermal growth with the links lagging the reading: the time constant (one for every link) that predicts
+        // left-out poses best, from the whole file's temperature history in time order; a candidate beside the unlagged form.
+        List<Measurement> history = new ArrayList<>(trainAll.rows());
+        if (validate != null) history.addAll(validate.rows());
+        ThermalLag lag = hasTemp && hasTime ? ThermalLag.of(history) : null;
+        if (lag != null && !excluded.contains(claimKey(Effect.thermalLinks(model, t0C)))) {
+            Effect lagged = commonLag(geoTester, model, t0C, lag, w.conditions);
+            if (lagged != null) family.add(lagged);
+        }
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
@@ -618,6 +633,7 @@ public final class Diagnoser {
             Effect chosen = best.effect;
             // One form per effect: a second thermal strain, or the same joint's compliance with other masses, is not a second effect.
             remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL)
+                    || (chosen.kind() == Effect.Kind.THERMAL_LINK && e.kind() == Effect.Kind.THERMAL_LINK)
                     || (chosen.kind() == Effect.Kind.COMPLIANCE && e.kind() == Effect.Kind.COMPLIANCE && e.joint() == chosen.joint()));
             notIdent.remove(chosen.label());
             int older = -1; // a periodic effect of the same joint whose harmonics the chosen one holds: one effect, not two
@@ -673,6 +689,15 @@ public final class Diagnoser {
                 if (form != null && !refusedAliases.contains(form.label()) && formPress < own * (1 - ALIAS_MARGIN)) {
                     best = form;
                     bestPress = formPress;
+                }
+            }
+            if (e.kind() == Effect.Kind.THERMAL_LINK && lag != null) {
+                // The lags of the growth, re-chosen with the rest in place: one for every link, then each link its own
+                // where that predicts left-out poses better.
+                Effect.Term form = bestLags(at, k, e, model, t0C, lag, w.conditions);
+                if (form != null && !refusedAliases.contains(form.effect().label()) && form.values()[0] < own * (1 - ALIAS_MARGIN)) {
+                    best = form.effect();
+                    bestPress = form.values()[0];
                 }
             }
             for (Effect a : aliases(e, family, selected)) {
@@ -1035,6 +1060,63 @@ public final class Diagnoser {
         if (pc < pBest) { pBest = pc; xBest = Math.exp(c); }
         if (pd < pBest) { pBest = pd; xBest = Math.exp(d); }
         return new Effect.Term(Effect.windUp(joint, xBest, moves), new double[] {pBest});
+    }
+
+    /**
+     * The thermal growth link by link with every link lagging the reading by one time constant from
+     * {@link ThermalLag#TAUS} (above 0), the one whose test against {@code t} predicts left-out poses
+     * best; null when none is testable.
+     */
+    static Effect commonLag(Tester t, KinematicModel model, double t0C, ThermalLag lag, List<PoseConditions> conds) {
+        int n = Effect.thermalLinks(model, t0C).size();
+        Effect best = null;
+        double bestPress = Double.POSITIVE_INFINITY;
+        for (double tau : ThermalLag.TAUS) {
+            if (tau == 0) continue;
+            double[] taus = new double[n];
+            Arrays.fill(taus, tau);
+            Effect e = Effect.thermalLinks(model, t0C, lag, taus);
+            Candidate c = t.test(e, conds);
+            if (c.keptColumns > 0 && c.pressAfter < bestPress) { bestPress = c.pressAfter; best = e; }
+        }
+        return best;
+    }
+
+    /** A link's own lag replaces the common one only when it lowers the leave-one-pose-out error by this fraction. */
+    static final double LINK_LAG_MARGIN = 0.01;
+
+    /**
+     * The lags of selected thermal growth {@code k} that predict left-out poses best in its place: one
+     * time constant for every link (from {@link ThermalLag#TAUS}, 0 the unlagged form), then, link by
+     * link, its own time constant where that lowers the leave-one-pose-out error by more than
+     * {@link #LINK_LAG_MARGIN} (two rounds). Returned as a term whose value is that error; null when
+     * none is testable.
+     */
+    static Effect.Term bestLags(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
+                                List<PoseConditions> conds) {
+        int n = growth.size();
+        double[] taus = null;
+        double best = Double.POSITIVE_INFINITY;
+        for (double tau : ThermalLag.TAUS) {
+            double[] ts = new double[n];
+            Arrays.fill(ts, tau);
+            double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
+            if (p < best) { best = p; taus = ts; }
+        }
+        if (taus == null) return null;
+        for (int round = 0; round < 2; round++) {
+            boolean moved = false;
+            for (int col = 0; col < n; col++)
+                for (double tau : ThermalLag.TAUS) {
+                    if (tau == taus[col]) continue;
+                    double[] ts = taus.clone();
+                    ts[col] = tau;
+                    double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
+                    if (p < best * (1 - LINK_LAG_MARGIN)) { best = p; taus = ts; moved = true; }
+                }
+            if (!moved) break;
+        }
+        return new Effect.Term(Effect.thermalLinks(model, t0C, lag, taus), new double[] {best});
     }
 
     /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
@@ -2646,9 +2728,9 @@ public final class Diagnoser {
             case THERMAL_LINK -> {
                 boolean ok = true;
                 for (int i = 0; i < v.length; i++)
-                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, MAX_ALPHA)) ok = false;
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, MAX_LINK_ALPHA)) ok = false;
                 c.plausible = ok;
-                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_ALPHA);
+                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_LINK_ALPHA);
             }
             case DRIFT -> {
                 double n = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), sn = Math.max(sd[0], Math.max(sd[1], sd[2]));
