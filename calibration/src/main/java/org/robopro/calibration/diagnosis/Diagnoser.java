@@ -694,10 +694,10 @@ public final class Diagnoser {
             if (e.kind() == Effect.Kind.THERMAL_LINK && lag != null) {
                 // The lags of the growth, re-chosen with the rest in place: one for every link, then each link its own
                 // where that predicts left-out poses better.
-                Effect.Term form = bestLags(at, k, e, model, t0C, lag, w.conditions);
-                if (form != null && !refusedAliases.contains(form.effect().label()) && form.values()[0] < own * (1 - ALIAS_MARGIN)) {
+                LagSearch form = bestLags(at, k, e, model, t0C, lag, w.conditions);
+                if (form != null && !refusedAliases.contains(form.effect().label()) && form.press() < own * (1 - ALIAS_MARGIN)) {
                     best = form.effect();
-                    bestPress = form.values()[0];
+                    bestPress = form.press();
                 }
             }
             for (Effect a : aliases(e, family, selected)) {
@@ -813,6 +813,38 @@ public final class Diagnoser {
                     + "joint %d (weighted error %.1f against %.1f)", e.label(), e.joint() + 1, w.validateError(fit), wo));
             break;
         }
+        // With validation data, a growth whose links lag the temperature reading keeps its lags only when it predicts
+        // the validation poses better than the links at the reading's temperature in its place.
+        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.THERMAL_LINK || !e.lags()) continue;
+            double with = w.validateError(fit);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
+            Effect unlagged = Effect.thermalLinks(model, t0C);
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, unlagged, false);
+            int at = selected.indexOf(unlagged);
+            if (at < 0) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            double wo = w.validateError(plain);
+            if (!(with < wo)) {
+                aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
+                        + "reading's temperature but not the validation poses (weighted error %.1f against %.1f), so no lag is "
+                        + "taken", e.label(), with, wo));
+                fit = plain;
+                k--; // the effect after it now stands at k
+                continue;
+            }
+            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
+            break;
+        }
+        if (lag != null)
+            for (int k = 0; k < selected.size(); k++)
+                if (selected.get(k).kind() == Effect.Kind.THERMAL_LINK) {
+                    String words = lagWords(w.tester(fit), k, selected.get(k), model, t0C, lag, w.conditions);
+                    if (words != null) notes.add(words);
+                }
         timer.mark("aliases");
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
@@ -1086,24 +1118,34 @@ public final class Diagnoser {
     static final double LINK_LAG_MARGIN = 0.01;
 
     /**
+     * A search of a thermal growth's lags: the best form and its leave-one-pose-out error, that error
+     * with no lag, and the best single lag for every link with its error.
+     */
+    record LagSearch(Effect effect, double press, double pressNone, double commonTau, double pressCommon) {
+        /** Whether the links' own lags predict better than one for all. */
+        boolean perLink() { return Arrays.stream(effect.lagTaus()).distinct().count() > 1; }
+    }
+
+    /**
      * The lags of selected thermal growth {@code k} that predict left-out poses best in its place: one
      * time constant for every link (from {@link ThermalLag#TAUS}, 0 the unlagged form), then, link by
      * link, its own time constant where that lowers the leave-one-pose-out error by more than
-     * {@link #LINK_LAG_MARGIN} (two rounds). Returned as a term whose value is that error; null when
-     * none is testable.
+     * {@link #LINK_LAG_MARGIN} (two rounds); null when none is testable.
      */
-    static Effect.Term bestLags(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
+    static LagSearch bestLags(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
                                 List<PoseConditions> conds) {
         int n = growth.size();
         double[] taus = null;
-        double best = Double.POSITIVE_INFINITY;
+        double best = Double.POSITIVE_INFINITY, none = Double.NaN;
         for (double tau : ThermalLag.TAUS) {
             double[] ts = new double[n];
             Arrays.fill(ts, tau);
             double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
+            if (tau == 0) none = p;
             if (p < best) { best = p; taus = ts; }
         }
         if (taus == null) return null;
+        double common = taus[0], pressCommon = best;
         for (int round = 0; round < 2; round++) {
             boolean moved = false;
             for (int col = 0; col < n; col++)
@@ -1116,7 +1158,42 @@ public final class Diagnoser {
                 }
             if (!moved) break;
         }
-        return new Effect.Term(Effect.thermalLinks(model, t0C, lag, taus), new double[] {best});
+        return new LagSearch(Effect.thermalLinks(model, t0C, lag, taus), best, none, common, pressCommon);
+    }
+
+    /** "600 s: base to joint 1, link 2 (joint 2 to joint 3); 300 s: link 3 (joint 3 to joint 4)". */
+    private static String linkLags(Effect growth) {
+        Map<Double, List<String>> by = new java.util.TreeMap<>(java.util.Comparator.reverseOrder());
+        double[] taus = growth.lagTaus();
+        for (int col = 0; col < taus.length; col++) by.computeIfAbsent(taus[col], x -> new ArrayList<>()).add(growth.linkWords(col));
+        List<String> out = new ArrayList<>();
+        by.forEach((tau, ls) -> out.add(String.format(Locale.ROOT, "%.0f s for %s", tau, String.join(", ", ls))));
+        return String.join("; ", out);
+    }
+
+    /**
+     * What the data tell of the lag of named thermal growth {@code k} (docs/diagnosis.md): the lag
+     * found, its leave-one-pose-out error against none, and whether the links' own lags could be
+     * told apart; null when nothing can be said.
+     */
+    static String lagWords(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
+                           List<PoseConditions> conds) {
+        LagSearch s = bestLags(at, k, growth, model, t0C, lag, conds);
+        if (s == null) return null;
+        if (!growth.lags())
+            return String.format(Locale.ROOT, "thermal growth: no lag of the links behind the temperature reading is seen (the "
+                    + "best single lag, %.0f s, predicts left-out poses no better: leave-one-pose-out error %.1f against %.1f at the "
+                    + "reading's temperature); the links are taken at the reading", s.commonTau(), s.pressCommon(), s.pressNone());
+        String which = growth.lags() && Arrays.stream(growth.lagTaus()).distinct().count() > 1
+                ? String.format(Locale.ROOT, "each link its own lag: %s (one lag of %.0f s for every link predicts worse: %.1f)",
+                        linkLags(growth), s.commonTau(), s.pressCommon())
+                : String.format(Locale.ROOT, "one lag of %.0f s for every link: the data do not tell the links' own lags apart "
+                        + "(no link's own lag lowers the leave-one-pose-out error by %.0f %%)", growth.lagTaus()[0], 100 * LINK_LAG_MARGIN);
+        return String.format(Locale.ROOT, "thermal growth: the links follow the temperature reading with a lag (a first-order "
+                + "lag, time constant τ = m·c/(h·A) of each link), %s; leave-one-pose-out error %.1f against %.1f with the links at "
+                + "the reading's temperature. Time constants tried: %s s; record temperatures on the arm's links to measure them",
+                which, s.press(), s.pressNone(), String.join(", ", Arrays.stream(ThermalLag.TAUS).skip(1)
+                        .mapToObj(x -> String.format(Locale.ROOT, "%.0f", x)).toList()));
     }
 
     /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
