@@ -912,11 +912,15 @@ public final class Diagnoser {
         timer.mark("final fit");
         // Locate what is left, and report every structure found (named or not).
         Tester lastTester = plotTester != null ? plotTester : geoTester;
-        List<Locator.Found> foundFinal = selected.isEmpty() ? foundGeo
+        List<Locator.Found> scannedFinal = selected.isEmpty() ? foundGeo
                 : Locator.scan(lastTester, Locator.probes(lastTester, dirSource), o.alpha(), MAX_LOCATED);
+        // Beside a named family, a structure left is a claim the user reads: with validation poses it must hold there too.
+        List<Locator.Found> weak = weakLeads(w, fit, selected, absorbedCols, lastTester, scannedFinal, rows, model, notes);
+        List<Locator.Found> foundFinal = scannedFinal.stream().filter(f -> !weak.contains(f)).toList();
         List<Diagnosis.Located> located = new ArrayList<>();
         for (Locator.Found f : foundGeo) {
-            boolean left = foundFinal.stream().anyMatch(g -> g.probe.variable.equals(f.probe.variable) && g.probe.shape.equals(f.probe.shape));
+            if (weak.stream().anyMatch(g -> sameStructure(f, g))) continue; // said in the notes as a weak lead
+            boolean left = foundFinal.stream().anyMatch(g -> sameStructure(f, g));
             Effect named = left ? null : explainer(f, selected);
             String by = named != null ? named.label() : left ? null : takenBy(f, geoTester, selected);
             located.add(located(f, geoTester, "geometric", by, named == null && by != null, left));
@@ -1604,6 +1608,51 @@ public final class Diagnoser {
             qs.add(x);
         }
         return qs;
+    }
+
+    /** Whether two structures found are the same: the same variable and shape. */
+    private static boolean sameStructure(Locator.Found a, Locator.Found b) {
+        return a.probe.variable.equals(b.probe.variable) && a.probe.shape.equals(b.probe.shape);
+    }
+
+    /**
+     * The structures the final scan finds beside a named family that the validation poses do not
+     * confirm: the structure's own fallback (or its family, for a harmonic or a direction), fitted
+     * jointly with the final model, does not lower the validation error (each residual over its
+     * noise). Each is said in {@code notes} as a weak lead with what to measure, not reported as
+     * located. Without validation poses, without a named family (only fallbacks: what is located
+     * then is the finding), or for a structure without a fallback, none.
+     */
+    private static List<Locator.Found> weakLeads(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
+                                                 Tester t, List<Locator.Found> found, List<Measurement> rows, KinematicModel model,
+                                                 List<String> notes) {
+        List<Locator.Found> out = new ArrayList<>();
+        if (!w.hasValidation() || selected.stream().allMatch(Effect::isFallback)) return out;
+        double without = w.validateError(fit);
+        for (Locator.Found f : found) {
+            Effect lead = switch (f.probe.var) {
+                case ANGLE_PERIODIC -> Effect.periodic(f.probe.joint, new int[] {f.probe.harmonic});
+                case DIRECTION -> Effect.backlash(f.probe.joint);
+                default -> locatedFallbacks(List.of(f), rows, model).stream().findFirst().orElse(null);
+            };
+            if (lead == null || selected.stream().anyMatch(e -> e.label().equals(lead.label()))) continue;
+            Candidate c = t.test(lead, w.conditions);
+            if (c.keptColumns == 0) continue;
+            List<Effect> with = new ArrayList<>(selected);
+            with.add(lead);
+            Map<Effect, boolean[]> abs = new java.util.IdentityHashMap<>(absorbedCols);
+            abs.put(lead, c.absorbedMask);
+            double withLead = w.validateError(w.fit(with, abs, fit.full, c));
+            LOG.debug("lead {}: validation error {} with {}, {} without", f.probe.shape, withLead, lead.label(), without);
+            if (withLead < without) continue;
+            out.add(f);
+            notes.add(String.format(Locale.ROOT, "A weak lead, not a finding: what the final model leaves on the training poses "
+                    + "also shows a structure (%s: %.4f mm RMS %s, F = %.1f, p %s), but modelled (as %s) beside the named effects it does not "
+                    + "lower the validation poses' error (%.1f against %.1f, each residual over its noise), so these data do not "
+                    + "confirm it. To settle it, %s", f.probe.shape, f.sizeM * 1e3, t.where(), f.c.f, Words.p(f.c.p), lead.label(),
+                    withLead, without, nextMeasurement(f, rows.size())));
+        }
+        return out;
     }
 
     /** The selected effect that explains a structure found after the geometric fit, or null. */
