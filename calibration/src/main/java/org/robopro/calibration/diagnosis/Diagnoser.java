@@ -569,10 +569,6 @@ public final class Diagnoser {
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
         int hMax = Locator.harmonicsFor(rows.size());
-        if (hMax < Locator.WANTED_HARMONIC)
-            notes.add(String.format(Locale.ROOT, "with %d poses the scan can tell apart harmonics up to %d cycles per turn of a "
-                    + "joint (%d poses per cycle); gear stages up to %d cycles per turn need at least %d poses",
-                    rows.size(), hMax, 3, Locator.WANTED_HARMONIC, Locator.WANTED_HARMONIC * 3));
         Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
         Map<String, Candidate> implausible = new LinkedHashMap<>();
         List<Effect> remaining = new ArrayList<>(family);
@@ -1354,7 +1350,7 @@ public final class Diagnoser {
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                   List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
         int refinements = 0;
-        Set<String> withdrawn = new HashSet<>();
+        Set<String> withdrawn = new HashSet<>(), backBeside = new HashSet<>();
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -1425,9 +1421,14 @@ public final class Diagnoser {
                     }
                 }
                 int before = selected.size();
+                double thr = steps.get(k).candidate.threshold;
                 fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
                 notes.add(why + (selected.size() == before ? "; " + best.label() + " models the structure instead (held-out error lower)"
                         : "; no fallback lowers the held-out error, so nothing models it"));
+                // Growth or drift withdrawn for the fallback of another structure (a joint's zero jumping, the target moving):
+                // the two can both be there; the family comes back once if it is still needed beside that fallback.
+                if (selected.size() == before && e.target() != Effect.Target.DRIVE && backBeside.add(e.label()))
+                    fit = backBeside(w, fit, selected, absorbedCols, steps, e, best, thr, notes);
                 changed = true;
             }
             if (!changed) break;
@@ -1513,6 +1514,34 @@ public final class Diagnoser {
         if (steps.isEmpty()) return;
         Step last = steps.remove(steps.size() - 1);
         steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
+    }
+
+    /**
+     * Family {@code e}, withdrawn for {@code by} (the fallback of another structure), put back beside
+     * it when it is still needed there: its test against the model with {@code by} passes
+     * {@code threshold} and lowers the leave-one-pose-out error, its estimate is plausible once fitted
+     * jointly, and with validation poses it lowers their error. Else the fit as it was.
+     */
+    private static Fit backBeside(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                  Effect e, Effect by, double threshold, List<String> notes) {
+        Candidate c = w.tester(fit).test(e, w.conditions);
+        LOG.debug("claim check: {} beside {}: p {} (threshold {}), press {} -> {}", e.label(), by.label(), c.p, threshold,
+                c.pressBefore, c.pressAfter);
+        if (c.keptColumns == 0 || !(c.p < threshold) || !(c.pressAfter < c.pressBefore) || !c.plausible) return fit;
+        selected.add(e);
+        absorbedCols.put(e, c.absorbedMask);
+        Fit g = w.fit(selected, absorbedCols, fit.full, c);
+        if (!w.plausibleIn(g, selected, selected.size() - 1) || w.hasValidation() && !(w.validateError(g) < w.validateError(fit))) {
+            selected.remove(selected.size() - 1);
+            absorbedCols.remove(e);
+            return fit;
+        }
+        c.threshold = threshold;
+        steps.add(new Step(c, g.trainRms, w.validateRms(g)));
+        notes.add(String.format(Locale.ROOT, "%s is still needed beside %s (F = %.1f, p %s, below %.2g; leave-one-pose-out error "
+                + "%.1f -> %.1f): the data hold both, so both are kept", e.label(), by.label(), c.f, Words.p(c.p), threshold,
+                c.pressBefore, c.pressAfter));
+        return g;
     }
 
     /**
@@ -1698,6 +1727,7 @@ public final class Diagnoser {
                 + "that effect's seen through the geometric fit, not a structure of its own.";
         else if (by != null) words += "; explained by " + by + ".";
         else if (left) words += "; no named effect explains it.";
+        words += Locator.placement(f);
         return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, share(f, t), f.c.f, f.c.df1, f.c.p, f.c.threshold,
                 stage, by, words, Locator.plot(t, f));
     }
@@ -1880,6 +1910,7 @@ public final class Diagnoser {
                 if (f.probe.joint != j) continue;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
+                if (f.probe.var == Locator.Var.ANGLE_SMOOTH && f.sparseClaim()) for (int h : f.sparse) hs.add(h);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
