@@ -76,6 +76,12 @@ public final class Diagnoser {
     static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
     static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
+    /**
+     * Bound of one link's growth per kelvin of the reading, 1/K: a link near its drives warms more
+     * than the air the sensor reads (motor and gear losses conduct into it), up to about four times
+     * the air's rise for an aluminium link (4 × 23e-6).
+     */
+    static final double MAX_LINK_ALPHA = 1e-4;
     static final double MAX_STRAIN = 2e-3;
     static final double MAX_DRIFT_PER_K = 1e-4, MAX_DRIFT_PER_H = 1e-3; // m/K, m/h
 
@@ -566,6 +572,15 @@ public final class Diagnoser {
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
+        // Thermal growth with the links lagging the reading: the time constant (one for every link) that predicts
+        // left-out poses best, from the whole file's temperature history in time order; a candidate beside the unlagged form.
+        List<Measurement> history = new ArrayList<>(trainAll.rows());
+        if (validate != null) history.addAll(validate.rows());
+        ThermalLag lag = hasTemp && hasTime ? ThermalLag.of(history) : null;
+        if (lag != null && !excluded.contains(claimKey(Effect.thermalLinks(model, t0C)))) {
+            Effect lagged = commonLag(geoTester, model, t0C, lag, w.conditions);
+            if (lagged != null) family.add(lagged);
+        }
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
@@ -630,6 +645,7 @@ public final class Diagnoser {
             Effect chosen = best.effect;
             // One form per effect: a second thermal strain, or the same joint's compliance with other masses, is not a second effect.
             remaining.removeIf(e -> e == chosen || (chosen.kind() == Effect.Kind.THERMAL && e.kind() == Effect.Kind.THERMAL)
+                    || (chosen.kind() == Effect.Kind.THERMAL_LINK && e.kind() == Effect.Kind.THERMAL_LINK)
                     || (chosen.kind() == Effect.Kind.COMPLIANCE && e.kind() == Effect.Kind.COMPLIANCE && e.joint() == chosen.joint()));
             notIdent.remove(chosen.label());
             int older = -1; // a periodic effect of the same joint whose harmonics the chosen one holds: one effect, not two
@@ -685,6 +701,15 @@ public final class Diagnoser {
                 if (form != null && !refusedAliases.contains(form.label()) && formPress < own * (1 - ALIAS_MARGIN)) {
                     best = form;
                     bestPress = formPress;
+                }
+            }
+            if (e.kind() == Effect.Kind.THERMAL_LINK && lag != null) {
+                // The lags of the growth, re-chosen with the rest in place: one for every link, then each link its own
+                // where that predicts left-out poses better.
+                LagSearch form = bestLags(at, k, e, model, t0C, lag, w.conditions);
+                if (form != null && !refusedAliases.contains(form.effect().label()) && form.press() < own * (1 - ALIAS_MARGIN)) {
+                    best = form.effect();
+                    bestPress = form.press();
                 }
             }
             for (Effect a : aliases(e, family, selected)) {
@@ -800,6 +825,38 @@ public final class Diagnoser {
                     + "joint %d (weighted error %.1f against %.1f)", e.label(), e.joint() + 1, w.validateError(fit), wo));
             break;
         }
+        // With validation data, a growth whose links lag the temperature reading keeps its lags only when it predicts
+        // the validation poses better than the links at the reading's temperature in its place.
+        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.THERMAL_LINK || !e.lags()) continue;
+            double with = w.validateError(fit);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
+            Effect unlagged = Effect.thermalLinks(model, t0C);
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, unlagged, false);
+            int at = selected.indexOf(unlagged);
+            if (at < 0) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            double wo = w.validateError(plain);
+            if (!(with < wo)) {
+                aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
+                        + "reading's temperature but not the validation poses (weighted error %.1f against %.1f), so no lag is "
+                        + "taken", e.label(), with, wo));
+                fit = plain;
+                k--; // the effect after it now stands at k
+                continue;
+            }
+            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
+            break;
+        }
+        if (lag != null)
+            for (int k = 0; k < selected.size(); k++)
+                if (selected.get(k).kind() == Effect.Kind.THERMAL_LINK) {
+                    String words = lagWords(w.tester(fit), k, selected.get(k), model, t0C, lag, w.conditions);
+                    if (words != null) notes.add(words);
+                }
         timer.mark("aliases");
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
@@ -1051,6 +1108,108 @@ public final class Diagnoser {
         if (pc < pBest) { pBest = pc; xBest = Math.exp(c); }
         if (pd < pBest) { pBest = pd; xBest = Math.exp(d); }
         return new Effect.Term(Effect.windUp(joint, xBest, moves), new double[] {pBest});
+    }
+
+    /**
+     * The thermal growth link by link with every link lagging the reading by one time constant from
+     * {@link ThermalLag#TAUS} (above 0), the one whose test against {@code t} predicts left-out poses
+     * best; null when none is testable.
+     */
+    static Effect commonLag(Tester t, KinematicModel model, double t0C, ThermalLag lag, List<PoseConditions> conds) {
+        int n = Effect.thermalLinks(model, t0C).size();
+        Effect best = null;
+        double bestPress = Double.POSITIVE_INFINITY;
+        for (double tau : ThermalLag.TAUS) {
+            if (tau == 0) continue;
+            double[] taus = new double[n];
+            Arrays.fill(taus, tau);
+            Effect e = Effect.thermalLinks(model, t0C, lag, taus);
+            Candidate c = t.test(e, conds);
+            if (c.keptColumns > 0 && c.pressAfter < bestPress) { bestPress = c.pressAfter; best = e; }
+        }
+        return best;
+    }
+
+    /** A link's own lag replaces the common one only when it lowers the leave-one-pose-out error by this fraction. */
+    static final double LINK_LAG_MARGIN = 0.01;
+
+    /**
+     * A search of a thermal growth's lags: the best form and its leave-one-pose-out error, that error
+     * with no lag, and the best single lag for every link with its error.
+     */
+    record LagSearch(Effect effect, double press, double pressNone, double commonTau, double pressCommon) {
+        /** Whether the links' own lags predict better than one for all. */
+        boolean perLink() { return Arrays.stream(effect.lagTaus()).distinct().count() > 1; }
+    }
+
+    /**
+     * The lags of selected thermal growth {@code k} that predict left-out poses best in its place: one
+     * time constant for every link (from {@link ThermalLag#TAUS}, 0 the unlagged form), then, link by
+     * link, its own time constant where that lowers the leave-one-pose-out error by more than
+     * {@link #LINK_LAG_MARGIN} (two rounds); null when none is testable.
+     */
+    static LagSearch bestLags(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
+                                List<PoseConditions> conds) {
+        int n = growth.size();
+        double[] taus = null;
+        double best = Double.POSITIVE_INFINITY, none = Double.NaN;
+        for (double tau : ThermalLag.TAUS) {
+            double[] ts = new double[n];
+            Arrays.fill(ts, tau);
+            double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
+            if (tau == 0) none = p;
+            if (p < best) { best = p; taus = ts; }
+        }
+        if (taus == null) return null;
+        double common = taus[0], pressCommon = best;
+        for (int round = 0; round < 2; round++) {
+            boolean moved = false;
+            for (int col = 0; col < n; col++)
+                for (double tau : ThermalLag.TAUS) {
+                    if (tau == taus[col]) continue;
+                    double[] ts = taus.clone();
+                    ts[col] = tau;
+                    double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
+                    if (p < best * (1 - LINK_LAG_MARGIN)) { best = p; taus = ts; moved = true; }
+                }
+            if (!moved) break;
+        }
+        return new LagSearch(Effect.thermalLinks(model, t0C, lag, taus), best, none, common, pressCommon);
+    }
+
+    /** "600 s: base to joint 1, link 2 (joint 2 to joint 3); 300 s: link 3 (joint 3 to joint 4)". */
+    private static String linkLags(Effect growth) {
+        Map<Double, List<String>> by = new java.util.TreeMap<>(java.util.Comparator.reverseOrder());
+        double[] taus = growth.lagTaus();
+        for (int col = 0; col < taus.length; col++) by.computeIfAbsent(taus[col], x -> new ArrayList<>()).add(growth.linkWords(col));
+        List<String> out = new ArrayList<>();
+        by.forEach((tau, ls) -> out.add(String.format(Locale.ROOT, "%.0f s for %s", tau, String.join(", ", ls))));
+        return String.join("; ", out);
+    }
+
+    /**
+     * What the data tell of the lag of named thermal growth {@code k} (docs/diagnosis.md): the lag
+     * found, its leave-one-pose-out error against none, and whether the links' own lags could be
+     * told apart; null when nothing can be said.
+     */
+    static String lagWords(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
+                           List<PoseConditions> conds) {
+        LagSearch s = bestLags(at, k, growth, model, t0C, lag, conds);
+        if (s == null) return null;
+        if (!growth.lags())
+            return String.format(Locale.ROOT, "thermal growth: no lag of the links behind the temperature reading is seen (the "
+                    + "best single lag, %.0f s, predicts left-out poses no better: leave-one-pose-out error %.1f against %.1f at the "
+                    + "reading's temperature); the links are taken at the reading", s.commonTau(), s.pressCommon(), s.pressNone());
+        String which = growth.lags() && Arrays.stream(growth.lagTaus()).distinct().count() > 1
+                ? String.format(Locale.ROOT, "each link its own lag: %s (one lag of %.0f s for every link predicts worse: %.1f)",
+                        linkLags(growth), s.commonTau(), s.pressCommon())
+                : String.format(Locale.ROOT, "one lag of %.0f s for every link: the data do not tell the links' own lags apart "
+                        + "(no link's own lag lowers the leave-one-pose-out error by %.0f %%)", growth.lagTaus()[0], 100 * LINK_LAG_MARGIN);
+        return String.format(Locale.ROOT, "thermal growth: the links follow the temperature reading with a lag (a first-order "
+                + "lag, time constant τ = m·c/(h·A) of each link), %s; leave-one-pose-out error %.1f against %.1f with the links at "
+                + "the reading's temperature. Time constants tried: %s s; record temperatures on the arm's links to measure them",
+                which, s.press(), s.pressNone(), String.join(", ", Arrays.stream(ThermalLag.TAUS).skip(1)
+                        .mapToObj(x -> String.format(Locale.ROOT, "%.0f", x)).toList()));
     }
 
     /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
@@ -2773,9 +2932,9 @@ public final class Diagnoser {
             case THERMAL_LINK -> {
                 boolean ok = true;
                 for (int i = 0; i < v.length; i++)
-                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, MAX_ALPHA)) ok = false;
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, MAX_LINK_ALPHA)) ok = false;
                 c.plausible = ok;
-                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_ALPHA);
+                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_LINK_ALPHA);
             }
             case DRIFT -> {
                 double n = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), sn = Math.max(sd[0], Math.max(sd[1], sd[2]));

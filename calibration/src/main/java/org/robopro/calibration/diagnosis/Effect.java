@@ -135,6 +135,8 @@ public final class Effect {
     private Along along;                     // point-smooth, zero-drift: the variable
     private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
     private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
+    private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
+    private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -359,6 +361,33 @@ public final class Effect {
         return new Effect(Kind.THERMAL_LINK, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, model,
                 ls.stream().mapToInt(Integer::intValue).toArray());
     }
+    /**
+     * {@link #thermalLinks(KinematicModel, double)} with each link's temperature lagging the
+     * reading: column i grows with {@link ThermalLag#at} at {@code taus[i]} (0: the reading itself).
+     * Where the lag cannot be computed (no history, a time outside the campaign) the link is taken
+     * at the reading's temperature.
+     */
+    public static Effect thermalLinks(KinematicModel model, double t0C, ThermalLag lag, double[] taus) {
+        Effect e = thermalLinks(model, t0C);
+        if (taus.length != e.links.length) throw new IllegalArgumentException("lags " + taus.length + " for " + e.links.length + " links");
+        for (double x : taus) if (!(x >= 0)) throw new IllegalArgumentException("lag time constant " + x);
+        e.lag = lag;
+        e.lagTaus = taus.clone();
+        return e;
+    }
+
+    /** Whether some link of a thermal growth lags the reading. */
+    public boolean lags() { return lagTaus != null && Arrays.stream(lagTaus).anyMatch(x -> x > 0); }
+
+    /** Each link's lag time constant of a thermal growth, s (0: none); null for other kinds. */
+    public double[] lagTaus() {
+        if (kind != Kind.THERMAL_LINK) return null;
+        return lagTaus == null ? new double[links.length] : lagTaus.clone();
+    }
+
+    /** The thermal growth's temperature history (null without a lag). */
+    ThermalLag lag() { return lag; }
+
     /** Δp = (T − t0C) d, base coordinates (the instrument or the base moves with temperature). */
     public static Effect driftWithTemperature(double t0C) {
         return new Effect(Kind.DRIFT, -1, -1, null, false, t0C, Double.NaN, null, Double.NaN, Double.NaN, null, null);
@@ -435,6 +464,20 @@ public final class Effect {
         return out;
     }
 
+    /** " (lag 600 s)", " (lags 2400, 600, 600, 300 s)" by link, or "" without a lag. */
+    private String lagWords() {
+        if (!lags()) return "";
+        if (Arrays.stream(lagTaus).distinct().count() == 1) return String.format(Locale.ROOT, " (lag %.0f s)", lagTaus[0]);
+        return " (lags " + String.join(", ", Arrays.stream(lagTaus).mapToObj(x -> String.format(Locale.ROOT, "%.0f", x)).toList()) + " s)";
+    }
+
+    /** The temperature excess of thermal-link column {@code col} under c (0 when unknown). */
+    private double linkX(PoseConditions c, int col) {
+        if (lagTaus == null || lagTaus[col] == 0 || lag == null) return conditionX(c);
+        double x = lag.at(lagTaus[col], c.timeS(), c.tempC()) - t0C;
+        return Double.isFinite(x) ? x : 0;
+    }
+
     private String linkName(int i) { return i == model.dof() + 1 ? "tool" : "link" + i; }
 
     /** The link of a thermal-link parameter in words. */
@@ -461,7 +504,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> kind.json + (usesTimeProxy() ? String.format(Locale.ROOT, " (time proxy, tau %.0f s)", tauS) : "");
             case DRIFT -> kind.json + (usesTimeProxy() ? " (with time)" : " (with temperature)");
-            case THERMAL_LINK -> kind.json;
+            case THERMAL_LINK -> kind.json + lagWords();
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
@@ -612,6 +655,7 @@ public final class Effect {
                     Vec3 from = f[i].position();
                     Vec3 to = i + 1 < f.length ? f[i + 1].position() : new Vec3(pointBase[0], pointBase[1], pointBase[2]);
                     Vec3 s = to.minus(from);
+                    x = linkX(c, col);
                     g3[col] = x * s.x();
                     g3[k + col] = x * s.y();
                     g3[2 * k + col] = x * s.z();
@@ -744,7 +788,7 @@ public final class Effect {
                     }
                 if (kind == Kind.THERMAL_LINK && dpDpoint != null) {
                     // the last vector ends at the point: ∂/∂p of x α_tool (p − o_flange) = x α_tool I
-                    double x = conditionX(c) * values[k - 1];
+                    double x = linkX(c, k - 1) * values[k - 1];
                     for (int a = 0; a < 3; a++) dpDpoint[4 * a] += x;
                 }
             }
@@ -758,7 +802,10 @@ public final class Effect {
         for (int i = 0; i < names.size(); i++) p.put(names.get(i), values[i]);
         switch (kind) {
             case THERMAL, DRIFT -> { if (usesTimeProxy()) p.put("tau_s", tauS); else p.put("t0_c", t0C); }
-            case THERMAL_LINK -> p.put("t0_c", t0C);
+            case THERMAL_LINK -> {
+                p.put("t0_c", t0C);
+                if (lags()) for (int col = 0; col < links.length; col++) p.put("lag_s_" + linkName(links[col]), lagTaus[col]);
+            }
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
@@ -827,7 +874,18 @@ public final class Effect {
                 yield zeroDrift(js.get(0) - 1, along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             }
             case THERMAL -> ps.containsKey("tau_s") ? thermalFromTime(ps.get("tau_s")) : thermal(require(d, "t0_c", file));
-            case THERMAL_LINK -> thermalLinks(model, require(d, "t0_c", file));
+            case THERMAL_LINK -> {
+                // the lags are kept; without the campaign's history each link is taken at the reading (in equilibrium)
+                Effect plain = thermalLinks(model, require(d, "t0_c", file));
+                if (ps.keySet().stream().noneMatch(key -> key.startsWith("lag_s_"))) yield plain;
+                double[] taus = new double[plain.links.length];
+                for (int col = 0; col < taus.length; col++) {
+                    taus[col] = require(d, "lag_s_" + plain.linkName(plain.links[col]), file);
+                    if (!(taus[col] >= 0)) throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si.lag_s_"
+                            + plain.linkName(plain.links[col]), "must be >= 0, got " + taus[col]);
+                }
+                yield thermalLinks(model, plain.t0C, null, taus);
+            }
             case DRIFT -> ps.containsKey("tau_s") ? driftWithTime() : driftWithTemperature(require(d, "t0_c", file));
         };
         List<String> names = e.parameterNames();
