@@ -387,6 +387,19 @@ public final class Effect {
     }
 
     /**
+     * Drive {@code joint}'s reading is off by v while the joint is between {@code fromRad} and
+     * {@code toRad}: Δq = v for fromRad &lt; q_j ≤ toRad, 0 outside (a code track or a scale
+     * misread over one window of the turn: a step up and a step back down).
+     */
+    public static Effect angleWindow(int joint, double fromRad, double toRad) {
+        if (!(toRad > fromRad)) throw new IllegalArgumentException("window " + fromRad + ".." + toRad);
+        return new Effect(Kind.ANGLE_STEP, joint, -1, null, false, Double.NaN, Double.NaN, null, fromRad, toRad, null, null, 1);
+    }
+
+    /** Whether this reading step is a window (a step up and back down), not one step. */
+    public boolean isWindow() { return kind == Kind.ANGLE_STEP && Double.isFinite(hi); }
+
+    /**
      * The measured point moved on the flange at time {@code tauS} (a target knocked in its nest, a
      * holder that slipped): its offset in the flange frame changed by d there. Δp = −R_flange(q)·d
      * before the move, 0 after it and at an unknown time (the state the campaign ended in, which
@@ -581,7 +594,9 @@ public final class Effect {
             case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
-            case ANGLE_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo));
+            case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
+                    ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
+                    : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             default -> kind.json + " j" + (joint + 1);
         };
@@ -669,7 +684,7 @@ public final class Effect {
             }
             // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
-            case ANGLE_STEP -> g[0] = q[joint] > lo ? 1 : 0;
+            case ANGLE_STEP -> g[0] = q[joint] > lo && !(q[joint] > hi) ? 1 : 0;
             case ZERO_DRIFT -> {
                 double x = along == Along.TIME ? c.timeS() : c.tempC();
                 if (!Double.isFinite(x) && along == Along.TIME) x = hi; // unknown time: the state the campaign ended in
@@ -872,7 +887,7 @@ public final class Effect {
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
-            case ANGLE_STEP -> p.put("q_step", lo);
+            case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
             case BACKLASH -> {
                 if (buildsUp()) p.put("build_up_rad", buildUp);
                 if (heldByGravity()) {
@@ -953,7 +968,8 @@ public final class Effect {
             }
             case POINT_SMOOTH -> pointSmooth(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
-            case ANGLE_STEP -> angleStep(js.get(0) - 1, require(d, "q_step", file));
+            case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
+                    require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
             case ZERO_DRIFT -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)

@@ -138,7 +138,7 @@ final class Plots {
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
-            case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() ? v[0] : 0;
+            case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;
             case ZERO_DRIFT -> {
                 double[] g = new double[e.basisCount()];

@@ -62,7 +62,12 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
-            case ANGLE_STEP -> String.format(Locale.ROOT, "Joint %d's reading jumps by %.4f deg where the joint passes %.1f deg, "
+            case ANGLE_STEP -> e.isWindow() ? String.format(Locale.ROOT, "Joint %d's reading is off by %.4f deg while the joint is "
+                    + "between %.1f and %.1f deg, and none of the known effects explains it (an encoder's code track or scale misread "
+                    + "over one window of the turn); it is modelled as such so compensation can use it, but its cause is unknown: "
+                    + "move the joint slowly across that window in both directions and compare with an independent measure.",
+                    e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
+                    : String.format(Locale.ROOT, "Joint %d's reading jumps by %.4f deg where the joint passes %.1f deg, "
                     + "and none of the known effects explains it (an absolute encoder's code track or a bit misread over part of "
                     + "the turn, a damaged scale); it is modelled as such so compensation can use it, but its cause is unknown: "
                     + "move the joint slowly across that angle in both directions and compare with an independent measure.",
