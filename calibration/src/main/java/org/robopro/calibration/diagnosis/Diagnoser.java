@@ -547,9 +547,13 @@ public final class Diagnoser {
         timer.mark("geometric");
         Tester geoTester = w.tester(fit);
         List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
+        List<StageScan.Stage> stages = StageScan.scan(geoTester, o.alpha());
+        geoProbes.addAll(StageScan.probes(geoTester, stages, Locator.harmonicsFor(rows.size())));
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
+        for (Effect e : StageScan.families(stages))
+            if (!excluded.contains(claimKey(e)) && family.stream().noneMatch(f -> f.label().equals(e.label()))) family.add(e);
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
@@ -583,7 +587,8 @@ public final class Diagnoser {
                                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
                                 for (int h : sel.harmonics()) hs.add(h);
                                 for (int h : e.harmonics()) hs.add(h);
-                                merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray());
+                                merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray(),
+                                        java.util.stream.DoubleStream.concat(Arrays.stream(sel.stages()), Arrays.stream(e.stages())).toArray());
                             }
                     String label = merged.label();
                     if (family.stream().noneMatch(f -> f.label().equals(label)) && (merged.isFallback() || !excluded.contains(claimKey(merged)))) {
@@ -624,7 +629,7 @@ public final class Diagnoser {
             for (int k = 0; k < selected.size(); k++)
                 if (chosen.kind() == Effect.Kind.PERIODIC && selected.get(k).kind() == Effect.Kind.PERIODIC
                         && selected.get(k).joint() == chosen.joint()
-                        && Arrays.stream(selected.get(k).harmonics()).allMatch(h -> Arrays.stream(chosen.harmonics()).anyMatch(x -> x == h)))
+                        && Arrays.stream(selected.get(k).orders()).allMatch(h -> Arrays.stream(chosen.orders()).anyMatch(x -> x == h)))
                     older = k;
             if (older >= 0) {
                 double thr = best.threshold;
@@ -1667,20 +1672,23 @@ public final class Diagnoser {
         int dof = model.dof();
         for (int j = 0; j < dof; j++) {
             java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+            List<Double> stages = new ArrayList<>(); // orders that are not whole (the stage-frequency scan)
             boolean any = false;
             for (Locator.Found f : found) {
                 if (f.probe.joint != j) continue;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
-                if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
+                if (f.probe.var == Locator.Var.ANGLE_PERIODIC && f.probe.order > 0) stages.add(f.probe.order);
+                else if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
-            if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
+            if (!stages.isEmpty() || !hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
-                out.add(Effect.periodic(j, h));
+                double[] st = stages.stream().mapToDouble(Double::doubleValue).toArray();
+                out.add(Effect.periodic(j, h, st));
                 java.util.TreeSet<Integer> withLow = new java.util.TreeSet<>(hs);
                 for (int i = 1; i <= Effect.HARMONICS; i++) withLow.add(i);
-                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray()));
+                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray(), st));
             }
             if (any) {
                 double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
