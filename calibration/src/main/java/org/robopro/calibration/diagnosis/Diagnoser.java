@@ -552,8 +552,6 @@ public final class Diagnoser {
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
-        for (Effect e : StageScan.families(stages))
-            if (!excluded.contains(claimKey(e)) && family.stream().noneMatch(f -> f.label().equals(e.label()))) family.add(e);
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");

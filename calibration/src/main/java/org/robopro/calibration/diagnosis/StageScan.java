@@ -134,10 +134,9 @@ final class StageScan {
             double whole = Math.max(1, Math.rint(f));
             double[] atWhole = fitAt(t, j, q[j], r, whole);
             double s2 = (rss - at[0]) / nu;
-            // the noise for the whole-order test: the continuum (2 ln 2 σ² is white noise's median power), not the
-            // residual's variance, which still holds the stages not yet subtracted
+            // the spectrum's continuum (2 ln 2 σ² is white noise's median power)
             double continuum = bestMedian / (2 * Math.log(2));
-            double noise2 = continuum > 0 ? Math.min(s2, continuum) : s2;
+            double noise2 = s2;
             // below MIN_STAGE_ORDER a fraction of a cycle over the range is geometry's and the low harmonics' alias: whole
             boolean isWhole = f < MIN_STAGE_ORDER || (at[0] - atWhole[0]) < WHOLE_ORDER_CHI2 * noise2;
             double refined = f;
@@ -164,40 +163,12 @@ final class StageScan {
         List<Locator.Probe> out = new ArrayList<>();
         for (Stage s : stages) {
             if (System.getenv("ROBOPRO_STAGES_DEBUG") != null) System.err.println("stage " + s);
-            if (s.whole() && s.order() <= hMax) continue;
+            // a stage that is not a whole order is reported among the scan's findings only when the locate scan
+            // can judge it against the place-bound shapes it resembles (not yet: a bump in an angle has lines at
+            // orders 4-16 that are not whole, and such a gear family was named in its place)
+            if (!s.whole() || s.order() <= hMax) continue;
             out.add(Locator.stageProbe(t, s.joint(), Effect.roundOrder(s.order())));
         }
-        return out;
-    }
-
-    /**
-     * The gear-periodic family carrying each joint's stages found (with harmonics 1–3, the single-stage
-     * gear), for joints where a stage above order 3 was found: tested, judged against its aliases and on
-     * held-out error like every family. A stage the locate scan also accepts brings the same family.
-     */
-    static List<Effect> families(List<Stage> stages) {
-        List<Effect> out = new ArrayList<>();
-        java.util.Map<Integer, List<Stage>> byJoint = new java.util.TreeMap<>();
-        for (Stage s : stages) byJoint.computeIfAbsent(s.joint(), k -> new ArrayList<>()).add(s);
-        byJoint.forEach((j, ss) -> {
-            if (ss.stream().noneMatch(s -> s.order() > Effect.HARMONICS)) return;
-            // as placed, and with each stage taken as whole at its refined order instead (a tenth of a cycle per turn
-            // off a whole order is within what the whole-order test lets pass on a short range): the held-out judge picks
-            for (boolean asRefined : new boolean[] {false, true}) {
-                List<Integer> whole = new ArrayList<>(List.of(1, 2, 3));
-                List<Double> other = new ArrayList<>();
-                boolean differs = false;
-                for (Stage s : ss) {
-                    boolean keepWhole = s.whole() && !(asRefined && s.order() >= MIN_STAGE_ORDER
-                            && Math.abs(Effect.roundOrder(s.refined()) - s.order()) >= 0.01);
-                    differs |= s.whole() && !keepWhole;
-                    if (keepWhole) whole.add((int) s.order());
-                    else other.add(Effect.roundOrder(s.whole() ? s.refined() : s.order()));
-                }
-                if (asRefined && !differs) continue;
-                out.add(Effect.periodic(j, whole.stream().mapToInt(Integer::intValue).toArray(), other.stream().mapToDouble(Double::doubleValue).toArray()));
-            }
-        });
         return out;
     }
 

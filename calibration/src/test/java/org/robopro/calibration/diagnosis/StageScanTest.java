@@ -74,29 +74,6 @@ class StageScanTest {
                 d.located().stream().map(Diagnosis.Located::words).toList().toString());
     }
 
-    /**
-     * A spur train on joint 1 of the PUMA whose last intermediate shaft turns 7.1 times per output turn:
-     * its error repeats 7.1 and 14.2 times per turn of the joint, not a whole number, beside the
-     * output gear's 96 teeth. Whole harmonics cannot hold 7.1 over the joint's range; the stage orders
-     * are placed within a tenth of a cycle per turn and named.
-     */
-    @Test
-    void intermediateShaftAtSevenPointOneTurns_isNamedAtItsOrder() {
-        Stage truth = new Stage(0, new double[] {1, 7.1, 14.2, 96}, new double[] {0.0073, 0.0054, 0.0027, 0.0046},
-                new double[] {2.55, 5.49, 0.61, 4.86});
-        var desc = RobotLibrary.shipped("puma560");
-        WorldCampaigns.Sim c = WorldCampaigns.geometric(desc, 7, false, p -> p.withPoses(300, 100).withSigma(1e-5));
-        Diagnosis d = Diagnoser.diagnose(desc, readBehind(c.train(), truth), readBehind(c.validation(), truth));
-        Effect g = gear(d);
-        assertEquals(0, g.joint(), "joint 1");
-        double[] orders = g.orders();
-        assertTrue(Arrays.stream(orders).anyMatch(x -> Math.abs(x - 7.1) < 0.1), Arrays.toString(orders));
-        assertTrue(Arrays.stream(orders).anyMatch(x -> x == 96), Arrays.toString(orders));
-        assertTrue(Arrays.stream(orders).allMatch(x -> x <= 3 || Math.abs(x - 7.1) < 0.1 || Math.abs(x - 14.2) < 0.2 || x == 96),
-                "no other stage: " + Arrays.toString(orders));
-        assertTrue(d.finalValidateRmsM() < 1.2 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
-    }
-
     /** Geometry and noise only, readings to four decimals: the stage scan finds no stage. */
     @Test
     void geometryAndNoise_noStage() {
