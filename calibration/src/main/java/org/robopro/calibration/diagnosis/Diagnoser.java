@@ -556,10 +556,6 @@ public final class Diagnoser {
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
         timer.mark("locate");
         int hMax = Locator.harmonicsFor(rows.size());
-        if (hMax < Locator.WANTED_HARMONIC)
-            notes.add(String.format(Locale.ROOT, "with %d poses the scan can tell apart harmonics up to %d cycles per turn of a "
-                    + "joint (%d poses per cycle); gear stages up to %d cycles per turn need at least %d poses",
-                    rows.size(), hMax, 3, Locator.WANTED_HARMONIC, Locator.WANTED_HARMONIC * 3));
         Map<String, Diagnosis.NotIdentifiable> notIdent = new LinkedHashMap<>();
         Map<String, Candidate> implausible = new LinkedHashMap<>();
         List<Effect> remaining = new ArrayList<>(family);
@@ -858,11 +854,15 @@ public final class Diagnoser {
         timer.mark("final fit");
         // Locate what is left, and report every structure found (named or not).
         Tester lastTester = plotTester != null ? plotTester : geoTester;
-        List<Locator.Found> foundFinal = selected.isEmpty() ? foundGeo
+        List<Locator.Found> scannedFinal = selected.isEmpty() ? foundGeo
                 : Locator.scan(lastTester, Locator.probes(lastTester, dirSource), o.alpha(), MAX_LOCATED);
+        // Beside a named family, a structure left is a claim the user reads: with validation poses it must hold there too.
+        List<Locator.Found> weak = weakLeads(w, fit, selected, absorbedCols, lastTester, scannedFinal, rows, model, notes);
+        List<Locator.Found> foundFinal = scannedFinal.stream().filter(f -> !weak.contains(f)).toList();
         List<Diagnosis.Located> located = new ArrayList<>();
         for (Locator.Found f : foundGeo) {
-            boolean left = foundFinal.stream().anyMatch(g -> g.probe.variable.equals(f.probe.variable) && g.probe.shape.equals(f.probe.shape));
+            if (weak.stream().anyMatch(g -> sameStructure(f, g))) continue; // said in the notes as a weak lead
+            boolean left = foundFinal.stream().anyMatch(g -> sameStructure(f, g));
             Effect named = left ? null : explainer(f, selected);
             String by = named != null ? named.label() : left ? null : takenBy(f, geoTester, selected);
             located.add(located(f, geoTester, "geometric", by, named == null && by != null, left));
@@ -1194,7 +1194,7 @@ public final class Diagnoser {
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                   List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
         int refinements = 0;
-        Set<String> withdrawn = new HashSet<>();
+        Set<String> withdrawn = new HashSet<>(), backBeside = new HashSet<>();
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -1265,9 +1265,14 @@ public final class Diagnoser {
                     }
                 }
                 int before = selected.size();
+                double thr = steps.get(k).candidate.threshold;
                 fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
                 notes.add(why + (selected.size() == before ? "; " + best.label() + " models the structure instead (held-out error lower)"
                         : "; no fallback lowers the held-out error, so nothing models it"));
+                // Growth or drift withdrawn for the fallback of another structure (a joint's zero jumping, the target moving):
+                // the two can both be there; the family comes back once if it is still needed beside that fallback.
+                if (selected.size() == before && e.target() != Effect.Target.DRIVE && backBeside.add(e.label()))
+                    fit = backBeside(w, fit, selected, absorbedCols, steps, e, best, thr, notes);
                 changed = true;
             }
             if (!changed) break;
@@ -1353,6 +1358,34 @@ public final class Diagnoser {
         if (steps.isEmpty()) return;
         Step last = steps.remove(steps.size() - 1);
         steps.add(new Step(last.candidate, fit.trainRms, w.validateRms(fit)));
+    }
+
+    /**
+     * Family {@code e}, withdrawn for {@code by} (the fallback of another structure), put back beside
+     * it when it is still needed there: its test against the model with {@code by} passes
+     * {@code threshold} and lowers the leave-one-pose-out error, its estimate is plausible once fitted
+     * jointly, and with validation poses it lowers their error. Else the fit as it was.
+     */
+    private static Fit backBeside(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                  Effect e, Effect by, double threshold, List<String> notes) {
+        Candidate c = w.tester(fit).test(e, w.conditions);
+        LOG.debug("claim check: {} beside {}: p {} (threshold {}), press {} -> {}", e.label(), by.label(), c.p, threshold,
+                c.pressBefore, c.pressAfter);
+        if (c.keptColumns == 0 || !(c.p < threshold) || !(c.pressAfter < c.pressBefore) || !c.plausible) return fit;
+        selected.add(e);
+        absorbedCols.put(e, c.absorbedMask);
+        Fit g = w.fit(selected, absorbedCols, fit.full, c);
+        if (!w.plausibleIn(g, selected, selected.size() - 1) || w.hasValidation() && !(w.validateError(g) < w.validateError(fit))) {
+            selected.remove(selected.size() - 1);
+            absorbedCols.remove(e);
+            return fit;
+        }
+        c.threshold = threshold;
+        steps.add(new Step(c, g.trainRms, w.validateRms(g)));
+        notes.add(String.format(Locale.ROOT, "%s is still needed beside %s (F = %.1f, p %s, below %.2g; leave-one-pose-out error "
+                + "%.1f -> %.1f): the data hold both, so both are kept", e.label(), by.label(), c.f, Words.p(c.p), threshold,
+                c.pressBefore, c.pressAfter));
+        return g;
     }
 
     /**
@@ -1450,6 +1483,51 @@ public final class Diagnoser {
         return qs;
     }
 
+    /** Whether two structures found are the same: the same variable and shape. */
+    private static boolean sameStructure(Locator.Found a, Locator.Found b) {
+        return a.probe.variable.equals(b.probe.variable) && a.probe.shape.equals(b.probe.shape);
+    }
+
+    /**
+     * The structures the final scan finds beside a named family that the validation poses do not
+     * confirm: the structure's own fallback (or its family, for a harmonic or a direction), fitted
+     * jointly with the final model, does not lower the validation error (each residual over its
+     * noise). Each is said in {@code notes} as a weak lead with what to measure, not reported as
+     * located. Without validation poses, without a named family (only fallbacks: what is located
+     * then is the finding), or for a structure without a fallback, none.
+     */
+    private static List<Locator.Found> weakLeads(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
+                                                 Tester t, List<Locator.Found> found, List<Measurement> rows, KinematicModel model,
+                                                 List<String> notes) {
+        List<Locator.Found> out = new ArrayList<>();
+        if (!w.hasValidation() || selected.stream().allMatch(Effect::isFallback)) return out;
+        double without = w.validateError(fit);
+        for (Locator.Found f : found) {
+            Effect lead = switch (f.probe.var) {
+                case ANGLE_PERIODIC -> Effect.periodic(f.probe.joint, new int[] {f.probe.harmonic});
+                case DIRECTION -> Effect.backlash(f.probe.joint);
+                default -> locatedFallbacks(List.of(f), rows, model).stream().findFirst().orElse(null);
+            };
+            if (lead == null || selected.stream().anyMatch(e -> e.label().equals(lead.label()))) continue;
+            Candidate c = t.test(lead, w.conditions);
+            if (c.keptColumns == 0) continue;
+            List<Effect> with = new ArrayList<>(selected);
+            with.add(lead);
+            Map<Effect, boolean[]> abs = new java.util.IdentityHashMap<>(absorbedCols);
+            abs.put(lead, c.absorbedMask);
+            double withLead = w.validateError(w.fit(with, abs, fit.full, c));
+            LOG.debug("lead {}: validation error {} with {}, {} without", f.probe.shape, withLead, lead.label(), without);
+            if (withLead < without) continue;
+            out.add(f);
+            notes.add(String.format(Locale.ROOT, "A weak lead, not a finding: what the final model leaves on the training poses "
+                    + "also shows a structure (%s: %.4f mm RMS %s, F = %.1f, p %s), but modelled (as %s) beside the named effects it does not "
+                    + "lower the validation poses' error (%.1f against %.1f, each residual over its noise), so these data do not "
+                    + "confirm it. To settle it, %s", f.probe.shape, f.sizeM * 1e3, t.where(), f.c.f, Words.p(f.c.p), lead.label(),
+                    withLead, without, nextMeasurement(f, rows.size())));
+        }
+        return out;
+    }
+
     /** The selected effect that explains a structure found after the geometric fit, or null. */
     static Effect explainer(Locator.Found f, List<Effect> selected) {
         for (Effect e : selected) {
@@ -1493,6 +1571,7 @@ public final class Diagnoser {
                 + "that effect's seen through the geometric fit, not a structure of its own.";
         else if (by != null) words += "; explained by " + by + ".";
         else if (left) words += "; no named effect explains it.";
+        words += Locator.placement(f);
         return new Diagnosis.Located(f.probe.variable, f.probe.shape, f.sizeM, share(f, t), f.c.f, f.c.df1, f.c.p, f.c.threshold,
                 stage, by, words, Locator.plot(t, f));
     }
@@ -1677,6 +1756,7 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC && f.probe.order > 0) stages.add(f.probe.order);
                 else if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
+                if (f.probe.var == Locator.Var.ANGLE_SMOOTH && f.sparseClaim()) for (int h : f.sparse) hs.add(h);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }

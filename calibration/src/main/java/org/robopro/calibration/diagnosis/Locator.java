@@ -73,11 +73,30 @@ final class Locator {
         Probe probe;
         Diagnoser.Candidate c;
         double sizeM;
+        /**
+         * A harmonic located (ANGLE_PERIODIC): the lowest and highest harmonic numbers the poses allow
+         * for it ({@link #placeHarmonics}); equal when it is placed exactly.
+         */
+        int placeLo, placeHi;
+        /**
+         * A smooth structure of a joint's angle (ANGLE_SMOOTH) that a few resolvable harmonics of the
+         * joint hold as well ({@link #sparseHarmonics}), with each one's allowed range, or null.
+         */
+        int[] sparse, sparseLo, sparseHi;
+        /** The harmonics {@link #sparse} predict left-out poses better than every smooth curve of the angle (else they are as good an explanation, not a better one). */
+        boolean sparseBetter;
+
+        /** The harmonics {@link #sparse} are a family's candidate: better than every smooth curve and each placed to one number. */
+        boolean sparseClaim() {
+            if (sparse == null || !sparseBetter) return false;
+            for (int i = 0; i < sparse.length; i++) if (sparseHi[i] > sparseLo[i]) return false;
+            return true;
+        }
     }
 
     /** The harmonics of each joint a campaign of {@code poses} poses can resolve. */
     static int harmonicsFor(int poses) {
-        return Math.max(1, Math.min(MAX_HARMONIC, Math.max(poses / POSES_PER_HARMONIC, Math.min(WANTED_HARMONIC, poses / 3))));
+        return Math.max(WANTED_HARMONIC, Math.min(MAX_HARMONIC, poses / POSES_PER_HARMONIC));
     }
 
     private Locator() { }
@@ -565,7 +584,276 @@ final class Locator {
             if (c == null || !(c.p < thr)) found.remove(k);
         }
         for (Found f : found) f.sizeM = size(t, f);
+        placeHarmonics(t, probes, found, alpha);
         return found;
+    }
+
+    /** Stage harmonics (above 1-3) at most this many are tried in place of a smooth structure of one joint's angle. */
+    static final int MAX_STAGES = 2;
+    /**
+     * A harmonic h' is as good a place as the best, h, when h's fit is better by less than this
+     * many noise variances (the 99 % point of χ² on 2 degrees of freedom: a sine and a cosine).
+     */
+    static final double PLACE_CHI2 = 9.21;
+
+    /**
+     * The joint's frequency resolution in cycles per turn: over a sampled range R (rad) two
+     * harmonics closer than 2π/R cannot be told apart (a record of length R resolves frequencies
+     * 1/R apart; Bracewell, The Fourier Transform and its Applications, ch. 10, sampling and
+     * resolution).
+     */
+    static double resolution(double lo, double hi) { return hi > lo ? 2 * Math.PI / (hi - lo) : Double.POSITIVE_INFINITY; }
+
+    /**
+     * For each located harmonic: the range of harmonic numbers of its joint the poses allow (every h'
+     * whose fit, given the other structures, is within {@link #PLACE_CHI2} noise variances of the
+     * best h); the best h within the joint's resolution of the one found replaces it. For each smooth
+     * structure of a joint with no harmonic located: whether a few resolvable harmonics hold it
+     * ({@link #sparseHarmonics}).
+     */
+    private static void placeHarmonics(Diagnoser.Tester t, List<Probe> probes, List<Found> found, double alpha) {
+        double thr = alpha / Math.max(1, probes.size());
+        for (Found f : found) {
+            if (f.probe.var != Var.ANGLE_PERIODIC && f.probe.var != Var.ANGLE_SMOOTH) continue;
+            int j = f.probe.joint;
+            List<Probe> per = periodic(probes, j);
+            double[] range = range(t, j);
+            double res = resolution(range[0], range[1]);
+            Basis others = basisOf(t, found, f);
+            if (f.probe.var == Var.ANGLE_PERIODIC) {
+                int[] pl = place(t, per, f.probe.harmonic, res, List.of(), others);
+                f.placeLo = Math.min(pl[1], f.probe.harmonic);
+                f.placeHi = Math.max(pl[2], f.probe.harmonic);
+            } else if (found.stream().noneMatch(g -> g.probe.var == Var.ANGLE_PERIODIC && g.probe.joint == j))
+                sparseHarmonics(t, probes, per, f, res, others, thr);
+        }
+    }
+
+    /** The periodic probes of joint j, by harmonic (index h − 1). */
+    private static List<Probe> periodic(List<Probe> probes, int j) {
+        List<Probe> out = new ArrayList<>();
+        for (Probe p : probes) if (p.var == Var.ANGLE_PERIODIC && p.joint == j) out.add(p);
+        return out;
+    }
+
+    /** Joint j's sampled range (rad) over every end's poses. */
+    private static double[] range(Diagnoser.Tester t, int j) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (List<org.robopro.calibration.measurement.Measurement> er : t.endRows)
+            for (org.robopro.calibration.measurement.Measurement r : er) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+        return new double[] {lo, hi};
+    }
+
+    /** Orthonormal columns (m x n, row-major) spanning some structures' probes. */
+    private static final class Basis {
+        double[] q = new double[0];
+        int n;
+
+        void add(Diagnoser.Candidate c, int m) {
+            if (c == null || c.df1 == 0) return;
+            double[] nq = new double[m * (n + c.df1)];
+            for (int i = 0; i < m; i++) {
+                System.arraycopy(q, i * n, nq, i * (n + c.df1), n);
+                System.arraycopy(c.basis, i * c.df1, nq, i * (n + c.df1) + n, c.df1);
+            }
+            q = nq;
+            n += c.df1;
+        }
+
+        Basis copy() { Basis b = new Basis(); b.q = q; b.n = n; return b; }
+    }
+
+    /** One probe of two probes' columns side by side. */
+    private static Probe join(Probe a, Probe b) {
+        Probe p = new Probe();
+        p.k = a.k + b.k;
+        p.n0 = new double[p.k];
+        System.arraycopy(a.n0, 0, p.n0, 0, a.k);
+        System.arraycopy(b.n0, 0, p.n0, a.k, b.k);
+        int m = a.s.length / a.k;
+        p.s = new double[m * p.k];
+        for (int i = 0; i < m; i++) {
+            System.arraycopy(a.s, i * a.k, p.s, i * p.k, a.k);
+            System.arraycopy(b.s, i * b.k, p.s, i * p.k + a.k, b.k);
+        }
+        return p;
+    }
+
+    /** The span of every found structure but {@code except}, each projected out of those before it. */
+    private static Basis basisOf(Diagnoser.Tester t, List<Found> found, Found except) {
+        Basis b = new Basis();
+        for (Found g : found) if (g != except) b.add(test(t, g.probe, b.q, b.n, 0), t.m);
+        return b;
+    }
+
+    /**
+     * Where the poses place a harmonic found at h of a joint, given the other structures and the
+     * harmonics {@code chosen} (their probes): the best harmonic within the resolution of h, and the
+     * lowest and highest harmonic numbers whose fit is within {@link #PLACE_CHI2} noise variances of
+     * it (searched out to twice the resolution and, past it, as long as one still qualifies).
+     * Returns {best, lo, hi}.
+     */
+    static int[] place(Diagnoser.Tester t, List<Probe> per, int h, double res, List<Probe> chosen, Basis others) {
+        Basis b = others.copy();
+        for (Probe p : chosen) b.add(test(t, p, b.q, b.n, 0), t.m);
+        int hMax = per.size();
+        double[] drss = new double[hMax + 1];
+        double s2 = Double.NaN;
+        Arrays.fill(drss, Double.NaN);
+        java.util.function.IntToDoubleFunction at = k -> {
+            if (k < 1 || k > hMax) return Double.NaN;
+            if (Double.isNaN(drss[k])) {
+                Diagnoser.Candidate c = test(t, per.get(k - 1), b.q, b.n, 0);
+                drss[k] = c == null ? 0 : c.drss;
+            }
+            return drss[k];
+        };
+        int reach = (int) Math.ceil(res);
+        int best = h;
+        for (int k = Math.max(1, h - reach + 1); k <= Math.min(hMax, h + reach - 1); k++)
+            if (at.applyAsDouble(k) > at.applyAsDouble(best)) best = k;
+        Diagnoser.Candidate cb = test(t, per.get(best - 1), b.q, b.n, 0);
+        if (cb == null) return new int[] {h, h, h};
+        s2 = (cb.drss / cb.df1) / Math.max(cb.f, 1e-300);
+        double tol = PLACE_CHI2 * s2, top = at.applyAsDouble(best);
+        int lo = best, hi = best;
+        for (int k = best - 1; k >= 1 && (k >= best - 2 * reach || top - at.applyAsDouble(k + 1) <= tol); k--)
+            if (top - at.applyAsDouble(k) <= tol) lo = k;
+        for (int k = best + 1; k <= hMax && (k <= best + 2 * reach || top - at.applyAsDouble(k - 1) <= tol); k++)
+            if (top - at.applyAsDouble(k) <= tol) hi = k;
+        return new int[] {best, lo, hi};
+    }
+
+    /**
+     * Whether one or two stage harmonics of joint j (above a single-stage gear's 1-3, which are taken
+     * with them) hold a smooth structure located on its angle. The best single harmonic, and the best
+     * pair searched over every pair at least the joint's resolution apart (two harmonics closer than
+     * that are one feature of the record, the signature of a place-bound shape, not of a gear; and two
+     * stages a few cycles apart interfere, so one at a time lands between them): the pair when each
+     * of its harmonics is significant at {@code thr} given the other and lowers the leave-one-pose-out
+     * error. A reducer has one or two stages; a comb of several harmonics is the Fourier series of a
+     * shape that repeats or stays in one place, which the smooth curve holds as well. They hold the
+     * structure when, with them and harmonics 1-3, no smooth function of the joint's angle at any
+     * resolution finds anything significant left; they are as good an explanation as the smooth curve,
+     * or a better one when they predict left-out poses better than every smooth curve of the angle.
+     */
+    private static void sparseHarmonics(Diagnoser.Tester t, List<Probe> probes, List<Probe> per, Found f, double res, Basis others, double thr) {
+        if (per.size() <= Effect.HARMONICS) return;
+        Basis low = others.copy();
+        for (int h = 1; h <= Effect.HARMONICS; h++) low.add(test(t, per.get(h - 1), low.q, low.n, 0), t.m);
+        Diagnoser.Candidate best1 = null;
+        Probe p1 = null;
+        for (Probe p : per) {
+            if (p.harmonic <= Effect.HARMONICS) continue;
+            Diagnoser.Candidate c = test(t, p, low.q, low.n, thr);
+            if (c == null || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
+            if (best1 == null || c.drss > best1.drss) { best1 = c; p1 = p; }
+        }
+        if (best1 == null) return;
+        List<Probe> chosen = new ArrayList<>(List.of(p1));
+        // each harmonic's columns once projected out of the model and harmonics 1-3 (orthonormal): a pair's
+        // reduction of the residual is then that of the two blocks side by side
+        Probe[] own = new Probe[per.size()];
+        for (int a = Effect.HARMONICS; a < per.size(); a++) {
+            Diagnoser.Candidate c = test(t, per.get(a), low.q, low.n, 0);
+            if (c == null) continue;
+            own[a] = new Probe();
+            own[a].k = c.df1;
+            own[a].s = c.basis;
+            own[a].n0 = new double[c.df1];
+            Arrays.fill(own[a].n0, 1);
+        }
+        double bestPair = -1;
+        Probe[] pair = null;
+        for (int a = Effect.HARMONICS; a < per.size(); a++)
+            for (int c2 = a + 1; c2 < per.size(); c2++) {
+                Probe pa = per.get(a), pb = per.get(c2);
+                if (pb.harmonic - pa.harmonic < res || own[a] == null || own[c2] == null) continue;
+                Diagnoser.Candidate c = test(t, join(own[a], own[c2]), null, 0, 0);
+                if (c != null && c.drss > bestPair) { bestPair = c.drss; pair = new Probe[] {pa, pb}; }
+            }
+        if (pair != null) {
+            boolean both = true;
+            for (int i = 0; i < 2 && both; i++) {
+                Basis with = low.copy();
+                with.add(test(t, pair[1 - i], with.q, with.n, 0), t.m);
+                Diagnoser.Candidate c = test(t, pair[i], with.q, with.n, thr);
+                both = c != null && c.p < thr && c.pressAfter < c.pressBefore;
+            }
+            if (both) chosen = new ArrayList<>(List.of(pair));
+        }
+        // where the poses place each, given the other
+        int[] lo = new int[chosen.size()], hi = new int[chosen.size()];
+        for (int i = 0; i < chosen.size(); i++) {
+            List<Probe> rest = new ArrayList<>(chosen);
+            rest.remove(i);
+            int[] pl = place(t, per, chosen.get(i).harmonic, res, rest, low);
+            lo[i] = Math.max(Effect.HARMONICS + 1, pl[1]);
+            hi[i] = pl[2];
+        }
+        Basis all = low.copy();
+        Diagnoser.Candidate lastC = null;
+        for (Probe p : chosen) { lastC = test(t, p, all.q, all.n, 1); all.add(lastC, t.m); }
+        if (lastC == null) return;
+        // nothing a smooth curve of the angle finds is left
+        for (Probe p : probes) {
+            if (p.var != Var.ANGLE_SMOOTH || p.joint != f.probe.joint) continue;
+            Diagnoser.Candidate c = test(t, p, all.q, all.n, thr);
+            if (c != null && c.p < thr && c.pressAfter < c.pressBefore) return;
+        }
+        // they must predict left-out poses better than a smooth curve of the angle at every resolution, by the alias margin
+        double[] rg = range(t, f.probe.joint);
+        int jj = f.probe.joint;
+        double bestSmooth = Double.POSITIVE_INFINITY;
+        for (int nb : Effect.SMOOTH_RESOLUTIONS) {
+            Probe sp = drive(t, jj, nb, (e, i, g) -> Effect.bspline(t.endRows.get(e).get(i).q(jj), rg[0], rg[1], g));
+            Diagnoser.Candidate c = test(t, sp, others.q, others.n, 1);
+            if (c != null) bestSmooth = Math.min(bestSmooth, c.pressAfter);
+        }
+        Diagnoser.Candidate sm = test(t, f.probe, others.q, others.n, 1);
+        if (sm != null) bestSmooth = Math.min(bestSmooth, sm.pressAfter);
+        f.sparseBetter = lastC.pressAfter < (1 - Diagnoser.ALIAS_MARGIN) * bestSmooth;
+        List<Integer> idx = new ArrayList<>();
+        for (int i = 0; i < chosen.size(); i++) idx.add(i);
+        List<Probe> picked = chosen;
+        idx.sort((a, c) -> Integer.compare(picked.get(a).harmonic, picked.get(c).harmonic));
+        f.sparse = new int[chosen.size()];
+        f.sparseLo = new int[chosen.size()];
+        f.sparseHi = new int[chosen.size()];
+        for (int i = 0; i < idx.size(); i++) {
+            f.sparse[i] = chosen.get(idx.get(i)).harmonic;
+            f.sparseLo[i] = Math.min(lo[idx.get(i)], f.sparse[i]);
+            f.sparseHi[i] = Math.max(hi[idx.get(i)], f.sparse[i]);
+        }
+    }
+
+    /**
+     * Words on where the poses place a located harmonic (or the harmonics that hold a smooth
+     * structure), and what to measure when they cannot place it to one number; "" when placed.
+     */
+    static String placement(Found f) {
+        if (f.probe.var == Var.ANGLE_PERIODIC && f.placeHi > f.placeLo)
+            return String.format(Locale.ROOT, " These poses place it only between %d and %d cycles per turn (each fits within the "
+                    + "noise), so its number is not known; measure joint %d over as much of a turn as its limits allow, with at "
+                    + "least %d poses per cycle, to place it.", f.placeLo, f.placeHi, f.probe.joint + 1, POSES_PER_HARMONIC);
+        if (f.probe.var == Var.ANGLE_SMOOTH && f.sparse != null) {
+            List<String> hs = new ArrayList<>();
+            boolean vague = false;
+            for (int i = 0; i < f.sparse.length; i++) {
+                vague |= f.sparseHi[i] > f.sparseLo[i];
+                hs.add(f.sparseHi[i] > f.sparseLo[i] ? f.sparse[i] + " (" + f.sparseLo[i] + "-" + f.sparseHi[i] + ")" : "" + f.sparse[i]);
+            }
+            String which = (hs.size() == 1 ? "Harmonic " : "Harmonics ") + String.join(" and ", hs) + " of joint " + (f.probe.joint + 1)
+                    + ", with 1-3,";
+            if (f.sparseBetter && !vague)
+                return " " + which + " hold it and predict left-out poses better than any smooth curve of the angle: a reducer's stage harmonics.";
+            return String.format(Locale.ROOT, " %s hold it %s: over the %.0f deg sampled these poses cannot tell a reducer's stage "
+                    + "harmonics from a shape bound to one place; measure joint %d over as much of a turn as its limits allow, with at "
+                    + "least %d poses per cycle, to tell.", which, vague ? "as well, but these poses cannot place their numbers (in "
+                    + "brackets: the numbers they allow)" : String.format(Locale.ROOT, "about as well (within %.0f %% on left-out poses)",
+                    100 * Diagnoser.ALIAS_MARGIN), Math.toDegrees(f.probe.hi - f.probe.lo), f.probe.joint + 1, POSES_PER_HARMONIC);
+        }
+        return "";
     }
 
     /** A probe's test against the model plus the already located columns (q, m x nq). */
