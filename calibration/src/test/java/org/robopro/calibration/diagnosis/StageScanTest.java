@@ -99,4 +99,16 @@ class StageScanTest {
         assertEquals("7.1", Effect.orderText(7.1));
         assertEquals("81", Effect.orderText(81));
     }
+
+    /** A gear-periodic effect holding an order that is not whole: its columns, names and label. */
+    @Test
+    void periodicWithAnOrderThatIsNotWhole() {
+        Effect e = Effect.periodic(0, new int[] {1, 2, 3}, new double[] {7.1, 81});
+        assertEquals(List.of("a1", "b1", "a2", "b2", "a3", "b3", "a81", "b81", "a7.1", "b7.1"), e.parameterNames());
+        assertEquals("gear-periodic j1 (h 1,2,3,81,7.1)", e.label());
+        double[] g = new double[e.size()], q = {0.37, 0, 0, 0, 0, 0};
+        e.regressor(q, org.robopro.calibration.PoseConditions.NONE, g);
+        assertEquals(Math.sin(7.1 * 0.37), g[8], 1e-15);
+        assertEquals(Math.cos(81 * 0.37), g[7], 1e-15);
+    }
 }
