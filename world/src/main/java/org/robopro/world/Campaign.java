@@ -159,8 +159,9 @@ public final class Campaign {
      *
      * @param q           the controller's values as it reports them (with read-back jitter in a joint-by-joint campaign)
      * @param dir         the side of the play each drive really rests on (the sign of its last real motion)
-     * @param lastMove    each drive's last motion since it last reversed, signed (rad or m; infinite: none yet, taken as long);
-     *                    with an {@link Approach} the approach move, or the travel and the approach together
+     * @param lastMove    each drive's last motion, signed (rad or m; infinite: none yet, taken as long): the move from the pose
+     *                    before; with an {@link Approach} the approach move, or the travel and the approach together when both
+     *                    went the same way
      * @param point       measured position, instrument frame, m (with noise)
      * @param quaternion  measured orientation (w, x, y, z), or null
      * @param truePoint   the position without noise, m

@@ -133,7 +133,12 @@ class ApproachTest {
         assertEquals(4, one.size());
         List<String> names = one.stream().map(Scenario::name).toList();
         for (Scenario s : Scenario.catalogue()) assertEquals(names.contains(s.name()), s.answerNeedsItsCampaign(), s.name());
-        for (Scenario s : one) assertTrue(s.trial(1, p -> p.withPoses(5, 0)).campaign().plan().approach() != null, s.name());
+        for (Scenario s : one) {
+            Scenario.Trial t = s.trial(1, p -> p.withPoses(5, 0));
+            assertTrue(t.campaign().plan().approach() != null, s.name());
+            assertTrue(t.truthJson().contains("\"approach\""), "the truth record says how the poses were approached: " + s.name());
+        }
+        assertTrue(!Scenario.named("null irb2000").trial(1, p -> p.withPoses(5, 0)).truthJson().contains("\"approach\""));
     }
 
     @Test

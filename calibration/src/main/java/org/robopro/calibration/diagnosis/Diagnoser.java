@@ -407,9 +407,25 @@ public final class Diagnoser {
             }
         }
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
-        // Many poses beyond 5 robust sigmas are a structure the model leaves (reported), not bad measurements.
-        if (under.size() > Math.max(3, 0.05 * train.size())) return d;
+        if (under.size() > Math.max(3, 0.05 * train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
         return run(robot, train, validate, o, under, t0, dirSource, excluded).d;
+    }
+
+    /**
+     * Many poses beyond 5 robust sigmas under the final model are usually a structure the model
+     * leaves (reported as located), not bad measurements. They are gross readings all the same when,
+     * left out, the model fitted to the other poses still puts every one of them beyond the rule and
+     * leaves no structure unexplained: no shape of any variable the scan knows holds them, so they
+     * are reported as outliers however many (up to a fifth of the poses; more is not a campaign to
+     * judge poses in). A structure's poses fail this: left out, their shape is no longer seen, and
+     * kept in, the located fallback explains them.
+     */
+    private static Diagnosis grossOnly(Diagnosis d, List<String> under, RobotDescription robot, MeasurementSet train,
+                                       MeasurementSet validate, Options o, long t0, Directions.Source dirSource, Set<String> excluded) {
+        if (under.size() > 0.2 * train.size() || d.located().stream().anyMatch(l -> "final".equals(l.stage()))) return d;
+        Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
+        boolean clean = without.d.located().stream().noneMatch(l -> "final".equals(l.stage()));
+        return clean && new HashSet<>(without.outliersUnder).equals(new HashSet<>(under)) ? without.d : d;
     }
 
     /** A diagnosis and the poses the calibration's outlier rule flags under its extended model. */
@@ -757,6 +773,7 @@ public final class Diagnoser {
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
+        fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
@@ -1273,6 +1290,168 @@ public final class Diagnoser {
         return fit;
     }
 
+    /** Shares of the poses left free (gravity torque below the holding torque) tried for a backlash held by gravity. */
+    static final double[] HELD_FREE_SHARES = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8};
+    /** Half-widths of the hand-over between free and held tried, a share of the holding torque (0: sharp). */
+    static final double[] HELD_WIDTHS = {0, 0.25, 0.5};
+    /** Factors of a file mass tried when re-estimating the masses of a backlash held by gravity. */
+    static final double[] HELD_MASS_SCALES = {0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4};
+
+    /** The holding torque that leaves {@code share} of the poses (|τ| given) free: halfway between two poses' torques. */
+    static double heldTorqueAt(double[] absTau, double share) {
+        double[] sorted = absTau.clone();
+        Arrays.sort(sorted);
+        int at = (int) Math.floor(share * (sorted.length - 1));
+        return at + 1 < sorted.length ? 0.5 * (sorted[at] + sorted[at + 1]) : sorted[at];
+    }
+
+    /**
+     * Leave-one-pose-out error with a backlash held by gravity of joint {@code j} in the place of
+     * selected effect {@code k}: masses scaled by {@code scales} (null: the file's), holding torque
+     * leaving {@code share} of the poses free, hand-over half-width {@code width}.
+     */
+    private static double heldPress(Tester t, int k, int j, GravityTorques gravity, double[] scales, double share, double width,
+                                    List<Measurement> rows, List<PoseConditions> conds) {
+        GravityTorques g = scales == null ? gravity : gravity.withMassScales(scales);
+        double[] tau = new double[rows.size()];
+        for (int i = 0; i < tau.length; i++) tau[i] = Math.abs(g.driveTorques(rows.get(i).q(), rows.get(i).payloadKg())[j]);
+        double nm = heldTorqueAt(tau, share);
+        if (!(nm > 0)) return Double.POSITIVE_INFINITY;
+        return t.pressReplacing(k, Effect.heldByGravity(j, gravity, nm, width, scales), conds);
+    }
+
+    /**
+     * Backlash held on one flank by gravity ({@link Effect#heldByGravity}): where the gravity torque
+     * on a joint is large its gear sits on the flank the torque pushes it to whatever the last
+     * motion, and only where the torque is small does the direction decide. Fitted as plain
+     * backlash that form leaves a step with the sign of the torque, which a compliance of the same
+     * joint (a deflection proportional to the torque) takes in part, so the pair "compliance +
+     * backlash" is named for what is one lost motion. For each joint with a constant backlash
+     * named (and the robot file's masses known), the held form with the holding torque that
+     * predicts left-out poses best (a grid of torque quantiles) is put in the place of the backlash
+     * and of the same joint's compliance together. It takes their place when its leave-one-pose-out
+     * error is lower by {@link #ALIAS_MARGIN} (and the validation error too, when given); within
+     * the margin of a named compliance + backlash the data cannot tell the two apart: the held
+     * form (one effect, one play) is named, and the notes say so and what to measure.
+     */
+    private static Fit heldByGravity(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                     GravityTorques gravity, List<Measurement> rows, List<String> notes, List<String> recs) {
+        if (gravity == null || gravity.massesUnknown()) return fit;
+        for (int j = 0; j < w.model.dof(); j++) {
+            final int jj = j;
+            // (a lost motion that builds up over the move may stand in for it: the wind-up's shorter lags after short
+            // moves take up part of what the held flank leaves)
+            Effect plain = selected.stream().filter(e -> e.kind() == Effect.Kind.BACKLASH && e.joint() == jj
+                    && !e.heldByGravity()).findFirst().orElse(null);
+            if (plain == null) continue;
+            Effect comp = selected.stream().filter(e -> e.kind() == Effect.Kind.COMPLIANCE && e.joint() == jj).findFirst().orElse(null);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
+            double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
+            double thr = steps.get(selected.indexOf(plain)).candidate.threshold;
+            Fit base = comp == null ? fit : dropAndRefit(w, fit, selected, absorbedCols, steps, selected.indexOf(comp));
+            Tester bt = w.tester(base);
+            int k = selected.indexOf(plain);
+            // the holding torque as a share of the poses left free, the hand-over's width, then the masses that bear on the joint
+            double[] best = {Double.POSITIVE_INFINITY, HELD_FREE_SHARES[0], 0}; // press, share, width
+            double[] scales = null;
+            for (int wi = 0; wi < HELD_WIDTHS.length; wi++) {
+                double[] bw = {Double.POSITIVE_INFINITY, 0, HELD_WIDTHS[wi]};
+                for (double share : HELD_FREE_SHARES) {
+                    double pr = heldPress(bt, k, j, gravity, null, share, HELD_WIDTHS[wi], rows, w.conditions);
+                    if (pr < bw[0]) { bw[0] = pr; bw[1] = share; }
+                }
+                // the sharpest hand-over unless a gradual one predicts left-out poses clearly better
+                if (wi == 0 || bw[0] < best[0] * (1 - ALIAS_MARGIN)) best = bw;
+            }
+            if (Double.isFinite(best[0])) {
+                // Each mass that bears on the joint scaled in turn (the data sheet's masses are rarely better than ±30 %);
+                // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
+                double[] sc = new double[gravity.massCount()];
+                Arrays.fill(sc, 1);
+                double pr0 = best[0], pr = pr0;
+                for (int round = 0; round < 2; round++)
+                    for (int m = 0; m < sc.length; m++) {
+                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                        double keep = sc[m];
+                        double bestF = keep;
+                        for (double f : HELD_MASS_SCALES) {
+                            sc[m] = f;
+                            double p = heldPress(bt, k, j, gravity, sc, best[1], best[2], rows, w.conditions);
+                            if (p < pr) { pr = p; bestF = f; }
+                        }
+                        sc[m] = bestF;
+                    }
+                if (pr < pr0 * (1 - ALIAS_MARGIN)) {
+                    scales = sc;
+                    for (double share : HELD_FREE_SHARES) { // the holding torque again, with the masses re-estimated
+                        double p = heldPress(bt, k, j, gravity, sc, share, best[2], rows, w.conditions);
+                        if (p < pr) { pr = p; best[1] = share; }
+                    }
+                    best[0] = pr;
+                }
+            }
+            double bestPress = best[0], bestWidth = best[2];
+            GravityTorques gs = scales == null ? gravity : gravity.withMassScales(scales);
+            double[] tau = new double[rows.size()];
+            for (int i = 0; i < tau.length; i++) tau[i] = Math.abs(gs.driveTorques(rows.get(i).q(), rows.get(i).payloadKg())[j]);
+            double bestNm = heldTorqueAt(tau, best[1]);
+            LOG.debug("held by gravity j{}: above {} N·m ± {}, masses {}: PRESS {} against {}", j + 1, bestNm, bestWidth,
+                    scales == null ? "file" : Arrays.toString(scales), bestPress, own);
+            if (!Double.isFinite(bestNm) || !(bestNm > 0) || !(bestPress < own * (1 + ALIAS_MARGIN)) || comp == null && !(bestPress < own * (1 - ALIAS_MARGIN))) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            Effect held = Effect.heldByGravity(j, gravity, bestNm, bestWidth, scales);
+            Fit f = replaceEffect(w, base, selected, absorbedCols, steps, k, held, false);
+            double pressHeld = w.tester(f).pressFull();
+            boolean valWorse = w.hasValidation() && !(w.validateError(f) < ownVal * (1 + ALIAS_MARGIN));
+            if (!selected.contains(held) || valWorse || !(pressHeld < own * (1 + ALIAS_MARGIN))) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            steps.get(selected.indexOf(held)).candidate.threshold = thr;
+            double free = 0;
+            for (double t : tau) if (t < bestNm) free++;
+            String was = comp == null ? plain.label() : comp.label() + " and " + plain.label();
+            if (pressHeld < own * (1 - ALIAS_MARGIN))
+                notes.add(String.format(Locale.ROOT, "%s %s replaced by %s: joint %d's lost motion shows only where the gravity "
+                        + "torque on it is below %.1f N·m (%.0f %% of the poses); elsewhere gravity holds the gear on one flank. "
+                        + "It predicts left-out poses better (leave-one-pose-out error %.1f against %.1f)", was,
+                        comp == null ? "was" : "were", held.label(), j + 1, bestNm, 100 * free / tau.length, pressHeld, own));
+            else {
+                notes.add(String.format(Locale.ROOT, "%s cannot be told from %s on these poses (leave-one-pose-out error %.1f "
+                        + "against %.1f): a gear held on one flank by gravity leaves a step with the sign of the torque, which a "
+                        + "deflection proportional to the torque mimics. One lost motion is named, not a compliance beside it",
+                        held.label(), was, pressHeld, own));
+                recs.add(String.format(Locale.ROOT, "To tell joint %d's backlash held by gravity from a compliance beside it, "
+                        + "measure some poses where the gravity torque on joint %d is large with two or three payloads (record "
+                        + "payload_kg): a compliance moves with the load, a gear held on one flank does not.", j + 1, j + 1));
+            }
+            fit = f;
+            // What the stepwise search added on the same drive to take up the misfit of the wrong form (harmonics of its
+            // angle, a scale error) leaves when it no longer lowers the leave-one-pose-out error or is no longer significant.
+            for (boolean again = true; again; ) {
+                again = false;
+                Tester ft = w.tester(fit);
+                double full = ft.pressFull();
+                for (int i = 0; i < selected.size() && !again; i++) {
+                    Effect o = selected.get(i);
+                    if (o == held || o.isFallback() || o.joint() != j || o.target() != Effect.Target.DRIVE) continue;
+                    double without = ft.pressReplacing(i, null, w.conditions);
+                    double[] pv = new double[1];
+                    boolean weak = w.weakest(fit, selected, thr, x -> x == o, pv) >= 0;
+                    if (!weak && without > full * (1 + ALIAS_MARGIN)) continue;
+                    notes.add(String.format(Locale.ROOT, "%s is not claimed: beside %s it no longer lowers the leave-one-pose-out "
+                            + "error clearly (%.1f without it against %.1f) or is no longer significant", o.label(), held.label(), without, full));
+                    fit = dropAndRefit(w, fit, selected, absorbedCols, steps, i);
+                    restampLast(w, fit, steps);
+                    again = true;
+                }
+            }
+        }
+        return fit;
+    }
+
     /**
      * Several families on one joint's angle (harmonic sets, a scale error) can together mimic a
      * shape located on that angle that none of them holds alone (a step of the reading: a Fourier
@@ -1350,7 +1529,7 @@ public final class Diagnoser {
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                   List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
         int refinements = 0;
-        Set<String> withdrawn = new HashSet<>(), backBeside = new HashSet<>();
+        Set<String> withdrawn = new HashSet<>();
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -1361,6 +1540,7 @@ public final class Diagnoser {
                 Map<String, Effect> rivals = new LinkedHashMap<>();
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
+                for (Effect f : readingSteps(e, fit, k, rows, w.conditions)) rivals.putIfAbsent(f.label(), f);
                 for (Effect s : selected) rivals.remove(s.label());
                 if (e.kind() == Effect.Kind.DRIFT)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
@@ -1381,7 +1561,8 @@ public final class Diagnoser {
                     why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
                     best = null;
-                } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress))
+                } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress)
+                        || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
@@ -1423,14 +1604,9 @@ public final class Diagnoser {
                     }
                 }
                 int before = selected.size();
-                double thr = steps.get(k).candidate.threshold;
                 fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
                 notes.add(why + (selected.size() == before ? "; " + best.label() + " models the structure instead (held-out error lower)"
                         : "; no fallback lowers the held-out error, so nothing models it"));
-                // Growth or drift withdrawn for the fallback of another structure (a joint's zero jumping, the target moving):
-                // the two can both be there; the family comes back once if it is still needed beside that fallback.
-                if (selected.size() == before && e.target() != Effect.Target.DRIVE && backBeside.add(e.label()))
-                    fit = backBeside(w, fit, selected, absorbedCols, steps, e, best, thr, notes);
                 changed = true;
             }
             if (!changed) break;
@@ -1519,34 +1695,6 @@ public final class Diagnoser {
     }
 
     /**
-     * Family {@code e}, withdrawn for {@code by} (the fallback of another structure), put back beside
-     * it when it is still needed there: its test against the model with {@code by} passes
-     * {@code threshold} and lowers the leave-one-pose-out error, its estimate is plausible once fitted
-     * jointly, and with validation poses it lowers their error. Else the fit as it was.
-     */
-    private static Fit backBeside(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                  Effect e, Effect by, double threshold, List<String> notes) {
-        Candidate c = w.tester(fit).test(e, w.conditions);
-        LOG.debug("claim check: {} beside {}: p {} (threshold {}), press {} -> {}", e.label(), by.label(), c.p, threshold,
-                c.pressBefore, c.pressAfter);
-        if (c.keptColumns == 0 || !(c.p < threshold) || !(c.pressAfter < c.pressBefore) || !c.plausible) return fit;
-        selected.add(e);
-        absorbedCols.put(e, c.absorbedMask);
-        Fit g = w.fit(selected, absorbedCols, fit.full, c);
-        if (!w.plausibleIn(g, selected, selected.size() - 1) || w.hasValidation() && !(w.validateError(g) < w.validateError(fit))) {
-            selected.remove(selected.size() - 1);
-            absorbedCols.remove(e);
-            return fit;
-        }
-        c.threshold = threshold;
-        steps.add(new Step(c, g.trainRms, w.validateRms(g)));
-        notes.add(String.format(Locale.ROOT, "%s is still needed beside %s (F = %.1f, p %s, below %.2g; leave-one-pose-out error "
-                + "%.1f -> %.1f): the data hold both, so both are kept", e.label(), by.label(), c.f, Words.p(c.p), threshold,
-                c.pressBefore, c.pressAfter));
-        return g;
-    }
-
-    /**
      * Whether the rival that predicts left-out poses as well is one of the family's own fallbacks
      * (a smooth curve of the same joint angle, which holds the family's simpler shape) and within
      * {@link #ALIAS_MARGIN} of it: then the two cannot be told apart by the held-out error, and the
@@ -1557,6 +1705,60 @@ public final class Diagnoser {
         return own.stream().anyMatch(f -> f.label().equals(rival.label())) && pressOwn <= pressRival * (1 + ALIAS_MARGIN);
     }
 
+    /**
+     * The step and the window of a joint's reading nearest to what a named transmission error on that
+     * joint fitted: least squares of the family's fitted error at the poses by a constant plus v times
+     * the indicator of q_j above one place (a step) or between two places (a window), places midway
+     * between neighbouring poses, at least two poses on each side. A reading that is off over one
+     * window of the turn (an encoder's code track) is a Fourier series of many harmonics, which the
+     * harmonic scan finds one by one; these shapes are then the rivals the claim check puts in the
+     * family's place, and the held-out error decides. Empty for other families.
+     */
+    static List<Effect> readingSteps(Effect e, Fit fit, int k, List<Measurement> rows, List<PoseConditions> conds) {
+        if (e.kind() != Effect.Kind.PERIODIC || rows.size() < 8) return List.of();
+        int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0), n = rows.size(), j = e.joint();
+        double[] v = Arrays.copyOfRange(fit.effectValues(), off, off + e.size());
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) order[i] = i;
+        Arrays.sort(order, (a, b) -> Double.compare(rows.get(a).q(j), rows.get(b).q(j)));
+        double[] q = new double[n], pre = new double[n + 1];
+        for (int i = 0; i < n; i++) {
+            q[i] = rows.get(order[i]).q(j);
+            pre[i + 1] = pre[i] + e.valueAt(v, rows.get(order[i]), conds.get(order[i]));
+        }
+        // sum of squares a window [a, b) of the sorted poses explains about the mean: n_in n_out / n (mean_in − mean_out)²
+        double bestStep = 0, bestWin = 0;
+        int sa = -1, wa = -1, wb = -1;
+        for (int a = 2; a <= n - 2; a++) {
+            if (!(q[a] > q[a - 1])) continue;
+            for (int b = a + 2; b <= n; b++) {
+                if (b < n && (!(q[b] > q[b - 1]) || b > n - 2)) continue;
+                int in = b - a, out = n - in;
+                double mIn = (pre[b] - pre[a]) / in, mOut = (pre[n] - (pre[b] - pre[a])) / out;
+                double ss = (double) in * out / n * (mIn - mOut) * (mIn - mOut);
+                if (b == n) { if (ss > bestStep) { bestStep = ss; sa = a; } }
+                else if (ss > bestWin) { bestWin = ss; wa = a; wb = b; }
+            }
+        }
+        List<Effect> out = new ArrayList<>();
+        if (sa > 0) out.add(Effect.angleStep(j, 0.5 * (q[sa - 1] + q[sa])));
+        if (wa > 0) out.add(Effect.angleWindow(j, 0.5 * (q[wa - 1] + q[wa]), 0.5 * (q[wb - 1] + q[wb])));
+        return out;
+    }
+
+    /**
+     * Whether a transmission error shares its drive with another named family (a lost motion, a
+     * compliance, a scale error of the same joint). What such a family's form leaves of the true
+     * physics (a lag that winds up in a way the model does not hold, a stiffness that is not
+     * constant) is a smooth function of the same angle, and a harmonic or two fitted to it predict
+     * left-out poses as well as the joint's smooth fallback: with the held-out error unable to tell
+     * them apart, the gear is then not claimed, and the fallback models the shape.
+     */
+    static boolean besideAnother(Effect e, List<Effect> selected) {
+        return e.kind() == Effect.Kind.PERIODIC
+                && selected.stream().anyMatch(x -> x != e && !x.isFallback() && x.joint() == e.joint() && x.kind() != Effect.Kind.PERIODIC);
+    }
+
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
     private static List<Effect> refinements(Effect e, Work w, List<Measurement> rows) {
         List<Effect> out = new ArrayList<>();
@@ -1564,7 +1766,8 @@ public final class Diagnoser {
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
                     out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
-        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.ANGLE_STEP) {
+        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP
+                || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
             Locator.Var var = angle ? Locator.Var.ANGLE_STEP
                     : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP : Locator.Var.TIME_STEP;
@@ -1928,6 +2131,13 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
+            // two steps of one joint's reading: the reading may be off over the window between them (a step up and back)
+            final int jw = j;
+            List<Double> places = found.stream().filter(f -> f.probe.joint == jw && f.probe.var == Locator.Var.ANGLE_STEP)
+                    .map(f -> f.probe.lo).sorted().toList();
+            for (int a = 0; a < places.size(); a++)
+                for (int b = a + 1; b < places.size(); b++)
+                    if (places.get(b) > places.get(a)) out.add(Effect.angleWindow(j, places.get(a), places.get(b)));
             if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
                 out.add(Effect.periodic(j, h));

@@ -99,6 +99,12 @@ public final class DiagnosisReport {
         }
         if (e.kind() == Effect.Kind.THERMAL) p.put(e.usesTimeProxy() ? "tau_s" : "t0_c", e.usesTimeProxy() ? e.tauS() : e.t0C());
         if (e.buildsUp()) { p.put("build_up_rad", e.buildUpRad()); u.put("build_up_rad", "rad"); }
+        if (e.heldByGravity()) {
+            p.put("held_above_nm", e.heldAboveNm());
+            u.put("held_above_nm", "N·m");
+            p.put("held_width", e.heldWidth());
+            u.put("held_width", "1");
+        }
         m.put("parameters", p);
         m.put("parameter_sigmas", s);
         m.put("units", u);
@@ -188,7 +194,8 @@ public final class DiagnosisReport {
                 h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " "
                         + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
-                                new Svg.Series("fitted " + (f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728", true)), false));
+                                new Svg.Series("fitted " + (f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().heldByGravity()
+                                        ? "lost motion held by gravity (centre of the play where the torque is small)" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728", true)), false));
                 if (p.periodogram() != null) {
                     double[] hx = new double[p.periodogram().length];
                     for (int i = 0; i < hx.length; i++) hx[i] = i + 1;

@@ -135,6 +135,9 @@ public final class Effect {
     private Along along;                     // point-smooth, zero-drift: the variable
     private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
     private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
+    private double preloadNm = Double.NaN;   // backlash held on one flank by gravity: the torque above which it is held (N·m); NaN: free
+    private double preloadWidth;             // that backlash: half-width of the hand-over, a share of preloadNm (0: a sharp one)
+    private double[] massScales;             // that backlash: the file's masses re-estimated by a factor each (null: as in the file)
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
 
@@ -203,6 +206,80 @@ public final class Effect {
         e.buildUp = buildUpRad;
         e.moves = moves == null ? Directions.Moves.NONE : moves;
         return e;
+    }
+
+    /**
+     * Backlash held on one flank by gravity except where the gravity torque on the joint is small.
+     * A load torque on a gear train holds the teeth in contact on the flank it pushes them to, so
+     * the play is taken up the same way whatever the direction of the last motion; only where the
+     * load torque is too small to overcome the friction of the mesh does the last motion decide,
+     * and the output lags as for plain backlash (gear backlash under a biasing load, "anti-backlash
+     * by preload": Nordin &amp; Gutman, Automatica 38 (2002) 1633, §2 — a constant external torque
+     * keeps the backlash closed; Shigley's Mechanical Engineering Design, gear backlash and
+     * preloaded drives; the same reason a vertical axis is calibrated without reversal error).
+     * With τ the gravity torque on drive {@code joint} from {@code gravity} (the robot file's
+     * masses, {@link GravityTorques#driveTorques}: the torque gravity exerts, positive turning the
+     * joint forward, as a compliance's Δq = c·τ), q_out = q + (b/2)·sign τ where |τ| ≥
+     * {@code heldAboveNm}, else q − (b/2)·dir. b ≥ 0 is the whole play, as for {@link #backlash}.
+     */
+    public static Effect heldByGravity(int joint, GravityTorques gravity, double heldAboveNm) {
+        return heldByGravity(joint, gravity, heldAboveNm, 0);
+    }
+
+    /**
+     * {@link #heldByGravity(int, GravityTorques, double)} with a gradual hand-over: the share of
+     * the pose held is s = smoothstep of |τ| from (1 − w)·τ0 to (1 + w)·τ0 (w = {@code width}),
+     * q_out = q + s·(b/2)·sign τ − (1 − s)·(b/2)·dir. The friction that the load must overcome to
+     * close the play varies along the mesh, and the file's masses are not the arm's: near τ0
+     * some poses are held and some are not.
+     */
+    public static Effect heldByGravity(int joint, GravityTorques gravity, double heldAboveNm, double width) {
+        return heldByGravity(joint, gravity, heldAboveNm, width, null);
+    }
+
+    /**
+     * {@link #heldByGravity(int, GravityTorques, double, double)} with the file's mass k scaled by
+     * {@code massScales[k]} (null: the file's masses): which flank a pose is held on, and whether
+     * it is held, follows the arm's real weight, not the data sheet's.
+     */
+    public static Effect heldByGravity(int joint, GravityTorques gravity, double heldAboveNm, double width, double[] massScales) {
+        if (gravity == null || gravity.massesUnknown()) throw new IllegalArgumentException("backlash held by gravity needs the robot's masses");
+        if (!(heldAboveNm >= 0) || Double.isInfinite(heldAboveNm)) throw new IllegalArgumentException("holding torque " + heldAboveNm);
+        GravityTorques g = massScales == null ? gravity : gravity.withMassScales(massScales);
+        Effect e = new Effect(Kind.BACKLASH, joint, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+        e.massScales = massScales == null ? null : massScales.clone();
+        if (!(width >= 0 && width < 1)) throw new IllegalArgumentException("hand-over width " + width);
+        e.preloadNm = heldAboveNm;
+        e.preloadWidth = width;
+        return e;
+    }
+
+    /** Whether this is backlash held on one flank by gravity where the torque is large ({@link #heldByGravity}). */
+    public boolean heldByGravity() { return kind == Kind.BACKLASH && Double.isFinite(preloadNm); }
+
+    /** The gravity torque above which a backlash held by gravity stays on one flank, N·m (NaN otherwise). */
+    public double heldAboveNm() { return preloadNm; }
+
+    /** The factors of the file's masses of a backlash held by gravity (null: as in the file). */
+    public double[] heldMassScales() { return massScales == null ? null : massScales.clone(); }
+
+    /** The half-width of a backlash held by gravity's hand-over, a share of {@link #heldAboveNm()} (0: sharp). */
+    public double heldWidth() { return preloadWidth; }
+
+    /** The share of the play held by gravity at a gravity torque τ (N·m): 0 free, 1 held. */
+    double heldShare(double tau) {
+        double a = Math.abs(tau);
+        if (preloadWidth == 0) return a >= preloadNm ? 1 : 0;
+        double t = Math.min(1, Math.max(0, (a - (1 - preloadWidth) * preloadNm) / (2 * preloadWidth * preloadNm)));
+        return t * t * (3 - 2 * t);
+    }
+
+    /** The lost motion's regressor for one pose: held on the flank gravity pushes it to, or lagging the last motion. */
+    private double lostMotion(double[] q, PoseConditions c) {
+        if (!heldByGravity()) return -0.5 * c.direction(joint); // the output lags: q_out = q − (b/2)·dir
+        double tau = gravity.driveTorques(q, c.payloadKg())[joint];
+        double s = heldShare(tau);
+        return s * 0.5 * Math.signum(tau) - (1 - s) * 0.5 * c.direction(joint);
     }
 
     /** Whether this is lost motion that builds up over the move ({@link #windUp}). */
@@ -308,6 +385,19 @@ public final class Effect {
         if (!Double.isFinite(atRad)) throw new IllegalArgumentException("step angle " + atRad);
         return new Effect(Kind.ANGLE_STEP, joint, -1, null, false, Double.NaN, Double.NaN, null, atRad, Double.NaN, null, null, 1);
     }
+
+    /**
+     * Drive {@code joint}'s reading is off by v while the joint is between {@code fromRad} and
+     * {@code toRad}: Δq = v for fromRad &lt; q_j ≤ toRad, 0 outside (a code track or a scale
+     * misread over one window of the turn: a step up and a step back down).
+     */
+    public static Effect angleWindow(int joint, double fromRad, double toRad) {
+        if (!(toRad > fromRad)) throw new IllegalArgumentException("window " + fromRad + ".." + toRad);
+        return new Effect(Kind.ANGLE_STEP, joint, -1, null, false, Double.NaN, Double.NaN, null, fromRad, toRad, null, null, 1);
+    }
+
+    /** Whether this reading step is a window (a step up and back down), not one step. */
+    public boolean isWindow() { return kind == Kind.ANGLE_STEP && Double.isFinite(hi); }
 
     /**
      * The measured point moved on the flange at time {@code tauS} (a target knocked in its nest, a
@@ -498,12 +588,15 @@ public final class Effect {
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
-                    Math.toDegrees(buildUp)) : "");
+                    Math.toDegrees(buildUp)) : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
+                    preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
             case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
-            case ANGLE_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo));
+            case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
+                    ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
+                    : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             default -> kind.json + " j" + (joint + 1);
         };
@@ -511,7 +604,7 @@ public final class Effect {
 
     /** Block / parameter prefix without spaces. */
     public String id() {
-        return label().replace(' ', '.').replace("<-", "from").replace("(", "").replace(")", "").replace(",", "_");
+        return label().replace(' ', '.').replace("<-", "from").replace("(", "").replace(")", "").replace(",", "_").replace("·", "");
     }
 
     /** Whether the conditions this effect needs are present on every row. */
@@ -578,7 +671,7 @@ public final class Effect {
                     g[2 * i + 1] = Math.cos(harmonics[i] * q[joint]);
                 }
             }
-            case BACKLASH -> g[0] = -0.5 * c.direction(joint); // the output lags: q_out = q − (b/2)·dir
+            case BACKLASH -> g[0] = lostMotion(q, c);
             case THERMAL -> g[0] = conditionX(c);
             case SCALE -> g[0] = q[joint];
             case COUPLING -> g[0] = q[source];
@@ -591,7 +684,7 @@ public final class Effect {
             }
             // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
-            case ANGLE_STEP -> g[0] = q[joint] > lo ? 1 : 0;
+            case ANGLE_STEP -> g[0] = q[joint] > lo && !(q[joint] > hi) ? 1 : 0;
             case ZERO_DRIFT -> {
                 double x = along == Along.TIME ? c.timeS() : c.tempC();
                 if (!Double.isFinite(x) && along == Along.TIME) x = hi; // unknown time: the state the campaign ended in
@@ -794,8 +887,16 @@ public final class Effect {
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
-            case ANGLE_STEP -> p.put("q_step", lo);
-            case BACKLASH -> { if (buildsUp()) p.put("build_up_rad", buildUp); }
+            case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
+            case BACKLASH -> {
+                if (buildsUp()) p.put("build_up_rad", buildUp);
+                if (heldByGravity()) {
+                    p.put("held_above_nm", preloadNm);
+                    p.put("held_width", preloadWidth);
+                    if (massScales != null)
+                        for (int k = 0; k < massScales.length; k++) if (massScales[k] != 1) p.put("held_mass_scale_" + gravity.massName(k), massScales[k]);
+                }
+            }
             default -> { }
         }
         return new EffectDescription(kind.json, joints1(), p);
@@ -832,6 +933,23 @@ public final class Effect {
                 yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
             }
             case BACKLASH -> {
+                if (ps.containsKey("held_above_nm")) {
+                    double t = require(d, "held_above_nm", file);
+                    if (gravity == null || gravity.massesUnknown())
+                        throw new InputException(file, 0, 0, "mass_model", "backlash held by gravity needs the robot's mass_model");
+                    if (!(t >= 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_above_nm", "must be >= 0, got " + t);
+                    double wd = ps.containsKey("held_width") ? require(d, "held_width", file) : 0;
+                    if (!(wd >= 0 && wd < 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_width", "must be in [0, 1), got " + wd);
+                    double[] sc = new double[gravity.massCount()];
+                    boolean scaled = false;
+                    for (int k = 0; k < sc.length; k++) {
+                        String key = "held_mass_scale_" + gravity.massName(k);
+                        sc[k] = ps.containsKey(key) ? require(d, key, file) : 1;
+                        if (!(sc[k] > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si." + key, "must be > 0, got " + sc[k]);
+                        scaled |= ps.containsKey(key);
+                    }
+                    yield heldByGravity(js.get(0) - 1, gravity, t, wd, scaled ? sc : null);
+                }
                 if (!ps.containsKey("build_up_rad")) yield backlash(js.get(0) - 1);
                 double x0 = require(d, "build_up_rad", file);
                 if (!(x0 > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.build_up_rad", "must be > 0, got " + x0);
@@ -850,7 +968,8 @@ public final class Effect {
             }
             case POINT_SMOOTH -> pointSmooth(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
-            case ANGLE_STEP -> angleStep(js.get(0) - 1, require(d, "q_step", file));
+            case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
+                    require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
             case ZERO_DRIFT -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)

@@ -164,6 +164,17 @@ public final class GravityTorques {
         return out;
     }
 
+    /**
+     * The same arm with mass k scaled by {@code scale[k]} (centres unchanged; the payload stays as
+     * given per pose): the file's masses re-estimated by a factor each.
+     */
+    public GravityTorques withMassScales(double[] scale) {
+        if (scale.length != mass.length) throw new IllegalArgumentException(mass.length + " scales needed, got " + scale.length);
+        double[] m = mass.clone();
+        for (int k = 0; k < m.length; k++) if (k != payloadSlot) m[k] *= scale[k];
+        return new GravityTorques(model, frameIndex, m, local, gravity, payloadSlot, names);
+    }
+
     /** The number of masses (the file's links, then the payload). */
     public int massCount() { return mass.length; }
 

@@ -56,13 +56,13 @@ final class Plots {
             }
             double y = e.valueAt(v, row, c) - proj / dn[i]; // residual is predicted - measured
             double x = xOf(e, row, c);
-            if (e.kind() == Effect.Kind.BACKLASH && !e.buildsUp()) x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
+            if (e.kind() == Effect.Kind.BACKLASH && !e.buildsUp() && !e.heldByGravity()) x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
             pts.add(new double[] {x, y * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() ? 400 : 2;
+        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() ? 400 : 2;
         double[] cx = new double[nc], cy = new double[nc];
         for (int i = 0; i < nc; i++) {
             cx[i] = lo + (hi - lo) * i / (nc - 1);
@@ -93,6 +93,7 @@ final class Plots {
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case BACKLASH -> e.buildsUp() ? "last move of joint " + (e.joint() + 1) + " before the pose, signed (deg)"
+                    : e.heldByGravity() ? "gravity torque on drive " + (e.joint() + 1) + " (N·m)"
                     : "approach direction dir" + (e.joint() + 1);
             case THERMAL -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case COUPLING -> "joint " + (e.source() + 1) + " angle q" + (e.source() + 1) + " (deg)";
@@ -111,7 +112,8 @@ final class Plots {
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
-                    ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.lastMove(row))) : c.direction(e.joint());
+                    ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.lastMove(row)))
+                    : e.heldByGravity() ? e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()] : c.direction(e.joint());
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
         };
@@ -136,7 +138,7 @@ final class Plots {
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
-            case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() ? v[0] : 0;
+            case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;
             case ZERO_DRIFT -> {
                 double[] g = new double[e.basisCount()];
@@ -147,6 +149,8 @@ final class Plots {
             }
             case BACKLASH -> e.buildsUp() // the lag builds up with the move: −(b/2)·dir·(1 − exp(−|move|/x0))
                     ? -0.5 * v[0] * Math.signum(x) * Effect.windUpShare(Math.toRadians(x), e.buildUpRad())
+                    // held on the flank the torque pushes it to; where the torque is small the direction decides (shown at the centre)
+                    : e.heldByGravity() ? e.heldShare(x) * 0.5 * v[0] * Math.signum(x)
                     : -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING -> v[0] * Math.toRadians(x);

@@ -62,7 +62,12 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
-            case ANGLE_STEP -> String.format(Locale.ROOT, "Joint %d's reading jumps by %.4f deg where the joint passes %.1f deg, "
+            case ANGLE_STEP -> e.isWindow() ? String.format(Locale.ROOT, "Joint %d's reading is off by %.4f deg while the joint is "
+                    + "between %.1f and %.1f deg, and none of the known effects explains it (an encoder's code track or scale misread "
+                    + "over one window of the turn); it is modelled as such so compensation can use it, but its cause is unknown: "
+                    + "move the joint slowly across that window in both directions and compare with an independent measure.",
+                    e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
+                    : String.format(Locale.ROOT, "Joint %d's reading jumps by %.4f deg where the joint passes %.1f deg, "
                     + "and none of the known effects explains it (an absolute encoder's code track or a bit misread over part of "
                     + "the turn, a damaged scale); it is modelled as such so compensation can use it, but its cause is unknown: "
                     + "move the joint slowly across that angle in both directions and compare with an independent measure.",
@@ -91,7 +96,16 @@ final class Words {
                     + "%.4f mm); the instrument or the robot's base moves. Compensation applies it only when the %s is given.",
                     e.usesTimeProxy() ? "with time" : "with temperature", 1e3 * Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]),
                     e.usesTimeProxy() ? "hour" : "K", 1e3 * v[0], 1e3 * v[1], 1e3 * v[2], e.usesTimeProxy() ? "time" : "temperature");
-            case BACKLASH -> e.buildsUp()
+            case BACKLASH -> e.heldByGravity()
+                    ? String.format(Locale.ROOT, "Joint %d has backlash of %.4f ± %.4f deg held on one flank by gravity except "
+                    + "where the gravity torque on it is small: where the torque is above %.1f N·m%s (robot file's masses) the "
+                    + "output sits half the play ahead in the direction gravity pushes it, whatever the last motion; below it "
+                    + "the output lags the motor-side encoder by half the play behind the direction it last moved in%s "
+                    + "(directions %s). The holding torque was chosen by the leave-one-pose-out error.", e.joint() + 1,
+                    Math.toDegrees(v[0]), Math.toDegrees(s[0]), e.heldAboveNm(), e.heldWidth() > 0 ? String.format(Locale.ROOT,
+                    " (handed over gradually from %.1f to %.1f N·m)", (1 - e.heldWidth()) * e.heldAboveNm(),
+                    (1 + e.heldWidth()) * e.heldAboveNm()) : "", at, dirs.words)
+                    : e.buildsUp()
                     ? String.format(Locale.ROOT, "Joint %d has lost motion that builds up over the move (friction wind-up): after a "
                     + "long move its output lags the motor-side encoder by half of %.4f ± %.4f deg behind the direction it last "
                     + "moved in%s; after a shorter move the lag is smaller, reaching 63 %% of that after %.1f deg of travel "
