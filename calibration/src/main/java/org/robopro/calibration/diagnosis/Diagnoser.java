@@ -1368,10 +1368,16 @@ public final class Diagnoser {
                 // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
                 double[] sc = new double[gravity.massCount()];
                 Arrays.fill(sc, 1);
+                boolean[] bears = new boolean[sc.length]; // masses whose weight reaches the joint on some pose
+                double[] byMass = new double[sc.length];
+                for (Measurement r : rows) {
+                    gravity.driveTorquesByMass(r.q(), r.payloadKg(), j, byMass);
+                    for (int m = 0; m < sc.length; m++) bears[m] |= byMass[m] != 0;
+                }
                 double pr0 = best[0], pr = pr0;
                 for (int round = 0; round < 2; round++)
                     for (int m = 0; m < sc.length; m++) {
-                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0 || !bears[m]) continue;
                         double keep = sc[m];
                         double bestF = keep;
                         for (double f : HELD_MASS_SCALES) {
