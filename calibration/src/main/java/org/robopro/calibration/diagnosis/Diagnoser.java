@@ -1371,10 +1371,16 @@ public final class Diagnoser {
                 // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
                 double[] sc = new double[gravity.massCount()];
                 Arrays.fill(sc, 1);
+                boolean[] bears = new boolean[sc.length]; // masses whose weight reaches the joint on some pose
+                double[] byMass = new double[sc.length];
+                for (Measurement r : rows) {
+                    gravity.driveTorquesByMass(r.q(), r.payloadKg(), j, byMass);
+                    for (int m = 0; m < sc.length; m++) bears[m] |= byMass[m] != 0;
+                }
                 double pr0 = best[0], pr = pr0;
                 for (int round = 0; round < 2; round++)
                     for (int m = 0; m < sc.length; m++) {
-                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0 || !bears[m]) continue;
                         double keep = sc[m];
                         double bestF = keep;
                         for (double f : HELD_MASS_SCALES) {
@@ -1568,7 +1574,9 @@ public final class Diagnoser {
                         || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
-                            bestPress, pressOwn);
+                            bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
+                            ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
+                            + "be told apart on these poses: measure with two or three payloads to tell" : "");
                 else {
                     double thr = w.o.alpha() / Math.max(1, own.size());
                     for (Effect f : own) {
@@ -2097,6 +2105,18 @@ public final class Diagnoser {
             case REACH, HEIGHT -> "measure the same poses with the arm stretched and folded and at several heights; check the "
                     + "instrument's scale and levelling, and sag of the arm or the measured point's holder.";
         };
+    }
+
+    /** Whether the payload varies over the rows by 0.1 kg or more. */
+    static boolean payloadVaries(List<Measurement> rows) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) {
+            double kg = r.payloadKg();
+            if (!Double.isFinite(kg)) continue;
+            lo = Math.min(lo, kg);
+            hi = Math.max(hi, kg);
+        }
+        return hi - lo >= 0.1;
     }
 
     /** At most this many structures are located per scan. */
