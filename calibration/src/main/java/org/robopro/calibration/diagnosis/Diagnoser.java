@@ -569,6 +569,8 @@ public final class Diagnoser {
         timer.mark("geometric");
         Tester geoTester = w.tester(fit);
         List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
+        List<StageScan.Stage> stages = StageScan.scan(geoTester, o.alpha());
+        geoProbes.addAll(StageScan.probes(geoTester, stages, Locator.harmonicsFor(rows.size())));
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
@@ -610,7 +612,8 @@ public final class Diagnoser {
                                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
                                 for (int h : sel.harmonics()) hs.add(h);
                                 for (int h : e.harmonics()) hs.add(h);
-                                merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray());
+                                merged = Effect.periodic(e.joint(), hs.stream().mapToInt(Integer::intValue).toArray(),
+                                        java.util.stream.DoubleStream.concat(Arrays.stream(sel.stages()), Arrays.stream(e.stages())).toArray());
                             }
                     String label = merged.label();
                     if (family.stream().noneMatch(f -> f.label().equals(label)) && (merged.isFallback() || !excluded.contains(claimKey(merged)))) {
@@ -652,7 +655,7 @@ public final class Diagnoser {
             for (int k = 0; k < selected.size(); k++)
                 if (chosen.kind() == Effect.Kind.PERIODIC && selected.get(k).kind() == Effect.Kind.PERIODIC
                         && selected.get(k).joint() == chosen.joint()
-                        && Arrays.stream(selected.get(k).harmonics()).allMatch(h -> Arrays.stream(chosen.harmonics()).anyMatch(x -> x == h)))
+                        && Arrays.stream(selected.get(k).orders()).allMatch(h -> Arrays.stream(chosen.orders()).anyMatch(x -> x == h)))
                     older = k;
             if (older >= 0) {
                 double thr = best.threshold;
@@ -1368,10 +1371,16 @@ public final class Diagnoser {
                 // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
                 double[] sc = new double[gravity.massCount()];
                 Arrays.fill(sc, 1);
+                boolean[] bears = new boolean[sc.length]; // masses whose weight reaches the joint on some pose
+                double[] byMass = new double[sc.length];
+                for (Measurement r : rows) {
+                    gravity.driveTorquesByMass(r.q(), r.payloadKg(), j, byMass);
+                    for (int m = 0; m < sc.length; m++) bears[m] |= byMass[m] != 0;
+                }
                 double pr0 = best[0], pr = pr0;
                 for (int round = 0; round < 2; round++)
                     for (int m = 0; m < sc.length; m++) {
-                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                        if (m == gravity.payloadIndex() || gravity.massKg(m) == 0 || !bears[m]) continue;
                         double keep = sc[m];
                         double bestF = keep;
                         for (double f : HELD_MASS_SCALES) {
@@ -1565,7 +1574,9 @@ public final class Diagnoser {
                         || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
-                            bestPress, pressOwn);
+                            bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
+                            ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
+                            + "be told apart on these poses: measure with two or three payloads to tell" : "");
                 else {
                     double thr = w.o.alpha() / Math.max(1, own.size());
                     for (Effect f : own) {
@@ -2096,6 +2107,18 @@ public final class Diagnoser {
         };
     }
 
+    /** Whether the payload varies over the rows by 0.1 kg or more. */
+    static boolean payloadVaries(List<Measurement> rows) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) {
+            double kg = r.payloadKg();
+            if (!Double.isFinite(kg)) continue;
+            lo = Math.min(lo, kg);
+            hi = Math.max(hi, kg);
+        }
+        return hi - lo >= 0.1;
+    }
+
     /** At most this many structures are located per scan. */
     static final int MAX_LOCATED = 8;
     /** An alias replaces a named effect when its leave-one-pose-out error is lower by this fraction. */
@@ -2108,11 +2131,13 @@ public final class Diagnoser {
         int dof = model.dof();
         for (int j = 0; j < dof; j++) {
             java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+            List<Double> stages = new ArrayList<>(); // orders that are not whole (the stage-frequency scan)
             boolean any = false;
             for (Locator.Found f : found) {
                 if (f.probe.joint != j) continue;
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC || f.probe.var == Locator.Var.ANGLE_SMOOTH) any = true;
-                if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
+                if (f.probe.var == Locator.Var.ANGLE_PERIODIC && f.probe.order > 0) stages.add(f.probe.order);
+                else if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.ANGLE_SMOOTH && f.sparseClaim()) for (int h : f.sparse) hs.add(h);
                 if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
@@ -2124,12 +2149,13 @@ public final class Diagnoser {
             for (int a = 0; a < places.size(); a++)
                 for (int b = a + 1; b < places.size(); b++)
                     if (places.get(b) > places.get(a)) out.add(Effect.angleWindow(j, places.get(a), places.get(b)));
-            if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
+            if (!stages.isEmpty() || !hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
-                out.add(Effect.periodic(j, h));
+                double[] st = stages.stream().mapToDouble(Double::doubleValue).toArray();
+                out.add(Effect.periodic(j, h, st));
                 java.util.TreeSet<Integer> withLow = new java.util.TreeSet<>(hs);
                 for (int i = 1; i <= Effect.HARMONICS; i++) withLow.add(i);
-                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray()));
+                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray(), st));
             }
             if (any) {
                 double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;

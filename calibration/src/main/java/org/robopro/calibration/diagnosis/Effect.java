@@ -128,6 +128,7 @@ public final class Effect {
     private final boolean perMass;           // compliance: one coefficient per mass
     private final double t0C, tauS;          // thermal / drift: reference temperature, or time constant (NaN)
     private final int[] harmonics;           // periodic
+    private double[] stages = new double[0]; // periodic: orders that are not whole (an intermediate shaft's turns per output turn)
     private final double lo, hi;             // smooth: range of q_j
     private final KinematicModel model;      // thermal-link: the frames
     private final int[] links;               // thermal-link: frame indices i whose vector s_i (frame i -> i+1) grows
@@ -184,6 +185,37 @@ public final class Effect {
         int[] h = new TreeSet<>(Arrays.stream(harmonics).boxed().toList()).stream().mapToInt(Integer::intValue).toArray();
         if (h.length == 0 || h[0] < 1) throw new IllegalArgumentException("harmonics " + Arrays.toString(harmonics));
         return new Effect(Kind.PERIODIC, joint, -1, null, false, Double.NaN, Double.NaN, h, Double.NaN, Double.NaN, null, null);
+    }
+
+    /**
+     * The given whole harmonics and, besides them, stage orders that are not whole (cycles per turn of
+     * the joint, > 0): a reducer's intermediate shaft turning 7.1 times per output turn repeats its
+     * error 7.1 times per turn of the joint; over the joint's range that is still a function of its
+     * angle. Whole orders among {@code stages} join the harmonics.
+     */
+    public static Effect periodic(int joint, int[] harmonics, double[] stages) {
+        java.util.TreeSet<Integer> whole = new java.util.TreeSet<>(Arrays.stream(harmonics).boxed().toList());
+        java.util.TreeSet<Double> other = new java.util.TreeSet<>();
+        for (double f : stages) {
+            if (!(f > 0)) throw new IllegalArgumentException("stage order " + f);
+            if (f == Math.rint(f)) whole.add((int) f);
+            else other.add(roundOrder(f));
+        }
+        if (whole.isEmpty() && other.isEmpty() || !whole.isEmpty() && whole.first() < 1)
+            throw new IllegalArgumentException("harmonics " + whole + ", stages " + other);
+        Effect e = new Effect(Kind.PERIODIC, joint, -1, null, false, Double.NaN, Double.NaN,
+                whole.stream().mapToInt(Integer::intValue).toArray(), Double.NaN, Double.NaN, null, null);
+        e.stages = other.stream().mapToDouble(Double::doubleValue).toArray();
+        return e;
+    }
+
+    /** A stage order kept to 3 decimals (the label and the parameter names carry it). */
+    static double roundOrder(double f) { return Math.rint(f * 1000) / 1000; }
+
+    /** An order in words: "81", "7.12". */
+    public static String orderText(double f) {
+        if (f == Math.rint(f)) return Long.toString((long) f);
+        return new java.math.BigDecimal(roundOrder(f)).setScale(3, java.math.RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
     }
 
     public static Effect backlash(int joint) { return drive(Kind.BACKLASH, joint); }
@@ -493,10 +525,19 @@ public final class Effect {
     public GravityTorques gravity() { return gravity; }
     public boolean perMass() { return perMass; }
     public int[] harmonics() { return harmonics == null ? null : harmonics.clone(); }
+    /** A periodic effect's stage orders that are not whole (cycles per turn), in its columns after the harmonics. */
+    public double[] stages() { return stages.clone(); }
+    /** Every order of a periodic effect, cycles per turn: the harmonics, then the stage orders not whole. */
+    public double[] orders() {
+        double[] out = new double[harmonics.length + stages.length];
+        for (int i = 0; i < harmonics.length; i++) out[i] = harmonics[i];
+        System.arraycopy(stages, 0, out, harmonics.length, stages.length);
+        return out;
+    }
     public double rangeLo() { return lo; }
     public double rangeHi() { return hi; }
     /** Whether this is the default harmonics 1-3 periodic effect. */
-    public boolean lowHarmonics() { return kind == Kind.PERIODIC && Arrays.equals(harmonics, LOW); }
+    public boolean lowHarmonics() { return kind == Kind.PERIODIC && Arrays.equals(harmonics, LOW) && stages.length == 0; }
 
     /** Joints in the JSON sense (1-based): target, then source for a coupling; empty for effects on lengths or the point. */
     public List<Integer> joints1() {
@@ -507,7 +548,7 @@ public final class Effect {
 
     public int size() {
         return switch (kind) {
-            case PERIODIC -> 2 * harmonics.length;
+            case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : 1;
             case SMOOTH, PAIR, ZERO_DRIFT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
@@ -524,7 +565,7 @@ public final class Effect {
                 if (!perMass) out.add("c");
                 else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
             }
-            case PERIODIC -> { for (int h : harmonics) { out.add("a" + h); out.add("b" + h); } }
+            case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
             case BACKLASH -> out.add("b");
             case THERMAL -> out.add(usesTimeProxy() ? "strain" : "alpha");
             case THERMAL_LINK -> { for (int i : links) out.add("alpha_" + linkName(i)); }
@@ -584,7 +625,7 @@ public final class Effect {
             case THERMAL_LINK -> kind.json + lagWords();
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
-                    Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) + ")");
+                    Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
@@ -669,6 +710,10 @@ public final class Effect {
                 for (int i = 0; i < harmonics.length; i++) {
                     g[2 * i] = Math.sin(harmonics[i] * q[joint]);
                     g[2 * i + 1] = Math.cos(harmonics[i] * q[joint]);
+                }
+                for (int i = 0, o = 2 * harmonics.length; i < stages.length; i++) {
+                    g[o + 2 * i] = Math.sin(stages[i] * q[joint]);
+                    g[o + 2 * i + 1] = Math.cos(stages[i] * q[joint]);
                 }
             }
             case BACKLASH -> g[0] = lostMotion(q, c);
@@ -927,10 +972,13 @@ public final class Effect {
             }
             case PERIODIC -> {
                 List<Integer> hs = new ArrayList<>();
+                List<Double> st = new ArrayList<>();
                 for (String key : ps.keySet())
                     if (key.matches("a\\d+")) hs.add(Integer.parseInt(key.substring(1)));
-                if (hs.isEmpty()) throw new InputException(file, 0, 0, "effects.gear-periodic.parameters_si", "no harmonic a1, a2, ...");
-                yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
+                    else if (key.matches("a\\d+\\.\\d+")) st.add(Double.parseDouble(key.substring(1)));
+                if (hs.isEmpty() && st.isEmpty())
+                    throw new InputException(file, 0, 0, "effects.gear-periodic.parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
+                yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray(), st.stream().mapToDouble(Double::doubleValue).toArray());
             }
             case BACKLASH -> {
                 if (ps.containsKey("held_above_nm")) {

@@ -54,6 +54,8 @@ final class Locator {
     static final class Probe {
         Var var;
         int joint = -1, harmonic, other = -1, basis;
+        double order;               // a stage order that is not whole (cycles per turn; ANGLE_PERIODIC from the stage scan), else 0
+        boolean stage;              // from the stage scan (placed there, above the harmonic probes)
         double lo, hi;              // range of the variable (smooth, reach, height, time, temperature)
         boolean lengths;            // a length change (not a point translation or a drive)
         String variable, shape, detail;
@@ -277,6 +279,26 @@ final class Locator {
             out.add(at);
         }
         return out;
+    }
+
+    /** A reducer stage's error: order f (cycles per turn of joint j, whole or not) acting on drive j ({@link StageScan}). */
+    static Probe stageProbe(Diagnoser.Tester t, int j, double f) {
+        int poses = t.w.rows.size();
+        double[][] qx = new double[t.ends][poses];
+        for (int e = 0; e < t.ends; e++) for (int i = 0; i < poses; i++) qx[e][i] = Math.toDegrees(t.endRows.get(e).get(i).q(j));
+        Angle a = (q, g) -> { g[0] = Math.sin(f * q); g[1] = Math.cos(f * q); };
+        Probe p = drive(t, j, 2, (e, i, g) -> a.at(t.endRows.get(e).get(i).q(j), g));
+        p.angle = a;
+        p.var = Var.ANGLE_PERIODIC;
+        p.joint = j;
+        p.harmonic = (int) Math.rint(f);
+        p.stage = true;
+        if (f != Math.rint(f)) p.order = Effect.roundOrder(f);
+        p.variable = "joint " + (j + 1) + " angle";
+        p.shape = StageScan.words(j, f);
+        p.x = qx;
+        p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+        return p;
     }
 
     /** Drive j's reading jumps where it passes {@code at} (rad). */
@@ -595,6 +617,7 @@ final class Locator {
         double thr = alpha / Math.max(1, probes.size());
         for (Found f : found) {
             if (f.probe.var != Var.ANGLE_PERIODIC && f.probe.var != Var.ANGLE_SMOOTH) continue;
+            if (f.probe.stage) { f.placeLo = f.placeHi = f.probe.harmonic; continue; } // placed by the stage scan's refinement
             int j = f.probe.joint;
             List<Probe> per = periodic(probes, j);
             double[] range = range(t, j);
@@ -612,7 +635,7 @@ final class Locator {
     /** The periodic probes of joint j, by harmonic (index h − 1). */
     private static List<Probe> periodic(List<Probe> probes, int j) {
         List<Probe> out = new ArrayList<>();
-        for (Probe p : probes) if (p.var == Var.ANGLE_PERIODIC && p.joint == j) out.add(p);
+        for (Probe p : probes) if (p.var == Var.ANGLE_PERIODIC && p.joint == j && !p.stage) out.add(p);
         return out;
     }
 

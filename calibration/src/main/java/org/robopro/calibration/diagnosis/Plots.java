@@ -63,6 +63,8 @@ final class Plots {
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
         int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() ? 400 : 2;
+        // a high stage order: enough curve points for about 16 per cycle over the range
+        if (e.kind() == Effect.Kind.PERIODIC) nc = (int) Math.max(nc, Math.min(20000, 16 * maxOrder(e) * (hi - lo) / 360));
         double[] cx = new double[nc], cy = new double[nc];
         for (int i = 0; i < nc; i++) {
             cx[i] = lo + (hi - lo) * i / (nc - 1);
@@ -70,10 +72,12 @@ final class Plots {
         }
         if (nc > 0 && Double.isNaN(cy[0])) { cx = new double[0]; cy = new double[0]; } // no curve in this variable
         double[] gram = null;
-        if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, Math.max(8, e.harmonics()[e.harmonics().length - 1] + 2));
+        if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, Math.max(8, (int) Math.ceil(maxOrder(e)) + 2));
         return new Diagnosis.Plot(t.ends > 1 ? xLabel(e) + ", at the pose of the pair that carries more of the change" : xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
                 : "partial residual of joint " + (e.joint() + 1) + " angle (mdeg)", x, y, cx, cy, gram);
     }
+
+    private static double maxOrder(Effect e) { return Arrays.stream(e.orders()).max().orElse(1); }
 
     static String xLabel(Effect e) {
         return switch (e.kind()) {
@@ -125,7 +129,7 @@ final class Plots {
             case COMPLIANCE -> e.perMass() ? Double.NaN : v[0] * x;
             case PERIODIC -> {
                 double q = Math.toRadians(x), s = 0;
-                int[] hs = e.harmonics();
+                double[] hs = e.orders();
                 for (int i = 0; i < hs.length; i++) s += v[2 * i] * Math.sin(hs[i] * q) + v[2 * i + 1] * Math.cos(hs[i] * q);
                 yield s;
             }

@@ -29,12 +29,13 @@ final class Words {
                     : String.format(Locale.ROOT, "Joint %d gives way under the arm's weight: compliance %.3g ± %.2g "
                     + "rad/(N·m), a stiffness of %.3g N·m/rad.", e.joint() + 1, v[0], s[0], 1 / v[0]);
             case PERIODIC -> {
-                int[] hs = e.harmonics();
+                double[] hs = e.orders();
                 StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
                         "Joint %d has a transmission error that repeats with its angle (%s):", e.joint() + 1,
                         hs[hs.length - 1] > 3 ? "cycles of a multi-stage or cycloidal reducer" : "gear or encoder eccentricity"));
                 for (int i = 0; i < hs.length; i++)
-                    sb.append(String.format(Locale.ROOT, " %d cycle%s per turn %.4f ± %.4f deg%s", hs[i], hs[i] == 1 ? "" : "s",
+                    sb.append(String.format(Locale.ROOT, " %s cycle%s per turn%s %.4f ± %.4f deg%s", Effect.orderText(hs[i]), hs[i] == 1 ? "" : "s",
+                            hs[i] > Effect.HARMONICS ? " (a stage turning " + Effect.orderText(hs[i]) + " times per output turn)" : "",
                             Math.toDegrees(Math.hypot(v[2 * i], v[2 * i + 1])),
                             Math.toDegrees(Math.max(s[2 * i], s[2 * i + 1])), i < hs.length - 1 ? "," : "."));
                 if (ev.projectionRatio() < 0.3)

@@ -37,8 +37,14 @@ class HeldByGravityBacklashTest {
     private record Sim(MeasurementSet train, MeasurementSet validation, double floorM, double freeShare) { }
 
     private Sim campaign(long seed, int joint, double play, double heldNm, boolean held, double massError) {
+        return campaign(seed, joint, play, heldNm, held, massError, Double.POSITIVE_INFINITY);
+    }
+
+    /** As above, with drive {@code joint} also giving way under gravity with stiffness {@code stiffness} (N·m/rad). */
+    private Sim campaign(long seed, int joint, double play, double heldNm, boolean held, double massError, double stiffness) {
         WorldRobot w = Scenario.baseRobot(puma, new Random(seed), 1e-3, Math.toRadians(0.1))
-                .withCompliance(massError == 0 ? exact() : WorldRobot.Compliance.fromFile(puma.massModel().orElseThrow(), puma.dof(), massError, new Random(seed + 1)));
+                .withCompliance((massError == 0 ? exact() : WorldRobot.Compliance.fromFile(puma.massModel().orElseThrow(), puma.dof(),
+                        massError, new Random(seed + 1))).withStiffness(joint, stiffness));
         Campaign.Plan plan = Campaign.Plan.defaults(seed).withPoses(200, 100).withSigma(0.015e-3).withConditionColumns(false);
         Campaign.Result c = Campaign.run(w, puma, plan);
         double[][] cm = w.coupling();
@@ -135,6 +141,23 @@ class HeldByGravityBacklashTest {
         Effect e = d.effects().get(0).effect();
         assertEquals(Effect.Kind.BACKLASH, e.kind());
         assertFalse(e.heldByGravity(), e.label() + " " + d.notes());
+    }
+
+    /**
+     * Plain backlash and a real compliance of the same joint (a deflection proportional to the
+     * torque, world truth): the held form, which has no proportional part, must not take their
+     * place without saying the data cannot tell them apart.
+     */
+    @Test
+    void backlashBesideARealCompliance_isNotSilentlyOneHeldBacklash() {
+        Sim s = campaign(20261221L, 1, Math.toRadians(0.03), 30, false, 0.1, 2.0e5);
+        Diagnosis d = Diagnoser.diagnose(puma, s.train, s.validation);
+        String named = d.effects().stream().map(f -> f.effect().label()).toList().toString();
+        System.out.println("backlash + compliance j2: " + named + " validation " + d.finalValidateRmsM() / s.floorM + " x floor");
+        boolean held = d.effects().stream().anyMatch(f -> f.effect().heldByGravity());
+        if (held) assertTrue(d.notes().stream().anyMatch(n -> n.contains("cannot be told from")), named + " " + d.notes());
+        else assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.COMPLIANCE && f.effect().joint() == 1),
+                named + " " + d.notes());
     }
 
     @Test

@@ -1,12 +1,17 @@
 package org.robopro.calibration.diagnosis;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.measurement.Measurement;
+import org.robopro.kinematics.KinematicModel;
+import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
 /**
@@ -52,5 +57,36 @@ class ThermalLagTest {
         for (int i = 0; i < 20; i++) rows.add(row(i, 10.0 * i, 21.0));
         assertNull(ThermalLag.of(rows));
         assertNull(ThermalLag.of(List.of(row(0, 0, 20), row(1, 10, 21))));
+    }
+
+    @Test
+    void laggedGrowthIsWrittenAndReadBackWithItsLags_andTakesTheReadingWithoutItsHistory() {
+        KinematicModel model = KinematicModel.build(RobotLibrary.shipped("irb2400"));
+        List<Measurement> rows = new ArrayList<>();
+        for (int i = 0; i <= 200; i++) rows.add(row(i, 12.0 * i, air(12.0 * i)));
+        ThermalLag lag = ThermalLag.of(rows);
+        int n = Effect.thermalLinks(model, 20).size();
+        double[] taus = new double[n], alpha = new double[n];
+        for (int i = 0; i < n; i++) { taus[i] = i == 0 ? 2400 : 600; alpha[i] = 2e-5; }
+        Effect grown = Effect.thermalLinks(model, 20, lag, taus);
+        Effect.Term back = Effect.fromDescription(grown.describe(alpha), model, null, "test");
+        assertArrayEquals(taus, back.effect().lagTaus(), 0);
+        assertEquals(grown.label(), back.effect().label());
+        // read back, the campaign's history is gone: each link is taken at the reading (in equilibrium), as unlagged
+        double[] q = {0.3, -0.2, 0.4, 0.1, 0.5, -0.3}, point = {1.2, 0.3, 0.9};
+        PoseConditions c = new PoseConditions(null, 600, air(600), Double.NaN);
+        double[] g = new double[3 * n], gPlain = new double[3 * n], gLag = new double[3 * n];
+        back.effect().positionRegressor(q, c, point, g);
+        Effect.thermalLinks(model, 20).positionRegressor(q, c, point, gPlain);
+        assertArrayEquals(gPlain, g, 1e-15);
+        // with the history, the link lagging by 600 s is cooler than the air at 600 s into the warm-up
+        grown.positionRegressor(q, c, point, gLag);
+        double ratio = (body(600, 600) - 20) / (air(600) - 20);
+        for (int a = 0; a < 3; a++) assertEquals(ratio * gPlain[a * n + 1], gLag[a * n + 1], 1e-4 * Math.abs(gPlain[a * n + 1]) + 1e-12);
+        // a negative lag is refused with the field named
+        var bad = new java.util.LinkedHashMap<>(grown.describe(alpha).parameters());
+        bad.put("lag_s_tool", -5.0);
+        var d = new org.robopro.models.EffectDescription("thermal-link", List.of(), bad);
+        assertThrows(org.robopro.models.InputException.class, () -> Effect.fromDescription(d, model, null, "robot.json"));
     }
 }
