@@ -75,6 +75,12 @@ public final class Diagnoser {
     static final double MAX_PERIODIC_RAD = Math.toRadians(0.1);
     static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
     static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
+    /**
+     * Largest plausible RMS error of an instrument's distance reading (m) and of its angle readings
+     * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
+     * angle error a few arc-seconds; far beyond that the instrument is broken, not erring.
+     */
+    static final double MAX_INSTRUMENT_RANGE_M = 0.5e-3, MAX_INSTRUMENT_ANGLE_RAD = 50 / 3600.0 * Math.PI / 180;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     /**
      * Bound of one link's growth per kelvin of the reading, 1/K: a link near its drives warms more
@@ -754,8 +760,10 @@ public final class Diagnoser {
             Effect e = selected.get(k);
             boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH
                     && e.kind() != Effect.Kind.ANGLE_STEP;
+            // a smooth curve of the drive's own angle takes any family of the drive; one following another joint, that joint's coupling
             if (!angleFamily || selected.stream().noneMatch(x -> (x.kind() == Effect.Kind.SMOOTH || x.kind() == Effect.Kind.ANGLE_STEP)
-                    && x.joint() == e.joint())) continue;
+                    && x.joint() == e.joint() && (x.angleJoint() == x.joint() || e.kind() == Effect.Kind.COUPLING && e.source() == x.angleJoint())))
+                continue;
             aliasNotes.add(e.label() + " is not claimed: the angle-dependent error of joint " + (e.joint() + 1)
                     + " needed a fallback of its angle (a smooth curve or a step) as well, so it is not that family's alone");
             fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
@@ -1009,7 +1017,7 @@ public final class Diagnoser {
         PoseConditions c = PoseConditions.of(m);
         for (Effect e : selected) {
             double x = switch (e.kind()) {
-                case SMOOTH -> m.q(e.joint());
+                case SMOOTH -> m.q(e.angleJoint());
                 case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
                 case POINT_SMOOTH -> switch (e.along()) {
                     case TIME -> c.timeS();
@@ -1242,7 +1250,17 @@ public final class Diagnoser {
                     for (int nb : Effect.SMOOTH_RESOLUTIONS)
                         if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()) out.add(Effect.smooth(j, lo, hi, nb));
             }
-            case COUPLING -> out.add(Effect.pair(e.joint(), e.source()));
+            case COUPLING -> {
+                out.add(Effect.pair(e.joint(), e.source()));
+                // a pull that follows the source's angle but not in proportion (a cable tightening as it winds up)
+                int k = e.source();
+                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                for (Measurement r : rows) { lo = Math.min(lo, r.q(k)); hi = Math.max(hi, r.q(k)); }
+                if (hi > lo)
+                    for (int nb : Effect.SMOOTH_RESOLUTIONS)
+                        if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
+                            out.add(Effect.smoothFollowing(e.joint(), k, lo, hi, nb));
+            }
             default -> { }
         }
         return out;
@@ -1477,7 +1495,7 @@ public final class Diagnoser {
             List<Effect> fams = selected.stream().filter(e -> !e.isFallback() && e.joint() == jj
                     && (e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SCALE)).toList();
             if (fams.size() < 2) continue;
-            List<Effect> eligible = rivals.stream().filter(r -> r.joint() == jj
+            List<Effect> eligible = rivals.stream().filter(r -> r.joint() == jj && r.angleJoint() == jj
                     && (r.kind() == Effect.Kind.ANGLE_STEP || r.kind() == Effect.Kind.SMOOTH)
                     && selected.stream().noneMatch(x -> x.label().equals(r.label()))).toList();
             if (eligible.isEmpty()) continue;
@@ -1539,6 +1557,7 @@ public final class Diagnoser {
                                   List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
         int refinements = 0;
         Set<String> withdrawn = new HashSet<>();
+        List<Effect> instrument = instrumentRivals(w.tester(fit));
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -1550,6 +1569,7 @@ public final class Diagnoser {
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
                 for (Effect f : readingSteps(e, fit, k, rows, w.conditions)) rivals.putIfAbsent(f.label(), f);
+                for (Effect f : instrument) rivals.putIfAbsent(f.label(), f);
                 for (Effect s : selected) rivals.remove(s.label());
                 if (e.kind() == Effect.Kind.DRIFT)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
@@ -1771,10 +1791,21 @@ public final class Diagnoser {
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
     private static List<Effect> refinements(Effect e, Work w, List<Measurement> rows) {
         List<Effect> out = new ArrayList<>();
-        if (e.kind() == Effect.Kind.SMOOTH) {
+        if (e.kind() == Effect.Kind.INSTRUMENT && Double.isFinite(e.cycle())) {
+            // the period between the scan's grid points (a quarter and a half of its step either side): the phase
+            // error over the readings' span is what a period off the grid leaves
+            double f0 = 1 / e.cycle(), step = 1 / (3 * (e.rangeHi() - e.rangeLo()));
+            for (int i = -2; i <= 2; i++)
+                if (i != 0 && f0 + i * step / 4 > 0)
+                    out.add(Effect.instrumentCyclic(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), 1 / (f0 + i * step / 4)));
+        } else if (e.kind() == Effect.Kind.INSTRUMENT) {
+            for (int nb : e.sight() == Effect.Sight.RANGE ? Locator.RANGE_RESOLUTIONS : Locator.ANGLE_RESOLUTIONS)
+                if (nb != e.basisCount() && (nb == Effect.POINT_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
+                    out.add(Effect.instrumentReading(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.SMOOTH) {
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
-                    out.add(Effect.smooth(e.joint(), e.rangeLo(), e.rangeHi(), nb));
+                    out.add(Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP
                 || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
@@ -1830,7 +1861,10 @@ public final class Diagnoser {
      * whose squared norm left is within the rank tolerance (1e-20) of {@code n0[c]} (its squared norm
      * before any projection the caller made; null: its own) is dropped.
      */
-    static List<double[]> orthonormal(List<double[]> cols, double[] n0s, int m) {
+    static List<double[]> orthonormal(List<double[]> cols, double[] n0s, int m) { return orthonormal(cols, n0s, m, 1e-20); }
+
+    /** As above, a column kept only when what is left of it is above {@code tol} times its squared norm before the projection. */
+    static List<double[]> orthonormal(List<double[]> cols, double[] n0s, int m, double tol) {
         List<double[]> qs = new ArrayList<>();
         for (int c = 0; c < cols.size(); c++) {
             double[] x = cols.get(c).clone();
@@ -1845,7 +1879,7 @@ public final class Diagnoser {
                 }
             double n1 = 0;
             for (double v : x) n1 += v * v;
-            if (n0 == 0 || n1 < 1e-20 * n0) continue;
+            if (n0 == 0 || n1 < tol * n0) continue;
             double nn = Math.sqrt(n1);
             for (int i = 0; i < m; i++) x[i] /= nn;
             qs.add(x);
@@ -1927,6 +1961,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE && e.joint() == f.probe.joint) return e; }
                 case REACH, HEIGHT -> { return e; }
+                case SIGHT -> { if (k == Effect.Kind.INSTRUMENT && e.sight() == f.probe.sight) return e; }
             }
         }
         return null;
@@ -2104,6 +2139,12 @@ public final class Diagnoser {
             case PAYLOAD -> "measure with two or three payloads at the same poses to separate deflection from geometry.";
             case REACH, HEIGHT -> "measure the same poses with the arm stretched and folded and at several heights; check the "
                     + "instrument's scale and levelling, and sag of the arm or the measured point's holder.";
+            case SIGHT -> f.probe.sight == Effect.Sight.RANGE
+                    ? "check the instrument's distance meter against a known length at several distances (its compensation or a "
+                    + "field check), then measure a few poses again with the instrument moved to another place: an error of the "
+                    + "instrument moves with it, one of the robot does not."
+                    : "run the instrument's two-face (front and back sight) check and its compensation, then measure a few poses "
+                    + "again with the instrument moved to another place: an error of the instrument moves with it, one of the robot does not.";
         };
     }
 
@@ -2179,6 +2220,8 @@ public final class Diagnoser {
         if (hasTime) out.add(Effect.driftWithTime());
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.TARGET_STEP) out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
+        // an error of the instrument's readings: modelled where it is located, so that it does not bend the robot's fit
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.SIGHT) out.add(sightEffect(f.probe));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -2216,6 +2259,7 @@ public final class Diagnoser {
                         f.probe.lo, f.probe.hi));
                 case TIME_STEP, ANGLE_STEP, TARGET_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
+                case SIGHT -> out.add(sightEffect(f.probe));
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2223,6 +2267,25 @@ public final class Diagnoser {
                 }
                 default -> { }
             }
+        return out;
+    }
+
+    /** The instrument-reading fallback of an instrument probe ({@link Locator#sightProbes}). */
+    static Effect sightEffect(Locator.Probe p) {
+        if (p.cycle > 0) return Effect.instrumentCyclic(p.sight, p.instrument, p.azimuthRef, p.lo, p.hi, p.cycle);
+        return Effect.instrumentReading(p.sight, p.instrument, p.azimuthRef, p.lo, p.hi, p.basis);
+    }
+
+    /**
+     * The instrument's own errors at every resolution the poses support, as rivals of every family
+     * (positions in the instrument's frame only): an error of a tracker's distance meter or angle
+     * encoder follows the instrument's readings, which over the workspace seen from metres away are
+     * correlated with joint 1's angle and with the point's reach, so a family of the robot that holds
+     * part of it must predict left-out poses better than the instrument's error in its place.
+     */
+    static List<Effect> instrumentRivals(Tester t) {
+        List<Effect> out = new ArrayList<>();
+        for (Locator.Probe p : Locator.sightProbes(t)) out.add(sightEffect(p));
         return out;
     }
 
@@ -2779,7 +2842,10 @@ public final class Diagnoser {
                 n0s[ys.size()] = n0;
                 ys.add(projectOut(withoutU, rk, m, x));
             }
-            List<double[]> qs = orthonormal(ys, n0s, m); // rank tolerance against each column's norm before the projection
+            // A column of the alias that the rest of the model holds to within the absorbed ratio is left to it, as when the
+            // alias is fitted (its absorbed columns fixed at zero): kept, its remnant is rounding and the difference between
+            // the rest's span at this fit and at the alias's, a direction that can carry the removed effect's own signal.
+            List<double[]> qs = orthonormal(ys, n0s, m, w.o.absorbedRatio() * w.o.absorbedRatio());
             int q = qs.size();
             double[] qm = new double[m * q];
             for (int t = 0; t < q; t++) {
@@ -2790,6 +2856,7 @@ public final class Diagnoser {
             }
             return pressBlocks(withoutH, e, qm, q);
         }
+
 
         /** Leave-one-pose-out error (PRESS) of the linearised joint model as fitted (every free column). */
         double pressFull() { return pressBlocks(h0, rPerp, null, 0); }
@@ -3135,6 +3202,14 @@ public final class Diagnoser {
                 double r = Words.rmsSmooth(e, v);
                 c.plausible = r < MAX_PERIODIC_RAD * 2;
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
+            }
+            case INSTRUMENT -> {
+                double r = Words.rmsInstrument(e, v);
+                boolean range = e.sight() == Effect.Sight.RANGE;
+                c.plausible = r < (range ? MAX_INSTRUMENT_RANGE_M : MAX_INSTRUMENT_ANGLE_RAD);
+                c.plausibility = range ? String.format(Locale.ROOT, "RMS distance error %.4f mm < %.1f mm", r * 1e3, MAX_INSTRUMENT_RANGE_M * 1e3)
+                        : String.format(Locale.ROOT, "RMS angle error %.1f arc-seconds < %.0f", Math.toDegrees(r) * 3600,
+                        Math.toDegrees(MAX_INSTRUMENT_ANGLE_RAD) * 3600);
             }
             case SCALE -> {
                 c.plausible = overlaps(v[0], sd[0], -MAX_SCALE, MAX_SCALE);

@@ -69,7 +69,8 @@ public final class Effect {
         ZERO_DRIFT("joint-zero-drift", "Joint zero that moves with time or temperature, of no known family"),
         ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
-        TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family");
+        TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
+        INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot");
 
         public final String json;
         public final String title;
@@ -97,6 +98,27 @@ public final class Effect {
         public final String words, key, unit;
 
         Along(String words, String key, String unit) {
+            this.words = words;
+            this.key = key;
+            this.unit = unit;
+        }
+    }
+
+    /**
+     * What an error of a spherical-coordinate instrument (a laser tracker: a distance meter on a
+     * gimbal with two angle encoders) follows: its distance reading to the point, or its azimuth or
+     * elevation reading. A distance-meter error moves the point along the line of sight; an angle
+     * encoder's error moves it across the line of sight by the distance (horizontal distance for
+     * the azimuth) times the angle error (the tracker's own model of its errors: Muralikrishnan et
+     * al., "Laser trackers for large-scale dimensional metrology: a review", Precision Engineering
+     * 44 (2016) 13, §3; ASME B89.4.19-2006 range and angle tests).
+     */
+    public enum Sight {
+        RANGE("distance", "range_m", "m"), AZIMUTH("azimuth", "azimuth_rad", "rad"), ELEVATION("elevation", "elevation_rad", "rad");
+
+        public final String words, key, unit;
+
+        Sight(String words, String key, String unit) {
             this.words = words;
             this.key = key;
             this.unit = unit;
@@ -141,6 +163,10 @@ public final class Effect {
     private double[] massScales;             // that backlash: the file's masses re-estimated by a factor each (null: as in the file)
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
+    private Sight sight;                     // instrument reading: the reading it follows
+    private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
+    private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
+    private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -343,11 +369,26 @@ public final class Effect {
     public static Effect smooth(int joint, double lo, double hi) { return smooth(joint, lo, hi, SMOOTH_BASIS); }
 
     /** Smooth error of drive {@code joint} over [lo, hi]: a cubic B-spline of {@code n} ≥ 4 functions. */
-    public static Effect smooth(int joint, double lo, double hi, int n) {
+    public static Effect smooth(int joint, double lo, double hi, int n) { return smoothFollowing(joint, -1, lo, hi, n); }
+
+    /**
+     * Smooth error of drive {@code joint} following joint {@code source}'s angle over [lo, hi] (the
+     * source's range), a cubic B-spline of {@code n} ≥ 4 functions; {@code source} −1 (or the joint
+     * itself): its own angle. The fallback of a coupling that is not in proportion: a cable or hose
+     * that tightens as another joint winds up pulls the drive by a stiff, non-linear function of that
+     * joint's angle, which a coupling κ·q_source holds only in its linear part.
+     */
+    public static Effect smoothFollowing(int joint, int source, double lo, double hi, int n) {
         if (!(hi > lo)) throw new IllegalArgumentException("smooth error range " + lo + ".." + hi);
         if (n < 4) throw new IllegalArgumentException("smooth error needs at least 4 functions, got " + n);
-        return new Effect(Kind.SMOOTH, joint, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
+        return new Effect(Kind.SMOOTH, joint, source == joint ? -1 : source, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
     }
+
+    /**
+     * The joint whose angle this effect's regressor follows: the source of a coupling or of a smooth
+     * error following another joint, else the effect's own joint (−1 for effects on lengths or the point).
+     */
+    public int angleJoint() { return (kind == Kind.COUPLING || kind == Kind.SMOOTH) && source >= 0 ? source : joint; }
 
     /**
      * Error of drive {@code joint} that depends on its own angle and joint {@code other}'s together:
@@ -442,11 +483,98 @@ public final class Effect {
         return new Effect(Kind.TARGET_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, model, null, 1);
     }
 
+    /**
+     * An error of the instrument's {@code sight} reading: a cubic B-spline of {@code n} functions of
+     * that reading over [lo, hi] (m, or rad about {@code azimuthRef} for the azimuth), moving the
+     * measured point along the line of sight (distance) or across it by the distance times the
+     * angle's error ({@link Sight}). The readings and directions are computed from the predicted
+     * point through {@code instrumentTbase} (the geometric fit's; it moves by micro-radians in the
+     * joint fit, which changes the regressor by far less than the noise). It is an error of the
+     * measurement, not of the robot: an extended model leaves it out of the robot's pose, and with
+     * no instrument (a compensated program) it contributes nothing.
+     */
+    public static Effect instrumentReading(Sight sight, Pose instrumentTbase, double azimuthRef, double lo, double hi, int n) {
+        if (!(hi > lo)) throw new IllegalArgumentException("instrument reading range " + lo + ".." + hi);
+        if (n < 4) throw new IllegalArgumentException("instrument reading error needs at least 4 functions, got " + n);
+        Effect e = new Effect(Kind.INSTRUMENT, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
+        e.sight = sight;
+        e.instrument = instrumentTbase;
+        e.azimuthRef = sight == Sight.AZIMUTH ? azimuthRef : 0;
+        return e;
+    }
+
+    /**
+     * A cyclic error of the instrument's {@code sight} reading, a·sin(2πu/period) + b·cos(2πu/period)
+     * of the reading u (a distance meter that measures a phase repeats its error with the distance:
+     * the cyclic, or periodic, error of phase-measuring distance meters; Muralikrishnan et al. 2016,
+     * §3.1), acting as {@link #instrumentReading}; [lo, hi] is the range of the reading seen.
+     */
+    public static Effect instrumentCyclic(Sight sight, Pose instrumentTbase, double azimuthRef, double lo, double hi, double period) {
+        if (!(period > 0) || Double.isInfinite(period)) throw new IllegalArgumentException("cycle " + period);
+        Effect e = instrumentReading(sight, instrumentTbase, azimuthRef, lo, hi, POINT_BASIS);
+        Effect c = new Effect(Kind.INSTRUMENT, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, 2);
+        c.sight = e.sight;
+        c.instrument = e.instrument;
+        c.azimuthRef = e.azimuthRef;
+        c.cycle = period;
+        return c;
+    }
+
+    /** The period of a cyclic instrument-reading error (m, or rad), NaN otherwise. */
+    public double cycle() { return cycle; }
+
+    /** An instrument-reading error's instrumentTbase (null for other kinds). */
+    public Pose instrumentPose() { return instrument; }
+
+    /** An instrument-reading error's reading (null for other kinds). */
+    public Sight sight() { return sight; }
+
+    /** The azimuth an instrument's azimuth readings are taken about, rad (0 for other readings). */
+    public double azimuthRef() { return azimuthRef; }
+
+    /**
+     * An instrument's reading of a point at {@code pInstrument} (instrument frame, m): its distance,
+     * or its azimuth (about {@code azimuthRef}, in [−π, π)) or elevation, rad.
+     */
+    public static double sightReading(Sight sight, double azimuthRef, double[] pInstrument) {
+        double x = pInstrument[0], y = pInstrument[1], z = pInstrument[2];
+        return switch (sight) {
+            case RANGE -> Math.sqrt(x * x + y * y + z * z);
+            case AZIMUTH -> Math.IEEEremainder(Math.atan2(y, x) - azimuthRef, 2 * Math.PI);
+            case ELEVATION -> Math.atan2(z, Math.hypot(x, y));
+        };
+    }
+
+    /**
+     * The point's displacement (instrument frame) per unit error of the {@code sight} reading at
+     * {@code pInstrument}: the line of sight for the distance, r_h times the horizontal tangent for
+     * the azimuth, r times the vertical tangent for the elevation.
+     */
+    public static double[] sightDirection(Sight sight, double[] pInstrument) {
+        double x = pInstrument[0], y = pInstrument[1], z = pInstrument[2];
+        double rh = Math.hypot(x, y), r = Math.sqrt(x * x + y * y + z * z);
+        if (!(r > 0)) return new double[3];
+        return switch (sight) {
+            case RANGE -> new double[] {x / r, y / r, z / r};
+            case AZIMUTH -> new double[] {-y, x, 0};
+            case ELEVATION -> rh > 0 ? new double[] {-x * z / rh, -y * z / rh, rh} : new double[3];
+        };
+    }
+
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP;
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT;
     }
+
+    /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
+    public double sightReadingOf(double[] pointBase) {
+        if (kind != Kind.INSTRUMENT) return Double.NaN;
+        return sightReading(sight, azimuthRef, instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray());
+    }
+
+    /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
+    public boolean ofInstrument() { return kind == Kind.INSTRUMENT; }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
     public int basisCount() { return nBasis; }
@@ -510,13 +638,13 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
     /** Target joint (drive), 0-based (-1 for effects on lengths or the point). */
     public int joint() { return joint; }
-    /** Source joint of a coupling, or the second joint of a pair error, 0-based (-1 otherwise). */
+    /** Source joint of a coupling, the second joint of a pair error, or the joint a smooth error follows when not its own; 0-based (-1 otherwise). */
     public int source() { return source; }
     public boolean isStrain() { return target() == Target.STRAIN; }
     public boolean usesTimeProxy() { return (kind == Kind.THERMAL || kind == Kind.DRIFT) && Double.isNaN(t0C); }
@@ -542,7 +670,7 @@ public final class Effect {
     /** Joints in the JSON sense (1-based): target, then source for a coupling; empty for effects on lengths or the point. */
     public List<Integer> joints1() {
         if (joint < 0) return List.of();
-        if (kind == Kind.COUPLING || kind == Kind.PAIR) return List.of(joint + 1, source + 1);
+        if (kind == Kind.COUPLING || kind == Kind.PAIR || kind == Kind.SMOOTH && source >= 0) return List.of(joint + 1, source + 1);
         return List.of(joint + 1);
     }
 
@@ -550,7 +678,7 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : 1;
-            case SMOOTH, PAIR, ZERO_DRIFT -> nBasis;
+            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length;
             case DRIFT, TARGET_STEP -> 3;
@@ -578,6 +706,10 @@ public final class Effect {
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
+            case INSTRUMENT -> {
+                if (Double.isFinite(cycle)) { out.add("a"); out.add("b"); }
+                else for (int k = 1; k <= nBasis; k++) out.add("e" + k);
+            }
         }
         return out;
     }
@@ -609,6 +741,7 @@ public final class Effect {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case POINT_SMOOTH, TARGET_STEP -> "m";
+            case INSTRUMENT -> sight.unit;
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -627,7 +760,8 @@ public final class Effect {
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
-            case SMOOTH -> kind.json + " j" + (joint + 1) + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
+            case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following j" + (source + 1) + ")" : "")
+                    + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
                     Math.toDegrees(buildUp)) : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", massScales != null ? ", masses re-estimated" : "") : "");
@@ -639,6 +773,9 @@ public final class Effect {
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case INSTRUMENT -> kind.json + " (" + sight.words + (Double.isFinite(cycle)
+                    ? String.format(Locale.ROOT, ", cyclic %.0f %s", sight == Sight.RANGE ? cycle * 1e3 : Math.toDegrees(cycle), sight == Sight.RANGE ? "mm" : "deg")
+                    : nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
             default -> kind.json + " j" + (joint + 1);
         };
     }
@@ -720,7 +857,7 @@ public final class Effect {
             case THERMAL -> g[0] = conditionX(c);
             case SCALE -> g[0] = q[joint];
             case COUPLING -> g[0] = q[source];
-            case SMOOTH -> bspline(q[joint], lo, hi, g);
+            case SMOOTH -> bspline(q[angleJoint()], lo, hi, g);
             case PAIR -> {
                 pairProducts(q, joint, source, g);
                 g[4] = q[joint];
@@ -736,7 +873,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -750,6 +887,18 @@ public final class Effect {
         int k = size();
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
+            case INSTRUMENT -> {
+                // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
+                double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
+                double[] d = sightDirection(sight, pi), b = new double[nBasis];
+                double u = sightReading(sight, azimuthRef, pi);
+                if (Double.isFinite(cycle)) { b[0] = Math.sin(2 * Math.PI * u / cycle); b[1] = Math.cos(2 * Math.PI * u / cycle); }
+                else bspline(u, lo, hi, b);
+                for (int a = 0; a < 3; a++) {
+                    double da = instrument.rot(0, a) * d[0] + instrument.rot(1, a) * d[1] + instrument.rot(2, a) * d[2];
+                    for (int i = 0; i < nBasis; i++) g3[a * k + i] = da * b[i];
+                }
+            }
             case TARGET_STEP -> {
                 // before the move the point sat −d (flange frame) from where it ended; an unknown time: where it ended
                 if (!(c.timeS() <= tauS)) break;
@@ -932,6 +1081,19 @@ public final class Effect {
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
+            case INSTRUMENT -> {
+                p.put(sight.key + "_min", lo);
+                p.put(sight.key + "_max", hi);
+                if (sight == Sight.AZIMUTH) p.put("azimuth_ref_rad", azimuthRef);
+                if (Double.isFinite(cycle)) p.put(sight.key + "_cycle", cycle);
+                Vec3 w = instrument.rotationVector();
+                p.put("instrument_x", instrument.x());
+                p.put("instrument_y", instrument.y());
+                p.put("instrument_z", instrument.z());
+                p.put("instrument_rx", w.x());
+                p.put("instrument_ry", w.y());
+                p.put("instrument_rz", w.z());
+            }
             case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
             case BACKLASH -> {
                 if (buildsUp()) p.put("build_up_rad", buildUp);
@@ -952,7 +1114,12 @@ public final class Effect {
         Kind kind = Kind.of(d.effect());
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
-        int need = switch (kind) { case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP -> 0; case COUPLING, PAIR -> 2; default -> 1; };
+        int need = switch (kind) {
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT -> 0;
+            case COUPLING, PAIR -> 2;
+            case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
+            default -> 1;
+        };
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
         if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT) && along == null)
@@ -1008,7 +1175,9 @@ public final class Effect {
             case SMOOTH -> {
                 int n = (int) ps.keySet().stream().filter(key -> key.matches("s\\d+")).count();
                 if (n < 4) throw new InputException(file, 0, 0, "effects.joint-smooth-error.parameters_si", "needs s1..sN, N >= 4");
-                yield smooth(js.get(0) - 1, require(d, "q_min", file), require(d, "q_max", file), n);
+                if (js.size() == 2 && js.get(0).equals(js.get(1)))
+                    throw new InputException(file, 0, 0, "effects.joints", "joint-smooth-error following another joint needs two different joints");
+                yield smoothFollowing(js.get(0) - 1, js.size() == 2 ? js.get(1) - 1 : -1, require(d, "q_min", file), require(d, "q_max", file), n);
             }
             case PAIR -> {
                 if (js.get(0).equals(js.get(1))) throw new InputException(file, 0, 0, "effects.joints", "joint-pair-error needs two different joints");
@@ -1019,6 +1188,24 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case INSTRUMENT -> {
+                Sight sg = null;
+                for (Sight x : Sight.values()) if (ps.containsKey(x.key + "_min")) sg = x;
+                if (sg == null)
+                    throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si", "needs the reading's range, e.g. range_m_min and range_m_max");
+                int n = (int) ps.keySet().stream().filter(key -> key.matches("e\\d+")).count();
+                Vec3 w0 = new Vec3(require(d, "instrument_rx", file), require(d, "instrument_ry", file), require(d, "instrument_rz", file));
+                Pose inst0 = Pose.translation(require(d, "instrument_x", file), require(d, "instrument_y", file), require(d, "instrument_z", file))
+                        .times(w0.norm() > 0 ? Pose.rotAxis(w0.times(1 / w0.norm()), w0.norm()) : Pose.IDENTITY);
+                double ref = sg == Sight.AZIMUTH ? require(d, "azimuth_ref_rad", file) : 0;
+                if (ps.containsKey(sg.key + "_cycle")) {
+                    double cyc = require(d, sg.key + "_cycle", file);
+                    if (!(cyc > 0)) throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si." + sg.key + "_cycle", "must be > 0, got " + cyc);
+                    yield instrumentCyclic(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), cyc);
+                }
+                if (n < 4) throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si", "needs e1..eN, N >= 4");
+                yield instrumentReading(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), n);
+            }
             case ZERO_DRIFT -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
                     throw new InputException(file, 0, 0, "effects.joint-zero-drift.parameters_si", "a joint zero drifts with time_s or temp_c");

@@ -73,7 +73,9 @@ public final class ExtendedModel {
         Vec3 d = t.position().times(s);
         Vec3 p = t.position();
         for (Effect.Term term : terms)
-            if (term.effect().target() == Effect.Target.POSITION) d = d.plus(term.effect().displacement(term.values(), q, c, p));
+            // an error of the measuring instrument's readings is not where the robot is: it moves no tool
+            if (term.effect().target() == Effect.Target.POSITION && !term.effect().ofInstrument())
+                d = d.plus(term.effect().displacement(term.values(), q, c, p));
         return d.norm() == 0 ? t : Pose.translation(d).times(t);
     }
 

@@ -39,7 +39,18 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT }
+
+    /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
+    static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
+    /** Spline functions of an instrument's angle reading tried (an encoder's error once or twice per turn over the angles seen). */
+    static final int[] ANGLE_RESOLUTIONS = {4, 7};
+    /**
+     * Shortest period of a distance meter's cyclic error scanned, m: phase-measuring meters repeat
+     * their error over half a modulation wavelength, decimetres to metres; a shorter one is within
+     * the noise of a campaign's poses (a few per period at least are needed).
+     */
+    static final double MIN_RANGE_CYCLE_M = 0.1;
 
     /**
      * Places of a step (a reading's step in a joint's angle, a joint's zero step or the target's move
@@ -66,6 +77,10 @@ final class Locator {
         double[][] endS; // with two ends: each end's own columns (m x k, unprojected), else null
         double[][][] rf; // a move of the target on the flange: each end's and pose's flange rotation (row-major)
         Angle angle;     // a drive's error as a function of its joint angle: the regressor (ANGLE_PERIODIC, ANGLE_SMOOTH)
+        Effect.Sight sight;                      // SIGHT: the instrument's reading
+        org.robopro.kinematics.Pose instrument;  // SIGHT: instrumentTbase at the scanned fit
+        double azimuthRef;                       // SIGHT: the azimuth the readings are taken about
+        double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
         String xLabel;
     }
 
@@ -254,6 +269,125 @@ final class Locator {
             out.add(q);
         }
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
+        out.addAll(sightProbes(t));
+        return out;
+    }
+
+    /**
+     * The instrument's own errors, when the positions are in its frame (a laser tracker): the
+     * measured point moved along the line of sight by a smooth function of the distance reading, or
+     * across it by the distance times a smooth function of the azimuth or elevation reading
+     * ({@link Effect#instrumentReading}). A tracker's distance meter and angle encoders err as
+     * functions of their own readings, which over a robot's workspace seen from metres away are
+     * neither a joint's angle nor the point's reach; without these shapes such an error was named a
+     * transmission error of joint 1. Points only (3 rows each), one pose per row.
+     */
+    static List<Probe> sightProbes(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        if (!t.w.instrument || t.ends != 1 || t.dim != 3) return out;
+        int poses = t.w.rows.size(), pts = t.perPose;
+        org.robopro.kinematics.Pose inst = t.fit.problem.instrumentOf(t.fit.full);
+        double[][][] pi = new double[poses][pts][];
+        double cx = 0, cy = 0;
+        for (int i = 0; i < poses; i++)
+            for (int p = 0; p < pts; p++) {
+                double[] b = t.pointsBase[i][p];
+                pi[i][p] = inst.apply(new org.robopro.models.Vec3(b[0], b[1], b[2])).toArray();
+                double h = Math.hypot(pi[i][p][0], pi[i][p][1]);
+                if (h > 0) { cx += pi[i][p][0] / h; cy += pi[i][p][1] / h; }
+            }
+        double azRef = Math.atan2(cy, cx);
+        for (Effect.Sight sight : Effect.Sight.values()) {
+            double[][] x = new double[1][poses];
+            double[][][] xp = new double[poses][pts][1], dir = new double[poses][pts][3];
+            for (int i = 0; i < poses; i++)
+                for (int p = 0; p < pts; p++) {
+                    xp[i][p][0] = Effect.sightReading(sight, azRef, pi[i][p]);
+                    double[] d = Effect.sightDirection(sight, pi[i][p]);
+                    for (int a = 0; a < 3; a++) dir[i][p][a] = inst.rot(0, a) * d[0] + inst.rot(1, a) * d[1] + inst.rot(2, a) * d[2];
+                }
+            for (int i = 0; i < poses; i++) x[0][i] = xp[i][0][0];
+            double lo = min(x), hi = max(x);
+            if (!(hi - lo > (sight == Effect.Sight.RANGE ? 0.05 : Math.toRadians(2)))) continue;
+            for (int p = 0; p < pts; p++) for (int i = 0; i < poses; i++) { lo = Math.min(lo, xp[i][p][0]); hi = Math.max(hi, xp[i][p][0]); }
+            double l0 = lo, h0 = hi;
+            int rpp = t.rpp;
+            for (int nb : sight == Effect.Sight.RANGE ? RANGE_RESOLUTIONS : ANGLE_RESOLUTIONS) {
+                if (nb > Effect.POINT_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
+                double[][][] g = new double[poses][pts][nb];
+                for (int i = 0; i < poses; i++) for (int p = 0; p < pts; p++) Effect.bspline(xp[i][p][0], l0, h0, g[i][p]);
+                double[] s = new double[t.m * nb];
+                for (int i = 0; i < poses; i++)
+                    for (int a = 0; a < t.posRows; a++) {
+                        int row = i * rpp + a, p = t.pointOfRow(a);
+                        double sens = 0;
+                        for (int ax = 0; ax < 3; ax++) sens += t.endDTrans[0][row * 3 + ax] * dir[i][p][ax];
+                        for (int c = 0; c < nb; c++) s[row * nb + c] = sens * g[i][p][c];
+                    }
+                Probe pr = finish(t, s, nb);
+                pr.var = Var.SIGHT;
+                pr.sight = sight;
+                pr.instrument = inst;
+                pr.azimuthRef = azRef;
+                pr.lo = l0;
+                pr.hi = h0;
+                pr.basis = nb;
+                boolean range = sight == Effect.Sight.RANGE;
+                pr.variable = "instrument " + sight.words;
+                pr.shape = String.format(Locale.ROOT, "the measured positions err %s the instrument's line of sight with its %s reading "
+                        + "(%s%s)", range ? "along" : "across", sight.words, range ? String.format(Locale.ROOT, "%.2f..%.2f m", l0, h0)
+                        : String.format(Locale.ROOT, "%.0f..%.0f deg", Math.toDegrees(l0), Math.toDegrees(h0)),
+                        nb == Effect.POINT_BASIS ? "" : range ? String.format(Locale.ROOT, ", with features about %.0f mm long", 1e3 * (h0 - l0) / (nb - 3))
+                                : String.format(Locale.ROOT, ", with features about %.0f deg wide", Math.toDegrees(h0 - l0) / (nb - 3)));
+                double[][] xs = new double[1][poses];
+                for (int i = 0; i < poses; i++) xs[0][i] = range ? x[0][i] : Math.toDegrees(x[0][i]);
+                pr.x = xs;
+                pr.xLabel = "the instrument's " + sight.words + " reading" + (range ? " (m)" : " (deg)");
+                out.add(pr);
+            }
+            if (sight == Effect.Sight.RANGE) out.addAll(rangeCycles(t, inst, xp, dir, x, l0, h0));
+        }
+        return out;
+    }
+
+    /**
+     * A distance meter's cyclic error: sin and cos of 2π·r/λ along the line of sight, for periods λ
+     * from the readings' span down to {@link #MIN_RANGE_CYCLE_M} and at least 3 poses per period,
+     * on a grid of 3 points per independent frequency (1 / span cycles per metre): each period its
+     * own 2-column probe, as each harmonic of a joint is.
+     */
+    private static List<Probe> rangeCycles(Diagnoser.Tester t, org.robopro.kinematics.Pose inst, double[][][] xp, double[][][] dir,
+                                           double[][] x, double lo, double hi) {
+        List<Probe> out = new ArrayList<>();
+        int poses = xp.length, pts = xp[0].length, rpp = t.rpp;
+        double span = hi - lo;
+        double fMax = Math.min(1 / MIN_RANGE_CYCLE_M, poses / (3 * span)), step = 1 / (3 * span);
+        for (double f = 2 / span; f <= fMax; f += step) {
+            double lambda = 1 / f;
+            double[] s = new double[t.m * 2];
+            for (int i = 0; i < poses; i++)
+                for (int a = 0; a < t.posRows; a++) {
+                    int row = i * rpp + a, p = t.pointOfRow(a);
+                    double sens = 0;
+                    for (int ax = 0; ax < 3; ax++) sens += t.endDTrans[0][row * 3 + ax] * dir[i][p][ax];
+                    double ph = 2 * Math.PI * xp[i][p][0] / lambda;
+                    s[row * 2] = sens * Math.sin(ph);
+                    s[row * 2 + 1] = sens * Math.cos(ph);
+                }
+            Probe pr = finish(t, s, 2);
+            pr.var = Var.SIGHT;
+            pr.sight = Effect.Sight.RANGE;
+            pr.instrument = inst;
+            pr.cycle = lambda;
+            pr.lo = lo;
+            pr.hi = hi;
+            pr.variable = "instrument distance";
+            pr.shape = String.format(Locale.ROOT, "the measured positions err along the instrument's line of sight, repeating every "
+                    + "%.0f mm of its distance reading (a distance meter's cyclic error)", 1e3 * lambda);
+            pr.x = x;
+            pr.xLabel = "the instrument's distance reading (m)";
+            out.add(pr);
+        }
         return out;
     }
 

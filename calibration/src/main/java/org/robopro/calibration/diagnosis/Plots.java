@@ -83,7 +83,7 @@ final class Plots {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
                     : "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
-            case PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
+            case PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.angleJoint() + 1) + " angle q" + (e.angleJoint() + 1) + " (deg)";
             case POINT_SMOOTH -> switch (e.along()) {
                 case REACH -> "reach of the measured point (m)";
                 case HEIGHT -> "height of the measured point (m)";
@@ -92,6 +92,7 @@ final class Plots {
                 case PAYLOAD_REACH -> "reach of the measured point (m), times the payload";
             };
             case ZERO_STEP, TARGET_STEP -> "time since start (s)";
+            case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
@@ -107,11 +108,12 @@ final class Plots {
     private static double xOf(Effect e, Measurement row, PoseConditions c) {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()];
-            case PERIODIC, SCALE, SMOOTH, PAIR -> Math.toDegrees(row.q(e.joint()));
+            case PERIODIC, SCALE, SMOOTH, PAIR -> Math.toDegrees(row.q(e.angleJoint()));
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
             case ZERO_STEP, TARGET_STEP -> c.timeS();
+            case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case ANGLE_STEP -> Math.toDegrees(row.q(e.joint()));
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
@@ -140,7 +142,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;
@@ -180,8 +182,9 @@ final class Plots {
             nc = Math.sqrt(nc);
             double along = 0;
             if (nc > 0) for (int a = 0; a < d; a++) along += c[a] / nc * t.fit.r[r0 + a];
-            double pv = e.kind() == Effect.Kind.POINT_SMOOTH
-                    ? e.pointVariable(t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0]) : Double.NaN;
+            double[] pb = t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0];
+            double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(pb)
+                    : e.kind() == Effect.Kind.INSTRUMENT ? e.sightReadingOf(pb) * (e.sight() == Effect.Sight.RANGE ? 1 : 180 / Math.PI) : Double.NaN;
             x[mi] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
             y[mi] = (nc - along) * unit;
             fx[mi] = x[mi];

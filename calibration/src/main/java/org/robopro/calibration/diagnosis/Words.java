@@ -47,7 +47,13 @@ final class Words {
                             .append(" look like geometry on these poses and were left to the geometric model.");
                 yield sb.toString();
             }
-            case SMOOTH -> String.format(Locale.ROOT, "Joint %d has an angle-dependent error of %.4f deg (RMS over its range) that "
+            case SMOOTH -> e.angleJoint() != e.joint() ? String.format(Locale.ROOT, "Joint %d's error follows joint %d's angle, not in "
+                    + "proportion to it (%.4f deg RMS over joint %d's range, %.0f..%.0f deg), so it is no cross-coupling; none of the known "
+                    + "effects explains it (a cable or hose pulling as joint %d winds up, a linkage's play?). It is modelled as a smooth "
+                    + "curve of joint %d's angle (%d-function cubic spline) so compensation can use it, but its cause is unknown.",
+                    e.joint() + 1, e.angleJoint() + 1, Math.toDegrees(rmsSmooth(e, v)), e.angleJoint() + 1, Math.toDegrees(e.rangeLo()),
+                    Math.toDegrees(e.rangeHi()), e.angleJoint() + 1, e.angleJoint() + 1, e.basisCount())
+                    : String.format(Locale.ROOT, "Joint %d has an angle-dependent error of %.4f deg (RMS over its range) that "
                     + "none of the known effects explains; it is modelled as a smooth curve of the joint angle (%d-function "
                     + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
                     Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
@@ -63,6 +69,20 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
+            case INSTRUMENT -> e.sight() == Effect.Sight.RANGE ? String.format(Locale.ROOT, "The measured positions err along the "
+                    + "instrument's line of sight as a function of its distance reading (%.4f mm RMS over %.3f..%.3f m%s), which no error "
+                    + "of the robot explains: the instrument's distance meter (a cyclic error or a scale error of its interferometer or "
+                    + "absolute distance meter), not the robot. It is modelled so that it does not bend the robot's fit, and left out of "
+                    + "compensation: check the distance meter against a known length at several distances (the instrument's own "
+                    + "compensation or a field check) and measure again.", 1e3 * rmsInstrument(e, v), e.rangeLo(), e.rangeHi(),
+                    Double.isFinite(e.cycle()) ? String.format(Locale.ROOT, ", repeating every %.0f mm", 1e3 * e.cycle()) : "")
+                    : String.format(Locale.ROOT, "The measured positions err across the instrument's line of sight as a function of its "
+                    + "%s reading (%.2f arc-seconds RMS over %.0f..%.0f deg), which no error of the robot explains: the instrument's %s "
+                    + "(an angle encoder's error or its axes' misalignment), not the robot. It is modelled so that it does not bend the "
+                    + "robot's fit, and left out of compensation: run the instrument's two-face (front and back sight) check and its "
+                    + "compensation, and measure again.", e.sight().words, Math.toDegrees(rmsInstrument(e, v)) * 3600,
+                    Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()), e.sight() == Effect.Sight.AZIMUTH
+                    ? "horizontal angle" : "vertical angle");
             case ANGLE_STEP -> e.isWindow() ? String.format(Locale.ROOT, "Joint %d's reading is off by %.4f deg while the joint is "
                     + "between %.1f and %.1f deg, and none of the known effects explains it (an encoder's code track or scale misread "
                     + "over one window of the turn); it is modelled as such so compensation can use it, but its cause is unknown: "
@@ -163,6 +183,25 @@ final class Words {
      * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
      * the spline's constant is only nearly the zero's and can come out large and uncertain).
      */
+    /** RMS of an instrument-reading error over the readings' range: its spline's, or a cycle's amplitude over √2. */
+    static double rmsInstrument(Effect e, double[] v) {
+        return Double.isFinite(e.cycle()) ? Math.sqrt((v[0] * v[0] + v[1] * v[1]) / 2) : rmsCurve(e, v);
+    }
+
+    /** RMS over its range of a spline effect's curve, its mean included (an instrument's offset is part of its error). */
+    static double rmsCurve(Effect e, double[] v) {
+        int n = 200;
+        double[] g = new double[e.basisCount()];
+        double s = 0;
+        for (int i = 0; i < n; i++) {
+            Effect.bspline(e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (n - 1.0), e.rangeLo(), e.rangeHi(), g);
+            double y = 0;
+            for (int k = 0; k < g.length; k++) y += g[k] * v[k];
+            s += y * y;
+        }
+        return Math.sqrt(s / n);
+    }
+
     static double rmsSmooth(Effect e, double[] v) {
         int n = 200;
         double[] g = new double[e.basisCount()], y = new double[n];

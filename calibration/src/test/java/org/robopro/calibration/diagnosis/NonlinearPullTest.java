@@ -1,0 +1,84 @@
+package org.robopro.calibration.diagnosis;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.ToDoubleFunction;
+import org.junit.jupiter.api.Test;
+import org.robopro.calibration.WorldCampaigns;
+import org.robopro.calibration.measurement.Measurement;
+import org.robopro.calibration.measurement.MeasurementSet;
+import org.robopro.models.RobotLibrary;
+
+/**
+ * One drive pulled by another joint's angle, against truth written here: a world campaign with
+ * geometric errors only (org.robopro.world, nothing shared with {@link Effect}) whose joint-4
+ * readings are then made to lie by δ4(q). A cross-coupling of gears is linear, δ4 = κ·q6; a dress
+ * pack or cable that tightens as the wrist winds up pulls the drive by a stiff, non-linear function
+ * of the other joint (a spring that stiffens as it stretches), which a coupling holds only in its
+ * linear part. The first must be named a coupling; the second must not.
+ */
+class NonlinearPullTest {
+
+    /** The set with joint {@code j}'s reading replaced by what a controller reads when its output is off by δ(q_out). */
+    static MeasurementSet readOff(MeasurementSet set, int j, ToDoubleFunction<double[]> delta) {
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : set.rows()) {
+            double[] q = m.q().clone();
+            q[j] = Math.toRadians(Math.rint(Math.toDegrees(q[j] - delta.applyAsDouble(m.q())) * 1e4) / 1e4);
+            rows.add(new Measurement(m.poseId(), q, m.position(), m.orientation(), m.directions(), m.timeS(), m.tempC(),
+                    m.payloadKg(), m.set(), m.line(), m.points(), m.distance(), m.fromQ(), m.fromDirections()));
+        }
+        return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, set.pointNames(), set.anchor());
+    }
+
+    /**
+     * A hose that pulls joint 4 once joint 6 has wound up past 60°, with a stiffness that grows as
+     * it stretches: δ4 = 0.1°·((|q6| − 60°)/100°)³·sign q6 beyond 60°, nothing below. Linear in
+     * nothing, so no coupling j4←j6 may be claimed; the structure is located on joint 4.
+     */
+    @Test
+    void hoseTighteningWithTheWrist_isNotACoupling() {
+        var desc = RobotLibrary.shipped("irb2000");
+        WorldCampaigns.Sim c = WorldCampaigns.geometric(desc, 8, false, p -> p.withPoses(300, 100).withSigma(1e-5));
+        double slack = Math.toRadians(60), scale = Math.toRadians(100), amp = Math.toRadians(0.1);
+        ToDoubleFunction<double[]> hose = q -> {
+            double x = Math.abs(q[5]) - slack;
+            return x > 0 ? amp * Math.pow(x / scale, 3) * Math.signum(q[5]) : 0;
+        };
+        Diagnosis d = Diagnoser.diagnose(desc, readOff(c.train(), 3, hose), readOff(c.validation(), 3, hose));
+        assertEquals(List.of(), HeldOutFormsTest.families(d), "notes " + d.notes());
+        assertTrue(!d.located().isEmpty() || d.effects().stream().anyMatch(f -> f.effect().isFallback()), "nothing located: " + d.notes());
+        assertTrue(d.finalValidateRmsM() < 1.3 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+    }
+
+    /** A true gear cross-coupling, δ4 = κ·q6 with κ = 6·10⁻⁴, is still named a coupling j4←j6 (its smooth rival ties and the simpler form stays). */
+    @Test
+    void linearCoupling_isStillNamed() {
+        var desc = RobotLibrary.shipped("irb2000");
+        WorldCampaigns.Sim c = WorldCampaigns.geometric(desc, 9, false, p -> p.withPoses(300, 100).withSigma(1e-5));
+        ToDoubleFunction<double[]> kappa = q -> 6e-4 * q[5];
+        Diagnosis d = Diagnoser.diagnose(desc, readOff(c.train(), 3, kappa), readOff(c.validation(), 3, kappa));
+        assertEquals(List.of("joint-coupling j4<-j6"), HeldOutFormsTest.families(d), "notes " + d.notes());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+    }
+
+    /** The smooth error following another joint reads and writes its source joint, and its regressor follows that joint. */
+    @Test
+    void smoothFollowingAnotherJoint_roundTrips() {
+        Effect e = Effect.smoothFollowing(3, 5, -3, 3, 7);
+        assertEquals("joint-smooth-error j4 (following j6)", e.label());
+        assertEquals(List.of(4, 6), e.joints1());
+        double[] g = new double[7], b = new double[7], q = {0.1, 0.2, 0.3, 0.4, 0.5, 1.7};
+        e.regressor(q, org.robopro.calibration.PoseConditions.NONE, g);
+        Effect.bspline(1.7, -3, 3, b);
+        for (int i = 0; i < 7; i++) assertEquals(b[i], g[i], 0);
+        var model = org.robopro.kinematics.KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        double[] v = {1e-4, 2e-4, -1e-4, 0, 3e-4, 1e-4, -2e-4};
+        Effect back = Effect.fromDescription(e.describe(v), model, null, "x.json").effect();
+        assertEquals(e.label(), back.label());
+        assertEquals(5, back.angleJoint());
+    }
+}
