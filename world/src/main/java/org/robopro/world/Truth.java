@@ -135,9 +135,16 @@ final class Truth {
         }
         if (!w.wobbles().isEmpty()) {
             List<Map<String, Object>> ws = new ArrayList<>();
-            for (WorldRobot.Wobble wb : w.wobbles())
-                ws.add(Map.of("joint", wb.joint() + 1, "tilt_deg", Math.toDegrees(wb.tiltRad()), "ratio", wb.ratio(), "phase_rad", wb.phase(),
-                        "form", "axis tilted by tilt about a perpendicular direction at angle ratio theta + phase, about the axis point"));
+            for (WorldRobot.Wobble wb : w.wobbles()) {
+                Map<String, Object> m = new LinkedHashMap<>();
+                m.put("joint", wb.joint() + 1);
+                m.put("tilt_deg", Math.toDegrees(wb.tiltRad()));
+                m.put("ratio", wb.ratio());
+                m.put("phase_rad", wb.phase());
+                m.put("form", "the axis w (joint's true axis at zero) tilted by tilt about d = cos(ratio theta + phase) u + sin(ratio theta + phase) v "
+                        + "through its axis point; u = w x (the base axis least along w), normalised; v = w x u; theta the model angle");
+                ws.add(m);
+            }
             root.put("bearing_wobbles", ws);
         }
         if (w.sag() != null)
