@@ -79,6 +79,20 @@ public record Arm(boolean[] prismatic, double[][] points, double[][] axes, Rigid
     }
 
     /**
+     * The flange frame when joint i's factor is preceded by {@code pre[i]} (null: nothing), a
+     * transform in the zero-position coordinates of the chain at that joint (e.g. a tilt of its
+     * axis about the axis point): T = ... pre_i e^[S_i]theta_i ... M.
+     */
+    public Rigid flange(double[] theta, Rigid[] pre) {
+        Rigid t = Rigid.IDENTITY;
+        for (int i = 0; i < dof(); i++) {
+            if (pre[i] != null) t = t.times(pre[i]);
+            t = t.times(joint(i, theta[i]));
+        }
+        return t.times(flange);
+    }
+
+    /**
      * The arm with each link grown by its own strain: the pedestal (base origin to the first joint
      * point) by {@code strain[0]}, the link from joint point i to joint point i+1 by
      * {@code strain[i+1]} (0-based i), the last link (last joint point to the flange origin) by

@@ -28,8 +28,12 @@ public sealed interface JointError {
      * @param lastMove each drive's last motion (rad or m, signed), or null when every move was long
      * @param timeS    seconds since the campaign started (NaN: unknown)
      * @param tempC    the drive's temperature, °C (NaN: unknown)
+     * @param driveTorque the gravity torque each drive carries at the pose (N·m, tau_q = C^T tau_theta), or null
      */
-    record Moment(int[] dir, double[] lastMove, double timeS, double tempC) { }
+    record Moment(int[] dir, double[] lastMove, double timeS, double tempC, double[] driveTorque) {
+        /** A moment without the drives' gravity torques. */
+        public Moment(int[] dir, double[] lastMove, double timeS, double tempC) { this(dir, lastMove, timeS, tempC, null); }
+    }
 
     /**
      * Transmission error of a reducer: a sum of harmonics of the output angle,
@@ -105,6 +109,26 @@ public sealed interface JointError {
      */
     record AsymmetricLostMotion(int joint, double up, double down) implements JointError {
         @Override public double delta(double[] q, Moment m) { return m.dir()[joint] > 0 ? -0.5 * up : 0.5 * down; }
+    }
+
+    /**
+     * Lost motion held on one flank by gravity: the load's torque on the output presses the gear
+     * against one flank of the play wherever it exceeds {@code holdTorque} (the output side's
+     * friction, which otherwise keeps the output where the motor's last motion left it). A positive
+     * torque pushes the output ahead of the motor: q_out = q - (b/2) flank with flank = -sign(tau)
+     * where |tau| &gt; holdTorque, flank = dir (the last motion's side, {@link LostMotion}) elsewhere.
+     * So the play shows its dependence on the direction only where the joint's gravity torque is
+     * small; elsewhere it is a step with the torque's sign. (Nordin &amp; Gutman, Automatica 38 (2002),
+     * §2: a backlash's output stays in contact with one flank while the load torque holds it there.)
+     * The torque is the drive's, tau_q = C^T tau_theta, from the moment's {@code driveTorque}.
+     */
+    record GravityHeldLostMotion(int joint, double width, double holdTorque) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            if (m.driveTorque() == null) throw new IllegalStateException("lost motion held by gravity needs the drive's gravity torque");
+            double tau = m.driveTorque()[joint];
+            int flank = Math.abs(tau) > holdTorque ? (tau > 0 ? -1 : 1) : m.dir()[joint];
+            return -0.5 * width * flank;
+        }
     }
 
     /**

@@ -79,7 +79,73 @@ final class Truth {
                 masses.add(Map.of("joint", m.joint() + 1, "mass_kg", m.kg(), "centre_mm", mm(m.centre())));
             List<Object> k = new ArrayList<>();
             for (double s : co.stiffness()) k.add(Double.isInfinite(s) ? "rigid" : s);
-            root.put("compliance", Map.of("stiffness_nm_per_rad", k, "masses", masses));
+            Map<String, Object> cm = new LinkedHashMap<>();
+            cm.put("stiffness_nm_per_rad", k);
+            cm.put("masses", masses);
+            if (Arrays.stream(co.hardening()).anyMatch(Double::isFinite)) {
+                List<Object> h = new ArrayList<>();
+                for (double d : co.hardening()) h.add(Double.isInfinite(d) ? "linear" : Math.toDegrees(d));
+                cm.put("hardening_deg", h);
+                cm.put("hardening_form", "tau = k dq (1 + (dq/dh)^2): tangent stiffness k (1 + 3 (dq/dh)^2)");
+            }
+            root.put("compliance", cm);
+        }
+        if (w.tracker() != null) {
+            WorldRobot.Tracker t = w.tracker();
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("form", "range' = range (1 + scale) + a sin(2 pi range / period + phase); az' = az + sum a_k sin(k az + phi_k); el' likewise; "
+                    + "in the instrument's frame, azimuth about its own z");
+            m.put("cyclic_um", t.cyclicM() * 1e6);
+            m.put("cyclic_period_mm", t.periodM() * 1e3);
+            m.put("cyclic_phase_rad", t.cyclicPhase());
+            m.put("range_scale", t.rangeScale());
+            m.put("azimuth_cycles_per_turn", Arrays.stream(t.azK()).boxed().toList());
+            m.put("azimuth_amplitude_arcsec", Arrays.stream(t.azAmp()).map(v -> Math.toDegrees(v) * 3600).boxed().toList());
+            m.put("azimuth_phase_rad", Arrays.stream(t.azPhase()).boxed().toList());
+            m.put("elevation_cycles_per_turn", Arrays.stream(t.elK()).boxed().toList());
+            m.put("elevation_amplitude_arcsec", Arrays.stream(t.elAmp()).map(v -> Math.toDegrees(v) * 3600).boxed().toList());
+            m.put("elevation_phase_rad", Arrays.stream(t.elPhase()).boxed().toList());
+            root.put("tracker", m);
+        }
+        if (w.rocking() != null) {
+            WorldRobot.Rocking ro = w.rocking();
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("form", "square foot in z = 0 on the base axes; about the foot edge with the largest overturning moment M of the arm's "
+                    + "weight and payload: tilt = (M - hold) / stiffness when M > hold, else none");
+            m.put("half_width_mm", ro.halfWidthM() * 1e3);
+            m.put("hold_moment_nm", ro.holdMomentNm());
+            m.put("stiffness_nm_per_rad", ro.stiffnessNmPerRad());
+            List<Map<String, Object>> masses = new ArrayList<>();
+            for (WorldRobot.Mass ms : ro.masses()) masses.add(Map.of("joint", ms.joint() + 1, "mass_kg", ms.kg(), "centre_mm", mm(ms.centre())));
+            m.put("masses", masses);
+            root.put("rocking", m);
+        }
+        if (w.dressPack() != null) {
+            WorldRobot.DressPack d = w.dressPack();
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("form", "s = r sqrt((theta4 + theta6)^2 + (bend (theta5 - centre))^2); T = k_hose (s - r slack) when taut; "
+                    + "tau_j = -T ds/dtheta_j; each wrist drive yields tau_q / k");
+            m.put("radius_mm", d.radiusM() * 1e3);
+            m.put("slack_deg", Math.toDegrees(d.slackRad()));
+            m.put("bend", d.bend());
+            m.put("bend_centre_deg", Math.toDegrees(d.bendCentreRad()));
+            m.put("hose_stiffness_n_per_m", d.hoseStiffnessNPerM());
+            m.put("wrist_stiffness_nm_per_rad", Arrays.stream(d.wristStiffness()).boxed().toList());
+            root.put("dress_pack", m);
+        }
+        if (!w.wobbles().isEmpty()) {
+            List<Map<String, Object>> ws = new ArrayList<>();
+            for (WorldRobot.Wobble wb : w.wobbles()) {
+                Map<String, Object> m = new LinkedHashMap<>();
+                m.put("joint", wb.joint() + 1);
+                m.put("tilt_deg", Math.toDegrees(wb.tiltRad()));
+                m.put("ratio", wb.ratio());
+                m.put("phase_rad", wb.phase());
+                m.put("form", "the axis w (joint's true axis at zero) tilted by tilt about d = cos(ratio theta + phase) u + sin(ratio theta + phase) v "
+                        + "through its axis point; u = w x (the base axis least along w), normalised; v = w x u; theta the model angle");
+                ws.add(m);
+            }
+            root.put("bearing_wobbles", ws);
         }
         if (w.sag() != null)
             root.put("sag", Map.of("size_mm", w.sag().sizeM() * 1e3, "per_kg_mm", w.sag().perKgM() * 1e3, "ref_reach_m", w.sag().refReachM()));
@@ -128,6 +194,10 @@ final class Truth {
             m.put("type", "lost motion building up over the move (output = q - b/2 dir (1 - exp(-|move|/x0)))");
             m.put("width_deg", Math.toDegrees(wu.width()));
             m.put("build_up_deg", Math.toDegrees(wu.buildUp()));
+        } else if (e instanceof JointError.GravityHeldLostMotion g) {
+            m.put("type", "lost motion held by gravity (output = q - b/2 flank; flank = -sign(tau_q) where |tau_q| > hold, else dir)");
+            m.put("width_deg", Math.toDegrees(g.width()));
+            m.put("hold_torque_nm", g.holdTorque());
         } else if (e instanceof JointError.Slip sl) {
             m.put("type", "encoder slip (outside)");
             m.put("at_s", sl.atS());

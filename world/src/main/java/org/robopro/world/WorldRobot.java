@@ -21,8 +21,12 @@ import org.robopro.models.RobotDescription;
  * <li>product of exponentials to the flange, then the tool (measured target);</li>
  * <li>an optional position-dependent error of the measured point ({@link Sag});</li>
  * <li>the measured target may be knocked on the flange mid-campaign ({@link ToolBump});</li>
- * <li>the instrument's frame, which may drift with temperature and time.</li>
+ * <li>the instrument's frame, which may drift with temperature and time;</li>
+ * <li>the instrument's own reading errors ({@link Tracker}).</li>
  * </ol>
+ * Besides: a joint's bearing may wobble ({@link Wobble}, in the chain), the wrist's drives may
+ * yield to a dress pack's pull ({@link DressPack}, with the gravity yield), and the whole robot
+ * may rock on its foundation ({@link Rocking}, about a foot edge, after the chain).
  * Noise is added by the campaign, not here. SI units, angles rad. Immutable.
  *
  * @param robotName          the robot file's name
@@ -36,14 +40,26 @@ import org.robopro.models.RobotDescription;
  * @param compliance         joint elasticity, or null
  * @param sag                position-dependent error of the measured point, or null
  * @param toolBump           the measured target knocked to another place on the flange during the campaign, or null
+ * @param tracker            the laser tracker's own reading errors (distance meter, angle encoders), or null
+ * @param rocking            the base rocking on its foundation above an overturning moment, or null
+ * @param dressPack          the dress pack (cable hose) pulling on the wrist, or null
+ * @param wobbles            bearing wobbles: joint axes tilting about a direction that turns with the joint
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
-                         ToolBump toolBump) {
+                         ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles) {
     public WorldRobot {
         coupling = copy(coupling);
         zeroOffsets = zeroOffsets.clone();
         errors = List.copyOf(errors);
+        wobbles = wobbles == null ? List.of() : List.copyOf(wobbles);
+    }
+
+    /** A robot without tracker errors, rocking, dress pack or bearing wobble. */
+    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
+                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag, ToolBump toolBump) {
+        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump,
+                null, null, null, List.of());
     }
 
     @Override public double[][] coupling() { return copy(coupling); }
@@ -97,18 +113,38 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     /**
      * Joint elasticity: each drive's stiffness k (N·m/rad, infinite: rigid), the true link masses,
      * the payload's centre of mass in flange coordinates and gravity (m/s^2, base coordinates).
+     * A drive may stiffen with its load ({@code hardening}, rad; infinite: a linear spring): a
+     * cubic-hardening spring tau = k dq (1 + (dq/dh)^2), whose tangent stiffness k (1 + 3 (dq/dh)^2)
+     * rises with the deflection. Reducers stiffen so: the torque-torsion curves of strain-wave
+     * (Harmonic Drive) and cycloidal (RV) gears are catalogued as stiffnesses K1 &lt; K2 &lt; K3 over
+     * rising torque ranges (e.g. Harmonic Drive AG, CSG/CSD catalogues, "Torsional stiffness"), and
+     * Tuttle &amp; Seering, "A nonlinear model of a harmonic drive gear transmission", IEEE Trans.
+     * Robotics and Automation 12 (1996) 368-374, measured a stiffness that grows with the torque;
+     * the cubic is a smooth form of those piecewise curves.
      */
-    public record Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity) {
+    public record Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity, double[] hardening) {
         public Compliance {
             stiffness = stiffness.clone();
             masses = List.copyOf(masses);
             payloadCentre = payloadCentre.clone();
             gravity = gravity.clone();
+            if (hardening == null) {
+                hardening = new double[stiffness.length];
+                java.util.Arrays.fill(hardening, Double.POSITIVE_INFINITY);
+            } else {
+                hardening = hardening.clone();
+            }
+        }
+
+        /** Linear springs. */
+        public Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity) {
+            this(stiffness, masses, payloadCentre, gravity, null);
         }
 
         @Override public double[] stiffness() { return stiffness.clone(); }
         @Override public double[] payloadCentre() { return payloadCentre.clone(); }
         @Override public double[] gravity() { return gravity.clone(); }
+        @Override public double[] hardening() { return hardening.clone(); }
 
         /**
          * The true masses of a robot file's mass model, each off by a factor drawn uniformly in
@@ -131,7 +167,28 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         public Compliance withStiffness(int joint, double k) {
             double[] s = stiffness.clone();
             s[joint] = k;
-            return new Compliance(s, masses, payloadCentre, gravity);
+            return new Compliance(s, masses, payloadCentre, gravity, hardening);
+        }
+
+        /** The same with drive {@code joint} a cubic-hardening spring (its tangent stiffness doubles at dq = dh / sqrt(3)). */
+        public Compliance withHardening(int joint, double dhRad) {
+            double[] h = hardening.clone();
+            h[joint] = dhRad;
+            return new Compliance(stiffness, masses, payloadCentre, gravity, h);
+        }
+
+        /**
+         * The deflection of drive {@code joint} under torque tau: tau / k for a linear spring; for a
+         * hardening one the real root of k dq + (k / dh^2) dq^3 = tau (Cardano: the cubic
+         * dq^3 + p dq - r = 0 with p = dh^2 &gt; 0 has one real root).
+         */
+        public double deflection(int joint, double tau) {
+            double k = stiffness[joint], dh = hardening[joint];
+            if (Double.isInfinite(k)) return 0;
+            if (Double.isInfinite(dh)) return tau / k;
+            double p = dh * dh, r = tau * dh * dh / k;
+            double d = Math.sqrt(r * r / 4 + p * p * p / 27);
+            return Math.cbrt(r / 2 + d) + Math.cbrt(r / 2 - d);
         }
     }
 
@@ -171,6 +228,179 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         }
     }
 
+    /**
+     * The laser tracker's own reading errors, in its frame (x_instrument = instrumentFromBase x_base):
+     * its standing axis is its own z, the azimuth az = atan2(y, x) is read about it, the elevation
+     * el = atan2(z, sqrt(x^2 + y^2)) above its xy plane, the range rho = |x| from its gimbal point.
+     * <ul>
+     * <li>distance meter: rho' = rho (1 + rangeScale) + cyclic sin(2 pi rho / period + cyclicPhase).
+     *     A phase-measuring distance meter's cyclic error repeats with half its fine modulation
+     *     wavelength (crosstalk between the transmitter and the receiver adds a signal of fixed
+     *     phase to the measured one): J. M. Rüeger, "Electronic Distance Measurement", 4th ed.,
+     *     Springer 1996, the chapter on cyclic errors; the error is along the line of sight;</li>
+     * <li>angle encoders: az' = az + sum azAmp_i sin(azK_i az + azPhase_i), el' likewise in el. An
+     *     encoder disc mounted off its axis reads a once-per-turn error, a disc out of round a
+     *     twice-per-turn one; the tracker's error models carry them as the first Fourier terms of
+     *     each encoder (B. Muralikrishnan et al., "ASME B89.4.19 performance evaluation tests and
+     *     geometric misalignments in laser trackers", J. Res. NIST 114 (2009) 21-35, encoder
+     *     eccentricity parameters; "Laser trackers for large-scale dimensional metrology: a review",
+     *     Precision Engineering 44 (2016) 13-28). The point moves tangentially by rho times the
+     *     angle error.</li>
+     * </ul>
+     * Orientation (6-D) is read by other means and is left as it is. Angles rad, lengths m.
+     */
+    public record Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
+                          int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase) {
+        public Tracker {
+            azK = azK.clone();
+            azAmp = azAmp.clone();
+            azPhase = azPhase.clone();
+            elK = elK.clone();
+            elAmp = elAmp.clone();
+            elPhase = elPhase.clone();
+            if (azK.length != azAmp.length || azK.length != azPhase.length || elK.length != elAmp.length || elK.length != elPhase.length)
+                throw new IllegalArgumentException("encoder harmonic arrays differ in length");
+        }
+
+        @Override public int[] azK() { return azK.clone(); }
+        @Override public double[] azAmp() { return azAmp.clone(); }
+        @Override public double[] azPhase() { return azPhase.clone(); }
+        @Override public int[] elK() { return elK.clone(); }
+        @Override public double[] elAmp() { return elAmp.clone(); }
+        @Override public double[] elPhase() { return elPhase.clone(); }
+
+        /** The range reading of a true range rho, m. */
+        public double range(double rho) { return rho * (1 + rangeScale) + cyclicM * Math.sin(2 * Math.PI * rho / periodM + cyclicPhase); }
+
+        /** The azimuth reading of a true azimuth, rad. */
+        public double azimuth(double az) { return az + series(azK, azAmp, azPhase, az); }
+
+        /** The elevation reading of a true elevation, rad. */
+        public double elevation(double el) { return el + series(elK, elAmp, elPhase, el); }
+
+        /** The position the tracker reports for a true position x (its frame, m). */
+        public double[] read(double[] x) {
+            double h = Math.hypot(x[0], x[1]), rho = Rigid.norm(x);
+            double az = azimuth(Math.atan2(x[1], x[0])), el = elevation(Math.atan2(x[2], h)), r = range(rho);
+            return new double[] {r * Math.cos(el) * Math.cos(az), r * Math.cos(el) * Math.sin(az), r * Math.sin(el)};
+        }
+
+        private static double series(int[] k, double[] a, double[] ph, double x) {
+            double s = 0;
+            for (int i = 0; i < k.length; i++) s += a[i] * Math.sin(k[i] * x + ph[i]);
+            return s;
+        }
+    }
+
+    /**
+     * The robot's base rocking on its foundation: the base plate, a square of half-width
+     * {@code halfWidthM} centred on the base origin in the plane z = 0 with its edges along the base
+     * x and y axes, is held down by anchor bolts. The arm's weight (these masses, and the payload at
+     * the flange) has a moment about each foot edge, M = e · sum (c - p_edge) × m g, with e the edge's
+     * direction taken so that M &gt; 0 tips the robot over that edge (statics of a rigid body on a
+     * support line: e.g. Meriam &amp; Kraige, "Engineering Mechanics: Statics", tipping about an edge).
+     * Below {@code holdMomentNm} (the bolts' preload and the pedestal's own weight) the base stays down;
+     * above it the plate lifts off the far side and the whole robot turns about the edge by
+     * (M - hold) / stiffness (the bolts' stretch: a rotational spring). Of the four edges the one with
+     * the largest excess acts. Gravity's change of direction in the tilted base is second order and left
+     * out.
+     */
+    public record Rocking(double halfWidthM, double holdMomentNm, double stiffnessNmPerRad, List<Mass> masses, double[] payloadCentre,
+                          double[] gravity) {
+        public Rocking {
+            masses = List.copyOf(masses);
+            payloadCentre = payloadCentre.clone();
+            gravity = gravity.clone();
+        }
+
+        @Override public double[] payloadCentre() { return payloadCentre.clone(); }
+        @Override public double[] gravity() { return gravity.clone(); }
+
+        /** The foot edges' outward normals (base x, -x, y, -y). */
+        static final double[][] NORMALS = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+
+        /** The overturning moment about each foot edge (N·m, positive: tips over it) with the masses' centres {@code centres} (base, m). */
+        public double[] moments(List<double[]> centres, List<Double> kg) {
+            double[] out = new double[4];
+            for (int e = 0; e < 4; e++) {
+                double[] n = NORMALS[e], p = Rigid.scale(n, halfWidthM), axis = Rigid.cross(new double[] {0, 0, 1}, n);
+                for (int i = 0; i < centres.size(); i++)
+                    out[e] += Rigid.dot(axis, Rigid.cross(Rigid.minus(centres.get(i), p), Rigid.scale(gravity, kg.get(i))));
+            }
+            return out;
+        }
+
+        /** The base's turn (identity below the hold moment) for the edge moments {@code m}. */
+        public Rigid tilt(double[] m) {
+            int best = 0;
+            for (int e = 1; e < 4; e++) if (m[e] > m[best]) best = e;
+            if (!(m[best] > holdMomentNm)) return Rigid.IDENTITY;
+            double[] n = NORMALS[best];
+            return Rigid.rotation(Rigid.cross(new double[] {0, 0, 1}, n), (m[best] - holdMomentNm) / stiffnessNmPerRad, Rigid.scale(n, halfWidthM));
+        }
+    }
+
+    /**
+     * A dress pack (cable and hose package) on the wrist, held by a spring retractor on the forearm:
+     * between its clamps on the forearm and on the tool the hose runs around the wrist at radius
+     * {@code radiusM}; winding the wrist (u = theta4 + theta6: with joint 5 straight, joints 4 and 6
+     * turn about one line and the hose twists by their sum) and bending it (theta5) draw hose out, a
+     * path length s = r sqrt(u^2 + (bend (theta5 - bendCentre))^2). Up to the slack s0 = r slackRad the
+     * hose hangs loose; beyond it the retractor's spring pulls with T = hoseStiffness (s - s0). By
+     * virtual work (the hose's tension does work -T ds) each wrist joint feels tau_j = -T ds/dtheta_j
+     * (e.g. Siciliano et al., "Robotics: Modelling, Planning and Control", 2009, §3.8.2, forces and
+     * torques through a Jacobian transpose), which its drive yields to through its own stiffness,
+     * as the gravity torques do: tau_q = C^T tau_theta, dq = tau_q / k, theta += C dq.
+     *
+     * @param wristStiffness drives 4, 5, 6 (N·m/rad)
+     */
+    public record DressPack(double radiusM, double slackRad, double bend, double bendCentreRad, double hoseStiffnessNPerM,
+                            double[] wristStiffness) {
+        public DressPack { wristStiffness = wristStiffness.clone(); }
+
+        @Override public double[] wristStiffness() { return wristStiffness.clone(); }
+
+        /** The hose's pull on model joints 4, 5, 6 (N·m) at the wrist's model angles. */
+        public double[] torques(double t4, double t5, double t6) {
+            double u = t4 + t6, v = bend * (t5 - bendCentreRad);
+            double s = radiusM * Math.hypot(u, v), slack = radiusM * slackRad;
+            if (!(s > slack)) return new double[3];
+            double tension = hoseStiffnessNPerM * (s - slack);
+            double r2s = radiusM * radiusM / s;
+            return new double[] {-tension * r2s * u, -tension * r2s * v * bend, -tension * r2s * u};
+        }
+    }
+
+    /**
+     * A joint's bearing wobbling: its axis tilts by {@code tiltRad} about a direction perpendicular
+     * to it that turns at {@code ratio} times the joint's angle, d = cos(ratio theta + phase) u +
+     * sin(ratio theta + phase) v (u, v perpendicular to the axis, fixed to the link before the joint).
+     * Everything outboard turns with the tilt about the axis point (the bearing's centre): an axis
+     * tilt, not an angle error. Ratio 1 would be a tilt fixed to the rotor (geometry); 2, a bearing
+     * seat out of round; about 0.4, the cage of a rolling bearing, which turns at the fundamental
+     * train frequency (1/2)(1 - (d/D) cos alpha) of the shaft's speed (d the rolling elements'
+     * diameter, D the pitch diameter, alpha the contact angle; d/D 0.2-0.25 gives 0.38-0.40: T. A.
+     * Harris &amp; M. N. Kotzalas, "Rolling Bearing Analysis", 5th ed., 2007, Vol. 1, the kinematics of
+     * rolling bearings), so a rolling element set with one large element or a cage out of round tilts
+     * the axis at that ratio.
+     */
+    public record Wobble(int joint, double tiltRad, double ratio, double phase) {
+        /** The transform of the tilt at model angle theta of the joint, given the arm's axis and point (zero position). */
+        public Rigid tilt(double[] axis, double[] point, double theta) {
+            double[] u = perpendicular(axis), v = Rigid.cross(axis, u);
+            double a = ratio * theta + phase;
+            double[] d = Rigid.plus(Rigid.scale(u, Math.cos(a)), Rigid.scale(v, Math.sin(a)));
+            return Rigid.rotation(Rigid.unit(d), tiltRad, point);
+        }
+
+        /** A unit vector perpendicular to w: w × the base axis least along w, normalised. */
+        static double[] perpendicular(double[] w) {
+            double ax = Math.abs(w[0]), ay = Math.abs(w[1]), az = Math.abs(w[2]);
+            double[] e = ax <= ay && ax <= az ? new double[] {1, 0, 0} : ay <= az ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
+            return Rigid.unit(Rigid.cross(w, e));
+        }
+    }
+
     /** The nominal robot of a file, as the world sees it: no errors, instrument = base. */
     public static WorldRobot nominal(RobotDescription robot, double[] targetInFlangeM) {
         int n = robot.dof();
@@ -206,28 +436,53 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         int n = dof();
         double[] qo = q.clone();
         for (int i = 0; i < n; i++) qo[i] += zeroOffsets[i];
-        JointError.Moment moment = new JointError.Moment(dir, lastMove, timeS, tempC);
-        for (JointError e : errors) qo[e.joint()] += e.delta(q, moment);
-        double[] theta = times(coupling, qo);
         Arm a = arm;
         if (thermal != null && Double.isFinite(tempC)) {
             double[] strain = thermal.linkAlpha.clone();
             for (int i = 0; i < strain.length; i++) strain[i] *= tempC - thermal.refC;
             a = arm.grown(strain);
         }
+        double[] driveTorque = null;
+        if (errors.stream().anyMatch(e -> e instanceof JointError.GravityHeldLostMotion)) {
+            if (compliance == null) throw new IllegalStateException("lost motion held by gravity needs the masses (a compliance)");
+            driveTorque = driveSide(gravityTorques(a, times(coupling, qo), payload));
+        }
+        JointError.Moment moment = new JointError.Moment(dir, lastMove, timeS, tempC, driveTorque);
+        for (JointError e : errors) qo[e.joint()] += e.delta(q, moment);
+        double[] theta = times(coupling, qo);
+        double[] hose = dressPack != null && n >= 6 ? dressPack.torques(theta[3], theta[4], theta[5]) : null;
         if (compliance != null) {
-            double[] tau = gravityTorques(a, theta, payload);
-            double[] tauQ = new double[n];
-            for (int j = 0; j < n; j++) for (int i = 0; i < n; i++) tauQ[j] += coupling[i][j] * tau[i];
+            double[] tauQ = driveSide(gravityTorques(a, theta, payload));
             double[] dq = new double[n];
-            for (int j = 0; j < n; j++) dq[j] = tauQ[j] / compliance.stiffness[j];
+            for (int j = 0; j < n; j++) dq[j] = compliance.deflection(j, tauQ[j]);
+            double[] dTheta = times(coupling, dq);
+            for (int i = 0; i < n; i++) theta[i] += dTheta[i];
+        }
+        if (hose != null) {
+            double[] tau = new double[n];
+            for (int j = 0; j < 3; j++) tau[3 + j] = hose[j];
+            double[] tauQ = driveSide(tau);
+            double[] dq = new double[n];
+            for (int j = 0; j < 3; j++) dq[3 + j] = tauQ[3 + j] / dressPack.wristStiffness[j];
             double[] dTheta = times(coupling, dq);
             for (int i = 0; i < n; i++) theta[i] += dTheta[i];
         }
         Rigid onFlange = toolBump != null && Double.isFinite(timeS) && timeS >= toolBump.atS() ? toolBump.apply(flangeToTool) : flangeToTool;
         if (thermal != null && thermal.holderAlpha != 0 && Double.isFinite(tempC))
             onFlange = new Rigid(onFlange.r(), Rigid.scale(onFlange.p(), 1 + thermal.holderAlpha * (tempC - thermal.refC)));
-        Rigid tool = a.flange(theta).times(onFlange);
+        Rigid flangeNow;
+        if (wobbles.isEmpty()) {
+            flangeNow = a.flange(theta);
+        } else {
+            Rigid[] pre = new Rigid[n];
+            double[][] axes = a.axes(), pts = a.points();
+            for (Wobble wb : wobbles) {
+                Rigid t = wb.tilt(axes[wb.joint()], pts[wb.joint()], theta[wb.joint()]);
+                pre[wb.joint()] = pre[wb.joint()] == null ? t : pre[wb.joint()].times(t);
+            }
+            flangeNow = a.flange(theta, pre);
+        }
+        Rigid tool = flangeNow.times(onFlange);
         if (sag != null) {
             double[] p = tool.p();
             double[] w = a.axes()[0], p0 = a.points()[0];
@@ -236,6 +491,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             p[2] -= sag.at(r, payload);
             tool = new Rigid(tool.r(), p);
         }
+        if (rocking != null) tool = rocking.tilt(overturningMoments(a, theta, payload)).times(tool);
         Rigid inst = instrumentFromBase;
         if (thermal != null) {
             double[] drift = new double[3];
@@ -244,7 +500,32 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
                         + (Double.isFinite(timeS) ? thermal.driftPerS[i] * timeS : 0);
             inst = new Rigid(inst.r(), Rigid.plus(inst.p(), drift));
         }
-        return inst.times(tool);
+        Rigid seen = inst.times(tool);
+        return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p()));
+    }
+
+    /** Torques on the model joints carried to the drives by virtual work: tau_q = C^T tau_theta. */
+    double[] driveSide(double[] tauTheta) {
+        int n = dof();
+        double[] tauQ = new double[n];
+        for (int j = 0; j < n; j++) for (int i = 0; i < n; i++) tauQ[j] += coupling[i][j] * tauTheta[i];
+        return tauQ;
+    }
+
+    /** The arm's overturning moments about the base's four foot edges at model angles theta ({@link Rocking#moments}). */
+    public double[] overturningMoments(Arm a, double[] theta, double payload) {
+        Rigid[] body = a.bodies(theta);
+        List<double[]> c = new ArrayList<>();
+        List<Double> kg = new ArrayList<>();
+        for (Mass m : rocking.masses()) {
+            c.add(body[m.joint].apply(m.centre));
+            kg.add(m.kg);
+        }
+        if (payload > 0) {
+            c.add(body[dof() - 1].apply(a.flange().apply(rocking.payloadCentre)));
+            kg.add(payload);
+        }
+        return rocking.moments(c, kg);
     }
 
     /**
@@ -280,36 +561,52 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
+    }
+
+    public WorldRobot withTracker(Tracker t) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles);
+    }
+
+    public WorldRobot withRocking(Rocking r) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles);
+    }
+
+    public WorldRobot withDressPack(DressPack d) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles);
+    }
+
+    public WorldRobot withWobbles(List<Wobble> w) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w);
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
     }
 
     static double[] times(double[][] m, double[] v) {
