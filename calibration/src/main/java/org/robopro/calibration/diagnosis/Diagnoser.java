@@ -588,6 +588,9 @@ public final class Diagnoser {
         if (lag != null && !excluded.contains(claimKey(Effect.thermalLinks(model, t0C)))) {
             Effect lagged = commonLag(geoTester, model, t0C, lag, w.conditions);
             if (lagged != null) family.add(lagged);
+            // and with the links also warmed by the drives as the robot works (the time constant that predicts best)
+            Effect warmed = commonWarmUp(geoTester, lagged != null ? lagged : Effect.thermalLinks(model, t0C), w.conditions);
+            if (warmed != null) family.add(warmed);
         }
         Map<String, Effect> rivals = new LinkedHashMap<>();
         for (Effect e : locatedFallbacks(foundGeo, rows, model)) rivals.putIfAbsent(e.label(), e);
@@ -844,7 +847,7 @@ public final class Diagnoser {
             if (e.kind() != Effect.Kind.THERMAL_LINK || !e.lags()) continue;
             double with = w.validateError(fit);
             Selection saved = Selection.of(selected, absorbedCols, steps);
-            Effect unlagged = Effect.thermalLinks(model, t0C);
+            Effect unlagged = Effect.withoutLags(e);
             Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, unlagged, false);
             int at = selected.indexOf(unlagged);
             if (at < 0) {
@@ -861,6 +864,33 @@ public final class Diagnoser {
                 continue;
             }
             fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
+            break;
+        }
+        // Likewise the drives' warm-up: kept only when it predicts the validation poses better than the growth without it.
+        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
+            Effect e = selected.get(k);
+            if (!e.warms()) continue;
+            double with = w.validateError(fit);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
+            Effect cold = Effect.withoutWarmUp(e);
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, cold, false);
+            int at = selected.indexOf(cold);
+            if (at < 0) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            double wo = w.validateError(plain);
+            if (!(with < wo)) {
+                aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
+                        + "air's temperature alone but not the validation poses (weighted error %.1f against %.1f), so no warm-up by "
+                        + "the drives is taken", e.label(), with, wo));
+                fit = plain;
+                continue;
+            }
+            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
+            aliasNotes.add(String.format(Locale.ROOT, "%s: the links also grow as the drives warm them while the robot works (time "
+                    + "constant %.0f s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
+                    + "without). Compensation takes the robot warmed through", e.label(), e.warmTauS(), with, wo));
             break;
         }
         if (lag != null)
@@ -1142,6 +1172,26 @@ public final class Diagnoser {
         return best;
     }
 
+    /** Time constants tried for the drives' warm-up of a thermal growth link by link, s. */
+    static final double[] WARM_TAUS = {600, 1200, 2400, 4800};
+    /** Largest plausible rise of a link's temperature above the air from its drives, K. */
+    static final double MAX_WARM_K = 30;
+
+    /**
+     * {@code growth} with the drives' warm-up at the time constant from {@link #WARM_TAUS} whose test
+     * against {@code t} predicts left-out poses best; null when none is testable.
+     */
+    static Effect commonWarmUp(Tester t, Effect growth, List<PoseConditions> conds) {
+        Effect best = null;
+        double bestPress = Double.POSITIVE_INFINITY;
+        for (double tw : WARM_TAUS) {
+            Effect e = Effect.withWarmUp(growth, tw);
+            Candidate c = t.test(e, conds);
+            if (c.keptColumns > 0 && c.pressAfter < bestPress) { bestPress = c.pressAfter; best = e; }
+        }
+        return best;
+    }
+
     /** A link's own lag replaces the common one only when it lowers the leave-one-pose-out error by this fraction. */
     static final double LINK_LAG_MARGIN = 0.01;
 
@@ -1162,7 +1212,7 @@ public final class Diagnoser {
      */
     static LagSearch bestLags(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
                                 List<PoseConditions> conds) {
-        int n = growth.size();
+        int n = growth.lagTaus().length;
         double[] taus = null;
         double best = Double.POSITIVE_INFINITY, none = Double.NaN;
         for (double tau : ThermalLag.TAUS) {
@@ -1186,7 +1236,15 @@ public final class Diagnoser {
                 }
             if (!moved) break;
         }
-        return new LagSearch(Effect.thermalLinks(model, t0C, lag, taus), best, none, common, pressCommon);
+        // the drives' warm-up beside the air's temperature, where it predicts left-out poses clearly better
+        Effect form = Effect.thermalLinks(model, t0C, lag, taus);
+        Effect warmed = null;
+        for (double tw : WARM_TAUS) {
+            Effect e = Effect.withWarmUp(form, tw);
+            double p = at.pressReplacing(k, e, conds);
+            if (p < best * (1 - ALIAS_MARGIN)) { best = p; warmed = e; }
+        }
+        return new LagSearch(warmed != null ? warmed : form, best, none, common, pressCommon);
     }
 
     /** "600 s: base to joint 1, link 2 (joint 2 to joint 3); 300 s: link 3 (joint 3 to joint 4)". */
@@ -1342,6 +1400,26 @@ public final class Diagnoser {
     }
 
     /**
+     * Whether the gravity torque on drive {@code j} (the file's masses, the rows' payloads) changes
+     * sign across the reading step at {@code atRad}: among the poses within a tenth of the joint's
+     * sampled range either side of it, the torque's sign below the step differs from above it on
+     * most of them.
+     */
+    static boolean gravityChangesSignNear(GravityTorques gravity, List<Measurement> rows, int j, double atRad) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+        double band = 0.1 * (hi - lo);
+        int below = 0, above = 0, nb = 0, na = 0;
+        for (Measurement r : rows) {
+            double d = r.q(j) - atRad;
+            if (Math.abs(d) > band) continue;
+            double tau = gravity.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
+            if (d <= 0) { nb++; below += tau > 0 ? 1 : -1; } else { na++; above += tau > 0 ? 1 : -1; }
+        }
+        return nb > 0 && na > 0 && Math.signum(below) != Math.signum(above) && Math.abs(below) > nb / 2 && Math.abs(above) > na / 2;
+    }
+
+    /**
      * Backlash held on one flank by gravity ({@link Effect#heldByGravity}): where the gravity torque
      * on a joint is large its gear sits on the flank the torque pushes it to whatever the last
      * motion, and only where the torque is small does the direction decide. Fitted as plain
@@ -1364,6 +1442,11 @@ public final class Diagnoser {
             // moves take up part of what the held flank leaves)
             Effect plain = selected.stream().filter(e -> e.kind() == Effect.Kind.BACKLASH && e.joint() == jj
                     && !e.heldByGravity()).findFirst().orElse(null);
+            // A gear held by gravity with a narrow free zone is a step of the joint's reading where the torque on it
+            // changes sign (the flank changes there, whatever the last motion): a located step of its reading stands in
+            // for the backlash the stepwise search did not name.
+            if (plain == null) plain = selected.stream().filter(e -> e.kind() == Effect.Kind.ANGLE_STEP && e.joint() == jj && !e.isWindow()
+                    && gravityChangesSignNear(gravity, rows, jj, e.rangeLo())).findFirst().orElse(null);
             if (plain == null) continue;
             Effect comp = selected.stream().filter(e -> e.kind() == Effect.Kind.COMPLIANCE && e.joint() == jj).findFirst().orElse(null);
             Selection saved = Selection.of(selected, absorbedCols, steps);
@@ -3187,10 +3270,13 @@ public final class Diagnoser {
             }
             case THERMAL_LINK -> {
                 boolean ok = true;
+                int nl = e.warms() ? v.length / 2 : v.length;
                 for (int i = 0; i < v.length; i++)
-                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, MAX_LINK_ALPHA)) ok = false;
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, i < nl ? MAX_LINK_ALPHA : MAX_LINK_ALPHA * MAX_WARM_K))
+                        ok = false;
                 c.plausible = ok;
-                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K", MAX_LINK_ALPHA);
+                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K%s", MAX_LINK_ALPHA,
+                        e.warms() ? String.format(Locale.ROOT, ", its warm-up's growth positive and < %.0e", MAX_LINK_ALPHA * MAX_WARM_K) : "");
             }
             case DRIFT -> {
                 double n = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), sn = Math.max(sd[0], Math.max(sd[1], sd[2]));

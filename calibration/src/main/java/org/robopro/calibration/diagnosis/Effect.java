@@ -163,6 +163,7 @@ public final class Effect {
     private double[] massScales;             // that backlash: the file's masses re-estimated by a factor each (null: as in the file)
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
+    private double warmTau = Double.NaN;     // thermal-link: the drives' warm-up time constant, s (NaN: links at the air's temperature only)
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
@@ -613,6 +614,53 @@ public final class Effect {
         return e;
     }
 
+    /**
+     * {@code growth} (a thermal-link effect) with each link also warmed by the drives as the robot
+     * works: besides α_i·(T_i − T0) each link grows by β_i·(1 − exp(−t/τ_w)), t the time since the
+     * campaign started. A link's temperature is the air's (lagged) plus what its motors and gears put
+     * into it, which rises with the time the robot has run and levels off (the warm-up of industrial
+     * robots: ISO 9283 §6.2 asks for a warmed-up robot for this reason; a lumped body heated at a
+     * constant rate and cooled to the air rises as 1 − exp(−t/τ), Incropera &amp; DeWitt §5.2).
+     * β_i = α_i·ΔT_i is the growth per link when warmed through. An unknown time (a compensated
+     * program) is taken warmed through.
+     */
+    public static Effect withWarmUp(Effect growth, double warmTauS) {
+        if (growth.kind != Kind.THERMAL_LINK) throw new IllegalArgumentException("a warm-up belongs to thermal-link, not " + growth.label());
+        if (!(warmTauS > 0) || Double.isInfinite(warmTauS)) throw new IllegalArgumentException("warm-up time constant " + warmTauS);
+        Effect e = new Effect(Kind.THERMAL_LINK, -1, -1, null, false, growth.t0C, Double.NaN, null, Double.NaN, Double.NaN, growth.model, growth.links);
+        e.lag = growth.lag;
+        e.lagTaus = growth.lagTaus == null ? null : growth.lagTaus.clone();
+        e.warmTau = warmTauS;
+        return e;
+    }
+
+    /** {@code growth} without the drives' warm-up (itself when it has none). */
+    public static Effect withoutWarmUp(Effect growth) {
+        if (!growth.warms()) return growth;
+        Effect e = new Effect(Kind.THERMAL_LINK, -1, -1, null, false, growth.t0C, Double.NaN, null, Double.NaN, Double.NaN, growth.model, growth.links);
+        e.lag = growth.lag;
+        e.lagTaus = growth.lagTaus == null ? null : growth.lagTaus.clone();
+        return e;
+    }
+
+    /** {@code growth} with the links at the reading's temperature, its warm-up kept. */
+    public static Effect withoutLags(Effect growth) {
+        Effect e = thermalLinks(growth.model, growth.t0C);
+        return growth.warms() ? withWarmUp(e, growth.warmTau) : e;
+    }
+
+    /** Whether a thermal growth's links are also warmed by the drives ({@link #withWarmUp}). */
+    public boolean warms() { return kind == Kind.THERMAL_LINK && Double.isFinite(warmTau); }
+
+    /** The drives' warm-up time constant of a thermal growth, s (NaN: none). */
+    public double warmTauS() { return warmTau; }
+
+    /** The drives' warm-up share at time t: 1 − exp(−t/τ_w); warmed through (1) at an unknown time. */
+    private double warmX(PoseConditions c) {
+        double t = c.timeS();
+        return Double.isFinite(t) ? 1 - Math.exp(-Math.max(0, t) / warmTau) : 1;
+    }
+
     /** Whether some link of a thermal growth lags the reading. */
     public boolean lags() { return lagTaus != null && Arrays.stream(lagTaus).anyMatch(x -> x > 0); }
 
@@ -680,7 +728,7 @@ public final class Effect {
             case COMPLIANCE -> perMass ? gravity.massCount() : 1;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
-            case THERMAL_LINK -> links.length;
+            case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
             default -> 1;
         };
@@ -696,7 +744,10 @@ public final class Effect {
             case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
             case BACKLASH -> out.add("b");
             case THERMAL -> out.add(usesTimeProxy() ? "strain" : "alpha");
-            case THERMAL_LINK -> { for (int i : links) out.add("alpha_" + linkName(i)); }
+            case THERMAL_LINK -> {
+                for (int i : links) out.add("alpha_" + linkName(i));
+                if (warms()) for (int i : links) out.add("warm_" + linkName(i));
+            }
             case DRIFT -> { out.add("dx"); out.add("dy"); out.add("dz"); }
             case SCALE -> out.add("eps");
             case COUPLING -> out.add("kappa");
@@ -747,6 +798,11 @@ public final class Effect {
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
             case SCALE, COUPLING -> "1";
         };
+        if (warms()) { // the warm-up's coefficients are strains (the growth when warmed through)
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(links.length, u));
+            out.addAll(java.util.Collections.nCopies(links.length, "1"));
+            return out;
+        }
         return java.util.Collections.nCopies(size(), u);
     }
 
@@ -755,7 +811,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> kind.json + (usesTimeProxy() ? String.format(Locale.ROOT, " (time proxy, tau %.0f s)", tauS) : "");
             case DRIFT -> kind.json + (usesTimeProxy() ? " (with time)" : " (with temperature)");
-            case THERMAL_LINK -> kind.json + lagWords();
+            case THERMAL_LINK -> kind.json + lagWords() + (warms() ? String.format(Locale.ROOT, " (warm-up %.0f s)", warmTau) : "");
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
@@ -922,12 +978,13 @@ public final class Effect {
             }
             case THERMAL_LINK -> {
                 Pose[] f = model.linkFrames(q);
+                int nl = links.length;
                 for (int col = 0; col < k; col++) {
-                    int i = links[col];
+                    int i = links[col % nl];
                     Vec3 from = f[i].position();
                     Vec3 to = i + 1 < f.length ? f[i + 1].position() : new Vec3(pointBase[0], pointBase[1], pointBase[2]);
                     Vec3 s = to.minus(from);
-                    x = linkX(c, col);
+                    x = col < nl ? linkX(c, col) : warmX(c);
                     g3[col] = x * s.x();
                     g3[k + col] = x * s.y();
                     g3[2 * k + col] = x * s.z();
@@ -1060,7 +1117,8 @@ public final class Effect {
                     }
                 if (kind == Kind.THERMAL_LINK && dpDpoint != null) {
                     // the last vector ends at the point: ∂/∂p of x α_tool (p − o_flange) = x α_tool I
-                    double x = linkX(c, k - 1) * values[k - 1];
+                    int nl = links.length;
+                    double x = linkX(c, nl - 1) * values[nl - 1] + (warms() ? warmX(c) * values[2 * nl - 1] : 0);
                     for (int a = 0; a < 3; a++) dpDpoint[4 * a] += x;
                 }
             }
@@ -1077,6 +1135,7 @@ public final class Effect {
             case THERMAL_LINK -> {
                 p.put("t0_c", t0C);
                 if (lags()) for (int col = 0; col < links.length; col++) p.put("lag_s_" + linkName(links[col]), lagTaus[col]);
+                if (warms()) p.put("warm_tau_s", warmTau);
             }
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
@@ -1215,14 +1274,21 @@ public final class Effect {
             case THERMAL_LINK -> {
                 // the lags are kept; without the campaign's history each link is taken at the reading (in equilibrium)
                 Effect plain = thermalLinks(model, require(d, "t0_c", file));
-                if (ps.keySet().stream().noneMatch(key -> key.startsWith("lag_s_"))) yield plain;
+                double warm = Double.NaN;
+                if (ps.containsKey("warm_tau_s")) {
+                    warm = require(d, "warm_tau_s", file);
+                    if (!(warm > 0) || Double.isInfinite(warm))
+                        throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si.warm_tau_s", "must be > 0, got " + warm);
+                }
+                if (ps.keySet().stream().noneMatch(key -> key.startsWith("lag_s_"))) yield Double.isNaN(warm) ? plain : withWarmUp(plain, warm);
                 double[] taus = new double[plain.links.length];
                 for (int col = 0; col < taus.length; col++) {
                     taus[col] = require(d, "lag_s_" + plain.linkName(plain.links[col]), file);
                     if (!(taus[col] >= 0)) throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si.lag_s_"
                             + plain.linkName(plain.links[col]), "must be >= 0, got " + taus[col]);
                 }
-                yield thermalLinks(model, plain.t0C, null, taus);
+                Effect lagged = thermalLinks(model, plain.t0C, null, taus);
+                yield Double.isNaN(warm) ? lagged : withWarmUp(lagged, warm);
             }
             case DRIFT -> ps.containsKey("tau_s") ? driftWithTime() : driftWithTemperature(require(d, "t0_c", file));
         };

@@ -108,8 +108,16 @@ final class Words {
                     e.along().words, e.rangeLo(), e.rangeHi(), e.along().unit, e.along().words);
             case THERMAL_LINK -> {
                 StringBuilder sb = new StringBuilder("The arm grows with temperature link by link (thermal growth):");
-                for (int i = 0; i < v.length; i++)
-                    sb.append(String.format(Locale.ROOT, " %s %.3g ± %.2g /K%s", e.linkWords(i), v[i], s[i], i < v.length - 1 ? "," : "."));
+                int nl = e.warms() ? v.length / 2 : v.length;
+                for (int i = 0; i < nl; i++)
+                    sb.append(String.format(Locale.ROOT, " %s %.3g ± %.2g /K%s", e.linkWords(i), v[i], s[i], i < nl - 1 ? "," : "."));
+                if (e.warms()) {
+                    sb.append(String.format(Locale.ROOT, " The links also grow as the drives warm them while the robot works (time "
+                            + "constant %.0f s), when warmed through:", e.warmTauS()));
+                    for (int i = nl; i < v.length; i++)
+                        sb.append(String.format(Locale.ROOT, " %s %.1f ± %.1f ppm%s", e.linkWords(i - nl), 1e6 * v[i], 1e6 * s[i],
+                                i < v.length - 1 ? "," : "."));
+                }
                 sb.append(String.format(Locale.ROOT, " Reference %.1f °C (steel is about 12e-6/K, aluminium 23e-6/K).", e.t0C()));
                 yield sb.toString();
             }
