@@ -80,6 +80,7 @@ public final class Diagnoser {
      * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
      * angle error a few arc-seconds; far beyond that the instrument is broken, not erring.
      */
+    static final double MAX_TILT_PER_NM = 1e-5;
     static final double MAX_INSTRUMENT_RANGE_M = 0.5e-3, MAX_INSTRUMENT_ANGLE_RAD = 50 / 3600.0 * Math.PI / 180;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     /**
@@ -791,7 +792,7 @@ public final class Diagnoser {
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
-        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, aliasNotes);
+        fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
         // With validation data, an effect is kept only when the final model predicts the validation poses better with
         // it than refitted without it (position and orientation, each over its noise).
@@ -1637,7 +1638,8 @@ public final class Diagnoser {
      * given) — reported as an unexplained located structure, not as physics.
      */
     private static Fit claimCheck(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                  List<Effect> located, List<Effect> family, List<Measurement> rows, List<String> notes) {
+                                  List<Effect> located, List<Effect> family, List<Measurement> rows, GravityTorques gravity,
+                                  List<String> notes) {
         int refinements = 0;
         Set<String> withdrawn = new HashSet<>();
         List<Effect> instrument = instrumentRivals(w.tester(fit));
@@ -1653,6 +1655,8 @@ public final class Diagnoser {
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
                 for (Effect f : readingSteps(e, fit, k, rows, w.conditions)) rivals.putIfAbsent(f.label(), f);
                 for (Effect f : instrument) rivals.putIfAbsent(f.label(), f);
+                Effect tilt = bestBaseTilt(at, k, e, gravity, rows, w.conditions);
+                if (tilt != null) rivals.putIfAbsent(tilt.label(), tilt);
                 for (Effect s : selected) rivals.remove(s.label());
                 if (e.kind() == Effect.Kind.DRIFT)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
@@ -2351,6 +2355,50 @@ public final class Diagnoser {
                 default -> { }
             }
         return out;
+    }
+
+    /** Azimuths of a base tilt's axis tried (every 15°), and the shares of the poses it tilts at (1: both ways, no hold). */
+    static final int TILT_AZIMUTHS = 24;
+    static final double[] TILT_SHARES = {1, 0.9, 0.75, 0.5, 0.3, 0.15};
+
+    /**
+     * The base tilting on its foundation ({@link Effect#baseTilt}) that predicts left-out poses best
+     * in the place of selected family {@code k}: its axis every 15° and the moment it holds before
+     * tilting (the shares of the poses it tilts at), for a family of drives 1–3 (a base that rocks
+     * under the arm's weight turns everything as a compliance, a coupling or a transmission error
+     * of the arm's first joints partly would); null without the robot file's masses.
+     */
+    static Effect bestBaseTilt(Tester at, int k, Effect e, GravityTorques gravity, List<Measurement> rows, List<PoseConditions> conds) {
+        if (gravity == null || gravity.massesUnknown() || e.target() != Effect.Target.DRIVE || e.joint() > 2 || at.ends > 1) return null;
+        double[][] m = new double[rows.size()][];
+        for (int i = 0; i < m.length; i++) {
+            Measurement r = rows.get(i);
+            m[i] = gravity.baseMoment(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0).toArray();
+        }
+        Effect[] best = {null};
+        double[] bestPress = {Double.POSITIVE_INFINITY}, bestAt = new double[2];
+        for (int round = 0; round < 2; round++) {
+            // the grid, then the best one's neighbours: a quarter and a half of the grid's step either side, and the shares between
+            double step = 2 * Math.PI / TILT_AZIMUTHS;
+            double[] psis = round == 0 ? java.util.stream.IntStream.range(0, TILT_AZIMUTHS).mapToDouble(a -> a * step).toArray()
+                    : new double[] {bestAt[0] - step / 2, bestAt[0] - step / 4, bestAt[0], bestAt[0] + step / 4, bestAt[0] + step / 2};
+            double[] shares = round == 0 || bestAt[1] >= 1 ? TILT_SHARES
+                    : new double[] {bestAt[1] * 0.8, bestAt[1] * 0.9, bestAt[1], Math.min(0.95, bestAt[1] * 1.1), Math.min(0.97, bestAt[1] * 1.25)};
+            for (double psi : psis) {
+                double[] x = new double[m.length];
+                for (int i = 0; i < x.length; i++) x[i] = m[i][0] * Math.cos(psi) + m[i][1] * Math.sin(psi);
+                double[] sorted = x.clone();
+                Arrays.sort(sorted);
+                for (double share : shares) {
+                    double hold = share >= 1 ? Double.NEGATIVE_INFINITY : sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
+                    if (share < 1 && !(sorted[sorted.length - 1] > hold)) continue;
+                    Effect t = Effect.baseTilt(gravity, psi, hold);
+                    double p = at.pressReplacing(k, t, conds);
+                    if (p < bestPress[0]) { bestPress[0] = p; best[0] = t; bestAt[0] = psi; bestAt[1] = share; }
+                }
+            }
+        }
+        return best[0];
     }
 
     /** The instrument-reading fallback of an instrument probe ({@link Locator#sightProbes}). */
@@ -3288,6 +3336,11 @@ public final class Diagnoser {
                 double r = Words.rmsSmooth(e, v);
                 c.plausible = r < MAX_PERIODIC_RAD * 2;
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
+            }
+            case BASE_TILT -> {
+                // the base tips the way the moment pushes it; a compliance of 1e-5 rad/(N·m) would be a loose base indeed
+                c.plausible = overlaps(v[0], sd[0], 0, MAX_TILT_PER_NM);
+                c.plausibility = String.format(Locale.ROOT, "tilt %.3g rad/(N·m) positive and < %.0e", v[0], MAX_TILT_PER_NM);
             }
             case INSTRUMENT -> {
                 double r = Words.rmsInstrument(e, v);

@@ -70,7 +70,8 @@ public final class Effect {
         ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
-        INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot");
+        INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
+        BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family");
 
         public final String json;
         public final String title;
@@ -168,6 +169,7 @@ public final class Effect {
     private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
     private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
+    private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad), the moment held before it tilts (N·m; −∞: none)
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -524,6 +526,35 @@ public final class Effect {
     /** The period of a cyclic instrument-reading error (m, or rad), NaN otherwise. */
     public double cycle() { return cycle; }
 
+    /**
+     * The robot's base tilting on its foundation about a horizontal edge: with e the unit horizontal
+     * axis at azimuth {@code axisAzimuth} and M the moment of the arm's weight and payload about the
+     * base origin ({@link GravityTorques#baseMoment}), the excess x = M·e − h tips the base by
+     * φ = a·x about the edge where x &gt; 0 (a foot held by bolts or its own weight up to h rocks over
+     * its edge beyond it; statics of tipping, e.g. Meriam &amp; Kraige, Engineering Mechanics: Statics,
+     * §6/2), or by a·(M·e) both ways without a hold (an elastic foundation). A point p moves by
+     * φ·e × (p − P0), P0 on the edge: Δp = a·x·(e × p) + b·x·ẑ, with b = a times the edge's distance
+     * from the axis of joint 1 (e × (ẑ × e) = ẑ). Two parameters a, b.
+     */
+    public static Effect baseTilt(GravityTorques gravity, double axisAzimuth, double holdNm) {
+        if (gravity == null) throw new IllegalArgumentException("a base tilt needs the arm's masses");
+        Effect e = new Effect(Kind.BASE_TILT, -1, -1, gravity, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 2);
+        e.tiltAzimuth = axisAzimuth;
+        e.tiltHold = holdNm;
+        return e;
+    }
+
+    /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
+    double tiltExcess(double[] q, double payloadKg) {
+        Vec3 m = gravity.baseMoment(q, payloadKg);
+        double x = m.x() * Math.cos(tiltAzimuth) + m.y() * Math.sin(tiltAzimuth);
+        return Double.isInfinite(tiltHold) ? x : Math.max(0, x - tiltHold);
+    }
+
+    /** A base tilt's axis azimuth (rad) and hold (N·m; −∞ for none). */
+    public double tiltAzimuth() { return tiltAzimuth; }
+    public double tiltHold() { return tiltHold; }
+
     /** An instrument-reading error's instrumentTbase (null for other kinds). */
     public Pose instrumentPose() { return instrument; }
 
@@ -565,7 +596,7 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT;
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -686,7 +717,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -726,7 +757,7 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : 1;
-            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT -> nBasis;
+            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
@@ -757,6 +788,7 @@ public final class Effect {
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
+            case BASE_TILT -> { out.add("tilt"); out.add("lift"); }
             case INSTRUMENT -> {
                 if (Double.isFinite(cycle)) { out.add("a"); out.add("b"); }
                 else for (int k = 1; k <= nBasis; k++) out.add("e" + k);
@@ -793,6 +825,7 @@ public final class Effect {
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case POINT_SMOOTH, TARGET_STEP -> "m";
             case INSTRUMENT -> sight.unit;
+            case BASE_TILT -> "rad/(N·m)";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -829,6 +862,8 @@ public final class Effect {
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case BASE_TILT -> kind.json + String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
+                    Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold));
             case INSTRUMENT -> kind.json + " (" + sight.words + (Double.isFinite(cycle)
                     ? String.format(Locale.ROOT, ", cyclic %.0f %s", sight == Sight.RANGE ? cycle * 1e3 : Math.toDegrees(cycle), sight == Sight.RANGE ? "mm" : "deg")
                     : nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
@@ -929,7 +964,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -943,6 +978,14 @@ public final class Effect {
         int k = size();
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
+            case BASE_TILT -> {
+                double xt = tiltExcess(q, c.payloadKg()), ex = Math.cos(tiltAzimuth), ey = Math.sin(tiltAzimuth);
+                // e × p with e = (ex, ey, 0): (ey p_z, −ex p_z, ex p_y − ey p_x); then the lift along z
+                g3[0] = xt * ey * pointBase[2];
+                g3[k] = -xt * ex * pointBase[2];
+                g3[2 * k] = xt * (ex * pointBase[1] - ey * pointBase[0]);
+                g3[2 * k + 1] = xt;
+            }
             case INSTRUMENT -> {
                 // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
                 double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
@@ -1140,6 +1183,10 @@ public final class Effect {
             case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
+            case BASE_TILT -> {
+                p.put("axis_azimuth_rad", tiltAzimuth);
+                if (!Double.isInfinite(tiltHold)) p.put("hold_nm", tiltHold);
+            }
             case INSTRUMENT -> {
                 p.put(sight.key + "_min", lo);
                 p.put(sight.key + "_max", hi);
@@ -1174,7 +1221,7 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -1247,6 +1294,12 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case BASE_TILT -> {
+                if (gravity == null || gravity.massesUnknown())
+                    throw new InputException(file, 0, 0, "mass_model", "base-tilt needs the robot's mass_model");
+                yield baseTilt(gravity, require(d, "axis_azimuth_rad", file),
+                        ps.containsKey("hold_nm") ? require(d, "hold_nm", file) : Double.NEGATIVE_INFINITY);
+            }
             case INSTRUMENT -> {
                 Sight sg = null;
                 for (Sight x : Sight.values()) if (ps.containsKey(x.key + "_min")) sg = x;

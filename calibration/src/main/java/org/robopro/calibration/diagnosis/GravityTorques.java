@@ -204,4 +204,20 @@ public final class GravityTorques {
             out[k] = s;
         }
     }
+
+    /**
+     * The moment of the arm's weight and the payload about the base origin, M = Σ c_k × m_k g (N·m,
+     * base frame): what the foundation and its bolts must hold against (its horizontal part tips the
+     * robot over an edge of its foot).
+     */
+    public Vec3 baseMoment(double[] q, double payloadKg) {
+        Pose[] f = model.linkFrames(q);
+        Vec3 sum = Vec3.ZERO;
+        for (int k = 0; k < mass.length; k++) {
+            double mk = k == payloadSlot ? (Double.isNaN(payloadKg) ? 0 : payloadKg) : mass[k];
+            if (mk == 0) continue;
+            sum = sum.plus(f[frameIndex[k]].apply(local[k]).cross(gravity.times(mk)));
+        }
+        return sum;
+    }
 }

@@ -69,6 +69,13 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
+            case BASE_TILT -> String.format(Locale.ROOT, "The robot's base tilts on its foundation about a horizontal axis at %.0f deg "
+                    + "as the arm's weight and payload tip it (%.3g µrad per 100 N·m%s), and none of the known effects of the arm "
+                    + "explains it: a loose anchor bolt, a foot that rocks over its edge, a soft floor or pedestal. It is modelled as such "
+                    + "so compensation can use it, but check the base's bolts and its seating: measure a point on the base itself "
+                    + "while the arm reaches out in several directions with and without payload.", Math.toDegrees(e.tiltAzimuth()),
+                    1e8 * v[0], Double.isInfinite(e.tiltHold()) ? ", in both directions" : String.format(Locale.ROOT,
+                            ", once the moment about that edge exceeds %.0f N·m", e.tiltHold()));
             case INSTRUMENT -> e.sight() == Effect.Sight.RANGE ? String.format(Locale.ROOT, "The measured positions err along the "
                     + "instrument's line of sight as a function of its distance reading (%.4f mm RMS over %.3f..%.3f m%s), which no error "
                     + "of the robot explains: the instrument's distance meter (a cyclic error or a scale error of its interferometer or "
