@@ -1402,22 +1402,23 @@ public final class Diagnoser {
 
     /**
      * Whether the gravity torque on drive {@code j} (the file's masses, the rows' payloads) changes
-     * sign across the reading step at {@code atRad}: among the poses within a tenth of the joint's
-     * sampled range either side of it, the torque's sign below the step differs from above it on
-     * most of them.
+     * sign near the reading step at {@code atRad}: among the poses within a tenth of the joint's
+     * sampled range either side of it, at least a fifth push each way (a gear held by gravity
+     * changes flank where the torque changes sign, and with a free zone about it the step is
+     * placed at one of the zone's edges).
      */
     static boolean gravityChangesSignNear(GravityTorques gravity, List<Measurement> rows, int j, double atRad) {
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
         double band = 0.1 * (hi - lo);
-        int below = 0, above = 0, nb = 0, na = 0;
+        int pos = 0, neg = 0;
         for (Measurement r : rows) {
-            double d = r.q(j) - atRad;
-            if (Math.abs(d) > band) continue;
+            if (Math.abs(r.q(j) - atRad) > band) continue;
             double tau = gravity.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
-            if (d <= 0) { nb++; below += tau > 0 ? 1 : -1; } else { na++; above += tau > 0 ? 1 : -1; }
+            if (tau > 0) pos++;
+            else if (tau < 0) neg++;
         }
-        return nb > 0 && na > 0 && Math.signum(below) != Math.signum(above) && Math.abs(below) > nb / 2 && Math.abs(above) > na / 2;
+        return Math.min(pos, neg) >= 0.2 * (pos + neg) && pos + neg > 0;
     }
 
     /**
