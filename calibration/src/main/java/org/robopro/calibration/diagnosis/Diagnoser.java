@@ -1643,7 +1643,8 @@ public final class Diagnoser {
                                   List<String> notes) {
         int refinements = 0;
         Set<String> withdrawn = new HashSet<>();
-        List<Effect> instrument = instrumentRivals(w.tester(fit));
+        List<Effect> instrument = null;               // the instrument's rivals, made when a family is first checked
+        Map<String, Effect> tilts = new java.util.HashMap<>();  // each family's best base tilt, searched once
         for (int round = 0; round < 2 * MAX_LOCATED; round++) {
             boolean changed = false;
             for (int k = 0; k < selected.size() && !changed; k++) {
@@ -1655,8 +1656,9 @@ public final class Diagnoser {
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
                 for (Effect f : readingSteps(e, fit, k, rows, w.conditions)) rivals.putIfAbsent(f.label(), f);
+                if (instrument == null) instrument = instrumentRivals(at, w.conditions);
                 for (Effect f : instrument) rivals.putIfAbsent(f.label(), f);
-                Effect tilt = bestBaseTilt(at, k, e, gravity, rows, w.conditions);
+                Effect tilt = tilts.computeIfAbsent(e.label(), x -> bestBaseTilt(at, selected.indexOf(e), e, gravity, rows, w.conditions));
                 if (tilt != null) rivals.putIfAbsent(tilt.label(), tilt);
                 for (Effect s : selected) rivals.remove(s.label());
                 if (e.kind() == Effect.Kind.DRIFT)
@@ -2415,11 +2417,23 @@ public final class Diagnoser {
      * correlated with joint 1's angle and with the point's reach, so a family of the robot that holds
      * part of it must predict left-out poses better than the instrument's error in its place.
      */
-    static List<Effect> instrumentRivals(Tester t) {
+    static List<Effect> instrumentRivals(Tester t, List<PoseConditions> conds) {
         List<Effect> out = new ArrayList<>();
-        for (Locator.Probe p : Locator.sightProbes(t)) out.add(sightEffect(p));
+        // the splines, and the few periods of a distance meter's cycle the residual holds most of
+        List<Effect> cycles = new ArrayList<>();
+        for (Locator.Probe p : Locator.sightProbes(t)) (p.cycle > 0 ? cycles : out).add(sightEffect(p));
+        Map<Effect, Double> drop = new java.util.IdentityHashMap<>();
+        for (Effect c : cycles) {
+            Candidate cd = t.test(c, conds);
+            drop.put(c, cd.keptColumns > 0 ? cd.drss : 0);
+        }
+        cycles.sort((a, b) -> Double.compare(drop.get(b), drop.get(a)));
+        out.addAll(cycles.subList(0, Math.min(INSTRUMENT_CYCLE_RIVALS, cycles.size())));
         return out;
     }
+
+    /** The periods of a distance meter's cycle put in a family's place: those that take most of what is left. */
+    static final int INSTRUMENT_CYCLE_RIVALS = 3;
 
     /** The candidates that could explain the same structure as {@code e}: other families on its drive, or other thermal forms. */
     static List<Effect> aliases(Effect e, List<Effect> family, List<Effect> selected) {

@@ -345,7 +345,7 @@ final class Locator {
                 pr.xLabel = "the instrument's " + sight.words + " reading" + (range ? " (m)" : " (deg)");
                 out.add(pr);
             }
-            if (sight == Effect.Sight.RANGE) out.addAll(rangeCycles(t, inst, xp, dir, x, l0, h0));
+            if (sight == Effect.Sight.RANGE && !Boolean.getBoolean("nocyc")) out.addAll(rangeCycles(t, inst, xp, dir, x, l0, h0));
         }
         return out;
     }
