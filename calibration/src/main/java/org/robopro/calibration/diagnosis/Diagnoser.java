@@ -457,6 +457,46 @@ public final class Diagnoser {
     }
 
     /**
+     * The poses among {@code flagged} that a named lost motion's other flank explains: with the
+     * output on the other side of the play at that pose (its flank term −g in place of g, a change
+     * of −2g·b of the drive's output), the pose's residual falls to the noise (weighted sum of
+     * squares under 4 per residual row). Which flank a gear sits on near where gravity hands it
+     * over, or after a move the measuring order does not show, the model can only estimate; a pose
+     * the other flank explains is no bad measurement, and is not reported as one. The rest are kept.
+     */
+    static List<String> otherFlankExplains(Work w, Fit fit, List<Effect> selected, List<String> flagged) {
+        List<Integer> lost = new ArrayList<>();
+        for (int k = 0; k < selected.size(); k++) if (selected.get(k).kind() == Effect.Kind.BACKLASH) lost.add(k);
+        if (lost.isEmpty()) return flagged;
+        Tester t = w.tester(fit);
+        if (t.ends > 1) return flagged;
+        Map<String, Integer> index = new java.util.HashMap<>();
+        for (int i = 0; i < w.rows.size(); i++) index.put(w.rows.get(i).poseId(), i);
+        List<String> out = new ArrayList<>();
+        for (String id : flagged) {
+            Integer i = index.get(id);
+            boolean explained = false;
+            for (int k : lost) {
+                if (i == null) break;
+                Effect e = selected.get(k);
+                double b = fit.full[fit.problem.effectOffset(k)];
+                double[] g = new double[1];
+                e.regressor(w.rows.get(i), w.conditions.get(i), g);
+                double dq = -2 * g[0] * b, ss = 0;
+                for (int a = 0; a < t.rpp; a++) {
+                    int row = i * t.rpp + a;
+                    double r = fit.r[row] + t.endDQ[0][row * t.dof + e.joint()] * dq;
+                    ss += r * r;
+                }
+                if (ss < 4 * t.rpp) { explained = true; break; }
+            }
+            if (explained) LOG.debug("pose {} is explained by the other flank of a lost motion: not an outlier", id);
+            else out.add(id);
+        }
+        return out;
+    }
+
+    /**
      * The joints approached from the same side at every pose (a one-sided campaign), in words: there a
      * constant lost motion lags alike at every pose and the zero offset takes it, so the campaign
      * cannot tell it; empty when every joint was approached from both sides.
@@ -1027,6 +1067,7 @@ public final class Diagnoser {
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
         List<String> under = selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll);
+        if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
         if (LOG.isDebugEnabled())
             LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
         // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them).
