@@ -65,10 +65,7 @@ class DiagnosisBenchmarkTest {
                     + "nothing named) at 1.25 x the floor (twin 1.05), but 2 clean poses reported as outliers",
             "lost motion j2 held on one flank by gravity + cross-coupling j5<-j4", "named right (backlash j2 held by gravity above "
                     + "67.1 N·m ± 50 %, coupling j5<-j4) at 1.08 x the floor, but 2 clean poses near the hand-over reported as "
-                    + "outliers (the file's masses put the holding torque elsewhere than the arm's)",
-            "outside: bearing wobble of j3 at twice its angle", "named wrong: joint-coupling j4<-j3 beside the located "
-                    + "joint-smooth-error j4 (following j2), 1.15 x the floor: the wobble's turn of the forearm about its own axis "
-                    + "follows the forearm's angle q3 - q2, which no function of one drive holds");
+                    + "outliers (the file's masses put the holding torque elsewhere than the arm's)");
 
     @Test
     void ciScenarios_giveTheRightAnswerOrAreKnownFailures() {

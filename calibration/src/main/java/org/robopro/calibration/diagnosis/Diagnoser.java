@@ -1089,7 +1089,7 @@ public final class Diagnoser {
         PoseConditions c = PoseConditions.of(m);
         for (Effect e : selected) {
             double x = switch (e.kind()) {
-                case SMOOTH -> m.q(e.angleJoint());
+                case SMOOTH -> e.smoothVariable(m.q());
                 case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
                 case POINT_SMOOTH -> switch (e.along()) {
                     case TIME -> c.timeS();
@@ -1332,14 +1332,21 @@ public final class Diagnoser {
         };
     }
 
+    /** Whether a coupling matrix row is joint k's own value alone (θ_k = q_k). */
+    private static boolean isUnitRow(double[] row, int k) {
+        for (int l = 0; l < row.length; l++) if (row[l] != (l == k ? 1 : 0)) return false;
+        return true;
+    }
+
     /**
      * The generic fallbacks of the variables a family explains: a per-joint smooth spline (at every
-     * resolution the poses support) for a one-joint angle family, the two-joint probe for a
-     * coupling. Thermal growth and drift have none of their own (growth follows the arm's links; the
-     * point moving with time or temperature in any shape is what a drift is); they must beat the
-     * located ones that are not the point's own displacement.
+     * resolution the poses support) for a one-joint angle family; for a coupling j←k the two-joint
+     * probe, a smooth curve of q_k on drive j, and, where {@code model}'s linkage couples joint k, a
+     * smooth curve of its model angle θ_k. Thermal growth and drift have none of their own (growth
+     * follows the arm's links; the point moving with time or temperature in any shape is what a drift
+     * is); they must beat the located ones that are not the point's own displacement.
      */
-    static List<Effect> ownFallbacks(Effect e, List<Measurement> rows) {
+    static List<Effect> ownFallbacks(Effect e, List<Measurement> rows, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         switch (e.kind()) {
             case PERIODIC, SCALE -> {
@@ -1360,6 +1367,16 @@ public final class Diagnoser {
                     for (int nb : Effect.SMOOTH_RESOLUTIONS)
                         if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
                             out.add(Effect.smoothFollowing(e.joint(), k, lo, hi, nb));
+                // on a linkage, the source joint's own angle in the arm (θ3 = q3 − q2 on a parallel arm)
+                if (model != null && !isUnitRow(model.couplingMatrix()[k], k)) {
+                    Effect probe = Effect.smoothFollowingModelAngle(e.joint(), k, model, 0, 1, Effect.SMOOTH_BASIS);
+                    double tlo = Double.POSITIVE_INFINITY, thi = Double.NEGATIVE_INFINITY;
+                    for (Measurement r : rows) { double th = probe.smoothVariable(r.q()); tlo = Math.min(tlo, th); thi = Math.max(thi, th); }
+                    if (thi > tlo)
+                        for (int nb : Effect.SMOOTH_RESOLUTIONS)
+                            if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
+                                out.add(Effect.smoothFollowingModelAngle(e.joint(), k, model, tlo, thi, nb));
+                }
             }
             default -> { }
         }
@@ -1692,7 +1709,7 @@ public final class Diagnoser {
                 Effect e = selected.get(k);
                 if (!checkedAgainstFallbacks(e)) continue;
                 Tester at = w.tester(fit);
-                List<Effect> own = ownFallbacks(e, rows);
+                List<Effect> own = ownFallbacks(e, rows, w.model);
                 Map<String, Effect> rivals = new LinkedHashMap<>();
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
@@ -1936,7 +1953,8 @@ public final class Diagnoser {
         } else if (e.kind() == Effect.Kind.SMOOTH) {
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
-                    out.add(Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
+                    out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
+                            : Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP
                 || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;

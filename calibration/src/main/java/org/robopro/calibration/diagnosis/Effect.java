@@ -394,6 +394,31 @@ public final class Effect {
     public int angleJoint() { return (kind == Kind.COUPLING || kind == Kind.SMOOTH) && source >= 0 ? source : joint; }
 
     /**
+     * Smooth error of drive {@code joint} following the model angle θ_source = Σ_l C[source][l]·q_l
+     * of {@code model}'s controller coupling (on a parallel-arm linkage θ3 = q3 − q2, the forearm's
+     * angle to the upper arm): what turns with one joint of the arm itself, whatever the drives did
+     * to set it (a bearing's wobble turning with the forearm's own angle moves drive 4's axis by a
+     * function of θ3, which no function of q3 alone holds).
+     */
+    public static Effect smoothFollowingModelAngle(int joint, int source, KinematicModel model, double lo, double hi, int n) {
+        Effect e = smoothFollowing(joint, source, lo, hi, n);
+        return new Effect(Kind.SMOOTH, joint, e.source, null, false, Double.NaN, Double.NaN, null, lo, hi, model, null, n);
+    }
+
+    /** Whether a smooth error follows a model angle θ (the linkage's), not a controller value q. */
+    public boolean followsModelAngle() { return kind == Kind.SMOOTH && model != null; }
+
+    /** The variable a smooth error follows at controller values q: q of its joint or source, or the source's model angle. */
+    double smoothVariable(double[] q) {
+        int k = angleJoint();
+        if (model == null) return q[k];
+        double[] row = model.couplingMatrix()[k];
+        double th = 0;
+        for (int l = 0; l < row.length; l++) th += row[l] * q[l];
+        return th;
+    }
+
+    /**
      * Error of drive {@code joint} that depends on its own angle and joint {@code other}'s together:
      * Δq = v·(sin q_j sin q_k, sin q_j cos q_k, cos q_j sin q_k, cos q_j cos q_k, q_j, q_k, q_j q_k):
      * the first-order products of the sines and cosines, which no function of one joint alone
@@ -849,7 +874,7 @@ public final class Effect {
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
-            case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following j" + (source + 1) + ")" : "")
+            case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following " + (model != null ? "theta" : "j") + (source + 1) + ")" : "")
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
                     Math.toDegrees(buildUp)) : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
@@ -948,7 +973,7 @@ public final class Effect {
             case THERMAL -> g[0] = conditionX(c);
             case SCALE -> g[0] = q[joint];
             case COUPLING -> g[0] = q[source];
-            case SMOOTH -> bspline(q[angleJoint()], lo, hi, g);
+            case SMOOTH -> bspline(smoothVariable(q), lo, hi, g);
             case PAIR -> {
                 pairProducts(q, joint, source, g);
                 g[4] = q[joint];
@@ -1180,7 +1205,11 @@ public final class Effect {
                 if (lags()) for (int col = 0; col < links.length; col++) p.put("lag_s_" + linkName(links[col]), lagTaus[col]);
                 if (warms()) p.put("warm_tau_s", warmTau);
             }
-            case SMOOTH -> { p.put("q_min", lo); p.put("q_max", hi); }
+            case SMOOTH -> {
+                p.put("q_min", lo);
+                p.put("q_max", hi);
+                if (model != null) p.put("model_angle", 1.0);
+            }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case BASE_TILT -> {
@@ -1283,6 +1312,8 @@ public final class Effect {
                 if (n < 4) throw new InputException(file, 0, 0, "effects.joint-smooth-error.parameters_si", "needs s1..sN, N >= 4");
                 if (js.size() == 2 && js.get(0).equals(js.get(1)))
                     throw new InputException(file, 0, 0, "effects.joints", "joint-smooth-error following another joint needs two different joints");
+                if (ps.containsKey("model_angle") && js.size() == 2)
+                    yield smoothFollowingModelAngle(js.get(0) - 1, js.get(1) - 1, model, require(d, "q_min", file), require(d, "q_max", file), n);
                 yield smoothFollowing(js.get(0) - 1, js.size() == 2 ? js.get(1) - 1 : -1, require(d, "q_min", file), require(d, "q_max", file), n);
             }
             case PAIR -> {

@@ -83,7 +83,7 @@ final class Plots {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
                     : "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
-            case PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.angleJoint() + 1) + " angle q" + (e.angleJoint() + 1) + " (deg)";
+            case PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.angleJoint() + 1) + " angle " + (e.followsModelAngle() ? "θ" : "q") + (e.angleJoint() + 1) + " (deg)";
             case POINT_SMOOTH -> switch (e.along()) {
                 case REACH -> "reach of the measured point (m)";
                 case HEIGHT -> "height of the measured point (m)";
@@ -109,7 +109,8 @@ final class Plots {
     private static double xOf(Effect e, Measurement row, PoseConditions c) {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()];
-            case PERIODIC, SCALE, SMOOTH, PAIR -> Math.toDegrees(row.q(e.angleJoint()));
+            case PERIODIC, SCALE, PAIR -> Math.toDegrees(row.q(e.angleJoint()));
+            case SMOOTH -> Math.toDegrees(e.smoothVariable(row.q()));
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
