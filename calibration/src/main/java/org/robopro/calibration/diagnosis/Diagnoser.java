@@ -930,8 +930,8 @@ public final class Diagnoser {
             }
             fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
             aliasNotes.add(String.format(Locale.ROOT, "%s: the links also grow as the drives warm them while the robot works (time "
-                    + "constant %.0f s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
-                    + "without). Compensation takes the robot warmed through", e.label(), e.warmTauS(), with, wo));
+                    + "constant %s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
+                    + "without). Compensation takes the robot warmed through", e.label(), e.warmWords(), with, wo));
             break;
         }
         if (lag != null)
@@ -1286,6 +1286,7 @@ public final class Diagnoser {
             double p = at.pressReplacing(k, e, conds);
             if (p < best * (1 - ALIAS_MARGIN)) { best = p; warmed = e; }
         }
+
         return new LagSearch(warmed != null ? warmed : form, best, none, common, pressCommon);
     }
 

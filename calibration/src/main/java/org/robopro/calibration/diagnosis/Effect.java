@@ -164,7 +164,7 @@ public final class Effect {
     private double[] massScales;             // that backlash: the file's masses re-estimated by a factor each (null: as in the file)
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
-    private double warmTau = Double.NaN;     // thermal-link: the drives' warm-up time constant, s (NaN: links at the air's temperature only)
+    private double[] warmTaus;               // thermal-link: each link's warm-up time constant by its drives, s (null: the air's temperature only)
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
@@ -682,11 +682,20 @@ public final class Effect {
      */
     public static Effect withWarmUp(Effect growth, double warmTauS) {
         if (growth.kind != Kind.THERMAL_LINK) throw new IllegalArgumentException("a warm-up belongs to thermal-link, not " + growth.label());
-        if (!(warmTauS > 0) || Double.isInfinite(warmTauS)) throw new IllegalArgumentException("warm-up time constant " + warmTauS);
+        double[] taus = new double[growth.links.length];
+        Arrays.fill(taus, warmTauS);
+        return withWarmUp(growth, taus);
+    }
+
+    /** {@link #withWarmUp(Effect, double)} with each link's own warm-up time constant (a heavy casting slowly, a thin tube quickly). */
+    public static Effect withWarmUp(Effect growth, double[] warmTausS) {
+        if (growth.kind != Kind.THERMAL_LINK) throw new IllegalArgumentException("a warm-up belongs to thermal-link, not " + growth.label());
+        if (warmTausS.length != growth.links.length) throw new IllegalArgumentException("warm-ups " + warmTausS.length + " for " + growth.links.length + " links");
+        for (double x : warmTausS) if (!(x > 0) || Double.isInfinite(x)) throw new IllegalArgumentException("warm-up time constant " + x);
         Effect e = new Effect(Kind.THERMAL_LINK, -1, -1, null, false, growth.t0C, Double.NaN, null, Double.NaN, Double.NaN, growth.model, growth.links);
         e.lag = growth.lag;
         e.lagTaus = growth.lagTaus == null ? null : growth.lagTaus.clone();
-        e.warmTau = warmTauS;
+        e.warmTaus = warmTausS.clone();
         return e;
     }
 
@@ -702,19 +711,26 @@ public final class Effect {
     /** {@code growth} with the links at the reading's temperature, its warm-up kept. */
     public static Effect withoutLags(Effect growth) {
         Effect e = thermalLinks(growth.model, growth.t0C);
-        return growth.warms() ? withWarmUp(e, growth.warmTau) : e;
+        return growth.warms() ? withWarmUp(e, growth.warmTaus) : e;
     }
 
     /** Whether a thermal growth's links are also warmed by the drives ({@link #withWarmUp}). */
-    public boolean warms() { return kind == Kind.THERMAL_LINK && Double.isFinite(warmTau); }
+    public boolean warms() { return kind == Kind.THERMAL_LINK && warmTaus != null; }
 
-    /** The drives' warm-up time constant of a thermal growth, s (NaN: none). */
-    public double warmTauS() { return warmTau; }
+    /** Each link's warm-up time constant of a thermal growth, s (null: none). */
+    public double[] warmTausS() { return warmTaus == null ? null : warmTaus.clone(); }
 
-    /** The drives' warm-up share at time t: 1 − exp(−t/τ_w); warmed through (1) at an unknown time. */
-    private double warmX(PoseConditions c) {
+    /** The warm-up time constants in words: "1200 s", or link by link "2400, 600, 600, … s". */
+    public String warmWords() {
+        if (warmTaus == null) return "";
+        if (Arrays.stream(warmTaus).distinct().count() == 1) return String.format(Locale.ROOT, "%.0f s", warmTaus[0]);
+        return String.join(", ", Arrays.stream(warmTaus).mapToObj(x -> String.format(Locale.ROOT, "%.0f", x)).toList()) + " s";
+    }
+
+    /** Link {@code col}'s warm-up share at time t: 1 − exp(−t/τ_w); warmed through (1) at an unknown time. */
+    private double warmX(PoseConditions c, int col) {
         double t = c.timeS();
-        return Double.isFinite(t) ? 1 - Math.exp(-Math.max(0, t) / warmTau) : 1;
+        return Double.isFinite(t) ? 1 - Math.exp(-Math.max(0, t) / warmTaus[col]) : 1;
     }
 
     /** Whether some link of a thermal growth lags the reading. */
@@ -869,7 +885,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> kind.json + (usesTimeProxy() ? String.format(Locale.ROOT, " (time proxy, tau %.0f s)", tauS) : "");
             case DRIFT -> kind.json + (usesTimeProxy() ? " (with time)" : " (with temperature)");
-            case THERMAL_LINK -> kind.json + lagWords() + (warms() ? String.format(Locale.ROOT, " (warm-up %.0f s)", warmTau) : "");
+            case THERMAL_LINK -> kind.json + lagWords() + (warms() ? " (warm-up " + warmWords() + ")" : "");
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
@@ -1052,7 +1068,7 @@ public final class Effect {
                     Vec3 from = f[i].position();
                     Vec3 to = i + 1 < f.length ? f[i + 1].position() : new Vec3(pointBase[0], pointBase[1], pointBase[2]);
                     Vec3 s = to.minus(from);
-                    x = col < nl ? linkX(c, col) : warmX(c);
+                    x = col < nl ? linkX(c, col) : warmX(c, col - nl);
                     g3[col] = x * s.x();
                     g3[k + col] = x * s.y();
                     g3[2 * k + col] = x * s.z();
@@ -1186,7 +1202,7 @@ public final class Effect {
                 if (kind == Kind.THERMAL_LINK && dpDpoint != null) {
                     // the last vector ends at the point: ∂/∂p of x α_tool (p − o_flange) = x α_tool I
                     int nl = links.length;
-                    double x = linkX(c, nl - 1) * values[nl - 1] + (warms() ? warmX(c) * values[2 * nl - 1] : 0);
+                    double x = linkX(c, nl - 1) * values[nl - 1] + (warms() ? warmX(c, nl - 1) * values[2 * nl - 1] : 0);
                     for (int a = 0; a < 3; a++) dpDpoint[4 * a] += x;
                 }
             }
@@ -1203,7 +1219,7 @@ public final class Effect {
             case THERMAL_LINK -> {
                 p.put("t0_c", t0C);
                 if (lags()) for (int col = 0; col < links.length; col++) p.put("lag_s_" + linkName(links[col]), lagTaus[col]);
-                if (warms()) p.put("warm_tau_s", warmTau);
+                if (warms()) for (int col = 0; col < links.length; col++) p.put("warm_tau_s_" + linkName(links[col]), warmTaus[col]);
             }
             case SMOOTH -> {
                 p.put("q_min", lo);
@@ -1358,13 +1374,17 @@ public final class Effect {
             case THERMAL_LINK -> {
                 // the lags are kept; without the campaign's history each link is taken at the reading (in equilibrium)
                 Effect plain = thermalLinks(model, require(d, "t0_c", file));
-                double warm = Double.NaN;
-                if (ps.containsKey("warm_tau_s")) {
-                    warm = require(d, "warm_tau_s", file);
-                    if (!(warm > 0) || Double.isInfinite(warm))
-                        throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si.warm_tau_s", "must be > 0, got " + warm);
+                double[] warm = null;
+                if (ps.keySet().stream().anyMatch(key -> key.startsWith("warm_tau_s_"))) {
+                    warm = new double[plain.links.length];
+                    for (int col = 0; col < warm.length; col++) {
+                        String key = "warm_tau_s_" + plain.linkName(plain.links[col]);
+                        warm[col] = require(d, key, file);
+                        if (!(warm[col] > 0) || Double.isInfinite(warm[col]))
+                            throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si." + key, "must be > 0, got " + warm[col]);
+                    }
                 }
-                if (ps.keySet().stream().noneMatch(key -> key.startsWith("lag_s_"))) yield Double.isNaN(warm) ? plain : withWarmUp(plain, warm);
+                if (ps.keySet().stream().noneMatch(key -> key.startsWith("lag_s_"))) yield warm == null ? plain : withWarmUp(plain, warm);
                 double[] taus = new double[plain.links.length];
                 for (int col = 0; col < taus.length; col++) {
                     taus[col] = require(d, "lag_s_" + plain.linkName(plain.links[col]), file);
@@ -1372,7 +1392,7 @@ public final class Effect {
                             + plain.linkName(plain.links[col]), "must be >= 0, got " + taus[col]);
                 }
                 Effect lagged = thermalLinks(model, plain.t0C, null, taus);
-                yield Double.isNaN(warm) ? lagged : withWarmUp(lagged, warm);
+                yield warm == null ? lagged : withWarmUp(lagged, warm);
             }
             case DRIFT -> ps.containsKey("tau_s") ? driftWithTime() : driftWithTemperature(require(d, "t0_c", file));
         };

@@ -119,8 +119,8 @@ final class Words {
                 for (int i = 0; i < nl; i++)
                     sb.append(String.format(Locale.ROOT, " %s %.3g ± %.2g /K%s", e.linkWords(i), v[i], s[i], i < nl - 1 ? "," : "."));
                 if (e.warms()) {
-                    sb.append(String.format(Locale.ROOT, " The links also grow as the drives warm them while the robot works (time "
-                            + "constant %.0f s), when warmed through:", e.warmTauS()));
+                    sb.append(" The links also grow as the drives warm them while the robot works (time constant " + e.warmWords()
+                            + "), when warmed through:");
                     for (int i = nl; i < v.length; i++)
                         sb.append(String.format(Locale.ROOT, " %s %.1f ± %.1f ppm%s", e.linkWords(i - nl), 1e6 * v[i], 1e6 * s[i],
                                 i < v.length - 1 ? "," : "."));
