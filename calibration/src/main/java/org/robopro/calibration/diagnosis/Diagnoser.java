@@ -457,16 +457,19 @@ public final class Diagnoser {
     }
 
     /**
-     * The poses among {@code flagged} that a named lost motion's other flank explains: with the
-     * output on the other side of the play at that pose (its flank term −g in place of g, a change
-     * of −2g·b of the drive's output), the pose's residual falls to the noise (weighted sum of
-     * squares under 4 per residual row). Which flank a gear sits on near where gravity hands it
-     * over, or after a move the measuring order does not show, the model can only estimate; a pose
-     * the other flank explains is no bad measurement, and is not reported as one. The rest are kept.
+     * The poses among {@code flagged} that a named backlash held by gravity's other flank explains:
+     * at a pose whose gravity torque is near the holding torque (within half of it, or the
+     * hand-over's width if wider), with the output on the other side of the play (its flank term −g
+     * in place of g, a change of −2g·b of the drive's output), the pose's residual falls to the noise
+     * (weighted sum of squares under 4 per residual row). Which flank a gear sits on where gravity
+     * hands it over the model can only estimate (the file's masses are not the arm's, the mesh's
+     * friction varies); such a pose is no bad measurement, and is not reported as one. Elsewhere the
+     * flank is known and a pose keeps its verdict (a gross reading that happens to lie along the
+     * play's move is still one).
      */
     static List<String> otherFlankExplains(Work w, Fit fit, List<Effect> selected, List<String> flagged) {
         List<Integer> lost = new ArrayList<>();
-        for (int k = 0; k < selected.size(); k++) if (selected.get(k).kind() == Effect.Kind.BACKLASH) lost.add(k);
+        for (int k = 0; k < selected.size(); k++) if (selected.get(k).heldByGravity()) lost.add(k);
         if (lost.isEmpty()) return flagged;
         Tester t = w.tester(fit);
         if (t.ends > 1) return flagged;
@@ -479,6 +482,10 @@ public final class Diagnoser {
             for (int k : lost) {
                 if (i == null) break;
                 Effect e = selected.get(k);
+                Measurement pose = w.rows.get(i);
+                double tau = Math.abs(e.gravity().driveTorques(pose.q(), Double.isFinite(pose.payloadKg()) ? pose.payloadKg() : 0)[e.joint()]);
+                double band = Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
+                if (Math.abs(tau - e.heldAboveNm()) > band) continue;
                 double b = fit.full[fit.problem.effectOffset(k)];
                 double[] g = new double[1];
                 e.regressor(w.rows.get(i), w.conditions.get(i), g);
