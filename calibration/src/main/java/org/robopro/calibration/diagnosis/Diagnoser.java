@@ -889,58 +889,18 @@ public final class Diagnoser {
             break;
         }
         // With validation data, a growth whose links lag the temperature reading keeps its lags only when it predicts
-        // the validation poses better than the links at the reading's temperature in its place.
-        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
-            Effect e = selected.get(k);
-            if (e.kind() != Effect.Kind.THERMAL_LINK || !e.lags()) continue;
-            double with = w.validateError(fit);
-            Selection saved = Selection.of(selected, absorbedCols, steps);
-            Effect unlagged = Effect.withoutLags(e);
-            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, unlagged, false);
-            int at = selected.indexOf(unlagged);
-            if (at < 0) {
-                saved.restore(selected, absorbedCols, steps);
-                continue;
-            }
-            double wo = w.validateError(plain);
-            if (!(with < wo)) {
-                aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
+        // the validation poses better than the links at the reading's temperature in its place; likewise the drives' warm-up.
+        fit = validatedForm(w, fit, selected, absorbedCols, steps, e -> e.kind() == Effect.Kind.THERMAL_LINK && e.lags(), Effect::withoutLags,
+                (e, v) -> String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
                         + "reading's temperature but not the validation poses (weighted error %.1f against %.1f), so no lag is "
-                        + "taken", e.label(), with, wo));
-                fit = plain;
-                k--; // the effect after it now stands at k
-                continue;
-            }
-            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
-            break;
-        }
-        // Likewise the drives' warm-up: kept only when it predicts the validation poses better than the growth without it.
-        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
-            Effect e = selected.get(k);
-            if (!e.warms()) continue;
-            double with = w.validateError(fit);
-            Selection saved = Selection.of(selected, absorbedCols, steps);
-            Effect cold = Effect.withoutWarmUp(e);
-            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, cold, false);
-            int at = selected.indexOf(cold);
-            if (at < 0) {
-                saved.restore(selected, absorbedCols, steps);
-                continue;
-            }
-            double wo = w.validateError(plain);
-            if (!(with < wo)) {
-                aliasNotes.add(String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
+                        + "taken", e.label(), v[0], v[1]), null, aliasNotes);
+        fit = validatedForm(w, fit, selected, absorbedCols, steps, Effect::warms, Effect::withoutWarmUp,
+                (e, v) -> String.format(Locale.ROOT, "%s predicted the left-out training poses better than the links at the "
                         + "air's temperature alone but not the validation poses (weighted error %.1f against %.1f), so no warm-up by "
-                        + "the drives is taken", e.label(), with, wo));
-                fit = plain;
-                continue;
-            }
-            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
-            aliasNotes.add(String.format(Locale.ROOT, "%s: the links also grow as the drives warm them while the robot works (time "
-                    + "constant %s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
-                    + "without). Compensation takes the robot warmed through", e.label(), e.warmWords(), with, wo));
-            break;
-        }
+                        + "the drives is taken", e.label(), v[0], v[1]),
+                (e, v) -> String.format(Locale.ROOT, "%s: the links also grow as the drives warm them while the robot works (time "
+                        + "constant %s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
+                        + "without). Compensation takes the robot warmed through", e.label(), e.warmWords(), v[0], v[1]), aliasNotes);
         if (lag != null)
             for (int k = 0; k < selected.size(); k++)
                 if (selected.get(k).kind() == Effect.Kind.THERMAL_LINK) {
@@ -1219,6 +1179,43 @@ public final class Diagnoser {
             if (c.keptColumns > 0 && c.pressAfter < bestPress) { bestPress = c.pressAfter; best = e; }
         }
         return best;
+    }
+
+    /**
+     * With validation data, the first selected effect of a richer form ({@code richer}: lagged growth,
+     * a warm-up) is kept only when the final model predicts the validation poses better with it than
+     * with {@code simpler} of it in its place (each residual over its noise); otherwise the simpler
+     * form stays. {@code rejected} and {@code kept} (null: no note) word the outcome from the effect
+     * and {with, without}.
+     */
+    private static Fit validatedForm(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                     java.util.function.Predicate<Effect> richer, java.util.function.UnaryOperator<Effect> simpler,
+                                     java.util.function.BiFunction<Effect, double[], String> rejected,
+                                     java.util.function.BiFunction<Effect, double[], String> kept, List<String> notes) {
+        for (int k = 0; k < selected.size() && w.hasValidation(); k++) {
+            Effect e = selected.get(k);
+            if (!richer.test(e)) continue;
+            double with = w.validateError(fit);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
+            Effect plainForm = simpler.apply(e);
+            Fit plain = replaceEffect(w, fit, selected, absorbedCols, steps, k, plainForm, false);
+            int at = selected.indexOf(plainForm);
+            if (at < 0) {
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
+            double wo = w.validateError(plain);
+            if (!(with < wo)) {
+                notes.add(rejected.apply(e, new double[] {with, wo}));
+                fit = plain;
+                k--; // the effect after it now stands at k
+                continue;
+            }
+            fit = replaceEffect(w, plain, selected, absorbedCols, steps, at, e, false);
+            if (kept != null) notes.add(kept.apply(e, new double[] {with, wo}));
+            break;
+        }
+        return fit;
     }
 
     /** Time constants tried for the drives' warm-up of a thermal growth link by link, s. */
