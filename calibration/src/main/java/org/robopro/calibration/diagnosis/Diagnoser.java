@@ -2459,9 +2459,23 @@ public final class Diagnoser {
                 for (double share : shares) {
                     double hold = share >= 1 ? Double.NEGATIVE_INFINITY : sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
                     if (share < 1 && !(sorted[sorted.length - 1] > hold)) continue;
-                    Effect t = Effect.baseTilt(gravity, psi, hold);
-                    double p = at.pressReplacing(k, t, conds);
-                    if (p < bestPress[0]) { bestPress[0] = p; best[0] = t; bestAt[0] = psi; bestAt[1] = share; }
+                    // the tilt's two columns, Effect.baseTilt's regressor through each row's translation sensitivity
+                    double ex = Math.cos(psi), ey = Math.sin(psi);
+                    double[] sig = new double[at.m * 2];
+                    for (int i = 0; i < x.length; i++) {
+                        double xt = Double.isInfinite(hold) ? x[i] : Math.max(0, x[i] - hold);
+                        if (xt == 0) continue;
+                        for (int a = 0; a < at.posRows; a++) {
+                            int row = i * at.rpp + a;
+                            double[] pb = at.pointsBase[i][at.pointOfRow(a)];
+                            double gx = xt * ey * pb[2], gy = -xt * ex * pb[2], gz = xt * (ex * pb[1] - ey * pb[0]);
+                            double[] dt = at.endDTrans[0];
+                            sig[row * 2] = dt[row * 3] * gx + dt[row * 3 + 1] * gy + dt[row * 3 + 2] * gz;
+                            sig[row * 2 + 1] = dt[row * 3 + 2] * xt;
+                        }
+                    }
+                    double p = at.pressReplacingColumns(k, sig, 2);
+                    if (p < bestPress[0]) { bestPress[0] = p; best[0] = Effect.baseTilt(gravity, psi, hold); bestAt[0] = psi; bestAt[1] = share; }
                 }
             }
         }
@@ -3036,12 +3050,15 @@ public final class Diagnoser {
          * dropped and its fitted contribution returned to the residual.
          */
         double pressReplacing(int k, Effect alias, List<PoseConditions> conds) {
+            return alias == null ? pressReplacingColumns(k, null, 0) : pressReplacingColumns(k, signature(alias, conds), alias.size());
+        }
+
+        /** {@link #pressReplacing} with the alias given by its signature columns {@code s} (m x ka, row-major; null: nothing in its place). */
+        double pressReplacingColumns(int k, double[] s, int ka) {
             without(k);
             int rk = withoutU.length / m;
             double[] e = projectOut(withoutU, rk, m, withoutR);
-            if (alias == null) return pressBlocks(withoutH, e, null, 0);
-            int ka = alias.size();
-            double[] s = signature(alias, conds);
+            if (s == null) return pressBlocks(withoutH, e, null, 0);
             List<double[]> ys = new ArrayList<>();
             double[] n0s = new double[ka];
             double[] x = new double[m];
