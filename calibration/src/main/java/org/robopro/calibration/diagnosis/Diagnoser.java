@@ -2499,7 +2499,7 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         // the splines, and the few periods of a distance meter's cycle the residual holds most of
         List<Effect> cycles = new ArrayList<>();
-        for (Locator.Probe p : Locator.sightProbes(t)) (p.cycle > 0 ? cycles : out).add(sightEffect(p));
+        for (Locator.Probe p : Locator.sightProbes(t, true)) (p.cycle > 0 ? cycles : out).add(sightEffect(p));
         Map<Effect, Double> drop = new java.util.IdentityHashMap<>();
         for (Effect c : cycles) {
             Candidate cd = t.test(c, conds);

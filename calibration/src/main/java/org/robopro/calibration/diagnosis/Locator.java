@@ -269,7 +269,7 @@ final class Locator {
             out.add(q);
         }
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
-        out.addAll(sightProbes(t));
+        out.addAll(sightProbes(t, steps));
         return out;
     }
 
@@ -280,9 +280,12 @@ final class Locator {
      * ({@link Effect#instrumentReading}). A tracker's distance meter and angle encoders err as
      * functions of their own readings, which over a robot's workspace seen from metres away are
      * neither a joint's angle nor the point's reach; without these shapes such an error was named a
-     * transmission error of joint 1. Points only (3 rows each), one pose per row.
+     * transmission error of joint 1. Points only (3 rows each), one pose per row. With {@code cycles},
+     * also a distance meter's cyclic error at every period ({@link #rangeCycles}); the stepwise search's
+     * re-scans leave those out (such an error shows in the geometric fit's residuals already, and its
+     * hundred-odd probes are most of the instrument's share of a scan).
      */
-    static List<Probe> sightProbes(Diagnoser.Tester t) {
+    static List<Probe> sightProbes(Diagnoser.Tester t, boolean cycles) {
         List<Probe> out = new ArrayList<>();
         if (!t.w.instrument || t.ends != 1 || t.dim != 3) return out;
         int poses = t.w.rows.size(), pts = t.perPose;
@@ -345,7 +348,7 @@ final class Locator {
                 pr.xLabel = "the instrument's " + sight.words + " reading" + (range ? " (m)" : " (deg)");
                 out.add(pr);
             }
-            if (sight == Effect.Sight.RANGE && !Boolean.getBoolean("nocyc")) out.addAll(rangeCycles(t, inst, xp, dir, x, l0, h0));
+            if (sight == Effect.Sight.RANGE && cycles) out.addAll(rangeCycles(t, inst, xp, dir, x, l0, h0));
         }
         return out;
     }
