@@ -195,7 +195,9 @@ public final class DiagnosisReport {
                         + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
                                 new Svg.Series("fitted " + (f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().heldByGravity()
-                                        ? "lost motion held by gravity (centre of the play where the torque is small)" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728", true)), false));
+                                        ? "lost motion held by gravity (centre of the play where the torque is small)" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728",
+                                        // an effect on the measured point: its fitted size at each measurement, not a curve of the x variable
+                                        f.effect().target() != Effect.Target.POSITION)), false));
                 if (p.periodogram() != null) {
                     double[] hx = new double[p.periodogram().length];
                     for (int i = 0; i < hx.length; i++) hx[i] = i + 1;
