@@ -75,12 +75,13 @@ public final class Diagnoser {
     static final double MAX_PERIODIC_RAD = Math.toRadians(0.1);
     static final double MAX_BACKLASH_RAD = Math.toRadians(0.5);
     static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
+    /** Largest plausible tilt of a robot's base on its foundation per N·m of the arm's moment, rad/(N·m): a loose base indeed. */
+    static final double MAX_TILT_PER_NM = 1e-5;
     /**
      * Largest plausible RMS error of an instrument's distance reading (m) and of its angle readings
      * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
      * angle error a few arc-seconds; far beyond that the instrument is broken, not erring.
      */
-    static final double MAX_TILT_PER_NM = 1e-5;
     static final double MAX_INSTRUMENT_RANGE_M = 0.5e-3, MAX_INSTRUMENT_ANGLE_RAD = 50 / 3600.0 * Math.PI / 180;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     /**
@@ -1353,39 +1354,37 @@ public final class Diagnoser {
      */
     static List<Effect> ownFallbacks(Effect e, List<Measurement> rows, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
+        int j = e.joint(), k = e.source();
         switch (e.kind()) {
-            case PERIODIC, SCALE -> {
-                int j = e.joint();
-                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-                for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
-                if (hi > lo)
-                    for (int nb : Effect.SMOOTH_RESOLUTIONS)
-                        if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()) out.add(Effect.smooth(j, lo, hi, nb));
-            }
+            case PERIODIC, SCALE -> smoothCurves(out, rows, q -> q[j], (lo, hi, nb) -> Effect.smooth(j, lo, hi, nb));
             case COUPLING -> {
-                out.add(Effect.pair(e.joint(), e.source()));
+                out.add(Effect.pair(j, k));
                 // a pull that follows the source's angle but not in proportion (a cable tightening as it winds up)
-                int k = e.source();
-                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-                for (Measurement r : rows) { lo = Math.min(lo, r.q(k)); hi = Math.max(hi, r.q(k)); }
-                if (hi > lo)
-                    for (int nb : Effect.SMOOTH_RESOLUTIONS)
-                        if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
-                            out.add(Effect.smoothFollowing(e.joint(), k, lo, hi, nb));
+                smoothCurves(out, rows, q -> q[k], (lo, hi, nb) -> Effect.smoothFollowing(j, k, lo, hi, nb));
                 // on a linkage, the source joint's own angle in the arm (θ3 = q3 − q2 on a parallel arm)
-                if (model != null && !isUnitRow(model.couplingMatrix()[k], k)) {
-                    Effect probe = Effect.smoothFollowingModelAngle(e.joint(), k, model, 0, 1, Effect.SMOOTH_BASIS);
-                    double tlo = Double.POSITIVE_INFINITY, thi = Double.NEGATIVE_INFINITY;
-                    for (Measurement r : rows) { double th = probe.smoothVariable(r.q()); tlo = Math.min(tlo, th); thi = Math.max(thi, th); }
-                    if (thi > tlo)
-                        for (int nb : Effect.SMOOTH_RESOLUTIONS)
-                            if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
-                                out.add(Effect.smoothFollowingModelAngle(e.joint(), k, model, tlo, thi, nb));
-                }
+                if (model != null && !isUnitRow(model.couplingMatrix()[k], k))
+                    smoothCurves(out, rows, Effect.smoothFollowingModelAngle(j, k, model, 0, 1, Effect.SMOOTH_BASIS)::smoothVariable,
+                            (lo, hi, nb) -> Effect.smoothFollowingModelAngle(j, k, model, lo, hi, nb));
             }
             default -> { }
         }
         return out;
+    }
+
+    /** A smooth curve over [lo, hi] with nb functions. */
+    private interface SmoothOf { Effect at(double lo, double hi, int nb); }
+
+    /** The smooth curves of {@code variable} at every resolution the poses support, over its sampled range (none when it does not vary). */
+    private static void smoothCurves(List<Effect> out, List<Measurement> rows, java.util.function.ToDoubleFunction<double[]> variable, SmoothOf make) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) {
+            double v = variable.applyAsDouble(r.q());
+            lo = Math.min(lo, v);
+            hi = Math.max(hi, v);
+        }
+        if (hi > lo)
+            for (int nb : Effect.SMOOTH_RESOLUTIONS)
+                if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()) out.add(make.at(lo, hi, nb));
     }
 
     /**
@@ -2452,6 +2451,7 @@ public final class Diagnoser {
             double[] shares = round == 0 || bestAt[1] >= 1 ? TILT_SHARES
                     : new double[] {bestAt[1] * 0.8, bestAt[1] * 0.9, bestAt[1], Math.min(0.95, bestAt[1] * 1.1), Math.min(0.97, bestAt[1] * 1.25)};
             for (double psi : psis) {
+                double ex = Math.cos(psi), ey = Math.sin(psi);
                 double[] x = new double[m.length];
                 for (int i = 0; i < x.length; i++) x[i] = m[i][0] * Math.cos(psi) + m[i][1] * Math.sin(psi);
                 double[] sorted = x.clone();
@@ -2459,19 +2459,16 @@ public final class Diagnoser {
                 for (double share : shares) {
                     double hold = share >= 1 ? Double.NEGATIVE_INFINITY : sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
                     if (share < 1 && !(sorted[sorted.length - 1] > hold)) continue;
-                    // the tilt's two columns, Effect.baseTilt's regressor through each row's translation sensitivity
-                    double ex = Math.cos(psi), ey = Math.sin(psi);
-                    double[] sig = new double[at.m * 2];
+                    // the tilt's two columns: its regressor (from the moments above) through each row's translation sensitivity
+                    double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0];
                     for (int i = 0; i < x.length; i++) {
                         double xt = Double.isInfinite(hold) ? x[i] : Math.max(0, x[i] - hold);
                         if (xt == 0) continue;
                         for (int a = 0; a < at.posRows; a++) {
                             int row = i * at.rpp + a;
-                            double[] pb = at.pointsBase[i][at.pointOfRow(a)];
-                            double gx = xt * ey * pb[2], gy = -xt * ex * pb[2], gz = xt * (ex * pb[1] - ey * pb[0]);
-                            double[] dt = at.endDTrans[0];
-                            sig[row * 2] = dt[row * 3] * gx + dt[row * 3 + 1] * gy + dt[row * 3 + 2] * gz;
-                            sig[row * 2 + 1] = dt[row * 3 + 2] * xt;
+                            Effect.tiltRegressor(xt, ex, ey, at.pointsBase[i][at.pointOfRow(a)], g3);
+                            for (int col = 0; col < 2; col++)
+                                sig[row * 2 + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[2 + col] + dt[row * 3 + 2] * g3[4 + col];
                         }
                     }
                     double p = at.pressReplacingColumns(k, sig, 2);

@@ -539,11 +539,11 @@ public final class Effect {
      */
     public static Effect instrumentCyclic(Sight sight, Pose instrumentTbase, double azimuthRef, double lo, double hi, double period) {
         if (!(period > 0) || Double.isInfinite(period)) throw new IllegalArgumentException("cycle " + period);
-        Effect e = instrumentReading(sight, instrumentTbase, azimuthRef, lo, hi, POINT_BASIS);
+        if (!(hi > lo)) throw new IllegalArgumentException("instrument reading range " + lo + ".." + hi);
         Effect c = new Effect(Kind.INSTRUMENT, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, 2);
-        c.sight = e.sight;
-        c.instrument = e.instrument;
-        c.azimuthRef = e.azimuthRef;
+        c.sight = sight;
+        c.instrument = instrumentTbase;
+        c.azimuthRef = sight == Sight.AZIMUTH ? azimuthRef : 0;
         c.cycle = period;
         return c;
     }
@@ -574,6 +574,20 @@ public final class Effect {
         Vec3 m = gravity.baseMoment(q, payloadKg);
         double x = m.x() * Math.cos(tiltAzimuth) + m.y() * Math.sin(tiltAzimuth);
         return Double.isInfinite(tiltHold) ? x : Math.max(0, x - tiltHold);
+    }
+
+    /**
+     * A base tilt's regressor (3 x 2, row-major) at excess moment {@code x} about the unit axis
+     * (ex, ey, 0) for a point at {@code p}: the tilt's x·(e × p) = x·(ey p_z, −ex p_z, ex p_y − ey p_x),
+     * and the lift x·ẑ.
+     */
+    static void tiltRegressor(double x, double ex, double ey, double[] p, double[] g3) {
+        g3[0] = x * ey * p[2];
+        g3[1] = 0;
+        g3[2] = -x * ex * p[2];
+        g3[3] = 0;
+        g3[4] = x * (ex * p[1] - ey * p[0]);
+        g3[5] = x;
     }
 
     /** A base tilt's axis azimuth (rad) and hold (N·m; −∞ for none). */
@@ -692,19 +706,18 @@ public final class Effect {
         if (growth.kind != Kind.THERMAL_LINK) throw new IllegalArgumentException("a warm-up belongs to thermal-link, not " + growth.label());
         if (warmTausS.length != growth.links.length) throw new IllegalArgumentException("warm-ups " + warmTausS.length + " for " + growth.links.length + " links");
         for (double x : warmTausS) if (!(x > 0) || Double.isInfinite(x)) throw new IllegalArgumentException("warm-up time constant " + x);
-        Effect e = new Effect(Kind.THERMAL_LINK, -1, -1, null, false, growth.t0C, Double.NaN, null, Double.NaN, Double.NaN, growth.model, growth.links);
-        e.lag = growth.lag;
-        e.lagTaus = growth.lagTaus == null ? null : growth.lagTaus.clone();
-        e.warmTaus = warmTausS.clone();
-        return e;
+        return growthWith(growth, warmTausS.clone());
     }
 
     /** {@code growth} without the drives' warm-up (itself when it has none). */
-    public static Effect withoutWarmUp(Effect growth) {
-        if (!growth.warms()) return growth;
+    public static Effect withoutWarmUp(Effect growth) { return growth.warms() ? growthWith(growth, null) : growth; }
+
+    /** A copy of thermal growth {@code growth} (its links, reference and lags) with the warm-ups {@code warmTaus} (null: none). */
+    private static Effect growthWith(Effect growth, double[] warmTaus) {
         Effect e = new Effect(Kind.THERMAL_LINK, -1, -1, null, false, growth.t0C, Double.NaN, null, Double.NaN, Double.NaN, growth.model, growth.links);
         e.lag = growth.lag;
         e.lagTaus = growth.lagTaus == null ? null : growth.lagTaus.clone();
+        e.warmTaus = warmTaus;
         return e;
     }
 
@@ -1019,14 +1032,7 @@ public final class Effect {
         int k = size();
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
-            case BASE_TILT -> {
-                double xt = tiltExcess(q, c.payloadKg()), ex = Math.cos(tiltAzimuth), ey = Math.sin(tiltAzimuth);
-                // e × p with e = (ex, ey, 0): (ey p_z, −ex p_z, ex p_y − ey p_x); then the lift along z
-                g3[0] = xt * ey * pointBase[2];
-                g3[k] = -xt * ex * pointBase[2];
-                g3[2 * k] = xt * (ex * pointBase[1] - ey * pointBase[0]);
-                g3[2 * k + 1] = xt;
-            }
+            case BASE_TILT -> tiltRegressor(tiltExcess(q, c.payloadKg()), Math.cos(tiltAzimuth), Math.sin(tiltAzimuth), pointBase, g3);
             case INSTRUMENT -> {
                 // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
                 double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();

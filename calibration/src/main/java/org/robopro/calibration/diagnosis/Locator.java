@@ -300,33 +300,37 @@ final class Locator {
                 if (h > 0) { cx += pi[i][p][0] / h; cy += pi[i][p][1] / h; }
             }
         double azRef = Math.atan2(cy, cx);
+        int rpp = t.rpp;
         for (Effect.Sight sight : Effect.Sight.values()) {
+            // per residual row of a point: the instrument's reading of that point, and the row's sensitivity to an error of it
+            double[] u = new double[t.m], sens = new double[t.m];
             double[][] x = new double[1][poses];
-            double[][][] xp = new double[poses][pts][1], dir = new double[poses][pts][3];
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
             for (int i = 0; i < poses; i++)
                 for (int p = 0; p < pts; p++) {
-                    xp[i][p][0] = Effect.sightReading(sight, azRef, pi[i][p]);
-                    double[] d = Effect.sightDirection(sight, pi[i][p]);
-                    for (int a = 0; a < 3; a++) dir[i][p][a] = inst.rot(0, a) * d[0] + inst.rot(1, a) * d[1] + inst.rot(2, a) * d[2];
+                    double r = Effect.sightReading(sight, azRef, pi[i][p]);
+                    double[] d = Effect.sightDirection(sight, pi[i][p]), db = new double[3];
+                    for (int a = 0; a < 3; a++) db[a] = inst.rot(0, a) * d[0] + inst.rot(1, a) * d[1] + inst.rot(2, a) * d[2];
+                    for (int a = 0; a < t.posRows; a++) {
+                        if (t.pointOfRow(a) != p) continue;
+                        int row = i * rpp + a;
+                        u[row] = r;
+                        for (int ax = 0; ax < 3; ax++) sens[row] += t.endDTrans[0][row * 3 + ax] * db[ax];
+                    }
+                    if (p == 0) x[0][i] = r;
+                    lo = Math.min(lo, r);
+                    hi = Math.max(hi, r);
                 }
-            for (int i = 0; i < poses; i++) x[0][i] = xp[i][0][0];
-            double lo = min(x), hi = max(x);
-            if (!(hi - lo > (sight == Effect.Sight.RANGE ? 0.05 : Math.toRadians(2)))) continue;
-            for (int p = 0; p < pts; p++) for (int i = 0; i < poses; i++) { lo = Math.min(lo, xp[i][p][0]); hi = Math.max(hi, xp[i][p][0]); }
+            if (!(max(x) - min(x) > (sight == Effect.Sight.RANGE ? 0.05 : Math.toRadians(2)))) continue;
             double l0 = lo, h0 = hi;
-            int rpp = t.rpp;
             for (int nb : sight == Effect.Sight.RANGE ? RANGE_RESOLUTIONS : ANGLE_RESOLUTIONS) {
                 if (nb > Effect.POINT_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
-                double[][][] g = new double[poses][pts][nb];
-                for (int i = 0; i < poses; i++) for (int p = 0; p < pts; p++) Effect.bspline(xp[i][p][0], l0, h0, g[i][p]);
-                double[] s = new double[t.m * nb];
-                for (int i = 0; i < poses; i++)
-                    for (int a = 0; a < t.posRows; a++) {
-                        int row = i * rpp + a, p = t.pointOfRow(a);
-                        double sens = 0;
-                        for (int ax = 0; ax < 3; ax++) sens += t.endDTrans[0][row * 3 + ax] * dir[i][p][ax];
-                        for (int c = 0; c < nb; c++) s[row * nb + c] = sens * g[i][p][c];
-                    }
+                double[] s = new double[t.m * nb], g = new double[nb];
+                for (int row = 0; row < t.m; row++) {
+                    if (sens[row] == 0) continue;
+                    Effect.bspline(u[row], l0, h0, g);
+                    for (int c = 0; c < nb; c++) s[row * nb + c] = sens[row] * g[c];
+                }
                 Probe pr = finish(t, s, nb);
                 pr.var = Var.SIGHT;
                 pr.sight = sight;
@@ -348,7 +352,7 @@ final class Locator {
                 pr.xLabel = "the instrument's " + sight.words + " reading" + (range ? " (m)" : " (deg)");
                 out.add(pr);
             }
-            if (sight == Effect.Sight.RANGE && cycles) out.addAll(rangeCycles(t, inst, xp, dir, x, l0, h0));
+            if (sight == Effect.Sight.RANGE && cycles) out.addAll(rangeCycles(t, inst, u, sens, x, l0, h0));
         }
         return out;
     }
@@ -359,24 +363,21 @@ final class Locator {
      * on a grid of 3 points per independent frequency (1 / span cycles per metre): each period its
      * own 2-column probe, as each harmonic of a joint is.
      */
-    private static List<Probe> rangeCycles(Diagnoser.Tester t, org.robopro.kinematics.Pose inst, double[][][] xp, double[][][] dir,
+    private static List<Probe> rangeCycles(Diagnoser.Tester t, org.robopro.kinematics.Pose inst, double[] u, double[] sens,
                                            double[][] x, double lo, double hi) {
         List<Probe> out = new ArrayList<>();
-        int poses = xp.length, pts = xp[0].length, rpp = t.rpp;
+        int poses = x[0].length;
         double span = hi - lo;
         double fMax = Math.min(1 / MIN_RANGE_CYCLE_M, poses / (3 * span)), step = 1 / (3 * span);
         for (double f = 2 / span; f <= fMax; f += step) {
             double lambda = 1 / f;
             double[] s = new double[t.m * 2];
-            for (int i = 0; i < poses; i++)
-                for (int a = 0; a < t.posRows; a++) {
-                    int row = i * rpp + a, p = t.pointOfRow(a);
-                    double sens = 0;
-                    for (int ax = 0; ax < 3; ax++) sens += t.endDTrans[0][row * 3 + ax] * dir[i][p][ax];
-                    double ph = 2 * Math.PI * xp[i][p][0] / lambda;
-                    s[row * 2] = sens * Math.sin(ph);
-                    s[row * 2 + 1] = sens * Math.cos(ph);
-                }
+            for (int row = 0; row < t.m; row++) {
+                if (sens[row] == 0) continue;
+                double ph = 2 * Math.PI * u[row] / lambda;
+                s[row * 2] = sens[row] * Math.sin(ph);
+                s[row * 2 + 1] = sens[row] * Math.cos(ph);
+            }
             Probe pr = finish(t, s, 2);
             pr.var = Var.SIGHT;
             pr.sight = Effect.Sight.RANGE;
