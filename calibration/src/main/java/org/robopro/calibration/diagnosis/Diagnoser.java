@@ -338,12 +338,13 @@ public final class Diagnoser {
             masks.put(e, m);
         }
         KinematicModel model = KinematicModel.build(robot);
+        GravityTorques gravity = GravityTorques.of(model, robot);
         for (int f = 0; f < folds.size(); f++) {
             o.cancel().check();
             Diagnosis df = folds.get(f);
             Set<String> outl = new HashSet<>(df.outliers());
             MeasurementSet.FoldSplit split = train.foldSplit(fold, f);
-            Work w = new Work(model, split.train().filter(m -> !outl.contains(m.poseId())).rows(), df.geometric(), split.heldOut(), o);
+            Work w = new Work(model, gravity, split.train().filter(m -> !outl.contains(m.poseId())).rows(), df.geometric(), split.heldOut(), o);
             double[] start = Arrays.copyOf(w.geoFull, w.geoFull.length + d.effects().stream().mapToInt(x -> x.effect().size()).sum());
             int off = w.geoFull.length;
             for (Diagnosis.Finding x : d.effects()) for (double v : x.values()) start[off++] = v; // from the full fit's values
@@ -565,7 +566,7 @@ public final class Diagnoser {
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
 
-        Work w = new Work(model, rows, geo, validate, o);
+        Work w = new Work(model, gravity, rows, geo, validate, o);
         List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
         // Each pose's last move per joint, in the measuring order of the whole file: a lost motion that builds up over the move.
         Directions.Moves moves = geo.pairs() ? Directions.Moves.NONE : Directions.moves(trainAll, validate);
@@ -778,7 +779,7 @@ public final class Diagnoser {
                 if (smooth && (a.isFallback() || !checkedAgainstFallbacks(a) || a.target() != Effect.Target.DRIVE)) continue;
                 double pa = at.pressReplacing(k, a, w.conditions);
                 if (smooth ? pa <= bestPress * (1 + ALIAS_MARGIN) && (best == null || pa < bestPress)
-                        : pa < bestPress * (1 - ALIAS_MARGIN)) { bestPress = pa; best = a; }
+                        : pa < bestPress * (1 - ALIAS_MARGIN) && !richerWithoutCause(at, e, a, w)) { bestPress = pa; best = a; }
             }
             if (best == null) continue;
             LOG.debug("alias: {} replaced by {} (PRESS {} -> {})", e.label(), best.label(), own, bestPress);
@@ -841,6 +842,13 @@ public final class Diagnoser {
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
+        if (selected.stream().anyMatch(e -> e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow())) {
+            // a step of a joint's reading that took a withdrawn family's place may be a play held by gravity, as above
+            List<String> before = selected.stream().map(Effect::label).toList();
+            fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
+            if (!selected.stream().map(Effect::label).toList().equals(before))
+                fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
+        }
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
         // With validation data, an effect is kept only when the final model predicts the validation poses better with
         // it than refitted without it (position and orientation, each over its noise).
@@ -902,6 +910,11 @@ public final class Diagnoser {
                 (e, v) -> String.format(Locale.ROOT, "%s: the links also grow as the drives warm them while the robot works (time "
                         + "constant %s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
                         + "without). Compensation takes the robot warmed through", e.label(), e.warmWords(), v[0], v[1]), aliasNotes);
+        // With validation data, a stiffening spring is claimed only when it predicts the validation poses better than a linear one.
+        fit = validatedForm(w, fit, selected, absorbedCols, steps, Effect::stiffens, Effect::withoutStiffening,
+                (e, v) -> String.format(Locale.ROOT, "%s predicted the left-out training poses better than a linear spring but not "
+                        + "the validation poses (weighted error %.1f against %.1f), so the spring is taken as linear", e.label(), v[0], v[1]),
+                null, aliasNotes);
         if (lag != null)
             for (int k = 0; k < selected.size(); k++)
                 if (selected.get(k).kind() == Effect.Kind.THERMAL_LINK) {
@@ -2115,6 +2128,8 @@ public final class Diagnoser {
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE && e.joint() == f.probe.joint) return e; }
                 case REACH, HEIGHT -> { return e; }
                 case SIGHT -> { if (k == Effect.Kind.INSTRUMENT && e.sight() == f.probe.sight) return e; }
+                // the base's tilt, or a drive of the arm's first joints giving way under the same weight
+                case BASE_MOMENT -> { if (k == Effect.Kind.BASE_TILT || k == Effect.Kind.COMPLIANCE && e.joint() <= 2) return e; }
             }
         }
         return null;
@@ -2298,6 +2313,9 @@ public final class Diagnoser {
                     + "instrument moves with it, one of the robot does not."
                     : "run the instrument's two-face (front and back sight) check and its compensation, then measure a few poses "
                     + "again with the instrument moved to another place: an error of the instrument moves with it, one of the robot does not.";
+            case BASE_MOMENT -> "check the anchor bolts' torque and the base plate's grout, then put a second target (or an "
+                    + "inclinometer) on the robot's foot and read it while the arm swings stretched out around joint 1 with a payload: "
+                    + "a base that rocks moves there, a joint that gives way does not.";
         };
     }
 
@@ -2375,6 +2393,8 @@ public final class Diagnoser {
             if (f.probe.var == Locator.Var.TARGET_STEP) out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
         // an error of the instrument's readings: modelled where it is located, so that it does not bend the robot's fit
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.SIGHT) out.add(sightEffect(f.probe));
+        // the base giving way under the arm's moment: the tilt searched where it was located
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.BASE_MOMENT && f.probe.tilt != null) out.add(f.probe.tilt);
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -2413,6 +2433,7 @@ public final class Diagnoser {
                 case TIME_STEP, ANGLE_STEP, TARGET_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
+                case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2432,51 +2453,137 @@ public final class Diagnoser {
      * in the place of selected family {@code k}: its axis every 15° and the moment it holds before
      * tilting (the shares of the poses it tilts at), for a family of drives 1–3 (a base that rocks
      * under the arm's weight turns everything as a compliance, a coupling or a transmission error
-     * of the arm's first joints partly would); null without the robot file's masses.
+     * of the arm's first joints partly would); null without the robot file's masses. With {@code k}
+     * negative ({@code e} null), the tilt added to the model as fitted: the shape of a base moment
+     * located ({@link Locator#baseMoment}).
      */
     static Effect bestBaseTilt(Tester at, int k, Effect e, GravityTorques gravity, List<Measurement> rows, List<PoseConditions> conds) {
-        if (gravity == null || gravity.massesUnknown() || e.target() != Effect.Target.DRIVE || e.joint() > 2 || at.ends > 1) return null;
+        if (gravity == null || gravity.massesUnknown() || at.ends > 1) return null;
+        if (k >= 0 && (e.target() != Effect.Target.DRIVE || e.joint() > 2)) return null;
+        double[] tilt = tiltSearch(at, k, gravity, rows, null); // press, axis azimuth, share of the poses tilted
+        if (!Double.isFinite(tilt[0])) return null;
+        // Each mass of the arm scaled in turn at that axis and share (a data sheet's masses are rarely better than ±30 %);
+        // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
+        double[] sc = new double[gravity.massCount()];
+        Arrays.fill(sc, 1);
+        double pr = tilt[0];
+        for (int round = 0; round < 2; round++)
+            for (int m = 0; m < sc.length; m++) {
+                if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                double keep = sc[m], bestF = keep;
+                for (double f : HELD_MASS_SCALES) {
+                    if (f == keep) continue;
+                    sc[m] = f;
+                    double p = tiltPress(at, k, moments(gravity.withMassScales(sc), rows), tilt[1], tilt[2]);
+                    if (p < pr) { pr = p; bestF = f; }
+                }
+                sc[m] = bestF;
+            }
+        double[] scales = null;
+        if (pr < tilt[0] * (1 - ALIAS_MARGIN)) {
+            double[] again = tiltSearch(at, k, gravity.withMassScales(sc), rows, tilt); // the axis and hold again, with those masses
+            if (again[0] < pr) tilt = again;
+            else { tilt[0] = pr; }
+            scales = sc;
+        }
+        GravityTorques g = scales == null ? gravity : gravity.withMassScales(scales);
+        return Effect.baseTilt(gravity, tilt[1], tiltHold(g, rows, tilt[1], tilt[2]), scales);
+    }
+
+    /**
+     * The base tilt's axis and hold that predict left-out poses best with masses {@code g}: every
+     * {@link #TILT_AZIMUTHS}th of a turn and the {@link #TILT_SHARES}, then the best one's
+     * neighbours (a quarter and a half of the grid's step either side, and the shares between); from
+     * {@code start} (press, azimuth, share) only its neighbours. Returns {press, azimuth, share}.
+     */
+    private static double[] tiltSearch(Tester at, int k, GravityTorques g, List<Measurement> rows, double[] start) {
+        double[][] mom = moments(g, rows);
+        double[] best = start == null ? new double[] {Double.POSITIVE_INFINITY, 0, 1} : start.clone();
+        if (start != null) best[0] = tiltPress(at, k, mom, best[1], best[2]);
+        double step = 2 * Math.PI / TILT_AZIMUTHS;
+        for (int round = start == null ? 0 : 1; round < 2; round++) {
+            double[] psis = round == 0 ? java.util.stream.IntStream.range(0, TILT_AZIMUTHS).mapToDouble(a -> a * step).toArray()
+                    : new double[] {best[1] - step / 2, best[1] - step / 4, best[1], best[1] + step / 4, best[1] + step / 2};
+            double[] shares = round == 0 || best[2] >= 1 ? TILT_SHARES
+                    : new double[] {best[2] * 0.8, best[2] * 0.9, best[2], Math.min(0.95, best[2] * 1.1), Math.min(0.97, best[2] * 1.25)};
+            for (double psi : psis)
+                for (double share : shares) {
+                    double p = tiltPress(at, k, mom, psi, share);
+                    if (p < best[0]) { best[0] = p; best[1] = psi; best[2] = share; }
+                }
+            if (round == 0)
+                // a foot that rocks toward whichever side the arm leans (NaN: the axis is the moment's own)
+                for (double share : TILT_SHARES) {
+                    double p = tiltPress(at, k, mom, Double.NaN, share);
+                    if (p < best[0]) { best[0] = p; best[1] = Double.NaN; best[2] = share; }
+                }
+            if (Double.isNaN(best[1])) { // its hold refined
+                double b = best[2];
+                for (double share : new double[] {b * 0.8, b * 0.9, Math.min(1, b * 1.1), Math.min(1, b * 1.25)}) {
+                    double p = tiltPress(at, k, mom, Double.NaN, share);
+                    if (p < best[0]) { best[0] = p; best[2] = share; }
+                }
+                break;
+            }
+        }
+        return best;
+    }
+
+    /** The moment the base holds before it tilts about the axis at {@code psi}: tilting at {@code share} of the poses (−∞: 1, both ways). */
+    private static double tiltHold(GravityTorques g, List<Measurement> rows, double psi, double share) {
+        if (share >= 1) return Double.isNaN(psi) ? 0 : Double.NEGATIVE_INFINITY;
+        double[] x = tiltMoments(moments(g, rows), psi);
+        Arrays.sort(x);
+        return x[(int) Math.floor((1 - share) * (x.length - 1))];
+    }
+
+    /** Each row's moment of the arm's weight and payload (masses {@code g}) about the base origin (N·m, base frame). */
+    private static double[][] moments(GravityTorques g, List<Measurement> rows) {
         double[][] m = new double[rows.size()][];
         for (int i = 0; i < m.length; i++) {
             Measurement r = rows.get(i);
-            m[i] = gravity.baseMoment(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0).toArray();
+            m[i] = g.baseMoment(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0).toArray();
         }
-        Effect[] best = {null};
-        double[] bestPress = {Double.POSITIVE_INFINITY}, bestAt = new double[2];
-        for (int round = 0; round < 2; round++) {
-            // the grid, then the best one's neighbours: a quarter and a half of the grid's step either side, and the shares between
-            double step = 2 * Math.PI / TILT_AZIMUTHS;
-            double[] psis = round == 0 ? java.util.stream.IntStream.range(0, TILT_AZIMUTHS).mapToDouble(a -> a * step).toArray()
-                    : new double[] {bestAt[0] - step / 2, bestAt[0] - step / 4, bestAt[0], bestAt[0] + step / 4, bestAt[0] + step / 2};
-            double[] shares = round == 0 || bestAt[1] >= 1 ? TILT_SHARES
-                    : new double[] {bestAt[1] * 0.8, bestAt[1] * 0.9, bestAt[1], Math.min(0.95, bestAt[1] * 1.1), Math.min(0.97, bestAt[1] * 1.25)};
-            for (double psi : psis) {
-                double ex = Math.cos(psi), ey = Math.sin(psi);
-                double[] x = new double[m.length];
-                for (int i = 0; i < x.length; i++) x[i] = m[i][0] * Math.cos(psi) + m[i][1] * Math.sin(psi);
-                double[] sorted = x.clone();
-                Arrays.sort(sorted);
-                for (double share : shares) {
-                    double hold = share >= 1 ? Double.NEGATIVE_INFINITY : sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
-                    if (share < 1 && !(sorted[sorted.length - 1] > hold)) continue;
-                    // the tilt's two columns: its regressor (from the moments above) through each row's translation sensitivity
-                    double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0];
-                    for (int i = 0; i < x.length; i++) {
-                        double xt = Double.isInfinite(hold) ? x[i] : Math.max(0, x[i] - hold);
-                        if (xt == 0) continue;
-                        for (int a = 0; a < at.posRows; a++) {
-                            int row = i * at.rpp + a;
-                            Effect.tiltRegressor(xt, ex, ey, at.pointsBase[i][at.pointOfRow(a)], g3);
-                            for (int col = 0; col < 2; col++)
-                                sig[row * 2 + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[2 + col] + dt[row * 3 + 2] * g3[4 + col];
-                        }
-                    }
-                    double p = at.pressReplacingColumns(k, sig, 2);
-                    if (p < bestPress[0]) { bestPress[0] = p; best[0] = Effect.baseTilt(gravity, psi, hold); bestAt[0] = psi; bestAt[1] = share; }
-                }
+        return m;
+    }
+
+    /** The moments {@code mom} about the horizontal axis at azimuth {@code psi} (NaN: each one's horizontal size), N·m. */
+    private static double[] tiltMoments(double[][] mom, double psi) {
+        double[] x = new double[mom.length];
+        for (int i = 0; i < x.length; i++)
+            x[i] = Double.isNaN(psi) ? Math.hypot(mom[i][0], mom[i][1]) : mom[i][0] * Math.cos(psi) + mom[i][1] * Math.sin(psi);
+        return x;
+    }
+
+    /**
+     * The leave-one-pose-out error with the base tilt about the axis at {@code psi}, tilting at
+     * {@code share} of the poses, in the place of selected effect {@code k} (negative: added):
+     * its two columns, the regressor through each row's translation sensitivity.
+     */
+    private static double tiltPress(Tester at, int k, double[][] mom, double psi, double share) {
+        boolean lean = Double.isNaN(psi);
+        double ex = lean ? 0 : Math.cos(psi), ey = lean ? 0 : Math.sin(psi);
+        double[] x = tiltMoments(mom, psi);
+        double hold = lean ? 0 : Double.NEGATIVE_INFINITY;
+        if (share < 1) {
+            double[] sorted = x.clone();
+            Arrays.sort(sorted);
+            hold = sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
+            if (!(sorted[sorted.length - 1] > hold)) return Double.POSITIVE_INFINITY;
+        }
+        double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0];
+        for (int i = 0; i < x.length; i++) {
+            double xt = Double.isInfinite(hold) ? x[i] : Math.max(0, x[i] - hold);
+            if (xt == 0) continue;
+            if (lean) { ex = mom[i][0] / x[i]; ey = mom[i][1] / x[i]; }
+            for (int a = 0; a < at.posRows; a++) {
+                int row = i * at.rpp + a;
+                Effect.tiltRegressor(xt, ex, ey, at.pointsBase[i][at.pointOfRow(a)], g3);
+                for (int col = 0; col < 2; col++)
+                    sig[row * 2 + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[2 + col] + dt[row * 3 + 2] * g3[4 + col];
             }
         }
-        return best[0];
+        return k >= 0 ? at.pressReplacingColumns(k, sig, 2) : at.pressAddingColumns(sig, 2);
     }
 
     /** The instrument-reading fallback of an instrument probe ({@link Locator#sightProbes}). */
@@ -2509,6 +2616,21 @@ public final class Diagnoser {
 
     /** The periods of a distance meter's cycle put in a family's place: those that take most of what is left. */
     static final int INSTRUMENT_CYCLE_RIVALS = 3;
+
+    /**
+     * Whether alias {@code a} has more parameters than the selected {@code e} it would replace and finds
+     * nothing significant beside it (its partial F-test on the model holding {@code e}, at the
+     * family-wise α). Its lower leave-one-pose-out error is then the extra parameters' share of the
+     * noise, not a shape {@code e} leaves: over a joint's short range a few harmonics of its angle
+     * follow a scale error's ramp as closely as the ramp itself, and the simpler form stays.
+     */
+    static boolean richerWithoutCause(Tester at, Effect e, Effect a, Work w) {
+        if (a.size() <= e.size() || a.isFallback()) return false;
+        Candidate c = at.test(a, w.conditions);
+        boolean without = c.keptColumns == 0 || !(c.p < w.o.alpha());
+        if (without) LOG.debug("alias: {} not in place of {}: more parameters and nothing significant beside it (p {})", a.label(), e.label(), c.p);
+        return without;
+    }
 
     /** The candidates that could explain the same structure as {@code e}: other families on its drive, or other thermal forms. */
     static List<Effect> aliases(Effect e, List<Effect> family, List<Effect> selected) {
@@ -2573,9 +2695,11 @@ public final class Diagnoser {
         final double sigmaPos, sigmaRot;
         final MeasurementSet validate;
         final Options o;
+        final GravityTorques gravity; // the robot file's mass model (masses unknown without one)
 
-        Work(KinematicModel model, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o) {
+        Work(KinematicModel model, GravityTorques gravity, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o) {
             this.model = model;
+            this.gravity = gravity;
             this.rows = rows;
             for (Measurement m : rows) conditions.add(PoseConditions.of(m));
             this.sixD = geo.sixD();
@@ -3055,6 +3179,17 @@ public final class Diagnoser {
             without(k);
             int rk = withoutU.length / m;
             double[] e = projectOut(withoutU, rk, m, withoutR);
+            return pressWithColumns(withoutU, rk, withoutH, e, s, ka);
+        }
+
+        /** {@link #pressReplacingColumns} with nothing taken out: the ka columns s added to the model as fitted. */
+        double pressAddingColumns(double[] s, int ka) { return pressWithColumns(u, rank, h0, rPerp.clone(), s, ka); }
+
+        /**
+         * PRESS of the model of basis U (m x rk) and hat blocks h, residual e (out of span(U); changed
+         * here), with the ka columns s (m x ka, row-major; null: none) added.
+         */
+        private double pressWithColumns(double[] withoutU, int rk, double[][] withoutH, double[] e, double[] s, int ka) {
             if (s == null) return pressBlocks(withoutH, e, null, 0);
             List<double[]> ys = new ArrayList<>();
             double[] n0s = new double[ka];
@@ -3379,6 +3514,13 @@ public final class Diagnoser {
                     return;
                 }
                 double k = 1 / v[0];
+                if (e.stiffens()) {
+                    // a reducer's stiffness rises with the torque (c3 < 0); one that softens is not a spring's curve
+                    c.plausible = overlaps(v[0], sd[0], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS) && v[1] - 3 * sd[1] <= 0;
+                    c.plausibility = String.format(Locale.ROOT, "stiffness %.3g N·m/rad within %.0e..%.0e (positive), cubic term %.3g "
+                            + "not positive (stiffening)", k, MIN_STIFFNESS, MAX_STIFFNESS, v[1]);
+                    return;
+                }
                 c.plausible = overlaps(v[0], sd[0], 1 / MAX_STIFFNESS, 1 / MIN_STIFFNESS);
                 c.plausibility = String.format(Locale.ROOT, "stiffness %.3g N·m/rad within %.0e..%.0e (positive)", k,
                         MIN_STIFFNESS, MAX_STIFFNESS);

@@ -149,6 +149,7 @@ public final class Effect {
     private final int joint, source;        // 0-based; -1 when none
     private final GravityTorques gravity;    // compliance only
     private final boolean perMass;           // compliance: one coefficient per mass
+    private boolean stiffens;                // compliance: a spring that stiffens with its load, Δq = c·τ + c3·τ³
     private final double t0C, tauS;          // thermal / drift: reference temperature, or time constant (NaN)
     private final int[] harmonics;           // periodic
     private double[] stages = new double[0]; // periodic: orders that are not whole (an intermediate shaft's turns per output turn)
@@ -161,7 +162,7 @@ public final class Effect {
     private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
     private double preloadNm = Double.NaN;   // backlash held on one flank by gravity: the torque above which it is held (N·m); NaN: free
     private double preloadWidth;             // that backlash: half-width of the hand-over, a share of preloadNm (0: a sharp one)
-    private double[] massScales;             // that backlash: the file's masses re-estimated by a factor each (null: as in the file)
+    private double[] massScales;             // that backlash, a base tilt: the file's masses re-estimated by a factor each (null: as in the file)
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
     private double[] warmTaus;               // thermal-link: each link's warm-up time constant by its drives, s (null: the air's temperature only)
@@ -169,7 +170,7 @@ public final class Effect {
     private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
     private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
-    private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad), the moment held before it tilts (N·m; −∞: none)
+    private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -204,6 +205,34 @@ public final class Effect {
     /** Compliance with every mass of the file (and the payload) scaled by its own factor: the mass model re-estimated. */
     public static Effect complianceRemassed(int joint, GravityTorques g) {
         return new Effect(Kind.COMPLIANCE, joint, -1, g, true, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+    }
+
+    /**
+     * Compliance of a spring that stiffens with its load: Δq = c·τ + c₃·τ³ on the file's masses, c₃ &lt; 0
+     * for a stiffness that rises with the torque. Reducers stiffen so: strain-wave (Harmonic Drive)
+     * and cycloidal (RV) gears are catalogued with torsional stiffnesses K1 &lt; K2 &lt; K3 over rising
+     * torque ranges (Harmonic Drive AG, CSG/CSD catalogues, "Torsional stiffness"), and Tuttle &amp;
+     * Seering, IEEE Trans. Robotics and Automation 12 (1996) 368, measured a stiffness growing with
+     * the torque. The cubic is the first odd term of a smooth torque-torsion curve.
+     */
+    public static Effect complianceStiffening(int joint, GravityTorques g) {
+        Effect e = compliance(joint, g);
+        e.stiffens = true;
+        return e;
+    }
+
+    /** Whether this is a compliance that stiffens with its load ({@link #complianceStiffening}). */
+    public boolean stiffens() { return stiffens; }
+
+    /** A stiffening compliance as a linear spring on the same masses (itself when it is not one). */
+    public static Effect withoutStiffening(Effect e) { return e.stiffens ? compliance(e.joint, e.gravity) : e; }
+
+    /**
+     * The torque (N·m) at which a stiffening compliance with values {@code v} (c, c₃) is twice as stiff as
+     * unloaded: the tangent compliance c + 3c₃τ² is half of c where τ² = −c/(6c₃); NaN unless c &gt; 0 &gt; c₃.
+     */
+    public static double stiffnessDoublesAtNm(double[] v) {
+        return v.length > 1 && v[0] > 0 && v[1] < 0 ? Math.sqrt(-v[0] / (6 * v[1])) : Double.NaN;
     }
 
     /** Harmonics 1–3 of joint {@code joint}'s angle. */
@@ -560,20 +589,47 @@ public final class Effect {
      * §6/2), or by a·(M·e) both ways without a hold (an elastic foundation). A point p moves by
      * φ·e × (p − P0), P0 on the edge: Δp = a·x·(e × p) + b·x·ẑ, with b = a times the edge's distance
      * from the axis of joint 1 (e × (ẑ × e) = ẑ). Two parameters a, b.
+     * <p>
+     * With {@code axisAzimuth} NaN the foot rocks toward whichever side the arm leans (every anchor
+     * slack, a round or square foot on a soft pad): e is the horizontal moment's own direction
+     * M_h/|M_h| at each pose and x = |M_h| − h (h ≥ 0; 0: an isotropic elastic foundation, φ ∝ M_h).
      */
     public static Effect baseTilt(GravityTorques gravity, double axisAzimuth, double holdNm) {
+        return baseTilt(gravity, axisAzimuth, holdNm, null);
+    }
+
+    /**
+     * {@link #baseTilt(GravityTorques, double, double)} with the file's mass k scaled by
+     * {@code massScales[k]} (null: the file's masses): the moment that tips the base is the arm's
+     * real weight's, and a data sheet's link masses are rarely better than ±30 %.
+     */
+    public static Effect baseTilt(GravityTorques gravity, double axisAzimuth, double holdNm, double[] massScales) {
         if (gravity == null) throw new IllegalArgumentException("a base tilt needs the arm's masses");
-        Effect e = new Effect(Kind.BASE_TILT, -1, -1, gravity, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 2);
+        if (Double.isNaN(axisAzimuth) && !(holdNm >= 0)) throw new IllegalArgumentException("a tilt toward the lean holds a moment >= 0, not " + holdNm);
+        GravityTorques g = massScales == null ? gravity : gravity.withMassScales(massScales);
+        Effect e = new Effect(Kind.BASE_TILT, -1, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 2);
         e.tiltAzimuth = axisAzimuth;
         e.tiltHold = holdNm;
+        e.massScales = massScales == null ? null : massScales.clone();
         return e;
     }
 
     /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
     double tiltExcess(double[] q, double payloadKg) {
         Vec3 m = gravity.baseMoment(q, payloadKg);
-        double x = m.x() * Math.cos(tiltAzimuth) + m.y() * Math.sin(tiltAzimuth);
+        double x = towardLean() ? Math.hypot(m.x(), m.y()) : m.x() * Math.cos(tiltAzimuth) + m.y() * Math.sin(tiltAzimuth);
         return Double.isInfinite(tiltHold) ? x : Math.max(0, x - tiltHold);
+    }
+
+    /** Whether a base tilt rocks toward whichever side the arm leans (its axis the moment's own), not about one edge. */
+    public boolean towardLean() { return kind == Kind.BASE_TILT && Double.isNaN(tiltAzimuth); }
+
+    /** A base tilt's axis at q with a payload: (cos, sin) of its azimuth ({0, 0} where a lean-following tilt has no moment). */
+    private double[] tiltAxis(double[] q, double payloadKg) {
+        if (!towardLean()) return new double[] {Math.cos(tiltAzimuth), Math.sin(tiltAzimuth)};
+        Vec3 m = gravity.baseMoment(q, payloadKg);
+        double h = Math.hypot(m.x(), m.y());
+        return h > 0 ? new double[] {m.x() / h, m.y() / h} : new double[2];
     }
 
     /**
@@ -810,7 +866,7 @@ public final class Effect {
     public int size() {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
-            case COMPLIANCE -> perMass ? gravity.massCount() : 1;
+            case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
@@ -823,8 +879,10 @@ public final class Effect {
         List<String> out = new ArrayList<>();
         switch (kind) {
             case COMPLIANCE -> {
-                if (!perMass) out.add("c");
-                else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
+                if (!perMass) {
+                    out.add("c");
+                    if (stiffens) out.add("c3");
+                } else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
             }
             case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
             case BACKLASH -> out.add("b");
@@ -890,6 +948,7 @@ public final class Effect {
             out.addAll(java.util.Collections.nCopies(links.length, "1"));
             return out;
         }
+        if (stiffens) return List.of(u, "rad/(N·m)^3");
         return java.util.Collections.nCopies(size(), u);
     }
 
@@ -902,7 +961,7 @@ public final class Effect {
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
-            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : "");
+            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following " + (model != null ? "theta" : "j") + (source + 1) + ")" : "")
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
@@ -916,8 +975,10 @@ public final class Effect {
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
-            case BASE_TILT -> kind.json + String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
-                    Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold));
+            case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
+                    : String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
+                    Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
+                    + (massScales != null ? " (masses re-estimated)" : "");
             case INSTRUMENT -> kind.json + " (" + sight.words + (Double.isFinite(cycle)
                     ? String.format(Locale.ROOT, ", cyclic %.0f %s", sight == Sight.RANGE ? cycle * 1e3 : Math.toDegrees(cycle), sight == Sight.RANGE ? "mm" : "deg")
                     : nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
@@ -985,8 +1046,10 @@ public final class Effect {
     public void regressor(double[] q, PoseConditions c, double[] g) {
         switch (kind) {
             case COMPLIANCE -> {
-                if (!perMass) g[0] = gravity.driveTorques(q, c.payloadKg())[joint];
-                else gravity.driveTorquesByMass(q, c.payloadKg(), joint, g);
+                if (!perMass) {
+                    g[0] = gravity.driveTorques(q, c.payloadKg())[joint];
+                    if (stiffens) g[1] = g[0] * g[0] * g[0];
+                } else gravity.driveTorquesByMass(q, c.payloadKg(), joint, g);
             }
             case PERIODIC -> {
                 for (int i = 0; i < harmonics.length; i++) {
@@ -1032,7 +1095,10 @@ public final class Effect {
         int k = size();
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
-            case BASE_TILT -> tiltRegressor(tiltExcess(q, c.payloadKg()), Math.cos(tiltAzimuth), Math.sin(tiltAzimuth), pointBase, g3);
+            case BASE_TILT -> {
+                double[] e = tiltAxis(q, c.payloadKg());
+                tiltRegressor(tiltExcess(q, c.payloadKg()), e[0], e[1], pointBase, g3);
+            }
             case INSTRUMENT -> {
                 // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
                 double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
@@ -1235,8 +1301,9 @@ public final class Effect {
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case BASE_TILT -> {
-                p.put("axis_azimuth_rad", tiltAzimuth);
+                if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
                 if (!Double.isInfinite(tiltHold)) p.put("hold_nm", tiltHold);
+                if (massScales != null) putMassScales(p, "tilt_mass_scale_");
             }
             case INSTRUMENT -> {
                 p.put(sight.key + "_min", lo);
@@ -1258,7 +1325,7 @@ public final class Effect {
                     p.put("held_above_nm", preloadNm);
                     p.put("held_width", preloadWidth);
                     if (massScales != null)
-                        for (int k = 0; k < massScales.length; k++) if (massScales[k] != 1) p.put("held_mass_scale_" + gravity.massName(k), massScales[k]);
+                        putMassScales(p, "held_mass_scale_");
                 }
             }
             default -> { }
@@ -1292,7 +1359,8 @@ public final class Effect {
                 // a compliance "c" is a stiffness on the file's masses; without them only the remassed form means anything
                 if (gravity == null || gravity.massesUnknown() && ps.containsKey("c"))
                     throw new InputException(file, 0, 0, "mass_model", "joint-compliance needs the robot's mass_model");
-                yield ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
+                yield ps.containsKey("c3") ? complianceStiffening(js.get(0) - 1, gravity)
+                        : ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
             case PERIODIC -> {
                 List<Integer> hs = new ArrayList<>();
@@ -1312,15 +1380,7 @@ public final class Effect {
                     if (!(t >= 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_above_nm", "must be >= 0, got " + t);
                     double wd = ps.containsKey("held_width") ? require(d, "held_width", file) : 0;
                     if (!(wd >= 0 && wd < 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_width", "must be in [0, 1), got " + wd);
-                    double[] sc = new double[gravity.massCount()];
-                    boolean scaled = false;
-                    for (int k = 0; k < sc.length; k++) {
-                        String key = "held_mass_scale_" + gravity.massName(k);
-                        sc[k] = ps.containsKey(key) ? require(d, key, file) : 1;
-                        if (!(sc[k] > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si." + key, "must be > 0, got " + sc[k]);
-                        scaled |= ps.containsKey(key);
-                    }
-                    yield heldByGravity(js.get(0) - 1, gravity, t, wd, scaled ? sc : null);
+                    yield heldByGravity(js.get(0) - 1, gravity, t, wd, massScales(d, gravity, "held_mass_scale_", file));
                 }
                 if (!ps.containsKey("build_up_rad")) yield backlash(js.get(0) - 1);
                 double x0 = require(d, "build_up_rad", file);
@@ -1350,8 +1410,9 @@ public final class Effect {
             case BASE_TILT -> {
                 if (gravity == null || gravity.massesUnknown())
                     throw new InputException(file, 0, 0, "mass_model", "base-tilt needs the robot's mass_model");
-                yield baseTilt(gravity, require(d, "axis_azimuth_rad", file),
-                        ps.containsKey("hold_nm") ? require(d, "hold_nm", file) : Double.NEGATIVE_INFINITY);
+                yield baseTilt(gravity, ps.containsKey("axis_azimuth_rad") ? require(d, "axis_azimuth_rad", file) : Double.NaN,
+                        ps.containsKey("hold_nm") ? require(d, "hold_nm", file) : ps.containsKey("axis_azimuth_rad") ? Double.NEGATIVE_INFINITY : 0,
+                        massScales(d, gravity, "tilt_mass_scale_", file));
             }
             case INSTRUMENT -> {
                 Sight sg = null;
@@ -1411,6 +1472,24 @@ public final class Effect {
         return new Term(e, v);
     }
 
+    /** Each re-estimated mass's factor as {@code prefix + name} (a factor of 1 is left out). */
+    private void putMassScales(Map<String, Double> p, String prefix) {
+        for (int k = 0; k < massScales.length; k++) if (massScales[k] != 1) p.put(prefix + gravity.massName(k), massScales[k]);
+    }
+
+    /** The factors {@code prefix + name} of the file's masses, each > 0 (1 where absent); null when none is given. */
+    private static double[] massScales(EffectDescription d, GravityTorques gravity, String prefix, String file) {
+        double[] sc = new double[gravity.massCount()];
+        boolean scaled = false;
+        for (int k = 0; k < sc.length; k++) {
+            String key = prefix + gravity.massName(k);
+            sc[k] = d.parameters().containsKey(key) ? require(d, key, file) : 1;
+            if (!(sc[k] > 0)) throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si." + key, "must be > 0, got " + sc[k]);
+            scaled |= d.parameters().containsKey(key);
+        }
+        return scaled ? sc : null;
+    }
+
     private static double require(EffectDescription d, String key, String file) {
         Double v = d.parameters().get(key);
         if (v == null || !Double.isFinite(v))
@@ -1431,7 +1510,10 @@ public final class Effect {
         List<Effect> out = new ArrayList<>();
         int n = model.dof();
         for (int j = 0; j < n; j++) {
-            if (gravity != null && !gravity.massesUnknown()) out.add(compliance(j, gravity));
+            if (gravity != null && !gravity.massesUnknown()) {
+                out.add(compliance(j, gravity));
+                out.add(complianceStiffening(j, gravity));
+            }
             out.add(periodic(j));
             out.add(backlash(j));
             out.add(scale(j));

@@ -39,7 +39,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -81,6 +81,7 @@ final class Locator {
         org.robopro.kinematics.Pose instrument;  // SIGHT: instrumentTbase at the scanned fit
         double azimuthRef;                       // SIGHT: the azimuth the readings are taken about
         double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
+        Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
         String xLabel;
     }
 
@@ -269,8 +270,93 @@ final class Locator {
             out.add(q);
         }
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
+        out.addAll(baseMoment(t));
         out.addAll(sightProbes(t, steps));
         return out;
+    }
+
+    /**
+     * The robot's base giving way on its foundation under the arm's overturning moment M (a loose
+     * anchor bolt, a soft floor or base plate): the base turns by ω = C·M about horizontal axes, C a
+     * symmetric 2 x 2 compliance (an elastic foundation's rotation under a moment: a rotational
+     * spring per axis, Winkler foundation), and lifts by l·M where it pivots about an edge of its
+     * foot. Five columns: C₁₁, C₂₂, C₁₂ and the lift's two; every measured point moves by ω × p + l·M ẑ.
+     * A base that tilts only one way (above a held moment) is partly in this span; the tilt itself
+     * is searched once the structure is found ({@link Diagnoser#bestBaseTilt}). Beside it, a foot
+     * that rocks toward whichever side the arm leans once the moment exceeds what its bolts hold
+     * ({@link #BASE_HOLD_SHARES} of the poses tilted): two columns each, its tilt about the moment's
+     * own axis and its lift. Positions only, one pose per row, with the robot file's masses; none
+     * otherwise or when the moment does not vary.
+     */
+    static List<Probe> baseMoment(Diagnoser.Tester t) {
+        GravityTorques g = t.w.gravity;
+        List<Probe> out = new ArrayList<>();
+        if (g == null || g.massesUnknown() || t.ends != 1) return out;
+        int poses = t.m / t.rpp;
+        double[][] mom = new double[poses][];
+        double[][] x = new double[1][poses];
+        for (int i = 0; i < poses; i++) {
+            var r = t.endRows.get(0).get(i);
+            mom[i] = g.baseMoment(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0).toArray();
+            x[0][i] = Math.hypot(mom[i][0], mom[i][1]);
+        }
+        if (!varies(x, 1)) return out;
+        int k = 5;
+        double[] sig = new double[t.m * k], g3 = new double[3 * k];
+        double[] dt = t.endDTrans[0];
+        for (int i = 0; i < poses; i++)
+            for (int a = 0; a < t.posRows; a++) {
+                int row = i * t.rpp + a;
+                baseMomentRegressor(mom[i], t.pointsBase[i][t.pointOfRow(a)], g3);
+                for (int c = 0; c < k; c++) sig[row * k + c] = dt[row * 3] * g3[c] + dt[row * 3 + 1] * g3[k + c] + dt[row * 3 + 2] * g3[2 * k + c];
+            }
+        Probe p = finish(t, sig, k);
+        p.var = Var.BASE_MOMENT;
+        p.variable = "the arm's overturning moment on the base";
+        p.shape = "the robot's base tilts in proportion to the arm's moment on its foundation (an anchor bolt, the floor or the base plate gives way)";
+        p.x = x;
+        p.xLabel = "horizontal moment of the arm's weight on the base (N·m)";
+        out.add(p);
+        double[] sorted = x[0].clone();
+        Arrays.sort(sorted);
+        for (double share : BASE_HOLD_SHARES) {
+            double hold = sorted[(int) Math.floor((1 - share) * (poses - 1))];
+            double[] s2 = new double[t.m * 2], g2 = new double[6];
+            for (int i = 0; i < poses; i++) {
+                double xt = x[0][i] - hold;
+                if (!(xt > 0)) continue;
+                for (int a = 0; a < t.posRows; a++) {
+                    int row = i * t.rpp + a;
+                    Effect.tiltRegressor(xt, mom[i][0] / x[0][i], mom[i][1] / x[0][i], t.pointsBase[i][t.pointOfRow(a)], g2);
+                    for (int c = 0; c < 2; c++) s2[row * 2 + c] = dt[row * 3] * g2[c] + dt[row * 3 + 1] * g2[2 + c] + dt[row * 3 + 2] * g2[4 + c];
+                }
+            }
+            Probe q = finish(t, s2, 2);
+            q.var = Var.BASE_MOMENT;
+            q.variable = p.variable;
+            q.shape = String.format(Locale.ROOT, "the robot's base rocks toward whichever side the arm leans once its moment exceeds "
+                    + "about %.0f N·m (anchor bolts slack, a foot that rocks on its pad)", hold);
+            q.x = x;
+            q.xLabel = p.xLabel;
+            out.add(q);
+        }
+        return out;
+    }
+
+    /** Shares of the poses a base that rocks toward the lean is probed as tilting at (above the moment it holds). */
+    static final double[] BASE_HOLD_SHARES = {0.5, 0.25};
+
+    /**
+     * The 3 x 5 regressor (row-major) of {@link #baseMoment} at moment {@code m} for a point at
+     * {@code p} (base frame): ω = (C₁₁ Mx + C₁₂ My, C₁₂ Mx + C₂₂ My, 0), displacement
+     * ω × p = (ω_y p_z, −ω_x p_z, ω_x p_y − ω_y p_x), plus the lift (l_x Mx + l_y My) along z.
+     */
+    static void baseMomentRegressor(double[] m, double[] p, double[] g3) {
+        double mx = m[0], my = m[1];
+        // columns: C11 (ωx from Mx), C22 (ωy from My), C12 (ωx from My and ωy from Mx), lift from Mx, lift from My
+        g3[0] = 0;            g3[1] = my * p[2];     g3[2] = mx * p[2];             g3[3] = 0;  g3[4] = 0;
+        g3[5] = -mx * p[2];   g3[6] = 0;             g3[7] = -my * p[2];            g3[8] = 0;  g3[9] = 0;
+        g3[10] = mx * p[1];   g3[11] = -my * p[0];   g3[12] = my * p[1] - mx * p[0]; g3[13] = mx; g3[14] = my;
     }
 
     /**
@@ -725,6 +811,9 @@ final class Locator {
         }
         for (Found f : found) f.sizeM = size(t, f);
         placeHarmonics(t, probes, found, alpha);
+        for (Found f : found)
+            if (f.probe.var == Var.BASE_MOMENT)
+                f.probe.tilt = Diagnoser.bestBaseTilt(t, -1, null, t.w.gravity, t.w.rows, t.w.conditions);
         return found;
     }
 

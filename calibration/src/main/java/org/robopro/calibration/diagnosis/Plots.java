@@ -131,7 +131,7 @@ final class Plots {
     /** The fitted effect (rad or strain) as a function of the plot's x. */
     private static double curve(Effect e, double[] v, double x) {
         return switch (e.kind()) {
-            case COMPLIANCE -> e.perMass() ? Double.NaN : v[0] * x;
+            case COMPLIANCE -> e.perMass() ? Double.NaN : e.stiffens() ? v[0] * x + v[1] * x * x * x : v[0] * x;
             case PERIODIC -> {
                 double q = Math.toRadians(x), s = 0;
                 double[] hs = e.orders();

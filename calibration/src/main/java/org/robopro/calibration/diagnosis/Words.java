@@ -26,6 +26,12 @@ final class Words {
                     + "each mass's torque on drive %d given its own coefficient (the mass model re-estimated from the data) the "
                     + "deflection is explained; coefficients %s rad/(N·m) per N·m of the file's torque (%s).", e.joint() + 1,
                     e.joint() + 1, fmtList(v), String.join(", ", e.parameterNames()))
+                    : e.stiffens()
+                    ? String.format(Locale.ROOT, "Joint %d gives way under the arm's weight, with a spring that stiffens as it is "
+                    + "loaded (as strain-wave and cycloidal reducers do): compliance %.3g ± %.2g rad/(N·m) unloaded, a stiffness of "
+                    + "%.3g N·m/rad, and a cubic term %.3g ± %.2g rad/(N·m)³%s.", e.joint() + 1, v[0], s[0], 1 / v[0], v[1], s[1],
+                    Double.isFinite(Effect.stiffnessDoublesAtNm(v)) ? String.format(Locale.ROOT,
+                    "; the stiffness doubles by about %.0f N·m", Effect.stiffnessDoublesAtNm(v)) : "")
                     : String.format(Locale.ROOT, "Joint %d gives way under the arm's weight: compliance %.3g ± %.2g "
                     + "rad/(N·m), a stiffness of %.3g N·m/rad.", e.joint() + 1, v[0], s[0], 1 / v[0]);
             case PERIODIC -> {
@@ -69,7 +75,13 @@ final class Words {
                     e.along() == Effect.Along.REACH || e.along() == Effect.Along.HEIGHT || e.along() == Effect.Along.PAYLOAD_REACH
                             ? "sag of the arm or the point's holder, the instrument's scale or levelling"
                             : "the instrument or the target moved, or the base; re-measure a fixed reference point every few poses");
-            case BASE_TILT -> String.format(Locale.ROOT, "The robot's base tilts on its foundation about a horizontal axis at %.0f deg "
+            case BASE_TILT -> e.towardLean() ? String.format(Locale.ROOT, "The robot's base tilts on its foundation toward whichever "
+                    + "side the arm leans, about the axis of the moment of its weight and payload (%.3g µrad per 100 N·m%s), and none of "
+                    + "the known effects of the arm explains it: anchor bolts slack all round, a foot that rocks on its pad, a soft floor "
+                    + "or pedestal. It is modelled as such so compensation can use it, but check the base's bolts and its seating: "
+                    + "measure a point on the base itself while the arm reaches out in several directions with and without payload.",
+                    1e8 * v[0], e.tiltHold() > 0 ? String.format(Locale.ROOT, ", once the moment exceeds %.0f N·m", e.tiltHold()) : "")
+                    : String.format(Locale.ROOT, "The robot's base tilts on its foundation about a horizontal axis at %.0f deg "
                     + "as the arm's weight and payload tip it (%.3g µrad per 100 N·m%s), and none of the known effects of the arm "
                     + "explains it: a loose anchor bolt, a foot that rocks over its edge, a soft floor or pedestal. It is modelled as such "
                     + "so compensation can use it, but check the base's bolts and its seating: measure a point on the base itself "

@@ -163,10 +163,10 @@ class PairsLocateTest {
         org.robopro.kinematics.KinematicModel model = org.robopro.kinematics.KinematicModel.build(IRB2000);
         org.robopro.calibration.identification.CalibrationResult geo = org.robopro.calibration.identification.Calibrator.calibrate(
                 model, c.train(), c.validate(), org.robopro.calibration.identification.Calibrator.Options.defaults());
-        Diagnoser.Work w = new Diagnoser.Work(model, c.train().rows(), geo, c.validate(), Diagnoser.Options.defaults());
+        GravityTorques gravity = new GravityTorques(model, IRB2000.massModel().orElseThrow());
+        Diagnoser.Work w = new Diagnoser.Work(model, gravity, c.train().rows(), geo, c.validate(), Diagnoser.Options.defaults());
         Diagnoser.Fit fit = w.fit(List.of(Effect.backlash(1)), new java.util.IdentityHashMap<>(), w.geoFull, null);
         Diagnoser.Tester t = w.tester(fit);
-        GravityTorques gravity = new GravityTorques(model, IRB2000.massModel().orElseThrow());
         for (Effect e : List.of(Effect.backlash(2), Effect.periodic(1, new int[] {1, 7, 26}), Effect.smooth(2, -0.9, 0.9, 13),
                 Effect.pair(1, 3), Effect.scale(4), Effect.coupling(2, 1), Effect.compliance(1, gravity), Effect.thermal(20),
                 Effect.thermalLinks(model, 20), Effect.pointSmooth(Effect.Along.REACH, 0.5, 2.0))) {
