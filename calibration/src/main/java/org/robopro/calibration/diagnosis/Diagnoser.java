@@ -2571,7 +2571,7 @@ public final class Diagnoser {
             hold = sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
             if (!(sorted[sorted.length - 1] > hold)) return Double.POSITIVE_INFINITY;
         }
-        double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0];
+        double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0], dr = at.endDRot[0];
         for (int i = 0; i < x.length; i++) {
             double xt = Double.isInfinite(hold) ? x[i] : Math.max(0, x[i] - hold);
             if (xt == 0) continue;
@@ -2581,6 +2581,11 @@ public final class Diagnoser {
                 Effect.tiltRegressor(xt, ex, ey, at.pointsBase[i][at.pointOfRow(a)], g3);
                 for (int col = 0; col < 2; col++)
                     sig[row * 2 + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[2 + col] + dt[row * 3 + 2] * g3[4 + col];
+            }
+            // orientation rows: the measured frame turns with the base by the tilt x·e (the lift turns nothing)
+            for (int a = at.posRows; a < at.rpp; a++) {
+                int row = i * at.rpp + a;
+                sig[row * 2] = xt * (dr[row * 3] * ex + dr[row * 3 + 1] * ey);
             }
         }
         return k >= 0 ? at.pressReplacingColumns(k, sig, 2) : at.pressAddingColumns(sig, 2);
@@ -2931,7 +2936,7 @@ public final class Diagnoser {
         private final int dof;
         private final double[][] c;
         Probe(KinematicModel model) { this.dof = model.dof(); this.c = model.couplingMatrix(); }
-        private int size() { return dof + 4; }
+        private int size() { return dof + 7; }
         @Override public String name() { return "probe"; }
         @Override public List<String> parameterNames() {
             List<String> n = new ArrayList<>();
@@ -2940,6 +2945,9 @@ public final class Diagnoser {
             n.add("dx");
             n.add("dy");
             n.add("dz");
+            n.add("wx");
+            n.add("wy");
+            n.add("wz");
             return n;
         }
         @Override public List<String> units() {
@@ -2949,6 +2957,9 @@ public final class Diagnoser {
             n.add("m");
             n.add("m");
             n.add("m");
+            n.add("rad");
+            n.add("rad");
+            n.add("rad");
             return n;
         }
         @Override public double[] initialValues() { return new double[size()]; }
@@ -2970,6 +2981,14 @@ public final class Diagnoser {
                     dpDv[a * k + dof] = pb[a];
                     dpDv[a * k + dof + 1 + a] = 1;
                 }
+            }
+        }
+        @Override public void rotationDelta(double[] v, Measurement row, double[] pb, double[] dw, double[] dwDv) {
+            int k = size();
+            if (dwDv != null) Arrays.fill(dwDv, 0);
+            for (int a = 0; a < 3; a++) {
+                dw[a] += v[dof + 4 + a];
+                if (dwDv != null) dwDv[a * k + dof + 4 + a] = 1;
             }
         }
     }
@@ -3006,13 +3025,14 @@ public final class Diagnoser {
          * poses of their own, their conditions, the predicted measured point, and the sensitivities
          * to a change at that end alone (their sum over the ends is the whole row's): ∂r/∂q_j (drive
          * outputs, weighted; m x dof), ∂r/∂ε (m) and ∂r/∂p (base-frame translation of the point;
-         * m x 3). An error that is a function of the pose acts at each end with its own value.
+         * m x 3), ∂r/∂ω (a base-frame rotation of the measured frame alone, which only orientation
+         * rows see; m x 3). An error that is a function of the pose acts at each end with its own value.
          */
         final int ends;
         final List<List<Measurement>> endRows = new ArrayList<>();
         final List<List<PoseConditions>> endConditions = new ArrayList<>();
         final double[][][] endPoint;
-        final double[][] endDQ, endDStrain, endDTrans;
+        final double[][] endDQ, endDStrain, endDTrans, endDRot;
         /**
          * The measurement layout of the residual rows: each pose's first {@code posRows} rows hold
          * {@code perPose} measurements of {@code dim} components each (3 per measured point, points in
@@ -3040,7 +3060,7 @@ public final class Diagnoser {
             // Drive, strain and translation sensitivities through the identification chain.
             List<EffectBlock> bl = new ArrayList<>(fit.problem.effects());
             bl.add(new Probe(w.model));
-            int np = dof + 4;
+            int np = dof + 7;
             double[] full = Arrays.copyOf(fit.full, fit.full.length + np);
             IdentificationProblem pp = new IdentificationProblem(w.model, w.rows, w.sixD, w.instrument, bl, full);
             pp.setSigmas(fit.problem.sigmaPos(), fit.problem.sigmaRot());
@@ -3055,11 +3075,13 @@ public final class Diagnoser {
             endDQ = new double[ends][m * dof];
             endDStrain = new double[ends][m];
             endDTrans = new double[ends][m * 3];
+            endDRot = new double[ends][m * 3];
             for (int e = 0; e < ends; e++)
                 for (int i = 0; i < m; i++) {
                     for (int j = 0; j < dof; j++) endDQ[e][i * dof + j] = jEnd[e][i * nFull + off + j];
                     endDStrain[e][i] = jEnd[e][i * nFull + off + dof];
                     for (int a = 0; a < 3; a++) endDTrans[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 1 + a];
+                    for (int a = 0; a < 3; a++) endDRot[e][i * 3 + a] = jEnd[e][i * nFull + off + dof + 4 + a];
                 }
             KinematicModel geo = fit.problem.modelOf(fit.full);
             double[][][] ep = null;
@@ -3253,12 +3275,14 @@ public final class Diagnoser {
             int poses = m / rpp;
             Effect.Target t = e.target();
             double[] g = new double[t == Effect.Target.POSITION ? 3 * k : k];
+            double[] gr = e.turnsFrame() && rpp > posRows ? new double[3 * k] : null; // the frame's turn, seen by orientation rows
             for (int end = 0; end < ends; end++) {
                 List<Measurement> er = endRows.get(end);
                 List<PoseConditions> ec = ends > 1 ? endConditions.get(end) : conds;
-                double[] dq = endDQ[end], ds = endDStrain[end], dt = endDTrans[end];
+                double[] dq = endDQ[end], ds = endDStrain[end], dt = endDTrans[end], dr = endDRot[end];
                 for (int i = 0; i < poses; i++) {
                     if (t != Effect.Target.POSITION) e.regressor(er.get(i), ec.get(i), g);
+                    if (gr != null) e.rotationRegressor(er.get(i).q(), ec.get(i), gr);
                     for (int a = 0; a < rpp; a++) {
                         int row = i * rpp + a;
                         // An effect on the measured point moves each point by its own regressor (its place in the base frame).
@@ -3266,9 +3290,10 @@ public final class Diagnoser {
                             e.positionRegressor(er.get(i).q(), ec.get(i), ends > 1 ? endPoint[end][i] : pointsBase[i][pointOfRow(a)], g);
                         for (int col = 0; col < k; col++) {
                             double v;
-                            if (t == Effect.Target.POSITION)
+                            if (t == Effect.Target.POSITION) {
                                 v = dt[row * 3] * g[col] + dt[row * 3 + 1] * g[k + col] + dt[row * 3 + 2] * g[2 * k + col];
-                            else v = (t == Effect.Target.STRAIN ? ds[row] : dq[row * dof + e.joint()]) * g[col];
+                                if (gr != null) v += dr[row * 3] * gr[col] + dr[row * 3 + 1] * gr[k + col] + dr[row * 3 + 2] * gr[2 * k + col];
+                            } else v = (t == Effect.Target.STRAIN ? ds[row] : dq[row * dof + e.joint()]) * g[col];
                             if (Double.isFinite(v)) s[row * k + col] += v;
                         }
                     }

@@ -1183,6 +1183,33 @@ public final class Effect {
         return s;
     }
 
+    /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
+    public boolean turnsFrame() { return kind == Kind.BASE_TILT; }
+
+    /**
+     * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
+     * row-major, at q under c; zero unless {@link #turnsFrame()}. A base tilt turns the frame by
+     * a·x·e (its tilt parameter; the lift turns nothing).
+     */
+    public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
+        Arrays.fill(g3, 0);
+        if (kind != Kind.BASE_TILT) return;
+        double[] e = tiltAxis(q, c.payloadKg());
+        double x = tiltExcess(q, c.payloadKg());
+        g3[0] = x * e[0];
+        g3[2] = x * e[1];
+    }
+
+    /** The rotation (base, rotation vector, rad) of the measured frame by an effect that turns it (zero otherwise). */
+    public Vec3 rotation(double[] v, double[] q, PoseConditions c) {
+        int k = size();
+        double[] g = new double[3 * k];
+        rotationRegressor(q, c, g);
+        double[] d = new double[3];
+        for (int a = 0; a < 3; a++) for (int i = 0; i < k; i++) d[a] += g[a * k + i] * v[i];
+        return new Vec3(d[0], d[1], d[2]);
+    }
+
     /** The point displacement (base, m) of an effect on the measured point. */
     public Vec3 displacement(double[] v, double[] q, PoseConditions c, Vec3 pointBase) {
         int k = size();
@@ -1277,6 +1304,18 @@ public final class Effect {
                     double x = linkX(c, nl - 1) * values[nl - 1] + (warms() ? warmX(c, nl - 1) * values[2 * nl - 1] : 0);
                     for (int a = 0; a < 3; a++) dpDpoint[4 * a] += x;
                 }
+            }
+
+            @Override public void rotationDelta(double[] values, Measurement row, double[] pointBase, double[] dw, double[] dwDv) {
+                if (dwDv != null) Arrays.fill(dwDv, 0);
+                if (!turnsFrame()) return;
+                double[] g3 = new double[3 * k];
+                rotationRegressor(row.q(), PoseConditions.of(row), g3);
+                for (int a = 0; a < 3; a++)
+                    for (int col = 0; col < k; col++) {
+                        dw[a] += g3[a * k + col] * values[col];
+                        if (dwDv != null) dwDv[a * k + col] = g3[a * k + col];
+                    }
             }
         };
     }

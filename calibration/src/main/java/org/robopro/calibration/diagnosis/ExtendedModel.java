@@ -72,10 +72,20 @@ public final class ExtendedModel {
         double s = strain(c);
         Vec3 d = t.position().times(s);
         Vec3 p = t.position();
+        Vec3 w = Vec3.ZERO;
         for (Effect.Term term : terms)
             // an error of the measuring instrument's readings is not where the robot is: it moves no tool
-            if (term.effect().target() == Effect.Target.POSITION && !term.effect().ofInstrument())
+            if (term.effect().target() == Effect.Target.POSITION && !term.effect().ofInstrument()) {
                 d = d.plus(term.effect().displacement(term.values(), q, c, p));
+                if (term.effect().turnsFrame()) w = w.plus(term.effect().rotation(term.values(), q, c));
+            }
+        if (w.norm() > 0) {
+            // the tool's frame turned in base coordinates about its own point (the point's move is in d)
+            double[] r = new double[9], turned = new double[9];
+            org.robopro.kinematics.Se3.rotExp(w.x(), w.y(), w.z(), r);
+            org.robopro.kinematics.Se3.rotMul(r, t.rotationRowMajor(), turned);
+            t = Pose.of(turned, t.x(), t.y(), t.z());
+        }
         return d.norm() == 0 ? t : Pose.translation(d).times(t);
     }
 

@@ -303,13 +303,22 @@ final class Locator {
         if (!varies(x, 1)) return out;
         int k = 5;
         double[] sig = new double[t.m * k], g3 = new double[3 * k];
-        double[] dt = t.endDTrans[0];
-        for (int i = 0; i < poses; i++)
+        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+        for (int i = 0; i < poses; i++) {
             for (int a = 0; a < t.posRows; a++) {
                 int row = i * t.rpp + a;
                 baseMomentRegressor(mom[i], t.pointsBase[i][t.pointOfRow(a)], g3);
                 for (int c = 0; c < k; c++) sig[row * k + c] = dt[row * 3] * g3[c] + dt[row * 3 + 1] * g3[k + c] + dt[row * 3 + 2] * g3[2 * k + c];
             }
+            // orientation rows: the measured frame turns with the base by ω = C·M (C11, C22, C12; the lift turns nothing)
+            for (int a = t.posRows; a < t.rpp; a++) {
+                int row = i * t.rpp + a;
+                double wx = dr[row * 3], wy = dr[row * 3 + 1];
+                sig[row * k] = wx * mom[i][0];
+                sig[row * k + 1] = wy * mom[i][1];
+                sig[row * k + 2] = wx * mom[i][1] + wy * mom[i][0];
+            }
+        }
         Probe p = finish(t, sig, k);
         p.var = Var.BASE_MOMENT;
         p.variable = "the arm's overturning moment on the base";
@@ -325,10 +334,15 @@ final class Locator {
             for (int i = 0; i < poses; i++) {
                 double xt = x[0][i] - hold;
                 if (!(xt > 0)) continue;
+                double ex = mom[i][0] / x[0][i], ey = mom[i][1] / x[0][i];
                 for (int a = 0; a < t.posRows; a++) {
                     int row = i * t.rpp + a;
-                    Effect.tiltRegressor(xt, mom[i][0] / x[0][i], mom[i][1] / x[0][i], t.pointsBase[i][t.pointOfRow(a)], g2);
+                    Effect.tiltRegressor(xt, ex, ey, t.pointsBase[i][t.pointOfRow(a)], g2);
                     for (int c = 0; c < 2; c++) s2[row * 2 + c] = dt[row * 3] * g2[c] + dt[row * 3 + 1] * g2[2 + c] + dt[row * 3 + 2] * g2[4 + c];
+                }
+                for (int a = t.posRows; a < t.rpp; a++) {
+                    int row = i * t.rpp + a;
+                    s2[row * 2] = xt * (dr[row * 3] * ex + dr[row * 3 + 1] * ey);
                 }
             }
             Probe q = finish(t, s2, 2);

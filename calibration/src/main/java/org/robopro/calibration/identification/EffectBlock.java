@@ -43,4 +43,14 @@ public interface EffectBlock {
                                double[] dpDpoint) {
         if (dpDv != null) java.util.Arrays.fill(dpDv, 0);
     }
+
+    /**
+     * Optional small rotation of the measured frame in base coordinates (a rotation vector, rad;
+     * only orientations see it: the position's share is in {@link #positionDelta}), e.g. the whole
+     * robot tilting on its base: add it to {@code dw}, and write ∂dw/∂v (3 x size, overwrite) into
+     * {@code dwDv} when not null. The default turns nothing.
+     */
+    default void rotationDelta(double[] values, Measurement row, double[] pointBase, double[] dw, double[] dwDv) {
+        if (dwDv != null) java.util.Arrays.fill(dwDv, 0);
+    }
 }

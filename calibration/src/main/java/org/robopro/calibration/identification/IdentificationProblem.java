@@ -363,7 +363,8 @@ public final class IdentificationProblem implements LeastSquaresProblem {
         double[] pbKin = new double[3];
         double[] pb = new double[3], rbt = new double[9], rbf = new double[9], rib_rbf = new double[9],
                 rpred = new double[9], rmeas = new double[9], err = new double[9], e = new double[3];
-        double[] dTheta = new double[dof], dp = new double[3], qEff = new double[dof];
+        double[] dTheta = new double[dof], dp = new double[3], dw = new double[3], turn = new double[9], turned = new double[9],
+                qEff = new double[dof];
         // A distance row's point is evaluated as a position (3 rows) in scratch space, then projected.
         double[] res3 = distance ? new double[3] : null, jac3 = distance && jac != null ? new double[3 * nFull] : null;
         int rpp = rowsPerPose();
@@ -405,17 +406,28 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
                 rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
                 Se3.rotMulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
-                double[][] dpDv = null;
+                double[][] dpDv = null, dwDv = null;
                 double[] dpDpoint = null;
                 if (!effects.isEmpty()) {
                     Arrays.fill(dp, 0);
+                    Arrays.fill(dw, 0);
                     dpDpoint = new double[9];
                     dpDv = new double[effects.size()][];
+                    if (sixD) dwDv = new double[effects.size()][];
                     for (int k = 0; k < effects.size(); k++) {
                         int size = effStart[k + 1] - effStart[k];
                         double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
                         dpDv[k] = jac == null ? null : new double[3 * size];
                         effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
+                        if (sixD) {
+                            dwDv[k] = jac == null ? null : new double[3 * size];
+                            effects.get(k).rotationDelta(v, row, pb, dw, dwDv[k]);
+                        }
+                    }
+                    if (sixD && (dw[0] != 0 || dw[1] != 0 || dw[2] != 0)) { // the measured frame turned in base coordinates
+                        Se3.rotExp(dw[0], dw[1], dw[2], turn);
+                        Se3.rotMul(turn, rbt, turned);
+                        System.arraycopy(turned, 0, rbt, 0, 9);
                     }
                     System.arraycopy(pb, 0, pbKin, 0, 3);
                     pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
@@ -498,7 +510,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                                 jj[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
                         }
                     }
-                    effectColumns(mdl, qEff, flangeTtools[pt], pbKin, rib, dThetaDv, dpDv, g, jj, r0, wp, wr);
+                    effectColumns(mdl, qEff, flangeTtools[pt], pbKin, rib, dThetaDv, dpDv, dwDv, g, jj, r0, wp, wr);
                 }
                 if (sixD) {
                     // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
@@ -565,7 +577,8 @@ public final class IdentificationProblem implements LeastSquaresProblem {
     }
 
     private void effectColumns(KinematicModel mdl, double[] qEff, Pose flangeTtool, double[] pb, double[] rib,
-                               double[][] dThetaDv, double[][] dpDv, double[] dpDpoint, double[] jac, int r0, double wp, double wr) {
+                               double[][] dThetaDv, double[][] dpDv, double[][] dwDv, double[] dpDpoint, double[] jac, int r0,
+                               double wp, double wr) {
         int dof = mdl.dof();
         double[][] jq = mdl.geometricJacobian(qEff); // flange origin velocity and angular velocity per q
         Pose f = mdl.flange(qEff);
@@ -598,6 +611,7 @@ public final class IdentificationProblem implements LeastSquaresProblem {
                 double c0 = col[0], c1 = col[1], c2 = col[2];
                 for (int a = 0; a < 3; a++)
                     col[a] += dpDpoint[3 * a] * c0 + dpDpoint[3 * a + 1] * c1 + dpDpoint[3 * a + 2] * c2 + dpDv[k][a * size + c];
+                if (dwDv != null) for (int a = 0; a < 3; a++) col[3 + a] += dwDv[k][a * size + c];
                 int colIdx = effStart[k] + c;
                 for (int a = 0; a < 3; a++) {
                     jac[(r0 + a) * nFull + colIdx] = (rib[3 * a] * col[0] + rib[3 * a + 1] * col[1] + rib[3 * a + 2] * col[2]) * wp;

@@ -108,4 +108,34 @@ class SpringFoundationAndRampTest {
         List<Locator.Found> found = Locator.scan(geoTester, Locator.probes(geoTester, Directions.Source.NONE), 0.05, Diagnoser.MAX_LOCATED);
         return found.stream().anyMatch(f -> f.probe.var == Locator.Var.BASE_MOMENT && f.probe.tilt != null);
     }
+
+    /**
+     * A base that tips about the edge of its foot turns everything it carries as one rigid body: the
+     * tool's pose with the tilt is the rotation about that edge (the line through P0 = d·(ẑ × e)
+     * along e) of the pose without it, its orientation included (6-D data see the turn). Written here
+     * from the rigid motion, not from the effect's regressor; equal to first order in the angle.
+     */
+    @Test
+    void baseTilt_turnsTheToolAsARigidRotationAboutItsEdge() {
+        var desc = RobotLibrary.shipped("irb2000");
+        var model = org.robopro.kinematics.KinematicModel.build(desc);
+        GravityTorques g = GravityTorques.of(model, desc);
+        double psi = Math.toRadians(35), d = 0.3, a = 2e-7; // axis azimuth, edge 0.3 m from axis 1, tilt per N·m
+        Effect tilt = Effect.baseTilt(g, psi, Double.NEGATIVE_INFINITY);
+        ExtendedModel ext = new ExtendedModel(model, List.of(new Effect.Term(tilt, new double[] {a, -a * d})));
+        double[] q = {0.4, 0.3, -0.2, 0.5, 0.6, -0.3};
+        var c = org.robopro.calibration.PoseConditions.NONE;
+        org.robopro.kinematics.Pose plain = model.flange(q), tilted = ext.flange(q, c);
+        org.robopro.models.Vec3 m = g.baseMoment(q, 0);
+        double ex = Math.cos(psi), ey = Math.sin(psi), phi = a * (m.x() * ex + m.y() * ey);
+        org.robopro.models.Vec3 axis = new org.robopro.models.Vec3(ex, ey, 0), p0 = new org.robopro.models.Vec3(-d * ey, d * ex, 0);
+        org.robopro.kinematics.Pose rigid = org.robopro.kinematics.Pose.translation(p0).times(org.robopro.kinematics.Pose.rotAxis(axis, phi))
+                .times(org.robopro.kinematics.Pose.translation(p0.times(-1))).times(plain);
+        assertTrue(Math.abs(phi) > 1e-5, "a visible tilt: " + phi);
+        assertEquals(0, tilted.position().minus(rigid.position()).norm(), 1e-3 * Math.abs(phi) * 2.0, "position");
+        double[] r1 = tilted.rotationRowMajor(), r2 = rigid.rotationRowMajor(), r0 = plain.rotationRowMajor();
+        double dev = 0, turn = 0;
+        for (int i = 0; i < 9; i++) { dev = Math.max(dev, Math.abs(r1[i] - r2[i])); turn = Math.max(turn, Math.abs(r0[i] - r2[i])); }
+        assertTrue(dev < 1e-3 * turn, "orientation off the rigid turn by " + dev + " (the turn itself " + turn + ")");
+    }
 }
