@@ -61,8 +61,6 @@ class DiagnosisBenchmarkTest {
             "null irb2000, 50 poses", "clean at 1.11 x the floor, but training pose 24 (its noise draw 5.2 sigma) reported as an outlier",
             "lost motion j2 + thermal growth per link", "named right at 1.02 x the floor, but training pose 141 (noise draw 5.5 sigma) "
                     + "reported as an outlier",
-            "outside: base rocks on its foundation above an overturning moment", "located (base-tilt about 86 and about -4 deg, "
-                    + "nothing named) at 1.25 x the floor (twin 1.05), but 2 clean poses reported as outliers",
             "lost motion j2 held on one flank by gravity + cross-coupling j5<-j4", "named right (backlash j2 held by gravity above "
                     + "67.1 N·m ± 50 %, coupling j5<-j4) at 1.08 x the floor, but 2 clean poses near the hand-over reported as "
                     + "outliers (the file's masses put the holding torque elsewhere than the arm's)");

@@ -2460,7 +2460,7 @@ public final class Diagnoser {
     static Effect bestBaseTilt(Tester at, int k, Effect e, GravityTorques gravity, List<Measurement> rows, List<PoseConditions> conds) {
         if (gravity == null || gravity.massesUnknown() || at.ends > 1) return null;
         if (k >= 0 && (e.target() != Effect.Target.DRIVE || e.joint() > 2)) return null;
-        double[] tilt = tiltSearch(at, k, gravity, rows, null); // press, axis azimuth, share of the poses tilted
+        double[] tilt = tiltSearch(at, k, gravity, rows, null); // press, axis azimuth, share of the poses tilted, edges
         if (!Double.isFinite(tilt[0])) return null;
         // Each mass of the arm scaled in turn at that axis and share (a data sheet's masses are rarely better than ±30 %);
         // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
@@ -2474,7 +2474,7 @@ public final class Diagnoser {
                 for (double f : HELD_MASS_SCALES) {
                     if (f == keep) continue;
                     sc[m] = f;
-                    double p = tiltPress(at, k, moments(gravity.withMassScales(sc), rows), tilt[1], tilt[2]);
+                    double p = tiltPress(at, k, moments(gravity.withMassScales(sc), rows), tilt[1], tilt[2], (int) tilt[3]);
                     if (p < pr) { pr = p; bestF = f; }
                 }
                 sc[m] = bestF;
@@ -2483,56 +2483,58 @@ public final class Diagnoser {
         if (pr < tilt[0] * (1 - ALIAS_MARGIN)) {
             double[] again = tiltSearch(at, k, gravity.withMassScales(sc), rows, tilt); // the axis and hold again, with those masses
             if (again[0] < pr) tilt = again;
-            else { tilt[0] = pr; }
+            else tilt[0] = pr;
             scales = sc;
         }
         GravityTorques g = scales == null ? gravity : gravity.withMassScales(scales);
-        return Effect.baseTilt(gravity, tilt[1], tiltHold(g, rows, tilt[1], tilt[2]), scales);
+        double hold = tiltHold(moments(g, rows), tilt[1], tilt[2], (int) tilt[3]);
+        return tilt[3] == 4 ? Effect.squareFootTilt(gravity, tilt[1], hold, scales) : Effect.baseTilt(gravity, tilt[1], hold, scales);
     }
 
     /**
-     * The base tilt's axis and hold that predict left-out poses best with masses {@code g}: every
-     * {@link #TILT_AZIMUTHS}th of a turn and the {@link #TILT_SHARES}, then the best one's
-     * neighbours (a quarter and a half of the grid's step either side, and the shares between); from
-     * {@code start} (press, azimuth, share) only its neighbours. Returns {press, azimuth, share}.
+     * The base tilt's foot, axis and hold that predict left-out poses best with masses {@code g}: one
+     * edge at every {@link #TILT_AZIMUTHS}th of a turn, a square foot's edges every 15° of a quarter
+     * turn, and a foot that rocks toward the lean, each at the {@link #TILT_SHARES}; then the best
+     * one's neighbours (a quarter and a half of the grid's step either side, and the shares between);
+     * from {@code start} only its neighbours. Returns {press, azimuth (NaN: toward the lean), share,
+     * edges}.
      */
     private static double[] tiltSearch(Tester at, int k, GravityTorques g, List<Measurement> rows, double[] start) {
         double[][] mom = moments(g, rows);
-        double[] best = start == null ? new double[] {Double.POSITIVE_INFINITY, 0, 1} : start.clone();
-        if (start != null) best[0] = tiltPress(at, k, mom, best[1], best[2]);
+        double[] best = start == null ? new double[] {Double.POSITIVE_INFINITY, 0, 1, 1} : start.clone();
+        if (start != null) best[0] = tiltPress(at, k, mom, best[1], best[2], (int) best[3]);
         double step = 2 * Math.PI / TILT_AZIMUTHS;
-        for (int round = start == null ? 0 : 1; round < 2; round++) {
-            double[] psis = round == 0 ? java.util.stream.IntStream.range(0, TILT_AZIMUTHS).mapToDouble(a -> a * step).toArray()
-                    : new double[] {best[1] - step / 2, best[1] - step / 4, best[1], best[1] + step / 4, best[1] + step / 2};
-            double[] shares = round == 0 || best[2] >= 1 ? TILT_SHARES
-                    : new double[] {best[2] * 0.8, best[2] * 0.9, best[2], Math.min(0.95, best[2] * 1.1), Math.min(0.97, best[2] * 1.25)};
-            for (double psi : psis)
-                for (double share : shares) {
-                    double p = tiltPress(at, k, mom, psi, share);
-                    if (p < best[0]) { best[0] = p; best[1] = psi; best[2] = share; }
-                }
-            if (round == 0)
-                // a foot that rocks toward whichever side the arm leans (NaN: the axis is the moment's own)
-                for (double share : TILT_SHARES) {
-                    double p = tiltPress(at, k, mom, Double.NaN, share);
-                    if (p < best[0]) { best[0] = p; best[1] = Double.NaN; best[2] = share; }
-                }
-            if (Double.isNaN(best[1])) { // its hold refined
-                double b = best[2];
-                for (double share : new double[] {b * 0.8, b * 0.9, Math.min(1, b * 1.1), Math.min(1, b * 1.25)}) {
-                    double p = tiltPress(at, k, mom, Double.NaN, share);
-                    if (p < best[0]) { best[0] = p; best[2] = share; }
-                }
-                break;
-            }
+        if (start == null) {
+            for (int a = 0; a < TILT_AZIMUTHS; a++)
+                for (double share : TILT_SHARES) tryTilt(at, k, mom, a * step, share, 1, best);
+            for (int a = 0; a < TILT_AZIMUTHS / 4; a++)
+                for (double share : TILT_SHARES) if (share < 1) tryTilt(at, k, mom, a * step, share, 4, best);
+            for (double share : TILT_SHARES) tryTilt(at, k, mom, Double.NaN, share, 1, best);
         }
+        double b = best[2];
+        double[] shares = b >= 1 ? new double[] {1} : new double[] {b * 0.8, b * 0.9, b, Math.min(0.97, b * 1.1), Math.min(0.97, b * 1.25)};
+        if (Double.isNaN(best[1])) {
+            for (double share : shares) tryTilt(at, k, mom, Double.NaN, share, 1, best);
+            return best;
+        }
+        double psi = best[1];
+        int edges = (int) best[3];
+        for (double dp : new double[] {-step / 2, -step / 4, 0, step / 4, step / 2})
+            for (double share : b >= 1 ? TILT_SHARES : shares)
+                if (edges == 1 || share < 1) tryTilt(at, k, mom, psi + dp, share, edges, best);
         return best;
     }
 
-    /** The moment the base holds before it tilts about the axis at {@code psi}: tilting at {@code share} of the poses (−∞: 1, both ways). */
-    private static double tiltHold(GravityTorques g, List<Measurement> rows, double psi, double share) {
-        if (share >= 1) return Double.isNaN(psi) ? 0 : Double.NEGATIVE_INFINITY;
-        double[] x = tiltMoments(moments(g, rows), psi);
+    private static void tryTilt(Tester at, int k, double[][] mom, double psi, double share, int edges, double[] best) {
+        double p = tiltPress(at, k, mom, psi, share, edges);
+        if (p < best[0]) { best[0] = p; best[1] = psi; best[2] = share; best[3] = edges; }
+    }
+
+    /** The moment the base holds before it tilts: tilting at {@code share} of the poses (1: none; −∞ for one edge, both ways). */
+    private static double tiltHold(double[][] mom, double psi, double share, int edges) {
+        if (share >= 1) return Double.isNaN(psi) || edges > 1 ? 0 : Double.NEGATIVE_INFINITY;
+        double[] x = new double[mom.length];
+        for (int i = 0; i < x.length; i++) x[i] = Effect.tiltAt(mom[i][0], mom[i][1], psi, edges)[2];
         Arrays.sort(x);
         return x[(int) Math.floor((1 - share) * (x.length - 1))];
     }
@@ -2547,47 +2549,34 @@ public final class Diagnoser {
         return m;
     }
 
-    /** The moments {@code mom} about the horizontal axis at azimuth {@code psi} (NaN: each one's horizontal size), N·m. */
-    private static double[] tiltMoments(double[][] mom, double psi) {
-        double[] x = new double[mom.length];
-        for (int i = 0; i < x.length; i++)
-            x[i] = Double.isNaN(psi) ? Math.hypot(mom[i][0], mom[i][1]) : mom[i][0] * Math.cos(psi) + mom[i][1] * Math.sin(psi);
-        return x;
-    }
-
     /**
-     * The leave-one-pose-out error with the base tilt about the axis at {@code psi}, tilting at
-     * {@code share} of the poses, in the place of selected effect {@code k} (negative: added):
-     * its two columns, the regressor through each row's translation sensitivity.
+     * The leave-one-pose-out error with the base tilt ({@link Effect#tiltAt}: azimuth {@code psi}, NaN
+     * toward the lean; {@code edges} 1 or 4), tilting at {@code share} of the poses, in the place of
+     * selected effect {@code k} (negative: added): its two columns, the regressor through each row's
+     * translation sensitivity, and with orientations the frame's turn.
      */
-    private static double tiltPress(Tester at, int k, double[][] mom, double psi, double share) {
-        boolean lean = Double.isNaN(psi);
-        double ex = lean ? 0 : Math.cos(psi), ey = lean ? 0 : Math.sin(psi);
-        double[] x = tiltMoments(mom, psi);
-        double hold = lean ? 0 : Double.NEGATIVE_INFINITY;
-        if (share < 1) {
-            double[] sorted = x.clone();
-            Arrays.sort(sorted);
-            hold = sorted[(int) Math.floor((1 - share) * (sorted.length - 1))];
-            if (!(sorted[sorted.length - 1] > hold)) return Double.POSITIVE_INFINITY;
-        }
+    private static double tiltPress(Tester at, int k, double[][] mom, double psi, double share, int edges) {
+        double hold = tiltHold(mom, psi, share, edges);
         double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0], dr = at.endDRot[0];
-        for (int i = 0; i < x.length; i++) {
-            double xt = Double.isInfinite(hold) ? x[i] : Math.max(0, x[i] - hold);
+        boolean any = false;
+        for (int i = 0; i < mom.length; i++) {
+            double[] t = Effect.tiltAt(mom[i][0], mom[i][1], psi, edges);
+            double xt = Double.isInfinite(hold) ? t[2] : Math.max(0, t[2] - hold);
             if (xt == 0) continue;
-            if (lean) { ex = mom[i][0] / x[i]; ey = mom[i][1] / x[i]; }
+            any = true;
             for (int a = 0; a < at.posRows; a++) {
                 int row = i * at.rpp + a;
-                Effect.tiltRegressor(xt, ex, ey, at.pointsBase[i][at.pointOfRow(a)], g3);
+                Effect.tiltRegressor(xt, t[0], t[1], at.pointsBase[i][at.pointOfRow(a)], g3);
                 for (int col = 0; col < 2; col++)
                     sig[row * 2 + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[2 + col] + dt[row * 3 + 2] * g3[4 + col];
             }
             // orientation rows: the measured frame turns with the base by the tilt x·e (the lift turns nothing)
             for (int a = at.posRows; a < at.rpp; a++) {
                 int row = i * at.rpp + a;
-                sig[row * 2] = xt * (dr[row * 3] * ex + dr[row * 3 + 1] * ey);
+                sig[row * 2] = xt * (dr[row * 3] * t[0] + dr[row * 3 + 1] * t[1]);
             }
         }
+        if (!any) return Double.POSITIVE_INFINITY;
         return k >= 0 ? at.pressReplacingColumns(k, sig, 2) : at.pressAddingColumns(sig, 2);
     }
 

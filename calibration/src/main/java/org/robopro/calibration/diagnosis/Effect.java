@@ -171,6 +171,7 @@ public final class Effect {
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
     private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
     private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
+    private int tiltEdges = 1;               // base tilt: 1, one edge; 4, a square foot's edges at the axis azimuth + k·90°
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -593,6 +594,8 @@ public final class Effect {
      * With {@code axisAzimuth} NaN the foot rocks toward whichever side the arm leans (every anchor
      * slack, a round or square foot on a soft pad): e is the horizontal moment's own direction
      * M_h/|M_h| at each pose and x = |M_h| − h (h ≥ 0; 0: an isotropic elastic foundation, φ ∝ M_h).
+     * A square foot ({@link #squareFootTilt}) rocks over whichever of its four edges the moment
+     * pushes it past.
      */
     public static Effect baseTilt(GravityTorques gravity, double axisAzimuth, double holdNm) {
         return baseTilt(gravity, axisAzimuth, holdNm, null);
@@ -614,22 +617,59 @@ public final class Effect {
         return e;
     }
 
-    /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
-    double tiltExcess(double[] q, double payloadKg) {
-        Vec3 m = gravity.baseMoment(q, payloadKg);
-        double x = towardLean() ? Math.hypot(m.x(), m.y()) : m.x() * Math.cos(tiltAzimuth) + m.y() * Math.sin(tiltAzimuth);
-        return Double.isInfinite(tiltHold) ? x : Math.max(0, x - tiltHold);
+    /**
+     * A square foot held down along its four edges (a robot's base plate bolted at its corners): it
+     * rocks over the edge whose axis, at {@code edgeAzimuth} + k·90°, the arm's moment exceeds the hold
+     * most (Meriam &amp; Kraige §6/2 for each edge), so as the arm swings around joint 1 the base tips
+     * over one edge, then the next; h ≥ 0.
+     */
+    public static Effect squareFootTilt(GravityTorques gravity, double edgeAzimuth, double holdNm, double[] massScales) {
+        if (!(holdNm >= 0) || Double.isInfinite(holdNm)) throw new IllegalArgumentException("a square foot holds a moment >= 0, not " + holdNm);
+        Effect e = baseTilt(gravity, edgeAzimuth, holdNm, massScales);
+        e.tiltEdges = 4;
+        return e;
     }
+
+    /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
+    double tiltExcess(double[] q, double payloadKg) { return tilt(q, payloadKg)[2]; }
 
     /** Whether a base tilt rocks toward whichever side the arm leans (its axis the moment's own), not about one edge. */
     public boolean towardLean() { return kind == Kind.BASE_TILT && Double.isNaN(tiltAzimuth); }
 
+    /** Whether a base tilt is a square foot's ({@link #squareFootTilt}). */
+    public boolean squareFoot() { return kind == Kind.BASE_TILT && tiltEdges == 4; }
+
     /** A base tilt's axis at q with a payload: (cos, sin) of its azimuth ({0, 0} where a lean-following tilt has no moment). */
     private double[] tiltAxis(double[] q, double payloadKg) {
-        if (!towardLean()) return new double[] {Math.cos(tiltAzimuth), Math.sin(tiltAzimuth)};
+        double[] t = tilt(q, payloadKg);
+        return new double[] {t[0], t[1]};
+    }
+
+    /** A base tilt at q with a payload: its axis (cos, sin) and excess moment x (N·m). */
+    private double[] tilt(double[] q, double payloadKg) {
         Vec3 m = gravity.baseMoment(q, payloadKg);
-        double h = Math.hypot(m.x(), m.y());
-        return h > 0 ? new double[] {m.x() / h, m.y() / h} : new double[2];
+        double[] t = tiltAt(m.x(), m.y(), tiltAzimuth, tiltEdges);
+        if (!Double.isInfinite(tiltHold)) t[2] = Math.max(0, t[2] - tiltHold);
+        return t;
+    }
+
+    /**
+     * The axis (cos, sin) and the moment about it (N·m, before any hold) of a tilt under the horizontal
+     * moment (mx, my): about the axis at {@code azimuth} (one edge), about the most loaded of the four at
+     * {@code azimuth} + k·90° ({@code edges} 4), or about the moment's own direction ({@code azimuth} NaN).
+     */
+    static double[] tiltAt(double mx, double my, double azimuth, int edges) {
+        if (Double.isNaN(azimuth)) {
+            double h = Math.hypot(mx, my);
+            return h > 0 ? new double[] {mx / h, my / h, h} : new double[3];
+        }
+        double c = Math.cos(azimuth), s = Math.sin(azimuth);
+        double[] best = {c, s, mx * c + my * s};
+        for (int k = 1; k < edges; k++) {
+            double ck = Math.cos(azimuth + k * Math.PI / 2), sk = Math.sin(azimuth + k * Math.PI / 2), x = mx * ck + my * sk;
+            if (x > best[2]) { best[0] = ck; best[1] = sk; best[2] = x; }
+        }
+        return best;
     }
 
     /**
@@ -976,6 +1016,8 @@ public final class Effect {
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
+                    : squareFoot() ? String.format(Locale.ROOT, " (square foot, edges at %.0f deg, above %.0f N·m)",
+                    (Math.toDegrees(tiltAzimuth) % 90 + 90) % 90, tiltHold)
                     : String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
@@ -1341,6 +1383,7 @@ public final class Effect {
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
+                if (squareFoot()) p.put("foot_edges", 4.0);
                 if (!Double.isInfinite(tiltHold)) p.put("hold_nm", tiltHold);
                 if (massScales != null) putMassScales(p, "tilt_mass_scale_");
             }
@@ -1449,6 +1492,12 @@ public final class Effect {
             case BASE_TILT -> {
                 if (gravity == null || gravity.massesUnknown())
                     throw new InputException(file, 0, 0, "mass_model", "base-tilt needs the robot's mass_model");
+                if (ps.containsKey("foot_edges")) {
+                    if (require(d, "foot_edges", file) != 4)
+                        throw new InputException(file, 0, 0, "effects.base-tilt.parameters_si.foot_edges", "must be 4 (a square foot)");
+                    yield squareFootTilt(gravity, require(d, "axis_azimuth_rad", file), require(d, "hold_nm", file),
+                            massScales(d, gravity, "tilt_mass_scale_", file));
+                }
                 yield baseTilt(gravity, ps.containsKey("axis_azimuth_rad") ? require(d, "axis_azimuth_rad", file) : Double.NaN,
                         ps.containsKey("hold_nm") ? require(d, "hold_nm", file) : ps.containsKey("axis_azimuth_rad") ? Double.NEGATIVE_INFINITY : 0,
                         massScales(d, gravity, "tilt_mass_scale_", file));

@@ -81,6 +81,12 @@ final class Words {
                     + "or pedestal. It is modelled as such so compensation can use it, but check the base's bolts and its seating: "
                     + "measure a point on the base itself while the arm reaches out in several directions with and without payload.",
                     1e8 * v[0], e.tiltHold() > 0 ? String.format(Locale.ROOT, ", once the moment exceeds %.0f N·m", e.tiltHold()) : "")
+                    : e.squareFoot() ? String.format(Locale.ROOT, "The robot's base rocks on a square foot over whichever of its "
+                    + "edges the arm's weight and payload push it past (edges' axes at %.0f deg and every 90 deg from it, %.3g µrad per "
+                    + "100 N·m once the moment about an edge exceeds %.0f N·m), and none of the known effects of the arm explains it: "
+                    + "anchor bolts slack at the corners, a base plate that rocks on its grout. It is modelled as such so compensation "
+                    + "can use it, but check the base's bolts and its seating: measure a point on the base itself while the arm reaches "
+                    + "out in several directions with and without payload.", (Math.toDegrees(e.tiltAzimuth()) % 90 + 90) % 90, 1e8 * v[0], e.tiltHold())
                     : String.format(Locale.ROOT, "The robot's base tilts on its foundation about a horizontal axis at %.0f deg "
                     + "as the arm's weight and payload tip it (%.3g µrad per 100 N·m%s), and none of the known effects of the arm "
                     + "explains it: a loose anchor bolt, a foot that rocks over its edge, a soft floor or pedestal. It is modelled as such "
