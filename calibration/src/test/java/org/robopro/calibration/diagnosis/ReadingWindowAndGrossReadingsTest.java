@@ -121,4 +121,24 @@ class ReadingWindowAndGrossReadingsTest {
         assertTrue(d.effects().stream().allMatch(f -> f.effect().joint() == 2) && !d.effects().isEmpty(),
                 d.effects().stream().map(f -> f.effect().label()).toList() + "; notes " + d.notes());
     }
+
+    /**
+     * A structure the geometry leaves puts many poses beyond the calibration's outlier rule, which is
+     * then taken for a structure to locate, not for bad measurements; but a few gross readings among
+     * them (2-3 mm on a 0.015 mm instrument, here 3 training and 2 validation poses, against a bump of
+     * joint 3's reading worth a few tenths of a millimetre) are still reported and left out: kept, they
+     * bent the geometric fit the structure is sought in (the clean-room set G's IRB 2400 campaigns with
+     * three and five such readings ended at 5.8-12.5 × the floor with nothing found).
+     */
+    @Test
+    void grossReadingsAmongManyFlaggedPoses_areStillReported() {
+        RobotDescription irb = RobotLibrary.shipped("irb2400");
+        double amp = Math.toRadians(0.015), at = 0.2, width = 0.12;
+        Map<Integer, double[]> gross = Map.of(5, new double[] {2.1e-3, -1.2e-3, 0.9e-3}, 22, new double[] {-2.6e-3, 0.4e-3, 1.5e-3},
+                41, new double[] {1.0e-3, 2.2e-3, -1.9e-3}, 3, new double[] {-1.7e-3, -1.9e-3, 0.6e-3}, 27, new double[] {2.4e-3, 1.1e-3, 0.3e-3});
+        MeasurementSet[] c = campaign(irb, 64, 1.5e-5, 4, 11, false,
+                q -> q[2] += amp * Math.exp(-Math.pow((q[2] - at) / width, 2)), gross);
+        Diagnosis d = Diagnoser.diagnose(irb, c[0], c[1]);
+        assertTrue(new HashSet<>(d.outliers()).containsAll(Set.of("p5", "p22", "p41", "p3", "p27")), "outliers " + d.outliers() + "; notes " + d.notes());
+    }
 }
