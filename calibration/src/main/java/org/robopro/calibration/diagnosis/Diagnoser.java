@@ -1780,7 +1780,8 @@ public final class Diagnoser {
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
                     best = null;
                 } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress)
-                        || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress))
+                        || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress)
+                        && pressOwn >= bestPress * (1 - ALIAS_MARGIN))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
