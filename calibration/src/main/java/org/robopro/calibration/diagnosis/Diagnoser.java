@@ -2502,6 +2502,12 @@ public final class Diagnoser {
         return out;
     }
 
+    /**
+     * A base tilt in a family's place whose leave-one-pose-out error with the file's masses is this many
+     * times the family's is not refined further (re-estimating the masses moves it by a few per cent).
+     */
+    static final double RIVAL_TILT_HOPELESS = 1.5;
+
     /** Azimuths of a base tilt's axis tried (every 15°), and the shares of the poses it tilts at (1: both ways, no hold). */
     static final int TILT_AZIMUTHS = 24;
     static final double[] TILT_SHARES = {1, 0.9, 0.75, 0.5, 0.3, 0.15};
@@ -2520,6 +2526,9 @@ public final class Diagnoser {
         if (k >= 0 && (e.target() != Effect.Target.DRIVE || e.joint() > 2)) return null;
         double[] tilt = tiltSearch(at, k, gravity, rows, null); // press, axis azimuth, share of the poses tilted, edges
         if (!Double.isFinite(tilt[0])) return null;
+        if (k >= 0 && tilt[0] > RIVAL_TILT_HOPELESS * at.pressFull()) // a rival far behind the family: its masses are not worth the search
+            return tilt[3] == 4 ? Effect.squareFootTilt(gravity, tilt[1], tiltHold(moments(gravity, rows), tilt[1], tilt[2], 4), null)
+                    : Effect.baseTilt(gravity, tilt[1], tiltHold(moments(gravity, rows), tilt[1], tilt[2], (int) tilt[3]), null);
         // Each mass of the arm scaled in turn at that axis and share (a data sheet's masses are rarely better than ±30 %);
         // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
         double[] sc = new double[gravity.massCount()];

@@ -143,4 +143,35 @@ class SpringFoundationAndRampTest {
         for (int i = 0; i < 9; i++) { dev = Math.max(dev, Math.abs(r1[i] - r2[i])); turn = Math.max(turn, Math.abs(r0[i] - r2[i])); }
         assertTrue(dev < 1e-3 * turn, "orientation off the rigid turn by " + dev + " (the turn itself " + turn + ")");
     }
+
+    /** The new forms read back from the robot file as written: the stiffening spring, the square foot, the tilt toward the lean, re-estimated masses. */
+    @Test
+    void newForms_roundTripThroughTheRobotFile() {
+        var desc = RobotLibrary.shipped("irb2000");
+        var model = org.robopro.kinematics.KinematicModel.build(desc);
+        GravityTorques g = GravityTorques.of(model, desc);
+        double[] scales = new double[g.massCount()];
+        java.util.Arrays.fill(scales, 1);
+        scales[1] = 1.2;
+        List<Effect.Term> terms = List.of(new Effect.Term(Effect.complianceStiffening(1, g), new double[] {2e-6, -3e-13}),
+                new Effect.Term(Effect.squareFootTilt(g, Math.toRadians(10), 300, scales), new double[] {1e-7, -3e-8}),
+                new Effect.Term(Effect.baseTilt(g, Double.NaN, 120, null), new double[] {2e-7, 0}),
+                new Effect.Term(Effect.baseTilt(g, Math.toRadians(200), Double.NEGATIVE_INFINITY, null), new double[] {3e-7, 1e-8}));
+        double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0.2};
+        var c = new org.robopro.calibration.PoseConditions(null, Double.NaN, Double.NaN, 5.0);
+        for (Effect.Term t : terms) {
+            Effect.Term back = Effect.fromDescription(t.effect().describe(t.values()), model, g, "x.robot.json");
+            assertEquals(t.effect().label(), back.effect().label());
+            assertEquals(t.effect().size(), back.effect().size());
+            double[] a = new double[3 * t.effect().size()], b = new double[3 * t.effect().size()], p = {1.2, 0.3, 0.9};
+            if (t.effect().target() == Effect.Target.POSITION) {
+                t.effect().positionRegressor(q, c, p, a);
+                back.effect().positionRegressor(q, c, p, b);
+            } else {
+                t.effect().regressor(q, c, a);
+                back.effect().regressor(q, c, b);
+            }
+            for (int i = 0; i < a.length; i++) assertEquals(a[i], b[i], 1e-12 * (1 + Math.abs(a[i])), t.effect().label());
+        }
+    }
 }
