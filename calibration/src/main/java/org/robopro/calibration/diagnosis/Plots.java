@@ -62,7 +62,7 @@ final class Plots {
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() ? 400 : 2;
+        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() || e.stiffens() ? 400 : 2;
         // a high stage order: enough curve points for about 16 per cycle over the range
         if (e.kind() == Effect.Kind.PERIODIC) nc = (int) Math.max(nc, Math.min(20000, 16 * maxOrder(e) * (hi - lo) / 360));
         double[] cx = new double[nc], cy = new double[nc];
