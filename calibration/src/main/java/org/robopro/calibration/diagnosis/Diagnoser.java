@@ -2526,32 +2526,32 @@ public final class Diagnoser {
         if (k >= 0 && (e.target() != Effect.Target.DRIVE || e.joint() > 2)) return null;
         double[] tilt = tiltSearch(at, k, gravity, rows, null); // press, axis azimuth, share of the poses tilted, edges
         if (!Double.isFinite(tilt[0])) return null;
-        if (k >= 0 && tilt[0] > RIVAL_TILT_HOPELESS * at.pressFull()) // a rival far behind the family: its masses are not worth the search
-            return tilt[3] == 4 ? Effect.squareFootTilt(gravity, tilt[1], tiltHold(moments(gravity, rows), tilt[1], tilt[2], 4), null)
-                    : Effect.baseTilt(gravity, tilt[1], tiltHold(moments(gravity, rows), tilt[1], tilt[2], (int) tilt[3]), null);
-        // Each mass of the arm scaled in turn at that axis and share (a data sheet's masses are rarely better than ±30 %);
-        // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
-        double[] sc = new double[gravity.massCount()];
-        Arrays.fill(sc, 1);
-        double pr = tilt[0];
-        for (int round = 0; round < 2; round++)
-            for (int m = 0; m < sc.length; m++) {
-                if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
-                double keep = sc[m], bestF = keep;
-                for (double f : HELD_MASS_SCALES) {
-                    if (f == keep) continue;
-                    sc[m] = f;
-                    double p = tiltPress(at, k, moments(gravity.withMassScales(sc), rows), tilt[1], tilt[2], (int) tilt[3]);
-                    if (p < pr) { pr = p; bestF = f; }
-                }
-                sc[m] = bestF;
-            }
         double[] scales = null;
-        if (pr < tilt[0] * (1 - ALIAS_MARGIN)) {
-            double[] again = tiltSearch(at, k, gravity.withMassScales(sc), rows, tilt); // the axis and hold again, with those masses
-            if (again[0] < pr) tilt = again;
-            else tilt[0] = pr;
-            scales = sc;
+        // a rival far behind the family keeps the file's masses: they are not worth the search
+        if (k < 0 || tilt[0] <= RIVAL_TILT_HOPELESS * at.pressFull()) {
+            // Each mass of the arm scaled in turn at that axis and share (a data sheet's masses are rarely better than ±30 %);
+            // re-estimated masses are kept only when they predict left-out poses clearly better than the file's.
+            double[] sc = new double[gravity.massCount()];
+            Arrays.fill(sc, 1);
+            double pr = tilt[0];
+            for (int round = 0; round < 2; round++)
+                for (int m = 0; m < sc.length; m++) {
+                    if (m == gravity.payloadIndex() || gravity.massKg(m) == 0) continue;
+                    double keep = sc[m], bestF = keep;
+                    for (double f : HELD_MASS_SCALES) {
+                        if (f == keep) continue;
+                        sc[m] = f;
+                        double p = tiltPress(at, k, moments(gravity.withMassScales(sc), rows), tilt[1], tilt[2], (int) tilt[3]);
+                        if (p < pr) { pr = p; bestF = f; }
+                    }
+                    sc[m] = bestF;
+                }
+            if (pr < tilt[0] * (1 - ALIAS_MARGIN)) {
+                double[] again = tiltSearch(at, k, gravity.withMassScales(sc), rows, tilt); // the axis and hold again, with those masses
+                if (again[0] < pr) tilt = again;
+                else tilt[0] = pr;
+                scales = sc;
+            }
         }
         GravityTorques g = scales == null ? gravity : gravity.withMassScales(scales);
         double hold = tiltHold(moments(g, rows), tilt[1], tilt[2], (int) tilt[3]);
@@ -2598,7 +2598,7 @@ public final class Diagnoser {
     }
 
     /** The moment the base holds before it tilts: tilting at {@code share} of the poses (1: none; −∞ for one edge, both ways). */
-    private static double tiltHold(double[][] mom, double psi, double share, int edges) {
+    static double tiltHold(double[][] mom, double psi, double share, int edges) {
         if (share >= 1) return Double.isNaN(psi) || edges > 1 ? 0 : Double.NEGATIVE_INFINITY;
         double[] x = new double[mom.length];
         for (int i = 0; i < x.length; i++) x[i] = Effect.tiltAt(mom[i][0], mom[i][1], psi, edges)[2];
@@ -2607,7 +2607,7 @@ public final class Diagnoser {
     }
 
     /** Each row's moment of the arm's weight and payload (masses {@code g}) about the base origin (N·m, base frame). */
-    private static double[][] moments(GravityTorques g, List<Measurement> rows) {
+    static double[][] moments(GravityTorques g, List<Measurement> rows) {
         double[][] m = new double[rows.size()][];
         for (int i = 0; i < m.length; i++) {
             Measurement r = rows.get(i);
@@ -2623,7 +2623,17 @@ public final class Diagnoser {
      * translation sensitivity, and with orientations the frame's turn.
      */
     private static double tiltPress(Tester at, int k, double[][] mom, double psi, double share, int edges) {
-        double hold = tiltHold(mom, psi, share, edges);
+        double[] sig = tiltColumns(at, mom, psi, tiltHold(mom, psi, share, edges), edges);
+        if (sig == null) return Double.POSITIVE_INFINITY;
+        return k >= 0 ? at.pressReplacingColumns(k, sig, 2) : at.pressAddingColumns(sig, 2);
+    }
+
+    /**
+     * The base tilt's two signature columns (m x 2, row-major; {@link Effect#tiltAt}: azimuth {@code psi},
+     * NaN toward the lean; {@code edges} 1 or 4) holding {@code hold}: its regressor through each row's
+     * translation sensitivity, and with orientations the frame's turn; null when no pose tilts.
+     */
+    static double[] tiltColumns(Tester at, double[][] mom, double psi, double hold, int edges) {
         double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0], dr = at.endDRot[0];
         boolean any = false;
         for (int i = 0; i < mom.length; i++) {
@@ -2643,8 +2653,7 @@ public final class Diagnoser {
                 sig[row * 2] = xt * (dr[row * 3] * t[0] + dr[row * 3 + 1] * t[1]);
             }
         }
-        if (!any) return Double.POSITIVE_INFINITY;
-        return k >= 0 ? at.pressReplacingColumns(k, sig, 2) : at.pressAddingColumns(sig, 2);
+        return any ? sig : null;
     }
 
     /** The instrument-reading fallback of an instrument probe ({@link Locator#sightProbes}). */

@@ -639,13 +639,7 @@ public final class Effect {
     /** Whether a base tilt is a square foot's ({@link #squareFootTilt}). */
     public boolean squareFoot() { return kind == Kind.BASE_TILT && tiltEdges == 4; }
 
-    /** A base tilt's axis at q with a payload: (cos, sin) of its azimuth ({0, 0} where a lean-following tilt has no moment). */
-    private double[] tiltAxis(double[] q, double payloadKg) {
-        double[] t = tilt(q, payloadKg);
-        return new double[] {t[0], t[1]};
-    }
-
-    /** A base tilt at q with a payload: its axis (cos, sin) and excess moment x (N·m). */
+    /** A base tilt at q with a payload: its axis (cos, sin; {0, 0} where a lean-following tilt has no moment) and excess moment x (N·m). */
     private double[] tilt(double[] q, double payloadKg) {
         Vec3 m = gravity.baseMoment(q, payloadKg);
         double[] t = tiltAt(m.x(), m.y(), tiltAzimuth, tiltEdges);
@@ -1138,8 +1132,8 @@ public final class Effect {
         switch (kind) {
             case DRIFT -> { for (int a = 0; a < 3; a++) g3[a * k + a] = x; }
             case BASE_TILT -> {
-                double[] e = tiltAxis(q, c.payloadKg());
-                tiltRegressor(tiltExcess(q, c.payloadKg()), e[0], e[1], pointBase, g3);
+                double[] t = tilt(q, c.payloadKg());
+                tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
             case INSTRUMENT -> {
                 // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
@@ -1236,10 +1230,9 @@ public final class Effect {
     public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
         Arrays.fill(g3, 0);
         if (kind != Kind.BASE_TILT) return;
-        double[] e = tiltAxis(q, c.payloadKg());
-        double x = tiltExcess(q, c.payloadKg());
-        g3[0] = x * e[0];
-        g3[2] = x * e[1];
+        double[] t = tilt(q, c.payloadKg());
+        g3[0] = t[2] * t[0];
+        g3[2] = t[2] * t[1];
     }
 
     /** The rotation (base, rotation vector, rad) of the measured frame by an effect that turns it (zero otherwise). */

@@ -293,13 +293,9 @@ final class Locator {
         List<Probe> out = new ArrayList<>();
         if (g == null || g.massesUnknown() || t.ends != 1) return out;
         int poses = t.m / t.rpp;
-        double[][] mom = new double[poses][];
+        double[][] mom = Diagnoser.moments(g, t.endRows.get(0));
         double[][] x = new double[1][poses];
-        for (int i = 0; i < poses; i++) {
-            var r = t.endRows.get(0).get(i);
-            mom[i] = g.baseMoment(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0).toArray();
-            x[0][i] = Math.hypot(mom[i][0], mom[i][1]);
-        }
+        for (int i = 0; i < poses; i++) x[0][i] = Math.hypot(mom[i][0], mom[i][1]);
         if (!varies(x, 1)) return out;
         int k = 5;
         double[] sig = new double[t.m * k], g3 = new double[3 * k];
@@ -326,25 +322,10 @@ final class Locator {
         p.x = x;
         p.xLabel = "horizontal moment of the arm's weight on the base (N·m)";
         out.add(p);
-        double[] sorted = x[0].clone();
-        Arrays.sort(sorted);
         for (double share : BASE_HOLD_SHARES) {
-            double hold = sorted[(int) Math.floor((1 - share) * (poses - 1))];
-            double[] s2 = new double[t.m * 2], g2 = new double[6];
-            for (int i = 0; i < poses; i++) {
-                double xt = x[0][i] - hold;
-                if (!(xt > 0)) continue;
-                double ex = mom[i][0] / x[0][i], ey = mom[i][1] / x[0][i];
-                for (int a = 0; a < t.posRows; a++) {
-                    int row = i * t.rpp + a;
-                    Effect.tiltRegressor(xt, ex, ey, t.pointsBase[i][t.pointOfRow(a)], g2);
-                    for (int c = 0; c < 2; c++) s2[row * 2 + c] = dt[row * 3] * g2[c] + dt[row * 3 + 1] * g2[2 + c] + dt[row * 3 + 2] * g2[4 + c];
-                }
-                for (int a = t.posRows; a < t.rpp; a++) {
-                    int row = i * t.rpp + a;
-                    s2[row * 2] = xt * (dr[row * 3] * ex + dr[row * 3 + 1] * ey);
-                }
-            }
+            double hold = Diagnoser.tiltHold(mom, Double.NaN, share, 1);
+            double[] s2 = Diagnoser.tiltColumns(t, mom, Double.NaN, hold, 1);
+            if (s2 == null) continue;
             Probe q = finish(t, s2, 2);
             q.var = Var.BASE_MOMENT;
             q.variable = p.variable;
