@@ -77,6 +77,10 @@ public final class Diagnoser {
     static final double MAX_SCALE = 1e-2, MAX_COUPLING = 1e-2;
     /** Largest plausible tilt of a robot's base on its foundation per N·m of the arm's moment, rad/(N·m): a loose base indeed. */
     static final double MAX_TILT_PER_NM = 1e-5;
+    /** A bearing's tilt across its axis beyond this (about 3.5 arc-minutes RMS) would be a failed bearing, not a wobble, rad. */
+    static final double MAX_WOBBLE_RAD = 1e-3;
+    /** Nor a radial motion of the axis beyond this (a bearing's runout is micrometres to a few tens), m. */
+    static final double MAX_RUNOUT_M = 2e-4;
     /**
      * Largest plausible RMS error of an instrument's distance reading (m) and of its angle readings
      * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
@@ -2155,6 +2159,7 @@ public final class Diagnoser {
                 case SIGHT -> { if (k == Effect.Kind.INSTRUMENT && e.sight() == f.probe.sight) return e; }
                 // the base's tilt, or a drive of the arm's first joints giving way under the same weight
                 case BASE_MOMENT -> { if (k == Effect.Kind.BASE_TILT || k == Effect.Kind.COMPLIANCE && e.joint() <= 2) return e; }
+                case AXIS_WOBBLE -> { if (k == Effect.Kind.AXIS_WOBBLE && e.joint() == f.probe.joint) return e; }
             }
         }
         return null;
@@ -2338,6 +2343,9 @@ public final class Diagnoser {
                     + "instrument moves with it, one of the robot does not."
                     : "run the instrument's two-face (front and back sight) check and its compensation, then measure a few poses "
                     + "again with the instrument moved to another place: an error of the instrument moves with it, one of the robot does not.";
+            case AXIS_WOBBLE -> String.format(Locale.ROOT, "put a dial indicator or an electronic level on the link beyond joint %d "
+                    + "and read its tilt across the axis while the joint turns slowly through its range, both ways: a bearing that "
+                    + "wobbles repeats its pattern every turn; check the bearing's preload.", f.probe.joint + 1);
             case BASE_MOMENT -> "check the anchor bolts' torque and the base plate's grout, then put a second target (or an "
                     + "inclinometer) on the robot's foot and read it while the arm swings stretched out around joint 1 with a payload: "
                     + "a base that rocks moves there, a joint that gives way does not.";
@@ -2453,6 +2461,7 @@ public final class Diagnoser {
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.SIGHT) out.add(sightEffect(f.probe));
         // the base giving way under the arm's moment: the tilt searched where it was located
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.BASE_MOMENT && f.probe.tilt != null) out.add(f.probe.tilt);
+        out.addAll(wobbles(found, model));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -2492,6 +2501,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
+                case AXIS_WOBBLE -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2499,6 +2509,18 @@ public final class Diagnoser {
                 }
                 default -> { }
             }
+        out.addAll(wobbles(found, model));
+        return out;
+    }
+
+    /** Each joint's axis wobble at every order located for it (one effect per joint). */
+    static List<Effect> wobbles(List<Locator.Found> found, KinematicModel model) {
+        List<Effect> out = new ArrayList<>();
+        for (int j = 0; j < model.dof(); j++) {
+            java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+            for (Locator.Found f : found) if (f.probe.var == Locator.Var.AXIS_WOBBLE && f.probe.joint == j) hs.add(f.probe.harmonic);
+            if (!hs.isEmpty()) out.add(Effect.axisWobble(model, j, hs.stream().mapToInt(Integer::intValue).toArray()));
+        }
         return out;
     }
 
@@ -3661,6 +3683,12 @@ public final class Diagnoser {
                 double r = Words.rmsSmooth(e, v);
                 c.plausible = r < MAX_PERIODIC_RAD * 2;
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
+            }
+            case AXIS_WOBBLE -> {
+                double r = Words.rmsWobble(e, v), d = Words.rmsRunout(e, v);
+                c.plausible = r < MAX_WOBBLE_RAD && d < MAX_RUNOUT_M;
+                c.plausibility = String.format(Locale.ROOT, "RMS tilt %.4f deg < %.2f deg, radial motion %.3f mm < %.1f mm", Math.toDegrees(r),
+                        Math.toDegrees(MAX_WOBBLE_RAD), d * 1e3, MAX_RUNOUT_M * 1e3);
             }
             case BASE_TILT -> {
                 // the base tips the way the moment pushes it; a compliance of 1e-5 rad/(N·m) would be a loose base indeed

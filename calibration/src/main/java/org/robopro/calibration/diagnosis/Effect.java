@@ -71,7 +71,8 @@ public final class Effect {
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
-        BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family");
+        BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
+        AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family");
 
         public final String json;
         public final String title;
@@ -630,6 +631,62 @@ public final class Effect {
         return e;
     }
 
+    /**
+     * The bearing of revolute joint {@code joint} wobbling: the joint's axis tilts across itself as
+     * the joint turns, by a pattern that repeats {@code orders} times per turn in the fixed (stator)
+     * part's frame (a race's waviness or runout, a worn or unloaded cross-roller bearing: the
+     * rotating ring tilts on the rolling elements as they pass the high spots; Harris &amp; Kotzalas,
+     * "Rolling Bearing Analysis", 5th ed., vol. 2 ch. 6, waviness orders and the tilt they excite).
+     * Everything beyond the joint turns by a small rotation ω about a point of the axis, ω across
+     * the axis: ω = Σ_h (x_c cos hq + x_s sin hq) x̂ + (y_c cos hq + y_s sin hq) ŷ with x̂, ŷ the
+     * stator frame's axes across the joint, and they move across the axis by d, the same pattern in
+     * metres (the radial error motion). An axis's error motion is its tilt and its radial motion
+     * at a reference point of the axis (ISO 230-7:2015, §3, tilt and radial error motion); the
+     * bearing's own point along the axis is not known, and a tilt about another point of the axis
+     * is the same tilt with a radial motion. The measured point moves by ω × (p − o) + d, o the
+     * model's point of the axis; the measured frame turns by ω. Eight parameters per order: the
+     * tilt's four (rad), then the radial motion's four (m). A motion that is constant in the
+     * stator's or the rotor's frame is the geometry's (order 0, and order 1, which turns with the
+     * link).
+     */
+    public static Effect axisWobble(KinematicModel model, int joint, int[] orders) {
+        if (model.isPrismatic(joint)) throw new IllegalArgumentException("joint " + (joint + 1) + " is prismatic: no bearing axis to wobble");
+        for (int h : orders) if (h < 1) throw new IllegalArgumentException("a wobble's order is >= 1, not " + h);
+        return new Effect(Kind.AXIS_WOBBLE, joint, -1, null, false, Double.NaN, Double.NaN, orders.clone(), Double.NaN, Double.NaN, model, null);
+    }
+
+    /**
+     * An axis wobble's columns at q (3 x size, row-major, base frame): in its first half the distal
+     * bodies' rotation per unit tilt parameter, in its second their translation per unit radial
+     * parameter; and a point {@code o} of the joint's axis.
+     */
+    private void wobble(double[] q, double[] w, double[] o) {
+        int k = size();
+        Pose rotor = model.linkFrames(q)[joint + 1]; // z on the joint's axis, origin on it, turned by the joint
+        double th = model.theta(q)[joint];
+        double ct = Math.cos(th), st = Math.sin(th);
+        // the stator's axes across the joint: the rotor's turned back by the joint angle
+        double[] xs = new double[3], ys = new double[3];
+        for (int a = 0; a < 3; a++) {
+            double xr = rotor.rot(a, 0), yr = rotor.rot(a, 1);
+            xs[a] = ct * xr - st * yr;
+            ys[a] = st * xr + ct * yr;
+        }
+        for (int i = 0, half = k / 2; i < harmonics.length; i++) {
+            double c = Math.cos(harmonics[i] * q[joint]), s = Math.sin(harmonics[i] * q[joint]);
+            for (int a = 0; a < 3; a++)
+                for (int off : new int[] {4 * i, half + 4 * i}) {
+                    w[a * k + off] = c * xs[a];
+                    w[a * k + off + 1] = s * xs[a];
+                    w[a * k + off + 2] = c * ys[a];
+                    w[a * k + off + 3] = s * ys[a];
+                }
+        }
+        o[0] = rotor.x();
+        o[1] = rotor.y();
+        o[2] = rotor.z();
+    }
+
     /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
     double tiltExcess(double[] q, double payloadKg) { return tilt(q, payloadKg)[2]; }
 
@@ -725,7 +782,8 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT;
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT
+                || kind == Kind.AXIS_WOBBLE;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -861,7 +919,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -902,6 +960,7 @@ public final class Effect {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
+            case AXIS_WOBBLE -> 8 * harmonics.length;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
@@ -935,6 +994,10 @@ public final class Effect {
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); }
+            case AXIS_WOBBLE -> {
+                for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
+                for (int h : harmonics) { out.add("rxc" + h); out.add("rxs" + h); out.add("ryc" + h); out.add("rys" + h); }
+            }
             case INSTRUMENT -> {
                 if (Double.isFinite(cycle)) { out.add("a"); out.add("b"); }
                 else for (int k = 1; k <= nBasis; k++) out.add("e" + k);
@@ -972,6 +1035,7 @@ public final class Effect {
             case POINT_SMOOTH, TARGET_STEP -> "m";
             case INSTRUMENT -> sight.unit;
             case BASE_TILT -> "rad/(N·m)";
+            case AXIS_WOBBLE -> "rad";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -983,6 +1047,11 @@ public final class Effect {
             return out;
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
+        if (kind == Kind.AXIS_WOBBLE) {
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(4 * harmonics.length, "rad"));
+            out.addAll(java.util.Collections.nCopies(4 * harmonics.length, "m"));
+            return out;
+        }
         return java.util.Collections.nCopies(size(), u);
     }
 
@@ -1015,6 +1084,9 @@ public final class Effect {
                     : String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
+            case AXIS_WOBBLE -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
+                    + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
+                    : harmonics[0] + " times") + " per turn)";
             case INSTRUMENT -> kind.json + " (" + sight.words + (Double.isFinite(cycle)
                     ? String.format(Locale.ROOT, ", cyclic %.0f %s", sight == Sight.RANGE ? cycle * 1e3 : Math.toDegrees(cycle), sight == Sight.RANGE ? "mm" : "deg")
                     : nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
@@ -1117,7 +1189,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1134,6 +1206,19 @@ public final class Effect {
             case BASE_TILT -> {
                 double[] t = tilt(q, c.payloadKg());
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
+            }
+            case AXIS_WOBBLE -> {
+                // the distal bodies turn by ω about a point of the axis and move across it by d: Δp = ω × (p − o) + d
+                double[] w = new double[3 * k], o = new double[3];
+                wobble(q, w, o);
+                double rx = pointBase[0] - o[0], ry = pointBase[1] - o[1], rz = pointBase[2] - o[2];
+                for (int col = k / 2; col < k; col++) for (int a = 0; a < 3; a++) g3[a * k + col] = w[a * k + col];
+                for (int col = 0; col < k / 2; col++) {
+                    double wx = w[col], wy = w[k + col], wz = w[2 * k + col];
+                    g3[col] = wy * rz - wz * ry;
+                    g3[k + col] = wz * rx - wx * rz;
+                    g3[2 * k + col] = wx * ry - wy * rx;
+                }
             }
             case INSTRUMENT -> {
                 // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
@@ -1220,7 +1305,7 @@ public final class Effect {
     }
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
-    public boolean turnsFrame() { return kind == Kind.BASE_TILT; }
+    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -1229,6 +1314,12 @@ public final class Effect {
      */
     public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
         Arrays.fill(g3, 0);
+        if (kind == Kind.AXIS_WOBBLE) {
+            int k = size();
+            wobble(q, g3, new double[3]);
+            for (int a = 0; a < 3; a++) Arrays.fill(g3, a * k + k / 2, a * k + k, 0); // the radial motion turns nothing
+            return;
+        }
         if (kind != Kind.BASE_TILT) return;
         double[] t = tilt(q, c.payloadKg());
         g3[0] = t[2] * t[0];
@@ -1374,6 +1465,7 @@ public final class Effect {
             }
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
+            case AXIS_WOBBLE -> { }
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
                 if (squareFoot()) p.put("foot_edges", 4.0);
@@ -1482,6 +1574,15 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case AXIS_WOBBLE -> {
+                java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+                for (String key : ps.keySet()) if (key.matches("xc\\d+")) hs.add(Integer.parseInt(key.substring(2)));
+                if (hs.isEmpty() || hs.first() < 1)
+                    throw new InputException(file, 0, 0, "effects.axis-wobble.parameters_si", "needs xc1, xs1, yc1, ys1 (or another order >= 1)");
+                if (model.isPrismatic(js.get(0) - 1))
+                    throw new InputException(file, 0, 0, "effects.joints", "axis-wobble needs a revolute joint, joint " + js.get(0) + " is prismatic");
+                yield axisWobble(model, js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
+            }
             case BASE_TILT -> {
                 if (gravity == null || gravity.massesUnknown())
                     throw new InputException(file, 0, 0, "mass_model", "base-tilt needs the robot's mass_model");

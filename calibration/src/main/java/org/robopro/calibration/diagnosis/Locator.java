@@ -4,7 +4,9 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.PoseConditions;
+import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
 
@@ -39,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -271,6 +273,7 @@ final class Locator {
         }
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
         out.addAll(baseMoment(t));
+        out.addAll(axisWobbles(t));
         out.addAll(sightProbes(t, steps));
         return out;
     }
@@ -334,6 +337,60 @@ final class Locator {
             q.x = x;
             q.xLabel = p.xLabel;
             out.add(q);
+        }
+        return out;
+    }
+
+    /** Orders of a joint's axis wobble probed (cycles per turn in the stator's frame). */
+    static final int WOBBLE_ORDERS = 4;
+
+    /**
+     * A joint's bearing wobbling ({@link Effect#axisWobble}): for each revolute joint that turns over
+     * a range and each order h, the four columns of the axis's tilt across itself, cos and sin of h·q
+     * about the stator's two axes across the joint. Positions and orientations, one pose per row.
+     */
+    static List<Probe> axisWobbles(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        if (t.ends != 1) return out;
+        KinematicModel model = t.w.model;
+        int poses = t.m / t.rpp;
+        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+        for (int j = 0; j < t.dof; j++) {
+            double[][] qx = new double[1][poses];
+            for (int i = 0; i < poses; i++) qx[0][i] = Math.toDegrees(t.endRows.get(0).get(i).q(j));
+            // a joint that turns less than this shows no pattern of its turn
+            if (model.isPrismatic(j) || !varies(qx, 30)) continue;
+            for (int h = 1; h <= WOBBLE_ORDERS; h++) {
+                Effect e = Effect.axisWobble(model, j, new int[] {h});
+                int k = e.size();
+                double[] sig = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
+                for (int i = 0; i < poses; i++) {
+                    Measurement row = t.endRows.get(0).get(i);
+                    PoseConditions c = t.endConditions.get(0).get(i);
+                    e.rotationRegressor(row.q(), c, w3);
+                    for (int a = 0; a < t.posRows; a++) {
+                        int r = i * t.rpp + a;
+                        e.positionRegressor(row.q(), c, t.pointsBase[i][t.pointOfRow(a)], g3);
+                        for (int col = 0; col < k; col++)
+                            sig[r * k + col] = dt[r * 3] * g3[col] + dt[r * 3 + 1] * g3[k + col] + dt[r * 3 + 2] * g3[2 * k + col];
+                    }
+                    for (int a = t.posRows; a < t.rpp; a++) {
+                        int r = i * t.rpp + a;
+                        for (int col = 0; col < k; col++)
+                            sig[r * k + col] = dr[r * 3] * w3[col] + dr[r * 3 + 1] * w3[k + col] + dr[r * 3 + 2] * w3[2 * k + col];
+                    }
+                }
+                Probe p = finish(t, sig, k);
+                p.var = Var.AXIS_WOBBLE;
+                p.joint = j;
+                p.harmonic = h;
+                p.variable = "joint " + (j + 1) + " angle";
+                p.shape = "the axis of joint " + (j + 1) + " tilts across itself " + (h == 1 ? "once" : h + " times")
+                        + " per turn of the joint (its bearing wobbles)";
+                p.x = qx;
+                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+                out.add(p);
+            }
         }
         return out;
     }

@@ -93,6 +93,7 @@ final class Plots {
             };
             case ZERO_STEP, TARGET_STEP -> "time since start (s)";
             case BASE_TILT -> "moment of the arm's weight about the base's tipping axis (N·m)";
+            case AXIS_WOBBLE -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
@@ -117,7 +118,7 @@ final class Plots {
             case ZERO_STEP, TARGET_STEP -> c.timeS();
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
-            case ANGLE_STEP -> Math.toDegrees(row.q(e.joint()));
+            case ANGLE_STEP, AXIS_WOBBLE -> Math.toDegrees(row.q(e.joint()));
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
@@ -145,7 +146,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;

@@ -94,6 +94,13 @@ final class Words {
                     + "while the arm reaches out in several directions with and without payload.", Math.toDegrees(e.tiltAzimuth()),
                     1e8 * v[0], Double.isInfinite(e.tiltHold()) ? ", in both directions" : String.format(Locale.ROOT,
                             ", once the moment about that edge exceeds %.0f N·m", e.tiltHold()));
+            case AXIS_WOBBLE -> String.format(Locale.ROOT, "The axis of joint %d tilts across itself as the joint turns (%s), "
+                    + "%.4f deg (%.1f arc-seconds) RMS over a turn, with a radial motion of %.4f mm RMS at the model's point of the "
+                    + "axis, and none of the known effects explains it: the joint's bearing "
+                    + "wobbles (runout or waviness of a race, a worn or unloaded main bearing). It is modelled as such so compensation "
+                    + "can use it, but check the bearing: put a dial indicator or an electronic level on the link beyond joint %d and "
+                    + "read its tilt across the axis while the joint turns slowly through its range.", e.joint() + 1,
+                    wobbleOrders(e), Math.toDegrees(rmsWobble(e, v)), Math.toDegrees(rmsWobble(e, v)) * 3600, 1e3 * rmsRunout(e, v), e.joint() + 1);
             case INSTRUMENT -> e.sight() == Effect.Sight.RANGE ? String.format(Locale.ROOT, "The measured positions err along the "
                     + "instrument's line of sight as a function of its distance reading (%.4f mm RMS over %.3f..%.3f m%s), which no error "
                     + "of the robot explains: the instrument's distance meter (a cyclic error or a scale error of its interferometer or "
@@ -217,6 +224,28 @@ final class Words {
      * the spline's constant is only nearly the zero's and can come out large and uncertain).
      */
     /** RMS of an instrument-reading error over the readings' range: its spline's, or a cycle's amplitude over √2. */
+    /** An axis wobble's tilt across the axis, RMS over a turn (rad): each order's four coefficients share (x² + y²) / 2. */
+    static double rmsWobble(Effect e, double[] v) {
+        double s = 0;
+        for (int i = 0; i < v.length / 2; i++) s += v[i] * v[i];
+        return Math.sqrt(s / 2);
+    }
+
+    /** An axis wobble's radial motion at the model's point of the axis, RMS over a turn (m). */
+    static double rmsRunout(Effect e, double[] v) {
+        double s = 0;
+        for (int i = v.length / 2; i < v.length; i++) s += v[i] * v[i];
+        return Math.sqrt(s / 2);
+    }
+
+    private static String wobbleOrders(Effect e) {
+        int[] h = e.harmonics();
+        if (h.length == 1) return h[0] == 1 ? "once per turn" : h[0] + " times per turn";
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < h.length; i++) b.append(i == 0 ? "" : i == h.length - 1 ? " and " : ", ").append(h[i]);
+        return b + " times per turn";
+    }
+
     static double rmsInstrument(Effect e, double[] v) {
         return Double.isFinite(e.cycle()) ? Math.sqrt((v[0] * v[0] + v[1] * v[1]) / 2) : rmsCurve(e, v);
     }
