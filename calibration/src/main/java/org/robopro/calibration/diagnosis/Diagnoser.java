@@ -79,8 +79,8 @@ public final class Diagnoser {
     static final double MAX_TILT_PER_NM = 1e-5;
     /** A bearing's tilt across its axis beyond this (about 3.5 arc-minutes RMS) would be a failed bearing, not a wobble, rad. */
     static final double MAX_WOBBLE_RAD = 1e-3;
-    /** Nor a radial motion of the axis beyond this (a bearing's runout is micrometres to a few tens), m. */
-    static final double MAX_RUNOUT_M = 2e-4;
+    /** Nor a holder that bends more than this under its own weight (it would be seen bending), m. */
+    static final double MAX_TOOL_SAG_M = 2e-3;
     /**
      * Largest plausible RMS error of an instrument's distance reading (m) and of its angle readings
      * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
@@ -2160,6 +2160,8 @@ public final class Diagnoser {
                 // the base's tilt, or a drive of the arm's first joints giving way under the same weight
                 case BASE_MOMENT -> { if (k == Effect.Kind.BASE_TILT || k == Effect.Kind.COMPLIANCE && e.joint() <= 2) return e; }
                 case AXIS_WOBBLE -> { if (k == Effect.Kind.AXIS_WOBBLE && e.joint() == f.probe.joint) return e; }
+                // the holder's sag, or a wrist drive giving way under the tool's weight
+                case TOOL_GRAVITY -> { if (k == Effect.Kind.TOOL_SAG || k == Effect.Kind.COMPLIANCE && e.joint() >= 3) return e; }
             }
         }
         return null;
@@ -2343,6 +2345,9 @@ public final class Diagnoser {
                     + "instrument moves with it, one of the robot does not."
                     : "run the instrument's two-face (front and back sight) check and its compensation, then measure a few poses "
                     + "again with the instrument moved to another place: an error of the instrument moves with it, one of the robot does not.";
+            case TOOL_GRAVITY -> "measure a few places twice, with the flange pointing down and then sideways (and the "
+                    + "holder turned about the flange's axis): a holder that bends moves the point toward gravity; shorten or "
+                    + "stiffen the target's holder.";
             case AXIS_WOBBLE -> String.format(Locale.ROOT, "put a dial indicator or an electronic level on the link beyond joint %d "
                     + "and read its tilt across the axis while the joint turns slowly through its range, both ways: a bearing that "
                     + "wobbles repeats its pattern every turn; check the bearing's preload.", f.probe.joint + 1);
@@ -2462,6 +2467,7 @@ public final class Diagnoser {
         // the base giving way under the arm's moment: the tilt searched where it was located
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.BASE_MOMENT && f.probe.tilt != null) out.add(f.probe.tilt);
         out.addAll(wobbles(found, model));
+        out.addAll(toolSags(found, model));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -2501,7 +2507,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
-                case AXIS_WOBBLE -> { }
+                case AXIS_WOBBLE, TOOL_GRAVITY -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2510,7 +2516,14 @@ public final class Diagnoser {
                 default -> { }
             }
         out.addAll(wobbles(found, model));
+        out.addAll(toolSags(found, model));
         return out;
+    }
+
+    /** A tool sag where the point's move with gravity seen from the flange was located. */
+    static List<Effect> toolSags(List<Locator.Found> found, KinematicModel model) {
+        if (found.stream().noneMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) return List.of();
+        return List.of(Effect.toolSag(model, Effect.DOWN));
     }
 
     /** Each joint's axis wobble at every order located for it (one effect per joint). */
@@ -3684,11 +3697,15 @@ public final class Diagnoser {
                 c.plausible = r < MAX_PERIODIC_RAD * 2;
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
+            case TOOL_SAG -> {
+                double d = Words.sagSpan(v);
+                c.plausible = d < MAX_TOOL_SAG_M;
+                c.plausibility = String.format(Locale.ROOT, "deflection %.3f mm < %.0f mm", d * 1e3, MAX_TOOL_SAG_M * 1e3);
+            }
             case AXIS_WOBBLE -> {
-                double r = Words.rmsWobble(e, v), d = Words.rmsRunout(e, v);
-                c.plausible = r < MAX_WOBBLE_RAD && d < MAX_RUNOUT_M;
-                c.plausibility = String.format(Locale.ROOT, "RMS tilt %.4f deg < %.2f deg, radial motion %.3f mm < %.1f mm", Math.toDegrees(r),
-                        Math.toDegrees(MAX_WOBBLE_RAD), d * 1e3, MAX_RUNOUT_M * 1e3);
+                double r = Words.rmsWobble(e, v);
+                c.plausible = r < MAX_WOBBLE_RAD;
+                c.plausibility = String.format(Locale.ROOT, "RMS tilt %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(MAX_WOBBLE_RAD));
             }
             case BASE_TILT -> {
                 // the base tips the way the moment pushes it; a compliance of 1e-5 rad/(N·m) would be a loose base indeed

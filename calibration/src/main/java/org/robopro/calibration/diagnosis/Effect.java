@@ -72,7 +72,8 @@ public final class Effect {
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
-        AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family");
+        AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family"),
+        TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family");
 
         public final String json;
         public final String title;
@@ -143,6 +144,8 @@ public final class Effect {
     static final int POSES_PER_BASIS = 6;
     /** Basis functions of the point's smooth displacement along reach or height (per axis). */
     public static final int POINT_BASIS = 4;
+    /** Gravity's direction in the base frame the tool sag takes: straight down the base's z (a robot standing on the floor). */
+    public static final Vec3 DOWN = new Vec3(0, 0, -1);
     /** Links shorter than this do not get their own thermal coefficient, m. */
     static final double MIN_LINK_M = 0.05;
 
@@ -167,6 +170,7 @@ public final class Effect {
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
     private double[] warmTaus;               // thermal-link: each link's warm-up time constant by its drives, s (null: the air's temperature only)
+    private Vec3 down;                       // tool sag: gravity's direction, base frame (unit)
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
@@ -639,15 +643,13 @@ public final class Effect {
      * "Rolling Bearing Analysis", 5th ed., vol. 2 ch. 6, waviness orders and the tilt they excite).
      * Everything beyond the joint turns by a small rotation ω about a point of the axis, ω across
      * the axis: ω = Σ_h (x_c cos hq + x_s sin hq) x̂ + (y_c cos hq + y_s sin hq) ŷ with x̂, ŷ the
-     * stator frame's axes across the joint, and they move across the axis by d, the same pattern in
-     * metres (the radial error motion). An axis's error motion is its tilt and its radial motion
-     * at a reference point of the axis (ISO 230-7:2015, §3, tilt and radial error motion); the
-     * bearing's own point along the axis is not known, and a tilt about another point of the axis
-     * is the same tilt with a radial motion. The measured point moves by ω × (p − o) + d, o the
-     * model's point of the axis; the measured frame turns by ω. Eight parameters per order: the
-     * tilt's four (rad), then the radial motion's four (m). A motion that is constant in the
+     * stator frame's axes across the joint (the tilt error motion of ISO 230-7:2015, §3). The
+     * measured point moves by ω × (p − o), o the model's point of the axis (frame j's origin); the
+     * measured frame turns by ω. Four parameters per order (rad). A tilt that is constant in the
      * stator's or the rotor's frame is the geometry's (order 0, and order 1, which turns with the
-     * link).
+     * link). The bearing's radial error motion (a shift across the axis, which a tilt about another
+     * point of the axis also brings) is left out: across a wrist joint it is the next drive's error
+     * of that joint's angle, and with it the wobble of joint 4 took a coupling of joint 5 from joint 4.
      */
     public static Effect axisWobble(KinematicModel model, int joint, int[] orders) {
         if (model.isPrismatic(joint)) throw new IllegalArgumentException("joint " + (joint + 1) + " is prismatic: no bearing axis to wobble");
@@ -656,9 +658,8 @@ public final class Effect {
     }
 
     /**
-     * An axis wobble's columns at q (3 x size, row-major, base frame): in its first half the distal
-     * bodies' rotation per unit tilt parameter, in its second their translation per unit radial
-     * parameter; and a point {@code o} of the joint's axis.
+     * An axis wobble's columns at q (3 x size, row-major, base frame): the distal bodies' rotation
+     * per unit of each parameter; and a point {@code o} of the joint's axis.
      */
     private void wobble(double[] q, double[] w, double[] o) {
         int k = size();
@@ -672,19 +673,50 @@ public final class Effect {
             xs[a] = ct * xr - st * yr;
             ys[a] = st * xr + ct * yr;
         }
-        for (int i = 0, half = k / 2; i < harmonics.length; i++) {
+        for (int i = 0; i < harmonics.length; i++) {
             double c = Math.cos(harmonics[i] * q[joint]), s = Math.sin(harmonics[i] * q[joint]);
-            for (int a = 0; a < 3; a++)
-                for (int off : new int[] {4 * i, half + 4 * i}) {
-                    w[a * k + off] = c * xs[a];
-                    w[a * k + off + 1] = s * xs[a];
-                    w[a * k + off + 2] = c * ys[a];
-                    w[a * k + off + 3] = s * ys[a];
-                }
+            for (int a = 0; a < 3; a++) {
+                w[a * k + 4 * i] = c * xs[a];
+                w[a * k + 4 * i + 1] = s * xs[a];
+                w[a * k + 4 * i + 2] = c * ys[a];
+                w[a * k + 4 * i + 3] = s * ys[a];
+            }
         }
         o[0] = rotor.x();
         o[1] = rotor.y();
         o[2] = rotor.z();
+    }
+
+    /**
+     * The measured point's holder (an extension bar, a nest, a tool) bending under its own weight:
+     * a cantilever's tip deflects in proportion to the part of its weight across it (Euler-Bernoulli,
+     * δ = wL⁴/8EI + PL³/3EI; Gere &amp; Goodno, Mechanics of Materials, table G-1), so in the flange's
+     * frame the point moves by a fixed linear map of gravity's direction seen from the flange,
+     * Δp_f = A·ĝ_f, a compliance matrix times the weight (its two bending directions and their
+     * stiffnesses unknown). In base axes Δp = R·A·Rᵀ·ĝ, R the flange's orientation: nine parameters
+     * (m), A row-major; A's isotropic part is a constant shift, the geometry's.
+     */
+    public static Effect toolSag(KinematicModel model, Vec3 down) {
+        if (!(down.norm() > 0)) throw new IllegalArgumentException("no gravity direction");
+        Effect e = new Effect(Kind.TOOL_SAG, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.down = down.times(1 / down.norm());
+        return e;
+    }
+
+    /** The kinematic model an effect on the measured point works with (thermal growth per link, a step of the target, a wobble, a tool sag); null otherwise. */
+    public KinematicModel model() { return model; }
+
+    /** Gravity's direction (base frame, unit) of a tool sag; null for other kinds. */
+    public Vec3 down() { return down; }
+
+    /** A tool sag's regressor (3 x 9, row-major) at flange pose f: column 3a + b moves the point by R[:, a]·(Rᵀĝ)_b. */
+    static void toolSagRegressor(Pose f, Vec3 down, double[] g3) {
+        double[] gf = {f.rot(0, 0) * down.x() + f.rot(1, 0) * down.y() + f.rot(2, 0) * down.z(),
+                f.rot(0, 1) * down.x() + f.rot(1, 1) * down.y() + f.rot(2, 1) * down.z(),
+                f.rot(0, 2) * down.x() + f.rot(1, 2) * down.y() + f.rot(2, 2) * down.z()};
+        for (int axis = 0; axis < 3; axis++)
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) g3[axis * 9 + 3 * a + b] = f.rot(axis, a) * gf[b];
     }
 
     /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
@@ -783,7 +815,7 @@ public final class Effect {
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT
-                || kind == Kind.AXIS_WOBBLE;
+                || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -919,7 +951,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -960,7 +992,8 @@ public final class Effect {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
-            case AXIS_WOBBLE -> 8 * harmonics.length;
+            case AXIS_WOBBLE -> 4 * harmonics.length;
+            case TOOL_SAG -> 9;
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
@@ -996,8 +1029,8 @@ public final class Effect {
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); }
             case AXIS_WOBBLE -> {
                 for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
-                for (int h : harmonics) { out.add("rxc" + h); out.add("rxs" + h); out.add("ryc" + h); out.add("rys" + h); }
             }
+            case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
             case INSTRUMENT -> {
                 if (Double.isFinite(cycle)) { out.add("a"); out.add("b"); }
                 else for (int k = 1; k <= nBasis; k++) out.add("e" + k);
@@ -1032,7 +1065,7 @@ public final class Effect {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
-            case POINT_SMOOTH, TARGET_STEP -> "m";
+            case POINT_SMOOTH, TARGET_STEP, TOOL_SAG -> "m";
             case INSTRUMENT -> sight.unit;
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
@@ -1047,11 +1080,6 @@ public final class Effect {
             return out;
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
-        if (kind == Kind.AXIS_WOBBLE) {
-            List<String> out = new ArrayList<>(java.util.Collections.nCopies(4 * harmonics.length, "rad"));
-            out.addAll(java.util.Collections.nCopies(4 * harmonics.length, "m"));
-            return out;
-        }
         return java.util.Collections.nCopies(size(), u);
     }
 
@@ -1084,6 +1112,7 @@ public final class Effect {
                     : String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
+            case TOOL_SAG -> kind.json;
             case AXIS_WOBBLE -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
                     + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
                     : harmonics[0] + " times") + " per turn)";
@@ -1189,7 +1218,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1207,13 +1236,13 @@ public final class Effect {
                 double[] t = tilt(q, c.payloadKg());
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
+            case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
             case AXIS_WOBBLE -> {
-                // the distal bodies turn by ω about a point of the axis and move across it by d: Δp = ω × (p − o) + d
+                // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)
                 double[] w = new double[3 * k], o = new double[3];
                 wobble(q, w, o);
                 double rx = pointBase[0] - o[0], ry = pointBase[1] - o[1], rz = pointBase[2] - o[2];
-                for (int col = k / 2; col < k; col++) for (int a = 0; a < 3; a++) g3[a * k + col] = w[a * k + col];
-                for (int col = 0; col < k / 2; col++) {
+                for (int col = 0; col < k; col++) {
                     double wx = w[col], wy = w[k + col], wz = w[2 * k + col];
                     g3[col] = wy * rz - wz * ry;
                     g3[k + col] = wz * rx - wx * rz;
@@ -1314,12 +1343,7 @@ public final class Effect {
      */
     public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
         Arrays.fill(g3, 0);
-        if (kind == Kind.AXIS_WOBBLE) {
-            int k = size();
-            wobble(q, g3, new double[3]);
-            for (int a = 0; a < 3; a++) Arrays.fill(g3, a * k + k / 2, a * k + k, 0); // the radial motion turns nothing
-            return;
-        }
+        if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind != Kind.BASE_TILT) return;
         double[] t = tilt(q, c.payloadKg());
         g3[0] = t[2] * t[0];
@@ -1466,6 +1490,7 @@ public final class Effect {
             case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case AXIS_WOBBLE -> { }
+            case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
                 if (squareFoot()) p.put("foot_edges", 4.0);
@@ -1506,7 +1531,7 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, TOOL_SAG -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -1574,6 +1599,7 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
             case AXIS_WOBBLE -> {
                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
                 for (String key : ps.keySet()) if (key.matches("xc\\d+")) hs.add(Integer.parseInt(key.substring(2)));

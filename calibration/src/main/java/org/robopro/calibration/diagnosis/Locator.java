@@ -41,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -274,6 +274,7 @@ final class Locator {
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
         out.addAll(baseMoment(t));
         out.addAll(axisWobbles(t));
+        out.add(toolGravity(t));
         out.addAll(sightProbes(t, steps));
         return out;
     }
@@ -339,6 +340,36 @@ final class Locator {
             out.add(q);
         }
         return out;
+    }
+
+    /**
+     * The measured point's holder bending under its own weight ({@link Effect#toolSag}): the point
+     * moves by a linear map of gravity's direction seen from the flange, nine columns. Positions
+     * only (a point's holder turns no measured frame of its own).
+     */
+    static Probe toolGravity(Diagnoser.Tester t) {
+        Diagnoser.Work w = t.w;
+        Vec3 down = Effect.DOWN;
+        int poses = w.rows.size();
+        double[][][] rf = new double[t.ends][poses][];
+        double[][] x = new double[t.ends][poses];
+        for (int e = 0; e < t.ends; e++)
+            for (int i = 0; i < poses; i++) {
+                Pose f = w.model.flange(t.endRows.get(e).get(i).q());
+                rf[e][i] = new double[27];
+                Effect.toolSagRegressor(f, down, rf[e][i]);
+                x[e][i] = Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, f.rot(0, 2) * down.x() + f.rot(1, 2) * down.y() + f.rot(2, 2) * down.z()))));
+            }
+        // column c moves the point along base axis a by rf[a·9 + c]
+        Probe p = columns(t, 9, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
+                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[9 + col] + t.endDTrans[e][row * 3 + 2] * g[18 + col],
+                27, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 27));
+        p.var = Var.TOOL_GRAVITY;
+        p.variable = "the flange's orientation to gravity";
+        p.shape = "the measured point moves with the direction of gravity seen from the flange (its holder bends under its own weight)";
+        p.x = x;
+        p.xLabel = "angle of the flange's axis from straight down (deg)";
+        return p;
     }
 
     /** Orders of a joint's axis wobble probed (cycles per turn in the stator's frame). */

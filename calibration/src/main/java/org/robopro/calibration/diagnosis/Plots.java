@@ -94,6 +94,7 @@ final class Plots {
             case ZERO_STEP, TARGET_STEP -> "time since start (s)";
             case BASE_TILT -> "moment of the arm's weight about the base's tipping axis (N·m)";
             case AXIS_WOBBLE -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
+            case TOOL_SAG -> "angle of the flange's axis from straight down (deg)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
@@ -119,6 +120,11 @@ final class Plots {
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
             case ANGLE_STEP, AXIS_WOBBLE -> Math.toDegrees(row.q(e.joint()));
+            case TOOL_SAG -> {
+                org.robopro.kinematics.Pose f = e.model().flange(row.q());
+                org.robopro.models.Vec3 d = e.down();
+                yield Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, f.rot(0, 2) * d.x() + f.rot(1, 2) * d.y() + f.rot(2, 2) * d.z()))));
+            }
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
@@ -146,7 +152,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;

@@ -94,13 +94,17 @@ final class Words {
                     + "while the arm reaches out in several directions with and without payload.", Math.toDegrees(e.tiltAzimuth()),
                     1e8 * v[0], Double.isInfinite(e.tiltHold()) ? ", in both directions" : String.format(Locale.ROOT,
                             ", once the moment about that edge exceeds %.0f N·m", e.tiltHold()));
+            case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "
+                    + "flange (%.4f mm as its holder turns from along gravity to across it, at most over the directions), and none of the "
+                    + "known effects explains it: the point's holder (an extension bar, the target's nest, the tool) bends under its "
+                    + "own weight. It is modelled as such so compensation can use it, but check the holder: measure the point with the "
+                    + "flange pointing down, then sideways, at one place, or shorten and stiffen the holder.", 1e3 * sagSpan(v));
             case AXIS_WOBBLE -> String.format(Locale.ROOT, "The axis of joint %d tilts across itself as the joint turns (%s), "
-                    + "%.4f deg (%.1f arc-seconds) RMS over a turn, with a radial motion of %.4f mm RMS at the model's point of the "
-                    + "axis, and none of the known effects explains it: the joint's bearing "
+                    + "%.4f deg (%.1f arc-seconds) RMS over a turn, and none of the known effects explains it: the joint's bearing "
                     + "wobbles (runout or waviness of a race, a worn or unloaded main bearing). It is modelled as such so compensation "
                     + "can use it, but check the bearing: put a dial indicator or an electronic level on the link beyond joint %d and "
                     + "read its tilt across the axis while the joint turns slowly through its range.", e.joint() + 1,
-                    wobbleOrders(e), Math.toDegrees(rmsWobble(e, v)), Math.toDegrees(rmsWobble(e, v)) * 3600, 1e3 * rmsRunout(e, v), e.joint() + 1);
+                    wobbleOrders(e), Math.toDegrees(rmsWobble(e, v)), Math.toDegrees(rmsWobble(e, v)) * 3600, e.joint() + 1);
             case INSTRUMENT -> e.sight() == Effect.Sight.RANGE ? String.format(Locale.ROOT, "The measured positions err along the "
                     + "instrument's line of sight as a function of its distance reading (%.4f mm RMS over %.3f..%.3f m%s), which no error "
                     + "of the robot explains: the instrument's distance meter (a cyclic error or a scale error of its interferometer or "
@@ -227,15 +231,32 @@ final class Words {
     /** An axis wobble's tilt across the axis, RMS over a turn (rad): each order's four coefficients share (x² + y²) / 2. */
     static double rmsWobble(Effect e, double[] v) {
         double s = 0;
-        for (int i = 0; i < v.length / 2; i++) s += v[i] * v[i];
+        for (double x : v) s += x * x;
         return Math.sqrt(s / 2);
     }
 
-    /** An axis wobble's radial motion at the model's point of the axis, RMS over a turn (m). */
-    static double rmsRunout(Effect e, double[] v) {
+    /**
+     * A tool sag's largest deflection over gravity's directions, the isotropic part (a constant shift)
+     * left out: the largest singular value of A − (tr A / 3)·I, A the 3 x 3 map (row-major), m.
+     */
+    static double sagSpan(double[] v) {
+        double tr = (v[0] + v[4] + v[8]) / 3;
+        double[] a = v.clone();
+        a[0] -= tr;
+        a[4] -= tr;
+        a[8] -= tr;
+        double[] x = {1, 0.7, 0.4};
         double s = 0;
-        for (int i = v.length / 2; i < v.length; i++) s += v[i] * v[i];
-        return Math.sqrt(s / 2);
+        for (int it = 0; it < 100; it++) { // power iteration on AᵀA
+            double[] y = new double[3], z = new double[3];
+            for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) y[r] += a[3 * r + c] * x[c];
+            for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) z[c] += a[3 * r + c] * y[r];
+            double n = Math.sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+            if (n == 0) return 0;
+            for (int c = 0; c < 3; c++) x[c] = z[c] / n;
+            s = Math.sqrt(n);
+        }
+        return s;
     }
 
     private static String wobbleOrders(Effect e) {
