@@ -863,6 +863,16 @@ public final class Diagnoser {
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
+        // A link's bending holds its joint's spring (the whole link turning, δ = L·θ): where the bending was needed, the
+        // compliance of that joint is not that family's alone.
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.COMPLIANCE
+                    || selected.stream().noneMatch(x -> x.kind() == Effect.Kind.LINK_SAG && x.joint() == e.joint())) continue;
+            aliasNotes.add(e.label() + " is not claimed: the link beyond joint " + (e.joint() + 1) + " needed a beam's bending as well, "
+                    + "which holds a spring of its joint, so the deflection is not that family's alone");
+            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
+        }
         fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
@@ -1764,6 +1774,9 @@ public final class Diagnoser {
                 Effect tilt = tilts.computeIfAbsent(e.label(), x -> bestBaseTilt(at, selected.indexOf(e), e, gravity, rows, w.conditions));
                 if (tilt != null) rivals.putIfAbsent(tilt.label(), tilt);
                 for (Effect s : selected) rivals.remove(s.label());
+                // a link's bending holds its joint's spring: it stands against that spring only for what it finds beside it
+                if (e.kind() == Effect.Kind.COMPLIANCE)
+                    rivals.values().removeIf(f -> f.kind() == Effect.Kind.LINK_SAG && f.joint() == e.joint() && !significantBeside(at, f, w));
                 if (e.kind() == Effect.Kind.DRIFT)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
                             && (f.along() == Effect.Along.TIME || f.along() == Effect.Along.TEMPERATURE));
@@ -2162,6 +2175,8 @@ public final class Diagnoser {
                 case AXIS_WOBBLE -> { if (k == Effect.Kind.AXIS_WOBBLE && e.joint() == f.probe.joint) return e; }
                 // the holder's sag, or a wrist drive giving way under the tool's weight
                 case TOOL_GRAVITY -> { if (k == Effect.Kind.TOOL_SAG || k == Effect.Kind.COMPLIANCE && e.joint() >= 3) return e; }
+                // the link's bending, or its joint's spring (a beam's special case)
+                case LINK_BEND -> { if ((k == Effect.Kind.LINK_SAG || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint) return e; }
             }
         }
         return null;
@@ -2345,6 +2360,9 @@ public final class Diagnoser {
                     + "instrument moves with it, one of the robot does not."
                     : "run the instrument's two-face (front and back sight) check and its compensation, then measure a few poses "
                     + "again with the instrument moved to another place: an error of the instrument moves with it, one of the robot does not.";
+            case LINK_BEND -> String.format(Locale.ROOT, "put a second target on joint %d's housing (the link's far end) and "
+                    + "measure it with the link horizontal and near vertical, with and without payload: a link that bends moves "
+                    + "there across itself, a joint's spring turns it about joint %d.", f.probe.joint + 2, f.probe.joint + 1);
             case TOOL_GRAVITY -> "measure a few places twice, with the flange pointing down and then sideways (and the "
                     + "holder turned about the flange's axis): a holder that bends moves the point toward gravity; shorten or "
                     + "stiffen the target's holder.";
@@ -2468,6 +2486,7 @@ public final class Diagnoser {
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.BASE_MOMENT && f.probe.tilt != null) out.add(f.probe.tilt);
         out.addAll(wobbles(found, model));
         out.addAll(toolSags(found, model));
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND) out.add(f.probe.bend);
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -2508,6 +2527,7 @@ public final class Diagnoser {
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
                 case AXIS_WOBBLE, TOOL_GRAVITY -> { }
+                case LINK_BEND -> out.add(f.probe.bend);
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2729,8 +2749,18 @@ public final class Diagnoser {
      * noise, not a shape {@code e} leaves: over a joint's short range a few harmonics of its angle
      * follow a scale error's ramp as closely as the ramp itself, and the simpler form stays.
      */
+    /** Whether {@code f}, tested beside the model fitted in {@code at}, is significant at the family-wise α. */
+    static boolean significantBeside(Tester at, Effect f, Work w) {
+        Candidate c = at.test(f, w.conditions);
+        boolean yes = c.keptColumns > 0 && c.p < w.o.alpha();
+        if (!yes) LOG.debug("{} finds nothing significant beside the model (p {})", f.label(), c.p);
+        return yes;
+    }
+
     static boolean richerWithoutCause(Tester at, Effect e, Effect a, Work w) {
-        if (a.size() <= e.size() || a.isFallback()) return false;
+        // a link's bending nests its joint's spring: like a richer form, it takes the spring's place only for what it finds beside it
+        boolean nests = a.kind() == Effect.Kind.LINK_SAG && e.kind() == Effect.Kind.COMPLIANCE && a.joint() == e.joint();
+        if (a.size() <= e.size() || a.isFallback() && !nests) return false;
         Candidate c = at.test(a, w.conditions);
         boolean without = c.keptColumns == 0 || !(c.p < w.o.alpha());
         if (without) LOG.debug("alias: {} not in place of {}: more parameters and nothing significant beside it (p {})", a.label(), e.label(), c.p);
@@ -3696,6 +3726,11 @@ public final class Diagnoser {
                 double r = Words.rmsSmooth(e, v);
                 c.plausible = r < MAX_PERIODIC_RAD * 2;
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
+            }
+            case LINK_SAG -> {
+                c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_WOBBLE_RAD;
+                c.plausibility = String.format(Locale.ROOT, "far end %.3f mm < %.0f mm, turn %.4f deg < %.2f deg", Math.abs(v[0]) * 1e3,
+                        MAX_TOOL_SAG_M * 1e3, Math.toDegrees(Math.abs(v[1])), Math.toDegrees(MAX_WOBBLE_RAD));
             }
             case TOOL_SAG -> {
                 double d = Words.sagSpan(v);

@@ -73,7 +73,8 @@ public final class Effect {
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
         AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family"),
-        TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family");
+        TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family"),
+        LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family");
 
         public final String json;
         public final String title;
@@ -170,7 +171,8 @@ public final class Effect {
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
     private double[] warmTaus;               // thermal-link: each link's warm-up time constant by its drives, s (null: the air's temperature only)
-    private Vec3 down;                       // tool sag: gravity's direction, base frame (unit)
+    private Vec3 down;                       // tool sag, link sag: gravity's direction, base frame (unit)
+    private boolean sagPayload;              // link sag: columns of the payload's weight at the far end
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
@@ -719,6 +721,89 @@ public final class Effect {
                 for (int b = 0; b < 3; b++) g3[axis * 9 + 3 * a + b] = f.rot(axis, a) * gf[b];
     }
 
+    /**
+     * An arm link bending under gravity as a beam, in the plane its joint turns it in: the link
+     * from joint {@code joint}'s axis to the next joint's (the upper arm from joint 2, the forearm
+     * from joint 3) is a cantilever held at its joint. The part of gravity across it, g_n = ĝ·n̂
+     * (n̂ = ẑ × ê across the link in that plane, ê along it, ẑ the joint's axis), loads it with its
+     * own weight and with the weight it carries at its far end, and the bodies beyond pass it a
+     * moment, which is the gravity torque on the next joint's drive. A beam's far end moves across
+     * it by δ and turns by θ about ẑ, each in proportion to each load with its own factor
+     * (Euler-Bernoulli: δ = wL⁴/8EI, θ = wL³/6EI for its weight, PL³/3EI and PL²/2EI for a force
+     * at its end, ML²/2EI and ML/EI for a moment; Gere &amp; Goodno, Mechanics of Materials, table
+     * G-1): everything beyond moves by δ n̂ + θ ẑ × (p − e) (e the far end) and turns by θ ẑ.
+     * Columns in pairs (δ, θ): per unit g_n (its weight and what it carries), per N·m of the next
+     * drive's gravity torque (with the robot file's masses), per kg of payload times g_n (when the
+     * payload varies). A joint's spring (the whole link turning about its axis by c·τ) is the
+     * special case δ = L·θ, so a compliance of that joint is nested in it.
+     */
+    public static Effect linkSag(KinematicModel model, GravityTorques gravity, int joint, boolean payloadColumns) {
+        if (joint < 1 || joint + 1 >= model.dof() || model.isPrismatic(joint))
+            throw new IllegalArgumentException("link sag is of the upper arm or the forearm (revolute joints 2 or 3), not joint " + (joint + 1));
+        Effect e = new Effect(Kind.LINK_SAG, joint, -1, gravity, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.sagPayload = payloadColumns;
+        e.down = DOWN;
+        return e;
+    }
+
+    /** A link sag's share of gravity across its link at q (g_n, between −1 and 1; 0 for a link too short). */
+    public double sagAcross(double[] q) {
+        double[] w = new double[3 * size()];
+        linkSagColumns(q, PoseConditions.NONE, null, null, w);
+        Pose root = model.linkFrames(q)[joint + 1];
+        // the turn column of the first pair is g_n ẑ
+        return w[1] * root.rot(0, 2) + w[size() + 1] * root.rot(1, 2) + w[2 * size() + 1] * root.rot(2, 2);
+    }
+
+    /** Whether a link sag has the columns of the moment the next drive passes (the robot file's masses known). */
+    boolean sagMoment() { return kind == Kind.LINK_SAG && gravity != null && !gravity.massesUnknown(); }
+
+    /** Whether a link sag has the columns of the payload's weight at its far end. */
+    public boolean sagPayload() { return sagPayload; }
+
+    /**
+     * A link sag's columns at q under c: the point's move (3 x size, row-major) for a point at
+     * {@code pointBase}, or the frame's turn; either may be null. Zero where the link is shorter
+     * than {@link #MIN_LINK_M} across its axis.
+     */
+    private void linkSagColumns(double[] q, PoseConditions c, double[] pointBase, double[] g3, double[] w3) {
+        int k = size();
+        if (g3 != null) Arrays.fill(g3, 0);
+        if (w3 != null) Arrays.fill(w3, 0);
+        Pose[] f = model.linkFrames(q);
+        Pose root = f[joint + 1];
+        Vec3 z = new Vec3(root.rot(0, 2), root.rot(1, 2), root.rot(2, 2)), end = f[joint + 2].position();
+        Vec3 l = end.minus(root.position());
+        l = l.minus(z.times(l.dot(z)));
+        double len = l.norm();
+        if (len < MIN_LINK_M) return;
+        Vec3 n = z.cross(l.times(1 / len));
+        double gn = down.dot(n);
+        double payload = Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
+        double[] load = new double[k / 2];
+        int i = 0;
+        load[i++] = gn;
+        if (sagMoment()) load[i++] = gravity.driveTorques(q, payload)[joint + 1];
+        if (sagPayload) load[i] = payload * gn;
+        Vec3 turn = pointBase == null ? null : z.cross(new Vec3(pointBase[0], pointBase[1], pointBase[2]).minus(end));
+        for (int pair = 0; pair < k / 2; pair++) {
+            int cd = 2 * pair, ct = cd + 1;
+            if (g3 != null) {
+                g3[cd] = load[pair] * n.x();
+                g3[k + cd] = load[pair] * n.y();
+                g3[2 * k + cd] = load[pair] * n.z();
+                g3[ct] = load[pair] * turn.x();
+                g3[k + ct] = load[pair] * turn.y();
+                g3[2 * k + ct] = load[pair] * turn.z();
+            }
+            if (w3 != null) {
+                w3[ct] = load[pair] * z.x();
+                w3[k + ct] = load[pair] * z.y();
+                w3[2 * k + ct] = load[pair] * z.z();
+            }
+        }
+    }
+
     /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
     double tiltExcess(double[] q, double payloadKg) { return tilt(q, payloadKg)[2]; }
 
@@ -815,7 +900,7 @@ public final class Effect {
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT
-                || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG;
+                || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -951,7 +1036,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -994,6 +1079,7 @@ public final class Effect {
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case TOOL_SAG -> 9;
+            case LINK_SAG -> 2 + (sagMoment() ? 2 : 0) + (sagPayload ? 2 : 0);
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
@@ -1029,6 +1115,12 @@ public final class Effect {
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); }
             case AXIS_WOBBLE -> {
                 for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
+            }
+            case LINK_SAG -> {
+                out.add("d_weight");
+                out.add("t_weight");
+                if (sagMoment()) { out.add("d_moment"); out.add("t_moment"); }
+                if (sagPayload) { out.add("d_payload"); out.add("t_payload"); }
             }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
             case INSTRUMENT -> {
@@ -1069,6 +1161,7 @@ public final class Effect {
             case INSTRUMENT -> sight.unit;
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
+            case LINK_SAG -> "m";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -1080,6 +1173,12 @@ public final class Effect {
             return out;
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
+        if (kind == Kind.LINK_SAG) {
+            List<String> out = new ArrayList<>(List.of("m", "rad"));
+            if (sagMoment()) out.addAll(List.of("m/(N·m)", "rad/(N·m)"));
+            if (sagPayload) out.addAll(List.of("m/kg", "rad/kg"));
+            return out;
+        }
         return java.util.Collections.nCopies(size(), u);
     }
 
@@ -1113,6 +1212,7 @@ public final class Effect {
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
             case TOOL_SAG -> kind.json;
+            case LINK_SAG -> kind.json + " j" + (joint + 1) + (joint == 1 ? " (upper arm)" : joint == 2 ? " (forearm)" : "");
             case AXIS_WOBBLE -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
                     + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
                     : harmonics[0] + " times") + " per turn)";
@@ -1218,7 +1318,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1237,6 +1337,7 @@ public final class Effect {
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
             case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
+            case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
             case AXIS_WOBBLE -> {
                 // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)
                 double[] w = new double[3 * k], o = new double[3];
@@ -1334,7 +1435,7 @@ public final class Effect {
     }
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
-    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE; }
+    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -1344,6 +1445,7 @@ public final class Effect {
     public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
         Arrays.fill(g3, 0);
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
+        if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
         if (kind != Kind.BASE_TILT) return;
         double[] t = tilt(q, c.payloadKg());
         g3[0] = t[2] * t[0];
@@ -1491,6 +1593,7 @@ public final class Effect {
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case AXIS_WOBBLE -> { }
             case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
+            case LINK_SAG -> { }
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
                 if (squareFoot()) p.put("foot_edges", 4.0);
@@ -1599,6 +1702,13 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case LINK_SAG -> {
+                if (js.get(0) < 2 || js.get(0) > 3)
+                    throw new InputException(file, 0, 0, "effects.joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));
+                if (ps.containsKey("d_moment") && (gravity == null || gravity.massesUnknown()))
+                    throw new InputException(file, 0, 0, "mass_model", "link-sag with d_moment needs the robot's mass_model");
+                yield linkSag(model, ps.containsKey("d_moment") ? gravity : null, js.get(0) - 1, ps.containsKey("d_payload"));
+            }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
             case AXIS_WOBBLE -> {
                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();

@@ -41,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -84,6 +84,7 @@ final class Locator {
         double azimuthRef;                       // SIGHT: the azimuth the readings are taken about
         double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
+        Effect bend;                             // LINK_BEND: the link's sag
         String xLabel;
     }
 
@@ -275,6 +276,7 @@ final class Locator {
         out.addAll(baseMoment(t));
         out.addAll(axisWobbles(t));
         out.add(toolGravity(t));
+        out.addAll(linkBends(t));
         out.addAll(sightProbes(t, steps));
         return out;
     }
@@ -370,6 +372,56 @@ final class Locator {
         p.x = x;
         p.xLabel = "angle of the flange's axis from straight down (deg)";
         return p;
+    }
+
+    /**
+     * The upper arm and the forearm each bending under gravity as a beam ({@link Effect#linkSag}):
+     * its columns, on links that the geometric model places at least {@link Effect#MIN_LINK_M}
+     * across their joint's axis. Positions and orientations, one pose per row.
+     */
+    static List<Probe> linkBends(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        KinematicModel model = t.w.model;
+        if (t.ends != 1 || model.dof() < 4) return out;
+        boolean payload = Diagnoser.payloadVaries(t.w.rows);
+        int poses = t.m / t.rpp;
+        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+        for (int j = 1; j <= 2; j++) {
+            if (model.isPrismatic(j)) continue;
+            Effect e = Effect.linkSag(model, t.w.gravity, j, payload);
+            int k = e.size();
+            double[] sig = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
+            double[][] x = new double[1][poses];
+            for (int i = 0; i < poses; i++) {
+                Measurement row = t.endRows.get(0).get(i);
+                PoseConditions c = t.endConditions.get(0).get(i);
+                e.rotationRegressor(row.q(), c, w3);
+                x[0][i] = e.sagAcross(row.q());
+                for (int a = 0; a < t.posRows; a++) {
+                    int r = i * t.rpp + a;
+                    e.positionRegressor(row.q(), c, t.pointsBase[i][t.pointOfRow(a)], g3);
+                    for (int col = 0; col < k; col++)
+                        sig[r * k + col] = dt[r * 3] * g3[col] + dt[r * 3 + 1] * g3[k + col] + dt[r * 3 + 2] * g3[2 * k + col];
+                }
+                for (int a = t.posRows; a < t.rpp; a++) {
+                    int r = i * t.rpp + a;
+                    for (int col = 0; col < k; col++)
+                        sig[r * k + col] = dr[r * 3] * w3[col] + dr[r * 3 + 1] * w3[k + col] + dr[r * 3 + 2] * w3[2 * k + col];
+                }
+            }
+            if (!varies(x, 0.2)) continue; // the link's angle to gravity hardly changes: its sag is the geometry's
+            Probe p = finish(t, sig, k);
+            p.var = Var.LINK_BEND;
+            p.joint = j;
+            p.bend = e;
+            p.variable = (j == 1 ? "the upper arm's" : "the forearm's") + " angle to gravity";
+            p.shape = (j == 1 ? "the upper arm (joint 2 to joint 3)" : "the forearm (joint 3 to the wrist)")
+                    + " bends under gravity as a beam (its far end moves across it and turns with the weight across it)";
+            p.x = x;
+            p.xLabel = "share of gravity across link " + (j + 1) + " (g)";
+            out.add(p);
+        }
+        return out;
     }
 
     /** Orders of a joint's axis wobble probed (cycles per turn in the stator's frame). */

@@ -95,6 +95,7 @@ final class Plots {
             case BASE_TILT -> "moment of the arm's weight about the base's tipping axis (N·m)";
             case AXIS_WOBBLE -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case TOOL_SAG -> "angle of the flange's axis from straight down (deg)";
+            case LINK_SAG -> "share of gravity across link " + (e.joint() + 1) + " (g)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
@@ -120,6 +121,7 @@ final class Plots {
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
             case ANGLE_STEP, AXIS_WOBBLE -> Math.toDegrees(row.q(e.joint()));
+            case LINK_SAG -> e.sagAcross(row.q());
             case TOOL_SAG -> {
                 org.robopro.kinematics.Pose f = e.model().flange(row.q());
                 org.robopro.models.Vec3 d = e.down();
@@ -152,7 +154,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;
