@@ -863,16 +863,6 @@ public final class Diagnoser {
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
             k = selected.size();
         }
-        // A link's bending holds its joint's spring (the whole link turning, δ = L·θ): where the bending was needed, the
-        // compliance of that joint is not that family's alone.
-        for (int k = selected.size() - 1; k >= 0; k--) {
-            Effect e = selected.get(k);
-            if (e.kind() != Effect.Kind.COMPLIANCE
-                    || selected.stream().noneMatch(x -> x.kind() == Effect.Kind.LINK_SAG && x.joint() == e.joint())) continue;
-            aliasNotes.add(e.label() + " is not claimed: the link beyond joint " + (e.joint() + 1) + " needed a beam's bending as well, "
-                    + "which holds a spring of its joint, so the deflection is not that family's alone");
-            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
-        }
         fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
@@ -1774,7 +1764,7 @@ public final class Diagnoser {
                 Effect tilt = tilts.computeIfAbsent(e.label(), x -> bestBaseTilt(at, selected.indexOf(e), e, gravity, rows, w.conditions));
                 if (tilt != null) rivals.putIfAbsent(tilt.label(), tilt);
                 for (Effect s : selected) rivals.remove(s.label());
-                // a link's bending holds its joint's spring: it stands against that spring only for what it finds beside it
+                // a link's bending holds its joint's spring in part: it stands against that spring only for what it finds beside it
                 if (e.kind() == Effect.Kind.COMPLIANCE)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.LINK_SAG && f.joint() == e.joint() && !significantBeside(at, f, w));
                 if (e.kind() == Effect.Kind.DRIFT)
@@ -2758,7 +2748,7 @@ public final class Diagnoser {
     }
 
     static boolean richerWithoutCause(Tester at, Effect e, Effect a, Work w) {
-        // a link's bending nests its joint's spring: like a richer form, it takes the spring's place only for what it finds beside it
+        // a link's bending holds its joint's spring in part: like a richer form, it takes the spring's place only for what it finds beside it
         boolean nests = a.kind() == Effect.Kind.LINK_SAG && e.kind() == Effect.Kind.COMPLIANCE && a.joint() == e.joint();
         if (a.size() <= e.size() || a.isFallback() && !nests) return false;
         Candidate c = at.test(a, w.conditions);

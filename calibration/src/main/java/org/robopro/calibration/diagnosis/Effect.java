@@ -726,21 +726,23 @@ public final class Effect {
      * from joint {@code joint}'s axis to the next joint's (the upper arm from joint 2, the forearm
      * from joint 3) is a cantilever held at its joint. The part of gravity across it, g_n = ĝ·n̂
      * (n̂ = ẑ × ê across the link in that plane, ê along it, ẑ the joint's axis), loads it with its
-     * own weight and with the weight it carries at its far end, and the bodies beyond pass it a
-     * moment, which is the gravity torque on the next joint's drive. A beam's far end moves across
-     * it by δ and turns by θ about ẑ, each in proportion to each load with its own factor
-     * (Euler-Bernoulli: δ = wL⁴/8EI, θ = wL³/6EI for its weight, PL³/3EI and PL²/2EI for a force
-     * at its end, ML²/2EI and ML/EI for a moment; Gere &amp; Goodno, Mechanics of Materials, table
-     * G-1): everything beyond moves by δ n̂ + θ ẑ × (p − e) (e the far end) and turns by θ ẑ.
-     * Columns in pairs (δ, θ): per unit g_n (its weight and what it carries), per N·m of the next
-     * drive's gravity torque (with the robot file's masses), per kg of payload times g_n (when the
-     * payload varies). A joint's spring (the whole link turning about its axis by c·τ) is the
-     * special case δ = L·θ, so a compliance of that joint is nested in it.
+     * own weight and with the weight it carries at its far end. A beam's far end moves across it by
+     * δ and turns by θ about ẑ in proportion to each load (Euler-Bernoulli: δ = wL⁴/8EI and
+     * θ = wL³/6EI for its own weight, PL³/3EI and PL²/2EI for a force at its far end; Gere &amp;
+     * Goodno, Mechanics of Materials, table G-1): everything beyond moves by δ n̂ + θ ẑ × (p − e)
+     * (e the far end) and turns by θ ẑ. Columns: δ and θ per unit g_n (the two loads' mix unknown,
+     * so their ratio free); with {@code payloadColumns}, θ per kg of payload times g_n with
+     * δ = θ·2L/3 (a force at the far end). A moment passed on at the far end is left out: on a
+     * parallel-link arm the forearm's moment goes down the link rod to its drive, not through the
+     * upper arm, and with it the bending and the next joint's spring together held the spring of
+     * the link's own joint (δ = L·θ for all of its torque). That spring's part from the weight across
+     * the link is in the bending's span, the part from the bodies beyond (the next drive's torque)
+     * is not.
      */
-    public static Effect linkSag(KinematicModel model, GravityTorques gravity, int joint, boolean payloadColumns) {
+    public static Effect linkSag(KinematicModel model, int joint, boolean payloadColumns) {
         if (joint < 1 || joint + 1 >= model.dof() || model.isPrismatic(joint))
             throw new IllegalArgumentException("link sag is of the upper arm or the forearm (revolute joints 2 or 3), not joint " + (joint + 1));
-        Effect e = new Effect(Kind.LINK_SAG, joint, -1, gravity, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        Effect e = new Effect(Kind.LINK_SAG, joint, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
         e.sagPayload = payloadColumns;
         e.down = DOWN;
         return e;
@@ -754,9 +756,6 @@ public final class Effect {
         // the turn column of the first pair is g_n ẑ
         return w[1] * root.rot(0, 2) + w[size() + 1] * root.rot(1, 2) + w[2 * size() + 1] * root.rot(2, 2);
     }
-
-    /** Whether a link sag has the columns of the moment the next drive passes (the robot file's masses known). */
-    boolean sagMoment() { return kind == Kind.LINK_SAG && gravity != null && !gravity.massesUnknown(); }
 
     /** Whether a link sag has the columns of the payload's weight at its far end. */
     public boolean sagPayload() { return sagPayload; }
@@ -780,26 +779,22 @@ public final class Effect {
         Vec3 n = z.cross(l.times(1 / len));
         double gn = down.dot(n);
         double payload = Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
-        double[] load = new double[k / 2];
-        int i = 0;
-        load[i++] = gn;
-        if (sagMoment()) load[i++] = gravity.driveTorques(q, payload)[joint + 1];
-        if (sagPayload) load[i] = payload * gn;
         Vec3 turn = pointBase == null ? null : z.cross(new Vec3(pointBase[0], pointBase[1], pointBase[2]).minus(end));
-        for (int pair = 0; pair < k / 2; pair++) {
-            int cd = 2 * pair, ct = cd + 1;
+        // each column: the far end's move across the link per unit (along n̂) and its turn about ẑ per unit
+        double[] across = new double[k], turns = new double[k];
+        across[0] = gn;
+        turns[1] = gn;
+        if (sagPayload) { across[2] = payload * gn * 2 * len / 3; turns[2] = payload * gn; }
+        for (int i = 0; i < k; i++) {
             if (g3 != null) {
-                g3[cd] = load[pair] * n.x();
-                g3[k + cd] = load[pair] * n.y();
-                g3[2 * k + cd] = load[pair] * n.z();
-                g3[ct] = load[pair] * turn.x();
-                g3[k + ct] = load[pair] * turn.y();
-                g3[2 * k + ct] = load[pair] * turn.z();
+                g3[i] = across[i] * n.x() + (turn == null ? 0 : turns[i] * turn.x());
+                g3[k + i] = across[i] * n.y() + (turn == null ? 0 : turns[i] * turn.y());
+                g3[2 * k + i] = across[i] * n.z() + (turn == null ? 0 : turns[i] * turn.z());
             }
             if (w3 != null) {
-                w3[ct] = load[pair] * z.x();
-                w3[k + ct] = load[pair] * z.y();
-                w3[2 * k + ct] = load[pair] * z.z();
+                w3[i] = turns[i] * z.x();
+                w3[k + i] = turns[i] * z.y();
+                w3[2 * k + i] = turns[i] * z.z();
             }
         }
     }
@@ -1079,7 +1074,7 @@ public final class Effect {
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case TOOL_SAG -> 9;
-            case LINK_SAG -> 2 + (sagMoment() ? 2 : 0) + (sagPayload ? 2 : 0);
+            case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
@@ -1119,8 +1114,7 @@ public final class Effect {
             case LINK_SAG -> {
                 out.add("d_weight");
                 out.add("t_weight");
-                if (sagMoment()) { out.add("d_moment"); out.add("t_moment"); }
-                if (sagPayload) { out.add("d_payload"); out.add("t_payload"); }
+                if (sagPayload) out.add("t_payload");
             }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
             case INSTRUMENT -> {
@@ -1175,8 +1169,7 @@ public final class Effect {
         if (stiffens) return List.of(u, "rad/(N·m)^3");
         if (kind == Kind.LINK_SAG) {
             List<String> out = new ArrayList<>(List.of("m", "rad"));
-            if (sagMoment()) out.addAll(List.of("m/(N·m)", "rad/(N·m)"));
-            if (sagPayload) out.addAll(List.of("m/kg", "rad/kg"));
+            if (sagPayload) out.add("rad/kg");
             return out;
         }
         return java.util.Collections.nCopies(size(), u);
@@ -1705,9 +1698,7 @@ public final class Effect {
             case LINK_SAG -> {
                 if (js.get(0) < 2 || js.get(0) > 3)
                     throw new InputException(file, 0, 0, "effects.joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));
-                if (ps.containsKey("d_moment") && (gravity == null || gravity.massesUnknown()))
-                    throw new InputException(file, 0, 0, "mass_model", "link-sag with d_moment needs the robot's mass_model");
-                yield linkSag(model, ps.containsKey("d_moment") ? gravity : null, js.get(0) - 1, ps.containsKey("d_payload"));
+                yield linkSag(model, js.get(0) - 1, ps.containsKey("t_payload"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
             case AXIS_WOBBLE -> {

@@ -388,7 +388,7 @@ final class Locator {
         double[] dt = t.endDTrans[0], dr = t.endDRot[0];
         for (int j = 1; j <= 2; j++) {
             if (model.isPrismatic(j)) continue;
-            Effect e = Effect.linkSag(model, t.w.gravity, j, payload);
+            Effect e = Effect.linkSag(model, j, payload);
             int k = e.size();
             double[] sig = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
             double[][] x = new double[1][poses];

@@ -99,8 +99,7 @@ final class Words {
                     + "explains it (a joint's spring turns the whole link about its axis, a beam bends along it). It is modelled as such "
                     + "so compensation can use it, but check the link: measure a target at the %s's far end (on joint %d's housing) "
                     + "with the link horizontal and vertical, with and without payload.", e.joint() == 1 ? "upper arm (joint 2 to joint 3)"
-                    : "forearm (joint 3 to the wrist)", 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])), e.sagMoment()
-                    ? ", beside the moment the bodies beyond pass it" : "", e.joint() == 1 ? "upper arm" : "forearm", e.joint() + 2);
+                    : "forearm (joint 3 to the wrist)", 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])), e.sagPayload() ? ", beside the payload's" : "", e.joint() == 1 ? "upper arm" : "forearm", e.joint() + 2);
             case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "
                     + "flange (%.4f mm as its holder turns from along gravity to across it, at most over the directions), and none of the "
                     + "known effects explains it: the point's holder (an extension bar, the target's nest, the tool) bends under its "
