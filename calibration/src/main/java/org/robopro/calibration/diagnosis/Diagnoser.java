@@ -82,6 +82,11 @@ public final class Diagnoser {
     /** Nor a holder that bends more than this under its own weight (it would be seen bending), m. */
     static final double MAX_TOOL_SAG_M = 2e-3;
     /**
+     * Nor a link whose far end turns more than this as it bends (a beam's far end turns by about
+     * 1.5 δ/L: 2 mm on a 0.6 m link), rad.
+     */
+    static final double MAX_LINK_TURN_RAD = 5e-3;
+    /**
      * Largest plausible RMS error of an instrument's distance reading (m) and of its angle readings
      * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
      * angle error a few arc-seconds; far beyond that the instrument is broken, not erring.
@@ -578,8 +583,13 @@ public final class Diagnoser {
             // Many poses beyond the rule are a structure the geometry leaves (to locate), not bad measurements; but a few
             // far beyond it are gross readings among them, and kept they bend the geometric fit the structure is sought in.
             for (CalibrationResult.Outlier ol : grossAmong(geo.outliers(), train.size())) gross.add(ol.poseId());
-            co = co.withOutliers(co.outlierK(), false);
-            geo = Calibrator.calibrate(model, gross.isEmpty() ? train : train.filter(m -> !gross.contains(m.poseId())), validate, co);
+            MeasurementSet kept = gross.isEmpty() ? train : train.filter(m -> !gross.contains(m.poseId()));
+            // without the gross readings the rest may be few enough to be bad readings too, not a structure
+            if (!gross.isEmpty()) {
+                geo = Calibrator.calibrate(model, kept, validate, co);
+                manyOutliers = geo.outliers().size() > Math.max(3, 0.05 * kept.size());
+            }
+            if (manyOutliers) geo = Calibrator.calibrate(model, kept, validate, co.withOutliers(co.outlierK(), false));
         }
         Set<String> outlierIds = new HashSet<>(forced);
         List<String> outliers = new ArrayList<>(forced.isEmpty() ? List.of() : forcedOutliers);
@@ -2390,24 +2400,25 @@ public final class Diagnoser {
     static final int MAX_GROSS = 5;
 
     /**
-     * The gross readings among poses beyond the outlier rule (of {@code poses}): those beyond
-     * {@link #GROSS_SIGMAS} robust sigmas, standing apart from the rest, at least twice as far out as
-     * the farthest of the others (or as the rule), and at most {@link #MAX_GROSS} or 5 % of the poses.
-     * Gross readings scatter far out; a structure's poses form a band (the poses approached from the
-     * other side of a lost motion stood at 17.8-21.8 robust sigmas, all alike), so a cut through the
-     * band takes none.
+     * The gross readings among poses beyond the outlier rule (of {@code poses}): the farthest out,
+     * each beyond {@link #GROSS_SIGMAS} robust sigmas, down to the widest gap where the next pose out
+     * (or the rule) is less than half as far, at most {@link #MAX_GROSS} or 5 % of the poses. Gross
+     * readings scatter far out; a structure's poses form a band (the poses approached from the other
+     * side of a lost motion stood at 17.8-21.8 robust sigmas, all alike), so a cut through the band
+     * takes none. Of several such gaps the deepest cut that keeps the cap is taken (readings at 69
+     * and 68 sigmas above two at 28 and 17: the two far ones, then the rule sees the other two).
      */
     static List<CalibrationResult.Outlier> grossAmong(List<CalibrationResult.Outlier> flagged, int poses) {
-        List<CalibrationResult.Outlier> far = new ArrayList<>();
-        double rest = OUTLIER_K;
-        for (CalibrationResult.Outlier ol : flagged) {
-            double z = ol.residualM() / ol.robustSigmaM();
-            if (z > GROSS_SIGMAS) far.add(ol);
-            else rest = Math.max(rest, z);
+        List<CalibrationResult.Outlier> sorted = new ArrayList<>(flagged);
+        sorted.sort(java.util.Comparator.comparingDouble(ol -> -ol.residualM() / ol.robustSigmaM()));
+        int cap = (int) Math.max(MAX_GROSS, 0.05 * poses), cut = 0;
+        for (int k = 1; k <= Math.min(cap, sorted.size()); k++) {
+            double zk = sorted.get(k - 1).residualM() / sorted.get(k - 1).robustSigmaM();
+            if (!(zk > GROSS_SIGMAS)) break;
+            double next = k < sorted.size() ? sorted.get(k).residualM() / sorted.get(k).robustSigmaM() : OUTLIER_K;
+            if (zk >= 2 * Math.max(next, OUTLIER_K)) cut = k;
         }
-        double nearest = far.stream().mapToDouble(ol -> ol.residualM() / ol.robustSigmaM()).min().orElse(0);
-        if (far.isEmpty() || far.size() > Math.max(MAX_GROSS, 0.05 * poses) || nearest < 2 * rest) return List.of();
-        return far;
+        return sorted.subList(0, cut);
     }
 
     /** At most this many structures are located per scan. */
@@ -3718,9 +3729,9 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
             case LINK_SAG -> {
-                c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_WOBBLE_RAD;
+                c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_LINK_TURN_RAD;
                 c.plausibility = String.format(Locale.ROOT, "far end %.3f mm < %.0f mm, turn %.4f deg < %.2f deg", Math.abs(v[0]) * 1e3,
-                        MAX_TOOL_SAG_M * 1e3, Math.toDegrees(Math.abs(v[1])), Math.toDegrees(MAX_WOBBLE_RAD));
+                        MAX_TOOL_SAG_M * 1e3, Math.toDegrees(Math.abs(v[1])), Math.toDegrees(MAX_LINK_TURN_RAD));
             }
             case TOOL_SAG -> {
                 double d = Words.sagSpan(v);

@@ -722,9 +722,9 @@ public final class Effect {
     }
 
     /**
-     * An arm link bending under gravity as a beam, in the plane its joint turns it in: the link
-     * from joint {@code joint}'s axis to the next joint's (the upper arm from joint 2, the forearm
-     * from joint 3) is a cantilever held at its joint. The part of gravity across it, g_n = ĝ·n̂
+     * An arm link bending under gravity as a beam, in the plane its joint turns it in: the upper
+     * arm from joint 2's axis to joint 3's, or the forearm from joint 3's axis to the wrist's centre
+     * (on joint 5's axis), is a cantilever held at its joint. The part of gravity across it, g_n = ĝ·n̂
      * (n̂ = ẑ × ê across the link in that plane, ê along it, ẑ the joint's axis), loads it with its
      * own weight and with the weight it carries at its far end. A beam's far end moves across it by
      * δ and turns by θ about ẑ in proportion to each load (Euler-Bernoulli: δ = wL⁴/8EI and
@@ -771,7 +771,9 @@ public final class Effect {
         if (w3 != null) Arrays.fill(w3, 0);
         Pose[] f = model.linkFrames(q);
         Pose root = f[joint + 1];
-        Vec3 z = new Vec3(root.rot(0, 2), root.rot(1, 2), root.rot(2, 2)), end = f[joint + 2].position();
+        // the far end: the next joint's axis for the upper arm, the wrist's centre (joint 5's axis, which joints 4 and 6 meet)
+        // for the forearm, whose own axis runs along joint 4's
+        Vec3 z = new Vec3(root.rot(0, 2), root.rot(1, 2), root.rot(2, 2)), end = f[Math.min(joint == 2 ? 5 : joint + 2, f.length - 1)].position();
         Vec3 l = end.minus(root.position());
         l = l.minus(z.times(l.dot(z)));
         double len = l.norm();

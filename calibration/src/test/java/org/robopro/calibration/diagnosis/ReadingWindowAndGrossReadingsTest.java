@@ -141,4 +141,28 @@ class ReadingWindowAndGrossReadingsTest {
         Diagnosis d = Diagnoser.diagnose(irb, c[0], c[1]);
         assertTrue(new HashSet<>(d.outliers()).containsAll(Set.of("p5", "p22", "p41", "p3", "p27")), "outliers " + d.outliers() + "; notes " + d.notes());
     }
+
+    /**
+     * The gross readings are cut at the widest gap the far ones stand above: two readings at 69 and
+     * 68 robust sigmas above two at 28 and 17 are taken (the two below are left to the outlier rule
+     * once the far ones are out); a structure's band at 17.8-21.8 sigmas gives none; five far
+     * readings above a band give the five.
+     */
+    @Test
+    void grossReadings_areCutAtTheGapTheyStandAbove() {
+        assertEquals(List.of("a", "b"), ids(Diagnoser.grossAmong(flagged(68.7, 67.5, 27.9, 17.1), 74)));
+        assertEquals(List.of(), ids(Diagnoser.grossAmong(flagged(21.8, 21.0, 20.5, 19.0, 17.8, 18.2), 120)));
+        assertEquals(List.of("a", "b", "c", "d", "e"), ids(Diagnoser.grossAmong(flagged(160, 90, 70, 60, 55, 21, 20, 19, 18), 150)));
+    }
+
+    private static List<org.robopro.calibration.identification.CalibrationResult.Outlier> flagged(double... sigmas) {
+        List<org.robopro.calibration.identification.CalibrationResult.Outlier> out = new ArrayList<>();
+        for (int i = 0; i < sigmas.length; i++)
+            out.add(new org.robopro.calibration.identification.CalibrationResult.Outlier(String.valueOf((char) ('a' + i)), sigmas[i] * 1e-5, 1e-5, "test"));
+        return out;
+    }
+
+    private static List<String> ids(List<org.robopro.calibration.identification.CalibrationResult.Outlier> l) {
+        return l.stream().map(org.robopro.calibration.identification.CalibrationResult.Outlier::poseId).toList();
+    }
 }
