@@ -644,7 +644,8 @@ public final class Effect {
      * rotating ring tilts on the rolling elements as they pass the high spots; Harris &amp; Kotzalas,
      * "Rolling Bearing Analysis", 5th ed., vol. 2 ch. 6, waviness orders and the tilt they excite).
      * Everything beyond the joint turns by a small rotation ω about a point of the axis, ω across
-     * the axis: ω = Σ_h (x_c cos hq + x_s sin hq) x̂ + (y_c cos hq + y_s sin hq) ŷ with x̂, ŷ the
+     * the axis: ω = Σ_h (x_c cos hθ + x_s sin hθ) x̂ + (y_c cos hθ + y_s sin hθ) ŷ with θ the
+     * joint's own turn (its model angle: a wrist drive coupled to another reads more than it), x̂, ŷ the
      * stator frame's axes across the joint (the tilt error motion of ISO 230-7:2015, §3). The
      * measured point moves by ω × (p − o), o the model's point of the axis (frame j's origin); the
      * measured frame turns by ω. Four parameters per order (rad). A tilt that is constant in the
@@ -675,8 +676,9 @@ public final class Effect {
             xs[a] = ct * xr - st * yr;
             ys[a] = st * xr + ct * yr;
         }
+        // the pattern follows the joint's own turn, its model angle (a drive coupled to another joint reads more than its turn)
         for (int i = 0; i < harmonics.length; i++) {
-            double c = Math.cos(harmonics[i] * q[joint]), s = Math.sin(harmonics[i] * q[joint]);
+            double c = Math.cos(harmonics[i] * th), s = Math.sin(harmonics[i] * th);
             for (int a = 0; a < 3; a++) {
                 w[a * k + 4 * i] = c * xs[a];
                 w[a * k + 4 * i + 1] = s * xs[a];

@@ -110,7 +110,11 @@ final class Words {
                     + "wobbles (runout or waviness of a race, a worn or unloaded main bearing). It is modelled as such so compensation "
                     + "can use it, but check the bearing: put a dial indicator or an electronic level on the link beyond joint %d and "
                     + "read its tilt across the axis while the joint turns slowly through its range.", e.joint() + 1,
-                    wobbleOrders(e), Math.toDegrees(rmsWobble(e, v)), Math.toDegrees(rmsWobble(e, v)) * 3600, e.joint() + 1);
+                    wobbleOrders(e), Math.toDegrees(rmsWobble(e, v)), Math.toDegrees(rmsWobble(e, v)) * 3600, e.joint() + 1)
+                    + (e.joint() >= 3 ? String.format(Locale.ROOT, " On the wrist, whose axes meet, a tilt across joint %d's axis is also "
+                    + "what a neighbouring wrist drive does when its error follows joint %d's angle (a cable or dress pack pulling on the "
+                    + "wrist as it winds, a coupling of the wrist's drives), and these poses cannot tell the two apart.", e.joint() + 1,
+                    e.joint() + 1) : "");
             case INSTRUMENT -> e.sight() == Effect.Sight.RANGE ? String.format(Locale.ROOT, "The measured positions err along the "
                     + "instrument's line of sight as a function of its distance reading (%.4f mm RMS over %.3f..%.3f m%s), which no error "
                     + "of the robot explains: the instrument's distance meter (a cyclic error or a scale error of its interferometer or "

@@ -39,14 +39,14 @@ class AxisWobbleTest {
         Pose stator = model.linkFrames(q0)[j + 1], rotor = model.linkFrames(q)[j + 1];
         Vec3 xs = new Vec3(stator.rot(0, 0), stator.rot(1, 0), stator.rot(2, 0)), ys = new Vec3(stator.rot(0, 1), stator.rot(1, 1), stator.rot(2, 1));
         // the tilt's axis turns at `order` times the joint angle in the stator's frame
-        double psi = order * q[j] + psi0;
+        double psi = order * model.theta(q)[j] + psi0; // the joint's own turn
         Vec3 u = xs.times(Math.cos(psi)).plus(ys.times(Math.sin(psi)));
         Vec3 pivot = rotor.position();
         Pose plain = model.flange(q);
         Pose rigid = Pose.translation(pivot).times(Pose.rotAxis(u, beta)).times(Pose.translation(pivot.times(-1))).times(plain);
 
-        // the same motion in the effect's parameters: ω = β (cos ψ x̂ + sin ψ ŷ), ψ = hq + ψ0;
-        // cos(hq + ψ0) = cos hq cos ψ0 − sin hq sin ψ0, sin(hq + ψ0) = sin hq cos ψ0 + cos hq sin ψ0
+        // the same motion in the effect's parameters: ω = β (cos ψ x̂ + sin ψ ŷ), ψ = hθ + ψ0;
+        // cos(hθ + ψ0) = cos hθ cos ψ0 − sin hθ sin ψ0, sin(hθ + ψ0) = sin hθ cos ψ0 + cos hθ sin ψ0
         Effect e = Effect.axisWobble(model, j, new int[] {order});
         double c = Math.cos(psi0), s = Math.sin(psi0);
         double[] v = {beta * c, -beta * s, beta * s, beta * c};
