@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import org.robopro.calibration.measurement.Measurement;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
@@ -385,32 +384,13 @@ final class Locator {
         if (t.ends != 1 || model.dof() < 4) return out;
         boolean payload = Diagnoser.payloadVaries(t.w.rows);
         int poses = t.m / t.rpp;
-        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
         for (int j = 1; j <= 2; j++) {
             if (model.isPrismatic(j)) continue;
             Effect e = Effect.linkSag(model, j, payload);
-            int k = e.size();
-            double[] sig = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
             double[][] x = new double[1][poses];
-            for (int i = 0; i < poses; i++) {
-                Measurement row = t.endRows.get(0).get(i);
-                PoseConditions c = t.endConditions.get(0).get(i);
-                e.rotationRegressor(row.q(), c, w3);
-                x[0][i] = e.sagAcross(row.q());
-                for (int a = 0; a < t.posRows; a++) {
-                    int r = i * t.rpp + a;
-                    e.positionRegressor(row.q(), c, t.pointsBase[i][t.pointOfRow(a)], g3);
-                    for (int col = 0; col < k; col++)
-                        sig[r * k + col] = dt[r * 3] * g3[col] + dt[r * 3 + 1] * g3[k + col] + dt[r * 3 + 2] * g3[2 * k + col];
-                }
-                for (int a = t.posRows; a < t.rpp; a++) {
-                    int r = i * t.rpp + a;
-                    for (int col = 0; col < k; col++)
-                        sig[r * k + col] = dr[r * 3] * w3[col] + dr[r * 3 + 1] * w3[k + col] + dr[r * 3 + 2] * w3[2 * k + col];
-                }
-            }
+            for (int i = 0; i < poses; i++) x[0][i] = e.sagAcross(t.endRows.get(0).get(i).q());
             if (!varies(x, 0.2)) continue; // the link's angle to gravity hardly changes: its sag is the geometry's
-            Probe p = finish(t, sig, k);
+            Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
             p.var = Var.LINK_BEND;
             p.joint = j;
             p.bend = e;
@@ -429,7 +409,7 @@ final class Locator {
 
     /**
      * A joint's bearing wobbling ({@link Effect#axisWobble}): for each revolute joint that turns over
-     * a range and each order h, the four columns of the axis's tilt across itself, cos and sin of h·q
+     * a range and each order h, the four columns of the axis's tilt across itself, cos and sin of h·θ
      * about the stator's two axes across the joint. Positions and orientations, one pose per row.
      */
     static List<Probe> axisWobbles(Diagnoser.Tester t) {
@@ -437,7 +417,6 @@ final class Locator {
         if (t.ends != 1) return out;
         KinematicModel model = t.w.model;
         int poses = t.m / t.rpp;
-        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
         for (int j = 0; j < t.dof; j++) {
             double[][] qx = new double[1][poses];
             for (int i = 0; i < poses; i++) qx[0][i] = Math.toDegrees(t.endRows.get(0).get(i).q(j));
@@ -445,25 +424,7 @@ final class Locator {
             if (model.isPrismatic(j) || !varies(qx, 30)) continue;
             for (int h = 1; h <= WOBBLE_ORDERS; h++) {
                 Effect e = Effect.axisWobble(model, j, new int[] {h});
-                int k = e.size();
-                double[] sig = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
-                for (int i = 0; i < poses; i++) {
-                    Measurement row = t.endRows.get(0).get(i);
-                    PoseConditions c = t.endConditions.get(0).get(i);
-                    e.rotationRegressor(row.q(), c, w3);
-                    for (int a = 0; a < t.posRows; a++) {
-                        int r = i * t.rpp + a;
-                        e.positionRegressor(row.q(), c, t.pointsBase[i][t.pointOfRow(a)], g3);
-                        for (int col = 0; col < k; col++)
-                            sig[r * k + col] = dt[r * 3] * g3[col] + dt[r * 3 + 1] * g3[k + col] + dt[r * 3 + 2] * g3[2 * k + col];
-                    }
-                    for (int a = t.posRows; a < t.rpp; a++) {
-                        int r = i * t.rpp + a;
-                        for (int col = 0; col < k; col++)
-                            sig[r * k + col] = dr[r * 3] * w3[col] + dr[r * 3 + 1] * w3[k + col] + dr[r * 3 + 2] * w3[2 * k + col];
-                    }
-                }
-                Probe p = finish(t, sig, k);
+                Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
                 p.var = Var.AXIS_WOBBLE;
                 p.joint = j;
                 p.harmonic = h;

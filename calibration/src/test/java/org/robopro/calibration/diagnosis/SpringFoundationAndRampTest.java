@@ -138,10 +138,15 @@ class SpringFoundationAndRampTest {
                 .times(org.robopro.kinematics.Pose.translation(p0.times(-1))).times(plain);
         assertTrue(Math.abs(phi) > 1e-5, "a visible tilt: " + phi);
         assertEquals(0, tilted.position().minus(rigid.position()).norm(), 1e-3 * Math.abs(phi) * 2.0, "position");
-        double[] r1 = tilted.rotationRowMajor(), r2 = rigid.rotationRowMajor(), r0 = plain.rotationRowMajor();
+        assertTurnedAs(tilted, rigid, plain, 1e-3);
+    }
+
+    /** {@code actual}'s orientation is {@code rigid}'s to {@code rel} of the turn from {@code plain} to {@code rigid}. */
+    static void assertTurnedAs(org.robopro.kinematics.Pose actual, org.robopro.kinematics.Pose rigid, org.robopro.kinematics.Pose plain, double rel) {
+        double[] r1 = actual.rotationRowMajor(), r2 = rigid.rotationRowMajor(), r0 = plain.rotationRowMajor();
         double dev = 0, turn = 0;
         for (int i = 0; i < 9; i++) { dev = Math.max(dev, Math.abs(r1[i] - r2[i])); turn = Math.max(turn, Math.abs(r0[i] - r2[i])); }
-        assertTrue(dev < 1e-3 * turn, "orientation off the rigid turn by " + dev + " (the turn itself " + turn + ")");
+        assertTrue(dev < rel * turn, "orientation off the rigid turn by " + dev + " (the turn itself " + turn + ")");
     }
 
     /** The new forms read back from the robot file as written: the stiffening spring, the square foot, the tilt toward the lean, re-estimated masses. */
