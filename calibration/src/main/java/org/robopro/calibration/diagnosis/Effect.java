@@ -642,17 +642,18 @@ public final class Effect {
      * the joint turns, by a pattern that repeats {@code orders} times per turn in the fixed (stator)
      * part's frame (a race's waviness or runout, a worn or unloaded cross-roller bearing: the
      * rotating ring tilts on the rolling elements as they pass the high spots; Harris &amp; Kotzalas,
-     * "Rolling Bearing Analysis", 5th ed., vol. 2 ch. 6, waviness orders and the tilt they excite).
-     * Everything beyond the joint turns by a small rotation ω about a point of the axis, ω across
-     * the axis: ω = Σ_h (x_c cos hθ + x_s sin hθ) x̂ + (y_c cos hθ + y_s sin hθ) ŷ with θ the
-     * joint's own turn (its model angle: a wrist drive coupled to another reads more than it), x̂, ŷ the
-     * stator frame's axes across the joint (the tilt error motion of ISO 230-7:2015, §3). The
-     * measured point moves by ω × (p − o), o the model's point of the axis (frame j's origin); the
-     * measured frame turns by ω. Four parameters per order (rad). A tilt that is constant in the
-     * stator's or the rotor's frame is the geometry's (order 0, and order 1, which turns with the
-     * link). The bearing's radial error motion (a shift across the axis, which a tilt about another
-     * point of the axis also brings) is left out: across a wrist joint it is the next drive's error
-     * of that joint's angle, and with it the wobble of joint 4 took a coupling of joint 5 from joint 4.
+     * Rolling Bearing Analysis, on raceway waviness). Everything beyond the joint turns by a small
+     * rotation ω about a point of the axis, ω across the axis:
+     * ω = Σ_h (x_c cos hθ + x_s sin hθ) x̂ + (y_c cos hθ + y_s sin hθ) ŷ, θ the joint's own turn
+     * (its model angle: a drive coupled to another reads more than it), x̂, ŷ the stator frame's
+     * axes across the joint (the tilt error motion of ISO 230-7:2015). The measured point moves by
+     * ω × (p − o), o the model's point of the axis (frame j's origin); the measured frame turns by
+     * ω. Four parameters per order (rad). A tilt that is constant in the stator's or the rotor's
+     * frame is the geometry's (order 0, and the half of order 1 that turns with the link; the other
+     * half, turning against it, is a wobble). The bearing's radial error motion (a shift across the
+     * axis, which a tilt about another point of the axis also brings) is left out: across a wrist
+     * joint it is the next drive's error of that joint's angle, so it would stand in for the wrist's
+     * couplings and two-joint errors.
      */
     public static Effect axisWobble(KinematicModel model, int joint, int[] orders) {
         if (model.isPrismatic(joint)) throw new IllegalArgumentException("joint " + (joint + 1) + " is prismatic: no bearing axis to wobble");
