@@ -1774,9 +1774,8 @@ public final class Diagnoser {
                 Effect tilt = tilts.computeIfAbsent(e.label(), x -> bestBaseTilt(at, selected.indexOf(e), e, gravity, rows, w.conditions));
                 if (tilt != null) rivals.putIfAbsent(tilt.label(), tilt);
                 for (Effect s : selected) rivals.remove(s.label());
-                // a link's bending holds its joint's spring in part: it stands against that spring only for what it finds beside it
-                if (e.kind() == Effect.Kind.COMPLIANCE)
-                    rivals.values().removeIf(f -> f.kind() == Effect.Kind.LINK_SAG && f.joint() == e.joint() && !significantBeside(at, f, w));
+                // a fallback that holds part of the family's shape stands against it only for what it finds beside it
+                rivals.values().removeIf(f -> f.holdsPartOf(e) && !significantBeside(at, f, w));
                 if (e.kind() == Effect.Kind.DRIFT)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
                             && (f.along() == Effect.Along.TIME || f.along() == Effect.Along.TEMPERATURE));
@@ -2485,9 +2484,7 @@ public final class Diagnoser {
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.SIGHT) out.add(sightEffect(f.probe));
         // the base giving way under the arm's moment: the tilt searched where it was located
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.BASE_MOMENT && f.probe.tilt != null) out.add(f.probe.tilt);
-        out.addAll(wobbles(found, model));
-        out.addAll(toolSags(found, model));
-        for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND) out.add(f.probe.bend);
+        out.addAll(bodyShapes(found, model));
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
@@ -2527,8 +2524,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
-                case AXIS_WOBBLE, TOOL_GRAVITY -> { }
-                case LINK_BEND -> out.add(f.probe.bend);
+                case AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2536,25 +2532,23 @@ public final class Diagnoser {
                 }
                 default -> { }
             }
-        out.addAll(wobbles(found, model));
-        out.addAll(toolSags(found, model));
+        out.addAll(bodyShapes(found, model));
         return out;
     }
 
-    /** A tool sag where the point's move with gravity seen from the flange was located. */
-    static List<Effect> toolSags(List<Locator.Found> found, KinematicModel model) {
-        if (found.stream().noneMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) return List.of();
-        return List.of(Effect.toolSag(model, Effect.DOWN));
-    }
-
-    /** Each joint's axis wobble at every order located for it (one effect per joint). */
-    static List<Effect> wobbles(List<Locator.Found> found, KinematicModel model) {
+    /**
+     * The fallbacks of the arm's bodies giving way where they were located: each joint's axis wobble at
+     * every order located for it (one effect per joint), the tool's sag, each link's bending.
+     */
+    static List<Effect> bodyShapes(List<Locator.Found> found, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         for (int j = 0; j < model.dof(); j++) {
             java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
             for (Locator.Found f : found) if (f.probe.var == Locator.Var.AXIS_WOBBLE && f.probe.joint == j) hs.add(f.probe.harmonic);
             if (!hs.isEmpty()) out.add(Effect.axisWobble(model, j, hs.stream().mapToInt(Integer::intValue).toArray()));
         }
+        if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) out.add(Effect.toolSag(model, Effect.DOWN));
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND) out.add(f.probe.bend);
         return out;
     }
 
@@ -2759,9 +2753,8 @@ public final class Diagnoser {
     }
 
     static boolean richerWithoutCause(Tester at, Effect e, Effect a, Work w) {
-        // a link's bending holds its joint's spring in part: like a richer form, it takes the spring's place only for what it finds beside it
-        boolean nests = a.kind() == Effect.Kind.LINK_SAG && e.kind() == Effect.Kind.COMPLIANCE && a.joint() == e.joint();
-        if (a.size() <= e.size() || a.isFallback() && !nests) return false;
+        // like a richer form, a fallback that holds part of the named form's shape takes its place only for what it finds beside it
+        if (a.size() <= e.size() || a.isFallback() && !a.holdsPartOf(e)) return false;
         Candidate c = at.test(a, w.conditions);
         boolean without = c.keptColumns == 0 || !(c.p < w.o.alpha());
         if (without) LOG.debug("alias: {} not in place of {}: more parameters and nothing significant beside it (p {})", a.label(), e.label(), c.p);
@@ -3739,7 +3732,7 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "deflection %.3f mm < %.0f mm", d * 1e3, MAX_TOOL_SAG_M * 1e3);
             }
             case AXIS_WOBBLE -> {
-                double r = Words.rmsWobble(e, v);
+                double r = Words.rmsWobble(v);
                 c.plausible = r < MAX_WOBBLE_RAD;
                 c.plausibility = String.format(Locale.ROOT, "RMS tilt %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(MAX_WOBBLE_RAD));
             }

@@ -714,6 +714,11 @@ public final class Effect {
     /** Gravity's direction (base frame, unit) of a tool sag; null for other kinds. */
     public Vec3 down() { return down; }
 
+    /** The angle of flange pose {@code f}'s z axis from gravity's direction {@code down} (deg): 0 pointing straight down. */
+    static double angleFromDown(Pose f, Vec3 down) {
+        return Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, f.rot(0, 2) * down.x() + f.rot(1, 2) * down.y() + f.rot(2, 2) * down.z()))));
+    }
+
     /** A tool sag's regressor (3 x 9, row-major) at flange pose f: column 3a + b moves the point by R[:, a]·(Rᵀĝ)_b. */
     static void toolSagRegressor(Pose f, Vec3 down, double[] g3) {
         double[] gf = {f.rot(0, 0) * down.x() + f.rot(1, 0) * down.y() + f.rot(2, 0) * down.z(),
@@ -753,11 +758,32 @@ public final class Effect {
 
     /** A link sag's share of gravity across its link at q (g_n, between −1 and 1; 0 for a link too short). */
     public double sagAcross(double[] q) {
-        double[] w = new double[3 * size()];
-        linkSagColumns(q, PoseConditions.NONE, null, null, w);
-        Pose root = model.linkFrames(q)[joint + 1];
-        // the turn column of the first pair is g_n ẑ
-        return w[1] * root.rot(0, 2) + w[size() + 1] * root.rot(1, 2) + w[2 * size() + 1] * root.rot(2, 2);
+        Bend b = bend(q);
+        return b == null ? 0 : down.dot(b.across);
+    }
+
+    /** A bending link at q: its joint's axis ẑ, its far end, the unit vector across it n̂ = ẑ × ê, its length across ẑ. */
+    private record Bend(Vec3 axis, Vec3 end, Vec3 across, double length) { }
+
+    /** The link sag's link at q; null where it is shorter than {@link #MIN_LINK_M} across its joint's axis. */
+    private Bend bend(double[] q) {
+        Pose[] f = model.linkFrames(q);
+        Pose root = f[joint + 1];
+        // the far end: the next joint's axis for the upper arm, the wrist's centre (joint 5's axis, which joints 4 and 6 meet)
+        // for the forearm, whose own axis runs along joint 4's
+        Vec3 z = new Vec3(root.rot(0, 2), root.rot(1, 2), root.rot(2, 2)), end = f[Math.min(joint == 2 ? 5 : joint + 2, f.length - 1)].position();
+        Vec3 l = end.minus(root.position());
+        l = l.minus(z.times(l.dot(z)));
+        double len = l.norm();
+        return len < MIN_LINK_M ? null : new Bend(z, end, z.cross(l.times(1 / len)), len);
+    }
+
+    /**
+     * Whether this fallback holds part of named effect {@code e}'s shape in its span: a link's
+     * bending holds the part of its joint's spring that the weight across the link drives (δ = L·θ).
+     */
+    public boolean holdsPartOf(Effect e) {
+        return kind == Kind.LINK_SAG && e.kind == Kind.COMPLIANCE && e.joint == joint;
     }
 
     /** Whether a link sag has the columns of the payload's weight at its far end. */
@@ -772,17 +798,10 @@ public final class Effect {
         int k = size();
         if (g3 != null) Arrays.fill(g3, 0);
         if (w3 != null) Arrays.fill(w3, 0);
-        Pose[] f = model.linkFrames(q);
-        Pose root = f[joint + 1];
-        // the far end: the next joint's axis for the upper arm, the wrist's centre (joint 5's axis, which joints 4 and 6 meet)
-        // for the forearm, whose own axis runs along joint 4's
-        Vec3 z = new Vec3(root.rot(0, 2), root.rot(1, 2), root.rot(2, 2)), end = f[Math.min(joint == 2 ? 5 : joint + 2, f.length - 1)].position();
-        Vec3 l = end.minus(root.position());
-        l = l.minus(z.times(l.dot(z)));
-        double len = l.norm();
-        if (len < MIN_LINK_M) return;
-        Vec3 n = z.cross(l.times(1 / len));
-        double gn = down.dot(n);
+        Bend b = bend(q);
+        if (b == null) return;
+        Vec3 z = b.axis, end = b.end, n = b.across;
+        double len = b.length, gn = down.dot(n);
         double payload = Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
         Vec3 turn = pointBase == null ? null : z.cross(new Vec3(pointBase[0], pointBase[1], pointBase[2]).minus(end));
         // each column: the far end's move across the link per unit (along n̂) and its turn about ẑ per unit
@@ -1173,7 +1192,7 @@ public final class Effect {
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
         if (kind == Kind.LINK_SAG) {
-            List<String> out = new ArrayList<>(List.of("m", "rad"));
+            List<String> out = new ArrayList<>(List.of(u, "rad")); // the far end's deflection, then its turns
             if (sagPayload) out.add("rad/kg");
             return out;
         }

@@ -359,7 +359,7 @@ final class Locator {
                 Pose f = w.model.flange(t.endRows.get(e).get(i).q());
                 rf[e][i] = new double[27];
                 Effect.toolSagRegressor(f, down, rf[e][i]);
-                x[e][i] = Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, f.rot(0, 2) * down.x() + f.rot(1, 2) * down.y() + f.rot(2, 2) * down.z()))));
+                x[e][i] = Effect.angleFromDown(f, down);
             }
         // column c moves the point along base axis a by rf[a·9 + c]
         Probe p = columns(t, 9, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0

@@ -122,11 +122,7 @@ final class Plots {
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
             case ANGLE_STEP, AXIS_WOBBLE -> Math.toDegrees(row.q(e.joint()));
             case LINK_SAG -> e.sagAcross(row.q());
-            case TOOL_SAG -> {
-                org.robopro.kinematics.Pose f = e.model().flange(row.q());
-                org.robopro.models.Vec3 d = e.down();
-                yield Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, f.rot(0, 2) * d.x() + f.rot(1, 2) * d.y() + f.rot(2, 2) * d.z()))));
-            }
+            case TOOL_SAG -> Effect.angleFromDown(e.model().flange(row.q()), e.down());
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))

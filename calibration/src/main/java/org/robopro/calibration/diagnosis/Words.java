@@ -3,6 +3,8 @@ package org.robopro.calibration.diagnosis;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.ejml.data.DMatrixRMaj;
+import org.ejml.dense.row.NormOps_DDRM;
 
 /** Findings in plain words for the report. */
 final class Words {
@@ -110,7 +112,7 @@ final class Words {
                     + "wobbles (runout or waviness of a race, a worn or unloaded main bearing). It is modelled as such so compensation "
                     + "can use it, but check the bearing: put a dial indicator or an electronic level on the link beyond joint %d and "
                     + "read its tilt across the axis while the joint turns slowly through its range.", e.joint() + 1,
-                    wobbleOrders(e), Math.toDegrees(rmsWobble(e, v)), Math.toDegrees(rmsWobble(e, v)) * 3600, e.joint() + 1)
+                    wobbleOrders(e), Math.toDegrees(rmsWobble(v)), Math.toDegrees(rmsWobble(v)) * 3600, e.joint() + 1)
                     + (e.joint() >= 3 ? String.format(Locale.ROOT, " On the wrist, whose axes meet, a tilt across joint %d's axis is also "
                     + "what a neighbouring wrist drive does when its error follows joint %d's angle (a cable or dress pack pulling on the "
                     + "wrist as it winds, a coupling of the wrist's drives), and these poses cannot tell the two apart.", e.joint() + 1,
@@ -232,51 +234,7 @@ final class Words {
         return "[" + String.join(", ", out) + "]";
     }
 
-    /**
-     * RMS of a smooth error's curve over its range about its mean, rad: the angle-dependent part.
-     * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
-     * the spline's constant is only nearly the zero's and can come out large and uncertain).
-     */
     /** RMS of an instrument-reading error over the readings' range: its spline's, or a cycle's amplitude over √2. */
-    /** An axis wobble's tilt across the axis, RMS over a turn (rad): each order's four coefficients share (x² + y²) / 2. */
-    static double rmsWobble(Effect e, double[] v) {
-        double s = 0;
-        for (double x : v) s += x * x;
-        return Math.sqrt(s / 2);
-    }
-
-    /**
-     * A tool sag's largest deflection over gravity's directions, the isotropic part (a constant shift)
-     * left out: the largest singular value of A − (tr A / 3)·I, A the 3 x 3 map (row-major), m.
-     */
-    static double sagSpan(double[] v) {
-        double tr = (v[0] + v[4] + v[8]) / 3;
-        double[] a = v.clone();
-        a[0] -= tr;
-        a[4] -= tr;
-        a[8] -= tr;
-        double[] x = {1, 0.7, 0.4};
-        double s = 0;
-        for (int it = 0; it < 100; it++) { // power iteration on AᵀA
-            double[] y = new double[3], z = new double[3];
-            for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) y[r] += a[3 * r + c] * x[c];
-            for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) z[c] += a[3 * r + c] * y[r];
-            double n = Math.sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
-            if (n == 0) return 0;
-            for (int c = 0; c < 3; c++) x[c] = z[c] / n;
-            s = Math.sqrt(n);
-        }
-        return s;
-    }
-
-    private static String wobbleOrders(Effect e) {
-        int[] h = e.harmonics();
-        if (h.length == 1) return h[0] == 1 ? "once per turn" : h[0] + " times per turn";
-        StringBuilder b = new StringBuilder();
-        for (int i = 0; i < h.length; i++) b.append(i == 0 ? "" : i == h.length - 1 ? " and " : ", ").append(h[i]);
-        return b + " times per turn";
-    }
-
     static double rmsInstrument(Effect e, double[] v) {
         return Double.isFinite(e.cycle()) ? Math.sqrt((v[0] * v[0] + v[1] * v[1]) / 2) : rmsCurve(e, v);
     }
@@ -295,6 +253,11 @@ final class Words {
         return Math.sqrt(s / n);
     }
 
+    /**
+     * RMS of a smooth error's curve over its range about its mean, rad: the angle-dependent part.
+     * A constant is the joint's zero, which the geometry holds (with lengths between pairs of poses
+     * the spline's constant is only nearly the zero's and can come out large and uncertain).
+     */
     static double rmsSmooth(Effect e, double[] v) {
         int n = 200;
         double[] g = new double[e.basisCount()], y = new double[n];
@@ -307,6 +270,32 @@ final class Words {
         double s = 0;
         for (double yi : y) s += (yi - mean) * (yi - mean);
         return Math.sqrt(s / n);
+    }
+
+    /** An axis wobble's tilt across the axis, RMS over a turn (rad): each order's four coefficients share (x² + y²) / 2. */
+    static double rmsWobble(double[] v) {
+        double s = 0;
+        for (double x : v) s += x * x;
+        return Math.sqrt(s / 2);
+    }
+
+    /**
+     * A tool sag's largest deflection over gravity's directions, the isotropic part (a constant shift)
+     * left out: the largest singular value of A − (tr A / 3)·I, A the 3 x 3 map (row-major), m.
+     */
+    static double sagSpan(double[] v) {
+        double tr = (v[0] + v[4] + v[8]) / 3;
+        DMatrixRMaj a = new DMatrixRMaj(3, 3, true, v);
+        for (int i = 0; i < 3; i++) a.add(i, i, -tr);
+        return NormOps_DDRM.normP2(a);
+    }
+
+    private static String wobbleOrders(Effect e) {
+        int[] h = e.harmonics();
+        if (h.length == 1) return h[0] == 1 ? "once per turn" : h[0] + " times per turn";
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < h.length; i++) b.append(i == 0 ? "" : i == h.length - 1 ? " and " : ", ").append(h[i]);
+        return b + " times per turn";
     }
 
     static String p(double p) { return p < 1e-300 ? "< 1e-300" : String.format(Locale.ROOT, "= %.2g", p); }

@@ -62,11 +62,9 @@ class LinkSagTest {
             double w = own * G / len * share, p = carried * G * share;
             double delta = w * Math.pow(len, 4) / (8 * ei) + p * Math.pow(len, 3) / (3 * ei);
             double theta = w * Math.pow(len, 3) / (6 * ei) + p * len * len / (2 * ei);
-            Vec3 moved = m.position().plus(across.times(delta)).plus(z.cross(m.position().minus(end)).times(theta));
-            rows.add(new Measurement(m.poseId(), m.q(), moved, m.orientation(), m.directions(), m.timeS(), m.tempC(), m.payloadKg(),
-                    m.set(), m.line(), List.of(moved), m.distance(), m.fromQ(), m.fromDirections()));
+            rows.add(m.withPosition(m.position().plus(across.times(delta)).plus(z.cross(m.position().minus(end)).times(theta))));
         }
-        return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, set.pointNames(), set.anchor());
+        return set.withRows(rows);
     }
 
     /** The sag reads back from the robot file as written, with and without the moment's and the payload's columns. */

@@ -55,10 +55,8 @@ class ToolSagTest {
             Vec3 down = new Vec3(0, 0, -1);
             // the part of gravity across the bar: along the flange's x and y
             Vec3 across = x.times(down.dot(x)).plus(y.times(down.dot(y)));
-            Vec3 moved = m.position().plus(across.times(k));
-            rows.add(new Measurement(m.poseId(), m.q(), moved, m.orientation(), m.directions(), m.timeS(),
-                    m.tempC(), m.payloadKg(), m.set(), m.line(), List.of(moved), m.distance(), m.fromQ(), m.fromDirections()));
+            rows.add(m.withPosition(m.position().plus(across.times(k))));
         }
-        return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, set.pointNames(), set.anchor());
+        return set.withRows(rows);
     }
 }
