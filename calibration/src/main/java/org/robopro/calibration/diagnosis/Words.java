@@ -4,7 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.ejml.data.DMatrixRMaj;
-import org.ejml.dense.row.NormOps_DDRM;
+import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
+import org.ejml.interfaces.decomposition.EigenDecomposition_F64;
 
 /** Findings in plain words for the report. */
 final class Words {
@@ -103,7 +104,8 @@ final class Words {
                     + "with the link horizontal and vertical, with and without payload.", e.joint() == 1 ? "upper arm (joint 2 to joint 3)"
                     : "forearm (joint 3 to the wrist)", 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])), e.sagPayload() ? ", beside the payload's" : "", e.joint() == 1 ? "upper arm" : "forearm", e.joint() + 2);
             case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "
-                    + "flange (%.4f mm as its holder turns from along gravity to across it, at most over the directions), and none of the "
+                    + "flange (it drops %.4f mm more with its holder turned to its softest direction than to its stiffest: a bar held "
+                    + "across gravity against along it), and none of the "
                     + "known effects explains it: the point's holder (an extension bar, the target's nest, the tool) bends under its "
                     + "own weight. It is modelled as such so compensation can use it, but check the holder: measure the point with the "
                     + "flange pointing down, then sideways, at one place, or shorten and stiffen the holder.", 1e3 * sagSpan(v));
@@ -280,14 +282,20 @@ final class Words {
     }
 
     /**
-     * A tool sag's largest deflection over gravity's directions, the isotropic part (a constant shift)
-     * left out: the largest singular value of A − (tr A / 3)·I, A the 3 x 3 map (row-major), m.
+     * How much more a tool sag's point drops toward gravity with its holder turned to its softest
+     * direction than to its stiffest, m: gravity seen from the flange ĝ_f moves the point toward
+     * gravity by ĝ_fᵀ·A·ĝ_f, which over ĝ_f spans the eigenvalues of A's symmetric part (a holder's
+     * compliance is symmetric, Maxwell-Betti); their spread (a bar: its sag held across gravity,
+     * against none along it). An isotropic part is a constant shift the geometry holds.
      */
     static double sagSpan(double[] v) {
-        double tr = (v[0] + v[4] + v[8]) / 3;
-        DMatrixRMaj a = new DMatrixRMaj(3, 3, true, v);
-        for (int i = 0; i < 3; i++) a.add(i, i, -tr);
-        return NormOps_DDRM.normP2(a);
+        DMatrixRMaj a = new DMatrixRMaj(3, 3);
+        for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) a.set(r, c, (v[3 * r + c] + v[3 * c + r]) / 2);
+        EigenDecomposition_F64<DMatrixRMaj> eig = DecompositionFactory_DDRM.eig(3, false, true);
+        if (!eig.decompose(a)) return Double.NaN;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < 3; i++) { double l = eig.getEigenvalue(i).real; lo = Math.min(lo, l); hi = Math.max(hi, l); }
+        return hi - lo;
     }
 
     private static String wobbleOrders(Effect e) {
