@@ -82,6 +82,12 @@ public final class Diagnoser {
     /** Nor a holder that bends more than this under its own weight (it would be seen bending), m. */
     static final double MAX_TOOL_SAG_M = 2e-3;
     /**
+     * Largest move of the point by one term of a reflector's error with the direction it is seen
+     * from, half a radian off the mean line of sight (about a reflector's acceptance), m: a glass
+     * prism's refraction there is a fraction of a millimetre.
+     */
+    static final double MAX_INCIDENCE_M = 2e-3;
+    /**
      * Nor a link whose far end turns more than this as it bends (a beam's far end turns by about
      * 1.5 δ/L: 2 mm on a 0.6 m link), rad.
      */
@@ -415,10 +421,12 @@ public final class Diagnoser {
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
         List<String> under = r.outliersUnder;
-        if (!d.outliers().isEmpty()) {
-            // The geometric fit's outliers may be the peak of a structure the effects now model, which a
-            // model fitted without them cannot judge: judge them with the effects fitted to every pose
-            // (but the gross readings among many, which would bend that fit).
+        // The geometric fit's outliers may be the peak of a structure the effects now model, which a
+        // model fitted without them cannot judge: judge them with the effects fitted to every pose
+        // (but the gross readings among many, which would bend that fit). When the final model's
+        // effects, fitted so, still put every one of them beyond the rule, they are not; else the
+        // whole diagnosis is made again with them (the search may take other effects with them in).
+        if (!d.outliers().isEmpty() && !r.underEveryPose().get().containsAll(d.outliers())) {
             Run all = run(robot, train, validate, o, r.gross, t0, dirSource, excluded);
             if (!all.d.effects().isEmpty()) {
                 List<String> underAll = all.outliersUnder;
@@ -427,8 +435,144 @@ public final class Diagnoser {
             }
         }
         if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
+        Region region = region(under, train.rows());
+        if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder(),
+                region == null ? "-" : region.words(), region == null ? "-" : region.linked());
+        if (region != null && region.p() < REGION_ALPHA) {
+            // a pose next to none of the region's, beyond twice what its poses typically reach, is a bad reading all the same
+            double[] zs = region.linked().stream().mapToDouble(id -> r.sigmasUnder().getOrDefault(id, 0.0)).sorted().toArray();
+            double typical = zs.length == 0 ? Double.POSITIVE_INFINITY
+                    : zs.length % 2 == 1 ? zs[zs.length / 2] : 0.5 * (zs[zs.length / 2 - 1] + zs[zs.length / 2]);
+            List<String> bad = new ArrayList<>(d.outliers());
+            for (String id : under)
+                if (!region.linked().contains(id) && r.sigmasUnder().getOrDefault(id, 0.0) >= REGION_GROSS * typical && !bad.contains(id))
+                    bad.add(id);
+            List<String> inRegion = under.stream().filter(id -> !bad.contains(id)).toList();
+            Diagnosis base = bad.size() == d.outliers().size() ? d : run(robot, train, validate, o, bad, t0, dirSource, excluded).d;
+            List<String> notes = new ArrayList<>(base.notes());
+            notes.add(String.format(Locale.ROOT, "poses %s lie beyond %.0f robust sigmas of the final model but are not reported as "
+                    + "bad measurements: %s, so they are a region where the model does not follow the arm, not bad readings (a bad "
+                    + "reading among them cannot be told from them%s)", String.join(", ", inRegion), OUTLIER_K, region.words(),
+                    bad.size() == d.outliers().size() ? "" : String.format(Locale.ROOT, "; %s, next to none of them and beyond %.0f "
+                    + "robust sigmas, twice the %.1f its poses typically reach, %s reported", String.join(", ",
+                    bad.subList(d.outliers().size(), bad.size())), REGION_GROSS * typical, typical,
+                    bad.size() - d.outliers().size() == 1 ? "is" : "are")));
+            return with(base, base.outliers(), notes);
+        }
         if (under.size() > Math.max(3, 0.05 * train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
-        return run(robot, train, validate, o, under, t0, dirSource, excluded).d;
+        Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
+        List<String> more = appearing(without, under);
+        if (more.size() <= 1) return without.d;
+        List<String> notes = new ArrayList<>(d.notes());
+        notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as bad "
+                + "measurements: left out, %d more poses come beyond the rule (%s), so they belong to a structure the model does not "
+                + "follow, not to bad readings", under.size() == 1 ? "pose" : "poses", String.join(", ", under), OUTLIER_K,
+                under.size() == 1 ? "is" : "are", more.size(), String.join(", ", more)));
+        return with(d, d.outliers(), notes);
+    }
+
+    /**
+     * Where the poses {@code ids} lie next to one another: for every set of joints tried (all, the
+     * arm's first three, the wrist's last three, each pair), how many of them have another of them as
+     * nearest pose (angles over each joint's sampled range), against how many poses picked at random
+     * would (each one's nearest is one of the others with chance (g − 1)/(n − 1)); the binomial chance
+     * of as many or more, times the sets tried (Bonferroni). Bad readings (a beam broken, a target
+     * knocked for one reading) fall on poses at random; poses where the model does not follow the arm
+     * share a region of some of its joints. Returns the set with the lowest chance, or null when there
+     * are fewer than three poses.
+     */
+    static Region region(List<String> ids, List<Measurement> poses) {
+        Set<String> set = new HashSet<>(ids);
+        List<Measurement> in = poses.stream().filter(m -> set.contains(m.poseId())).toList();
+        int n = poses.size(), g = in.size();
+        if (g < 3 || n < 4) return null;
+        int dof = poses.get(0).q().length;
+        double[] span = new double[dof];
+        for (int j = 0; j < dof; j++) {
+            double a = Double.POSITIVE_INFINITY, b = Double.NEGATIVE_INFINITY;
+            for (Measurement m : poses) { a = Math.min(a, m.q(j)); b = Math.max(b, m.q(j)); }
+            span[j] = b - a;
+        }
+        List<int[]> sets = new ArrayList<>();
+        sets.add(java.util.stream.IntStream.range(0, dof).toArray());
+        if (dof > 3) { sets.add(new int[] {0, 1, 2}); sets.add(java.util.stream.IntStream.range(3, dof).toArray()); }
+        for (int a = 0; a < dof; a++) for (int b = a + 1; b < dof; b++) sets.add(new int[] {a, b});
+        sets.removeIf(js -> Arrays.stream(js).noneMatch(j -> span[j] > 0));
+        double p0 = (g - 1.0) / (n - 1.0);
+        Region best = null;
+        for (int[] js : sets) {
+            int count = 0;
+            Set<String> linked = new HashSet<>();
+            for (Measurement mi : in) {
+                Measurement nearest = null;
+                double bestD = Double.POSITIVE_INFINITY;
+                for (Measurement mk : poses) {
+                    if (mk == mi) continue;
+                    double d = 0;
+                    for (int j : js) {
+                        if (!(span[j] > 0)) continue;
+                        double x = (mi.q(j) - mk.q(j)) / span[j];
+                        d += x * x;
+                    }
+                    if (d < bestD) { bestD = d; nearest = mk; }
+                }
+                if (nearest != null && set.contains(nearest.poseId())) { count++; linked.add(mi.poseId()); linked.add(nearest.poseId()); }
+            }
+            double p = Math.min(1, (count == 0 ? 1 : Stats.regularizedBeta(p0, count, g - count + 1)) * sets.size());
+            if (best == null || p < best.p) {
+                double[] qlo = new double[js.length], qhi = new double[js.length];
+                for (int a = 0; a < js.length; a++) {
+                    int j = js[a];
+                    qlo[a] = in.stream().mapToDouble(m -> m.q(j)).min().orElse(0);
+                    qhi[a] = in.stream().mapToDouble(m -> m.q(j)).max().orElse(0);
+                }
+                best = new Region(js, count, g, g * p0, p, qlo, qhi, linked);
+            }
+        }
+        return best;
+    }
+
+    /**
+     * The chance below which poses beyond the outlier rule that lie next to one another are taken as
+     * a region the model does not follow rather than bad readings: either answer is a claim about the
+     * poses (reporting good readings as bad, or leaving bad ones in), so the conventional 1 % level,
+     * not the effects' family-wise one.
+     */
+    static final double REGION_ALPHA = 0.01;
+
+    /**
+     * A pose beyond the rule beside such a region but next to none of its poses is a bad reading when
+     * it lies this many times farther out than the region's poses typically do (their median, in
+     * robust sigmas): a structure's poses spread about its size, a gross reading (a beam broken, a
+     * target out of its nest) stands by itself far beyond them.
+     */
+    static final double REGION_GROSS = 2;
+
+    /**
+     * Poses that lie next to one another in joints {@code joints} (0-based): the test's numbers (how
+     * many have another of them as nearest pose, of how many, against how many at random, the chance),
+     * their angles' ranges (rad), and the poses in such a pair ({@code linked}).
+     */
+    record Region(int[] joints, int count, int poses, double expected, double p, double[] lo, double[] hi, Set<String> linked) {
+        String words() {
+            List<String> js = new ArrayList<>(), ranges = new ArrayList<>();
+            for (int a = 0; a < joints.length; a++) {
+                js.add(String.valueOf(joints[a] + 1));
+                ranges.add(String.format(Locale.ROOT, "q%d %.0f..%.0f deg", joints[a] + 1, Math.toDegrees(lo[a]), Math.toDegrees(hi[a])));
+            }
+            return String.format(Locale.ROOT, "they lie next to one another in joints %s (%s): %d of the %d have another of them "
+                    + "as nearest pose there, against %.1f for poses picked at random (p = %.2g over the sets of joints tried)",
+                    String.join(", ", js), String.join(", ", ranges), count, poses, expected, p);
+        }
+    }
+
+    /**
+     * The poses a run with {@code leftOut} left out flags beyond the outlier rule besides them: one
+     * is a pose their spread hid; several at once are a structure's poses appearing as others leave
+     * (a lost motion's, a bump's, a step the model does not follow), not bad readings.
+     */
+    private static List<String> appearing(Run without, List<String> leftOut) {
+        return without.outliersUnder.stream().filter(id -> !leftOut.contains(id)).toList();
     }
 
     /**
@@ -452,15 +596,16 @@ public final class Diagnoser {
             boolean clean = without.d.located().stream().noneMatch(l -> "final".equals(l.stage()));
             if (!clean || !without.outliersUnder.containsAll(out)) return d;
             if (new HashSet<>(without.outliersUnder).equals(new HashSet<>(out))) return without.d;
-            List<String> more = without.outliersUnder.stream().filter(id -> !out.contains(id)).toList();
-            if (more.size() > 1) return d; // poses that keep appearing as others leave are a structure's
+            List<String> more = appearing(without, out);
+            if (more.size() > 1) return d;
             out.addAll(more);
         }
         return d;
     }
 
     /** A diagnosis and the poses the calibration's outlier rule flags under its extended model. */
-    private record Run(Diagnosis d, List<String> outliersUnder, List<CalibrationResult.Outlier> validationOutliers, List<String> gross) { }
+    private record Run(Diagnosis d, List<String> outliersUnder, List<CalibrationResult.Outlier> validationOutliers, List<String> gross,
+                       java.util.function.Supplier<List<String>> underEveryPose, Map<String, Double> sigmasUnder) { }
 
     /** Robust sigmas beyond which a pose is an outlier under the extended model (the calibration's default rule). */
     static final double OUTLIER_K = 5;
@@ -660,10 +805,14 @@ public final class Diagnoser {
         Timer timer = new Timer();
         timer.mark("geometric");
         Tester geoTester = w.tester(fit);
+        timer.mark("tester");
         List<Locator.Probe> geoProbes = Locator.probes(geoTester, dirSource);
+        timer.mark("probes");
         List<StageScan.Stage> stages = StageScan.scan(geoTester, o.alpha());
         geoProbes.addAll(StageScan.probes(geoTester, stages, Locator.harmonicsFor(rows.size())));
+        timer.mark("stage scan");
         List<Locator.Found> foundGeo = Locator.scan(geoTester, geoProbes, o.alpha(), MAX_LOCATED);
+        timer.mark("scan");
         for (Effect e : fromLocated(foundGeo, model, rows, gravity, t0C, hasTemp, hasTime))
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
         // Thermal growth with the links lagging the reading: the time constant (one for every link) that predicts
@@ -1097,9 +1246,54 @@ public final class Diagnoser {
             Map<String, Measurement> byId = new LinkedHashMap<>();
             for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
             org.robopro.kinematics.Pose tool = fit.problem.toolOf(fit.full);
-            valOut.removeIf(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool));
+            valOut.removeIf(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool) || inStepGap(selected, byId.get(ol.poseId()), rows));
         }
-        return new Run(result, under, valOut, List.copyOf(gross));
+        Fit last = fit;
+        CalibrationResult geoLast = geo;
+        java.util.function.Supplier<List<String>> underEveryPose = () -> {
+            // the final model's effects and geometry fitted again to every training pose but the gross readings among many
+            List<Measurement> every = trainAll.rows().stream().filter(m -> !gross.contains(m.poseId())).toList();
+            Work wa = new Work(model, gravity, every, geoLast, validate, o);
+            Fit fa = wa.fit(selected, absorbedCols, last.full, null);
+            List<String> u = outliersUnder(result, fa, trainAll);
+            return u.isEmpty() ? u : otherFlankExplains(wa, fa, selected, u);
+        };
+        Map<String, Double> sigmasUnder = new java.util.HashMap<>();
+        if (!under.isEmpty())
+            for (CalibrationResult.Outlier ol : Calibrator.outliers(fit.problem, fit.full, trainAll, Set.of(), OUTLIER_K).values())
+                sigmasUnder.put(ol.poseId(), ol.residualM() / ol.robustSigmaM());
+        return new Run(result, under, valOut, List.copyOf(gross), underEveryPose, sigmasUnder);
+    }
+
+    /**
+     * Whether a pose lies between the two training poses a selected step was placed between (in time
+     * for a step of a joint's zero or of the target, in the joint's angle for a step of its reading):
+     * the training poses put the step anywhere in that gap, so which side of it the pose lies on,
+     * and so its prediction, is not known.
+     */
+    static boolean inStepGap(List<Effect> selected, Measurement m, List<Measurement> rows) {
+        if (m == null) return false;
+        for (Effect e : selected) {
+            java.util.function.ToDoubleFunction<Measurement> x = switch (e.kind()) {
+                case ZERO_STEP, TARGET_STEP -> Measurement::timeS;
+                case ANGLE_STEP -> r -> r.q(e.joint());
+                default -> null;
+            };
+            if (x == null) continue;
+            double[] places = e.kind() == Effect.Kind.ANGLE_STEP
+                    ? (e.isWindow() ? new double[] {e.rangeLo(), e.rangeHi()} : new double[] {e.rangeLo()}) : new double[] {e.tauS()};
+            double xm = x.applyAsDouble(m);
+            for (double place : places) {
+                double below = Double.NEGATIVE_INFINITY, above = Double.POSITIVE_INFINITY;
+                for (Measurement r : rows) {
+                    double xr = x.applyAsDouble(r);
+                    if (xr <= place) below = Math.max(below, xr);
+                    else above = Math.min(above, xr);
+                }
+                if (xm > below && xm < above) return true;
+            }
+        }
+        return false;
     }
 
     /** Whether a pose lies beyond the range a selected fallback's variable was fitted over (its prediction there is an extrapolation). */
@@ -1795,6 +1989,17 @@ public final class Diagnoser {
                     why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
                     best = null;
+                } else if (e.kind() == Effect.Kind.COUPLING && !Effect.canCouple(w.model, e.joint(), e.source())) {
+                    // searched as a shape of joint j's error following joint k, never physics: the fallback that predicts
+                    // left-out poses best models it (its own, held part of the family's shape or not, or a located one)
+                    for (Effect f : own) {
+                        if (selected.stream().anyMatch(x -> x.label().equals(f.label()))) continue;
+                        double pf = at.pressReplacing(k, f, w.conditions);
+                        if (pf < bestPress) { bestPress = pf; best = f; }
+                    }
+                    why = String.format(Locale.ROOT, "%s is not claimed: joint %d's drive train runs from its motor through the "
+                            + "joints before it, so joint %d's angle has no path to it; the structure is an error of joint %d that "
+                            + "follows joint %d", e.label(), e.joint() + 1, e.source() + 1, e.joint() + 1, e.source() + 1);
                 } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress)
                         || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress)
                         && pressOwn >= bestPress * (1 - ALIAS_MARGIN))
@@ -2174,6 +2379,7 @@ public final class Diagnoser {
                 case AXIS_WOBBLE -> { if (k == Effect.Kind.AXIS_WOBBLE && e.joint() == f.probe.joint) return e; }
                 // the holder's sag, or a wrist drive giving way under the tool's weight
                 case TOOL_GRAVITY -> { if (k == Effect.Kind.TOOL_SAG || k == Effect.Kind.COMPLIANCE && e.joint() >= 3) return e; }
+                case TARGET_SIGHT -> { if (k == Effect.Kind.TARGET_INCIDENCE || k == Effect.Kind.INSTRUMENT) return e; }
                 // the link's bending, or its joint's spring (a beam's special case)
                 case LINK_BEND -> { if ((k == Effect.Kind.LINK_SAG || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint) return e; }
             }
@@ -2362,6 +2568,8 @@ public final class Diagnoser {
             case LINK_BEND -> String.format(Locale.ROOT, "put a second target on joint %d's housing (the link's far end) and "
                     + "measure it with the link horizontal and near vertical, with and without payload: a link that bends moves "
                     + "there across itself, a joint's spring turns it about joint %d.", f.probe.joint + 2, f.probe.joint + 1);
+            case TARGET_SIGHT -> "measure a few poses again with an open-air (hollow) reflector, or with the reflector turned in its "
+                    + "nest toward the instrument: an error that follows the line of sight in the tool's frame is the reflector's.";
             case TOOL_GRAVITY -> "measure a few places twice, with the flange pointing down and then sideways (and the "
                     + "holder turned about the flange's axis): a holder that bends moves the point toward gravity; shorten or "
                     + "stiffen the target's holder.";
@@ -2524,7 +2732,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
-                case AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND -> { }
+                case AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, TARGET_SIGHT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -2549,6 +2757,7 @@ public final class Diagnoser {
         }
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) out.add(Effect.toolSag(model, Effect.DOWN));
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND) out.add(f.probe.bend);
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.TARGET_SIGHT) out.add(f.probe.incidence);
         return out;
     }
 
@@ -3465,6 +3674,12 @@ public final class Diagnoser {
 
         /** As above; the leave-one-out error is only computed when p is below {@code pGate} (else it stays infinite). */
         Candidate testProjected(double[] sp, double[] n0s, int k, List<String> names, double[] extra, int nExtra, double pGate) {
+            return testProjected(sp, n0s, k, names, extra, nExtra, pGate, false);
+        }
+
+        /** As above; with {@code outOfExtra} the columns are already projected out of {@code extra} too. */
+        Candidate testProjected(double[] sp, double[] n0s, int k, List<String> names, double[] extra, int nExtra, double pGate,
+                                boolean outOfExtra) {
             Candidate c = new Candidate();
             c.absorbedMask = new boolean[k];
             double[][] qs = new double[k][];
@@ -3478,7 +3693,7 @@ public final class Diagnoser {
                 for (int i = 0; i < m; i++) x[i] = sp[i * k + col];
                 double ratio = 0;
                 if (n0 > 0) {
-                    if (extra != null && nExtra > 0) x = projectOut(extra, nExtra, m, x);
+                    if (extra != null && nExtra > 0 && !outOfExtra) x = projectOut(extra, nExtra, m, x);
                     for (int t = 0; t < q; t++) { // Gram–Schmidt against the kept columns, twice for stability
                         double d = 0;
                         for (int i = 0; i < m; i++) d += qs[t][i] * x[i];
@@ -3725,6 +3940,19 @@ public final class Diagnoser {
                 c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_LINK_TURN_RAD;
                 c.plausibility = String.format(Locale.ROOT, "far end %.3f mm < %.0f mm, turn %.4f deg < %.2f deg", Math.abs(v[0]) * 1e3,
                         MAX_TOOL_SAG_M * 1e3, Math.toDegrees(Math.abs(v[1])), Math.toDegrees(MAX_LINK_TURN_RAD));
+            }
+            case TARGET_INCIDENCE -> {
+                boolean ok = true;
+                double m = 0;
+                for (int i = 0; i < v.length; i++) {
+                    // each term's move where the line of sight is half a radian off its mean (a reflector's acceptance)
+                    double atEdge = v[i] * Math.pow(0.5, Effect.incidenceDegree(i)), sdEdge = sd[i] * Math.pow(0.5, Effect.incidenceDegree(i));
+                    m = Math.max(m, Math.abs(atEdge));
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(atEdge, sdEdge, -MAX_INCIDENCE_M, MAX_INCIDENCE_M)) ok = false;
+                }
+                c.plausible = ok;
+                c.plausibility = String.format(Locale.ROOT, "every term's move half a radian off the mean sight within %.0f mm (largest %.3f mm)",
+                        MAX_INCIDENCE_M * 1e3, m * 1e3);
             }
             case TOOL_SAG -> {
                 double d = Words.sagSpan(v);

@@ -74,6 +74,8 @@ public final class Effect {
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
         AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family"),
         TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family"),
+        TARGET_INCIDENCE("target-incidence", "Error of the measured point that follows the direction the instrument sees it from, "
+                + "in the tool's frame: a reflector seen off its axis, of no known family"),
         LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family");
 
         public final String json;
@@ -174,7 +176,8 @@ public final class Effect {
     private Vec3 down;                       // tool sag, link sag: gravity's direction, base frame (unit)
     private boolean sagPayload;              // link sag: columns of the payload's weight at the far end
     private Sight sight;                     // instrument reading: the reading it follows
-    private Pose instrument;                 // instrument reading: instrumentTbase, fixed where the geometric fit put it
+    private Pose instrument;                 // instrument reading, target incidence: instrumentTbase, fixed where the geometric fit put it
+    private Vec3 sightAxis;                  // target incidence: the mean direction the point is seen from, flange frame (unit)
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
     private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
     private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
@@ -719,6 +722,109 @@ public final class Effect {
         return Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, f.rot(0, 2) * down.x() + f.rot(1, 2) * down.y() + f.rot(2, 2) * down.z()))));
     }
 
+    /**
+     * An error of the measured point that follows the direction the instrument sees it from, in the
+     * tool's frame: a glass-prism reflector seen off its axis refracts the beam (Snell's law in the
+     * glass), so its apparent centre moves with the incidence angle, across the line of sight with
+     * odd powers of it and along it with even ones (by symmetry about the prism's axis), and the
+     * tracker's reflector constant holds only at normal incidence; a reflector's errors are reviewed
+     * by Muralikrishnan et al., Precision Engineering 44 (2016). With u the unit vector
+     * from the instrument to the point in flange axes, and s, t its components across {@code axis}
+     * (the mean direction the point is seen from), the point moves in flange axes by a polynomial of
+     * degrees 1–3 in s, t along each axis ({@link #INCIDENCE_ACROSS}) and one of degree 4 along the
+     * axis ({@link #INCIDENCE_ALONG}); the constant is the tool offset, the geometry's. It is an
+     * error of the measurement, not of the robot: the extended model leaves it out of the robot's pose.
+     */
+    public static Effect targetIncidence(KinematicModel model, Pose instrumentTbase, Vec3 axis) {
+        if (!(axis.norm() > 0)) throw new IllegalArgumentException("no sight axis");
+        Effect e = new Effect(Kind.TARGET_INCIDENCE, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.instrument = instrumentTbase;
+        e.sightAxis = axis.times(1 / axis.norm());
+        return e;
+    }
+
+    /** A target incidence's monomials of s, t across the axis (each times a flange axis), and of degree 4 along the axis. */
+    static final String[] INCIDENCE_ACROSS = {"s", "t", "ss", "st", "tt", "sss", "sst", "stt", "ttt"},
+            INCIDENCE_ALONG = {"ssss", "ssst", "sstt", "sttt", "tttt"};
+    /** A target incidence's parameters: each flange axis times the monomials across, and the axis times those along. */
+    static final int INCIDENCE_TERMS = 3 * INCIDENCE_ACROSS.length + INCIDENCE_ALONG.length;
+
+    /** The instrument pose (instrumentTbase) an instrument reading or a target incidence works with; null for other kinds. */
+    public Pose instrument() { return instrument; }
+
+    /** The degree in s, t of a target incidence's parameter {@code i}. */
+    static int incidenceDegree(int i) {
+        int na = INCIDENCE_ACROSS.length;
+        return i >= 3 * na ? INCIDENCE_ALONG[i - 3 * na].length() : INCIDENCE_ACROSS[i % na].length();
+    }
+
+    /** The mean direction a target incidence's point is seen from (flange frame, unit); null for other kinds. */
+    public Vec3 sightAxis() { return sightAxis; }
+
+    /** The instrument's origin in base axes, from instrumentTbase. */
+    static Vec3 instrumentOrigin(Pose instrumentTbase) { return instrumentTbase.inverse().position(); }
+
+    /**
+     * The direction the point at {@code pointBase} is seen from, in flange axes at flange pose f: the
+     * unit vector from the instrument's origin {@code origin} to it.
+     */
+    static Vec3 sightInFlange(Pose f, Vec3 origin, double[] pointBase) {
+        double ux = pointBase[0] - origin.x(), uy = pointBase[1] - origin.y(), uz = pointBase[2] - origin.z();
+        double n = Math.sqrt(ux * ux + uy * uy + uz * uz);
+        if (!(n > 0)) return new Vec3(0, 0, 0);
+        return new Vec3((f.rot(0, 0) * ux + f.rot(1, 0) * uy + f.rot(2, 0) * uz) / n, (f.rot(0, 1) * ux + f.rot(1, 1) * uy + f.rot(2, 1) * uz) / n,
+                (f.rot(0, 2) * ux + f.rot(1, 2) * uy + f.rot(2, 2) * uz) / n);
+    }
+
+    /** Two unit vectors across {@code axis}, and the axis: a right-handed frame (rows). */
+    static Vec3[] acrossAxis(Vec3 axis) {
+        Vec3 ref = Math.abs(axis.x()) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 1, 0);
+        Vec3 e1 = axis.cross(ref);
+        e1 = e1.times(1 / e1.norm());
+        return new Vec3[] {e1, axis.cross(e1), axis};
+    }
+
+    /** The angle between the direction the point is seen from and the sight axis, deg. */
+    static double incidenceAngle(Pose f, Pose instrumentTbase, Vec3 axis, double[] pointBase) {
+        Vec3 u = sightInFlange(f, instrumentOrigin(instrumentTbase), pointBase);
+        return Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, u.dot(axis)))));
+    }
+
+    /** A target incidence's regressor (3 x {@link #INCIDENCE_TERMS}, row-major, base axes) at flange pose f. */
+    static void incidenceRegressor(Pose f, Pose instrumentTbase, Vec3 axis, double[] pointBase, double[] g3) {
+        Vec3 u = sightInFlange(f, instrumentOrigin(instrumentTbase), pointBase);
+        Vec3[] e = acrossAxis(axis);
+        double a = u.dot(e[0]), b = u.dot(e[1]);
+        double[] across = {a, b, a * a, a * b, b * b, a * a * a, a * a * b, a * b * b, b * b * b};
+        double[] along = {a * a * a * a, a * a * a * b, a * a * b * b, a * b * b * b, b * b * b * b};
+        int k = INCIDENCE_TERMS, na = across.length;
+        // the along-axis direction in base axes: R·axis
+        double[] ab = new double[3];
+        for (int r = 0; r < 3; r++) ab[r] = f.rot(r, 0) * axis.x() + f.rot(r, 1) * axis.y() + f.rot(r, 2) * axis.z();
+        for (int r = 0; r < 3; r++) {
+            for (int fa = 0; fa < 3; fa++) for (int m = 0; m < na; m++) g3[r * k + fa * na + m] = f.rot(r, fa) * across[m];
+            for (int m = 0; m < along.length; m++) g3[r * k + 3 * na + m] = ab[r] * along[m];
+        }
+    }
+
+    /** The instrument pose of an effect's robot-file form (its translation and rotation vector). */
+    private static void putInstrument(Map<String, Double> p, Pose instrument) {
+        Vec3 w = instrument.rotationVector();
+        p.put("instrument_x", instrument.x());
+        p.put("instrument_y", instrument.y());
+        p.put("instrument_z", instrument.z());
+        p.put("instrument_rx", w.x());
+        p.put("instrument_ry", w.y());
+        p.put("instrument_rz", w.z());
+    }
+
+    /** The instrument pose an effect's robot-file form holds. */
+    private static Pose instrumentOf(EffectDescription d, String file) {
+        Vec3 w0 = new Vec3(require(d, "instrument_rx", file), require(d, "instrument_ry", file), require(d, "instrument_rz", file));
+        return Pose.translation(require(d, "instrument_x", file), require(d, "instrument_y", file), require(d, "instrument_z", file))
+                .times(w0.norm() > 0 ? Pose.rotAxis(w0.times(1 / w0.norm()), w0.norm()) : Pose.IDENTITY);
+    }
+
     /** A tool sag's regressor (3 x 9, row-major) at flange pose f: column 3a + b moves the point by R[:, a]·(Rᵀĝ)_b. */
     static void toolSagRegressor(Pose f, Vec3 down, double[] g3) {
         double[] gf = {f.rot(0, 0) * down.x() + f.rot(1, 0) * down.y() + f.rot(2, 0) * down.z(),
@@ -919,7 +1025,7 @@ public final class Effect {
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT
-                || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG;
+                || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.TARGET_INCIDENCE;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -929,7 +1035,7 @@ public final class Effect {
     }
 
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
-    public boolean ofInstrument() { return kind == Kind.INSTRUMENT; }
+    public boolean ofInstrument() { return kind == Kind.INSTRUMENT || kind == Kind.TARGET_INCIDENCE; }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
     public int basisCount() { return nBasis; }
@@ -1055,7 +1161,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -1098,6 +1204,7 @@ public final class Effect {
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case TOOL_SAG -> 9;
+            case TARGET_INCIDENCE -> INCIDENCE_TERMS;
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case POINT_SMOOTH -> 3 * nBasis;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
@@ -1141,6 +1248,10 @@ public final class Effect {
                 if (sagPayload) out.add("t_payload");
             }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
+            case TARGET_INCIDENCE -> {
+                for (String a : new String[] {"x", "y", "z"}) for (String m : INCIDENCE_ACROSS) out.add(a + "_" + m);
+                for (String m : INCIDENCE_ALONG) out.add("r_" + m);
+            }
             case INSTRUMENT -> {
                 if (Double.isFinite(cycle)) { out.add("a"); out.add("b"); }
                 else for (int k = 1; k <= nBasis; k++) out.add("e" + k);
@@ -1175,7 +1286,7 @@ public final class Effect {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
-            case POINT_SMOOTH, TARGET_STEP, TOOL_SAG -> "m";
+            case POINT_SMOOTH, TARGET_STEP, TOOL_SAG, TARGET_INCIDENCE -> "m";
             case INSTRUMENT -> sight.unit;
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
@@ -1228,7 +1339,7 @@ public final class Effect {
                     : String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
-            case TOOL_SAG -> kind.json;
+            case TOOL_SAG, TARGET_INCIDENCE -> kind.json;
             case LINK_SAG -> kind.json + " j" + (joint + 1) + (joint == 1 ? " (upper arm)" : joint == 2 ? " (forearm)" : "");
             case AXIS_WOBBLE -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
                     + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
@@ -1335,7 +1446,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1354,6 +1465,7 @@ public final class Effect {
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
             case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
+            case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), instrument, sightAxis, pointBase, g3);
             case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
             case AXIS_WOBBLE -> {
                 // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)
@@ -1516,6 +1628,19 @@ public final class Effect {
         };
     }
 
+    /**
+     * Whether drive {@code target}'s output can follow drive {@code source}'s angle. A drive train
+     * runs from its motor to its joint, so it can be turned only by the joints it passes: joints
+     * before its own in the chain (the wrist's shafts run through axes 4 and 5 to the hand). A
+     * linkage the controller couples (a parallel arm's rod, θ3 = q3 − q2) ties the pair both ways.
+     * A joint beyond the target has no path to it: its drive turns only what lies beyond itself.
+     */
+    static boolean canCouple(KinematicModel model, int target, int source) {
+        if (target == source) return false;
+        double[][] c = model.couplingMatrix();
+        return source < target || c[target][source] != 0 || c[source][target] != 0;
+    }
+
     /** This effect as an identification parameter block on {@code m} (its coupling matrix), starting at zero. */
     public EffectBlock block(KinematicModel m) {
         Effect self = this;
@@ -1610,6 +1735,12 @@ public final class Effect {
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case AXIS_WOBBLE -> { }
             case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
+            case TARGET_INCIDENCE -> {
+                p.put("axis_x", sightAxis.x());
+                p.put("axis_y", sightAxis.y());
+                p.put("axis_z", sightAxis.z());
+                putInstrument(p, instrument);
+            }
             case LINK_SAG -> { }
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
@@ -1622,13 +1753,7 @@ public final class Effect {
                 p.put(sight.key + "_max", hi);
                 if (sight == Sight.AZIMUTH) p.put("azimuth_ref_rad", azimuthRef);
                 if (Double.isFinite(cycle)) p.put(sight.key + "_cycle", cycle);
-                Vec3 w = instrument.rotationVector();
-                p.put("instrument_x", instrument.x());
-                p.put("instrument_y", instrument.y());
-                p.put("instrument_z", instrument.z());
-                p.put("instrument_rx", w.x());
-                p.put("instrument_ry", w.y());
-                p.put("instrument_rz", w.z());
+                putInstrument(p, instrument);
             }
             case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
             case BACKLASH -> {
@@ -1651,7 +1776,7 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, TOOL_SAG -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, TOOL_SAG, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -1725,6 +1850,12 @@ public final class Effect {
                 yield linkSag(model, js.get(0) - 1, ps.containsKey("t_payload"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
+            case TARGET_INCIDENCE -> {
+                Vec3 axis = new Vec3(require(d, "axis_x", file), require(d, "axis_y", file), require(d, "axis_z", file));
+                if (!(axis.norm() > 0))
+                    throw new InputException(file, 0, 0, "effects.target-incidence.parameters_si.axis_x", "the sight axis must not be zero");
+                yield targetIncidence(model, instrumentOf(d, file), axis);
+            }
             case AXIS_WOBBLE -> {
                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
                 for (String key : ps.keySet()) if (key.matches("xc\\d+")) hs.add(Integer.parseInt(key.substring(2)));
@@ -1753,9 +1884,7 @@ public final class Effect {
                 if (sg == null)
                     throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si", "needs the reading's range, e.g. range_m_min and range_m_max");
                 int n = (int) ps.keySet().stream().filter(key -> key.matches("e\\d+")).count();
-                Vec3 w0 = new Vec3(require(d, "instrument_rx", file), require(d, "instrument_ry", file), require(d, "instrument_rz", file));
-                Pose inst0 = Pose.translation(require(d, "instrument_x", file), require(d, "instrument_y", file), require(d, "instrument_z", file))
-                        .times(w0.norm() > 0 ? Pose.rotAxis(w0.times(1 / w0.norm()), w0.norm()) : Pose.IDENTITY);
+                Pose inst0 = instrumentOf(d, file);
                 double ref = sg == Sight.AZIMUTH ? require(d, "azimuth_ref_rad", file) : 0;
                 if (ps.containsKey(sg.key + "_cycle")) {
                     double cyc = require(d, sg.key + "_cycle", file);
@@ -1838,7 +1967,10 @@ public final class Effect {
 
     @Override public String toString() { return label(); }
 
-    /** The catalogue's candidates on a robot: the kinds for each joint (coupling for every ordered pair), thermal once. */
+    /**
+     * The catalogue's candidates on a robot: the kinds for each joint (a coupling for every ordered
+     * pair: one a drive train cannot make is searched but never claimed, {@link #canCouple}), thermal once.
+     */
     public static List<Effect> candidates(KinematicModel model, GravityTorques gravity, double t0C, double[] timeTaus) {
         List<Effect> out = new ArrayList<>();
         int n = model.dof();

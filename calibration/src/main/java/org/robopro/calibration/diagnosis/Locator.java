@@ -40,7 +40,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, TARGET_SIGHT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -84,6 +84,7 @@ final class Locator {
         double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
         Effect bend;                             // LINK_BEND: the link's sag
+        Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
         String xLabel;
     }
 
@@ -131,8 +132,9 @@ final class Locator {
 
     /**
      * As above; without {@code steps} the steps of a joint's reading at one angle and of the target
-     * on the flange at one time are left out (the stepwise search's re-scans: such a step shows in the
-     * geometric fit's residuals already, and its probes are a good share of the scan's cost).
+     * on the flange at one time, and the reflector's error with the line of sight, are left out (the
+     * stepwise search's re-scans: such a structure shows in the geometric fit's residuals already, and
+     * its probes are a good share of the scan's cost).
      */
     static List<Probe> probes(Diagnoser.Tester t, Directions.Source dirs, boolean steps) {
         Diagnoser.Work w = t.w;
@@ -151,10 +153,37 @@ final class Locator {
                 }
             if (!(hi - lo > 1e-6) || w.model.isPrismatic(j)) continue;
             final int jj = j;
+            // the harmonics', the smooth curves' and the two-joint products' columns on drive j, projected in one pass
+            List<Reg> regs = new ArrayList<>();
+            List<Integer> ks = new ArrayList<>();
+            for (int h = 1; h <= hMax; h++) {
+                final int hh = h;
+                regs.add((e, i, g) -> { double q = t.endRows.get(e).get(i).q(jj); g[0] = Math.sin(hh * q); g[1] = Math.cos(hh * q); });
+                ks.add(2);
+            }
+            final double l0 = lo, h0 = hi;
+            List<Integer> resolutions = new ArrayList<>();
+            for (int nb : Effect.SMOOTH_RESOLUTIONS) {
+                if (nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
+                resolutions.add(nb);
+                regs.add((e, i, g) -> Effect.bspline(t.endRows.get(e).get(i).q(jj), l0, h0, g));
+                ks.add(nb);
+            }
+            List<Integer> others = new ArrayList<>();
+            for (int k = 0; k < dof; k++) {
+                if (k == j || w.model.isPrismatic(k)) continue;
+                final int kk = k;
+                others.add(k);
+                // the products only: the linear terms are scale and coupling shapes, which the families' own tests hold
+                regs.add((e, i, g) -> Effect.pairProducts(t.endRows.get(e).get(i).q(), jj, kk, g));
+                ks.add(4);
+            }
+            List<Probe> batch = drives(t, j, ks, regs);
+            int b = 0;
             for (int h = 1; h <= hMax; h++) {
                 final int hh = h;
                 Angle f = (q, g) -> { g[0] = Math.sin(hh * q); g[1] = Math.cos(hh * q); };
-                Probe p = drive(t, j, 2, (e, i, g) -> f.at(t.endRows.get(e).get(i).q(jj), g));
+                Probe p = batch.get(b++);
                 p.angle = f;
                 p.var = Var.ANGLE_PERIODIC;
                 p.joint = j;
@@ -165,11 +194,9 @@ final class Locator {
                 p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);
             }
-            final double l0 = lo, h0 = hi;
-            for (int nb : Effect.SMOOTH_RESOLUTIONS) {
-                if (nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
+            for (int nb : resolutions) {
                 Angle f = (q, g) -> Effect.bspline(q, l0, h0, g);
-                Probe p = drive(t, j, nb, (e, i, g) -> f.at(t.endRows.get(e).get(i).q(jj), g));
+                Probe p = batch.get(b++);
                 p.angle = f;
                 p.var = Var.ANGLE_SMOOTH;
                 p.joint = j;
@@ -186,11 +213,8 @@ final class Locator {
             }
             // the reading jumps where the joint passes one angle (an absolute encoder's track): a step at quantiles of q_j
             if (steps) for (double q0 : stepPlaces(qx[0], STEP_PLACES)) out.add(angleStep(t, j, Math.toRadians(q0), qx));
-            for (int k = 0; k < dof; k++) {
-                if (k == j || w.model.isPrismatic(k)) continue;
-                final int kk = k;
-                // the products only: the linear terms are scale and coupling shapes, which the families' own tests hold
-                Probe p = drive(t, j, 4, (e, i, g) -> Effect.pairProducts(t.endRows.get(e).get(i).q(), jj, kk, g));
+            for (int k : others) {
+                Probe p = batch.get(b++);
                 p.var = Var.JOINT_PAIR;
                 p.joint = j;
                 p.other = k;
@@ -277,7 +301,58 @@ final class Locator {
         out.add(toolGravity(t));
         out.addAll(linkBends(t));
         out.addAll(sightProbes(t, steps));
+        // the reflector's error shows in the geometric fit's residuals already; its 32 columns are left out of the stepwise re-scans
+        Probe incidence = steps ? targetSight(t) : null;
+        if (incidence != null) out.add(incidence);
         return out;
+    }
+
+    /** The directions the point is seen from must spread this far about their mean (RMS angle, deg) for the reflector's incidence to show. */
+    static final double MIN_INCIDENCE_SPREAD_DEG = 5;
+
+    /**
+     * An error of the measured point that follows the direction the instrument sees it from, in the
+     * tool's frame ({@link Effect#targetIncidence}): a reflector seen off its axis. Positions of one
+     * point per pose seen by an instrument; null when the directions barely change.
+     */
+    static Probe targetSight(Diagnoser.Tester t) {
+        if (!t.w.instrument || t.ends != 1 || t.perPose != 1) return null;
+        Diagnoser.Work w = t.w;
+        int poses = w.rows.size();
+        Pose inst = t.fit.problem.instrumentOf(t.fit.full);
+        Vec3 origin = Effect.instrumentOrigin(inst);
+        Pose[] f = new Pose[poses];
+        double mx = 0, my = 0, mz = 0;
+        for (int i = 0; i < poses; i++) {
+            f[i] = w.model.flange(w.rows.get(i).q());
+            Vec3 u = Effect.sightInFlange(f[i], origin, t.pointsBase[i][0]);
+            mx += u.x();
+            my += u.y();
+            mz += u.z();
+        }
+        Vec3 axis = new Vec3(mx, my, mz);
+        if (!(axis.norm() > 0)) return null;
+        axis = axis.times(1 / axis.norm());
+        double[][] x = new double[1][poses];
+        double spread = 0;
+        double[][] rg = new double[poses][3 * Effect.INCIDENCE_TERMS];
+        for (int i = 0; i < poses; i++) {
+            x[0][i] = Effect.incidenceAngle(f[i], inst, axis, t.pointsBase[i][0]);
+            spread += x[0][i] * x[0][i];
+            Effect.incidenceRegressor(f[i], inst, axis, t.pointsBase[i][0], rg[i]);
+        }
+        if (!(Math.sqrt(spread / poses) >= MIN_INCIDENCE_SPREAD_DEG)) return null;
+        int k = Effect.INCIDENCE_TERMS;
+        Probe p = columns(t, k, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
+                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[k + col] + t.endDTrans[e][row * 3 + 2] * g[2 * k + col],
+                3 * k, (e, i, g) -> System.arraycopy(rg[i], 0, g, 0, 3 * k));
+        p.var = Var.TARGET_SIGHT;
+        p.incidence = Effect.targetIncidence(w.model, inst, axis);
+        p.variable = "the direction the point is seen from, in the tool's frame";
+        p.shape = "the measured point moves with the direction the instrument sees it from, in the tool's frame (a reflector seen off its axis)";
+        p.x = x;
+        p.xLabel = "angle of the line of sight from its mean direction in the tool's frame (deg)";
+        return p;
     }
 
     /**
@@ -723,6 +798,40 @@ final class Locator {
         return p;
     }
 
+    /**
+     * Several probes on drive j at once: probe b has ks[b] columns from regs[b]. Their columns are
+     * projected out of the model's span in one pass over it (each column as it would be alone).
+     */
+    private static List<Probe> drives(Diagnoser.Tester t, int j, List<Integer> ks, List<Reg> regs) {
+        int n = ks.size(), kt = 0;
+        int[] off = new int[n];
+        double[][] part = new double[n][];
+        for (int b = 0; b < n; b++) { off[b] = kt; kt += ks.get(b); part[b] = new double[ks.get(b)]; }
+        Probe all = drive(t, j, kt, (e, i, g) -> {
+            for (int b = 0; b < n; b++) {
+                regs.get(b).at(e, i, part[b]);
+                System.arraycopy(part[b], 0, g, off[b], part[b].length);
+            }
+        });
+        int m = t.m;
+        List<Probe> out = new ArrayList<>();
+        for (int b = 0; b < n; b++) {
+            int k = ks.get(b), o = off[b];
+            Probe p = new Probe();
+            p.k = k;
+            p.n0 = Arrays.copyOfRange(all.n0, o, o + k);
+            p.s = new double[m * k];
+            for (int i = 0; i < m; i++) System.arraycopy(all.s, i * kt + o, p.s, i * k, k);
+            if (all.endS != null) {
+                p.endS = new double[all.endS.length][m * k];
+                for (int e = 0; e < all.endS.length; e++)
+                    for (int i = 0; i < m; i++) System.arraycopy(all.endS[e], i * kt + o, p.endS[e], i * k, k);
+            }
+            out.add(p);
+        }
+        return out;
+    }
+
     /** k columns on drive j: at each end, its sensitivity to drive j times the regressor there. */
     private static Probe drive(Diagnoser.Tester t, int j, int k, Reg reg) {
         return columns(t, k, (e, row, g, col) -> t.endDQ[e][row * t.dof + j] * g[col], k, reg);
@@ -857,12 +966,15 @@ final class Locator {
         double[] q = new double[0];
         int nq = 0;
         boolean[] used = new boolean[n];
+        // each probe's columns projected out of the structures accepted so far, one block at a time (they are orthonormal to one another)
+        double[][] left = new double[n][];
+        for (int pi = 0; pi < n; pi++) left[pi] = probes.get(pi).s;
         for (int step = 0; step < maxFound; step++) {
             double thr = alpha / Math.max(1, n - step);
             Found best = null;
             for (int pi = 0; pi < n; pi++) {
                 if (used[pi]) continue;
-                Diagnoser.Candidate c = test(t, probes.get(pi), q, nq, thr);
+                Diagnoser.Candidate c = test(t, probes.get(pi), left[pi], q, nq, thr);
                 if (c == null || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
                 c.threshold = thr;
                 if (best == null || c.bic < best.c.bic) { best = new Found(); best.probe = probes.get(pi); best.c = c; }
@@ -887,6 +999,7 @@ final class Locator {
             }
             q = nqArr;
             nq += add;
+            for (int pi = 0; pi < n; pi++) if (!used[pi]) left[pi] = projectedOut(left[pi], probes.get(pi).k, best.c.basis, add, t.m);
         }
         // Backward: a structure the later ones made redundant leaves.
         for (int k = found.size() - 1; k >= 0 && found.size() > 1; k--) {
@@ -1184,10 +1297,35 @@ final class Locator {
 
     /** A probe's test against the model plus the already located columns (q, m x nq). */
     static Diagnoser.Candidate test(Diagnoser.Tester t, Probe p, double[] q, int nq, double pGate) {
+        return test(t, p, null, q, nq, pGate);
+    }
+
+    /** As above, with the probe's columns already projected out of q ({@code left}), or null. */
+    private static Diagnoser.Candidate test(Diagnoser.Tester t, Probe p, double[] left, double[] q, int nq, double pGate) {
         List<String> names = new ArrayList<>();
         for (int c = 0; c < p.k; c++) names.add("c" + c);
-        Diagnoser.Candidate c = t.testProjected(p.s, p.n0, p.k, names, q, nq, pGate);
+        Diagnoser.Candidate c = left == null ? t.testProjected(p.s, p.n0, p.k, names, q, nq, pGate)
+                : t.testProjected(left, p.n0, p.k, names, q, nq, pGate, true);
         return c.keptColumns == 0 ? null : c;
+    }
+
+    /** The k columns s (m x k, row-major) less their projection on the add orthonormal columns b (m x add): S − B (Bᵀ S). */
+    private static double[] projectedOut(double[] s, int k, double[] b, int add, int m) {
+        double[] c = new double[add * k];
+        for (int i = 0; i < m; i++)
+            for (int a = 0; a < add; a++) {
+                double bi = b[i * add + a];
+                if (bi == 0) continue;
+                for (int col = 0; col < k; col++) c[a * k + col] += bi * s[i * k + col];
+            }
+        double[] out = s.clone();
+        for (int i = 0; i < m; i++)
+            for (int a = 0; a < add; a++) {
+                double bi = b[i * add + a];
+                if (bi == 0) continue;
+                for (int col = 0; col < k; col++) out[i * k + col] -= bi * c[a * k + col];
+            }
+        return out;
     }
 
     /** RMS over the measurements (every measured point, or every distance) of the structure's fitted displacement, m. */

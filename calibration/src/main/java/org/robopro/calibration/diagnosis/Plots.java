@@ -95,6 +95,7 @@ final class Plots {
             case BASE_TILT -> "moment of the arm's weight about the base's tipping axis (N·m)";
             case AXIS_WOBBLE -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case TOOL_SAG -> "angle of the flange's axis from straight down (deg)";
+            case TARGET_INCIDENCE -> "angle of the line of sight from its mean direction in the tool's frame (deg)";
             case LINK_SAG -> "share of gravity across link " + (e.joint() + 1) + " (g)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
@@ -123,6 +124,7 @@ final class Plots {
             case ANGLE_STEP, AXIS_WOBBLE -> Math.toDegrees(row.q(e.joint()));
             case LINK_SAG -> e.sagAcross(row.q());
             case TOOL_SAG -> Effect.angleFromDown(e.model().flange(row.q()), e.down());
+            case TARGET_INCIDENCE -> Double.NaN; // from the predicted point (alongDisplacement)
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
@@ -150,7 +152,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;
@@ -192,7 +194,9 @@ final class Plots {
             if (nc > 0) for (int a = 0; a < d; a++) along += c[a] / nc * t.fit.r[r0 + a];
             double[] pb = t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0];
             double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(pb)
-                    : e.kind() == Effect.Kind.INSTRUMENT ? e.sightReadingOf(pb) * (e.sight() == Effect.Sight.RANGE ? 1 : 180 / Math.PI) : Double.NaN;
+                    : e.kind() == Effect.Kind.INSTRUMENT ? e.sightReadingOf(pb) * (e.sight() == Effect.Sight.RANGE ? 1 : 180 / Math.PI)
+                    : e.kind() == Effect.Kind.TARGET_INCIDENCE ? Effect.incidenceAngle(e.model().flange(t.w.rows.get(i).q()), e.instrument(),
+                    e.sightAxis(), pb) : Double.NaN;
             x[mi] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
             y[mi] = (nc - along) * unit;
             fx[mi] = x[mi];

@@ -119,6 +119,11 @@ final class Words {
                     + "what a neighbouring wrist drive does when its error follows joint %d's angle (a cable or dress pack pulling on the "
                     + "wrist as it winds, a coupling of the wrist's drives), and these poses cannot tell the two apart.", e.joint() + 1,
                     e.joint() + 1) : "");
+            case TARGET_INCIDENCE -> "The measured positions err with the direction the instrument sees the point from, in the "
+                    + "tool's frame" + at + ", and none of the known effects explains it: the reflector, not the robot (a glass-prism "
+                    + "reflector seen off its axis refracts the beam, a reflector's optical centre off its sphere's). It is modelled so "
+                    + "that it does not bend the robot's fit, and left out of compensation: measure with an open-air (hollow) reflector, "
+                    + "or turn the reflector in its nest toward the instrument at each pose, and measure again.";
             case INSTRUMENT -> e.sight() == Effect.Sight.RANGE ? String.format(Locale.ROOT, "The measured positions err along the "
                     + "instrument's line of sight as a function of its distance reading (%.4f mm RMS over %.3f..%.3f m%s), which no error "
                     + "of the robot explains: the instrument's distance meter (a cyclic error or a scale error of its interferometer or "
