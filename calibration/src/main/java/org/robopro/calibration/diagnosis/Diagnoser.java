@@ -603,7 +603,11 @@ public final class Diagnoser {
         return d;
     }
 
-    /** A diagnosis and the poses the calibration's outlier rule flags under its extended model. */
+    /**
+     * A diagnosis and the poses the calibration's outlier rule flags under its extended model (and
+     * how many robust sigmas out each lies), with the rule's verdict on them under the model refitted
+     * to every pose.
+     */
     private record Run(Diagnosis d, List<String> outliersUnder, List<CalibrationResult.Outlier> validationOutliers, List<String> gross,
                        java.util.function.Supplier<List<String>> underEveryPose, Map<String, Double> sigmasUnder) { }
 
@@ -614,14 +618,15 @@ public final class Diagnoser {
      * The calibration's outlier rule ({@link Calibrator#outliers}: a pose whose worst measured
      * point, or distance, exceeds {@link #OUTLIER_K} robust sigmas) under the extended model of a
      * final fit, over every training pose; poses whose backlash side is unknown are not flagged.
+     * Each flagged pose (in file order) with its worst residual in robust sigmas.
      */
-    static List<String> outliersUnder(Diagnosis d, Fit fit, MeasurementSet train) {
-        if (train.size() == 0) return List.of();
-        List<String> out = new ArrayList<>();
+    static Map<String, Double> outliersUnder(Diagnosis d, Fit fit, MeasurementSet train) {
+        Map<String, Double> out = new LinkedHashMap<>();
+        if (train.size() == 0) return out;
         Map<String, Measurement> byId = new LinkedHashMap<>();
         for (Measurement m : train.rows()) byId.put(m.poseId(), m);
-        for (String id : Calibrator.outliers(fit.problem, fit.full, train, Set.of(), OUTLIER_K).keySet())
-            if (!unknownBacklashSide(d, byId.get(id))) out.add(id);
+        for (CalibrationResult.Outlier ol : Calibrator.outliers(fit.problem, fit.full, train, Set.of(), OUTLIER_K).values())
+            if (!unknownBacklashSide(d, byId.get(ol.poseId()))) out.put(ol.poseId(), ol.residualM() / ol.robustSigmaM());
         return out;
     }
 
@@ -1232,7 +1237,8 @@ public final class Diagnoser {
                 outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                 fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
                 Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
-        List<String> under = selected.isEmpty() ? List.of() : outliersUnder(result, fit, trainAll);
+        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(result, fit, trainAll);
+        List<String> under = new ArrayList<>(beyond.keySet());
         if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
         if (LOG.isDebugEnabled())
             LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
@@ -1255,14 +1261,10 @@ public final class Diagnoser {
             List<Measurement> every = trainAll.rows().stream().filter(m -> !gross.contains(m.poseId())).toList();
             Work wa = new Work(model, gravity, every, geoLast, validate, o);
             Fit fa = wa.fit(selected, absorbedCols, last.full, null);
-            List<String> u = outliersUnder(result, fa, trainAll);
+            List<String> u = new ArrayList<>(outliersUnder(result, fa, trainAll).keySet());
             return u.isEmpty() ? u : otherFlankExplains(wa, fa, selected, u);
         };
-        Map<String, Double> sigmasUnder = new java.util.HashMap<>();
-        if (!under.isEmpty())
-            for (CalibrationResult.Outlier ol : Calibrator.outliers(fit.problem, fit.full, trainAll, Set.of(), OUTLIER_K).values())
-                sigmasUnder.put(ol.poseId(), ol.residualM() / ol.robustSigmaM());
-        return new Run(result, under, valOut, List.copyOf(gross), underEveryPose, sigmasUnder);
+        return new Run(result, under, valOut, List.copyOf(gross), underEveryPose, beyond);
     }
 
     /**
@@ -3834,18 +3836,29 @@ public final class Diagnoser {
     }
 
     /** x − U Uᵀ x for an m x rank orthonormal U. */
-    static double[] projectOut(double[] u, int rank, int m, double[] x) {
-        double[] c = new double[rank];
+    static double[] projectOut(double[] u, int rank, int m, double[] x) { return projectOut(u, rank, m, x, 1); }
+
+    /** The k columns s (m x k, row-major) less their projection on the rank orthonormal columns u (m x rank): S − U (Uᵀ S), in one pass over U. */
+    static double[] projectOut(double[] u, int rank, int m, double[] s, int k) {
+        double[] c = new double[k * rank];
         for (int i = 0; i < m; i++) {
-            double xi = x[i];
-            if (xi == 0) continue;
-            for (int k = 0; k < rank; k++) c[k] += u[i * rank + k] * xi;
+            int ui = i * rank, si = i * k;
+            for (int col = 0; col < k; col++) {
+                double x = s[si + col];
+                if (x == 0) continue;
+                int cc = col * rank;
+                for (int r = 0; r < rank; r++) c[cc + r] += u[ui + r] * x;
+            }
         }
-        double[] out = x.clone();
+        double[] out = s.clone();
         for (int i = 0; i < m; i++) {
-            double s = 0;
-            for (int k = 0; k < rank; k++) s += u[i * rank + k] * c[k];
-            out[i] -= s;
+            int ui = i * rank, si = i * k;
+            for (int col = 0; col < k; col++) {
+                int cc = col * rank;
+                double v = 0;
+                for (int r = 0; r < rank; r++) v += u[ui + r] * c[cc + r];
+                out[si + col] -= v;
+            }
         }
         return out;
     }

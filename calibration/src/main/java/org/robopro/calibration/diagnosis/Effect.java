@@ -178,6 +178,8 @@ public final class Effect {
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading, target incidence: instrumentTbase, fixed where the geometric fit put it
     private Vec3 sightAxis;                  // target incidence: the mean direction the point is seen from, flange frame (unit)
+    private Vec3 sightOrigin;                // target incidence: the instrument's origin, base frame (from instrument)
+    private Vec3[] sightAcross;              // target incidence: two unit vectors across sightAxis (acrossAxis)
     private double azimuthRef;               // instrument reading: the azimuth the data's angles are taken about (no wrap inside)
     private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
     private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
@@ -740,6 +742,8 @@ public final class Effect {
         Effect e = new Effect(Kind.TARGET_INCIDENCE, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
         e.instrument = instrumentTbase;
         e.sightAxis = axis.times(1 / axis.norm());
+        e.sightOrigin = instrumentOrigin(instrumentTbase);
+        e.sightAcross = acrossAxis(e.sightAxis);
         return e;
     }
 
@@ -749,17 +753,11 @@ public final class Effect {
     /** A target incidence's parameters: each flange axis times the monomials across, and the axis times those along. */
     static final int INCIDENCE_TERMS = 3 * INCIDENCE_ACROSS.length + INCIDENCE_ALONG.length;
 
-    /** The instrument pose (instrumentTbase) an instrument reading or a target incidence works with; null for other kinds. */
-    public Pose instrument() { return instrument; }
-
     /** The degree in s, t of a target incidence's parameter {@code i}. */
     static int incidenceDegree(int i) {
         int na = INCIDENCE_ACROSS.length;
         return i >= 3 * na ? INCIDENCE_ALONG[i - 3 * na].length() : INCIDENCE_ACROSS[i % na].length();
     }
-
-    /** The mean direction a target incidence's point is seen from (flange frame, unit); null for other kinds. */
-    public Vec3 sightAxis() { return sightAxis; }
 
     /** The instrument's origin in base axes, from instrumentTbase. */
     static Vec3 instrumentOrigin(Pose instrumentTbase) { return instrumentTbase.inverse().position(); }
@@ -776,25 +774,29 @@ public final class Effect {
                 (f.rot(0, 2) * ux + f.rot(1, 2) * uy + f.rot(2, 2) * uz) / n);
     }
 
-    /** Two unit vectors across {@code axis}, and the axis: a right-handed frame (rows). */
+    /** Two unit vectors across the unit vector {@code axis}, right-handed with it. */
     static Vec3[] acrossAxis(Vec3 axis) {
         Vec3 ref = Math.abs(axis.x()) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 1, 0);
         Vec3 e1 = axis.cross(ref);
         e1 = e1.times(1 / e1.norm());
-        return new Vec3[] {e1, axis.cross(e1), axis};
+        return new Vec3[] {e1, axis.cross(e1)};
     }
 
-    /** The angle between the direction the point is seen from and the sight axis, deg. */
-    static double incidenceAngle(Pose f, Pose instrumentTbase, Vec3 axis, double[] pointBase) {
-        Vec3 u = sightInFlange(f, instrumentOrigin(instrumentTbase), pointBase);
-        return Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, u.dot(axis)))));
+    /** A target incidence's angle between the direction the point at {@code pointBase} is seen from at joints q and its sight axis, deg. */
+    double incidenceAngle(double[] q, double[] pointBase) {
+        return incidenceAngle(sightInFlange(model.flange(q), sightOrigin, pointBase), sightAxis);
     }
 
-    /** A target incidence's regressor (3 x {@link #INCIDENCE_TERMS}, row-major, base axes) at flange pose f. */
-    static void incidenceRegressor(Pose f, Pose instrumentTbase, Vec3 axis, double[] pointBase, double[] g3) {
-        Vec3 u = sightInFlange(f, instrumentOrigin(instrumentTbase), pointBase);
-        Vec3[] e = acrossAxis(axis);
-        double a = u.dot(e[0]), b = u.dot(e[1]);
+    /** The angle between the direction {@code sight} the point is seen from (flange frame, unit) and the sight axis, deg. */
+    static double incidenceAngle(Vec3 sight, Vec3 axis) { return Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, sight.dot(axis))))); }
+
+    /**
+     * A target incidence's regressor (3 x {@link #INCIDENCE_TERMS}, row-major, base axes) at flange pose f, the instrument at
+     * {@code origin} (base frame), the sight axis and two unit vectors across it ({@link #acrossAxis}).
+     */
+    static void incidenceRegressor(Pose f, Vec3 origin, Vec3 axis, Vec3[] perp, double[] pointBase, double[] g3) {
+        Vec3 u = sightInFlange(f, origin, pointBase);
+        double a = u.dot(perp[0]), b = u.dot(perp[1]);
         double[] across = {a, b, a * a, a * b, b * b, a * a * a, a * a * b, a * b * b, b * b * b};
         double[] along = {a * a * a * a, a * a * a * b, a * a * b * b, a * b * b * b, b * b * b * b};
         int k = INCIDENCE_TERMS, na = across.length;
@@ -1465,7 +1467,7 @@ public final class Effect {
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
             case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
-            case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), instrument, sightAxis, pointBase, g3);
+            case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), sightOrigin, sightAxis, sightAcross, pointBase, g3);
             case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
             case AXIS_WOBBLE -> {
                 // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)

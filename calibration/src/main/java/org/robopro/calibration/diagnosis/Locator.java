@@ -322,13 +322,14 @@ final class Locator {
         Pose inst = t.fit.problem.instrumentOf(t.fit.full);
         Vec3 origin = Effect.instrumentOrigin(inst);
         Pose[] f = new Pose[poses];
+        Vec3[] u = new Vec3[poses];
         double mx = 0, my = 0, mz = 0;
         for (int i = 0; i < poses; i++) {
             f[i] = w.model.flange(w.rows.get(i).q());
-            Vec3 u = Effect.sightInFlange(f[i], origin, t.pointsBase[i][0]);
-            mx += u.x();
-            my += u.y();
-            mz += u.z();
+            u[i] = Effect.sightInFlange(f[i], origin, t.pointsBase[i][0]);
+            mx += u[i].x();
+            my += u[i].y();
+            mz += u[i].z();
         }
         Vec3 axis = new Vec3(mx, my, mz);
         if (!(axis.norm() > 0)) return null;
@@ -336,10 +337,11 @@ final class Locator {
         double[][] x = new double[1][poses];
         double spread = 0;
         double[][] rg = new double[poses][3 * Effect.INCIDENCE_TERMS];
+        Vec3[] across = Effect.acrossAxis(axis);
         for (int i = 0; i < poses; i++) {
-            x[0][i] = Effect.incidenceAngle(f[i], inst, axis, t.pointsBase[i][0]);
+            x[0][i] = Effect.incidenceAngle(u[i], axis);
             spread += x[0][i] * x[0][i];
-            Effect.incidenceRegressor(f[i], inst, axis, t.pointsBase[i][0], rg[i]);
+            Effect.incidenceRegressor(f[i], origin, axis, across, t.pointsBase[i][0], rg[i]);
         }
         if (!(Math.sqrt(spread / poses) >= MIN_INCIDENCE_SPREAD_DEG)) return null;
         int k = Effect.INCIDENCE_TERMS;
@@ -888,36 +890,14 @@ final class Locator {
         return p;
     }
 
-    /** A probe of the k columns s (m x k, row-major), projected out of the model's span: S − U (Uᵀ S), all columns in one pass over U. */
+    /** A probe of the k columns s (m x k, row-major), projected out of the model's span, with their norms before. */
     private static Probe finish(Diagnoser.Tester t, double[] s, int k) {
         Probe p = new Probe();
         p.k = k;
         p.n0 = new double[k];
-        int m = t.m, rank = t.rank;
-        double[] u = t.u;
-        double[] c = new double[k * rank];
-        for (int i = 0; i < m; i++) {
-            int ui = i * rank, si = i * k;
-            for (int col = 0; col < k; col++) {
-                double x = s[si + col];
-                if (x == 0) continue;
-                p.n0[col] += x * x;
-                int cc = col * rank;
-                for (int r = 0; r < rank; r++) c[cc + r] += u[ui + r] * x;
-            }
-        }
+        for (int i = 0; i < t.m; i++) for (int col = 0; col < k; col++) p.n0[col] += s[i * k + col] * s[i * k + col];
         for (int col = 0; col < k; col++) p.n0[col] = Math.sqrt(p.n0[col]);
-        double[] proj = s.clone();
-        for (int i = 0; i < m; i++) {
-            int ui = i * rank, si = i * k;
-            for (int col = 0; col < k; col++) {
-                int cc = col * rank;
-                double v = 0;
-                for (int r = 0; r < rank; r++) v += u[ui + r] * c[cc + r];
-                proj[si + col] -= v;
-            }
-        }
-        p.s = proj;
+        p.s = Diagnoser.projectOut(t.u, t.rank, t.m, s, k);
         return p;
     }
 
@@ -999,7 +979,7 @@ final class Locator {
             }
             q = nqArr;
             nq += add;
-            for (int pi = 0; pi < n; pi++) if (!used[pi]) left[pi] = projectedOut(left[pi], probes.get(pi).k, best.c.basis, add, t.m);
+            for (int pi = 0; pi < n; pi++) if (!used[pi]) left[pi] = Diagnoser.projectOut(best.c.basis, add, t.m, left[pi], probes.get(pi).k);
         }
         // Backward: a structure the later ones made redundant leaves.
         for (int k = found.size() - 1; k >= 0 && found.size() > 1; k--) {
@@ -1307,25 +1287,6 @@ final class Locator {
         Diagnoser.Candidate c = left == null ? t.testProjected(p.s, p.n0, p.k, names, q, nq, pGate)
                 : t.testProjected(left, p.n0, p.k, names, q, nq, pGate, true);
         return c.keptColumns == 0 ? null : c;
-    }
-
-    /** The k columns s (m x k, row-major) less their projection on the add orthonormal columns b (m x add): S − B (Bᵀ S). */
-    private static double[] projectedOut(double[] s, int k, double[] b, int add, int m) {
-        double[] c = new double[add * k];
-        for (int i = 0; i < m; i++)
-            for (int a = 0; a < add; a++) {
-                double bi = b[i * add + a];
-                if (bi == 0) continue;
-                for (int col = 0; col < k; col++) c[a * k + col] += bi * s[i * k + col];
-            }
-        double[] out = s.clone();
-        for (int i = 0; i < m; i++)
-            for (int a = 0; a < add; a++) {
-                double bi = b[i * add + a];
-                if (bi == 0) continue;
-                for (int col = 0; col < k; col++) out[i * k + col] -= bi * c[a * k + col];
-            }
-        return out;
     }
 
     /** RMS over the measurements (every measured point, or every distance) of the structure's fitted displacement, m. */

@@ -195,8 +195,7 @@ final class Plots {
             double[] pb = t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0];
             double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(pb)
                     : e.kind() == Effect.Kind.INSTRUMENT ? e.sightReadingOf(pb) * (e.sight() == Effect.Sight.RANGE ? 1 : 180 / Math.PI)
-                    : e.kind() == Effect.Kind.TARGET_INCIDENCE ? Effect.incidenceAngle(e.model().flange(t.w.rows.get(i).q()), e.instrument(),
-                    e.sightAxis(), pb) : Double.NaN;
+                    : e.kind() == Effect.Kind.TARGET_INCIDENCE ? e.incidenceAngle(t.w.rows.get(i).q(), pb) : Double.NaN;
             x[mi] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
             y[mi] = (nc - along) * unit;
             fx[mi] = x[mi];

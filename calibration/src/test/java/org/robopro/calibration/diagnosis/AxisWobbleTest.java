@@ -80,15 +80,6 @@ class AxisWobbleTest {
     void wobble_roundTripsThroughTheRobotFile() {
         var desc = RobotLibrary.shipped("irb2000");
         KinematicModel model = KinematicModel.build(desc);
-        Effect e = Effect.axisWobble(model, 2, new int[] {2, 3});
-        double[] v = new double[e.size()];
-        for (int i = 0; i < v.length; i++) v[i] = (i + 1) * 1e-5;
-        Effect.Term back = Effect.fromDescription(e.describe(v), model, GravityTorques.of(model, desc), "x.robot.json");
-        assertEquals(e.label(), back.effect().label());
-        double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0.2}, p = {1.2, 0.3, 0.9}, a = new double[3 * e.size()], b = new double[3 * e.size()];
-        e.positionRegressor(q, PoseConditions.NONE, p, a);
-        back.effect().positionRegressor(q, PoseConditions.NONE, p, b);
-        for (int i = 0; i < a.length; i++) assertEquals(a[i], b[i], 1e-15, "column " + i);
-        for (int i = 0; i < v.length; i++) assertEquals(v[i], back.values()[i], 0, e.parameterNames().get(i));
+        EffectTest.assertRoundTrips(Effect.axisWobble(model, 2, new int[] {2, 3}), 1e-5, model, GravityTorques.of(model, desc), PoseConditions.NONE, 1e-15);
     }
 }

@@ -21,6 +21,23 @@ import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
 
 class EffectTest {
+    /**
+     * An effect on the measured point written to the robot file with values (i + 1)·scale and read
+     * back: the same label and size, the same values, and the same columns at one pose (within tol).
+     */
+    static void assertRoundTrips(Effect e, double scale, KinematicModel model, GravityTorques g, PoseConditions cond, double tol) {
+        double[] v = new double[e.size()];
+        for (int i = 0; i < v.length; i++) v[i] = (i + 1) * scale;
+        Effect.Term back = Effect.fromDescription(e.describe(v), model, g, "x.robot.json");
+        assertEquals(e.label(), back.effect().label());
+        assertEquals(e.size(), back.effect().size());
+        double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0.2}, p = {1.2, 0.3, 0.9}, a = new double[3 * e.size()], b = new double[3 * e.size()];
+        e.positionRegressor(q, cond, p, a);
+        back.effect().positionRegressor(q, cond, p, b);
+        for (int i = 0; i < a.length; i++) assertEquals(a[i], b[i], tol, e.label() + " column " + i);
+        for (int i = 0; i < v.length; i++) assertEquals(v[i], back.values()[i], 0, e.parameterNames().get(i));
+    }
+
     private final RobotDescription robot = RobotLibrary.shipped("irb2000");
     private final KinematicModel model = KinematicModel.build(robot);
     private final GravityTorques g = new GravityTorques(model, robot.massModel().orElseThrow());

@@ -73,17 +73,7 @@ class LinkSagTest {
         RobotDescription desc = RobotLibrary.shipped("irb2400");
         KinematicModel model = KinematicModel.build(desc);
         GravityTorques g = GravityTorques.of(model, desc);
-        for (Effect e : List.of(Effect.linkSag(model, 1, true), Effect.linkSag(model, 2, false))) {
-            double[] v = new double[e.size()];
-            for (int i = 0; i < v.length; i++) v[i] = (i + 1) * 1e-5;
-            Effect.Term back = Effect.fromDescription(e.describe(v), model, g, "x.robot.json");
-            assertEquals(e.label(), back.effect().label());
-            assertEquals(e.size(), back.effect().size());
-            double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0.2}, pt = {1.2, 0.3, 0.9}, a = new double[3 * e.size()], b = new double[3 * e.size()];
-            var cond = new PoseConditions(null, Double.NaN, Double.NaN, 5.0);
-            e.positionRegressor(q, cond, pt, a);
-            back.effect().positionRegressor(q, cond, pt, b);
-            for (int i = 0; i < a.length; i++) assertEquals(a[i], b[i], 1e-15, e.label() + " column " + i);
-        }
+        for (Effect e : List.of(Effect.linkSag(model, 1, true), Effect.linkSag(model, 2, false)))
+            EffectTest.assertRoundTrips(e, 1e-5, model, g, new PoseConditions(null, Double.NaN, Double.NaN, 5.0), 1e-15);
     }
 }

@@ -52,15 +52,7 @@ class TargetIncidenceTest {
         Pose inst = Pose.translation(0.4, -2.1, 0.3).times(Pose.rotAxis(new Vec3(0.2, 0.3, 0.9).times(1 / Math.sqrt(0.94)), 0.7));
         Effect e = Effect.targetIncidence(model, inst, new Vec3(0.1, -0.2, 0.95));
         assertTrue(e.ofInstrument(), "an error of the measurement, not of the robot");
-        double[] v = new double[e.size()];
-        for (int i = 0; i < v.length; i++) v[i] = (i + 1) * 1e-6;
-        Effect.Term back = Effect.fromDescription(e.describe(v), model, GravityTorques.of(model, desc), "x.robot.json");
-        assertEquals(e.label(), back.effect().label());
-        double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0.2}, p = {1.2, 0.3, 0.9}, a = new double[3 * e.size()], b = new double[3 * e.size()];
-        e.positionRegressor(q, PoseConditions.NONE, p, a);
-        back.effect().positionRegressor(q, PoseConditions.NONE, p, b);
-        for (int i = 0; i < a.length; i++) assertEquals(a[i], b[i], 1e-12, "column " + i);
-        for (int i = 0; i < v.length; i++) assertEquals(v[i], back.values()[i], 0, e.parameterNames().get(i));
+        EffectTest.assertRoundTrips(e, 1e-6, model, GravityTorques.of(model, desc), PoseConditions.NONE, 1e-12);
     }
 
     /** The reflector's axis in the target's frame: the mean direction toward the tracker over the training poses. */
