@@ -82,6 +82,12 @@ public final class Diagnoser {
     /** Nor a holder that bends more than this under its own weight (it would be seen bending), m. */
     static final double MAX_TOOL_SAG_M = 2e-3;
     /**
+     * Largest move of the measured target on the flange between two readings taken as one campaign's
+     * (a reflector's nest knocked, a tool slipping in its clamp), m; beyond it the tool was changed.
+     * Also the bound on a displacement of the measured point with its reach, height or time.
+     */
+    static final double MAX_TARGET_STEP_M = 10e-3;
+    /**
      * Largest move of the point by one term of a reflector's error with the direction it is seen
      * from, half a radian off the mean line of sight (about a reflector's acceptance), m: a glass
      * prism's refraction there is a fraction of a millimetre.
@@ -462,7 +468,24 @@ public final class Diagnoser {
         if (under.size() > Math.max(3, 0.05 * train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
         Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
         List<String> more = appearing(without, under);
-        if (more.size() <= 1) return without.d;
+        if (more.size() <= 1) {
+            // Reported as bad readings, they are left out of the fit: that must predict the validation poses at least as well as
+            // the diagnosis with every pose in (the first run's left out ones are not beyond the rule under its model).
+            if (validate != null && !validate.rows().isEmpty()) {
+                Diagnosis every = d.outliers().isEmpty() ? d : run(robot, train, validate, o, List.of(), t0, dirSource, excluded).d;
+                double valWith = every.finalValidateRmsM(), valWithout = without.d.finalValidateRmsM();
+                if (valWithout > valWith * (1 + ALIAS_MARGIN)) {
+                    List<String> notes = new ArrayList<>(every.notes());
+                    notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as "
+                            + "bad measurements: left out, the diagnosis predicts the validation poses worse (%.4f mm against %.4f mm), "
+                            + "so nothing shows they are bad readings rather than a structure the model does not follow",
+                            under.size() == 1 ? "pose" : "poses", String.join(", ", under), OUTLIER_K, under.size() == 1 ? "is" : "are",
+                            valWithout * 1e3, valWith * 1e3));
+                    return with(every, every.outliers(), notes);
+                }
+            }
+            return without.d;
+        }
         List<String> notes = new ArrayList<>(d.notes());
         notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as bad "
                 + "measurements: left out, %d more poses come beyond the rule (%s), so they belong to a structure the model does not "
@@ -631,16 +654,57 @@ public final class Diagnoser {
     }
 
     /**
+     * {@link #otherFlankExplains(Work, Fit, List, List)} for a validation pose: with the drive's
+     * reading moved so that the model puts its output at one end of the play where it put it
+     * elsewhere, its error (each residual over its noise) falls under 4 per residual row.
+     */
+    static boolean otherFlankExplains(Work w, Fit fit, List<Effect> selected, Measurement pose) {
+        if (pose == null || pose.isPair()) return false;
+        PoseConditions c = PoseConditions.of(pose);
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            if (!e.heldByGravity()) continue;
+            if (!nearHandOver(e, pose)) continue;
+            double[] g = new double[1];
+            e.regressor(pose, c, g);
+            double b = fit.full[fit.problem.effectOffset(k)];
+            int rows = w.sixD && w.validate.hasOrientation() ? fit.problem.rowsPerPose() : fit.problem.positionRowsPerPose();
+            for (double flank : FLANKS) {
+                if (Math.abs(flank - g[0]) < 1e-9) continue;
+                double[] q = pose.q();
+                q[e.joint()] += (flank - g[0]) * b;
+                Measurement other = new Measurement(pose.poseId(), q, pose.position(), pose.orientation(), pose.directions(), pose.timeS(),
+                        pose.tempC(), pose.payloadKg(), pose.set(), pose.line(), pose.points(), pose.distance());
+                if (w.heldOut(fit, List.of(other), true) < 4 * rows) {
+                    LOG.debug("validation pose {} is explained by the other flank of {}: not an outlier", pose.poseId(), e.label());
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
      * The poses among {@code flagged} that a named backlash held by gravity's other flank explains:
      * at a pose whose gravity torque is near the holding torque (within half of it, or the
-     * hand-over's width if wider), with the output on the other side of the play (its flank term −g
-     * in place of g, a change of −2g·b of the drive's output), the pose's residual falls to the noise
+     * hand-over's width if wider), with the output at one end of the play where the model put it
+     * elsewhere (its flank term ±1/2 in place of g, a change of (±1/2 − g)·b of the drive's output:
+     * the hand-over's share, too, is the model's estimate), the pose's residual falls to the noise
      * (weighted sum of squares under 4 per residual row). Which flank a gear sits on where gravity
      * hands it over the model can only estimate (the file's masses are not the arm's, the mesh's
      * friction varies); such a pose is no bad measurement, and is not reported as one. Elsewhere the
      * flank is known and a pose keeps its verdict (a gross reading that happens to lie along the
      * play's move is still one).
      */
+    /** A lost motion's flank terms at the two ends of its play. */
+    private static final double[] FLANKS = {0.5, -0.5};
+
+    /** Whether the gravity torque on held backlash {@code e}'s drive at {@code pose} is within half its holding torque of it (or the hand-over's width, if wider). */
+    private static boolean nearHandOver(Effect e, Measurement pose) {
+        double tau = Math.abs(e.holdingTorque(pose.q(), pose.payloadKg()));
+        return Math.abs(tau - e.heldAboveNm()) <= Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
+    }
+
     static List<String> otherFlankExplains(Work w, Fit fit, List<Effect> selected, List<String> flagged) {
         List<Integer> lost = new ArrayList<>();
         for (int k = 0; k < selected.size(); k++) if (selected.get(k).heldByGravity()) lost.add(k);
@@ -656,20 +720,21 @@ public final class Diagnoser {
             for (int k : lost) {
                 if (i == null) break;
                 Effect e = selected.get(k);
-                Measurement pose = w.rows.get(i);
-                double tau = Math.abs(e.gravity().driveTorques(pose.q(), Double.isFinite(pose.payloadKg()) ? pose.payloadKg() : 0)[e.joint()]);
-                double band = Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
-                if (Math.abs(tau - e.heldAboveNm()) > band) continue;
+                if (!nearHandOver(e, w.rows.get(i))) continue;
                 double b = fit.full[fit.problem.effectOffset(k)];
                 double[] g = new double[1];
                 e.regressor(w.rows.get(i), w.conditions.get(i), g);
-                double dq = -2 * g[0] * b, ss = 0;
-                for (int a = 0; a < t.rpp; a++) {
-                    int row = i * t.rpp + a;
-                    double r = fit.r[row] + t.endDQ[0][row * t.dof + e.joint()] * dq;
-                    ss += r * r;
+                for (double flank : FLANKS) {
+                    if (Math.abs(flank - g[0]) < 1e-9) continue;
+                    double dq = (flank - g[0]) * b, ss = 0;
+                    for (int a = 0; a < t.rpp; a++) {
+                        int row = i * t.rpp + a;
+                        double r = fit.r[row] + t.endDQ[0][row * t.dof + e.joint()] * dq;
+                        ss += r * r;
+                    }
+                    if (ss < 4 * t.rpp) explained = true;
                 }
-                if (ss < 4 * t.rpp) { explained = true; break; }
+                if (explained) break;
             }
             if (explained) LOG.debug("pose {} is explained by the other flank of a lost motion: not an outlier", id);
             else out.add(id);
@@ -1011,27 +1076,32 @@ public final class Diagnoser {
                     + " needed a fallback of its angle (a smooth curve or a step) as well, so it is not that family's alone");
             fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
         }
-        // Likewise where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
-        // joints, and the fallback holds j's scale error and the coupling of j from k (its linear terms), so a claim
-        // of j's own angle (scale, harmonics) or of k's is not that family's alone; the fallback is then re-tested so
-        // that its terms, left to the family while it was there, are its own again.
-        for (int k = selected.size() - 1; k >= 0; k--) {
-            Effect e = selected.get(k);
-            Effect pair = selected.stream().filter(x -> x.kind() == Effect.Kind.PAIR && x.joint() == e.joint()
-                    && (e.kind() == Effect.Kind.SCALE || e.kind() == Effect.Kind.PERIODIC
-                    || e.kind() == Effect.Kind.COUPLING && e.source() == x.source())).findFirst().orElse(null);
-            if (pair == null) continue;
-            aliasNotes.add(e.label() + " is not claimed: joint " + (e.joint() + 1) + "'s error needed the two-joint fallback "
-                    + pair.label() + " as well, which holds this family's shape, so it is not that family's alone");
-            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
-            fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
-            k = selected.size();
-        }
+        fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
         fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
+        List<Effect> claimed = selected.stream().filter(e -> !e.isFallback()).toList();
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
+        // (a two-joint fallback the claim check put in a withdrawn family's place)
+        fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
+        // What the withdrawn families held and the one fallback in each one's place does not: their own fallbacks and the
+        // located structures' of the same variables, added while they hold on held-out data.
+        // (a family a two-joint fallback so added holds leaves in turn, and its own fallbacks are tried for it)
+        for (int again = 0; again < 2 && claimed.stream().anyMatch(e -> !selected.contains(e)); again++) {
+            List<Effect> gone = claimed.stream().filter(e -> !selected.contains(e)).toList();
+            Map<String, Effect> leftFor = new LinkedHashMap<>();
+            for (Effect e : gone) for (Effect f : ownFallbacks(e, rows, model)) leftFor.putIfAbsent(f.label(), f);
+            for (Effect f : rivals.values()) if (gone.stream().anyMatch(e -> sameVariable(e, f))) leftFor.putIfAbsent(f.label(), f);
+            int before = selected.size();
+            fit = fallbacksForWhatIsLeft(w, fit, selected, absorbedCols, steps, leftFor.values(), aliasNotes);
+            if (selected.size() == before) break;
+            // the families still named are judged again beside what was added
+            int families = (int) selected.stream().filter(e -> !e.isFallback()).count();
+            fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
+            fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
+            if (selected.stream().filter(e -> !e.isFallback()).count() == families) break;
+        }
         if (selected.stream().anyMatch(e -> e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow())) {
             // a step of a joint's reading that took a withdrawn family's place may be a play held by gravity, as above
             List<String> before = selected.stream().map(Effect::label).toList();
@@ -1233,15 +1303,6 @@ public final class Diagnoser {
         double posSq = 0;
         for (int i = 0; i < fit.m; i++) if (i % rppF < posRows) posSq += fit.r[i] * fit.r[i];
         double sigmaFinal = Math.sqrt(posSq / Math.max(1, (double) fit.m / rppF * posRows * (fit.m - fit.nf) / fit.m)) * w.sigmaPos;
-        Diagnosis result = new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
-                outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
-                fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
-                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
-        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(result, fit, trainAll);
-        List<String> under = new ArrayList<>(beyond.keySet());
-        if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
-        if (LOG.isDebugEnabled())
-            LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
         // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them); with a
         // structure located and left, a few gross readings only.
         List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 ? List.of()
@@ -1253,7 +1314,32 @@ public final class Diagnoser {
             for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
             org.robopro.kinematics.Pose tool = fit.problem.toolOf(fit.full);
             valOut.removeIf(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool) || inStepGap(selected, byId.get(ol.poseId()), rows));
+            // nor is one the play's other flank explains where gravity hands the gear over: the model's miss, said as such
+            Fit at = fit;
+            List<String> handedOver = valOut.stream().map(CalibrationResult.Outlier::poseId)
+                    .filter(id -> otherFlankExplains(w, at, selected, byId.get(id))).toList();
+            if (!handedOver.isEmpty()) {
+                valOut.removeIf(ol -> handedOver.contains(ol.poseId()));
+                List<Measurement> rest = w.validate.rows().stream().filter(m -> !handedOver.contains(m.poseId())).toList();
+                notes.add(String.format(Locale.ROOT, "validation %s %s %s where the gravity torque hands the gear of a play held by "
+                        + "gravity from one flank to the other: which flank it sits on there the model cannot tell (the masses are "
+                        + "estimates, the mesh's friction varies), and %s by about the play. %s no bad %s and %s in the validation error "
+                        + "(%.4f mm; %.4f mm without %s)", handedOver.size() == 1 ? "pose" : "poses", String.join(", ", handedOver),
+                        handedOver.size() == 1 ? "lies" : "lie", handedOver.size() == 1 ? "it misses" : "they miss",
+                        handedOver.size() == 1 ? "It is" : "They are", handedOver.size() == 1 ? "reading" : "readings",
+                        handedOver.size() == 1 ? "stays" : "stay", w.validateRms(fit) * 1e3,
+                        rest.isEmpty() ? Double.NaN : w.heldOut(fit, rest, false) * 1e3, handedOver.size() == 1 ? "it" : "them"));
+            }
         }
+        Diagnosis result = new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
+                outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
+                fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
+                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
+        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(result, fit, trainAll);
+        List<String> under = new ArrayList<>(beyond.keySet());
+        if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
+        if (LOG.isDebugEnabled())
+            LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
         Fit last = fit;
         CalibrationResult geoLast = geo;
         java.util.function.Supplier<List<String>> underEveryPose = () -> {
@@ -1685,6 +1771,11 @@ public final class Diagnoser {
     static final double[] HELD_WIDTHS = {0, 0.25, 0.5};
     /** Factors of a file mass tried when re-estimating the masses of a backlash held by gravity. */
     static final double[] HELD_MASS_SCALES = {0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4};
+    /**
+     * The same for masses estimated from the link lengths ({@link GravityTorques#fromLengths}), which
+     * may be off by several times (a forearm's wrist motors sit behind its axis, not along it).
+     */
+    static final double[] HELD_LENGTH_MASS_SCALES = {0.25, 0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0};
 
     /** The holding torque that leaves {@code share} of the poses (|τ| given) free: halfway between two poses' torques. */
     static double heldTorqueAt(double[] absTau, double share) {
@@ -1701,12 +1792,17 @@ public final class Diagnoser {
      */
     private static double heldPress(Tester t, int k, int j, GravityTorques gravity, double[] scales, double share, double width,
                                     List<Measurement> rows, List<PoseConditions> conds) {
+        double nm = heldTorqueAt(heldTorques(gravity, scales, rows, j), share);
+        if (!(nm > 0)) return Double.POSITIVE_INFINITY;
+        return t.pressReplacing(k, Effect.heldByGravity(j, gravity, nm, width, scales), conds);
+    }
+
+    /** |τ| of drive {@code j} at every row, the masses scaled by {@code scales} (null: as given). */
+    private static double[] heldTorques(GravityTorques gravity, double[] scales, List<Measurement> rows, int j) {
         GravityTorques g = scales == null ? gravity : gravity.withMassScales(scales);
         double[] tau = new double[rows.size()];
         for (int i = 0; i < tau.length; i++) tau[i] = Math.abs(g.driveTorques(rows.get(i).q(), rows.get(i).payloadKg())[j]);
-        double nm = heldTorqueAt(tau, share);
-        if (!(nm > 0)) return Double.POSITIVE_INFINITY;
-        return t.pressReplacing(k, Effect.heldByGravity(j, gravity, nm, width, scales), conds);
+        return tau;
     }
 
     /**
@@ -1745,8 +1841,11 @@ public final class Diagnoser {
      * form (one effect, one play) is named, and the notes say so and what to measure.
      */
     private static Fit heldByGravity(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                     GravityTorques gravity, List<Measurement> rows, List<String> notes, List<String> recs) {
-        if (gravity == null || gravity.massesUnknown()) return fit;
+                                     GravityTorques fileGravity, List<Measurement> rows, List<String> notes, List<String> recs) {
+        if (fileGravity == null) return fit;
+        // without the file's masses, where the arm's weight acts is estimated from its lengths (the holding torque's size
+        // is then only that estimate's; which flank, and where the hand-over lies, is re-estimated from the data)
+        GravityTorques gravity = fileGravity.massesUnknown() ? GravityTorques.fromLengths(w.model) : fileGravity;
         for (int j = 0; j < w.model.dof(); j++) {
             final int jj = j;
             // (a lost motion that builds up over the move may stand in for it: the wind-up's shorter lags after short
@@ -1795,7 +1894,7 @@ public final class Diagnoser {
                         if (m == gravity.payloadIndex() || gravity.massKg(m) == 0 || !bears[m]) continue;
                         double keep = sc[m];
                         double bestF = keep;
-                        for (double f : HELD_MASS_SCALES) {
+                        for (double f : gravity.fromLengths() ? HELD_LENGTH_MASS_SCALES : HELD_MASS_SCALES) {
                             sc[m] = f;
                             double p = heldPress(bt, k, j, gravity, sc, best[1], best[2], rows, w.conditions);
                             if (p < pr) { pr = p; bestF = f; }
@@ -1812,9 +1911,7 @@ public final class Diagnoser {
                 }
             }
             double bestPress = best[0], bestWidth = best[2];
-            GravityTorques gs = scales == null ? gravity : gravity.withMassScales(scales);
-            double[] tau = new double[rows.size()];
-            for (int i = 0; i < tau.length; i++) tau[i] = Math.abs(gs.driveTorques(rows.get(i).q(), rows.get(i).payloadKg())[j]);
+            double[] tau = heldTorques(gravity, scales, rows, j);
             double bestNm = heldTorqueAt(tau, best[1]);
             LOG.debug("held by gravity j{}: above {} N·m ± {}, masses {}: PRESS {} against {}", j + 1, bestNm, bestWidth,
                     scales == null ? "file" : Arrays.toString(scales), bestPress, own);
@@ -1857,7 +1954,7 @@ public final class Diagnoser {
                 double full = ft.pressFull();
                 for (int i = 0; i < selected.size() && !again; i++) {
                     Effect o = selected.get(i);
-                    if (o == held || o.isFallback() || o.joint() != j || o.target() != Effect.Target.DRIVE) continue;
+                    if (o == held || o.isFallback() && o.kind() != Effect.Kind.ANGLE_STEP || o.joint() != j || o.target() != Effect.Target.DRIVE) continue;
                     double without = ft.pressReplacing(i, null, w.conditions);
                     double[] pv = new double[1];
                     boolean weak = w.weakest(fit, selected, thr, x -> x == o, pv) >= 0;
@@ -2003,8 +2100,8 @@ public final class Diagnoser {
                             + "joints before it, so joint %d's angle has no path to it; the structure is an error of joint %d that "
                             + "follows joint %d", e.label(), e.joint() + 1, e.source() + 1, e.joint() + 1, e.source() + 1);
                 } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress)
-                        || best != null && besideAnother(e, selected) && nestedTie(best, own, pressOwn, bestPress)
-                        && pressOwn >= bestPress * (1 - ALIAS_MARGIN))
+                        || best != null && (besideAnother(e, selected) || sharedWithAnotherDrive(e, selected, located, at, w))
+                        && nestedTie(best, own, pressOwn, bestPress) && pressOwn >= bestPress * (1 - ALIAS_MARGIN))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
@@ -2199,6 +2296,111 @@ public final class Diagnoser {
     static boolean besideAnother(Effect e, List<Effect> selected) {
         return e.kind() == Effect.Kind.PERIODIC
                 && selected.stream().anyMatch(x -> x != e && !x.isFallback() && x.joint() == e.joint() && x.kind() != Effect.Kind.PERIODIC);
+    }
+
+    /**
+     * Whether fallback {@code f} is a shape of what family {@code e} acts through: for a family of a
+     * drive, that joint's own error or another drive's that follows its angle; for one of the
+     * measured point (thermal growth, a drift), a displacement of the point.
+     */
+    static boolean sameVariable(Effect e, Effect f) {
+        int j = e.joint();
+        if (j < 0) return f.joint() < 0 && f.kind() != Effect.Kind.INSTRUMENT;
+        return f.joint() == j || f.angleJoint() == j || f.kind() == Effect.Kind.PAIR && f.source() == j;
+    }
+
+    /**
+     * Fallbacks added one at a time, the one that lowers the leave-one-pose-out error most, while it
+     * is significant (Bonferroni over the candidates tried, at the search's α), lowers that error by
+     * more than {@link #ALIAS_MARGIN} and, with validation poses, lowers their error too. Once the
+     * claim check has withdrawn families, the one fallback put in each one's place may leave part
+     * of what it held (a load across two joints: a shape of each); these model it. None is a claim.
+     */
+    private static Fit fallbacksForWhatIsLeft(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
+                                              List<Step> steps, java.util.Collection<Effect> candidates, List<String> notes) {
+        for (int round = 0; round < MAX_LOCATED; round++) {
+            Tester t = w.tester(fit);
+            double press = t.pressFull();
+            List<Candidate> cs = new ArrayList<>();
+            for (Effect f : candidates) {
+                if (!f.isFallback() || selected.stream().anyMatch(x -> x.label().equals(f.label()))) continue;
+                Candidate c = t.test(f, w.conditions);
+                if (c.keptColumns > 0) cs.add(c);
+            }
+            Candidate best = null;
+            for (Candidate c : cs) {
+                c.threshold = w.o.alpha() / Math.max(1, cs.size());
+                if (c.p < c.threshold && c.pressAfter < press * (1 - ALIAS_MARGIN) && (best == null || c.pressAfter < best.pressAfter)) best = c;
+            }
+            if (best == null) break;
+            double valBefore = w.validateError(fit);
+            selected.add(best.effect);
+            absorbedCols.put(best.effect, best.absorbedMask);
+            Fit g = w.fit(selected, absorbedCols, fit.full, best);
+            if (w.hasValidation() && !(w.validateError(g) < valBefore)) {
+                absorbedCols.remove(selected.remove(selected.size() - 1));
+                break;
+            }
+            steps.add(new Step(best, g.trainRms, w.validateRms(g)));
+            LOG.debug("left by the withdrawn families: {} (PRESS {} -> {})", best.effect.label(), press, best.pressAfter);
+            notes.add(String.format(Locale.ROOT, "%s models what the withdrawn families' fallbacks left (leave-one-pose-out error "
+                    + "%.1f against %.1f)", best.effect.label(), best.pressAfter, press));
+            fit = g;
+        }
+        return fit;
+    }
+
+    /**
+     * Where the two-joint fallback of drive j with joint k was needed: joint j's error depends on two
+     * joints, and the fallback holds j's scale error and the coupling of j from k (its linear terms),
+     * so a claim of j's own angle (scale, harmonics) or of k's is not that family's alone; the
+     * fallback is then re-tested so that its terms, left to the family while it was there, are its
+     * own again.
+     */
+    private static Fit pairNeeded(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                  List<String> aliasNotes) {
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            Effect e = selected.get(k);
+            Effect pair = selected.stream().filter(x -> x.kind() == Effect.Kind.PAIR && x.joint() == e.joint()
+                    && (e.kind() == Effect.Kind.SCALE || e.kind() == Effect.Kind.PERIODIC
+                    || e.kind() == Effect.Kind.COUPLING && e.source() == x.source())).findFirst().orElse(null);
+            if (pair == null) continue;
+            aliasNotes.add(e.label() + " is not claimed: joint " + (e.joint() + 1) + "'s error needed the two-joint fallback "
+                    + pair.label() + " as well, which holds this family's shape, so it is not that family's alone");
+            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
+            fit = replaceEffect(w, fit, selected, absorbedCols, steps, selected.indexOf(pair), pair, false);
+            k = selected.size();
+        }
+        return fit;
+    }
+
+    /**
+     * Whether a family of drive j sits beside a structure of another drive i that follows joint j's
+     * angle and that no named coupling of i from j explains: a two-joint error of drive i with
+     * joint j, or drive i's smooth error following joint j, located or in the model. One load across
+     * the joints makes both (a dress pack's tension, winding and bending twist every wrist drive
+     * through its compliance: a spring bending over joint 5 alone gives joint 5 an error linear in
+     * its angle, a scale error's form), so a tie of the family with its own fallback is not decided
+     * for the family; the fallback models the shape. The structure must be there beside the model
+     * fitted in {@code at}: one in the model lowers its leave-one-pose-out error by more than
+     * {@link #ALIAS_MARGIN}, one located is significant beside it.
+     */
+    static boolean sharedWithAnotherDrive(Effect e, List<Effect> selected, List<Effect> located, Tester at, Work w) {
+        if (e.target() != Effect.Target.DRIVE || e.joint() < 0 || e.kind() == Effect.Kind.COUPLING) return false;
+        int j = e.joint();
+        double full = Double.NaN;
+        for (Effect f : java.util.stream.Stream.concat(selected.stream(), located.stream()).toList()) {
+            boolean follows = f.joint() != j && (f.kind() == Effect.Kind.PAIR && f.source() == j
+                    || f.kind() == Effect.Kind.SMOOTH && f.angleJoint() == j);
+            if (!follows || selected.stream().anyMatch(x -> x.kind() == Effect.Kind.COUPLING && x.joint() == f.joint() && x.source() == j))
+                continue;
+            int k = selected.indexOf(f);
+            if (k >= 0) {
+                if (Double.isNaN(full)) full = at.pressFull();
+                if (at.pressReplacing(k, null, null) > full * (1 + ALIAS_MARGIN)) return true;
+            } else if (selected.stream().noneMatch(x -> x.label().equals(f.label())) && significantBeside(at, f, w)) return true;
+        }
+        return false;
     }
 
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
@@ -3120,10 +3322,14 @@ public final class Diagnoser {
          * weighted}, the sum of squared residuals each over its noise σ; else the measurements' RMS, m.
          */
         private double validation(Fit f, boolean weighted) {
-            if (!hasValidation()) return Double.NaN;
+            return hasValidation() ? heldOut(f, validate.rows(), weighted) : Double.NaN;
+        }
+
+        /** {@link #validation} of held-out {@code poses} (rows of the validation set, or ones made from them). */
+        double heldOut(Fit f, List<Measurement> poses, boolean weighted) {
             boolean six = sixD && validate.hasOrientation();
             double[] full = six == sixD ? f.full : dropToolRotation(f.full, f.problem.toolOffset());
-            IdentificationProblem q = new IdentificationProblem(model, validate.rows(), six, instrument, f.problem.effects(), full);
+            IdentificationProblem q = new IdentificationProblem(model, poses, six, instrument, f.problem.effects(), full);
             if (weighted) q.setSigmas(sigmaPos, sigmaRot);
             else q.setSigmas(1, 1);
             double[] r = new double[q.residualCount()];
@@ -3931,11 +4137,18 @@ public final class Diagnoser {
             case THERMAL_LINK -> {
                 boolean ok = true;
                 int nl = e.warms() ? v.length / 2 : v.length;
-                for (int i = 0; i < v.length; i++)
-                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, i < nl ? MAX_LINK_ALPHA : MAX_LINK_ALPHA * MAX_WARM_K))
-                        ok = false;
+                // A link that lags the air moves through less of the air's span, so per kelvin of its own lagged temperature
+                // it may grow more: the bound is on its growth over the campaign, at most MAX_LINK_ALPHA per kelvin of the air's.
+                double[] taus = e.lagTaus();
+                ThermalLag lag = e.lag();
+                for (int i = 0; i < v.length; i++) {
+                    double max = i < nl ? MAX_LINK_ALPHA : MAX_LINK_ALPHA * MAX_WARM_K;
+                    if (i < nl && lag != null && taus[i] > 0 && lag.span(taus[i]) > 0) max *= Math.max(1, lag.span(0) / lag.span(taus[i]));
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, max)) ok = false;
+                }
                 c.plausible = ok;
-                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K%s", MAX_LINK_ALPHA,
+                c.plausibility = String.format(Locale.ROOT, "every link's coefficient positive and < %.0e /K%s%s", MAX_LINK_ALPHA,
+                        e.lags() ? " of the air's span" : "",
                         e.warms() ? String.format(Locale.ROOT, ", its warm-up's growth positive and < %.0e", MAX_LINK_ALPHA * MAX_WARM_K) : "");
             }
             case DRIFT -> {
@@ -3998,6 +4211,19 @@ public final class Diagnoser {
                 c.plausible = overlaps(v[0], sd[0], -MAX_COUPLING, MAX_COUPLING);
                 c.plausibility = String.format(Locale.ROOT, "|coupling| %.3g < %.0e", Math.abs(v[0]), MAX_COUPLING);
             }
+            case TARGET_STEP -> {
+                double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                c.plausible = d < MAX_TARGET_STEP_M;
+                c.plausibility = String.format(Locale.ROOT, "the target's move %.4f mm < %.0f mm", d * 1e3, MAX_TARGET_STEP_M * 1e3);
+            }
+            case POINT_SMOOTH -> {
+                // a B-spline's curve lies within its coefficients' range, so the largest bounds the displacement
+                double d = 0;
+                for (double x : v) d = Math.max(d, Math.abs(x));
+                c.plausible = d < MAX_TARGET_STEP_M;
+                c.plausibility = String.format(Locale.ROOT, "the point's displacement within %.4f mm < %.0f mm", d * 1e3, MAX_TARGET_STEP_M * 1e3);
+            }
+            default -> { }
         }
     }
 

@@ -369,6 +369,11 @@ public final class Effect {
     /** The half-width of a backlash held by gravity's hand-over, a share of {@link #heldAboveNm()} (0: sharp). */
     public double heldWidth() { return preloadWidth; }
 
+    /** The gravity torque on a backlash held by gravity's drive at {@code q} with {@code payloadKg} (NaN: none), N·m. */
+    public double holdingTorque(double[] q, double payloadKg) {
+        return gravity.driveTorques(q, Double.isFinite(payloadKg) ? payloadKg : 0)[joint];
+    }
+
     /** The share of the play held by gravity at a gravity torque τ (N·m): 0 free, 1 held. */
     double heldShare(double tau) {
         double a = Math.abs(tau);
@@ -380,7 +385,7 @@ public final class Effect {
     /** The lost motion's regressor for one pose: held on the flank gravity pushes it to, or lagging the last motion. */
     private double lostMotion(double[] q, PoseConditions c) {
         if (!heldByGravity()) return -0.5 * c.direction(joint); // the output lags: q_out = q − (b/2)·dir
-        double tau = gravity.driveTorques(q, c.payloadKg())[joint];
+        double tau = holdingTorque(q, c.payloadKg());
         double s = heldShare(tau);
         return s * 0.5 * Math.signum(tau) - (1 - s) * 0.5 * c.direction(joint);
     }
@@ -1326,7 +1331,8 @@ public final class Effect {
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
                     Math.toDegrees(buildUp)) : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
-                    preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", massScales != null ? ", masses re-estimated" : "") : "");
+                    preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
+                    + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
             case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
@@ -1763,6 +1769,7 @@ public final class Effect {
                 if (heldByGravity()) {
                     p.put("held_above_nm", preloadNm);
                     p.put("held_width", preloadWidth);
+                    if (gravity.fromLengths()) p.put("held_masses_from_lengths", 1.0);
                     if (massScales != null)
                         putMassScales(p, "held_mass_scale_");
                 }
@@ -1814,12 +1821,14 @@ public final class Effect {
             case BACKLASH -> {
                 if (ps.containsKey("held_above_nm")) {
                     double t = require(d, "held_above_nm", file);
-                    if (gravity == null || gravity.massesUnknown())
+                    // the masses it was fitted with: the robot file's, or estimated from the link lengths when the file had none
+                    GravityTorques g = ps.containsKey("held_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
+                    if (g == null || g.massesUnknown())
                         throw new InputException(file, 0, 0, "mass_model", "backlash held by gravity needs the robot's mass_model");
                     if (!(t >= 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_above_nm", "must be >= 0, got " + t);
                     double wd = ps.containsKey("held_width") ? require(d, "held_width", file) : 0;
                     if (!(wd >= 0 && wd < 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_width", "must be in [0, 1), got " + wd);
-                    yield heldByGravity(js.get(0) - 1, gravity, t, wd, massScales(d, gravity, "held_mass_scale_", file));
+                    yield heldByGravity(js.get(0) - 1, g, t, wd, massScales(d, g, "held_mass_scale_", file));
                 }
                 if (!ps.containsKey("build_up_rad")) yield backlash(js.get(0) - 1);
                 double x0 = require(d, "build_up_rad", file);

@@ -24,6 +24,7 @@ public final class GravityTorques {
     private final Vec3 gravity;
     private final int payloadSlot;  // index of the payload entry (mass set per pose)
     private final String[] names;   // the unknown-mass form's column names; null for a file's mass model
+    private final String[] massNames; // masses estimated from the link lengths ({@link #fromLengths}): their names; null otherwise
 
     /** Links (1-based frames) whose unknown first moments stand for the arm's weight when the file has no mass model. */
     static final int UNKNOWN_MASS_LINKS = 3;
@@ -31,7 +32,8 @@ public final class GravityTorques {
     static final double UNKNOWN_MASS_LEVER_M = 0.5;
 
     private GravityTorques(KinematicModel model, int[] frameIndex, double[] mass, Vec3[] local, Vec3 gravity, int payloadSlot,
-                           String[] names) {
+                           String[] names, String[] massNames) {
+        this.massNames = massNames;
         this.model = model;
         this.frameIndex = frameIndex;
         this.mass = mass;
@@ -78,7 +80,7 @@ public final class GravityTorques {
                 loc[k] = offs[a];
                 names[k] = "link" + i + "_" + axis[a];
             }
-        return new GravityTorques(model, fi, m, loc, new Vec3(0, 0, -9.80665), 0, names);
+        return new GravityTorques(model, fi, m, loc, new Vec3(0, 0, -9.80665), 0, names, null);
     }
 
     /** Whether the masses are unknown ({@link #massesUnknown(KinematicModel)}): only the payload's coefficient is a compliance. */
@@ -88,6 +90,58 @@ public final class GravityTorques {
     public int payloadIndex() { return payloadSlot; }
 
     public GravityTorques(KinematicModel model, MassModel masses) {
+        this(model, masses, null);
+    }
+
+    /** Linear density of a link taken as a uniform beam when the masses are estimated from the lengths, kg/m. */
+    static final double LINK_KG_PER_M = 50;
+    /** Mass taken at the last joint's point for the wrist and hand when the masses are estimated from the lengths, kg. */
+    static final double HAND_KG = 5;
+    /** Distance either side of a beam's centre at which its two halves are put when the masses are estimated from the lengths, m. */
+    static final double HALF_OFFSET_M = 0.1;
+
+    /**
+     * A rough mass model from the arm's geometry alone, for a robot file without one: each link a
+     * uniform beam from its joint's point (the robot file's point on the axis) to the next joint's
+     * (to the flange for the last), {@link #LINK_KG_PER_M} per metre, and {@link #HAND_KG} at the
+     * last joint's point for the wrist and hand. A cast arm of an industrial robot weighs some tens
+     * of kilograms per metre of reach. Each beam's weight is split in two halves {@link
+     * #HALF_OFFSET_M} either side of its centre, across the beam in the plane the shoulder's pitch
+     * axis (joint 2's) turns it in: re-estimating the halves' sizes ({@link #withMassScales}) moves
+     * the link's centre off the line between its joints (a forearm's wrist motors sit behind the
+     * elbow, an upper arm's casting bulges forward), which sets where each joint's gravity torque
+     * changes sign. The torques stated are this model's, an estimate.
+     */
+    public static GravityTorques fromLengths(KinematicModel model) {
+        var joints = model.description().joints();
+        int n = joints.size();
+        Vec3 pitch = n >= 2 ? joints.get(1).axis() : null;
+        List<LinkMass> links = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            Vec3 a = joints.get(k).point(), b = k + 1 < n ? joints.get(k + 1).point() : model.description().flange().origin();
+            Vec3 along = b.minus(a);
+            double len = along.norm();
+            if (len < 0.01) continue;
+            Vec3 mid = a.plus(b).times(0.5), across = pitch == null ? Vec3.ZERO : along.cross(pitch);
+            double kg = LINK_KG_PER_M * len;
+            if (across.norm() < 1e-6 * len) {
+                links.add(new LinkMass(k + 1, "link" + (k + 1), kg, mid));
+                continue;
+            }
+            Vec3 off = across.times(HALF_OFFSET_M / across.norm());
+            links.add(new LinkMass(k + 1, "link" + (k + 1) + "_a", kg / 2, mid.plus(off)));
+            links.add(new LinkMass(k + 1, "link" + (k + 1) + "_b", kg / 2, mid.minus(off)));
+        }
+        links.add(new LinkMass(n, "hand", HAND_KG, joints.get(n - 1).point()));
+        return new GravityTorques(model, new MassModel(links, 0, Vec3.ZERO, null), links.stream().map(LinkMass::name).toArray(String[]::new));
+    }
+
+    /** Whether the masses are {@link #fromLengths(KinematicModel)}'s estimate, not a robot file's. */
+    public boolean fromLengths() { return massNames != null; }
+
+    private GravityTorques(KinematicModel model, MassModel masses, String[] lengthNames) {
+        this.massNames = lengthNames == null ? null : java.util.Arrays.copyOf(lengthNames, lengthNames.length + 1);
+        if (massNames != null) massNames[lengthNames.length] = "payload";
         this.names = null;
         this.model = model;
         int n = model.dof();
@@ -172,14 +226,16 @@ public final class GravityTorques {
         if (scale.length != mass.length) throw new IllegalArgumentException(mass.length + " scales needed, got " + scale.length);
         double[] m = mass.clone();
         for (int k = 0; k < m.length; k++) if (k != payloadSlot) m[k] *= scale[k];
-        return new GravityTorques(model, frameIndex, m, local, gravity, payloadSlot, names);
+        return new GravityTorques(model, frameIndex, m, local, gravity, payloadSlot, names, massNames);
     }
 
     /** The number of masses (the file's links, then the payload). */
     public int massCount() { return mass.length; }
 
-    /** Name of mass k: "link3" (the mass the file puts on joint 3's link) or "payload". */
-    public String massName(int k) { return names != null ? names[k] : k == payloadSlot ? "payload" : "link" + frameIndex[k]; }
+    /** Name of mass k: "link3" (the mass the file puts on joint 3's link), "payload"; {@link #fromLengths}'s as it names them ("link2_a", "hand"). */
+    public String massName(int k) {
+        return names != null ? names[k] : massNames != null ? massNames[k] : k == payloadSlot ? "payload" : "link" + frameIndex[k];
+    }
 
     /** The file's value of mass k, kg (0 for the payload, which is given per pose). */
     public double massKg(int k) { return mass[k]; }

@@ -129,7 +129,7 @@ final class Plots {
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
                     ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.lastMove(row)))
-                    : e.heldByGravity() ? e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()] : c.direction(e.joint());
+                    : e.heldByGravity() ? e.holdingTorque(row.q(), c.payloadKg()) : c.direction(e.joint());
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
         };

@@ -78,6 +78,17 @@ public final class ThermalLag {
     }
 
     /**
+     * How far the temperature of a body with time constant {@code tauS} moves over the campaign
+     * (its largest less its smallest, K); the air's own with τ = 0.
+     */
+    public double span(double tauS) {
+        double[] b = tauS > 0 ? lagged.computeIfAbsent(tauS, this::filter) : temp;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (double x : b) { lo = Math.min(lo, x); hi = Math.max(hi, x); }
+        return hi - lo;
+    }
+
+    /**
      * The lagged series: with the air linear between readings, T_air = T_{i−1} + s (t − t_{i−1}),
      * the body's excess e = T_b − T_air obeys de/dt = −e/τ − s, so after h = t_i − t_{i−1}
      * e_i = e_{i−1} exp(−h/τ) − s τ (1 − exp(−h/τ)).

@@ -182,13 +182,15 @@ final class Words {
                     e.usesTimeProxy() ? "hour" : "K", 1e3 * v[0], 1e3 * v[1], 1e3 * v[2], e.usesTimeProxy() ? "time" : "temperature");
             case BACKLASH -> e.heldByGravity()
                     ? String.format(Locale.ROOT, "Joint %d has backlash of %.4f ± %.4f deg held on one flank by gravity except "
-                    + "where the gravity torque on it is small: where the torque is above %.1f N·m%s (robot file's masses) the "
+                    + "where the gravity torque on it is small: where the torque is above %.1f N·m%s (%s) the "
                     + "output sits half the play ahead in the direction gravity pushes it, whatever the last motion; below it "
                     + "the output lags the motor-side encoder by half the play behind the direction it last moved in%s "
                     + "(directions %s). The holding torque was chosen by the leave-one-pose-out error.", e.joint() + 1,
                     Math.toDegrees(v[0]), Math.toDegrees(s[0]), e.heldAboveNm(), e.heldWidth() > 0 ? String.format(Locale.ROOT,
                     " (handed over gradually from %.1f to %.1f N·m)", (1 - e.heldWidth()) * e.heldAboveNm(),
-                    (1 + e.heldWidth()) * e.heldAboveNm()) : "", at, dirs.words)
+                    (1 + e.heldWidth()) * e.heldAboveNm()) : "", e.gravity().fromLengths() ? "the robot file has no masses: "
+                    + "the arm's links taken as uniform beams of its lengths, so the torque is an estimate; give the robot file a "
+                    + "mass_model" : "robot file's masses", at, dirs.words)
                     : e.buildsUp()
                     ? String.format(Locale.ROOT, "Joint %d has lost motion that builds up over the move (friction wind-up): after a "
                     + "long move its output lags the motor-side encoder by half of %.4f ± %.4f deg behind the direction it last "

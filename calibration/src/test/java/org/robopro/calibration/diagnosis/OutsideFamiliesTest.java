@@ -46,6 +46,27 @@ class OutsideFamiliesTest {
         assertTrue(d.geometricValidateRmsM() > 1.5 * c.floorM(), "the structure matters: " + d.geometricValidateRmsM());
     }
 
+    /**
+     * A structure located with no family selected beside it (none to withdraw, so no claim check
+     * puts a fallback in its place) is modelled by its fallback all the same: the measured target
+     * knocked on the flange (its step at a time), the measured point sagging with its reach (its
+     * displacement along reach). Each was located and left at its size (4.1 and 1.7 x the floor).
+     */
+    @Test
+    void structureLocatedWithNothingBeside_isModelledByItsFallback() {
+        Object[][] cases = {{"outside: measured target knocked mid-campaign", 20261126L, Effect.Kind.TARGET_STEP, 0.4},
+                {"outside: measured point sags with reach, 50 poses", 20261124L, Effect.Kind.POINT_SMOOTH, 0.85}};
+        for (Object[] k : cases) {
+            WorldCampaigns.Sim c = world((String) k[0], (Long) k[1]);
+            Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
+            namesNoFamily(d);
+            assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == k[2]), k[0] + ": " + d.effects());
+            // and the fallback holds on the validation poses: well below the geometry's error there
+            assertTrue(d.finalValidateRmsM() < (Double) k[3] * d.geometricValidateRmsM(), k[0] + ": " + d.finalValidateRmsM() / c.floorM() + " x floor, geometry alone "
+                    + d.geometricValidateRmsM() / c.floorM());
+        }
+    }
+
     @Test
     void pointSaggingWithReach_isLocatedInReachAndNotNamed() {
         WorldCampaigns.Sim c = world("outside: measured point sags with reach", 4);

@@ -89,4 +89,47 @@ class ThermalLagTest {
         var d = new org.robopro.models.EffectDescription("thermal-link", List.of(), bad);
         assertThrows(org.robopro.models.InputException.class, () -> Effect.fromDescription(d, model, null, "robot.json"));
     }
+
+    /**
+     * A link that lags the air moves through only part of the air's span, so per kelvin of its own
+     * (lagged) temperature its growth over the campaign may be larger: the bound is on that growth,
+     * at most {@link Diagnoser#MAX_LINK_ALPHA} per kelvin of the air's span. For air warming on a
+     * ramp, T = T0 + s t, a body with time constant τ follows T0 + s (t − τ (1 − exp(−t/τ))) (the
+     * ramp response of a first-order lag), so over a campaign of length L its span is
+     * s (L − τ (1 − exp(−L/τ))).
+     */
+    @Test
+    void aLaggingLinksBound_isOnItsGrowthOverTheAirsSpan() {
+        List<Measurement> rows = new ArrayList<>();
+        double slope = 4.0 / 3600, length = 3600, tau = 4800;
+        for (int i = 0; i <= 60; i++) rows.add(row(i, 60.0 * i, 19 + slope * 60 * i));
+        ThermalLag lag = ThermalLag.of(rows);
+        double bodySpan = slope * (length - tau * (1 - Math.exp(-length / tau)));
+        assertEquals(4.0, lag.span(0), 1e-9);
+        assertEquals(bodySpan, lag.span(tau), 1e-6);
+        double allowed = Diagnoser.MAX_LINK_ALPHA * 4.0 / bodySpan; // per kelvin of the lagged temperature
+        KinematicModel model = KinematicModel.build(RobotLibrary.shipped("irb2400"));
+        int n = Effect.thermalLinks(model, 19).size();
+        double[] taus = new double[n];
+        java.util.Arrays.fill(taus, tau);
+        for (double[] c : new double[][] {{0.9, 1}, {1.1, 0}}) {
+            Diagnoser.Candidate lagged = candidate(Effect.thermalLinks(model, 19, lag, taus), c[0] * allowed, n);
+            Diagnoser.plausibility(lagged);
+            assertEquals(c[1] == 1, lagged.plausible, c[0] + " x the bound: " + lagged.plausibility);
+        }
+        // at the reading's own temperature the bound stays MAX_LINK_ALPHA per kelvin
+        Diagnoser.Candidate plain = candidate(Effect.thermalLinks(model, 19), 0.9 * allowed, n);
+        Diagnoser.plausibility(plain);
+        assertEquals(false, plain.plausible, plain.plausibility);
+    }
+
+    private static Diagnoser.Candidate candidate(Effect e, double alpha, int n) {
+        Diagnoser.Candidate c = new Diagnoser.Candidate();
+        c.effect = e;
+        c.estimate = new double[n];
+        java.util.Arrays.fill(c.estimate, alpha);
+        c.sd = new double[n];
+        java.util.Arrays.fill(c.sd, 1e-8);
+        return c;
+    }
 }
