@@ -673,9 +673,7 @@ public final class Diagnoser {
                 if (Math.abs(flank - g[0]) < 1e-9) continue;
                 double[] q = pose.q();
                 q[e.joint()] += (flank - g[0]) * b;
-                Measurement other = new Measurement(pose.poseId(), q, pose.position(), pose.orientation(), pose.directions(), pose.timeS(),
-                        pose.tempC(), pose.payloadKg(), pose.set(), pose.line(), pose.points(), pose.distance());
-                if (w.heldOut(fit, List.of(other), true) < 4 * rows) {
+                if (w.heldOut(fit, List.of(pose.withQ(q)), true) < 4 * rows) {
                     LOG.debug("validation pose {} is explained by the other flank of {}: not an outlier", pose.poseId(), e.label());
                     return true;
                 }
@@ -1321,14 +1319,13 @@ public final class Diagnoser {
             if (!handedOver.isEmpty()) {
                 valOut.removeIf(ol -> handedOver.contains(ol.poseId()));
                 List<Measurement> rest = w.validate.rows().stream().filter(m -> !handedOver.contains(m.poseId())).toList();
+                boolean one = handedOver.size() == 1;
                 notes.add(String.format(Locale.ROOT, "validation %s %s %s where the gravity torque hands the gear of a play held by "
                         + "gravity from one flank to the other: which flank it sits on there the model cannot tell (the masses are "
                         + "estimates, the mesh's friction varies), and %s by about the play. %s no bad %s and %s in the validation error "
-                        + "(%.4f mm; %.4f mm without %s)", handedOver.size() == 1 ? "pose" : "poses", String.join(", ", handedOver),
-                        handedOver.size() == 1 ? "lies" : "lie", handedOver.size() == 1 ? "it misses" : "they miss",
-                        handedOver.size() == 1 ? "It is" : "They are", handedOver.size() == 1 ? "reading" : "readings",
-                        handedOver.size() == 1 ? "stays" : "stay", w.validateRms(fit) * 1e3,
-                        rest.isEmpty() ? Double.NaN : w.heldOut(fit, rest, false) * 1e3, handedOver.size() == 1 ? "it" : "them"));
+                        + "(%.4f mm; %.4f mm without %s)", one ? "pose" : "poses", String.join(", ", handedOver), one ? "lies" : "lie",
+                        one ? "it misses" : "they miss", one ? "It is" : "They are", one ? "reading" : "readings", one ? "stays" : "stay",
+                        w.validateRms(fit) * 1e3, rest.isEmpty() ? Double.NaN : w.heldOut(fit, rest, false) * 1e3, one ? "it" : "them"));
             }
         }
         Diagnosis result = new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),

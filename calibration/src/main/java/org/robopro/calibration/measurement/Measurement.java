@@ -191,6 +191,11 @@ public record Measurement(String poseId, double[] q, Vec3 position, double[] ori
         return new Measurement(poseId, q, p, orientation, directions, timeS, tempC, payloadKg, set, line, pts, distance, fromQ, fromDirections);
     }
 
+    /** The same row with the controller's joint values {@code q} (the pose read otherwise: a reading corrected or moved). */
+    public Measurement withQ(double[] q) {
+        return new Measurement(poseId, q, position, orientation, directions, timeS, tempC, payloadKg, set, line, points, distance, fromQ, fromDirections);
+    }
+
     public Measurement withOrientation(double[] quaternionWxyz) {
         return new Measurement(poseId, q, position, quaternionWxyz, directions, timeS, tempC, payloadKg, set, line, points, distance, fromQ, fromDirections);
     }

@@ -28,8 +28,7 @@ class NonlinearPullTest {
         for (Measurement m : set.rows()) {
             double[] q = m.q().clone();
             q[j] = Math.toRadians(Math.rint(Math.toDegrees(q[j] - delta.applyAsDouble(m.q())) * 1e4) / 1e4);
-            rows.add(new Measurement(m.poseId(), q, m.position(), m.orientation(), m.directions(), m.timeS(), m.tempC(),
-                    m.payloadKg(), m.set(), m.line(), m.points(), m.distance(), m.fromQ(), m.fromDirections()));
+            rows.add(m.withQ(q));
         }
         return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, set.pointNames(), set.anchor());
     }

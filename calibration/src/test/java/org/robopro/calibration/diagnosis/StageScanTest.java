@@ -39,8 +39,7 @@ class StageScanTest {
             double out = q[st.joint()], r = out;
             for (int it = 0; it < 50; it++) r = out - st.delta(r);
             q[st.joint()] = Math.toRadians(Math.rint(Math.toDegrees(r) * 1e4) / 1e4);
-            rows.add(new Measurement(m.poseId(), q, m.position(), m.orientation(), m.directions(), m.timeS(), m.tempC(),
-                    m.payloadKg(), m.set(), m.line(), m.points(), m.distance(), m.fromQ(), m.fromDirections()));
+            rows.add(m.withQ(q));
         }
         return new MeasurementSet(set.source(), set.metadata(), set.frame(), rows, set.pointNames(), set.anchor());
     }
