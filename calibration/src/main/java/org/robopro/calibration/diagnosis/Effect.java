@@ -173,6 +173,7 @@ public final class Effect {
     private ThermalLag lag;                  // thermal-link: the campaign's temperature history (null: no lag)
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
     private double[] warmTaus;               // thermal-link: each link's warm-up time constant by its drives, s (null: the air's temperature only)
+    private Pauses pauses;                   // that warm-up: when the robot rested during the campaign (null: never, as far as known)
     private Vec3 down;                       // tool sag, link sag: gravity's direction, base frame (unit)
     private boolean sagPayload;              // link sag: columns of the payload's weight at the far end
     private Sight sight;                     // instrument reading: the reading it follows
@@ -1106,6 +1107,16 @@ public final class Effect {
         return growthWith(growth, warmTausS.clone());
     }
 
+    /**
+     * {@link #withWarmUp(Effect, double)} where the robot rested in {@code pauses} (null: it worked
+     * throughout): the links cool toward the air while it rests ({@link Pauses#share}).
+     */
+    public static Effect withWarmUp(Effect growth, double warmTauS, Pauses pauses) {
+        Effect e = withWarmUp(growth, warmTauS);
+        e.pauses = pauses != null && pauses.any() ? pauses : null;
+        return e;
+    }
+
     /** {@code growth} without the drives' warm-up (itself when it has none). */
     public static Effect withoutWarmUp(Effect growth) { return growth.warms() ? growthWith(growth, null) : growth; }
 
@@ -1115,13 +1126,17 @@ public final class Effect {
         e.lag = growth.lag;
         e.lagTaus = growth.lagTaus == null ? null : growth.lagTaus.clone();
         e.warmTaus = warmTaus;
+        e.pauses = warmTaus == null ? null : growth.pauses;
         return e;
     }
 
     /** {@code growth} with the links at the reading's temperature, its warm-up kept. */
     public static Effect withoutLags(Effect growth) {
         Effect e = thermalLinks(growth.model, growth.t0C);
-        return growth.warms() ? withWarmUp(e, growth.warmTaus) : e;
+        if (!growth.warms()) return e;
+        Effect warmed = withWarmUp(e, growth.warmTaus);
+        warmed.pauses = growth.pauses;
+        return warmed;
     }
 
     /** Whether a thermal growth's links are also warmed by the drives ({@link #withWarmUp}). */
@@ -1137,10 +1152,20 @@ public final class Effect {
         return String.join(", ", Arrays.stream(warmTaus).mapToObj(x -> String.format(Locale.ROOT, "%.0f", x)).toList()) + " s";
     }
 
-    /** Link {@code col}'s warm-up share at time t: 1 − exp(−t/τ_w); warmed through (1) at an unknown time. */
+    /** Link {@code col}'s warm-up share at time t: 1 − exp(−t/τ_w), cooling through the pauses; warmed through (1) at an unknown time. */
     private double warmX(PoseConditions c, int col) {
         double t = c.timeS();
+        if (pauses != null) return pauses.share(warmTaus[col], t);
         return Double.isFinite(t) ? 1 - Math.exp(-Math.max(0, t) / warmTaus[col]) : 1;
+    }
+
+    /** Whether a thermal growth's warm-up cools through pauses in the campaign. */
+    public boolean coolsInPauses() { return pauses != null; }
+
+    /** The campaign's pauses a thermal growth's warm-up cools through, in words ("from 1830 s to 3342 s"), or "". */
+    public String pauseWords() {
+        if (pauses == null) return "";
+        return String.join(", ", pauses.pauses().stream().map(g -> String.format(Locale.ROOT, "from %.0f s to %.0f s", g[0], g[1])).toList());
     }
 
     /** Whether some link of a thermal growth lags the reading. */

@@ -168,6 +168,7 @@ final class Words {
                     sb.append(String.format(Locale.ROOT, " %s %.3g ± %.2g /K%s", e.linkWords(i), v[i], s[i], i < nl - 1 ? "," : "."));
                 if (e.warms()) {
                     sb.append(" The links also grow as the drives warm them while the robot works (time constant " + e.warmWords()
+                            + (e.coolsInPauses() ? ", cooling toward the air while it stood " + e.pauseWords() : "")
                             + "), when warmed through:");
                     for (int i = nl; i < v.length; i++)
                         sb.append(String.format(Locale.ROOT, " %s %.1f ± %.1f ppm%s", e.linkWords(i - nl), 1e6 * v[i], 1e6 * s[i],
