@@ -949,7 +949,7 @@ public final class Diagnoser {
         Calibrator.Options co = Calibrator.Options.defaults().withCancel(o.cancel());
         if (forcedOutliers != null) co = co.withOutliers(co.outlierK(), false);
         CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
-        boolean manyOutliers = forcedOutliers == null && geo.outliers().size() > Math.max(3, 0.05 * train.size());
+        boolean manyOutliers = forcedOutliers == null && geo.outliers().size() > Math.max(MAX_GROSS, 0.05 * train.size());
         if (LOG.isDebugEnabled())
             for (CalibrationResult.Outlier ol : geo.outliers())
                 LOG.debug("geometric outlier {}: {} robust sigmas", ol.poseId(), ol.residualM() / ol.robustSigmaM());
@@ -962,7 +962,7 @@ public final class Diagnoser {
             // without the gross readings the rest may be few enough to be bad readings too, not a structure
             if (!gross.isEmpty()) {
                 geo = Calibrator.calibrate(model, kept, validate, co);
-                manyOutliers = geo.outliers().size() > Math.max(3, 0.05 * kept.size());
+                manyOutliers = geo.outliers().size() > Math.max(MAX_GROSS, 0.05 * kept.size());
             }
             if (manyOutliers) geo = Calibrator.calibrate(model, kept, validate, co.withOutliers(co.outlierK(), false));
         }
@@ -989,8 +989,9 @@ public final class Diagnoser {
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null))
             if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
         if (manyOutliers)
-            notes.add("more than 5 % of the poses lie beyond 5 robust sigmas of the geometric fit: too many to be bad "
-                    + "measurements, so " + (gross.isEmpty() ? "none was left out" : "only the " + gross.size() + " beyond "
+            notes.add(String.format(Locale.ROOT, "%d poses lie beyond 5 robust sigmas of the geometric fit, more than %s: too many "
+                    + "to be bad measurements, so ", geo.outliers().size(), 0.05 * train.size() > MAX_GROSS ? "5 % of them" : "the "
+                    + MAX_GROSS + " bad readings a campaign this small may hold") + (gross.isEmpty() ? "none was left out" : "only the " + gross.size() + " beyond "
                     + String.format(Locale.ROOT, "%.0f", GROSS_SIGMAS) + " robust sigmas were left out as gross readings")
                     + " (the structure they show is located below)");
         if (gravity.massesUnknown())
@@ -2970,6 +2971,12 @@ public final class Diagnoser {
      * diagnosis at 5.8-12.5 × the floor with nothing found.
      */
     static final double GROSS_SIGMAS = 20;
+    /**
+     * The most gross readings taken from among many poses beyond the rule (or 5 % of the poses), and
+     * so the fewest poses beyond it that are too many to be bad readings: a small campaign may hold
+     * five (set K's K37, five among 37 poses beside an arm's sag, four beyond the rule: taken for a
+     * structure at the 5 % line, none was left out and nothing was found).
+     */
     static final int MAX_GROSS = 5;
 
     /**
