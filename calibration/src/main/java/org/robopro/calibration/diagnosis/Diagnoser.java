@@ -489,7 +489,7 @@ public final class Diagnoser {
                     REGION_GROSS * typical, typical, far.size() == 1 ? "is" : "are")));
             return with(base, bad, notes);
         }
-        if (under.size() > Math.max(3, 0.05 * train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
+        if (under.size() > Math.max(MAX_GROSS, 0.05 * train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
         Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
         List<String> more = appearing(without, under);
         if (more.size() <= 1) {
