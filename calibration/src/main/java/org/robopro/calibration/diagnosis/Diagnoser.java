@@ -459,8 +459,7 @@ public final class Diagnoser {
             Map<String, Double> sigmas = underRun.sigmasUnder();
             Diagnosis rd = underRun.d;
             double[] zs = region.linked().stream().mapToDouble(id -> sigmas.getOrDefault(id, 0.0)).sorted().toArray();
-            double typical = zs.length == 0 ? Double.POSITIVE_INFINITY
-                    : zs.length % 2 == 1 ? zs[zs.length / 2] : 0.5 * (zs[zs.length / 2 - 1] + zs[zs.length / 2]);
+            double typical = zs.length == 0 ? Double.POSITIVE_INFINITY : Stats.median(zs);
             List<String> beyondRule = under;
             java.util.function.Predicate<String> ofRegion = id -> beyondRule.contains(id) && region.linked().contains(id)
                     && sigmas.getOrDefault(id, 0.0) < REGION_GROSS * typical;
@@ -844,6 +843,15 @@ public final class Diagnoser {
         return false;
     }
 
+    /** A lost motion's flank terms at the two ends of its play. */
+    private static final double[] FLANKS = {0.5, -0.5};
+
+    /** Whether the gravity torque on held backlash {@code e}'s drive at {@code pose} is within half its holding torque of it (or the hand-over's width, if wider). */
+    private static boolean nearHandOver(Effect e, Measurement pose) {
+        double tau = Math.abs(e.holdingTorque(pose.q(), pose.payloadKg()));
+        return Math.abs(tau - e.heldAboveNm()) <= Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
+    }
+
     /**
      * The poses among {@code flagged} that a named backlash held by gravity's other flank explains:
      * at a pose whose gravity torque is near the holding torque (within half of it, or the
@@ -856,15 +864,6 @@ public final class Diagnoser {
      * flank is known and a pose keeps its verdict (a gross reading that happens to lie along the
      * play's move is still one).
      */
-    /** A lost motion's flank terms at the two ends of its play. */
-    private static final double[] FLANKS = {0.5, -0.5};
-
-    /** Whether the gravity torque on held backlash {@code e}'s drive at {@code pose} is within half its holding torque of it (or the hand-over's width, if wider). */
-    private static boolean nearHandOver(Effect e, Measurement pose) {
-        double tau = Math.abs(e.holdingTorque(pose.q(), pose.payloadKg()));
-        return Math.abs(tau - e.heldAboveNm()) <= Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
-    }
-
     static List<String> otherFlankExplains(Work w, Fit fit, List<Effect> selected, List<String> flagged) {
         List<Integer> lost = new ArrayList<>();
         for (int k = 0; k < selected.size(); k++) if (selected.get(k).heldByGravity()) lost.add(k);

@@ -50,7 +50,7 @@ public final class Pauses {
         for (int i = 0; i < gaps.length; i++) gaps[i] = ts[i + 1] - ts[i];
         double[] sorted = gaps.clone();
         Arrays.sort(sorted);
-        double typical = sorted.length % 2 == 1 ? sorted[sorted.length / 2] : 0.5 * (sorted[sorted.length / 2 - 1] + sorted[sorted.length / 2]);
+        double typical = Stats.median(sorted);
         boolean[] pause = new boolean[ts.length];
         for (int i = 0; i < gaps.length; i++) pause[i] = typical > 0 && gaps[i] > PAUSE_GAPS * typical;
         return new Pauses(ts, pause, typical);

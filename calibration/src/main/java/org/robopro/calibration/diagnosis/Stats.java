@@ -9,6 +9,13 @@ package org.robopro.calibration.diagnosis;
 public final class Stats {
     private Stats() { }
 
+    /** The median of values sorted ascending (the mean of the middle two for an even count; NaN when empty). */
+    static double median(double[] sorted) {
+        int n = sorted.length;
+        if (n == 0) return Double.NaN;
+        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
+
     /** P(F > f) for F ~ F(d1, d2). */
     public static double fUpperTail(double f, double d1, double d2) {
         if (!(f > 0)) return 1;
