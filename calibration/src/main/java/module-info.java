@@ -4,6 +4,7 @@ module org.robopro.calibration {
     requires org.slf4j;
     requires ejml.core;
     requires ejml.ddense;
+    requires commons.math3;      // automatic module named after the jar
 
     exports org.robopro.calibration;
     exports org.robopro.calibration.compensation;

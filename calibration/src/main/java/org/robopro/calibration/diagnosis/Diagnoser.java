@@ -4221,8 +4221,13 @@ public final class Diagnoser {
     /** x − U Uᵀ x for an m x rank orthonormal U. */
     static double[] projectOut(double[] u, int rank, int m, double[] x) { return projectOut(u, rank, m, x, 1); }
 
-    /** The k columns s (m x k, row-major) less their projection on the rank orthonormal columns u (m x rank): S − U (Uᵀ S), in one pass over U. */
+    /** The k columns s (m x k, row-major) less their projection on the rank orthonormal columns u (m x rank): S − U (Uᵀ S). */
     static double[] projectOut(double[] u, int rank, int m, double[] s, int k) {
+        return subtractSpan(u, rank, m, s, k, spanCoefficients(u, rank, m, s, k));
+    }
+
+    /** Uᵀ S for the k columns s (m x k, row-major) and the rank orthonormal columns u (m x rank): k x rank, row-major, in one pass over U. */
+    static double[] spanCoefficients(double[] u, int rank, int m, double[] s, int k) {
         double[] c = new double[k * rank];
         for (int i = 0; i < m; i++) {
             int ui = i * rank, si = i * k;
@@ -4233,6 +4238,11 @@ public final class Diagnoser {
                 for (int r = 0; r < rank; r++) c[cc + r] += u[ui + r] * x;
             }
         }
+        return c;
+    }
+
+    /** S − U C for the coefficients c = Uᵀ S of {@link #spanCoefficients}. */
+    static double[] subtractSpan(double[] u, int rank, int m, double[] s, int k, double[] c) {
         double[] out = s.clone();
         for (int i = 0; i < m; i++) {
             int ui = i * rank, si = i * k;

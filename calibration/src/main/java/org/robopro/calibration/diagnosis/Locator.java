@@ -71,9 +71,27 @@ final class Locator {
         double lo, hi;              // range of the variable (smooth, reach, height, time, temperature)
         boolean lengths;            // a length change (not a point translation or a drive)
         String variable, shape, detail;
-        double[] s;   // m x k, projected out of the model's span
+        private double[] s; // m x k, projected out of the model's span (made from raw when first asked for)
+        double[] raw;       // m x k before that projection, or null when the projected columns were given
+        double[] span;      // with raw: its coefficients on the span's orthonormal basis, Uᵀ raw (k x rank)
+        private double[] u; // with raw: that basis (m x rank)
+        private int rank;
         double[] n0;  // unprojected column norms
         int k;
+
+        /** The columns projected out of the model's span. */
+        double[] s() {
+            if (s == null) s = Diagnoser.subtractSpan(u, rank, raw.length / k, raw, k, span);
+            return s;
+        }
+
+        /** The raw columns s (m x k) and their coefficients on the rank orthonormal columns u, projected out of u when first asked for. */
+        void unprojected(double[] s, double[] u, int rank, double[] span) {
+            raw = s;
+            this.u = u;
+            this.rank = rank;
+            this.span = span;
+        }
         double[][] x; // per end and pose, the variable (plots)
         double[][] endS; // with two ends: each end's own columns (m x k, unprojected), else null
         double[][][] rf; // a move of the target on the flange: each end's and pose's flange rotation (row-major)
@@ -822,8 +840,11 @@ final class Locator {
             Probe p = new Probe();
             p.k = k;
             p.n0 = Arrays.copyOfRange(all.n0, o, o + k);
-            p.s = new double[m * k];
-            for (int i = 0; i < m; i++) System.arraycopy(all.s, i * kt + o, p.s, i * k, k);
+            p.raw = new double[m * k];
+            for (int i = 0; i < m; i++) System.arraycopy(all.raw, i * kt + o, p.raw, i * k, k);
+            p.span = Arrays.copyOfRange(all.span, o * t.rank, (o + k) * t.rank);
+            p.u = all.u;
+            p.rank = all.rank;
             if (all.endS != null) {
                 p.endS = new double[all.endS.length][m * k];
                 for (int e = 0; e < all.endS.length; e++)
@@ -892,12 +913,17 @@ final class Locator {
 
     /** A probe of the k columns s (m x k, row-major), projected out of the model's span, with their norms before. */
     private static Probe finish(Diagnoser.Tester t, double[] s, int k) {
+        return finish(t, s, k, Diagnoser.spanCoefficients(t.u, t.rank, t.m, s, k));
+    }
+
+    /** As above, with the columns' coefficients on the span's basis (k x rank). */
+    private static Probe finish(Diagnoser.Tester t, double[] s, int k, double[] span) {
         Probe p = new Probe();
         p.k = k;
         p.n0 = new double[k];
         for (int i = 0; i < t.m; i++) for (int col = 0; col < k; col++) p.n0[col] += s[i * k + col] * s[i * k + col];
         for (int col = 0; col < k; col++) p.n0[col] = Math.sqrt(p.n0[col]);
-        p.s = Diagnoser.projectOut(t.u, t.rank, t.m, s, k);
+        p.unprojected(s, t.u, t.rank, span);
         return p;
     }
 
@@ -936,6 +962,106 @@ final class Locator {
     }
 
     /**
+     * A probe's columns X as the scan's F test sees them, through their Gram matrix XᵀX: X is the raw
+     * columns S projected out of the model's span U and the structures B found so far, all
+     * orthonormal to one another, so XᵀX = SᵀS − (UᵀS)ᵀ(UᵀS) − Σ (BᵀS)ᵀ(BᵀS) and, for a residual
+     * orthogonal to them all, Xᵀr = Sᵀr. The test's kept columns, reduction of the residual and p
+     * follow from a Cholesky factor of XᵀX in the order Gram–Schmidt takes the columns; a probe this
+     * says may pass is tested on its projected columns.
+     */
+    static final class Gram {
+        final Probe p;
+        final double[] g; // k x k
+
+        Gram(Probe p) {
+            this.p = p;
+            int k = p.k, m = p.raw.length / k, rank = p.span.length / k;
+            g = new double[k * k];
+            for (int i = 0; i < m; i++)
+                for (int a = 0; a < k; a++) {
+                    double x = p.raw[i * k + a];
+                    if (x == 0) continue;
+                    for (int b = a; b < k; b++) g[a * k + b] += x * p.raw[i * k + b];
+                }
+            for (int a = 0; a < k; a++)
+                for (int b = a; b < k; b++) {
+                    double v = 0;
+                    for (int r = 0; r < rank; r++) v += p.span[a * rank + r] * p.span[b * rank + r];
+                    g[a * k + b] -= v;
+                    g[b * k + a] = g[a * k + b];
+                }
+        }
+
+        /** Out of the structure's orthonormal columns b (m x nb) too. */
+        void remove(double[] b, int nb) {
+            int k = p.k, m = p.raw.length / k;
+            double[] d = new double[nb * k]; // Bᵀ S
+            for (int i = 0; i < m; i++)
+                for (int c = 0; c < nb; c++) {
+                    double x = b[i * nb + c];
+                    if (x == 0) continue;
+                    for (int a = 0; a < k; a++) d[c * k + a] += x * p.raw[i * k + a];
+                }
+            for (int a = 0; a < k; a++)
+                for (int bb = 0; bb < k; bb++) {
+                    double v = 0;
+                    for (int c = 0; c < nb; c++) v += d[c * k + a] * d[c * k + bb];
+                    g[a * k + bb] -= v;
+                }
+        }
+
+        /**
+         * Whether the probe may pass the F test at threshold thr against the residual res (orthogonal to
+         * the span and the nq columns found, sum of squares rss): false only when it clearly fails.
+         */
+        boolean mayPass(Diagnoser.Tester t, double[] res, double rss, int nq, double thr) {
+            return p(t, res, rss, nq) < 2 * thr; // the exact test decides near the threshold
+        }
+
+        /** The F test's p, as the test on the projected columns finds it; 0 when a column's share left is too close to the bound to tell, NaN with no column kept. */
+        double p(Diagnoser.Tester t, double[] res, double rss, int nq) {
+            int k = p.k, m = t.m;
+            double ar = t.w.o.absorbedRatio();
+            double[] rr = new double[k * k]; // row t: the kept column t's factor entries, by column
+            int[] kept = new int[k];
+            int q = 0;
+            for (int col = 0; col < k; col++) {
+                double n0 = p.n0[col] * p.n0[col];
+                if (!(n0 > 0)) continue;
+                double d = g[col * k + col];
+                for (int a = 0; a < q; a++) {
+                    double r = g[kept[a] * k + col];
+                    for (int b = 0; b < a; b++) r -= rr[b * k + kept[a]] * rr[b * k + col];
+                    r /= rr[a * k + kept[a]];
+                    rr[a * k + col] = r;
+                    d -= r * r;
+                }
+                double ratio = Math.sqrt(Math.max(d, 0) / n0);
+                if (Math.abs(ratio - ar) <= 1e-6 * ar) return 0; // too close to the bound to tell here
+                if (ratio >= ar) {
+                    rr[q * k + col] = Math.sqrt(d);
+                    kept[q++] = col;
+                }
+            }
+            if (q == 0) return Double.NaN;
+            double[] coef = new double[q];
+            double drss = 0;
+            for (int a = 0; a < q; a++) {
+                int col = kept[a];
+                double x = 0;
+                for (int i = 0; i < m; i++) x += p.raw[i * k + col] * res[i];
+                for (int b = 0; b < a; b++) x -= rr[b * k + col] * coef[b];
+                coef[a] = x / rr[a * k + col];
+                drss += coef[a] * coef[a];
+            }
+            int df2 = m - t.rank - nq - q;
+            double rss1 = Math.max(rss - drss, 1e-300);
+            double f = (drss / q) / (rss1 / Math.max(1, df2));
+            return Stats.fUpperTail(f, q, df2);
+        }
+    }
+
+    /**
      * Greedy scan: accept structures one by one (lowest BIC among the probes that pass Holm at
      * step s and lower the leave-one-pose-out error), each conditional on those before; then the
      * backward step.
@@ -946,15 +1072,29 @@ final class Locator {
         double[] q = new double[0];
         int nq = 0;
         boolean[] used = new boolean[n];
-        // each probe's columns projected out of the structures accepted so far, one block at a time (they are orthonormal to one another)
+        // each probe's columns projected out of the structures accepted so far, one block at a time (they are orthonormal to
+        // one another), made when first needed: left[pi] is out of the first done[pi] blocks
+        List<double[]> blocks = new ArrayList<>();
+        List<Integer> blockSizes = new ArrayList<>();
         double[][] left = new double[n][];
-        for (int pi = 0; pi < n; pi++) left[pi] = probes.get(pi).s;
+        int[] done = new int[n];
+        // the probes' Gram matrices, out of the span and the blocks: most probes fail the F test, which these tell at a k x k cost
+        Gram[] gram = new Gram[n];
+        for (int pi = 0; pi < n; pi++) if (probes.get(pi).raw != null) gram[pi] = new Gram(probes.get(pi));
         for (int step = 0; step < maxFound; step++) {
             double thr = alpha / Math.max(1, n - step);
+            double[] res = nq == 0 ? t.rPerp : Diagnoser.projectOut(q, nq, t.m, t.rPerp);
+            double rss = 0;
+            for (double v : res) rss += v * v;
             Found best = null;
             for (int pi = 0; pi < n; pi++) {
                 if (used[pi]) continue;
-                Diagnoser.Candidate c = test(t, probes.get(pi), left[pi], q, nq, thr);
+                if (gram[pi] != null && !gram[pi].mayPass(t, res, rss, nq, thr)) continue;
+                Probe p = probes.get(pi);
+                if (left[pi] == null) left[pi] = p.s();
+                for (; done[pi] < blocks.size(); done[pi]++)
+                    left[pi] = Diagnoser.projectOut(blocks.get(done[pi]), blockSizes.get(done[pi]), t.m, left[pi], p.k);
+                Diagnoser.Candidate c = test(t, p, left[pi], q, nq, thr);
                 if (c == null || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
                 c.threshold = thr;
                 if (best == null || c.bic < best.c.bic) { best = new Found(); best.probe = probes.get(pi); best.c = c; }
@@ -979,7 +1119,9 @@ final class Locator {
             }
             q = nqArr;
             nq += add;
-            for (int pi = 0; pi < n; pi++) if (!used[pi]) left[pi] = Diagnoser.projectOut(best.c.basis, add, t.m, left[pi], probes.get(pi).k);
+            blocks.add(best.c.basis);
+            blockSizes.add(add);
+            for (int pi = 0; pi < n; pi++) if (!used[pi] && gram[pi] != null) gram[pi].remove(best.c.basis, add);
         }
         // Backward: a structure the later ones made redundant leaves.
         for (int k = found.size() - 1; k >= 0 && found.size() > 1; k--) {
@@ -1089,11 +1231,12 @@ final class Locator {
         p.n0 = new double[p.k];
         System.arraycopy(a.n0, 0, p.n0, 0, a.k);
         System.arraycopy(b.n0, 0, p.n0, a.k, b.k);
-        int m = a.s.length / a.k;
+        double[] as = a.s(), bs = b.s();
+        int m = as.length / a.k;
         p.s = new double[m * p.k];
         for (int i = 0; i < m; i++) {
-            System.arraycopy(a.s, i * a.k, p.s, i * p.k, a.k);
-            System.arraycopy(b.s, i * b.k, p.s, i * p.k + a.k, b.k);
+            System.arraycopy(as, i * a.k, p.s, i * p.k, a.k);
+            System.arraycopy(bs, i * b.k, p.s, i * p.k + a.k, b.k);
         }
         return p;
     }
@@ -1284,7 +1427,7 @@ final class Locator {
     private static Diagnoser.Candidate test(Diagnoser.Tester t, Probe p, double[] left, double[] q, int nq, double pGate) {
         List<String> names = new ArrayList<>();
         for (int c = 0; c < p.k; c++) names.add("c" + c);
-        Diagnoser.Candidate c = left == null ? t.testProjected(p.s, p.n0, p.k, names, q, nq, pGate)
+        Diagnoser.Candidate c = left == null ? t.testProjected(p.s(), p.n0, p.k, names, q, nq, pGate)
                 : t.testProjected(left, p.n0, p.k, names, q, nq, pGate, true);
         return c.keptColumns == 0 ? null : c;
     }

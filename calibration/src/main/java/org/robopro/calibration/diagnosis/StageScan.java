@@ -250,8 +250,9 @@ final class StageScan {
                 }
             }
         }
-        java.util.Arrays.sort(all);
-        return new double[] {bestF, bestP, all[n / 2]};
+        // the median by selection (Commons Math's quickselect), not a sort of the whole grid
+        double median = new org.apache.commons.math3.util.KthSelector().select(all, null, n / 2);
+        return new double[] {bestF, bestP, median};
     }
 
     /** {P, a, b} at order f: the drop of the residual sum of squares and the sin, cos coefficients (rad). */
