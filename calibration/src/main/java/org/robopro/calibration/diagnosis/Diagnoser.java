@@ -9,7 +9,9 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import org.ejml.data.DMatrixRMaj;
+import org.ejml.dense.row.CommonOps_DDRM;
 import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
+import org.ejml.interfaces.decomposition.QRDecomposition;
 import org.ejml.interfaces.decomposition.SingularValueDecomposition_F64;
 import org.robopro.calibration.Cancellation;
 import org.robopro.calibration.PoseConditions;
@@ -1116,7 +1118,7 @@ public final class Diagnoser {
                 c.threshold = threshold;
                 if (!(c.p < threshold) || !(c.pressAfter < c.pressBefore)) continue;
                 if (!c.plausible) { implausible.put(c.effect.label(), c); continue; }
-                if (best == null || c.bic < best.bic) best = c;
+                if (best == null || lowerBic(c.bic, best.bic)) best = c;
             }
             if (best == null || selected.size() >= o.maxEffects()) break;
             implausible.clear(); // only those still significant when selection stops are reported
@@ -3004,6 +3006,14 @@ public final class Diagnoser {
     static final int MAX_LOCATED = 8;
     /** An alias replaces a named effect when its leave-one-pose-out error is lower by this fraction. */
     static final double ALIAS_MARGIN = 0.02;
+
+    /**
+     * Whether BIC a is lower than b by more than rounding: two candidates that fit the same columns
+     * (a re-estimated mass model of which only the file's shape is left, say) tie, and the one tried
+     * first, the simpler form, stays.
+     */
+    static boolean lowerBic(double a, double b) { return a < b - 1e-9 * Math.max(1, Math.abs(b)); }
+
     /**
      * Beside a structure of another drive that follows its joint ({@link #sharedWithAnotherDrive}), a
      * family whose shape its own fallback holds is claimed only when it predicts left-out poses better
@@ -4204,10 +4214,25 @@ public final class Diagnoser {
             s = s > 0 ? 1 / Math.sqrt(s) : 0;
             for (int i = 0; i < m; i++) a.data[i * nc + k] = jac[i * n + c] * s;
         }
-        SingularValueDecomposition_F64<DMatrixRMaj> svd = DecompositionFactory_DDRM.svd(m, nc, true, false, true);
-        if (!svd.decompose(a)) throw new IllegalStateException("SVD of the model Jacobian failed");
-        double[] sv = svd.getSingularValues();
-        DMatrixRMaj um = svd.getU(null, false);
+        // A = Q R (Householder), then R = U_r Σ Vᵀ: A = (Q U_r) Σ Vᵀ, the SVD's rotations applied to nc x nc, not m x nc
+        // (Golub & Van Loan, Matrix Computations, 4th ed., §8.6.3, R-bidiagonalization)
+        DMatrixRMaj um;
+        double[] sv;
+        SingularValueDecomposition_F64<DMatrixRMaj> svd;
+        if (m > nc) {
+            QRDecomposition<DMatrixRMaj> qr = DecompositionFactory_DDRM.qr(m, nc);
+            if (!qr.decompose(a)) throw new IllegalStateException("QR of the model Jacobian failed");
+            DMatrixRMaj r = qr.getR(null, true);
+            svd = DecompositionFactory_DDRM.svd(nc, nc, true, false, true);
+            if (!svd.decompose(r)) throw new IllegalStateException("SVD of the model Jacobian failed");
+            um = new DMatrixRMaj(m, nc);
+            CommonOps_DDRM.mult(qr.getQ(null, true), svd.getU(null, false), um);
+        } else {
+            svd = DecompositionFactory_DDRM.svd(m, nc, true, false, true);
+            if (!svd.decompose(a)) throw new IllegalStateException("SVD of the model Jacobian failed");
+            um = svd.getU(null, false);
+        }
+        sv = svd.getSingularValues();
         double smax = 0;
         for (int k = 0; k < svd.numberOfSingularValues(); k++) smax = Math.max(smax, sv[k]);
         List<Integer> keep = new ArrayList<>();

@@ -855,9 +855,32 @@ final class Locator {
         return out;
     }
 
-    /** k columns on drive j: at each end, its sensitivity to drive j times the regressor there. */
+    /**
+     * k columns on drive j: at each end, its sensitivity to drive j times the regressor there. With one
+     * end a column is d_j ∘ g over the rows of a pose, so its coefficients on the span's basis U are
+     * Σ_poses g · (Σ_rows of the pose d_j U): one pass over U for all k columns.
+     */
     private static Probe drive(Diagnoser.Tester t, int j, int k, Reg reg) {
-        return columns(t, k, (e, row, g, col) -> t.endDQ[e][row * t.dof + j] * g[col], k, reg);
+        if (t.ends > 1) return columns(t, k, (e, row, g, col) -> t.endDQ[e][row * t.dof + j] * g[col], k, reg);
+        int m = t.m, rpp = t.rpp, poses = m / rpp, rank = t.rank, dof = t.dof;
+        double[] dq = t.endDQ[0], u = t.u;
+        double[] s = new double[m * k], g = new double[k], span = new double[k * rank], w = new double[rank];
+        for (int i = 0; i < poses; i++) {
+            reg.at(0, i, g);
+            Arrays.fill(w, 0);
+            for (int a = 0; a < rpp; a++) {
+                int row = i * rpp + a;
+                double d = dq[row * dof + j];
+                for (int c = 0; c < k; c++) s[row * k + c] = d * g[c];
+                for (int r = 0; r < rank; r++) w[r] += u[row * rank + r] * d;
+            }
+            for (int c = 0; c < k; c++) {
+                double gc = g[c];
+                if (gc == 0) continue;
+                for (int r = 0; r < rank; r++) span[c * rank + r] += gc * w[r];
+            }
+        }
+        return finish(t, s, k, span);
     }
 
     /** k / 3 functions moving the measured point along each base axis (column b·3 + axis): the point's sensitivity times the regressor. */
@@ -1097,7 +1120,7 @@ final class Locator {
                 Diagnoser.Candidate c = test(t, p, left[pi], q, nq, thr);
                 if (c == null || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
                 c.threshold = thr;
-                if (best == null || c.bic < best.c.bic) { best = new Found(); best.probe = probes.get(pi); best.c = c; }
+                if (best == null || Diagnoser.lowerBic(c.bic, best.c.bic)) { best = new Found(); best.probe = probes.get(pi); best.c = c; }
             }
             if (best == null) break;
             used[probes.indexOf(best.probe)] = true;
