@@ -987,7 +987,11 @@ public final class Diagnoser {
         boolean hasPayload = allFinite(rows, Measurement::payloadKg);
         double t0C = hasTemp ? rows.stream().mapToDouble(Measurement::tempC).average().orElse(0) : Double.NaN;
         List<Effect> family = new ArrayList<>();
-        for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null))
+        // when the robot worked and when it rested, from the whole file's reading times in time order
+        List<Measurement> history = new ArrayList<>(trainAll.rows());
+        if (validate != null) history.addAll(validate.rows());
+        w.pauses = hasTime ? Pauses.of(history) : null;
+        for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null, w.pauses))
             if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
         if (manyOutliers)
             notes.add(String.format(Locale.ROOT, "%d poses lie beyond 5 robust sigmas of the geometric fit, more than %s: too many "
@@ -1049,10 +1053,7 @@ public final class Diagnoser {
             if (e.isFallback() || !excluded.contains(claimKey(e))) family.add(e);
         // Thermal growth with the links lagging the reading: the time constant (one for every link) that predicts
         // left-out poses best, from the whole file's temperature history in time order; a candidate beside the unlagged form.
-        List<Measurement> history = new ArrayList<>(trainAll.rows());
-        if (validate != null) history.addAll(validate.rows());
         ThermalLag lag = hasTemp && hasTime ? ThermalLag.of(history) : null;
-        w.pauses = hasTime ? Pauses.of(history) : null;
         if (lag != null && !excluded.contains(claimKey(Effect.thermalLinks(model, t0C)))) {
             Effect lagged = commonLag(geoTester, model, t0C, lag, w.conditions);
             if (lagged != null) family.add(lagged);

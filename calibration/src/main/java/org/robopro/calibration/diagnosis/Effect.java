@@ -1058,6 +1058,15 @@ public final class Effect {
     public static Effect thermalFromTime(double tauS) {
         return new Effect(Kind.THERMAL, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null);
     }
+    /**
+     * {@link #thermalFromTime(double)} with the arm warmed by its drives, so cooling toward the air
+     * while the robot rests in {@code pauses} ({@link Pauses#share}); the plain form when there are none.
+     */
+    public static Effect thermalFromTime(double tauS, Pauses pauses) {
+        Effect e = thermalFromTime(tauS);
+        e.pauses = pauses != null && pauses.any() ? pauses : null;
+        return e;
+    }
     /** Each link of {@code model} at least {@link #MIN_LINK_M} long (and the flange-to-point vector) grows by its own α (T − t0C). */
     public static Effect thermalLinks(KinematicModel model, double t0C) {
         Pose[] f = model.linkFrames(new double[model.dof()]);
@@ -1345,7 +1354,8 @@ public final class Effect {
     /** A short label: "backlash j2", "joint-coupling j3<-j2", "gear-periodic j1 (h 1,7,23)", "thermal-expansion". */
     public String label() {
         return switch (kind) {
-            case THERMAL -> kind.json + (usesTimeProxy() ? String.format(Locale.ROOT, " (time proxy, tau %.0f s)", tauS) : "");
+            case THERMAL -> kind.json + (usesTimeProxy() ? String.format(Locale.ROOT, " (time proxy, tau %.0f s%s)", tauS,
+                    pauses != null ? ", cooling in pauses" : "") : "");
             case DRIFT -> kind.json + (usesTimeProxy() ? " (with time)" : " (with temperature)");
             case THERMAL_LINK -> kind.json + lagWords() + (warms() ? " (warm-up " + warmWords() + ")" : "");
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
@@ -1410,7 +1420,8 @@ public final class Effect {
     /** The condition variable x of a thermal or drift effect (0 when unknown: unknown conditions contribute nothing). */
     private double conditionX(PoseConditions c) {
         double x = switch (kind) {
-            case THERMAL -> usesTimeProxy() ? 1 - Math.exp(-c.timeS() / tauS) : c.tempC() - t0C;
+            case THERMAL -> !usesTimeProxy() ? c.tempC() - t0C
+                    : pauses != null && Double.isFinite(c.timeS()) ? pauses.share(tauS, c.timeS()) : 1 - Math.exp(-c.timeS() / tauS);
             case DRIFT -> usesTimeProxy() ? c.timeS() / tauS : c.tempC() - t0C;
             default -> c.tempC() - t0C;
         };
@@ -2008,6 +2019,14 @@ public final class Effect {
      * pair: one a drive train cannot make is searched but never claimed, {@link #canCouple}), thermal once.
      */
     public static List<Effect> candidates(KinematicModel model, GravityTorques gravity, double t0C, double[] timeTaus) {
+        return candidates(model, gravity, t0C, timeTaus, null);
+    }
+
+    /**
+     * As above; with {@code pauses} in the campaign, each time proxy of the warm-up also in the form
+     * that cools while the robot rests (the arm warmed by its drives, not by the air).
+     */
+    public static List<Effect> candidates(KinematicModel model, GravityTorques gravity, double t0C, double[] timeTaus, Pauses pauses) {
         List<Effect> out = new ArrayList<>();
         int n = model.dof();
         for (int j = 0; j < n; j++) {
@@ -2023,6 +2042,7 @@ public final class Effect {
             for (int j = 0; j < n; j++) if (j != k) out.add(coupling(k, j));
         if (!Double.isNaN(t0C)) out.add(thermal(t0C));
         if (timeTaus != null) for (double t : timeTaus) out.add(thermalFromTime(t));
+        if (timeTaus != null && pauses != null && pauses.any()) for (double t : timeTaus) out.add(thermalFromTime(t, pauses));
         return out;
     }
 }

@@ -205,7 +205,8 @@ final class Words {
                     Math.toDegrees(v[0]), Math.toDegrees(s[0]), at, dirs.words);
             case THERMAL -> e.usesTimeProxy()
                     ? String.format(Locale.ROOT, "The arm grows while it warms up (thermal expansion, inferred from time): "
-                    + "strain %.3g ± %.2g at saturation, time constant %.0f s.", v[0], s[0], e.tauS())
+                    + "strain %.3g ± %.2g at saturation, time constant %.0f s%s.", v[0], s[0], e.tauS(), e.coolsInPauses()
+                    ? ", cooling toward the air while the robot stood " + e.pauseWords() + " (warmed by its drives, not by the air)" : "")
                     : String.format(Locale.ROOT, "The arm grows with temperature (thermal expansion): %.3g ± %.2g per K "
                     + "(steel is about 12e-6, aluminium 23e-6), reference %.1f °C.", v[0], s[0], e.t0C());
             case SCALE -> String.format(Locale.ROOT, "Joint %d turns by a slightly different amount than commanded (gear ratio "
