@@ -4218,7 +4218,6 @@ public final class Diagnoser {
         // A = Q R (Householder), then R = U_r Σ Vᵀ: A = (Q U_r) Σ Vᵀ, the SVD's rotations applied to nc x nc, not m x nc
         // (Golub & Van Loan, Matrix Computations, 4th ed., §8.6.3, R-bidiagonalization)
         DMatrixRMaj um;
-        double[] sv;
         SingularValueDecomposition_F64<DMatrixRMaj> svd;
         if (m > nc) {
             QRDecomposition<DMatrixRMaj> qr = DecompositionFactory_DDRM.qr(m, nc);
@@ -4233,7 +4232,7 @@ public final class Diagnoser {
             if (!svd.decompose(a)) throw new IllegalStateException("SVD of the model Jacobian failed");
             um = svd.getU(null, false);
         }
-        sv = svd.getSingularValues();
+        double[] sv = svd.getSingularValues();
         double smax = 0;
         for (int k = 0; k < svd.numberOfSingularValues(); k++) smax = Math.max(smax, sv[k]);
         List<Integer> keep = new ArrayList<>();
