@@ -3653,8 +3653,16 @@ public final class Diagnoser {
 
         /** The candidate tester at a fit: basis of the model's Jacobian and ∂residual/∂θ, ∂residual/∂strain. */
         Tester tester(Fit f) {
-            return new Tester(this, f);
+            // a tester is a function of the fit alone (its caches too), and the same fit is often tested again
+            if (lastTesterFit != f) {
+                lastTester = new Tester(this, f);
+                lastTesterFit = f;
+            }
+            return lastTester;
         }
+
+        private Fit lastTesterFit;
+        private Tester lastTester;
     }
 
     /**
