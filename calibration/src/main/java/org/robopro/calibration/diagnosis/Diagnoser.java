@@ -490,7 +490,7 @@ public final class Diagnoser {
                     REGION_GROSS * typical, typical, far.size() == 1 ? "is" : "are")));
             return with(base, bad, notes);
         }
-        if (under.size() > Math.max(MAX_GROSS, 0.05 * train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
+        if (tooManyToBeBad(under.size(), train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
         Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
         List<String> more = appearing(without, under);
         if (more.size() <= 1) {
@@ -569,13 +569,7 @@ public final class Diagnoser {
             }
             double p = Math.min(1, (count == 0 ? 1 : Stats.regularizedBeta(p0, count, g - count + 1)) * sets.size());
             if (best == null || p < best.p) {
-                double[] qlo = new double[js.length], qhi = new double[js.length];
-                for (int a = 0; a < js.length; a++) {
-                    int j = js[a];
-                    qlo[a] = in.stream().mapToDouble(m -> m.q(j)).min().orElse(0);
-                    qhi[a] = in.stream().mapToDouble(m -> m.q(j)).max().orElse(0);
-                }
-                best = new Region(js, count, g, g * p0, p, qlo, qhi, linked, null, Double.NaN, Double.NaN);
+                best = new Region(js, count, g, g * p0, p, range(in, js, false), range(in, js, true), linked, null, Double.NaN, Double.NaN);
             }
         }
         if (best != null && best.p() < REGION_ALPHA) return best;
@@ -634,19 +628,23 @@ public final class Diagnoser {
                 if (best != null && !(p < best.p())) continue;
                 int t = side == 0 ? lowT : side == 1 ? highT : bothT;
                 double lowCut = side == 1 ? Double.NaN : v[order[t - 1]], highCut = side == 0 ? Double.NaN : v[order[n - t]];
-                List<Integer> js = new ArrayList<>();
-                for (int j = 0; j < dof; j++) if (c[j] != 0) js.add(j);
-                double[] qlo = new double[js.size()], qhi = new double[js.size()];
-                for (int a = 0; a < js.size(); a++) {
-                    int j = js.get(a);
-                    qlo[a] = in.stream().mapToDouble(m -> m.q(j)).min().orElse(0);
-                    qhi[a] = in.stream().mapToDouble(m -> m.q(j)).max().orElse(0);
-                }
-                best = new Region(js.stream().mapToInt(Integer::intValue).toArray(), side == 2 ? 2 * t : t, g,
-                        g * (double) (side == 2 ? 2 * t : t) / n, p, qlo, qhi, linked, c, lowCut, highCut);
+                int[] js = java.util.stream.IntStream.range(0, dof).filter(j -> c[j] != 0).toArray();
+                best = new Region(js, side == 2 ? 2 * t : t, g, g * (double) (side == 2 ? 2 * t : t) / n, p, range(in, js, false),
+                        range(in, js, true), linked, c, lowCut, highCut);
             }
         }
         return best;
+    }
+
+    /** Each of joints {@code js}'s lowest (or with {@code high} highest) angle among poses {@code in}, rad (0 with none). */
+    private static double[] range(List<Measurement> in, int[] js, boolean high) {
+        double[] out = new double[js.length];
+        for (int a = 0; a < js.length; a++) {
+            int j = js[a];
+            java.util.stream.DoubleStream q = in.stream().mapToDouble(m -> m.q(j));
+            out[a] = (high ? q.max() : q.min()).orElse(0);
+        }
+        return out;
     }
 
     /** The chance that g poses picked at random of n all lie within a given set of k: C(k, g) / C(n, g). */
@@ -950,7 +948,7 @@ public final class Diagnoser {
         Calibrator.Options co = Calibrator.Options.defaults().withCancel(o.cancel());
         if (forcedOutliers != null) co = co.withOutliers(co.outlierK(), false);
         CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
-        boolean manyOutliers = forcedOutliers == null && geo.outliers().size() > Math.max(MAX_GROSS, 0.05 * train.size());
+        boolean manyOutliers = forcedOutliers == null && tooManyToBeBad(geo.outliers().size(), train.size());
         if (LOG.isDebugEnabled())
             for (CalibrationResult.Outlier ol : geo.outliers())
                 LOG.debug("geometric outlier {}: {} robust sigmas", ol.poseId(), ol.residualM() / ol.robustSigmaM());
@@ -963,7 +961,7 @@ public final class Diagnoser {
             // without the gross readings the rest may be few enough to be bad readings too, not a structure
             if (!gross.isEmpty()) {
                 geo = Calibrator.calibrate(model, kept, validate, co);
-                manyOutliers = geo.outliers().size() > Math.max(MAX_GROSS, 0.05 * kept.size());
+                manyOutliers = tooManyToBeBad(geo.outliers().size(), kept.size());
             }
             if (manyOutliers) geo = Calibrator.calibrate(model, kept, validate, co.withOutliers(co.outlierK(), false));
         }
@@ -2981,6 +2979,9 @@ public final class Diagnoser {
      */
     static final int MAX_GROSS = 5;
 
+    /** Whether {@code beyond} poses beyond the outlier rule among {@code poses} are too many to be bad readings (more than {@link #MAX_GROSS} and 5 %). */
+    static boolean tooManyToBeBad(int beyond, int poses) { return beyond > Math.max(MAX_GROSS, 0.05 * poses); }
+
     /**
      * The gross readings among poses beyond the outlier rule (of {@code poses}): the farthest out,
      * each beyond {@link #GROSS_SIGMAS} robust sigmas, down to the widest gap where the next pose out
@@ -4076,6 +4077,29 @@ public final class Diagnoser {
         private double[] cacheExtra, cacheRes;
         private double cacheRss, cachePress = Double.NaN;
 
+        /** The residual out of the model's span and of the nExtra orthonormal columns extra (m x nExtra, or none) too. */
+        double[] residualOutOf(double[] extra, int nExtra) {
+            if (extra == null || nExtra <= 0) return rPerp;
+            besideExtra(extra, nExtra);
+            return cacheRes;
+        }
+
+        /** The sum of squares of {@link #residualOutOf}. */
+        double rssOutOf(double[] extra, int nExtra) {
+            if (extra == null || nExtra <= 0) return rss0;
+            besideExtra(extra, nExtra);
+            return cacheRss;
+        }
+
+        private void besideExtra(double[] extra, int nExtra) {
+            if (cacheExtra == extra) return;
+            cacheExtra = extra;
+            cacheRes = projectOut(extra, nExtra, m, rPerp);
+            cacheRss = 0;
+            for (double v : cacheRes) cacheRss += v * v;
+            cachePress = Double.NaN;
+        }
+
         /** As above; the leave-one-out error is only computed when p is below {@code pGate} (else it stays infinite). */
         Candidate testProjected(double[] sp, double[] n0s, int k, List<String> names, double[] extra, int nExtra, double pGate) {
             return testProjected(sp, n0s, k, names, extra, nExtra, pGate, false);
@@ -4131,19 +4155,8 @@ public final class Diagnoser {
             if (q == 0) return c;
             double[] qm = new double[m * q];
             double[] coef = new double[q];
-            double[] res = rPerp;
-            double rssBase = rss0;
-            if (extra != null && nExtra > 0) {
-                if (cacheExtra != extra) {
-                    cacheExtra = extra;
-                    cacheRes = projectOut(extra, nExtra, m, rPerp);
-                    cacheRss = 0;
-                    for (double v : cacheRes) cacheRss += v * v;
-                    cachePress = Double.NaN;
-                }
-                res = cacheRes;
-                rssBase = cacheRss;
-            }
+            double[] res = residualOutOf(extra, nExtra);
+            double rssBase = rssOutOf(extra, nExtra);
             for (int t = 0; t < q; t++)
                 for (int i = 0; i < m; i++) {
                     qm[i * q + t] = qs[t][i];

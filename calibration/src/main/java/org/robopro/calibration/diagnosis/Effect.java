@@ -1062,11 +1062,7 @@ public final class Effect {
      * {@link #thermalFromTime(double)} with the arm warmed by its drives, so cooling toward the air
      * while the robot rests in {@code pauses} ({@link Pauses#share}); the plain form when there are none.
      */
-    public static Effect thermalFromTime(double tauS, Pauses pauses) {
-        Effect e = thermalFromTime(tauS);
-        e.pauses = pauses != null && pauses.any() ? pauses : null;
-        return e;
-    }
+    public static Effect thermalFromTime(double tauS, Pauses pauses) { return thermalFromTime(tauS).restingIn(pauses); }
     /** Each link of {@code model} at least {@link #MIN_LINK_M} long (and the flange-to-point vector) grows by its own α (T − t0C). */
     public static Effect thermalLinks(KinematicModel model, double t0C) {
         Pose[] f = model.linkFrames(new double[model.dof()]);
@@ -1120,10 +1116,12 @@ public final class Effect {
      * {@link #withWarmUp(Effect, double)} where the robot rested in {@code pauses} (null: it worked
      * throughout): the links cool toward the air while it rests ({@link Pauses#share}).
      */
-    public static Effect withWarmUp(Effect growth, double warmTauS, Pauses pauses) {
-        Effect e = withWarmUp(growth, warmTauS);
-        e.pauses = pauses != null && pauses.any() ? pauses : null;
-        return e;
+    public static Effect withWarmUp(Effect growth, double warmTauS, Pauses pauses) { return withWarmUp(growth, warmTauS).restingIn(pauses); }
+
+    /** This warm-up cooling through {@code pauses} (none when null or without a pause). */
+    private Effect restingIn(Pauses pauses) {
+        this.pauses = pauses != null && pauses.any() ? pauses : null;
+        return this;
     }
 
     /** {@code growth} without the drives' warm-up (itself when it has none). */

@@ -840,11 +840,9 @@ final class Locator {
             Probe p = new Probe();
             p.k = k;
             p.n0 = Arrays.copyOfRange(all.n0, o, o + k);
-            p.raw = new double[m * k];
-            for (int i = 0; i < m; i++) System.arraycopy(all.raw, i * kt + o, p.raw, i * k, k);
-            p.span = Arrays.copyOfRange(all.span, o * t.rank, (o + k) * t.rank);
-            p.u = all.u;
-            p.rank = all.rank;
+            double[] raw = new double[m * k];
+            for (int i = 0; i < m; i++) System.arraycopy(all.raw, i * kt + o, raw, i * k, k);
+            p.unprojected(raw, all.u, all.rank, Arrays.copyOfRange(all.span, o * all.rank, (o + k) * all.rank));
             if (all.endS != null) {
                 p.endS = new double[all.endS.length][m * k];
                 for (int e = 0; e < all.endS.length; e++)
@@ -1098,7 +1096,6 @@ final class Locator {
         // each probe's columns projected out of the structures accepted so far, one block at a time (they are orthonormal to
         // one another), made when first needed: left[pi] is out of the first done[pi] blocks
         List<double[]> blocks = new ArrayList<>();
-        List<Integer> blockSizes = new ArrayList<>();
         double[][] left = new double[n][];
         int[] done = new int[n];
         // the probes' Gram matrices, out of the span and the blocks: most probes fail the F test, which these tell at a k x k cost
@@ -1106,9 +1103,8 @@ final class Locator {
         for (int pi = 0; pi < n; pi++) if (probes.get(pi).raw != null) gram[pi] = new Gram(probes.get(pi));
         for (int step = 0; step < maxFound; step++) {
             double thr = alpha / Math.max(1, n - step);
-            double[] res = nq == 0 ? t.rPerp : Diagnoser.projectOut(q, nq, t.m, t.rPerp);
-            double rss = 0;
-            for (double v : res) rss += v * v;
+            double[] res = t.residualOutOf(q, nq);
+            double rss = t.rssOutOf(q, nq);
             Found best = null;
             for (int pi = 0; pi < n; pi++) {
                 if (used[pi]) continue;
@@ -1116,7 +1112,7 @@ final class Locator {
                 Probe p = probes.get(pi);
                 if (left[pi] == null) left[pi] = p.s();
                 for (; done[pi] < blocks.size(); done[pi]++)
-                    left[pi] = Diagnoser.projectOut(blocks.get(done[pi]), blockSizes.get(done[pi]), t.m, left[pi], p.k);
+                    left[pi] = Diagnoser.projectOut(blocks.get(done[pi]), blocks.get(done[pi]).length / t.m, t.m, left[pi], p.k);
                 Diagnoser.Candidate c = test(t, p, left[pi], q, nq, thr);
                 if (c == null || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
                 c.threshold = thr;
@@ -1143,7 +1139,6 @@ final class Locator {
             q = nqArr;
             nq += add;
             blocks.add(best.c.basis);
-            blockSizes.add(add);
             for (int pi = 0; pi < n; pi++) if (!used[pi] && gram[pi] != null) gram[pi].remove(best.c.basis, add);
         }
         // Backward: a structure the later ones made redundant leaves.
