@@ -258,10 +258,24 @@ public final class Diagnoser {
         return b.toString();
     }
 
-    private static Set<String> namedKeys(Diagnosis d) {
+    private static Set<String> namedKeys(Diagnosis d) { return namedKeys(d.effects().stream().map(Diagnosis.Finding::effect).toList()); }
+
+    private static Set<String> namedKeys(List<Effect> effects) {
         Set<String> out = new java.util.LinkedHashSet<>();
-        for (Diagnosis.Finding f : d.effects()) if (!f.effect().isFallback()) out.add(claimKey(f.effect()));
+        for (Effect e : effects) if (!e.isFallback()) out.add(claimKey(e));
         return out;
+    }
+
+    /**
+     * What the cross-validation takes from a fold's diagnosis: the families it names, the poses it
+     * left out, its geometric calibration and the held-out fold's error with the geometric model and
+     * with the fold's effects.
+     */
+    record Fold(Set<String> named, List<String> outliers, CalibrationResult geometric, double geometricValidateRmsM,
+                double finalValidateRmsM) {
+        static Fold of(Diagnosis d) {
+            return new Fold(namedKeys(d), d.outliers(), d.geometric(), d.geometricValidateRmsM(), d.finalValidateRmsM());
+        }
     }
 
     /**
@@ -289,11 +303,11 @@ public final class Diagnoser {
         Options fo = o.withFolds(0).withProgress(Progress.NONE);
         Map<String, Integer> count = new LinkedHashMap<>();
         double[] heldSs = new double[2]; // the held-out sums of squares: geometric model, each fold's effects
-        List<Diagnosis> folds = CalibrationWorkflow.crossValidate(train, fold, k, (f, tr, va) -> {
+        List<Fold> folds = CalibrationWorkflow.crossValidate(train, fold, k, (f, tr, va) -> {
             o.cancel().check();
             o.progress().update("cross-validating the claims (fold " + (f + 1) + " of " + k + ")", (double) f / k);
-            Diagnosis df = run(robot, tr, va, fo, null, t0, dirSource, Set.of()).d;
-            for (String key : namedKeys(df)) count.merge(key, 1, Integer::sum);
+            Fold df = run(robot, tr, va, fo, null, t0, dirSource, Set.of()).fold;
+            for (String key : df.named()) count.merge(key, 1, Integer::sum);
             heldSs[0] += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
             heldSs[1] += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
             return df;
@@ -347,7 +361,7 @@ public final class Diagnoser {
      * without each family; the held-out fold's error (each residual over its noise, orientation
      * included) is summed over the folds. Returns claim key to {error with it, error without it}.
      */
-    static Map<String, double[]> perFamilyHeldOut(RobotDescription robot, MeasurementSet train, int[] fold, List<Diagnosis> folds,
+    static Map<String, double[]> perFamilyHeldOut(RobotDescription robot, MeasurementSet train, int[] fold, List<Fold> folds,
                                                   Diagnosis d, Options o) {
         Map<String, double[]> out = new LinkedHashMap<>();
         List<Effect> effects = new ArrayList<>();
@@ -364,7 +378,7 @@ public final class Diagnoser {
         GravityTorques gravity = GravityTorques.of(model, robot);
         for (int f = 0; f < folds.size(); f++) {
             o.cancel().check();
-            Diagnosis df = folds.get(f);
+            Fold df = folds.get(f);
             Set<String> outl = new HashSet<>(df.outliers());
             MeasurementSet.FoldSplit split = train.foldSplit(fold, f);
             Work w = new Work(model, gravity, split.train().filter(m -> !outl.contains(m.poseId())).rows(), df.geometric(), split.heldOut(), o);
@@ -404,16 +418,16 @@ public final class Diagnoser {
     private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                       Directions.Source dirSource, Set<String> excluded) {
         Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
-        if (r.validationOutliers.isEmpty()) return judged(r, robot, train, validate, o, t0, dirSource, excluded, List.of(), new HashSet<>());
+        if (r.validationOutliers().isEmpty()) return judged(r, robot, train, validate, o, t0, dirSource, excluded, List.of(), new HashSet<>());
         Set<String> bad = new HashSet<>();
-        for (CalibrationResult.Outlier ol : r.validationOutliers) bad.add(ol.poseId());
+        for (CalibrationResult.Outlier ol : r.validationOutliers()) bad.add(ol.poseId());
         MeasurementSet clean = validate.filter(m -> !bad.contains(m.poseId()));
         List<Measurement> beyond = validate.rows().stream().filter(m -> bad.contains(m.poseId())).toList();
         Set<String> inRegion = new HashSet<>();
         Diagnosis d = judged(run(robot, train, clean, o, null, t0, dirSource, excluded), robot, train, clean, o, t0, dirSource, excluded,
                 beyond, inRegion);
         List<String> outliers = new ArrayList<>(d.outliers()), notes = new ArrayList<>(d.notes());
-        for (CalibrationResult.Outlier ol : r.validationOutliers) {
+        for (CalibrationResult.Outlier ol : r.validationOutliers()) {
             boolean region = inRegion.contains(ol.poseId());
             if (!region && !outliers.contains(ol.poseId())) outliers.add(ol.poseId());
             notes.add(String.format(Locale.ROOT, "validation pose %s misses by %.4f mm, %.0f robust sigmas (%.4f mm) of the "
@@ -429,9 +443,8 @@ public final class Diagnoser {
     private static Diagnosis judged(Run r, RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                     Directions.Source dirSource, Set<String> excluded, List<Measurement> validationBeyond,
                                     Set<String> validationInRegion) {
-        Diagnosis d = r.d;
         Run underRun = r;
-        if (d.effects().isEmpty()) return d;
+        if (!r.named) return r.d();
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
@@ -441,25 +454,25 @@ public final class Diagnoser {
         // (but the gross readings among many, which would bend that fit). When the final model's
         // effects, fitted so, still put every one of them beyond the rule, they are not; else the
         // whole diagnosis is made again with them (the search may take other effects with them in).
-        if (!d.outliers().isEmpty() && !r.underEveryPose().get().containsAll(d.outliers())) {
+        if (!r.outliers.isEmpty() && !r.underEveryPose.get().containsAll(r.outliers)) {
             Run all = run(robot, train, validate, o, r.gross, t0, dirSource, excluded);
-            if (!all.d.effects().isEmpty()) {
+            if (all.named) {
                 List<String> underAll = all.outliersUnder;
-                if (underAll.isEmpty()) return all.d;
+                if (underAll.isEmpty()) return all.d();
                 if (underAll.size() < under.size()) {
                     under = underAll;
                     underRun = all;
                 }
             }
         }
-        if (new HashSet<>(under).equals(new HashSet<>(d.outliers()))) return d;
+        if (new HashSet<>(under).equals(new HashSet<>(r.outliers))) return r.d();
         Region region = region(under, train.rows());
-        if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder(),
+        if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder,
                 region == null ? "-" : region.words(), region == null ? "-" : region.linked());
         if (region != null && region.p() < REGION_ALPHA) {
             // a pose next to none of the region's, beyond twice what its poses typically reach, is a bad reading all the same
-            Map<String, Double> sigmas = underRun.sigmasUnder();
-            Diagnosis rd = underRun.d;
+            Map<String, Double> sigmas = underRun.sigmasUnder;
+            Diagnosis rd = underRun.d();
             double[] zs = region.linked().stream().mapToDouble(id -> sigmas.getOrDefault(id, 0.0)).sorted().toArray();
             double typical = zs.length == 0 ? Double.POSITIVE_INFINITY : Stats.median(zs);
             List<String> beyondRule = under;
@@ -477,7 +490,7 @@ public final class Diagnoser {
             List<String> inRegion = under.stream().filter(id -> !bad.contains(id)).toList();
             List<String> forced = new ArrayList<>(rd.outliers());
             forced.addAll(far);
-            Diagnosis base = far.isEmpty() ? rd : run(robot, train, validate, o, forced, t0, dirSource, excluded).d;
+            Diagnosis base = far.isEmpty() ? rd : run(robot, train, validate, o, forced, t0, dirSource, excluded).d();
             for (Measurement m : validationBeyond) if (region.holds(m, train.rows())) validationInRegion.add(m.poseId());
             List<String> notes = new ArrayList<>(base.notes());
             notes.add(String.format(Locale.ROOT, "poses %s lie beyond %.0f robust sigmas of the final model but are not reported as "
@@ -490,6 +503,7 @@ public final class Diagnoser {
                     REGION_GROSS * typical, typical, far.size() == 1 ? "is" : "are")));
             return with(base, bad, notes);
         }
+        Diagnosis d = r.d();
         if (tooManyToBeBad(under.size(), train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
         Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
         List<String> more = appearing(without, under);
@@ -497,8 +511,8 @@ public final class Diagnoser {
             // Reported as bad readings, they are left out of the fit: that must predict the validation poses at least as well as
             // the diagnosis with every pose in (the first run's left out ones are not beyond the rule under its model).
             if (validate != null && !validate.rows().isEmpty()) {
-                Diagnosis every = d.outliers().isEmpty() ? d : run(robot, train, validate, o, List.of(), t0, dirSource, excluded).d;
-                double valWith = every.finalValidateRmsM(), valWithout = without.d.finalValidateRmsM();
+                Diagnosis every = d.outliers().isEmpty() ? d : run(robot, train, validate, o, List.of(), t0, dirSource, excluded).d();
+                double valWith = every.finalValidateRmsM(), valWithout = without.d().finalValidateRmsM();
                 if (valWithout > valWith * (1 + ALIAS_MARGIN)) {
                     List<String> notes = new ArrayList<>(every.notes());
                     notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as "
@@ -509,7 +523,7 @@ public final class Diagnoser {
                     return with(every, every.outliers(), notes);
                 }
             }
-            return without.d;
+            return without.d();
         }
         List<String> notes = new ArrayList<>(d.notes());
         notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as bad "
@@ -777,9 +791,9 @@ public final class Diagnoser {
         List<String> out = new ArrayList<>(under);
         for (int round = 0; round < 3 && out.size() <= 0.2 * train.size(); round++) {
             Run without = run(robot, train, validate, o, out, t0, dirSource, excluded);
-            boolean clean = without.d.located().stream().noneMatch(l -> "final".equals(l.stage()));
+            boolean clean = without.d().located().stream().noneMatch(l -> "final".equals(l.stage()));
             if (!clean || !without.outliersUnder.containsAll(out)) return d;
-            if (new HashSet<>(without.outliersUnder).equals(new HashSet<>(out))) return without.d;
+            if (new HashSet<>(without.outliersUnder).equals(new HashSet<>(out))) return without.d();
             List<String> more = appearing(without, out);
             if (more.size() > 1) return d;
             out.addAll(more);
@@ -792,8 +806,47 @@ public final class Diagnoser {
      * how many robust sigmas out each lies), with the rule's verdict on them under the model refitted
      * to every pose.
      */
-    private record Run(Diagnosis d, List<String> outliersUnder, List<CalibrationResult.Outlier> validationOutliers, List<String> gross,
-                       java.util.function.Supplier<List<String>> underEveryPose, Map<String, Double> sigmasUnder) { }
+    private static final class Run {
+        private final java.util.function.Supplier<Finished> finish;
+        private Finished finished;
+        /** Whether the run named any effect (a family or a fallback), and the training poses it left out. */
+        final boolean named;
+        final List<String> outliers;
+        /** What a cross-validation fold takes from the run, without finishing its report. */
+        final Fold fold;
+        private final boolean validationFlagged;
+        final List<String> outliersUnder, gross;
+        final java.util.function.Supplier<List<String>> underEveryPose;
+        final Map<String, Double> sigmasUnder;
+
+        Run(java.util.function.Supplier<Finished> finish, boolean named, Fold fold, boolean validationFlagged,
+            List<String> outliersUnder, List<String> gross, java.util.function.Supplier<List<String>> underEveryPose,
+            Map<String, Double> sigmasUnder) {
+            this.finish = finish;
+            this.named = named;
+            this.fold = fold;
+            this.outliers = fold.outliers();
+            this.validationFlagged = validationFlagged;
+            this.outliersUnder = outliersUnder;
+            this.gross = gross;
+            this.underEveryPose = underEveryPose;
+            this.sigmasUnder = sigmasUnder;
+        }
+
+        /** The report, finished on first use. */
+        Diagnosis d() { return finished().d(); }
+
+        /** The validation poses beyond the outlier rule under the final model (see {@link #run}). */
+        List<CalibrationResult.Outlier> validationOutliers() { return validationFlagged ? finished().validationOutliers() : List.of(); }
+
+        private Finished finished() {
+            if (finished == null) finished = finish.get();
+            return finished;
+        }
+    }
+
+    /** A run's report and the validation poses beyond the outlier rule under its final model. */
+    private record Finished(Diagnosis d, List<CalibrationResult.Outlier> validationOutliers) { }
 
     /** Robust sigmas beyond which a pose is an outlier under the extended model (the calibration's default rule). */
     static final double OUTLIER_K = 5;
@@ -804,13 +857,13 @@ public final class Diagnoser {
      * final fit, over every training pose; poses whose backlash side is unknown are not flagged.
      * Each flagged pose (in file order) with its worst residual in robust sigmas.
      */
-    static Map<String, Double> outliersUnder(Diagnosis d, Fit fit, MeasurementSet train) {
+    static Map<String, Double> outliersUnder(List<Effect> selected, Fit fit, MeasurementSet train) {
         Map<String, Double> out = new LinkedHashMap<>();
         if (train.size() == 0) return out;
         Map<String, Measurement> byId = new LinkedHashMap<>();
         for (Measurement m : train.rows()) byId.put(m.poseId(), m);
         for (CalibrationResult.Outlier ol : Calibrator.outliers(fit.problem, fit.full, train, Set.of(), OUTLIER_K).values())
-            if (!unknownBacklashSide(d, byId.get(ol.poseId()))) out.put(ol.poseId(), ol.residualM() / ol.robustSigmaM());
+            if (!unknownBacklashSide(selected, byId.get(ol.poseId()))) out.put(ol.poseId(), ol.residualM() / ol.robustSigmaM());
         return out;
     }
 
@@ -926,11 +979,11 @@ public final class Diagnoser {
      * joint with backlash: its lost motion may sit on either side, so its residual is no sign of a
      * bad measurement.
      */
-    static boolean unknownBacklashSide(Diagnosis d, Measurement m) {
+    static boolean unknownBacklashSide(List<Effect> selected, Measurement m) {
         int[] dir = m.directions();
         if (dir == null) return false;
-        for (Diagnosis.Finding f : d.effects())
-            if (f.effect().kind() == Effect.Kind.BACKLASH && dir[f.effect().joint()] == 0) return true;
+        for (Effect e : selected)
+            if (e.kind() == Effect.Kind.BACKLASH && dir[e.joint()] == 0) return true;
         return false;
     }
 
@@ -1408,110 +1461,120 @@ public final class Diagnoser {
         notes.addAll(aliasNotes);
 
         timer.mark("final fit");
-        // Locate what is left, and report every structure found (named or not).
-        Tester lastTester = plotTester != null ? plotTester : geoTester;
-        List<Locator.Found> scannedFinal = selected.isEmpty() ? foundGeo
-                : Locator.scan(lastTester, Locator.probes(lastTester, dirSource), o.alpha(), MAX_LOCATED);
-        // Beside a named family, a structure left is a claim the user reads: with validation poses it must hold there too.
-        List<Locator.Found> weak = weakLeads(w, fit, selected, absorbedCols, lastTester, scannedFinal, rows, model, notes);
-        List<Locator.Found> foundFinal = scannedFinal.stream().filter(f -> !weak.contains(f)).toList();
-        List<Diagnosis.Located> located = new ArrayList<>();
-        for (Locator.Found f : foundGeo) {
-            if (weak.stream().anyMatch(g -> sameStructure(f, g))) continue; // said in the notes as a weak lead
-            boolean left = foundFinal.stream().anyMatch(g -> sameStructure(f, g));
-            Effect named = left ? null : explainer(f, selected);
-            String by = named != null ? named.label() : left ? null : takenBy(f, geoTester, selected);
-            located.add(located(f, geoTester, "geometric", by, named == null && by != null, left));
-        }
-        if (!selected.isEmpty())
-            for (Locator.Found f : foundFinal) located.add(located(f, lastTester, "final", null, false, true));
-        // The noise floor without every structure still located; above 1.2x it the report says so first.
-        double rssLeft = lastTester.rss0;
-        int dfLeft = lastTester.m - lastTester.rank;
-        for (Locator.Found f : foundFinal) { rssLeft -= f.c.drss; dfLeft -= f.c.df1; }
-        timer.mark("final locate");
-        if (!foundFinal.isEmpty() && !outliers.isEmpty())
-            notes.add("the outlier test is not reliable on these poses: a structure no named effect explains is left (see "
-                    + "located), and poses on it can look like bad measurements; check the poses reported as outliers against it");
-        List<String> warnings = warnings(foundFinal, selected, fit, w, rssLeft, dfLeft, rows.size(), model.dof());
-        double valFinal = w.validateRms(fit);
-        if (Double.isFinite(valFinal)) {
-            // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
-            double predicted = fit.trainRms * Math.sqrt((double) fit.m / Math.max(1, fit.m - fit.nf)) * Math.sqrt(1 + (double) fit.nf / fit.m);
-            if (valFinal > 1.2 * predicted)
-                warnings.add(0, String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what the training fit "
-                        + "predicts (%.4f mm): the model does not carry over to new poses. Something the scan cannot resolve on "
-                        + "these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints at once, "
-                        + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
-                        + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
-        }
-        double stated = statedSigmaM(trainAll);
-        double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
-        // The stated floor per kind of measurement, as the diagnosis sets it: √3·σ for points, σ for a length.
-        Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
-        // What a model without error leaves with p parameters fitted to n measured components: σ√(1 − p/n) on the
-        // training poses, σ√(1 + p/n) on new ones (one length per pose carries ten times the relative share of the
-        // parameters a point does; unaccounted, a null campaign of lengths comes out near 1.2 x σ on new poses).
-        int components = fit.m / fit.problem.rowsPerPose() * fit.problem.positionRowsPerPose();
-        boolean onValidation = Double.isFinite(valFinal);
-        double perfect = Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) fit.nf / Math.max(1, components)));
-        if (Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components))
-            warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fit.nf, selected, foundFinal.isEmpty()));
-        o.progress().update("done", 1);
-        double rssFinal = 0;
-        for (double v : fit.r) rssFinal += v * v;
-        // σ per position axis, or per distance: from the position (distance) rows only, degrees of freedom corrected.
-        int rppF = fit.problem.rowsPerPose(), posRows = fit.problem.positionRowsPerPose();
-        double posSq = 0;
-        for (int i = 0; i < fit.m; i++) if (i % rppF < posRows) posSq += fit.r[i] * fit.r[i];
-        double sigmaFinal = Math.sqrt(posSq / Math.max(1, (double) fit.m / rppF * posRows * (fit.m - fit.nf) / fit.m)) * w.sigmaPos;
-        // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them); with a
-        // structure located and left, a few gross readings only.
-        List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 ? List.of()
-                : new ArrayList<>(Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).values());
-        if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, w.validate.size());
-        if (!valOut.isEmpty()) {
-            // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
-            Map<String, Measurement> byId = new LinkedHashMap<>();
-            for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
-            org.robopro.kinematics.Pose tool = fit.problem.toolOf(fit.full);
-            valOut.removeIf(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool) || inStepGap(selected, byId.get(ol.poseId()), rows));
-            // nor is one the play's other flank explains where gravity hands the gear over: the model's miss, said as such
-            Fit at = fit;
-            List<String> handedOver = valOut.stream().map(CalibrationResult.Outlier::poseId)
-                    .filter(id -> otherFlankExplains(w, at, selected, byId.get(id))).toList();
-            if (!handedOver.isEmpty()) {
-                valOut.removeIf(ol -> handedOver.contains(ol.poseId()));
-                List<Measurement> rest = w.validate.rows().stream().filter(m -> !handedOver.contains(m.poseId())).toList();
-                boolean one = handedOver.size() == 1;
-                notes.add(String.format(Locale.ROOT, "validation %s %s %s where the gravity torque hands the gear of a play held by "
-                        + "gravity from one flank to the other: which flank it sits on there the model cannot tell (the masses are "
-                        + "estimates, the mesh's friction varies), and %s by about the play. %s no bad %s and %s in the validation error "
-                        + "(%.4f mm; %.4f mm without %s)", one ? "pose" : "poses", String.join(", ", handedOver), one ? "lies" : "lie",
-                        one ? "it misses" : "they miss", one ? "It is" : "They are", one ? "reading" : "readings", one ? "stays" : "stay",
-                        w.validateRms(fit) * 1e3, rest.isEmpty() ? Double.NaN : w.heldOut(fit, rest, false) * 1e3, one ? "it" : "them"));
+        // What only the report needs (the final locate, the warnings, the validation poses' outliers) is made when the report
+        // is asked for: a diagnosis the judgement of the outliers replaces by another run is never finished.
+        Fit fin = fit;
+        CalibrationResult geoFin = geo;
+        int tested = Math.max(familySize, 0);
+        java.util.function.Supplier<Finished> finish = () -> {
+            // Locate what is left, and report every structure found (named or not).
+            Tester lastTester = plotTester != null ? plotTester : geoTester;
+            List<Locator.Found> scannedFinal = selected.isEmpty() ? foundGeo
+                    : Locator.scan(lastTester, Locator.probes(lastTester, dirSource), o.alpha(), MAX_LOCATED);
+            // Beside a named family, a structure left is a claim the user reads: with validation poses it must hold there too.
+            List<Locator.Found> weak = weakLeads(w, fin, selected, absorbedCols, lastTester, scannedFinal, rows, model, notes);
+            List<Locator.Found> foundFinal = scannedFinal.stream().filter(f -> !weak.contains(f)).toList();
+            List<Diagnosis.Located> located = new ArrayList<>();
+            for (Locator.Found f : foundGeo) {
+                if (weak.stream().anyMatch(g -> sameStructure(f, g))) continue; // said in the notes as a weak lead
+                boolean left = foundFinal.stream().anyMatch(g -> sameStructure(f, g));
+                Effect named = left ? null : explainer(f, selected);
+                String by = named != null ? named.label() : left ? null : takenBy(f, geoTester, selected);
+                located.add(located(f, geoTester, "geometric", by, named == null && by != null, left));
             }
-        }
-        Diagnosis result = new Diagnosis(robot.name(), geo, sigmaFinal, geoTrain, geoVal, findings, fit.trainRms, w.validateRms(fit),
-                outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
-                fit.problem.toolOf(fit.full), w.instrument ? fit.problem.instrumentOf(fit.full) : org.robopro.kinematics.Pose.IDENTITY,
-                Math.max(familySize, 0), o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
-        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(result, fit, trainAll);
+            if (!selected.isEmpty())
+                for (Locator.Found f : foundFinal) located.add(located(f, lastTester, "final", null, false, true));
+            // The noise floor without every structure still located; above 1.2x it the report says so first.
+            double rssLeft = lastTester.rss0;
+            int dfLeft = lastTester.m - lastTester.rank;
+            for (Locator.Found f : foundFinal) { rssLeft -= f.c.drss; dfLeft -= f.c.df1; }
+            timer.mark("final locate");
+            if (!foundFinal.isEmpty() && !outliers.isEmpty())
+                notes.add("the outlier test is not reliable on these poses: a structure no named effect explains is left (see "
+                        + "located), and poses on it can look like bad measurements; check the poses reported as outliers against it");
+            List<String> warnings = warnings(foundFinal, selected, fin, w, rssLeft, dfLeft, rows.size(), model.dof());
+            double valFinal = w.validateRms(fin);
+            if (Double.isFinite(valFinal)) {
+                // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
+                double predicted = fin.trainRms * Math.sqrt((double) fin.m / Math.max(1, fin.m - fin.nf)) * Math.sqrt(1 + (double) fin.nf / fin.m);
+                if (valFinal > 1.2 * predicted)
+                    warnings.add(0, String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what the training fit "
+                            + "predicts (%.4f mm): the model does not carry over to new poses. Something the scan cannot resolve on "
+                            + "these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints at once, "
+                            + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
+                            + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
+            }
+            double stated = statedSigmaM(trainAll);
+            double heldOutRms = Double.isFinite(valFinal) ? valFinal : fin.trainRms;
+            // The stated floor per kind of measurement, as the diagnosis sets it: √3·σ for points, σ for a length.
+            Measured kind = fin.problem.pairs() ? Measured.PAIRS : fin.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
+            // What a model without error leaves with p parameters fitted to n measured components: σ√(1 − p/n) on the
+            // training poses, σ√(1 + p/n) on new ones (one length per pose carries ten times the relative share of the
+            // parameters a point does; unaccounted, a null campaign of lengths comes out near 1.2 x σ on new poses).
+            int components = fin.m / fin.problem.rowsPerPose() * fin.problem.positionRowsPerPose();
+            boolean onValidation = Double.isFinite(valFinal);
+            double perfect = Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) fin.nf / Math.max(1, components)));
+            if (Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components))
+                warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fin.nf, selected, foundFinal.isEmpty()));
+            o.progress().update("done", 1);
+            double rssFinal = 0;
+            for (double v : fin.r) rssFinal += v * v;
+            // σ per position axis, or per distance: from the position (distance) rows only, degrees of freedom corrected.
+            int rppF = fin.problem.rowsPerPose(), posRows = fin.problem.positionRowsPerPose();
+            double posSq = 0;
+            for (int i = 0; i < fin.m; i++) if (i % rppF < posRows) posSq += fin.r[i] * fin.r[i];
+            double sigmaFinal = Math.sqrt(posSq / Math.max(1, (double) fin.m / rppF * posRows * (fin.m - fin.nf) / fin.m)) * w.sigmaPos;
+            // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them); with a
+            // structure located and left, a few gross readings only.
+            List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 ? List.of()
+                    : new ArrayList<>(Calibrator.outliers(fin.problem, fin.full, w.validate, Set.of(), OUTLIER_K).values());
+            if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, w.validate.size());
+            if (!valOut.isEmpty()) {
+                // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
+                Map<String, Measurement> byId = new LinkedHashMap<>();
+                for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
+                org.robopro.kinematics.Pose tool = fin.problem.toolOf(fin.full);
+                valOut.removeIf(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool) || inStepGap(selected, byId.get(ol.poseId()), rows));
+                // nor is one the play's other flank explains where gravity hands the gear over: the model's miss, said as such
+                Fit at = fin;
+                List<String> handedOver = valOut.stream().map(CalibrationResult.Outlier::poseId)
+                        .filter(id -> otherFlankExplains(w, at, selected, byId.get(id))).toList();
+                if (!handedOver.isEmpty()) {
+                    valOut.removeIf(ol -> handedOver.contains(ol.poseId()));
+                    List<Measurement> rest = w.validate.rows().stream().filter(m -> !handedOver.contains(m.poseId())).toList();
+                    boolean one = handedOver.size() == 1;
+                    notes.add(String.format(Locale.ROOT, "validation %s %s %s where the gravity torque hands the gear of a play held by "
+                            + "gravity from one flank to the other: which flank it sits on there the model cannot tell (the masses are "
+                            + "estimates, the mesh's friction varies), and %s by about the play. %s no bad %s and %s in the validation error "
+                            + "(%.4f mm; %.4f mm without %s)", one ? "pose" : "poses", String.join(", ", handedOver), one ? "lies" : "lie",
+                            one ? "it misses" : "they miss", one ? "It is" : "They are", one ? "reading" : "readings", one ? "stays" : "stay",
+                            w.validateRms(fin) * 1e3, rest.isEmpty() ? Double.NaN : w.heldOut(fin, rest, false) * 1e3, one ? "it" : "them"));
+                }
+            }
+            Diagnosis result = new Diagnosis(robot.name(), geoFin, sigmaFinal, geoTrain, geoVal, findings, fin.trainRms, w.validateRms(fin),
+                    outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
+                    fin.problem.toolOf(fin.full), w.instrument ? fin.problem.instrumentOf(fin.full) : org.robopro.kinematics.Pose.IDENTITY,
+                    tested, o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
+            return new Finished(result, valOut);
+        };
+        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(selected, fit, trainAll);
         List<String> under = new ArrayList<>(beyond.keySet());
         if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
         if (LOG.isDebugEnabled())
             LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
-        Fit last = fit;
-        CalibrationResult geoLast = geo;
         java.util.function.Supplier<List<String>> underEveryPose = () -> {
             // the final model's effects and geometry fitted again to every training pose but the gross readings among many
             List<Measurement> every = trainAll.rows().stream().filter(m -> !gross.contains(m.poseId())).toList();
-            Work wa = new Work(model, gravity, every, geoLast, validate, o);
-            Fit fa = wa.fit(selected, absorbedCols, last.full, null);
-            List<String> u = new ArrayList<>(outliersUnder(result, fa, trainAll).keySet());
+            Work wa = new Work(model, gravity, every, geoFin, validate, o);
+            Fit fa = wa.fit(selected, absorbedCols, fin.full, null);
+            List<String> u = new ArrayList<>(outliersUnder(selected, fa, trainAll).keySet());
             return u.isEmpty() ? u : otherFlankExplains(wa, fa, selected, u);
         };
-        return new Run(result, under, valOut, List.copyOf(gross), underEveryPose, beyond);
+        // the validation poses' outliers need the finished report only when the rule flags any
+        boolean valFlagged = w.validate != null && w.validate.size() >= 10
+                && !Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).isEmpty();
+        Fold fold = new Fold(namedKeys(selected), List.copyOf(outliers), geo, geoVal, w.validateRms(fit));
+        return new Run(finish, !selected.isEmpty(), fold, valFlagged, under, List.copyOf(gross), underEveryPose, beyond);
     }
 
     /**
@@ -3463,8 +3526,6 @@ public final class Diagnoser {
                 int o0 = full.length - added.effect.size();
                 for (int i = 0; i < added.effect.size(); i++) full[o0 + i] = added.estimate[i];
             }
-            IdentificationProblem p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
-            p.setSigmas(sigmaPos, sigmaRot);
             boolean[] fix = Arrays.copyOf(geoFixed, full.length);
             int off = nBase;
             for (Effect e : effects) {
@@ -3474,19 +3535,20 @@ public final class Diagnoser {
                 }
                 off += e.size();
             }
-            p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
+            IdentificationProblem p = new IdentificationProblem(model, rows, sixD, instrument, blocks(effects), full);
             p.setSigmas(sigmaPos, sigmaRot);
             p.setFixed(fix);
-            LevenbergMarquardt.Result res = new LevenbergMarquardt(p).maxIterations(100).solve(p.freeOf(full), o.cancel());
+            LevenbergMarquardt lm = new LevenbergMarquardt(p).maxIterations(100);
+            LevenbergMarquardt.Result res = lm.solve(p.freeOf(full), o.cancel());
             Fit f = new Fit();
             f.problem = p;
             f.full = p.fullOf(res.x());
             f.m = p.residualCount();
             f.nf = p.parameterCount();
             f.nEffects = effects.size();
-            f.r = new double[f.m];
-            f.jac = new double[f.m * f.nf];
-            p.evaluate(res.x(), f.r, f.jac);
+            // the solver leaves its residuals and Jacobian at the solution
+            f.r = lm.lastResiduals();
+            f.jac = lm.lastJacobian();
             f.trainRms = p.measurementRms(f.r, sigmaPos);
             return f;
         }

@@ -92,11 +92,11 @@ class CrossValidatedClaimsTest {
                 d.directions(), d.located(), d.warnings());
         int k = 5, n = train.size();
         int[] fold = MeasurementSet.folds(n, k, n);
-        List<Diagnosis> folds = new ArrayList<>();
+        List<Diagnoser.Fold> folds = new ArrayList<>();
         for (int f = 0; f < k; f++) {
             List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
             for (int i = 0; i < n; i++) (fold[i] == f ? va : tr).add(train.rows().get(i));
-            folds.add(Diagnoser.diagnose(irb2000, train.withRows(tr), train.withRows(va)));
+            folds.add(Diagnoser.Fold.of(Diagnoser.diagnose(irb2000, train.withRows(tr), train.withRows(va))));
         }
         Map<String, double[]> held = Diagnoser.perFamilyHeldOut(irb2000, train, fold, folds, withChance, Diagnoser.Options.defaults());
         double[] lost = held.get("backlash j2"), gear = held.get("gear-periodic j4");
