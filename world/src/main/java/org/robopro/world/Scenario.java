@@ -448,6 +448,16 @@ public record Scenario(String name, String family, String robot, Expected expect
                             m.payloadCentre(), m.gravity());
                     return w -> w.withRocking(rock);
                 }, payloads("irb2000")));
+        c.add(s("outside: a pedestal's foot rocks on the floor above an overturning moment", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    // The robot bolted on a rigid steel pedestal 0.4-0.8 m tall whose foot plate (0.3-0.4 m half-width) sits on
+                    // slack anchors: the same hold and stiffness as a rocking base plate, but the robot turns about the foot's edge
+                    // on the floor, so its base also slides toward the lean by the tilt times the pedestal's height.
+                    var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+                    var rock = new WorldRobot.Rocking(uniform(r, 0.3, 0.4), uniform(r, 50, 150), uniform(r, 2e6, 5e6), m.masses(),
+                            m.payloadCentre(), m.gravity(), uniform(r, 0.4, 0.8));
+                    return w -> w.withRocking(rock);
+                }, payloads("irb2000")));
         c.add(s("outside: dress-pack drag on the wrist", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     var d = new WorldRobot.DressPack(uniform(r, 0.08, 0.12), Math.toRadians(uniform(r, 60, 120)), uniform(r, 0.5, 1.0), 0,

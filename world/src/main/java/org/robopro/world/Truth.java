@@ -110,9 +110,10 @@ final class Truth {
         if (w.rocking() != null) {
             WorldRobot.Rocking ro = w.rocking();
             Map<String, Object> m = new LinkedHashMap<>();
-            m.put("form", "square foot in z = 0 on the base axes; about the foot edge with the largest overturning moment M of the arm's "
-                    + "weight and payload: tilt = (M - hold) / stiffness when M > hold, else none");
+            m.put("form", "square foot in z = -depth on the base axes; about the foot edge with the largest overturning moment M of the "
+                    + "arm's weight and payload: tilt = (M - hold) / stiffness when M > hold, else none");
             m.put("half_width_mm", ro.halfWidthM() * 1e3);
+            m.put("foot_depth_mm", ro.footDepthM() * 1e3);
             m.put("hold_moment_nm", ro.holdMomentNm());
             m.put("stiffness_nm_per_rad", ro.stiffnessNmPerRad());
             List<Map<String, Object>> masses = new ArrayList<>();

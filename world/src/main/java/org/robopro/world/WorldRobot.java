@@ -293,9 +293,10 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     /**
-     * The robot's base rocking on its foundation: the base plate, a square of half-width
-     * {@code halfWidthM} centred on the base origin in the plane z = 0 with its edges along the base
-     * x and y axes, is held down by anchor bolts. The arm's weight (these masses, and the payload at
+     * The robot's base rocking on its foundation: the foot plate, a square of half-width
+     * {@code halfWidthM} centred under the base origin in the plane z = −{@code footDepthM} (0: the
+     * robot's own base plate; deeper: the foot of a rigid pedestal or riser the robot is bolted on)
+     * with its edges along the base x and y axes, is held down by anchor bolts. The arm's weight (these masses, and the payload at
      * the flange) has a moment about each foot edge, M = e · sum (c - p_edge) × m g, with e the edge's
      * direction taken so that M &gt; 0 tips the robot over that edge (statics of a rigid body on a
      * support line: e.g. Meriam &amp; Kraige, "Engineering Mechanics: Statics", tipping about an edge).
@@ -306,11 +307,24 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * out.
      */
     public record Rocking(double halfWidthM, double holdMomentNm, double stiffnessNmPerRad, List<Mass> masses, double[] payloadCentre,
-                          double[] gravity) {
+                          double[] gravity, double footDepthM) {
         public Rocking {
             masses = List.copyOf(masses);
             payloadCentre = payloadCentre.clone();
             gravity = gravity.clone();
+        }
+
+        /** The robot's own base plate rocking (its foot in z = 0). */
+        public Rocking(double halfWidthM, double holdMomentNm, double stiffnessNmPerRad, List<Mass> masses, double[] payloadCentre,
+                       double[] gravity) {
+            this(halfWidthM, holdMomentNm, stiffnessNmPerRad, masses, payloadCentre, gravity, 0);
+        }
+
+        /** A point of foot edge {@code e}: its outward normal times the half-width, at the foot's depth. */
+        private double[] edgePoint(int e) {
+            double[] p = Rigid.scale(NORMALS[e], halfWidthM);
+            p[2] = -footDepthM;
+            return p;
         }
 
         @Override public double[] payloadCentre() { return payloadCentre.clone(); }
@@ -323,7 +337,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         public double[] moments(List<double[]> centres, List<Double> kg) {
             double[] out = new double[4];
             for (int e = 0; e < 4; e++) {
-                double[] n = NORMALS[e], p = Rigid.scale(n, halfWidthM), axis = Rigid.cross(new double[] {0, 0, 1}, n);
+                double[] n = NORMALS[e], p = edgePoint(e), axis = Rigid.cross(new double[] {0, 0, 1}, n);
                 for (int i = 0; i < centres.size(); i++)
                     out[e] += Rigid.dot(axis, Rigid.cross(Rigid.minus(centres.get(i), p), Rigid.scale(gravity, kg.get(i))));
             }
@@ -336,7 +350,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             for (int e = 1; e < 4; e++) if (m[e] > m[best]) best = e;
             if (!(m[best] > holdMomentNm)) return Rigid.IDENTITY;
             double[] n = NORMALS[best];
-            return Rigid.rotation(Rigid.cross(new double[] {0, 0, 1}, n), (m[best] - holdMomentNm) / stiffnessNmPerRad, Rigid.scale(n, halfWidthM));
+            return Rigid.rotation(Rigid.cross(new double[] {0, 0, 1}, n), (m[best] - holdMomentNm) / stiffnessNmPerRad, edgePoint(best));
         }
     }
 

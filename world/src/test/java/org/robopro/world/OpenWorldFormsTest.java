@@ -108,6 +108,24 @@ class OpenWorldFormsTest {
     }
 
     @Test
+    void pedestalFootRocksOnTheFloor_theBaseSlidesTowardTheLean_byHand() {
+        var m = exact();
+        var rock = new WorldRobot.Rocking(0.2, 20, 1e6, m.masses(), m.payloadCentre(), m.gravity(), 0.6);
+        WorldRobot rigid = nominal(), rocking = rigid.withRocking(rock);
+        // The same moment as on the base plate (the weights are vertical: the edge's depth gives them no lever)
+        double moment = (45 * -0.2 + 35 * 0.1 + 6 * 0.65 + 10 * 0.8) * G, phi = (moment - 20) / 1e6;
+        assertEquals(moment, rocking.overturningMoments(rigid.arm(), new double[6], 10)[0], 1e-9);
+        // about +y through the foot's edge (0.2, 0, -0.6): the target (1.1, 0, 1.615) is (0.9, 0, 2.215) from it
+        double[] p = rocking.target(new double[6], UP, 20, 0, 10).p();
+        assertArrayEquals(new double[] {0.2 + 0.9 * Math.cos(phi) + 2.215 * Math.sin(phi), 0, -0.6 - 0.9 * Math.sin(phi) + 2.215 * Math.cos(phi)},
+                p, 1e-12);
+        // against the plate on the floor of the base itself, the target moves further toward the lean by about phi x 0.6 m
+        double[] plate = rigid.withRocking(new WorldRobot.Rocking(0.2, 20, 1e6, m.masses(), m.payloadCentre(), m.gravity())).target(
+                new double[6], UP, 20, 0, 10).p();
+        assertEquals(0.6 * phi, p[0] - plate[0], 1e-3 * 0.6 * phi);
+    }
+
+    @Test
     void dressPackPull_yieldsTheWristDrives_byVirtualWork_byHand() {
         var pack = new WorldRobot.DressPack(0.1, Math.toRadians(90), 0.8, 0, 200, new double[] {2e4, 1.5e4, 1e4});
         WorldRobot rigid = nominal(), pulled = rigid.withDressPack(pack);

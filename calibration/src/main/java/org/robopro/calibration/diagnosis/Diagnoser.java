@@ -3333,22 +3333,26 @@ public final class Diagnoser {
     /**
      * The leave-one-pose-out error with the base tilt ({@link Effect#tiltAt}: azimuth {@code psi}, NaN
      * toward the lean; {@code edges} 1 or 4), tilting at {@code share} of the poses, in the place of
-     * selected effect {@code k} (negative: added): its two columns, the regressor through each row's
+     * selected effect {@code k} (negative: added): its columns, the regressor through each row's
      * translation sensitivity, and with orientations the frame's turn.
      */
     private static double tiltPress(Tester at, int k, double[][] mom, double psi, double share, int edges) {
         double[] sig = tiltColumns(at, mom, psi, tiltHold(mom, psi, share, edges), edges);
         if (sig == null) return Double.POSITIVE_INFINITY;
-        return k >= 0 ? at.pressReplacingColumns(k, sig, 2) : at.pressAddingColumns(sig, 2);
+        return k >= 0 ? at.pressReplacingColumns(k, sig, TILT_COLUMNS) : at.pressAddingColumns(sig, TILT_COLUMNS);
     }
 
+    /** A base tilt's columns: the tilt, the lift and the slide ({@link Effect#baseTilt}). */
+    static final int TILT_COLUMNS = 3;
+
     /**
-     * The base tilt's two signature columns (m x 2, row-major; {@link Effect#tiltAt}: azimuth {@code psi},
+     * The base tilt's signature columns (m x {@link #TILT_COLUMNS}, row-major; {@link Effect#tiltAt}: azimuth {@code psi},
      * NaN toward the lean; {@code edges} 1 or 4) holding {@code hold}: its regressor through each row's
      * translation sensitivity, and with orientations the frame's turn; null when no pose tilts.
      */
     static double[] tiltColumns(Tester at, double[][] mom, double psi, double hold, int edges) {
-        double[] sig = new double[at.m * 2], g3 = new double[6], dt = at.endDTrans[0], dr = at.endDRot[0];
+        int k = TILT_COLUMNS;
+        double[] sig = new double[at.m * k], g3 = new double[3 * k], dt = at.endDTrans[0], dr = at.endDRot[0];
         boolean any = false;
         for (int i = 0; i < mom.length; i++) {
             double[] t = Effect.tiltAt(mom[i][0], mom[i][1], psi, edges);
@@ -3358,13 +3362,13 @@ public final class Diagnoser {
             for (int a = 0; a < at.posRows; a++) {
                 int row = i * at.rpp + a;
                 Effect.tiltRegressor(xt, t[0], t[1], at.pointsBase[i][at.pointOfRow(a)], g3);
-                for (int col = 0; col < 2; col++)
-                    sig[row * 2 + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[2 + col] + dt[row * 3 + 2] * g3[4 + col];
+                for (int col = 0; col < k; col++)
+                    sig[row * k + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[k + col] + dt[row * 3 + 2] * g3[2 * k + col];
             }
-            // orientation rows: the measured frame turns with the base by the tilt x·e (the lift turns nothing)
+            // orientation rows: the measured frame turns with the base by the tilt x·e (the lift and the slide turn nothing)
             for (int a = at.posRows; a < at.rpp; a++) {
                 int row = i * at.rpp + a;
-                sig[row * 2] = xt * (dr[row * 3] * t[0] + dr[row * 3 + 1] * t[1]);
+                sig[row * k] = xt * (dr[row * 3] * t[0] + dr[row * 3 + 1] * t[1]);
             }
         }
         return any ? sig : null;

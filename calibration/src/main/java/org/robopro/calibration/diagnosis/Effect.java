@@ -606,8 +606,11 @@ public final class Effect {
      * φ = a·x about the edge where x &gt; 0 (a foot held by bolts or its own weight up to h rocks over
      * its edge beyond it; statics of tipping, e.g. Meriam &amp; Kraige, Engineering Mechanics: Statics,
      * §6/2), or by a·(M·e) both ways without a hold (an elastic foundation). A point p moves by
-     * φ·e × (p − P0), P0 on the edge: Δp = a·x·(e × p) + b·x·ẑ, with b = a times the edge's distance
-     * from the axis of joint 1 (e × (ẑ × e) = ẑ). Two parameters a, b.
+     * φ·e × (p − P0), P0 on the edge or axis it rocks about. Written P0 = s·(ẑ × e) − d·ẑ (s its
+     * distance across from the axis of joint 1, d its depth below the base origin), e × P0 = s·ẑ − d·(e × ẑ)
+     * (e × (ẑ × e) = ẑ), so Δp = a·x·(e × p) + b·x·ẑ + c·x·(e × ẑ) with b = −a·s (the lift) and c = a·d (the
+     * slide: a robot on a pedestal, a riser or a soft slab rocks about a point below its base plate, and
+     * its base slides toward the lean by the tilt times that depth). Three parameters a, b, c.
      * <p>
      * With {@code axisAzimuth} NaN the foot rocks toward whichever side the arm leans (every anchor
      * slack, a round or square foot on a soft pad): e is the horizontal moment's own direction
@@ -628,7 +631,7 @@ public final class Effect {
         if (gravity == null) throw new IllegalArgumentException("a base tilt needs the arm's masses");
         if (Double.isNaN(axisAzimuth) && !(holdNm >= 0)) throw new IllegalArgumentException("a tilt toward the lean holds a moment >= 0, not " + holdNm);
         GravityTorques g = massScales == null ? gravity : gravity.withMassScales(massScales);
-        Effect e = new Effect(Kind.BASE_TILT, -1, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 2);
+        Effect e = new Effect(Kind.BASE_TILT, -1, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 3);
         e.tiltAzimuth = axisAzimuth;
         e.tiltHold = holdNm;
         e.massScales = massScales == null ? null : massScales.clone();
@@ -974,17 +977,20 @@ public final class Effect {
     }
 
     /**
-     * A base tilt's regressor (3 x 2, row-major) at excess moment {@code x} about the unit axis
+     * A base tilt's regressor (3 x 3, row-major) at excess moment {@code x} about the unit axis
      * (ex, ey, 0) for a point at {@code p}: the tilt's x·(e × p) = x·(ey p_z, −ex p_z, ex p_y − ey p_x),
-     * and the lift x·ẑ.
+     * the lift x·ẑ and the slide x·(e × ẑ) = x·(ey, −ex, 0).
      */
     static void tiltRegressor(double x, double ex, double ey, double[] p, double[] g3) {
         g3[0] = x * ey * p[2];
         g3[1] = 0;
-        g3[2] = -x * ex * p[2];
-        g3[3] = 0;
-        g3[4] = x * (ex * p[1] - ey * p[0]);
-        g3[5] = x;
+        g3[2] = x * ey;
+        g3[3] = -x * ex * p[2];
+        g3[4] = 0;
+        g3[5] = -x * ex;
+        g3[6] = x * (ex * p[1] - ey * p[0]);
+        g3[7] = x;
+        g3[8] = 0;
     }
 
     /** A base tilt's axis azimuth (rad) and hold (N·m; −∞ for none). */
@@ -1277,7 +1283,7 @@ public final class Effect {
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
-            case BASE_TILT -> { out.add("tilt"); out.add("lift"); }
+            case BASE_TILT -> { out.add("tilt"); out.add("lift"); out.add("slide"); }
             case AXIS_WOBBLE -> {
                 for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
             }
@@ -1341,6 +1347,7 @@ public final class Effect {
             return out;
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
+        if (kind == Kind.BASE_TILT) return List.of(u, "m/(N·m)", "m/(N·m)"); // the lift and the slide: the tilt times a distance
         if (kind == Kind.LINK_SAG) {
             List<String> out = new ArrayList<>(List.of(u, "rad")); // the far end's deflection, then its turns
             if (sagPayload) out.add("rad/kg");
@@ -1611,7 +1618,7 @@ public final class Effect {
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
      * row-major, at q under c; zero unless {@link #turnsFrame()}. A base tilt turns the frame by
-     * a·x·e (its tilt parameter; the lift turns nothing).
+     * a·x·e (its tilt parameter; the lift and the slide turn nothing).
      */
     public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
         Arrays.fill(g3, 0);
@@ -1620,7 +1627,7 @@ public final class Effect {
         if (kind != Kind.BASE_TILT) return;
         double[] t = tilt(q, c.payloadKg());
         g3[0] = t[2] * t[0];
-        g3[2] = t[2] * t[1];
+        g3[3] = t[2] * t[1];
     }
 
     /** The rotation (base, rotation vector, rad) of the measured frame by an effect that turns it (zero otherwise). */
@@ -1973,8 +1980,9 @@ public final class Effect {
         List<String> names = e.parameterNames();
         double[] v = new double[names.size()];
         for (int i = 0; i < v.length; i++)
-            // a two-joint error written before it had its Taylor terms has none
-            v[i] = kind == Kind.PAIR && names.get(i).startsWith("lin_") && !d.parameters().containsKey(names.get(i)) ? 0
+            // a two-joint error written before it had its Taylor terms has none, a base tilt before its slide none
+            v[i] = (kind == Kind.PAIR && names.get(i).startsWith("lin_") || kind == Kind.BASE_TILT && names.get(i).equals("slide"))
+                    && !d.parameters().containsKey(names.get(i)) ? 0
                     : require(d, names.get(i), file);
         return new Term(e, v);
     }

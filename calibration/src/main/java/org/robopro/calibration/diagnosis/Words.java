@@ -15,6 +15,19 @@ final class Words {
      * @param sizeM for a lost motion, the displacement of the measured point by its full half-play (RMS over the
      *              poses, m); NaN when not known
      */
+    /**
+     * Whether a base tilt's pivot lies below the base plate, from its slide ({@link Effect#baseTilt}:
+     * c = a·d with d the pivot's depth) when both the tilt and the slide are told from zero (beyond
+     * twice their standard deviations). The depth itself is not given: on campaigns of a pedestal
+     * rocking on its foot 0.4-0.8 m down, c/a came out anywhere from 0.2 to 1.8 m with standard
+     * deviations that did not cover the truth, while its sign held.
+     */
+    static String pivotWords(double[] v, double[] s) {
+        if (v.length < 3 || !(v[2] > 2 * s[2]) || !(v[0] > 2 * s[0])) return "";
+        return " The base also slides toward the lean as it tilts, so it rocks about a point below its base plate: the robot "
+                + "stands on a pedestal, a riser or a slab that gives way, not on its own foot alone.";
+    }
+
     static String finding(Effect e, double[] v, double[] s, Diagnosis.Evidence ev, double trainBefore, double trainAfter,
                           double valBefore, double valAfter, Directions.Source dirs, double sizeM) {
         String at = Double.isFinite(sizeM) ? String.format(Locale.ROOT, ", %.4f mm at the measured point (RMS over the poses)", sizeM * 1e3) : "";
@@ -214,6 +227,7 @@ final class Words {
             case COUPLING -> String.format(Locale.ROOT, "Joint %d moves a little with joint %d (coupling error between the axes): "
                     + "%.3g ± %.2g rad per rad.", e.joint() + 1, e.source() + 1, v[0], s[0]);
         };
+        if (e.kind() == Effect.Kind.BASE_TILT) what += pivotWords(v, s);
         String fit = String.format(Locale.ROOT, " Modelling it lowers the training RMS from %.4f to %.4f mm", trainBefore * 1e3,
                 trainAfter * 1e3);
         if (Double.isFinite(valBefore)) fit += String.format(Locale.ROOT, " and the validation RMS from %.4f to %.4f mm", valBefore * 1e3, valAfter * 1e3);
