@@ -380,14 +380,15 @@ final class Locator {
      * anchor bolt, a soft floor or base plate): the base turns by ω = C·M about horizontal axes, C a
      * symmetric 2 x 2 compliance (an elastic foundation's rotation under a moment: a rotational
      * spring per axis, Winkler foundation), and lifts by l·M where it pivots about an edge of its
-     * foot, and slides toward the lean where it rocks about a point a depth d below the base origin (a
-     * pedestal, a riser, a soft slab). Eight columns: C₁₁, C₂₂, C₁₂, the lift's two and the slide's three
-     * (d·C₁₁, d·C₂₂, d·C₁₂); every measured point moves by ω × (p + d ẑ) + l·M ẑ.
+     * foot. Five columns: C₁₁, C₂₂, C₁₂ and the lift's two; every measured point moves by ω × p + l·M ẑ.
+     * The slide of a base that rocks about a point below its plate (a pedestal) is not probed: its
+     * columns cost the probe power on small campaigns, and the tilt searched once the structure is
+     * found carries it ({@link Effect#baseTilt}).
      * A base that tilts only one way (above a held moment) is partly in this span; the tilt itself
      * is searched once the structure is found ({@link Diagnoser#bestBaseTilt}). Beside it, a foot
      * that rocks toward whichever side the arm leans once the moment exceeds what its bolts hold
-     * ({@link #BASE_HOLD_SHARES} of the poses tilted): its tilt about the moment's own axis, its lift
-     * and its slide ({@link Diagnoser#tiltColumns}). Positions only, one pose per row, with the robot file's masses; none
+     * ({@link #BASE_HOLD_SHARES} of the poses tilted): two columns each, its tilt about the moment's
+     * own axis and its lift. Positions only, one pose per row, with the robot file's masses; none
      * otherwise or when the moment does not vary.
      */
     static List<Probe> baseMoment(Diagnoser.Tester t) {
@@ -399,7 +400,7 @@ final class Locator {
         double[][] x = new double[1][poses];
         for (int i = 0; i < poses; i++) x[0][i] = Math.hypot(mom[i][0], mom[i][1]);
         if (!varies(x, 1)) return out;
-        int k = BASE_MOMENT_COLUMNS;
+        int k = 5;
         double[] sig = new double[t.m * k], g3 = new double[3 * k];
         double[] dt = t.endDTrans[0], dr = t.endDRot[0];
         for (int i = 0; i < poses; i++) {
@@ -426,9 +427,13 @@ final class Locator {
         out.add(p);
         for (double share : BASE_HOLD_SHARES) {
             double hold = Diagnoser.tiltHold(mom, Double.NaN, share, 1);
-            double[] s2 = Diagnoser.tiltColumns(t, mom, Double.NaN, hold, 1);
-            if (s2 == null) continue;
-            Probe q = finish(t, s2, Diagnoser.TILT_COLUMNS);
+            double[] s3 = Diagnoser.tiltColumns(t, mom, Double.NaN, hold, 1);
+            if (s3 == null) continue;
+            // the tilt and the lift (the slide of a pivot below the base plate is left to the tilt the fallback searches)
+            int kt = Diagnoser.TILT_COLUMNS;
+            double[] s2 = new double[t.m * 2];
+            for (int i = 0; i < t.m; i++) { s2[i * 2] = s3[i * kt]; s2[i * 2 + 1] = s3[i * kt + 1]; }
+            Probe q = finish(t, s2, 2);
             q.var = Var.BASE_MOMENT;
             q.variable = p.variable;
             q.shape = String.format(Locale.ROOT, "the robot's base rocks toward whichever side the arm leans once its moment exceeds "
@@ -539,22 +544,17 @@ final class Locator {
     /** Shares of the poses a base that rocks toward the lean is probed as tilting at (above the moment it holds). */
     static final double[] BASE_HOLD_SHARES = {0.5, 0.25};
 
-    /** Columns of the elastic base's probe ({@link #baseMomentRegressor}). */
-    static final int BASE_MOMENT_COLUMNS = 8;
-
     /**
-     * The 3 x 8 regressor (row-major) of {@link #baseMoment} at moment {@code m} for a point at
+     * The 3 x 5 regressor (row-major) of {@link #baseMoment} at moment {@code m} for a point at
      * {@code p} (base frame): ω = (C₁₁ Mx + C₁₂ My, C₁₂ Mx + C₂₂ My, 0), displacement
-     * ω × p = (ω_y p_z, −ω_x p_z, ω_x p_y − ω_y p_x), plus the lift (l_x Mx + l_y My) along z and the
-     * slide d·(ω × ẑ) = d·(ω_y, −ω_x, 0) of a base rocking about a point d below its origin.
+     * ω × p = (ω_y p_z, −ω_x p_z, ω_x p_y − ω_y p_x), plus the lift (l_x Mx + l_y My) along z.
      */
     static void baseMomentRegressor(double[] m, double[] p, double[] g3) {
         double mx = m[0], my = m[1];
-        // columns: C11 (ωx from Mx), C22 (ωy from My), C12 (ωx from My and ωy from Mx), lift from Mx, lift from My,
-        // then d·C11, d·C22, d·C12 for the slide
-        g3[0] = 0;            g3[1] = my * p[2];     g3[2] = mx * p[2];             g3[3] = 0;  g3[4] = 0;  g3[5] = 0;   g3[6] = my; g3[7] = mx;
-        g3[8] = -mx * p[2];   g3[9] = 0;             g3[10] = -my * p[2];           g3[11] = 0; g3[12] = 0; g3[13] = -mx; g3[14] = 0; g3[15] = -my;
-        g3[16] = mx * p[1];   g3[17] = -my * p[0];   g3[18] = my * p[1] - mx * p[0]; g3[19] = mx; g3[20] = my; g3[21] = 0; g3[22] = 0; g3[23] = 0;
+        // columns: C11 (ωx from Mx), C22 (ωy from My), C12 (ωx from My and ωy from Mx), lift from Mx, lift from My
+        g3[0] = 0;            g3[1] = my * p[2];     g3[2] = mx * p[2];             g3[3] = 0;  g3[4] = 0;
+        g3[5] = -mx * p[2];   g3[6] = 0;             g3[7] = -my * p[2];            g3[8] = 0;  g3[9] = 0;
+        g3[10] = mx * p[1];   g3[11] = -my * p[0];   g3[12] = my * p[1] - mx * p[0]; g3[13] = mx; g3[14] = my;
     }
 
     /**
