@@ -1496,15 +1496,23 @@ public final class Diagnoser {
         double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
         // The stated floor per kind of measurement, as the diagnosis sets it: √3·σ for points, σ for a length.
         Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
-        // What a model without error leaves with p parameters fitted to n measured components: σ√(1 − p/n) on the
-        // training poses, σ√(1 + p/n) on new ones (one length per pose carries ten times the relative share of the
-        // parameters a point does; unaccounted, a null campaign of lengths comes out near 1.2 x σ on new poses).
-        int components = fit.m / fit.problem.rowsPerPose() * fit.problem.positionRowsPerPose();
         boolean onValidation = Double.isFinite(valFinal);
-        double perfect = Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) fit.nf / Math.max(1, components)));
-        // the final model short of the instrument's stated floor: it does not follow every pose, so a pose a few of its
-        // robust sigmas out is no sign of a bad reading (only a gross one is)
-        boolean missesFloor = Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components);
+        double perfect = perfectShare(fit, onValidation);
+        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(selected, fit, trainAll);
+        List<String> under = new ArrayList<>(beyond.keySet());
+        if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
+        // The final model short of the instrument's stated floor does not follow every pose, so a pose a few of its robust
+        // sigmas out is no sign of a bad reading (only a far one is) — unless the poses beyond the rule are what keeps it
+        // short: refitted without them, it must still miss the floor.
+        boolean aboveFloor = shortOfFloor(heldOutRms, stated, kind, perfect), missesFloor = aboveFloor;
+        if (missesFloor && !under.isEmpty()) {
+            Set<String> out = new HashSet<>(under);
+            Work wu = new Work(model, gravity, rows.stream().filter(m -> !out.contains(m.poseId())).toList(), geo, validate, o);
+            Fit fu = wu.fit(selected, absorbedCols, fit.full, null);
+            double vu = wu.validateRms(fu);
+            missesFloor = shortOfFloor(Double.isFinite(vu) ? vu : fu.trainRms, stated, kind, perfectShare(fu, Double.isFinite(vu)));
+        }
+        boolean followsNot = missesFloor;
         java.util.function.Supplier<Finished> finish = () -> {
             // Locate what is left, and report every structure found (named or not).
             Tester lastTester = plotTester != null ? plotTester : geoTester;
@@ -1542,7 +1550,7 @@ public final class Diagnoser {
                             + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
                             + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
             }
-            if (missesFloor)
+            if (aboveFloor)
                 warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fin.nf, selected, foundFinal.isEmpty()));
             o.progress().update("done", 1);
             double rssFinal = 0;
@@ -1558,7 +1566,7 @@ public final class Diagnoser {
             List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 ? List.of()
                     : new ArrayList<>(Calibrator.outliers(fin.problem, fin.full, w.validate, Set.of(), OUTLIER_K).values());
             if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, w.validate.size());
-            else if (missesFloor && !valOut.isEmpty()) valOut.removeIf(ol -> !(ol.residualM() / ol.robustSigmaM() > SHORT_MODEL_SIGMAS));
+            else if (followsNot && !valOut.isEmpty()) valOut.removeIf(ol -> !(ol.residualM() / ol.robustSigmaM() > SHORT_MODEL_SIGMAS));
             if (!valOut.isEmpty()) {
                 // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
                 Map<String, Measurement> byId = new LinkedHashMap<>();
@@ -1587,9 +1595,6 @@ public final class Diagnoser {
                     tested, o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
             return new Finished(result, valOut);
         };
-        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(selected, fit, trainAll);
-        List<String> under = new ArrayList<>(beyond.keySet());
-        if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
         if (LOG.isDebugEnabled())
             LOG.debug("run: left out {}, model {}, outliers under it {}", outliers, selected.stream().map(Effect::label).toList(), under);
         java.util.function.Supplier<List<String>> underEveryPose = () -> {
@@ -3071,6 +3076,22 @@ public final class Diagnoser {
      * structure at the 5 % line, none was left out and nothing was found).
      */
     static final int MAX_GROSS = 5;
+
+    /**
+     * What a model without error leaves with p parameters fitted to n measured components, as a share
+     * of the noise: √(1 − p/n) on the training poses, √(1 + p/n) on new ones (one length per pose
+     * carries ten times the relative share of the parameters a point does; unaccounted, a null
+     * campaign of lengths comes out near 1.2 x σ on new poses).
+     */
+    static double perfectShare(Fit f, boolean onValidation) {
+        int components = f.m / f.problem.rowsPerPose() * f.problem.positionRowsPerPose();
+        return Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) f.nf / Math.max(1, components)));
+    }
+
+    /** Whether a held-out RMS error (m) is beyond {@link #STATED_FLOOR_MARGIN} times the stated noise's floor (false without one). */
+    static boolean shortOfFloor(double heldOutRms, double stated, Measured kind, double perfect) {
+        return Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components);
+    }
 
     /** Whether {@code beyond} poses beyond the outlier rule among {@code poses} are too many to be bad readings (more than {@link #MAX_GROSS} and 5 %). */
     static boolean tooManyToBeBad(int beyond, int poses) { return beyond > Math.max(MAX_GROSS, 0.05 * poses); }
