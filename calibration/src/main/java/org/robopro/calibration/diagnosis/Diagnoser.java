@@ -481,7 +481,7 @@ public final class Diagnoser {
             if (all.named) {
                 List<String> underAll = grossIfShort(all);
                 if (underAll.isEmpty()) return all.d();
-                if (underAll.size() < under.size()) {
+                if (all.outliersUnder.size() < r.outliersUnder.size()) { // fewer poses beyond the rule: that model follows more of them
                     under = underAll;
                     underRun = all;
                 }
