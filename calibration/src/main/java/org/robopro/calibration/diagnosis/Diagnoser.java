@@ -440,17 +440,6 @@ public final class Diagnoser {
     }
 
     /**
-     * The training poses beyond the outlier rule under a run's final model; when that model misses
-     * the instrument's stated floor, only those beyond {@link #SHORT_MODEL_SIGMAS} (it does not
-     * follow every pose: its residuals have heavier tails than the noise, and a pose a few of its
-     * robust sigmas out is no sign of a bad reading).
-     */
-    private static List<String> grossIfShort(Run r) {
-        if (!r.missesFloor) return r.outliersUnder;
-        return r.outliersUnder.stream().filter(id -> r.sigmasUnder.getOrDefault(id, 0.0) > SHORT_MODEL_SIGMAS).toList();
-    }
-
-    /**
      * Robust sigmas beyond which a pose is a bad reading under a final model that misses the stated
      * floor: twice the rule's {@link #OUTLIER_K}. On a clean-room campaign of a lost motion beside thermal growth, left
      * 1.3 times above its floor, the five bad readings stood at 16-63 robust sigmas and three clean
@@ -467,7 +456,7 @@ public final class Diagnoser {
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
-        List<String> under = grossIfShort(r);
+        List<String> under = r.outliersUnder;
         // The geometric fit's outliers may be the peak of a structure the effects now model, which a
         // model fitted without them cannot judge: judge them with the effects fitted to every pose
         // (but the gross readings among many, which would bend that fit). When the final model's
@@ -479,15 +468,15 @@ public final class Diagnoser {
         if (!r.outliers.isEmpty() && !underEvery.containsAll(r.outliers)) {
             Run all = run(robot, train, validate, o, r.gross.stream().filter(underEvery::contains).toList(), t0, dirSource, excluded);
             if (all.named) {
-                List<String> underAll = grossIfShort(all);
-                if (underAll.isEmpty()) return all.d();
-                if (all.outliersUnder.size() < r.outliersUnder.size()) { // fewer poses beyond the rule: that model follows more of them
+                List<String> underAll = all.outliersUnder;
+                if (underAll.isEmpty()) return all.reported();
+                if (underAll.size() < under.size()) {
                     under = underAll;
                     underRun = all;
                 }
             }
         }
-        if (new HashSet<>(under).equals(new HashSet<>(r.outliers))) return r.d();
+        if (new HashSet<>(under).equals(new HashSet<>(r.outliers))) return r.reported();
         Region region = region(under, train.rows());
         if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder,
                 region == null ? "-" : region.words(), region == null ? "-" : region.linked());
@@ -525,7 +514,7 @@ public final class Diagnoser {
                     REGION_GROSS * typical, typical, far.size() == 1 ? "is" : "are")));
             return with(base, bad, notes);
         }
-        Diagnosis d = r.d();
+        Diagnosis d = r.reported();
         if (tooManyToBeBad(under.size(), train.size())) return grossOnly(d, under, robot, train, validate, o, t0, dirSource, excluded);
         Run without = run(robot, train, validate, o, under, t0, dirSource, excluded);
         List<String> more = appearing(without, under);
@@ -545,7 +534,7 @@ public final class Diagnoser {
                     return with(every, every.outliers(), notes);
                 }
             }
-            return without.d();
+            return without.reported();
         }
         List<String> notes = new ArrayList<>(d.notes());
         notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as bad "
@@ -792,7 +781,7 @@ public final class Diagnoser {
      * (a lost motion's, a bump's, a step the model does not follow), not bad readings.
      */
     private static List<String> appearing(Run without, List<String> leftOut) {
-        return grossIfShort(without).stream().filter(id -> !leftOut.contains(id)).toList();
+        return without.outliersUnder.stream().filter(id -> !leftOut.contains(id)).toList();
     }
 
     /**
@@ -860,6 +849,26 @@ public final class Diagnoser {
 
         /** The report, finished on first use. */
         Diagnosis d() { return finished().d(); }
+
+        /**
+         * The report as the outlier judgement gives it: when the final model misses the instrument's
+         * stated floor, the training poses it left out within {@link #SHORT_MODEL_SIGMAS} of it stay
+         * out of the fit but are not reported as bad readings (its residuals have heavier tails than
+         * the noise, and a pose a few of its robust sigmas out is no sign of a bad reading).
+         */
+        Diagnosis reported() {
+            Diagnosis d = d();
+            if (!missesFloor) return d;
+            List<String> far = new ArrayList<>(), near = new ArrayList<>();
+            for (String id : d.outliers()) (sigmasUnder.getOrDefault(id, Double.POSITIVE_INFINITY) > SHORT_MODEL_SIGMAS ? far : near).add(id);
+            if (near.isEmpty()) return d;
+            List<String> notes = new ArrayList<>(d.notes());
+            notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but within %.0f, and the model misses "
+                    + "the instrument's stated floor (it does not follow every pose): %s left out of the fit but not reported as bad "
+                    + "readings", near.size() == 1 ? "pose" : "poses", String.join(", ", near), OUTLIER_K, SHORT_MODEL_SIGMAS,
+                    near.size() == 1 ? "it is" : "they are"));
+            return with(d, far, notes);
+        }
 
         /** The validation poses beyond the outlier rule under the final model (see {@link #run}). */
         List<CalibrationResult.Outlier> validationOutliers() { return validationFlagged ? finished().validationOutliers() : List.of(); }
