@@ -440,10 +440,11 @@ public final class Diagnoser {
     }
 
     /**
-     * Robust sigmas beyond which a pose is a bad reading under a final model that misses the stated
-     * floor: twice the rule's {@link #OUTLIER_K}. On a clean-room campaign of a lost motion beside thermal growth, left
-     * 1.3 times above its floor, the five bad readings stood at 16-63 robust sigmas and three clean
-     * poses at 5.3-7.0; on one of a link bending with drive heat, two clean poses at 5.0-5.3.
+     * Robust sigmas beyond which a pose is reported as a bad reading under a final model that misses
+     * the stated floor: twice the rule's {@link #OUTLIER_K}. On a clean-room campaign of a lost motion
+     * beside thermal growth, left 1.3 times above its floor, the five bad readings stood at 16-63
+     * robust sigmas and three clean poses at 5.3-7.0; on one of a link bending with drive heat, two
+     * clean poses at 5.0-5.3.
      */
     static final double SHORT_MODEL_SIGMAS = 10;
 
@@ -1513,15 +1514,8 @@ public final class Diagnoser {
         // The final model short of the instrument's stated floor does not follow every pose, so a pose a few of its robust
         // sigmas out is no sign of a bad reading (only a far one is) — unless the poses beyond the rule are what keeps it
         // short: refitted without them, it must still miss the floor.
-        boolean aboveFloor = shortOfFloor(heldOutRms, stated, kind, perfect), missesFloor = aboveFloor;
-        if (missesFloor && !under.isEmpty()) {
-            Set<String> out = new HashSet<>(under);
-            Work wu = new Work(model, gravity, rows.stream().filter(m -> !out.contains(m.poseId())).toList(), geo, validate, o);
-            Fit fu = wu.fit(selected, absorbedCols, fit.full, null);
-            double vu = wu.validateRms(fu);
-            missesFloor = shortOfFloor(Double.isFinite(vu) ? vu : fu.trainRms, stated, kind, perfectShare(fu, Double.isFinite(vu)));
-        }
-        boolean followsNot = missesFloor;
+        boolean aboveFloor = shortOfFloor(heldOutRms, stated, kind, perfect);
+        boolean missesFloor = aboveFloor && (under.isEmpty() || shortWithout(w, fit, selected, absorbedCols, under, geo, stated, kind));
         java.util.function.Supplier<Finished> finish = () -> {
             // Locate what is left, and report every structure found (named or not).
             Tester lastTester = plotTester != null ? plotTester : geoTester;
@@ -1575,7 +1569,7 @@ public final class Diagnoser {
             List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 ? List.of()
                     : new ArrayList<>(Calibrator.outliers(fin.problem, fin.full, w.validate, Set.of(), OUTLIER_K).values());
             if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, w.validate.size());
-            else if (followsNot && !valOut.isEmpty()) valOut.removeIf(ol -> !(ol.residualM() / ol.robustSigmaM() > SHORT_MODEL_SIGMAS));
+            else if (missesFloor && !valOut.isEmpty()) valOut.removeIf(ol -> !(ol.residualM() / ol.robustSigmaM() > SHORT_MODEL_SIGMAS));
             if (!valOut.isEmpty()) {
                 // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
                 Map<String, Measurement> byId = new LinkedHashMap<>();
@@ -3095,6 +3089,16 @@ public final class Diagnoser {
     static double perfectShare(Fit f, boolean onValidation) {
         int components = f.m / f.problem.rowsPerPose() * f.problem.positionRowsPerPose();
         return Math.sqrt(Math.max(0.05, 1 + (onValidation ? 1 : -1) * (double) f.nf / Math.max(1, components)));
+    }
+
+    /** Whether {@code fit}'s effects and geometry, refitted without the training poses {@code leftOut}, still miss the stated floor. */
+    private static boolean shortWithout(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<String> leftOut,
+                                        CalibrationResult geo, double stated, Measured kind) {
+        Set<String> out = new HashSet<>(leftOut);
+        Work wu = new Work(w.model, w.gravity, w.rows.stream().filter(m -> !out.contains(m.poseId())).toList(), geo, w.validate, w.o);
+        Fit fu = wu.fit(selected, absorbedCols, fit.full, null);
+        double vu = wu.validateRms(fu);
+        return shortOfFloor(Double.isFinite(vu) ? vu : fu.trainRms, stated, kind, perfectShare(fu, Double.isFinite(vu)));
     }
 
     /** Whether a held-out RMS error (m) is beyond {@link #STATED_FLOOR_MARGIN} times the stated noise's floor (false without one). */
