@@ -465,8 +465,8 @@ public final class Diagnoser {
         // whole diagnosis is made again with them (the search may take other effects with them in).
         // A gross reading among many stays out of it only while that model still puts it beyond the
         // rule: the peaks of a structure the geometry could not follow look gross to the geometric fit.
-        List<String> underEvery = r.outliers.isEmpty() ? List.of() : r.underEveryPose.get();
-        if (!r.outliers.isEmpty() && !underEvery.containsAll(r.outliers)) {
+        List<String> underEvery = r.outliers().isEmpty() ? List.of() : r.underEveryPose.get();
+        if (!r.outliers().isEmpty() && !underEvery.containsAll(r.outliers())) {
             Run all = run(robot, train, validate, o, r.gross.stream().filter(underEvery::contains).toList(), t0, dirSource, excluded);
             if (all.named) {
                 List<String> underAll = all.outliersUnder;
@@ -477,7 +477,7 @@ public final class Diagnoser {
                 }
             }
         }
-        if (new HashSet<>(under).equals(new HashSet<>(r.outliers))) return r.reported();
+        if (new HashSet<>(under).equals(new HashSet<>(r.outliers()))) return r.reported();
         Region region = region(under, train.rows());
         if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder,
                 region == null ? "-" : region.words(), region == null ? "-" : region.linked());
@@ -821,9 +821,8 @@ public final class Diagnoser {
     private static final class Run {
         private final java.util.function.Supplier<Finished> finish;
         private Finished finished;
-        /** Whether the run named any effect (a family or a fallback), and the training poses it left out. */
+        /** Whether the run named any effect (a family or a fallback). */
         final boolean named;
-        final List<String> outliers;
         /** What a cross-validation fold takes from the run, without finishing its report. */
         final Fold fold;
         private final boolean validationFlagged;
@@ -839,7 +838,6 @@ public final class Diagnoser {
             this.finish = finish;
             this.named = named;
             this.fold = fold;
-            this.outliers = fold.outliers();
             this.validationFlagged = validationFlagged;
             this.missesFloor = missesFloor;
             this.outliersUnder = outliersUnder;
@@ -847,6 +845,9 @@ public final class Diagnoser {
             this.underEveryPose = underEveryPose;
             this.sigmasUnder = sigmasUnder;
         }
+
+        /** The training poses the run left out. */
+        List<String> outliers() { return fold.outliers(); }
 
         /** The report, finished on first use. */
         Diagnosis d() { return finished().d(); }
@@ -1516,6 +1517,8 @@ public final class Diagnoser {
         // short: refitted without them, it must still miss the floor.
         boolean aboveFloor = shortOfFloor(heldOutRms, stated, kind, perfect);
         boolean missesFloor = aboveFloor && (under.isEmpty() || shortWithout(w, fit, selected, absorbedCols, under, geo, stated, kind));
+        List<CalibrationResult.Outlier> valBeyond = w.validate == null || w.validate.size() < 10 ? List.of()
+                : List.copyOf(Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).values());
         java.util.function.Supplier<Finished> finish = () -> {
             // Locate what is left, and report every structure found (named or not).
             Tester lastTester = plotTester != null ? plotTester : geoTester;
@@ -1556,8 +1559,6 @@ public final class Diagnoser {
             if (aboveFloor)
                 warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fin.nf, selected, foundFinal.isEmpty()));
             o.progress().update("done", 1);
-            double rssFinal = 0;
-            for (double v : fin.r) rssFinal += v * v;
             // σ per position axis, or per distance: from the position (distance) rows only, degrees of freedom corrected.
             int rppF = fin.problem.rowsPerPose(), posRows = fin.problem.positionRowsPerPose();
             double posSq = 0;
@@ -1566,8 +1567,7 @@ public final class Diagnoser {
             // Validation poses beyond the outlier rule under the final model (their own robust sigma; at least 10 of them); with a
             // structure located and left, a few gross readings only; with the model short of the instrument's stated floor, only
             // those beyond SHORT_MODEL_SIGMAS.
-            List<CalibrationResult.Outlier> valOut = w.validate == null || w.validate.size() < 10 ? List.of()
-                    : new ArrayList<>(Calibrator.outliers(fin.problem, fin.full, w.validate, Set.of(), OUTLIER_K).values());
+            List<CalibrationResult.Outlier> valOut = new ArrayList<>(valBeyond);
             if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, w.validate.size());
             else if (missesFloor && !valOut.isEmpty()) valOut.removeIf(ol -> !(ol.residualM() / ol.robustSigmaM() > SHORT_MODEL_SIGMAS));
             if (!valOut.isEmpty()) {
@@ -1589,10 +1589,10 @@ public final class Diagnoser {
                             + "estimates, the mesh's friction varies), and %s by about the play. %s no bad %s and %s in the validation error "
                             + "(%.4f mm; %.4f mm without %s)", one ? "pose" : "poses", String.join(", ", handedOver), one ? "lies" : "lie",
                             one ? "it misses" : "they miss", one ? "It is" : "They are", one ? "reading" : "readings", one ? "stays" : "stay",
-                            w.validateRms(fin) * 1e3, rest.isEmpty() ? Double.NaN : w.heldOut(fin, rest, false) * 1e3, one ? "it" : "them"));
+                            valFinal * 1e3, rest.isEmpty() ? Double.NaN : w.heldOut(fin, rest, false) * 1e3, one ? "it" : "them"));
                 }
             }
-            Diagnosis result = new Diagnosis(robot.name(), geoFin, sigmaFinal, geoTrain, geoVal, findings, fin.trainRms, w.validateRms(fin),
+            Diagnosis result = new Diagnosis(robot.name(), geoFin, sigmaFinal, geoTrain, geoVal, findings, fin.trainRms, valFinal,
                     outliers, new ArrayList<>(notIdent.values()), implausibleFindings, recs, notes, ext,
                     fin.problem.toolOf(fin.full), w.instrument ? fin.problem.instrumentOf(fin.full) : org.robopro.kinematics.Pose.IDENTITY,
                     tested, o.alpha(), (System.nanoTime() - t0) / 1e6, dirSource, located, warnings);
@@ -1608,11 +1608,9 @@ public final class Diagnoser {
             List<String> u = new ArrayList<>(outliersUnder(selected, fa, trainAll).keySet());
             return u.isEmpty() ? u : otherFlankExplains(wa, fa, selected, u);
         };
-        // the validation poses' outliers need the finished report only when the rule flags any
-        boolean valFlagged = w.validate != null && w.validate.size() >= 10
-                && !Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).isEmpty();
         Fold fold = new Fold(namedKeys(selected), List.copyOf(outliers), geo, geoVal, valFinal);
-        return new Run(finish, !selected.isEmpty(), fold, valFlagged, missesFloor, under, List.copyOf(gross), underEveryPose, beyond);
+        // the validation poses' outliers need the finished report only when the rule flags any
+        return new Run(finish, !selected.isEmpty(), fold, !valBeyond.isEmpty(), missesFloor, under, List.copyOf(gross), underEveryPose, beyond);
     }
 
     /**
@@ -3401,22 +3399,20 @@ public final class Diagnoser {
      * translation sensitivity, and with orientations the frame's turn.
      */
     private static double tiltPress(Tester at, int k, double[][] mom, double psi, double share, int edges) {
-        double[] sig = tiltColumns(at, mom, psi, tiltHold(mom, psi, share, edges), edges);
+        double[] sig = tiltColumns(at, mom, psi, tiltHold(mom, psi, share, edges), edges, Effect.TILT_COLUMNS);
         if (sig == null) return Double.POSITIVE_INFINITY;
-        return k >= 0 ? at.pressReplacingColumns(k, sig, TILT_COLUMNS) : at.pressAddingColumns(sig, TILT_COLUMNS);
+        return k >= 0 ? at.pressReplacingColumns(k, sig, Effect.TILT_COLUMNS) : at.pressAddingColumns(sig, Effect.TILT_COLUMNS);
     }
 
-    /** A base tilt's columns: the tilt, the lift and the slide ({@link Effect#baseTilt}). */
-    static final int TILT_COLUMNS = 3;
-
     /**
-     * The base tilt's signature columns (m x {@link #TILT_COLUMNS}, row-major; {@link Effect#tiltAt}: azimuth {@code psi},
-     * NaN toward the lean; {@code edges} 1 or 4) holding {@code hold}: its regressor through each row's
-     * translation sensitivity, and with orientations the frame's turn; null when no pose tilts.
+     * The base tilt's first {@code k} signature columns of its {@link Effect#TILT_COLUMNS} (m x k,
+     * row-major; {@link Effect#tiltAt}: azimuth {@code psi}, NaN toward the lean; {@code edges} 1 or 4)
+     * holding {@code hold}: its regressor through each row's translation sensitivity, and with
+     * orientations the frame's turn; null when no pose tilts.
      */
-    static double[] tiltColumns(Tester at, double[][] mom, double psi, double hold, int edges) {
-        int k = TILT_COLUMNS;
-        double[] sig = new double[at.m * k], g3 = new double[3 * k], dt = at.endDTrans[0], dr = at.endDRot[0];
+    static double[] tiltColumns(Tester at, double[][] mom, double psi, double hold, int edges, int k) {
+        int n = Effect.TILT_COLUMNS;
+        double[] sig = new double[at.m * k], g3 = new double[3 * n], dt = at.endDTrans[0], dr = at.endDRot[0];
         boolean any = false;
         for (int i = 0; i < mom.length; i++) {
             double[] t = Effect.tiltAt(mom[i][0], mom[i][1], psi, edges);
@@ -3427,7 +3423,7 @@ public final class Diagnoser {
                 int row = i * at.rpp + a;
                 Effect.tiltRegressor(xt, t[0], t[1], at.pointsBase[i][at.pointOfRow(a)], g3);
                 for (int col = 0; col < k; col++)
-                    sig[row * k + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[k + col] + dt[row * 3 + 2] * g3[2 * k + col];
+                    sig[row * k + col] = dt[row * 3] * g3[col] + dt[row * 3 + 1] * g3[n + col] + dt[row * 3 + 2] * g3[2 * n + col];
             }
             // orientation rows: the measured frame turns with the base by the tilt x·e (the lift and the slide turn nothing)
             for (int a = at.posRows; a < at.rpp; a++) {

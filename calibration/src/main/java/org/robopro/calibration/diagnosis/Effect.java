@@ -631,7 +631,7 @@ public final class Effect {
         if (gravity == null) throw new IllegalArgumentException("a base tilt needs the arm's masses");
         if (Double.isNaN(axisAzimuth) && !(holdNm >= 0)) throw new IllegalArgumentException("a tilt toward the lean holds a moment >= 0, not " + holdNm);
         GravityTorques g = massScales == null ? gravity : gravity.withMassScales(massScales);
-        Effect e = new Effect(Kind.BASE_TILT, -1, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 3);
+        Effect e = new Effect(Kind.BASE_TILT, -1, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, TILT_COLUMNS);
         e.tiltAzimuth = axisAzimuth;
         e.tiltHold = holdNm;
         e.massScales = massScales == null ? null : massScales.clone();
@@ -976,8 +976,11 @@ public final class Effect {
         return best;
     }
 
+    /** A base tilt's parameters and regressor columns: the tilt, the lift and the slide ({@link #baseTilt}). */
+    static final int TILT_COLUMNS = 3;
+
     /**
-     * A base tilt's regressor (3 x 3, row-major) at excess moment {@code x} about the unit axis
+     * A base tilt's regressor (3 x {@link #TILT_COLUMNS}, row-major) at excess moment {@code x} about the unit axis
      * (ex, ey, 0) for a point at {@code p}: the tilt's x·(e × p) = x·(ey p_z, −ex p_z, ex p_y − ey p_x),
      * the lift x·ẑ and the slide x·(e × ẑ) = x·(ey, −ex, 0).
      */

@@ -427,12 +427,9 @@ final class Locator {
         out.add(p);
         for (double share : BASE_HOLD_SHARES) {
             double hold = Diagnoser.tiltHold(mom, Double.NaN, share, 1);
-            double[] s3 = Diagnoser.tiltColumns(t, mom, Double.NaN, hold, 1);
-            if (s3 == null) continue;
             // the tilt and the lift (the slide of a pivot below the base plate is left to the tilt the fallback searches)
-            int kt = Diagnoser.TILT_COLUMNS;
-            double[] s2 = new double[t.m * 2];
-            for (int i = 0; i < t.m; i++) { s2[i * 2] = s3[i * kt]; s2[i * 2 + 1] = s3[i * kt + 1]; }
+            double[] s2 = Diagnoser.tiltColumns(t, mom, Double.NaN, hold, 1, 2);
+            if (s2 == null) continue;
             Probe q = finish(t, s2, 2);
             q.var = Var.BASE_MOMENT;
             q.variable = p.variable;

@@ -23,7 +23,7 @@ final class Words {
      * deviations that did not cover the truth, while its sign held.
      */
     static String pivotWords(double[] v, double[] s) {
-        if (v.length < 3 || !(v[2] > 2 * s[2]) || !(v[0] > 2 * s[0])) return "";
+        if (!(v[2] > 2 * s[2]) || !(v[0] > 2 * s[0])) return "";
         return " The base also slides toward the lean as it tilts, so it rocks about a point below its base plate: the robot "
                 + "stands on a pedestal, a riser or a slab that gives way, not on its own foot alone.";
     }
