@@ -1852,30 +1852,44 @@ public final class Diagnoser {
      */
     static LagSearch bestLags(Tester at, int k, Effect growth, KinematicModel model, double t0C, ThermalLag lag,
                                 List<PoseConditions> conds) {
-        int n = growth.lagTaus().length;
-        double[] taus = null;
+        int n = growth.lagTaus().length, nt = ThermalLag.TAUS.length;
+        // A link's column depends on its own lag alone: the columns of the common lags, projected once, make up every mix.
+        double[][][] cols = new double[nt][][];
+        double[][] n0 = new double[nt][];
+        int[] pick = null;
         double best = Double.POSITIVE_INFINITY, none = Double.NaN;
-        for (double tau : ThermalLag.TAUS) {
+        for (int ti = 0; ti < nt; ti++) {
             double[] ts = new double[n];
-            Arrays.fill(ts, tau);
-            double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
-            if (tau == 0) none = p;
-            if (p < best) { best = p; taus = ts; }
+            Arrays.fill(ts, ThermalLag.TAUS[ti]);
+            Effect e = Effect.thermalLinks(model, t0C, lag, ts);
+            Tester.Projected pr = at.projectedReplacing(k, at.signature(e, conds), e.size());
+            cols[ti] = pr.cols();
+            n0[ti] = pr.n0();
+            double p = at.pressReplacingProjected(k, cols[ti], n0[ti]);
+            if (ThermalLag.TAUS[ti] == 0) none = p;
+            if (p < best) { best = p; pick = new int[n]; Arrays.fill(pick, ti); }
         }
-        if (taus == null) return null;
-        double common = taus[0], pressCommon = best;
+        if (pick == null) return null;
+        double common = ThermalLag.TAUS[pick[0]], pressCommon = best;
+        double[][] mixCols = new double[n][];
+        double[] mixN0 = new double[n];
         for (int round = 0; round < 2; round++) {
             boolean moved = false;
             for (int col = 0; col < n; col++)
-                for (double tau : ThermalLag.TAUS) {
-                    if (tau == taus[col]) continue;
-                    double[] ts = taus.clone();
-                    ts[col] = tau;
-                    double p = at.pressReplacing(k, Effect.thermalLinks(model, t0C, lag, ts), conds);
-                    if (p < best * (1 - LINK_LAG_MARGIN)) { best = p; taus = ts; moved = true; }
+                for (int ti = 0; ti < nt; ti++) {
+                    if (ti == pick[col]) continue;
+                    for (int c = 0; c < n; c++) {
+                        int from = c == col ? ti : pick[c];
+                        mixCols[c] = cols[from][c];
+                        mixN0[c] = n0[from][c];
+                    }
+                    double p = at.pressReplacingProjected(k, mixCols, mixN0);
+                    if (p < best * (1 - LINK_LAG_MARGIN)) { best = p; pick = pick.clone(); pick[col] = ti; moved = true; }
                 }
             if (!moved) break;
         }
+        double[] taus = new double[n];
+        for (int c = 0; c < n; c++) taus[c] = ThermalLag.TAUS[pick[c]];
         // the drives' warm-up beside the air's temperature, where it predicts left-out poses clearly better
         Effect form = Effect.thermalLinks(model, t0C, lag, taus);
         Effect warmed = null;
@@ -4016,7 +4030,7 @@ public final class Diagnoser {
 
         /** The linearised model without selected effect k: a basis of its other free columns, and the residual without the effect. */
         private int withoutK = -1;
-        private double[] withoutU, withoutR;
+        private double[] withoutU, withoutR, withoutE;
         private double[][] withoutH;
 
         private void without(int k) {
@@ -4033,6 +4047,7 @@ public final class Diagnoser {
             }
             withoutU = basis(fit.jac, m, n, keep);
             withoutR = r;
+            withoutE = projectOut(withoutU, withoutU.length / m, m, r);
             withoutH = hatBlocks(withoutU, withoutU.length / m);
             withoutK = k;
         }
@@ -4063,29 +4078,65 @@ public final class Diagnoser {
         /** {@link #pressReplacing} with the alias given by its signature columns {@code s} (m x ka, row-major; null: nothing in its place). */
         double pressReplacingColumns(int k, double[] s, int ka) {
             without(k);
-            int rk = withoutU.length / m;
-            double[] e = projectOut(withoutU, rk, m, withoutR);
-            return pressWithColumns(withoutU, rk, withoutH, e, s, ka);
+            if (s == null) return pressBlocks(withoutH, withoutE, null, 0);
+            Projected p = projected(withoutU, withoutU.length / m, s, ka);
+            return pressWithProjected(withoutH, withoutE.clone(), p.cols(), p.n0());
         }
 
         /** {@link #pressReplacingColumns} with nothing taken out: the ka columns s added to the model as fitted. */
-        double pressAddingColumns(double[] s, int ka) { return pressWithColumns(u, rank, h0, rPerp.clone(), s, ka); }
+        double pressAddingColumns(double[] s, int ka) {
+            if (s == null) return pressBlocks(h0, rPerp, null, 0);
+            Projected p = projected(u, rank, s, ka);
+            return pressWithProjected(h0, rPerp.clone(), p.cols(), p.n0());
+        }
 
         /**
-         * PRESS of the model of basis U (m x rk) and hat blocks h, residual e (out of span(U); changed
-         * here), with the ka columns s (m x ka, row-major; null: none) added.
+         * Columns of a signature less their projection on a model's span: each column's remnant (null
+         * for a column of zeros) and its squared norm before.
          */
-        private double pressWithColumns(double[] withoutU, int rk, double[][] withoutH, double[] e, double[] s, int ka) {
-            if (s == null) return pressBlocks(withoutH, e, null, 0);
-            List<double[]> ys = new ArrayList<>();
+        record Projected(double[][] cols, double[] n0) { }
+
+        /** The ka columns s (m x ka, row-major), each less its projection on the basis U (m x rk). */
+        private Projected projected(double[] basisU, int rk, double[] s, int ka) {
+            double[][] ys = new double[ka][];
             double[] n0s = new double[ka];
-            double[] x = new double[m];
             for (int c = 0; c < ka; c++) {
+                double[] x = new double[m];
                 double n0 = 0;
                 for (int i = 0; i < m; i++) { x[i] = s[i * ka + c]; n0 += x[i] * x[i]; }
-                if (n0 == 0) continue;
-                n0s[ys.size()] = n0;
-                ys.add(projectOut(withoutU, rk, m, x));
+                n0s[c] = n0;
+                if (n0 != 0) ys[c] = projectOut(basisU, rk, m, x);
+            }
+            return new Projected(ys, n0s);
+        }
+
+        /** {@link #projected} for the model without selected effect {@code k}, whose PRESS {@link #pressReplacingProjected} gives. */
+        Projected projectedReplacing(int k, double[] s, int ka) {
+            without(k);
+            return projected(withoutU, withoutU.length / m, s, ka);
+        }
+
+        /**
+         * {@link #pressReplacingColumns} for columns already {@link #projectedReplacing projected} out
+         * of the model without {@code k}: cols[c] and n0[c] in column order (the columns of several
+         * projections may be put together, as long as each was projected for the same k).
+         */
+        double pressReplacingProjected(int k, double[][] cols, double[] n0) {
+            without(k);
+            return pressWithProjected(withoutH, withoutE.clone(), cols, n0);
+        }
+
+        /**
+         * PRESS of a model of hat blocks h and residual e (out of the model's span; changed here), with
+         * projected columns ys (null: a column of zeros, left out) added.
+         */
+        private double pressWithProjected(double[][] withoutH, double[] e, double[][] cols, double[] n0) {
+            List<double[]> ys = new ArrayList<>();
+            double[] n0s = new double[cols.length];
+            for (int c = 0; c < cols.length; c++) {
+                if (cols[c] == null) continue;
+                n0s[ys.size()] = n0[c];
+                ys.add(cols[c]);
             }
             // A column of the alias that the rest of the model holds to within the absorbed ratio is left to it, as when the
             // alias is fitted (its absorbed columns fixed at zero): kept, its remnant is rounding and the difference between

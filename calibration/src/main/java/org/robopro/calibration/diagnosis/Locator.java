@@ -667,8 +667,9 @@ final class Locator {
             pr.lo = lo;
             pr.hi = hi;
             pr.variable = "instrument distance";
-            pr.shape = String.format(Locale.ROOT, "the measured positions err along the instrument's line of sight, repeating every "
-                    + "%.0f mm of its distance reading (a distance meter's cyclic error)", 1e3 * lambda);
+            // one probe per period tried, a few hundred: the words without the formatter (the same rounding as %.0f)
+            pr.shape = "the measured positions err along the instrument's line of sight, repeating every "
+                    + Math.round(1e3 * lambda) + " mm of its distance reading (a distance meter's cyclic error)";
             pr.x = x;
             pr.xLabel = "the instrument's distance reading (m)";
             out.add(pr);

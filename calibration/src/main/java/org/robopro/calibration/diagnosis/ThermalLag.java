@@ -3,8 +3,6 @@ package org.robopro.calibration.diagnosis;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import org.robopro.calibration.measurement.Measurement;
 
 /**
@@ -28,7 +26,10 @@ public final class ThermalLag {
     static final double[] TAUS = {0, 150, 300, 600, 1200, 2400, 4800};
 
     private final double[] t, temp;
-    private final Map<Double, double[]> lagged = new ConcurrentHashMap<>();
+    /** The filtered series made so far, by time constant: few (one per τ tried), read for every pose of every fit. */
+    private volatile Series[] series = new Series[0];
+
+    private record Series(double tauS, double[] temps) { }
 
     private ThermalLag(double[] t, double[] temp) {
         this.t = t;
@@ -69,7 +70,7 @@ public final class ThermalLag {
      */
     public double at(double tauS, double timeS, double tempC) {
         if (!(tauS > 0) || !Double.isFinite(timeS) || timeS < t[0] || timeS > t[t.length - 1]) return tempC;
-        double[] b = lagged.computeIfAbsent(tauS, this::filter);
+        double[] b = lagged(tauS);
         int i = Arrays.binarySearch(t, timeS);
         if (i >= 0) return b[i];
         i = -i - 1; // t[i-1] < timeS < t[i]
@@ -82,10 +83,23 @@ public final class ThermalLag {
      * (its largest less its smallest, K); the air's own with τ = 0.
      */
     public double span(double tauS) {
-        double[] b = tauS > 0 ? lagged.computeIfAbsent(tauS, this::filter) : temp;
+        double[] b = tauS > 0 ? lagged(tauS) : temp;
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (double x : b) { lo = Math.min(lo, x); hi = Math.max(hi, x); }
         return hi - lo;
+    }
+
+    /** The lagged series at {@code tauS}, filtered on first use. */
+    private double[] lagged(double tauS) {
+        for (Series x : series) if (x.tauS() == tauS) return x.temps();
+        synchronized (this) {
+            for (Series x : series) if (x.tauS() == tauS) return x.temps();
+            Series added = new Series(tauS, filter(tauS));
+            Series[] more = Arrays.copyOf(series, series.length + 1);
+            more[series.length] = added;
+            series = more;
+            return added.temps();
+        }
     }
 
     /**
