@@ -2354,6 +2354,7 @@ public final class Diagnoser {
                     if (pf < bestPress) { bestPress = pf; best = f; }
                 }
                 String why = null;
+                String local = localized(e, fit, k, rows);
                 double pressWithout = at.pressReplacing(k, null, null);
                 if (LOG.isDebugEnabled())
                     LOG.debug(String.format(Locale.ROOT, "claim check %s: press own %.1f without %.1f best rival %s %.1f", e.label(),
@@ -2383,6 +2384,7 @@ public final class Diagnoser {
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
                             ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
                             + "be told apart on these poses: measure with two or three payloads to tell" : "");
+                else if (local != null) why = e.label() + " is not claimed: " + local;
                 else {
                     double thr = w.o.alpha() / Math.max(1, own.size());
                     for (Effect f : own) {
@@ -2518,6 +2520,58 @@ public final class Diagnoser {
      */
     private static boolean nestedTie(Effect rival, List<Effect> own, double pressOwn, double pressRival) {
         return own.stream().anyMatch(f -> f.label().equals(rival.label())) && pressOwn <= pressRival * (1 + ALIAS_MARGIN);
+    }
+
+    /** The share of a joint's sampled range within which half of a local error lies, at most. */
+    static final double LOCAL_SHARE = 0.1;
+
+    /**
+     * Whether named transmission error {@code k} (a sum of harmonics of its joint's angle) adds up to
+     * one local error rather than one repeating over the turn: half of its variation about its mean
+     * over the joint's sampled range (the integral of its square) lies within {@link #LOCAL_SHARE} of
+     * that range, away from both ends, and it needs three harmonics or more. A gear's periodic error
+     * (an eccentric wheel, tooth meshing, a cycloidal stage) repeats at every period of its harmonics,
+     * so no window shorter than one period holds half of it over a range of several periods; a harmonic
+     * series fits one bump of a joint's angle only by phasing many harmonics to add up there, and the
+     * bump has local causes as likely as a gear (a cable or hose that pulls at one angle, a dent in a
+     * bearing race). Returns the words of why the family is not claimed, or null.
+     */
+    static String localized(Effect e, Fit fit, int k, List<Measurement> rows) {
+        if (e.kind() != Effect.Kind.PERIODIC || e.orders().length < 3 || rows.isEmpty()) return null;
+        int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0), j = e.joint();
+        double[] v = Arrays.copyOfRange(fit.effectValues(), off, off + e.size()), hs = e.orders();
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
+        if (!(hi > lo)) return null;
+        // the curve on a grid fine enough for its highest harmonic (16 points a cycle, at least 1000)
+        int n = (int) Math.min(20000, Math.max(1000, 16 * Arrays.stream(hs).max().orElse(1) * (hi - lo) / (2 * Math.PI)));
+        double[] f = new double[n];
+        double mean = 0;
+        for (int i = 0; i < n; i++) {
+            double q = lo + (hi - lo) * i / (n - 1), y = 0;
+            for (int c = 0; c < hs.length; c++) y += v[2 * c] * Math.sin(hs[c] * q) + v[2 * c + 1] * Math.cos(hs[c] * q);
+            f[i] = y;
+            mean += y / n;
+        }
+        double total = 0;
+        for (int i = 0; i < n; i++) { f[i] = (f[i] - mean) * (f[i] - mean); total += f[i]; }
+        if (!(total > 0)) return null;
+        // the shortest run of grid points holding half of it
+        int width = n + 1, from = 0;
+        double in = 0;
+        for (int a = 0, b = 0; b < n; b++) {
+            in += f[b];
+            while (in - f[a] >= 0.5 * total) in -= f[a++];
+            if (in >= 0.5 * total && b - a + 1 < width) { width = b - a + 1; from = a; }
+        }
+        if (width > LOCAL_SHARE * n || from == 0 || from + width >= n) return null;
+        double step = (hi - lo) / (n - 1), at = lo + (from + 0.5 * (width - 1)) * step;
+        return String.format(Locale.ROOT, "its %d harmonics add up to one local error of joint %d about %.1f deg (half of it "
+                + "within %.1f deg of the %.0f deg sampled), not to an error that repeats over the turn as a gear's meshing or "
+                + "eccentricity does; a local cause at that angle (a damaged tooth of the output wheel, a cable or hose pulling "
+                + "there, a dent in a bearing race) fits it as well. To map it, measure more poses with joint %d within %.0f deg of "
+                + "%.0f deg", hs.length, j + 1, Math.toDegrees(at), Math.toDegrees(width * step), Math.toDegrees(hi - lo), j + 1,
+                Math.toDegrees(2 * width * step), Math.toDegrees(at));
     }
 
     /**
