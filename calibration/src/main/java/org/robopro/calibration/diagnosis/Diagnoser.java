@@ -477,8 +477,12 @@ public final class Diagnoser {
                 }
             }
         }
-        if (new HashSet<>(under).equals(new HashSet<>(r.outliers()))) return r.reported();
+        // The same poses beyond the rule as the run left out are bad readings, unless they lie next to one another: then they
+        // are where the model does not follow the arm (a bump of a joint's angle narrower than its fallback's features),
+        // judged below as any such region.
         Region region = region(under, train.rows());
+        if (new HashSet<>(under).equals(new HashSet<>(r.outliers())) && (region == null || !(region.p() < REGION_ALPHA)))
+            return r.reported();
         if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder,
                 region == null ? "-" : region.words(), region == null ? "-" : region.linked());
         if (region != null && region.p() < REGION_ALPHA) {
@@ -595,12 +599,14 @@ public final class Diagnoser {
             }
             double p = Math.min(1, (count == 0 ? 1 : Stats.regularizedBeta(p0, count, g - count + 1)) * sets.size());
             if (best == null || p < best.p) {
-                best = new Region(js, count, g, g * p0, p, range(in, js, false), range(in, js, true), linked, null, Double.NaN, Double.NaN);
+                best = new Region(js, count, g, g * p0, p, range(in, js, false), range(in, js, true), linked, null, Double.NaN, Double.NaN, false);
             }
         }
         if (best != null && best.p() < REGION_ALPHA) return best;
         Region ends = atTheEnds(in, poses, span);
-        return ends != null && ends.p() < REGION_ALPHA ? ends : best;
+        if (ends != null && ends.p() < REGION_ALPHA) return ends;
+        Region band = inABand(in, poses, span);
+        return band != null && band.p() < REGION_ALPHA ? band : best;
     }
 
     /**
@@ -656,7 +662,7 @@ public final class Diagnoser {
                 double lowCut = side == 1 ? Double.NaN : v[order[t - 1]], highCut = side == 0 ? Double.NaN : v[order[n - t]];
                 int[] js = java.util.stream.IntStream.range(0, dof).filter(j -> c[j] != 0).toArray();
                 best = new Region(js, side == 2 ? 2 * t : t, g, g * (double) (side == 2 ? 2 * t : t) / n, p, range(in, js, false),
-                        range(in, js, true), linked, c, lowCut, highCut);
+                        range(in, js, true), linked, c, lowCut, highCut, false);
             }
         }
         return best;
@@ -674,6 +680,64 @@ public final class Diagnoser {
     }
 
     /** The chance that g poses picked at random of n all lie within a given set of k: C(k, g) / C(n, g). */
+    /**
+     * The third form of a region: the poses lie within one band of one joint's angle, the run of poses
+     * there, sorted by that angle, as short as holds them all and at most twice their number: a model
+     * that does not follow the arm over a narrow range of a joint's angle (a bump of the joint's error
+     * narrower than its fallback's features, which lives in that joint's own angle) misses most poses
+     * there. The chance that g poses of n picked at random lie within some run of k consecutive ones
+     * is the number of g-subsets whose ranks span at most k, Σ_{d=g−1}^{k−1} (n − d)·C(d − 1, g − 2),
+     * over C(n, g) (the first and last rank d apart, the rest between them); that times the joints
+     * tried (Bonferroni). Null when no joint's angle is spread.
+     */
+    static Region inABand(List<Measurement> in, List<Measurement> poses, double[] span) {
+        int n = poses.size(), g = in.size(), dof = span.length;
+        List<int[]> vars = new ArrayList<>();
+        for (int a = 0; a < dof; a++) if (span[a] > 0) { int[] c = new int[dof]; c[a] = 1; vars.add(c); }
+        if (vars.isEmpty() || g < 3) return null;
+        Set<Measurement> flagged = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        flagged.addAll(in);
+        Set<String> linked = new HashSet<>();
+        for (Measurement m : in) linked.add(m.poseId());
+        Region best = null;
+        for (int[] c : vars) {
+            double[] v = new double[n];
+            for (int i = 0; i < n; i++) v[i] = combination(c, poses.get(i));
+            Integer[] order = new Integer[n];
+            for (int i = 0; i < n; i++) order[i] = i;
+            Arrays.sort(order, (x, y) -> Double.compare(v[x], v[y]));
+            int first = -1, last = -1;
+            for (int r = 0; r < n; r++) {
+                if (!flagged.contains(poses.get(order[r]))) continue;
+                if (first < 0) first = r;
+                last = r;
+            }
+            int k = last - first + 1;
+            if (k > 2 * g) continue;
+            double p = Math.min(1, chanceInARun(k, n, g) * vars.size());
+            if (best != null && !(p < best.p())) continue;
+            int[] js = java.util.stream.IntStream.range(0, dof).filter(j -> c[j] != 0).toArray();
+            best = new Region(js, k, g, Double.NaN, p, range(in, js, false), range(in, js, true), linked, c, v[order[first]],
+                    v[order[last]], true);
+        }
+        return best;
+    }
+
+    /** The chance that g poses picked at random of n lie within some run of k consecutive ones (see {@link #inABand}). */
+    static double chanceInARun(int k, int n, int g) {
+        if (k < g) return 0;
+        double count = 0;
+        for (int d = g - 1; d <= k - 1; d++) count += (n - d) * binomial(d - 1, g - 2);
+        return Math.min(1, count / binomial(n, g));
+    }
+
+    private static double binomial(int a, int b) {
+        if (b < 0 || b > a) return 0;
+        double r = 1;
+        for (int i = 0; i < b; i++) r = r * (a - i) / (i + 1);
+        return r;
+    }
+
     private static double chanceWithin(int k, int n, int g) {
         if (k < g) return 0;
         double p = 1;
@@ -713,13 +777,17 @@ public final class Diagnoser {
      * {@code count} the poses there, every one of the region's {@code linked}.
      */
     record Region(int[] joints, int count, int poses, double expected, double p, double[] lo, double[] hi, Set<String> linked,
-                  int[] ends, double lowCut, double highCut) {
+                  int[] ends, double lowCut, double highCut, boolean band) {
         String words() {
             List<String> js = new ArrayList<>(), ranges = new ArrayList<>();
             for (int a = 0; a < joints.length; a++) {
                 js.add(String.valueOf(joints[a] + 1));
                 ranges.add(String.format(Locale.ROOT, "q%d %.0f..%.0f deg", joints[a] + 1, Math.toDegrees(lo[a]), Math.toDegrees(hi[a])));
             }
+            if (ends != null && band)
+                return String.format(Locale.ROOT, "they lie within one band of %s (%.1f..%.1f deg, the %d poses there): all %d of "
+                        + "them, where as many poses picked at random would fall in a band so narrow with p = %.2g (over the joints "
+                        + "tried)", variable(), Math.toDegrees(lowCut), Math.toDegrees(highCut), count, poses, p);
             if (ends != null) {
                 String where = Double.isNaN(highCut) ? String.format(Locale.ROOT, "at or below %.1f deg", Math.toDegrees(lowCut))
                         : Double.isNaN(lowCut) ? String.format(Locale.ROOT, "at or above %.1f deg", Math.toDegrees(highCut))
@@ -754,6 +822,7 @@ public final class Diagnoser {
         boolean holds(Measurement m, List<Measurement> poses) {
             if (ends != null) {
                 double x = combination(ends, m);
+                if (band) return x >= lowCut && x <= highCut;
                 return (!Double.isNaN(lowCut) && x <= lowCut) || (!Double.isNaN(highCut) && x >= highCut);
             }
             double[] span = new double[joints.length];
@@ -1037,7 +1106,8 @@ public final class Diagnoser {
         Calibrator.Options co = Calibrator.Options.defaults().withCancel(o.cancel());
         if (forcedOutliers != null) co = co.withOutliers(co.outlierK(), false);
         CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
-        boolean manyOutliers = forcedOutliers == null && tooManyToBeBad(geo.outliers().size(), train.size());
+        int beyondGeo = geo.outliers().size(); // the geometric fit's poses beyond the rule, every pose in
+        boolean manyOutliers = forcedOutliers == null && tooManyToBeBad(beyondGeo, train.size());
         if (LOG.isDebugEnabled())
             for (CalibrationResult.Outlier ol : geo.outliers())
                 LOG.debug("geometric outlier {}: {} robust sigmas", ol.poseId(), ol.residualM() / ol.robustSigmaM());
@@ -1082,7 +1152,7 @@ public final class Diagnoser {
             if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
         if (manyOutliers)
             notes.add(String.format(Locale.ROOT, "%d poses lie beyond 5 robust sigmas of the geometric fit, more than %s: too many "
-                    + "to be bad measurements, so ", geo.outliers().size(), 0.05 * train.size() > MAX_GROSS ? "5 % of them" : "the "
+                    + "to be bad measurements, so ", beyondGeo, 0.05 * train.size() > MAX_GROSS ? "5 % of them" : "the "
                     + MAX_GROSS + " bad readings a campaign this small may hold") + (gross.isEmpty() ? "none was left out" : "only the " + gross.size() + " beyond "
                     + String.format(Locale.ROOT, "%.0f", GROSS_SIGMAS) + " robust sigmas were left out as gross readings")
                     + " (the structure they show is located below)");
@@ -2354,7 +2424,7 @@ public final class Diagnoser {
                     if (pf < bestPress) { bestPress = pf; best = f; }
                 }
                 String why = null;
-                String local = localized(e, fit, k, rows);
+                String local = localized(e, fit, selected, rows);
                 double pressWithout = at.pressReplacing(k, null, null);
                 if (LOG.isDebugEnabled())
                     LOG.debug(String.format(Locale.ROOT, "claim check %s: press own %.1f without %.1f best rival %s %.1f", e.label(),
@@ -2526,30 +2596,50 @@ public final class Diagnoser {
     static final double LOCAL_SHARE = 0.1;
 
     /**
-     * Whether named transmission error {@code k} (a sum of harmonics of its joint's angle) adds up to
-     * one local error rather than one repeating over the turn: half of its variation about its mean
-     * over the joint's sampled range (the integral of its square) lies within {@link #LOCAL_SHARE} of
-     * that range, away from both ends, and it needs three harmonics or more. A gear's periodic error
-     * (an eccentric wheel, tooth meshing, a cycloidal stage) repeats at every period of its harmonics,
-     * so no window shorter than one period holds half of it over a range of several periods; a harmonic
-     * series fits one bump of a joint's angle only by phasing many harmonics to add up there, and the
-     * bump has local causes as likely as a gear (a cable or hose that pulls at one angle, a dent in a
-     * bearing race). Returns the words of why the family is not claimed, or null.
+     * Whether named transmission error {@code k} (a sum of harmonics of its joint's angle) is part of
+     * one local error rather than of one repeating over the turn: the joint's whole error in its own
+     * angle as fitted (every transmission error, smooth curve and step of its reading on that joint)
+     * has half of its variation about its mean over the joint's sampled range (the integral of its
+     * square) within {@link #LOCAL_SHARE} of that range, away from both ends, and the transmission
+     * errors in it have three harmonics or more. A gear's periodic error (an eccentric wheel, tooth
+     * meshing, a cycloidal stage) repeats at every period of its harmonics, so no window shorter than
+     * one period holds half of it over a range of several periods; harmonics fit one bump of a
+     * joint's angle only by phasing many of them to add up there (alone or beside a second series or a
+     * fallback), and the bump has local causes as likely as a gear (a cable or hose that pulls at one
+     * angle, a dent in a bearing race). Returns the words of why the family is not claimed, or null.
      */
-    static String localized(Effect e, Fit fit, int k, List<Measurement> rows) {
-        if (e.kind() != Effect.Kind.PERIODIC || e.orders().length < 3 || rows.isEmpty()) return null;
-        int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0), j = e.joint();
-        double[] v = Arrays.copyOfRange(fit.effectValues(), off, off + e.size()), hs = e.orders();
+    static String localized(Effect e, Fit fit, List<Effect> selected, List<Measurement> rows) {
+        if (e.kind() != Effect.Kind.PERIODIC || rows.isEmpty()) return null;
+        int j = e.joint();
+        List<Effect> terms = new ArrayList<>();
+        List<double[]> values = new ArrayList<>();
+        int harmonics = 0;
+        double maxOrder = 1;
+        for (int k = 0; k < selected.size(); k++) {
+            Effect s = selected.get(k);
+            if (s.joint() != j || s.target() != Effect.Target.DRIVE) continue;
+            boolean own = s.kind() == Effect.Kind.PERIODIC
+                    || s.kind() == Effect.Kind.SMOOTH && s.source() < 0 && !s.followsModelAngle() || s.kind() == Effect.Kind.ANGLE_STEP;
+            if (!own) continue;
+            int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0);
+            terms.add(s);
+            values.add(Arrays.copyOfRange(fit.effectValues(), off, off + s.size()));
+            if (s.kind() == Effect.Kind.PERIODIC) {
+                harmonics += s.orders().length;
+                maxOrder = Math.max(maxOrder, Arrays.stream(s.orders()).max().orElse(1));
+            }
+        }
+        if (harmonics < 3) return null;
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
         if (!(hi > lo)) return null;
-        // the curve on a grid fine enough for its highest harmonic (16 points a cycle, at least 1000)
-        int n = (int) Math.min(20000, Math.max(1000, 16 * Arrays.stream(hs).max().orElse(1) * (hi - lo) / (2 * Math.PI)));
+        // the joint's error on a grid fine enough for its highest harmonic (16 points a cycle, at least 1000)
+        int n = (int) Math.min(20000, Math.max(1000, 16 * maxOrder * (hi - lo) / (2 * Math.PI)));
         double[] f = new double[n];
         double mean = 0;
         for (int i = 0; i < n; i++) {
-            double q = lo + (hi - lo) * i / (n - 1), y = 0;
-            for (int c = 0; c < hs.length; c++) y += v[2 * c] * Math.sin(hs[c] * q) + v[2 * c + 1] * Math.cos(hs[c] * q);
+            double qDeg = Math.toDegrees(lo + (hi - lo) * i / (n - 1)), y = 0;
+            for (int t = 0; t < terms.size(); t++) y += Plots.curve(terms.get(t), values.get(t), qDeg);
             f[i] = y;
             mean += y / n;
         }
@@ -2566,11 +2656,12 @@ public final class Diagnoser {
         }
         if (width > LOCAL_SHARE * n || from == 0 || from + width >= n) return null;
         double step = (hi - lo) / (n - 1), at = lo + (from + 0.5 * (width - 1)) * step;
-        return String.format(Locale.ROOT, "its %d harmonics add up to one local error of joint %d about %.1f deg (half of it "
-                + "within %.1f deg of the %.0f deg sampled), not to an error that repeats over the turn as a gear's meshing or "
-                + "eccentricity does; a local cause at that angle (a damaged tooth of the output wheel, a cable or hose pulling "
-                + "there, a dent in a bearing race) fits it as well. To map it, measure more poses with joint %d within %.0f deg of "
-                + "%.0f deg", hs.length, j + 1, Math.toDegrees(at), Math.toDegrees(width * step), Math.toDegrees(hi - lo), j + 1,
+        return String.format(Locale.ROOT, "joint %d's error in its angle as fitted%s adds up to one local error about %.1f deg "
+                + "(half of it within %.1f deg of the %.0f deg sampled), not to an error that repeats over the turn as a gear's "
+                + "meshing or eccentricity does; a local cause at that angle (a damaged tooth of the output wheel, a cable or hose "
+                + "pulling there, a dent in a bearing race) fits it as well. To map it, measure more poses with joint %d within "
+                + "%.0f deg of %.0f deg", j + 1, terms.size() > 1 ? " (" + String.join(", ", terms.stream().map(Effect::label).toList())
+                + ")" : "", Math.toDegrees(at), Math.toDegrees(width * step), Math.toDegrees(hi - lo), j + 1,
                 Math.toDegrees(2 * width * step), Math.toDegrees(at));
     }
 

@@ -135,8 +135,8 @@ final class Plots {
         };
     }
 
-    /** The fitted effect (rad or strain) as a function of the plot's x. */
-    private static double curve(Effect e, double[] v, double x) {
+    /** The fitted effect (rad or strain) as a function of the plot's x (deg for a joint's angle); NaN where it is no function of it. */
+    static double curve(Effect e, double[] v, double x) {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? Double.NaN : e.stiffens() ? v[0] * x + v[1] * x * x * x : v[0] * x;
             case PERIODIC -> {

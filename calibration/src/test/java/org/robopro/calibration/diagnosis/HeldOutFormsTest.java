@@ -215,6 +215,40 @@ class HeldOutFormsTest {
     }
 
     /**
+     * One bump of joint 2's angle on the IRB 2000 (0.05°, 8° wide, about 40°), 300 poses and 100
+     * validation poses: two harmonic series of joint 2 (one of ten harmonics up to 21 cycles a turn)
+     * add up to it and predict the validation poses well. A gear's error repeats over the turn; this
+     * one lies in one place, so no gear is named, and the notes say where it lies.
+     */
+    @Test
+    void bumpAtOneAngleOfJoint2_isNotNamedAGearsPeriodicError() {
+        WorldCampaigns.Sim c = world("irb2000", Expected.outside(), List.of(new JointError.Bump(1, Math.toRadians(40), Math.toRadians(8),
+                Math.toRadians(0.05))), p -> p.withPoses(300, 100), 4);
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        assertTrue(d.notes().stream().anyMatch(n -> n.contains("adds up to one local error about 39")), d.notes().toString());
+        assertTrue(d.located().stream().anyMatch(l -> l.variable().equals("joint 2 angle")), d.located().toString());
+    }
+
+    /**
+     * The same bump with 92 poses and no validation poses: the poses on its peak lie 5 to 33 robust
+     * sigmas off the fallback that models the rest of it (a smooth curve or a window of joint 2's
+     * reading, coarser than the bump), all of them within a band of joint 2's angle a few degrees
+     * wide. Bad readings fall on poses at random, so none of them is reported as one.
+     */
+    @Test
+    void bumpAtOneAngleOfJoint2_posesOnItsPeakAreNoBadReadings() {
+        for (long seed : new long[] {3, 5}) {
+            WorldCampaigns.Sim c = world("irb2000", Expected.outside(), List.of(new JointError.Bump(1, Math.toRadians(40), Math.toRadians(8),
+                    Math.toRadians(0.05))), p -> p.withPoses(92, 0), seed);
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), null);
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertEquals(List.of(), d.outliers(), "seed " + seed + ": the campaign has no bad measurement; notes " + d.notes());
+            assertTrue(d.notes().stream().anyMatch(n -> n.contains("within one band of q2")), "seed " + seed + ": " + d.notes());
+        }
+    }
+
+    /**
      * The PUMA's drive 2 giving way under gravity (world masses off by up to 30 %, one payload): on
      * this campaign its own angle's smooth curve predicts left-out poses as well as the compliance,
      * so the compliance is not claimed; the notes say why and what to measure (payload steps).
