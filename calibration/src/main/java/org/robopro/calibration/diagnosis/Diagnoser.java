@@ -477,12 +477,15 @@ public final class Diagnoser {
                 }
             }
         }
-        // The same poses beyond the rule as the run left out are bad readings, unless they lie next to one another: then they
-        // are where the model does not follow the arm (a bump of a joint's angle narrower than its fallback's features),
-        // judged below as any such region.
-        Region region = region(under, train.rows());
-        if (new HashSet<>(under).equals(new HashSet<>(r.outliers())) && (region == null || !(region.p() < REGION_ALPHA)))
-            return r.reported();
+        // The same poses beyond the rule as the run left out are bad readings, unless all of them lie within one band of a
+        // joint's angle: then they are where the model does not follow the arm (a bump of a joint's error narrower than its
+        // fallback's features), judged below as any such region. Only that form: its poses were left out by the geometric
+        // fit and the final model alike, and a few gross readings can neighbour one another in some joints by chance.
+        Region region;
+        if (new HashSet<>(under).equals(new HashSet<>(r.outliers()))) {
+            region = band(under, train.rows());
+            if (region == null || !(region.p() < REGION_ALPHA)) return r.reported();
+        } else region = region(under, train.rows());
         if (LOG.isDebugEnabled()) LOG.debug("outliers under the model {} (robust sigmas {}): {}, linked {}", under, r.sigmasUnder,
                 region == null ? "-" : region.words(), region == null ? "-" : region.linked());
         if (region != null && region.p() < REGION_ALPHA) {
@@ -566,12 +569,7 @@ public final class Diagnoser {
         int n = poses.size(), g = in.size();
         if (g < 3 || n < 4) return null;
         int dof = poses.get(0).q().length;
-        double[] span = new double[dof];
-        for (int j = 0; j < dof; j++) {
-            double a = Double.POSITIVE_INFINITY, b = Double.NEGATIVE_INFINITY;
-            for (Measurement m : poses) { a = Math.min(a, m.q(j)); b = Math.max(b, m.q(j)); }
-            span[j] = b - a;
-        }
+        double[] span = spans(poses);
         List<int[]> sets = new ArrayList<>();
         sets.add(java.util.stream.IntStream.range(0, dof).toArray());
         if (dof > 3) { sets.add(new int[] {0, 1, 2}); sets.add(java.util.stream.IntStream.range(3, dof).toArray()); }
@@ -680,6 +678,25 @@ public final class Diagnoser {
     }
 
     /** The chance that g poses picked at random of n all lie within a given set of k: C(k, g) / C(n, g). */
+    /** {@link #inABand} of the poses {@code ids} among {@code poses}; null when there are fewer than three. */
+    static Region band(List<String> ids, List<Measurement> poses) {
+        Set<String> set = new HashSet<>(ids);
+        List<Measurement> in = poses.stream().filter(m -> set.contains(m.poseId())).toList();
+        return in.size() < 3 || poses.size() < 4 ? null : inABand(in, poses, spans(poses));
+    }
+
+    /** Each joint's range of angles over the poses, rad. */
+    private static double[] spans(List<Measurement> poses) {
+        int dof = poses.get(0).q().length;
+        double[] span = new double[dof];
+        for (int j = 0; j < dof; j++) {
+            double a = Double.POSITIVE_INFINITY, b = Double.NEGATIVE_INFINITY;
+            for (Measurement m : poses) { a = Math.min(a, m.q(j)); b = Math.max(b, m.q(j)); }
+            span[j] = b - a;
+        }
+        return span;
+    }
+
     /**
      * The third form of a region: the poses lie within one band of one joint's angle, the run of poses
      * there, sorted by that angle, as short as holds them all and at most twice their number: a model
