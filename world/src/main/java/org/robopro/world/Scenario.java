@@ -475,6 +475,10 @@ public record Scenario(String name, String family, String robot, Expected expect
                             Arm.gauss(r, Math.toRadians(0.05)));
                     return w -> w.withToolBump(b);
                 }, p -> p.withPoses(60, 60)));
+        // a bump narrower than the smooth curves' finest features, on a small campaign without validation poses
+        c.add(s("outside: narrow bump in the angle of j2, 100 poses", "outside", "irb2000", Expected.outside(),
+                (n, r) -> add(new JointError.Bump(1, Math.toRadians(uniform(r, 25, 55)), Math.toRadians(uniform(r, 6, 9)),
+                        Math.toRadians(signed(r, 0.03, 0.06)))), p -> p.withPoses(100, 0)));
         c.add(s("joint elasticity j2 with a stiffening spring, masses off 30 %", "gravity-elasticity", "irb2000",
                 Expected.named(claim(GRAVITY_ELASTICITY, 2)),
                 (n, r) -> {
