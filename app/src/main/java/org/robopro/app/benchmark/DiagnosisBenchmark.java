@@ -337,14 +337,17 @@ public final class DiagnosisBenchmark {
         Map<Outcome, Integer> n = new EnumMap<>(Outcome.class);
         for (Outcome o : Outcome.values()) n.put(o, 0);
         for (Run r : rs) n.merge(r.outcome(), 1, Integer::sum);
-        double[] after = rs.stream().mapToDouble(Run::finalRatio).sorted().toArray();
-        double before = rs.stream().mapToDouble(Run::geoRatio).average().orElse(Double.NaN);
+        // runs without validation poses have no validation ratios: the columns are over the runs that have them
+        double[] after = rs.stream().mapToDouble(Run::finalRatio).filter(v -> !Double.isNaN(v)).sorted().toArray();
+        double[] geo = rs.stream().mapToDouble(Run::geoRatio).filter(v -> !Double.isNaN(v)).toArray();
+        String before = geo.length == 0 ? "-" : String.format(Locale.ROOT, "%.2f", Arrays.stream(geo).average().orElse(Double.NaN));
         int inj = rs.stream().mapToInt(Run::outliersInjected).sum(), found = rs.stream().mapToInt(Run::outliersFound).sum();
         double[] twin = rs.stream().mapToDouble(Run::twinRatio).filter(v -> !Double.isNaN(v)).sorted().toArray();
         double[] toTwin = rs.stream().mapToDouble(Run::toTwin).filter(v -> !Double.isNaN(v)).sorted().toArray();
-        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %s | %s | %s | %s | %d | %.0f |%n", name,
+        return String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s | %d | %.0f |%n", name,
                 rs.size(), n.get(Outcome.NAMED_RIGHT), n.get(Outcome.NAMED_WRONG), n.get(Outcome.LOCATED_ONLY), n.get(Outcome.MISSED),
-                n.get(Outcome.FALSE_CLAIM), n.get(Outcome.CLEAN), before, after[after.length / 2], after[after.length - 1],
+                n.get(Outcome.FALSE_CLAIM), n.get(Outcome.CLEAN), before, median(after),
+                after.length == 0 ? "-" : String.format(Locale.ROOT, "%.2f", after[after.length - 1]),
                 median(twin), median(toTwin), toTwin.length == 0 ? "-" : String.format(Locale.ROOT, "%.2f", toTwin[toTwin.length - 1]),
                 inj == 0 ? "-" : found + "/" + inj, rs.stream().mapToInt(Run::cleanFlagged).sum(),
                 rs.stream().mapToDouble(Run::ms).average().orElse(0));

@@ -125,6 +125,16 @@ class DiagnosisBenchmarkTest {
     }
 
     @Test
+    void row_takesItsValidationRatiosOverTheRunsThatHaveThem() {
+        var noValidation = new DiagnosisBenchmark.Run("z", Expected.outside(), 1, DiagnosisBenchmark.Outcome.LOCATED_ONLY, List.of(),
+                List.of("a smooth, non-periodic function of joint 2's angle"), Double.NaN, Double.NaN, Double.NaN, 10, 0, 0, 0);
+        String row = DiagnosisBenchmark.row("all", List.of(run(1.02, Double.NaN), noValidation));
+        assertTrue(row.contains("| 1.20 | 1.02 | 1.02 |"), row);
+        String alone = DiagnosisBenchmark.row("z", List.of(noValidation));
+        assertTrue(alone.contains("| - | - | - |") && !alone.contains("NaN"), alone);
+    }
+
+    @Test
     void table_listsNamedRightRunsWithAStructureLocatedBeside() {
         Expected lm = Expected.named(Expected.claim(Expected.Family.LOST_MOTION, 2));
         var plain = new DiagnosisBenchmark.Run("a", lm, 1, DiagnosisBenchmark.Outcome.NAMED_RIGHT, List.of("backlash j2"), List.of(), 5, 1.02,
