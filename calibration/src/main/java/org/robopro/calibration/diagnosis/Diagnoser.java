@@ -632,20 +632,14 @@ public final class Diagnoser {
         vars.removeIf(c -> { for (int j = 0; j < dof; j++) if (c[j] != 0 && !(span[j] > 0)) return true; return false; });
         if (vars.isEmpty()) return null;
         int tests = 3 * vars.size();
-        Set<Measurement> flagged = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
-        flagged.addAll(in);
         Set<String> linked = new HashSet<>();
         for (Measurement m : in) linked.add(m.poseId());
         Region best = null;
         for (int[] c : vars) {
             double[] v = new double[n];
-            for (int i = 0; i < n; i++) v[i] = combination(c, poses.get(i));
             Integer[] order = new Integer[n];
-            for (int i = 0; i < n; i++) order[i] = i;
-            Arrays.sort(order, (x, y) -> Double.compare(v[x], v[y]));
             int lowT = 0, highT = 0, bothT = 0;
-            for (int r = 0; r < n; r++) {
-                if (!flagged.contains(poses.get(order[r]))) continue;
+            for (int r : ranks(c, poses, in, v, order)) {
                 lowT = Math.max(lowT, r + 1);
                 highT = Math.max(highT, n - r);
                 bothT = Math.max(bothT, Math.min(r + 1, n - r));
@@ -712,24 +706,15 @@ public final class Diagnoser {
         List<int[]> vars = new ArrayList<>();
         for (int a = 0; a < dof; a++) if (span[a] > 0) { int[] c = new int[dof]; c[a] = 1; vars.add(c); }
         if (vars.isEmpty() || g < 3) return null;
-        Set<Measurement> flagged = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
-        flagged.addAll(in);
         Set<String> linked = new HashSet<>();
         for (Measurement m : in) linked.add(m.poseId());
         Region best = null;
         for (int[] c : vars) {
             double[] v = new double[n];
-            for (int i = 0; i < n; i++) v[i] = combination(c, poses.get(i));
             Integer[] order = new Integer[n];
-            for (int i = 0; i < n; i++) order[i] = i;
-            Arrays.sort(order, (x, y) -> Double.compare(v[x], v[y]));
-            int first = -1, last = -1;
-            for (int r = 0; r < n; r++) {
-                if (!flagged.contains(poses.get(order[r]))) continue;
-                if (first < 0) first = r;
-                last = r;
-            }
-            int k = last - first + 1;
+            int[] rk = ranks(c, poses, in, v, order);
+            if (rk.length == 0) continue;
+            int first = rk[0], last = rk[rk.length - 1], k = last - first + 1;
             if (k > 2 * g) continue;
             double p = Math.min(1, chanceInARun(k, n, g) * vars.size());
             if (best != null && !(p < best.p())) continue;
@@ -738,6 +723,19 @@ public final class Diagnoser {
                     v[order[last]], true);
         }
         return best;
+    }
+
+    /**
+     * The ranks, ascending, of the poses {@code in} among {@code poses} sorted by the angle Σ c_j q_j;
+     * fills v with each pose's value of it and order with the poses' indices by rank.
+     */
+    private static int[] ranks(int[] c, List<Measurement> poses, List<Measurement> in, double[] v, Integer[] order) {
+        int n = poses.size();
+        for (int i = 0; i < n; i++) { v[i] = combination(c, poses.get(i)); order[i] = i; }
+        Arrays.sort(order, (x, y) -> Double.compare(v[x], v[y]));
+        Set<Measurement> flagged = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        flagged.addAll(in);
+        return java.util.stream.IntStream.range(0, n).filter(r -> flagged.contains(poses.get(order[r]))).toArray();
     }
 
     /** The chance that g poses picked at random of n lie within some run of k consecutive ones (see {@link #inABand}). */
