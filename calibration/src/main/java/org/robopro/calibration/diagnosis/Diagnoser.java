@@ -2439,7 +2439,7 @@ public final class Diagnoser {
                     if (pf < bestPress) { bestPress = pf; best = f; }
                 }
                 String why = null;
-                String local = localized(e, fit, selected, rows);
+                String local; // whether the family's joint error is one local bump, asked only when the checks before it pass
                 double pressWithout = at.pressReplacing(k, null, null);
                 if (LOG.isDebugEnabled())
                     LOG.debug(String.format(Locale.ROOT, "claim check %s: press own %.1f without %.1f best rival %s %.1f", e.label(),
@@ -2469,7 +2469,7 @@ public final class Diagnoser {
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
                             ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
                             + "be told apart on these poses: measure with two or three payloads to tell" : "");
-                else if (local != null) why = e.label() + " is not claimed: " + local;
+                else if ((local = localized(e, fit, selected, rows)) != null) why = e.label() + " is not claimed: " + local;
                 else {
                     double thr = w.o.alpha() / Math.max(1, own.size());
                     for (Effect f : own) {
@@ -2636,9 +2636,8 @@ public final class Diagnoser {
             boolean own = s.kind() == Effect.Kind.PERIODIC
                     || s.kind() == Effect.Kind.SMOOTH && s.source() < 0 && !s.followsModelAngle() || s.kind() == Effect.Kind.ANGLE_STEP;
             if (!own) continue;
-            int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0);
             terms.add(s);
-            values.add(Arrays.copyOfRange(fit.effectValues(), off, off + s.size()));
+            values.add(fit.effectValues(k));
             if (s.kind() == Effect.Kind.PERIODIC) {
                 harmonics += s.orders().length;
                 maxOrder = Math.max(maxOrder, Arrays.stream(s.orders()).max().orElse(1));
@@ -2691,8 +2690,8 @@ public final class Diagnoser {
      */
     static List<Effect> readingSteps(Effect e, Fit fit, int k, List<Measurement> rows, List<PoseConditions> conds) {
         if (e.kind() != Effect.Kind.PERIODIC || rows.size() < 8) return List.of();
-        int off = fit.problem.effectOffset(k) - fit.problem.effectOffset(0), n = rows.size(), j = e.joint();
-        double[] v = Arrays.copyOfRange(fit.effectValues(), off, off + e.size());
+        int n = rows.size(), j = e.joint();
+        double[] v = fit.effectValues(k);
         Integer[] order = new Integer[n];
         for (int i = 0; i < n; i++) order[i] = i;
         Arrays.sort(order, (a, b) -> Double.compare(rows.get(a).q(j), rows.get(b).q(j)));
@@ -3712,6 +3711,12 @@ public final class Diagnoser {
             if (nEffects == 0) return new double[0];
             int off = problem.effectOffset(0);
             return Arrays.copyOfRange(full, off, full.length);
+        }
+
+        /** The fitted values of selected effect {@code k}. */
+        double[] effectValues(int k) {
+            int a = problem.effectOffset(k);
+            return Arrays.copyOfRange(full, a, a + problem.effects().get(k).parameterNames().size());
         }
     }
 
