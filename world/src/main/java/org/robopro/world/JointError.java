@@ -170,6 +170,20 @@ public sealed interface JointError {
     }
 
     /**
+     * Outside every catalogue family: the joint's zero moves as its own motor warms, shift times
+     * (1 - exp(-t/tau)), t the time since the campaign started. A motor heated at a steady rate
+     * and cooled to the air warms as a lumped body (Incropera & DeWitt, Fundamentals of Heat and
+     * Mass Transfer, section 5.2); each drive has its own heating and time constant, and neither
+     * follows the air temperature near the robot, so the drives of one arm drift each on its own
+     * curve. The encoder's mounting or the gear's housing grows with the motor's temperature.
+     */
+    record MotorWarm(int joint, double shift, double tauS) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            return Double.isFinite(m.timeS()) ? shift * (1 - Math.exp(-m.timeS() / tauS)) : 0;
+        }
+    }
+
+    /**
      * Outside every catalogue family: the error follows the product of two joints' angles,
      * k q_a q_b (rad). Where one of them is the drive's own joint, its part linear in the other
      * looks like a cross-coupling, but the coupling's size changes with the drive's own angle.

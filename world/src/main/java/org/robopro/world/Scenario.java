@@ -400,6 +400,11 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> add(new JointError.Creep(2, Math.toRadians(signed(r, 0.02, 0.04)) / 3600)), same()));
         c.add(s("outside: j2 zero moving with drive temperature", "outside", "irb2000", Expected.outside(),
                 (n, r) -> add(new JointError.DriveThermal(1, Math.toRadians(signed(r, 0.002, 0.004)), 20)), same()));
+        c.add(s("outside: zeros of drives 1-3 drift as their motors warm, 6-D", "outside", "irb2000", Expected.outside(),
+                (n, r) -> add(new JointError.MotorWarm(0, Math.toRadians(signed(r, 0.008, 0.02)), uniform(r, 600, 3000)),
+                        new JointError.MotorWarm(1, Math.toRadians(signed(r, 0.008, 0.02)), uniform(r, 600, 3000)),
+                        new JointError.MotorWarm(2, Math.toRadians(signed(r, 0.008, 0.02)), uniform(r, 600, 3000))),
+                p -> p.withSixD(true)));
         c.add(s("outside: arm bends with payload and reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     double rated = RobotLibrary.shipped("irb2000").massModel().map(m -> m.ratedPayloadKg()).filter(v -> v > 0).orElse(5.0);

@@ -210,6 +210,10 @@ final class Truth {
             m.put("type", "drive zero moving with temperature (outside)");
             m.put("deg_per_k", Math.toDegrees(dt.perK()));
             m.put("ref_c", dt.refC());
+        } else if (e instanceof JointError.MotorWarm mw) {
+            m.put("type", "drive zero moving as its motor warms (outside)");
+            m.put("shift_deg", Math.toDegrees(mw.shift()));
+            m.put("tau_s", mw.tauS());
         }
         return m;
     }
