@@ -74,6 +74,25 @@ class LevenbergMarquardtTest {
     }
 
     @Test
+    void solve_nearStartWithSmallInitialDamping_reachesTheSamePointInFewerSteps() {
+        ExpFit p = new ExpFit(11, 1500, -0.012, 40, 0.5);
+        // a start within a few per cent of the solution, as a refit after a small change of the model has
+        double[] near = {1450, -0.0118, 41};
+        var slow = new LevenbergMarquardt(p).solve(near, Cancellation.NONE);
+        var quick = new LevenbergMarquardt(p).initialDamping(1e-6).solve(near, Cancellation.NONE);
+        assertTrue(slow.converged() && quick.converged(), slow.reason() + " " + quick.reason());
+        assertEquals(slow.x()[0], quick.x()[0], 1e-6 * 1500);
+        assertEquals(slow.x()[1], quick.x()[1], 1e-6 * 0.012);
+        assertEquals(slow.x()[2], quick.x()[2], 1e-6 * 40);
+        assertTrue(quick.iterations() < slow.iterations(), quick.iterations() + " iterations against " + slow.iterations());
+        // from a poor start the small damping costs rejected steps, not the answer
+        var far = new LevenbergMarquardt(p).initialDamping(1e-6).solve(new double[] {1000, -0.02, 0}, Cancellation.NONE);
+        assertTrue(far.converged(), far.reason().toString());
+        assertEquals(slow.x()[1], far.x()[1], 1e-6 * 0.012);
+        assertThrows(IllegalArgumentException.class, () -> new LevenbergMarquardt(p).initialDamping(0));
+    }
+
+    @Test
     void solve_cancelledToken_throws() {
         Cancellation c = new Cancellation();
         c.cancel();
