@@ -2469,6 +2469,12 @@ public final class Diagnoser {
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
                             ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
                             + "be told apart on these poses: measure with two or three payloads to tell" : "");
+                else if (best != null && best.isFallback() && periodicityUntested(e, rows)
+                        && (pressOwn > bestPress * (1 - ALIAS_MARGIN) || tellsApart(at, k, best, w) < TELL_Z))
+                    why = String.format(Locale.ROOT, "%s is not claimed: %s, a shape of no known physics, predicts left-out poses "
+                            + "nearly as well (leave-one-pose-out error %.1f against %.1f: to be told apart, %.0f %% lower and by "
+                            + "%.0f standard errors of the pose-by-pose difference), so these poses cannot tell the physics from a "
+                            + "shape; %s", e.label(), best.label(), pressOwn, bestPress, 100 * ALIAS_MARGIN, TELL_Z, toTell(e));
                 else if ((local = localized(e, fit, selected, rows)) != null) why = e.label() + " is not claimed: " + local;
                 else {
                     double thr = w.o.alpha() / Math.max(1, own.size());
@@ -2605,6 +2611,73 @@ public final class Diagnoser {
      */
     private static boolean nestedTie(Effect rival, List<Effect> own, double pressOwn, double pressRival) {
         return own.stream().anyMatch(f -> f.label().equals(rival.label())) && pressOwn <= pressRival * (1 + ALIAS_MARGIN);
+    }
+
+    /** The largest harmonic of a transmission error whose periodicity needs a sampled turn to be seen. */
+    static final int LOW_HARMONIC = 3;
+    /** A joint sampled over less than this share of a turn shows no repeat of a once-per-turn error. */
+    static final double TURN_SHARE = 5.0 / 6;
+
+    /**
+     * Whether transmission error {@code e} holds only harmonics up to {@link #LOW_HARMONIC} of a joint
+     * sampled over less than {@link #TURN_SHARE} of a turn: there its few sines and cosines are one
+     * smooth curve among many, and nothing in the data shows them repeat (an error of the angle that
+     * does not repeat, such as a deflection under a balancer's or a spring's torque, follows the same
+     * curve). Such a claim must then beat the smooth shape clearly ({@link #TELL_Z}).
+     */
+    static boolean periodicityUntested(Effect e, List<Measurement> rows) {
+        if (e.kind() != Effect.Kind.PERIODIC || e.stages().length > 0 || rows.isEmpty()) return false;
+        for (int h : e.harmonics()) if (h > LOW_HARMONIC) return false;
+        int j = e.joint();
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) { lo = Math.min(lo, r.q()[j]); hi = Math.max(hi, r.q()[j]); }
+        return hi - lo < TURN_SHARE * 2 * Math.PI;
+    }
+
+    /**
+     * A family is told apart from the fallback that predicts left-out poses best only when its
+     * leave-one-pose-out error is lower by {@link #ALIAS_MARGIN} of it and by this many standard
+     * errors of the pose-by-pose difference: the first asks for a difference worth a claim (two
+     * nearly equal fits differ by little but consistently), the second for one that is not a few
+     * poses' doing.
+     */
+    static final double TELL_Z = 2;
+
+    /**
+     * How clearly selected family {@code k} predicts left-out poses better than fallback {@code f} in
+     * its place: the sum over poses of the difference of their left-out squared errors, over its
+     * standard error (√n times the differences' standard deviation). Two models that are not nested
+     * are compared by the pose-by-pose differences of what they predict, not by their totals alone
+     * (Vuong, "Likelihood ratio tests for model selection and non-nested hypotheses", Econometrica 57
+     * (1989) 307; Diebold & Mariano, J. Business & Economic Statistics 13 (1995) 253): a total lower
+     * by a hair may come from a few poses, as a smooth curve and a few harmonics of a joint's angle
+     * follow a deflection of a joint over part of its turn alike.
+     */
+    static double tellsApart(Tester at, int k, Effect f, Work w) {
+        double[] own = at.pressFullPerPose(), rival = at.pressReplacingPerPose(k, f, w.conditions);
+        int n = own.length;
+        if (n < 2) return Double.POSITIVE_INFINITY;
+        double sum = 0;
+        for (int i = 0; i < n; i++) sum += rival[i] - own[i];
+        if (!Double.isFinite(sum)) return sum > 0 || Double.isNaN(sum) ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
+        double mean = sum / n, ss = 0;
+        for (int i = 0; i < n; i++) { double d = rival[i] - own[i] - mean; ss += d * d; }
+        double se = Math.sqrt(n * ss / (n - 1));
+        double z = se > 0 ? sum / se : sum > 0 ? Double.POSITIVE_INFINITY : 0;
+        LOG.debug("selected effect {} against {}: left-out errors {} standard errors apart", k, f.label(), z);
+        return z;
+    }
+
+    /** What to measure so that family {@code e} can be told from a shape that follows the same variable. */
+    static String toTell(Effect e) {
+        return switch (e.kind()) {
+            case PERIODIC -> String.format(Locale.ROOT, "a gear's error repeats over joint %d's turn and does not change with "
+                    + "the load, a deflection does: measure over more of its range, or with two or three payloads", e.joint() + 1);
+            case COMPLIANCE -> "measure with two or three payloads: a deflection follows the load, an error of the angle does not";
+            case BACKLASH -> String.format(Locale.ROOT, "approach each pose of joint %d from both sides, in an order that mixes "
+                    + "the directions with the angle", e.joint() + 1);
+            default -> "measure more poses over the whole range of what it follows";
+        };
     }
 
     /** The share of a joint's sampled range within which half of a local error lies, at most. */
@@ -4305,6 +4378,11 @@ public final class Diagnoser {
          * projected columns ys (null: a column of zeros, left out) added.
          */
         private double pressWithProjected(double[][] withoutH, double[] e, double[][] cols, double[] n0) {
+            return pressWithProjected(withoutH, e, cols, n0, null);
+        }
+
+        /** {@link #pressWithProjected}, each pose's term also put in {@code perPose} (when not null). */
+        private double pressWithProjected(double[][] withoutH, double[] e, double[][] cols, double[] n0, double[] perPose) {
             List<double[]> ys = new ArrayList<>();
             double[] n0s = new double[cols.length];
             for (int c = 0; c < cols.length; c++) {
@@ -4324,15 +4402,34 @@ public final class Diagnoser {
                 for (int i = 0; i < m; i++) { qm[i * q + t] = qv[i]; d += qv[i] * e[i]; }
                 for (int i = 0; i < m; i++) e[i] -= d * qv[i];
             }
-            return pressBlocks(withoutH, e, qm, q);
+            return pressBlocks(withoutH, e, qm, q, perPose);
         }
 
 
         /** Leave-one-pose-out error (PRESS) of the linearised joint model as fitted (every free column). */
         double pressFull() { return pressBlocks(h0, rPerp, null, 0); }
 
+        /** {@link #pressFull}'s term of each pose: its left-out residual's squared norm. */
+        double[] pressFullPerPose() {
+            double[] out = new double[m / rpp];
+            pressBlocks(h0, rPerp, null, 0, out);
+            return out;
+        }
+
+        /** {@link #pressReplacing}'s term of each pose (selected effect k replaced by {@code alias}). */
+        double[] pressReplacingPerPose(int k, Effect alias, List<PoseConditions> conds) {
+            double[] out = new double[m / rpp];
+            without(k);
+            Projected p = projected(withoutU, withoutU.length / m, signature(alias, conds), alias.size());
+            pressWithProjected(withoutH, withoutE.clone(), p.cols(), p.n0(), out);
+            return out;
+        }
+
         /** Σ_i ‖(I − H_ii)⁻¹ e_i‖² with H_ii = hb_i + Q_i Q_iᵀ (Q m x q, or null). */
-        private double pressBlocks(double[][] hb, double[] e, double[] qm, int q) {
+        private double pressBlocks(double[][] hb, double[] e, double[] qm, int q) { return pressBlocks(hb, e, qm, q, null); }
+
+        /** {@link #pressBlocks}, each pose's term also put in {@code perPose} (when not null). */
+        private double pressBlocks(double[][] hb, double[] e, double[] qm, int q, double[] perPose) {
             int poses = m / rpp;
             double total = 0;
             double[] h = new double[rpp * rpp], bb = new double[rpp];
@@ -4345,7 +4442,10 @@ public final class Diagnoser {
                     }
                 for (int a1 = 0; a1 < rpp; a1++) bb[a1] = e[i * rpp + a1];
                 if (!solve(h, bb, rpp)) return Double.POSITIVE_INFINITY; // a pose fully determines a parameter
-                for (double v : bb) total += v * v;
+                double own = 0;
+                for (double v : bb) own += v * v;
+                if (perPose != null) perPose[i] = own;
+                total += own;
             }
             return total;
         }
