@@ -83,6 +83,8 @@ public final class Diagnoser {
     static final double MAX_WOBBLE_RAD = 1e-3;
     /** Nor a holder that bends more than this under its own weight (it would be seen bending), m. */
     static final double MAX_TOOL_SAG_M = 2e-3;
+    /** Largest plausible turn of the base or the instrument with time or temperature, rad (2 mm at 2 m). */
+    static final double MAX_BASE_TURN_RAD = 1e-3;
     /**
      * Largest move of the measured target on the flange between two readings taken as one campaign's
      * (a reflector's nest knocked, a tool slipping in its clamp), m; beyond it the tool was changed.
@@ -2049,6 +2051,16 @@ public final class Diagnoser {
         int j = e.joint(), k = e.source();
         switch (e.kind()) {
             case PERIODIC, SCALE -> smoothCurves(out, rows, q -> q[j], (lo, hi, nb) -> Effect.smooth(j, lo, hi, nb));
+            case DRIFT -> {
+                // the base or the instrument turning as well as moving with the same reading (a floor or a stand that tilts)
+                boolean time = e.usesTimeProxy();
+                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                for (Measurement r : rows) {
+                    double u = time ? r.timeS() : r.tempC();
+                    if (Double.isFinite(u)) { lo = Math.min(lo, u); hi = Math.max(hi, u); }
+                }
+                if (hi > lo) out.add(Effect.baseTurn(time ? Effect.Along.TIME : Effect.Along.TEMPERATURE, lo, hi));
+            }
             case COUPLING -> {
                 out.add(Effect.pair(j, k));
                 // a pull that follows the source's angle but not in proportion (a cable tightening as it winds up)
@@ -2671,8 +2683,10 @@ public final class Diagnoser {
     /** What to measure so that family {@code e} can be told from a shape that follows the same variable. */
     static String toTell(Effect e) {
         return switch (e.kind()) {
-            case PERIODIC -> String.format(Locale.ROOT, "a gear's error repeats over joint %d's turn and does not change with "
-                    + "the load, a deflection does: measure over more of its range, or with two or three payloads", e.joint() + 1);
+            case PERIODIC -> String.format(Locale.ROOT, "a gear's error repeats at every turn of joint %d, which these poses do "
+                    + "not sample, and a smooth error of its angle (a balancer's or a spring's torque, a cable's pull) follows the "
+                    + "same curve: sample the joint over a whole turn where its range allows, or measure the reducer's "
+                    + "transmission error on the drive (an encoder on the output side)", e.joint() + 1);
             case COMPLIANCE -> "measure with two or three payloads: a deflection follows the load, an error of the angle does not";
             case BACKLASH -> String.format(Locale.ROOT, "approach each pose of joint %d from both sides, in an order that mixes "
                     + "the directions with the angle", e.joint() + 1);
@@ -4899,6 +4913,16 @@ public final class Diagnoser {
                 double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
                 c.plausible = d < MAX_TARGET_STEP_M;
                 c.plausibility = String.format(Locale.ROOT, "the target's move %.4f mm < %.0f mm", d * 1e3, MAX_TARGET_STEP_M * 1e3);
+            }
+            case BASE_TURN -> {
+                // a B-spline's curve lies within its coefficients' range: the largest turn bounds the tilt
+                int nb = e.basisCount();
+                double turn = 0, move = 0;
+                for (int i = 0; i < 3 * nb; i++) turn = Math.max(turn, Math.abs(v[i]));
+                for (int i = 3 * nb; i < v.length; i++) move = Math.max(move, Math.abs(v[i]));
+                c.plausible = turn < MAX_BASE_TURN_RAD && move < MAX_TARGET_STEP_M;
+                c.plausibility = String.format(Locale.ROOT, "turn within %.1f µrad < %.0f µrad, move %.4f mm < %.0f mm", 1e6 * turn,
+                        1e6 * MAX_BASE_TURN_RAD, 1e3 * move, 1e3 * MAX_TARGET_STEP_M);
             }
             case POINT_SMOOTH -> {
                 // a B-spline's curve lies within its coefficients' range, so the largest bounds the displacement

@@ -66,6 +66,7 @@ public final class Effect {
         SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family"),
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
         POINT_SMOOTH("point-smooth-error", "Displacement of the measured point with its reach, height, time or temperature, of no known family"),
+        BASE_TURN("base-turn", "The robot's base or the instrument turning with time or temperature, of no known family"),
         ZERO_DRIFT("joint-zero-drift", "Joint zero that moves with time or temperature, of no known family"),
         ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
@@ -504,6 +505,24 @@ public final class Effect {
     }
 
     /**
+     * The robot's base (or the instrument) turns and moves with time or temperature, as a rigid body:
+     * Δp = ω(u) × p + d·(u − lo)/(hi − lo), p the measured point in base coordinates, ω a cubic
+     * B-spline ({@link #POINT_BASIS} functions per axis) of u (time or temperature) over [lo, hi],
+     * and d a drift in proportion to u; the measured frame turns by ω (6-D). A floor slab or a
+     * tracker's stand that tilts as it warms turns everything on it about a point of the floor (the
+     * turn about the base origin and a move); a drift in proportion to the reading is {@link
+     * #driftWithTime()}'s or {@link #driftWithTemperature}'s shape, which this one holds. An
+     * unknown time is taken as the end of the campaign, an unknown temperature contributes nothing.
+     */
+    public static Effect baseTurn(Along along, double lo, double hi) {
+        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a base turns with time or temperature");
+        if (!(hi > lo)) throw new IllegalArgumentException("base turn range " + lo + ".." + hi);
+        Effect e = new Effect(Kind.BASE_TURN, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, POINT_BASIS);
+        e.along = along;
+        return e;
+    }
+
+    /**
      * The zero of drive {@code joint} moves with time or temperature: Δq = a cubic B-spline
      * ({@link #POINT_BASIS} functions) of the variable over [lo, hi]. An unknown time is taken as
      * the end of the campaign (the state closest to a program run after it); an unknown
@@ -900,6 +919,7 @@ public final class Effect {
      * bending holds the part of its joint's spring that the weight across the link drives (δ = L·θ).
      */
     public boolean holdsPartOf(Effect e) {
+        if (kind == Kind.BASE_TURN && e.kind == Kind.DRIFT) return e.usesTimeProxy() == (along == Along.TIME);
         return kind == Kind.LINK_SAG && e.kind == Kind.COMPLIANCE && e.joint == joint;
     }
 
@@ -1040,7 +1060,7 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
+        return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT
                 || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.TARGET_INCIDENCE;
     }
@@ -1209,7 +1229,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -1255,6 +1275,7 @@ public final class Effect {
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case POINT_SMOOTH -> 3 * nBasis;
+            case BASE_TURN -> 3 * nBasis + 3;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
             default -> 1;
@@ -1283,6 +1304,10 @@ public final class Effect {
             case SMOOTH -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
             case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); out.add("lin_j"); out.add("lin_k"); out.add("lin_jk"); }
             case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
+            case BASE_TURN -> {
+                for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("r" + a + k);
+                out.add("dx"); out.add("dy"); out.add("dz");
+            }
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
@@ -1335,6 +1360,7 @@ public final class Effect {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case POINT_SMOOTH, TARGET_STEP, TOOL_SAG, TARGET_INCIDENCE -> "m";
+            case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
@@ -1351,6 +1377,11 @@ public final class Effect {
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
         if (kind == Kind.BASE_TILT) return List.of(u, "m/(N·m)", "m/(N·m)"); // the lift and the slide: the tilt times a distance
+        if (kind == Kind.BASE_TURN) { // the turns, then the drift over the whole range
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(3 * nBasis, u));
+            out.addAll(List.of("m", "m", "m"));
+            return out;
+        }
         if (kind == Kind.LINK_SAG) {
             List<String> out = new ArrayList<>(List.of(u, "rad")); // the far end's deflection, then its turns
             if (sagPayload) out.add("rad/kg");
@@ -1377,7 +1408,7 @@ public final class Effect {
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
-            case POINT_SMOOTH -> kind.json + " (" + along.words + ")";
+            case POINT_SMOOTH, BASE_TURN -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
@@ -1498,7 +1529,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1548,6 +1579,24 @@ public final class Effect {
                 if (!(c.timeS() <= tauS)) break;
                 Pose f = model.flange(q);
                 for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
+            }
+            case BASE_TURN -> {
+                double u = along == Along.TIME ? (Double.isFinite(c.timeS()) ? c.timeS() : hi) : c.tempC();
+                if (!Double.isFinite(u)) break; // an unknown temperature contributes nothing
+                double[] b = new double[nBasis];
+                bspline(u, lo, hi, b);
+                double px = pointBase[0], py = pointBase[1], pz = pointBase[2];
+                for (int i = 0; i < nBasis; i++) {
+                    // ω = e_a b_i: e_x × p = (0, −z, y), e_y × p = (z, 0, −x), e_z × p = (−y, x, 0)
+                    g3[k + i] = -pz * b[i];
+                    g3[2 * k + i] = py * b[i];
+                    g3[nBasis + i] = pz * b[i];
+                    g3[2 * k + nBasis + i] = -px * b[i];
+                    g3[2 * nBasis + i] = -py * b[i];
+                    g3[k + 2 * nBasis + i] = px * b[i];
+                }
+                double share = (u - lo) / (hi - lo);
+                for (int a = 0; a < 3; a++) g3[a * k + 3 * nBasis + a] = share;
             }
             case POINT_SMOOTH -> {
                 double[] b = new double[nBasis];
@@ -1616,7 +1665,7 @@ public final class Effect {
     }
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
-    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG; }
+    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.BASE_TURN; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -1627,6 +1676,15 @@ public final class Effect {
         Arrays.fill(g3, 0);
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
+        if (kind == Kind.BASE_TURN) {
+            double u = along == Along.TIME ? (Double.isFinite(c.timeS()) ? c.timeS() : hi) : c.tempC();
+            if (!Double.isFinite(u)) return;
+            double[] b = new double[nBasis];
+            bspline(u, lo, hi, b);
+            int k = size();
+            for (int a = 0; a < 3; a++) System.arraycopy(b, 0, g3, a * k + a * nBasis, nBasis);
+            return;
+        }
         if (kind != Kind.BASE_TILT) return;
         double[] t = tilt(q, c.payloadKg());
         g3[0] = t[2] * t[0];
@@ -1783,7 +1841,7 @@ public final class Effect {
                 p.put("q_max", hi);
                 if (model != null) p.put("model_angle", 1.0);
             }
-            case POINT_SMOOTH, ZERO_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
+            case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case AXIS_WOBBLE -> { }
             case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
@@ -1829,14 +1887,14 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, TARGET_STEP, INSTRUMENT, BASE_TILT, TOOL_SAG, TARGET_INCIDENCE -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, BASE_TILT, TOOL_SAG, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
         };
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
-        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT) && along == null)
+        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN) && along == null)
             throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
         if (js.size() != need)
             throw new InputException(file, 0, 0, "effects.joints", d.effect() + " needs " + need + " joints, got " + js);
@@ -1895,6 +1953,11 @@ public final class Effect {
                 yield pair(js.get(0) - 1, js.get(1) - 1);
             }
             case POINT_SMOOTH -> pointSmooth(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
+            case BASE_TURN -> {
+                if (along != Along.TIME && along != Along.TEMPERATURE)
+                    throw new InputException(file, 0, 0, "effects.base-turn.parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
+                yield baseTurn(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
+            }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));

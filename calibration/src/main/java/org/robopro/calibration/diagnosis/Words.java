@@ -84,6 +84,7 @@ final class Words {
                     + "poses, in products of their sines and cosines, beside terms linear in each angle and in their product) and none of the known effects explains it; it is modelled "
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
                     Math.toDegrees(Math.sqrt((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) / 4)));
+            case BASE_TURN -> baseTurn(e, v);
             case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with %s (a smooth displacement in the "
                     + "base frame over %.4g..%.4g %s) and none of the known effects explains it; it is modelled as such so "
                     + "compensation can use it, but its cause is unknown (%s).", e.along() == Effect.Along.REACH
@@ -335,5 +336,23 @@ final class Words {
         return String.format(Locale.ROOT, "%s would reduce the residuals significantly (F = %.1f, p = %.2g), but its estimate "
                 + "is physically implausible (%s), so it is not claimed: the residual structure it fits probably has another "
                 + "cause.", e.label(), ev.f(), ev.pValue(), ev.plausibility()).replace("p = 0,", "p < 1e-300,");
+    }
+
+    /** A base or instrument turning with time or temperature: its turn and move from one end of the range to the other. */
+    private static String baseTurn(Effect e, double[] v) {
+        int nb = e.basisCount();
+        double[] b0 = new double[nb], b1 = new double[nb];
+        Effect.bspline(e.rangeLo(), e.rangeLo(), e.rangeHi(), b0);
+        Effect.bspline(e.rangeHi(), e.rangeLo(), e.rangeHi(), b1);
+        double[] w = new double[3];
+        for (int a = 0; a < 3; a++) for (int i = 0; i < nb; i++) w[a] += v[a * nb + i] * (b1[i] - b0[i]);
+        double tilt = Math.hypot(w[0], w[1]), move = Math.sqrt(v[3 * nb] * v[3 * nb] + v[3 * nb + 1] * v[3 * nb + 1] + v[3 * nb + 2] * v[3 * nb + 2]);
+        boolean time = e.along() == Effect.Along.TIME;
+        return String.format(Locale.ROOT, "The robot's base or the instrument turns with %s: from %.4g to %.4g %s it tilts by %.1f µrad "
+                + "about a horizontal axis at %.0f deg from the base's x axis and turns by %.1f µrad about the vertical, and moves by "
+                + "%.4f mm; none of the known effects explains it (a floor slab or the instrument's stand tilting as it warms or "
+                + "settles). It is modelled as such so compensation can use it, but its cause is unknown: re-measure a fixed "
+                + "reference point every few poses and read the instrument's level before and after.", time ? "time" : "temperature",
+                e.rangeLo(), e.rangeHi(), e.along().unit, 1e6 * tilt, Math.toDegrees(Math.atan2(w[1], w[0])), 1e6 * w[2], 1e3 * move);
     }
 }
