@@ -184,6 +184,30 @@ public sealed interface JointError {
     }
 
     /**
+     * Outside every catalogue family: a gas-spring balancer on the joint (as on the second axis of
+     * many mid-size arms) whose torque bends the drive through its stiffness. The spring joins a
+     * point on the link {@code rM} from the joint's axis to a point of the link before it {@code lM}
+     * from the axis, at an angle psi = q + phi0 between the two radii, so its length is
+     * l = sqrt(r^2 + L^2 - 2 r L cos psi) (law of cosines). Its gas, compressed polytropically as it
+     * shortens, pushes with F = f0 ((l0 - dead) / (l - dead))^n, l0 its length at q = 0 and n = 1.3
+     * (nitrogen in a fast stroke); its torque about the axis is F dl/dpsi = F r L sin(psi) / l
+     * (virtual work), and the drive, of stiffness k, gives way by tau / k. The torque is not the
+     * arm's weight: it depends on the joint's own angle alone, non-linearly and without repeating.
+     */
+    record GasSpring(int joint, double rM, double lM, double phi0, double f0N, double deadM, double n, double stiffness) implements JointError {
+        /** The balancer's torque on the joint at controller value q, N·m. */
+        public double torque(double q) {
+            double psi = q + phi0, l0 = length(phi0), l = length(psi);
+            double f = f0N * Math.pow((l0 - deadM) / (l - deadM), n);
+            return f * rM * lM * Math.sin(psi) / l;
+        }
+
+        private double length(double psi) { return Math.sqrt(rM * rM + lM * lM - 2 * rM * lM * Math.cos(psi)); }
+
+        @Override public double delta(double[] q, Moment m) { return torque(q[joint]) / stiffness; }
+    }
+
+    /**
      * Outside every catalogue family: the error follows the product of two joints' angles,
      * k q_a q_b (rad). Where one of them is the drive's own joint, its part linear in the other
      * looks like a cross-coupling, but the coupling's size changes with the drive's own angle.

@@ -405,6 +405,14 @@ public record Scenario(String name, String family, String robot, Expected expect
                         new JointError.MotorWarm(1, Math.toRadians(signed(r, 0.008, 0.02)), uniform(r, 600, 3000)),
                         new JointError.MotorWarm(2, Math.toRadians(signed(r, 0.008, 0.02)), uniform(r, 600, 3000))),
                 p -> p.withSixD(true)));
+        c.add(s("outside: gas-spring balancer bends joint 2", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    double arm = uniform(r, 0.12, 0.18), anchor = uniform(r, 0.30, 0.40), phi0 = Math.toRadians(90 + signed(r, 0, 20));
+                    double l0 = Math.sqrt(arm * arm + anchor * anchor - 2 * arm * anchor * Math.cos(phi0));
+                    // a force of 2-4 kN at q = 0, the dead length a third of the spring's shortest
+                    double dead = (anchor - arm) / 3;
+                    return add(new JointError.GasSpring(1, arm, anchor, phi0, uniform(r, 2000, 4000), dead, 1.3, uniform(r, 0.8e6, 2e6)));
+                }, same()));
         c.add(s("outside: arm bends with payload and reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     double rated = RobotLibrary.shipped("irb2000").massModel().map(m -> m.ratedPayloadKg()).filter(v -> v > 0).orElse(5.0);

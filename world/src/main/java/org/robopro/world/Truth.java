@@ -210,6 +210,13 @@ final class Truth {
             m.put("type", "drive zero moving with temperature (outside)");
             m.put("deg_per_k", Math.toDegrees(dt.perK()));
             m.put("ref_c", dt.refC());
+        } else if (e instanceof JointError.GasSpring gs) {
+            m.put("type", "gas-spring balancer bending the drive (outside)");
+            m.put("arm_m", gs.rM());
+            m.put("anchor_m", gs.lM());
+            m.put("phi0_deg", Math.toDegrees(gs.phi0()));
+            m.put("force_n", gs.f0N());
+            m.put("stiffness_nm_per_rad", gs.stiffness());
         } else if (e instanceof JointError.MotorWarm mw) {
             m.put("type", "drive zero moving as its motor warms (outside)");
             m.put("shift_deg", Math.toDegrees(mw.shift()));
