@@ -413,6 +413,13 @@ public record Scenario(String name, String family, String robot, Expected expect
                     double dead = (anchor - arm) / 3;
                     return add(new JointError.GasSpring(1, arm, anchor, phi0, uniform(r, 2000, 4000), dead, 1.3, uniform(r, 0.8e6, 2e6)));
                 }, same()));
+        c.add(s("outside: the floor tilts as it warms", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    double psi = uniform(r, 0, 2 * Math.PI), d = uniform(r, 0.3, 0.8), at = uniform(r, 0, 2 * Math.PI);
+                    var tilt = new WorldRobot.FloorTilt(psi, new double[] {d * Math.cos(at), d * Math.sin(at), 0},
+                            signed(r, 100e-6, 200e-6), uniform(r, 1200, 3000));
+                    return w -> w.withFloorTilt(tilt);
+                }, same()));
         c.add(s("outside: arm bends with payload and reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     double rated = RobotLibrary.shipped("irb2000").massModel().map(m -> m.ratedPayloadKg()).filter(v -> v > 0).orElse(5.0);

@@ -107,6 +107,16 @@ final class Truth {
             m.put("elevation_phase_rad", Arrays.stream(t.elPhase()).boxed().toList());
             root.put("tracker", m);
         }
+        if (w.floorTilt() != null) {
+            WorldRobot.FloorTilt f = w.floorTilt();
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("form", "the robot turns about a horizontal axis through a floor point by max (1 - exp(-t / tau))");
+            m.put("axis_azimuth_deg", Math.toDegrees(f.azimuth()));
+            m.put("pivot_mm", mm(f.pivot()));
+            m.put("max_urad", f.maxRad() * 1e6);
+            m.put("tau_s", f.tauS());
+            root.put("floor_tilt", m);
+        }
         if (w.rocking() != null) {
             WorldRobot.Rocking ro = w.rocking();
             Map<String, Object> m = new LinkedHashMap<>();

@@ -47,7 +47,8 @@ import org.robopro.models.RobotDescription;
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
-                         ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles) {
+                         ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
+                         FloorTilt floorTilt) {
     public WorldRobot {
         coupling = copy(coupling);
         zeroOffsets = zeroOffsets.clone();
@@ -59,7 +60,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag, ToolBump toolBump) {
         this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump,
-                null, null, null, List.of());
+                null, null, null, List.of(), null);
     }
 
     @Override public double[][] coupling() { return copy(coupling); }
@@ -506,6 +507,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             tool = new Rigid(tool.r(), p);
         }
         if (rocking != null) tool = rocking.tilt(overturningMoments(a, theta, payload)).times(tool);
+        if (floorTilt != null && Double.isFinite(timeS)) tool = floorTilt.at(timeS).times(tool);
         Rigid inst = instrumentFromBase;
         if (thermal != null) {
             double[] drift = new double[3];
@@ -516,6 +518,28 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         }
         Rigid seen = inst.times(tool);
         return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p()));
+    }
+
+    /**
+     * Outside every catalogue family: the floor under the robot tilts as it warms (a slab heated on
+     * one side by the sun through a window, by a furnace or by the hall's heating; a slab's
+     * temperature difference through its depth bows it, Timoshenko &amp; Goodier, Theory of
+     * Elasticity, thermal stresses in plates). The robot turns with it by theta(t) = maxRad (1 -
+     * exp(-t / tauS)) about a horizontal axis at {@code azimuth} from the base's x axis through the
+     * floor point {@code pivot} (base coordinates, m): the slab's temperature follows the heating
+     * as a lumped body (Incropera &amp; DeWitt, section 5.2). The instrument stands elsewhere and
+     * does not turn.
+     */
+    public record FloorTilt(double azimuth, double[] pivot, double maxRad, double tauS) {
+        public FloorTilt { pivot = pivot.clone(); }
+
+        @Override public double[] pivot() { return pivot.clone(); }
+
+        /** The floor's turn at {@code timeS} seconds into the campaign, in base coordinates. */
+        public Rigid at(double timeS) {
+            double[] axis = {Math.cos(azimuth), Math.sin(azimuth), 0};
+            return Rigid.rotation(axis, maxRad * (1 - Math.exp(-timeS / tauS)), pivot);
+        }
     }
 
     /** Torques on the model joints carried to the drives by virtual work: tau_q = C^T tau_theta. */
@@ -575,52 +599,56 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt);
+    }
+
+    public WorldRobot withFloorTilt(FloorTilt f) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f);
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
     }
 
     static double[] times(double[][] m, double[] v) {
