@@ -130,13 +130,26 @@ class HeldOutFormsTest {
         assertTrue(d.geometricValidateRmsM() > 1.5 * c.floorM(), "the structure matters: " + d.geometricValidateRmsM());
     }
 
-    /** A real transmission error of joint 2 (harmonics 1-3) on the same arm without payload steps is still named. */
+    /**
+     * A real transmission error of joint 2 on the same arm without payload steps: one that repeats
+     * within joint 2's sampled 210° (a reducer's stage at 6 cycles a turn beside the first) is still
+     * named; one of harmonics 1-3 alone is a smooth curve over that range, which a balancer's or a
+     * spring's torque gives too, and is located with the words that the data cannot tell.
+     */
     @Test
-    void transmissionErrorOfJoint2WithoutPayloadSteps_isStillNamed() {
-        WorldCampaigns.Sim c = world("irb2400", Expected.outside(), List.of(new JointError.Harmonics(1, new int[] {1, 2, 3},
+    void transmissionErrorOfJoint2WithoutPayloadSteps_isNamedWhereItRepeatsWithinTheRange() {
+        WorldCampaigns.Sim staged = world("irb2400", Expected.outside(), List.of(new JointError.Harmonics(1, new int[] {1, 6},
+                new double[] {Math.toRadians(0.008), Math.toRadians(0.006)}, new double[] {0.3, 1.9})), p -> p, 9);
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), staged.train(), staged.validation());
+        assertEquals(1, families(d).size(), "notes " + d.notes());
+        assertTrue(families(d).get(0).startsWith("gear-periodic j2"), families(d) + ", notes " + d.notes());
+
+        WorldCampaigns.Sim low = world("irb2400", Expected.outside(), List.of(new JointError.Harmonics(1, new int[] {1, 2, 3},
                 new double[] {Math.toRadians(0.008), Math.toRadians(0.006), Math.toRadians(0.007)}, new double[] {0.3, 1.9, 4.0})), p -> p, 9);
-        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), c.validation());
-        assertEquals(List.of("gear-periodic j2"), families(d), "notes " + d.notes());
+        d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), low.train(), low.validation());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        assertTrue(d.notes().stream().anyMatch(n -> n.contains("gear-periodic j2 is not claimed") && n.contains("cannot tell")), d.notes().toString());
+        assertTrue(d.located().stream().anyMatch(l -> l.variable().equals("joint 2 angle")), d.located().toString());
     }
 
     /**
