@@ -2680,18 +2680,12 @@ public final class Diagnoser {
         return z;
     }
 
-    /** What to measure so that family {@code e} can be told from a shape that follows the same variable. */
+    /** What to measure so that a transmission error of a few harmonics can be told from a smooth error of its joint's angle. */
     static String toTell(Effect e) {
-        return switch (e.kind()) {
-            case PERIODIC -> String.format(Locale.ROOT, "a gear's error repeats at every turn of joint %d, which these poses do "
-                    + "not sample, and a smooth error of its angle (a balancer's or a spring's torque, a cable's pull) follows the "
-                    + "same curve: sample the joint over a whole turn where its range allows, or measure the reducer's "
-                    + "transmission error on the drive (an encoder on the output side)", e.joint() + 1);
-            case COMPLIANCE -> "measure with two or three payloads: a deflection follows the load, an error of the angle does not";
-            case BACKLASH -> String.format(Locale.ROOT, "approach each pose of joint %d from both sides, in an order that mixes "
-                    + "the directions with the angle", e.joint() + 1);
-            default -> "measure more poses over the whole range of what it follows";
-        };
+        return String.format(Locale.ROOT, "a gear's error repeats at every turn of joint %d, which these poses do not sample, and "
+                + "a smooth error of its angle (a balancer's or a spring's torque, a cable's pull) follows the same curve: sample the "
+                + "joint over a whole turn where its range allows, or measure the reducer's transmission error on the drive (an "
+                + "encoder on the output side)", e.joint() + 1);
     }
 
     /** The share of a joint's sampled range within which half of a local error lies, at most. */
@@ -4455,7 +4449,10 @@ public final class Diagnoser {
                         h[a1 * rpp + b1] = (a1 == b1 ? 1 : 0) - v;
                     }
                 for (int a1 = 0; a1 < rpp; a1++) bb[a1] = e[i * rpp + a1];
-                if (!solve(h, bb, rpp)) return Double.POSITIVE_INFINITY; // a pose fully determines a parameter
+                if (!solve(h, bb, rpp)) { // a pose fully determines a parameter
+                    if (perPose != null) Arrays.fill(perPose, i, poses, Double.POSITIVE_INFINITY);
+                    return Double.POSITIVE_INFINITY;
+                }
                 double own = 0;
                 for (double v : bb) own += v * v;
                 if (perPose != null) perPose[i] = own;

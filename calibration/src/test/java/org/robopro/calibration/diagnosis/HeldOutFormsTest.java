@@ -267,7 +267,7 @@ class HeldOutFormsTest {
      * base while the instrument stands still. A drift of the instrument in proportion to the
      * temperature holds the move of the base's origin but not the turn; before the base's turn stood
      * against a named drift, the world's tilting floor was named `instrument-drift` on five draws of
-     * five and left 1.2-1.4 times the noise floor on the validation poses.
+     * five and left 1.2-1.4 times the noise floor on the validation poses (the world's scenario, five draws).
      */
     @Test
     void floorTilting_isNotNamedAnInstrumentDrift() {
