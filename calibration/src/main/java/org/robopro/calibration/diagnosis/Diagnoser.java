@@ -566,8 +566,8 @@ public final class Diagnoser {
      * (each test at that level); null when there are fewer than three poses.
      */
     static Region region(List<String> ids, List<Measurement> poses) {
-        Set<String> set = new HashSet<>(ids);
-        List<Measurement> in = poses.stream().filter(m -> set.contains(m.poseId())).toList();
+        List<Measurement> in = posesOf(ids, poses);
+        Set<String> set = idsOf(in);
         int n = poses.size(), g = in.size();
         if (g < 3 || n < 4) return null;
         int dof = poses.get(0).q().length;
@@ -634,8 +634,7 @@ public final class Diagnoser {
         vars.removeIf(c -> { for (int j = 0; j < dof; j++) if (c[j] != 0 && !(span[j] > 0)) return true; return false; });
         if (vars.isEmpty()) return null;
         int tests = 3 * vars.size();
-        Set<String> linked = new HashSet<>();
-        for (Measurement m : in) linked.add(m.poseId());
+        Set<String> linked = idsOf(in);
         Region best = null;
         for (int[] c : vars) {
             double[] v = new double[n];
@@ -673,12 +672,23 @@ public final class Diagnoser {
         return out;
     }
 
-    /** The chance that g poses picked at random of n all lie within a given set of k: C(k, g) / C(n, g). */
     /** {@link #inABand} of the poses {@code ids} among {@code poses}; null when there are fewer than three. */
     static Region band(List<String> ids, List<Measurement> poses) {
-        Set<String> set = new HashSet<>(ids);
-        List<Measurement> in = poses.stream().filter(m -> set.contains(m.poseId())).toList();
+        List<Measurement> in = posesOf(ids, poses);
         return in.size() < 3 || poses.size() < 4 ? null : inABand(in, poses, spans(poses));
+    }
+
+    /** The poses among {@code poses} whose ids are {@code ids}, in their order. */
+    private static List<Measurement> posesOf(List<String> ids, List<Measurement> poses) {
+        Set<String> set = new HashSet<>(ids);
+        return poses.stream().filter(m -> set.contains(m.poseId())).toList();
+    }
+
+    /** The ids of poses {@code in}. */
+    private static Set<String> idsOf(List<Measurement> in) {
+        Set<String> out = new HashSet<>();
+        for (Measurement m : in) out.add(m.poseId());
+        return out;
     }
 
     /** Each joint's range of angles over the poses, rad. */
@@ -708,8 +718,7 @@ public final class Diagnoser {
         List<int[]> vars = new ArrayList<>();
         for (int a = 0; a < dof; a++) if (span[a] > 0) { int[] c = new int[dof]; c[a] = 1; vars.add(c); }
         if (vars.isEmpty() || g < 3) return null;
-        Set<String> linked = new HashSet<>();
-        for (Measurement m : in) linked.add(m.poseId());
+        Set<String> linked = idsOf(in);
         Region best = null;
         for (int[] c : vars) {
             double[] v = new double[n];
@@ -755,6 +764,7 @@ public final class Diagnoser {
         return r;
     }
 
+    /** The chance that g poses picked at random of n all lie within a given set of k: C(k, g) / C(n, g). */
     private static double chanceWithin(int k, int n, int g) {
         if (k < g) return 0;
         double p = 1;
@@ -2640,10 +2650,7 @@ public final class Diagnoser {
     static boolean periodicityUntested(Effect e, List<Measurement> rows) {
         if (e.kind() != Effect.Kind.PERIODIC || e.stages().length > 0 || rows.isEmpty()) return false;
         for (int h : e.harmonics()) if (h > LOW_HARMONIC) return false;
-        int j = e.joint();
-        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-        for (Measurement r : rows) { lo = Math.min(lo, r.q()[j]); hi = Math.max(hi, r.q()[j]); }
-        return hi - lo < TURN_SHARE * 2 * Math.PI;
+        return spans(rows)[e.joint()] < TURN_SHARE * 2 * Math.PI;
     }
 
     /**
@@ -4331,11 +4338,14 @@ public final class Diagnoser {
         }
 
         /** {@link #pressReplacing} with the alias given by its signature columns {@code s} (m x ka, row-major; null: nothing in its place). */
-        double pressReplacingColumns(int k, double[] s, int ka) {
+        double pressReplacingColumns(int k, double[] s, int ka) { return pressReplacingColumns(k, s, ka, null); }
+
+        /** {@link #pressReplacingColumns}, each pose's term also put in {@code perPose} (when not null). */
+        private double pressReplacingColumns(int k, double[] s, int ka, double[] perPose) {
             without(k);
-            if (s == null) return pressBlocks(withoutH, withoutE, null, 0);
+            if (s == null) return pressBlocks(withoutH, withoutE, null, 0, perPose);
             Projected p = projected(withoutU, withoutU.length / m, s, ka);
-            return pressWithProjected(withoutH, withoutE.clone(), p.cols(), p.n0());
+            return pressWithProjected(withoutH, withoutE.clone(), p.cols(), p.n0(), perPose);
         }
 
         /** {@link #pressReplacingColumns} with nothing taken out: the ka columns s added to the model as fitted. */
@@ -4427,9 +4437,7 @@ public final class Diagnoser {
         /** {@link #pressReplacing}'s term of each pose (selected effect k replaced by {@code alias}). */
         double[] pressReplacingPerPose(int k, Effect alias, List<PoseConditions> conds) {
             double[] out = new double[m / rpp];
-            without(k);
-            Projected p = projected(withoutU, withoutU.length / m, signature(alias, conds), alias.size());
-            pressWithProjected(withoutH, withoutE.clone(), p.cols(), p.n0(), out);
+            pressReplacingColumns(k, signature(alias, conds), alias.size(), out);
             return out;
         }
 

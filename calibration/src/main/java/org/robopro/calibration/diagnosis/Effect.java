@@ -1524,8 +1524,7 @@ public final class Effect {
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
             case ANGLE_STEP -> g[0] = q[joint] > lo && !(q[joint] > hi) ? 1 : 0;
             case ZERO_DRIFT -> {
-                double x = along == Along.TIME ? c.timeS() : c.tempC();
-                if (!Double.isFinite(x) && along == Along.TIME) x = hi; // unknown time: the state the campaign ended in
+                double x = reading(c);
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
@@ -1581,10 +1580,8 @@ public final class Effect {
                 for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
             }
             case BASE_TURN -> {
-                double u = along == Along.TIME ? (Double.isFinite(c.timeS()) ? c.timeS() : hi) : c.tempC();
-                if (!Double.isFinite(u)) break; // an unknown temperature contributes nothing
-                double[] b = new double[nBasis];
-                bspline(u, lo, hi, b);
+                double[] b = turnBasis(c);
+                if (b == null) break; // an unknown temperature contributes nothing
                 double px = pointBase[0], py = pointBase[1], pz = pointBase[2];
                 for (int i = 0; i < nBasis; i++) {
                     // ω = e_a b_i: e_x × p = (0, −z, y), e_y × p = (z, 0, −x), e_z × p = (−y, x, 0)
@@ -1595,14 +1592,13 @@ public final class Effect {
                     g3[2 * nBasis + i] = -py * b[i];
                     g3[k + 2 * nBasis + i] = px * b[i];
                 }
-                double share = (u - lo) / (hi - lo);
+                double share = (reading(c) - lo) / (hi - lo);
                 for (int a = 0; a < 3; a++) g3[a * k + 3 * nBasis + a] = share;
             }
             case POINT_SMOOTH -> {
                 double[] b = new double[nBasis];
                 double u = switch (along) {
-                    case TIME -> Double.isFinite(c.timeS()) ? c.timeS() : hi; // unknown time: the state the campaign ended in
-                    case TEMPERATURE -> c.tempC();
+                    case TIME, TEMPERATURE -> reading(c);
                     default -> pointVariable(pointBase);
                 };
                 if (!Double.isFinite(u)) break; // unknown conditions contribute nothing
@@ -1664,6 +1660,24 @@ public final class Effect {
         return s;
     }
 
+    /**
+     * The time or temperature an effect along one of them reads under c: an unknown time is the
+     * state the campaign ended in (the range's end), an unknown temperature NaN.
+     */
+    private double reading(PoseConditions c) {
+        if (along == Along.TEMPERATURE) return c.tempC();
+        return Double.isFinite(c.timeS()) ? c.timeS() : hi;
+    }
+
+    /** A base turn's spline functions at c's reading; null at an unknown temperature. */
+    private double[] turnBasis(PoseConditions c) {
+        double u = reading(c);
+        if (!Double.isFinite(u)) return null;
+        double[] b = new double[nBasis];
+        bspline(u, lo, hi, b);
+        return b;
+    }
+
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
     public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.BASE_TURN; }
 
@@ -1677,10 +1691,8 @@ public final class Effect {
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
         if (kind == Kind.BASE_TURN) {
-            double u = along == Along.TIME ? (Double.isFinite(c.timeS()) ? c.timeS() : hi) : c.tempC();
-            if (!Double.isFinite(u)) return;
-            double[] b = new double[nBasis];
-            bspline(u, lo, hi, b);
+            double[] b = turnBasis(c);
+            if (b == null) return;
             int k = size();
             for (int a = 0; a < 3; a++) System.arraycopy(b, 0, g3, a * k + a * nBasis, nBasis);
             return;
