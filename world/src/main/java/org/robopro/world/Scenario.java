@@ -508,6 +508,10 @@ public record Scenario(String name, String family, String robot, Expected expect
                     var cc = m.withStiffness(1, k).withHardening(1, uniform(r, 0.6, 1.0) * 500 / k);
                     return w -> w.withCompliance(cc);
                 }, payloads("irb2000")));
+        // both turn the tool far more than they move it: the geometric fit's σ of the rotations is many times the noise's
+        c.add(s("cross-coupling j6<-j4 + lost motion j5, 6-D", "pair", "irb2000",
+                Expected.named(claim(CROSS_COUPLING, 6, 4), claim(LOST_MOTION, 5)),
+                (n, r) -> add(crossCoupling(5, 3, r), lostMotion(4, r)), p -> p.withSixD(true)));
         c.add(s("lost motion j2 held on one flank by gravity + cross-coupling j5<-j4", "pair", "irb2000",
                 Expected.named(claim(LOST_MOTION, 2), claim(CROSS_COUPLING, 5, 4)),
                 (n, r) -> {

@@ -1125,6 +1125,21 @@ public final class Diagnoser {
      */
     private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
                            List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
+        return run(robot, trainAll, validate, o, forcedOutliers, t0, dirSource, excluded, Double.NaN);
+    }
+
+    /**
+     * A run whose 6-D residuals weigh a rotation against a position by {@code rotOverPos} (rad per m: the ratio of
+     * the rotation's noise σ to the position's); NaN: by the geometric fit's estimates of the two. Where the geometry
+     * leaves an effect that mostly turns the tool (a wrist's play, a coupling of the wrist's drives) or mostly moves
+     * it, that fit's two σ are not the noise's; weighted by them, one kind of row carries almost nothing once the
+     * effect is modelled, the F tests count it as noise all the same, and a small structure of the other kind looks
+     * significant. So when the model selected leaves the two kinds of row in another ratio, the diagnosis is redone
+     * once with the residuals weighted by that ratio (feasible generalised least squares; the position σ, the unit
+     * of the weighted residual, is kept).
+     */
+    private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
+                           List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded, double rotOverPos) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = GravityTorques.of(model, robot);
         o.progress().update("geometric calibration", 0);
@@ -1160,7 +1175,8 @@ public final class Diagnoser {
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
 
-        Work w = new Work(model, gravity, rows, geo, validate, o);
+        Work w = Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, validate, o) : new Work(model, gravity, rows, geo, validate, o,
+                geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5, (geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5) * rotOverPos);
         List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
         // Each pose's last move per joint, in the measuring order of the whole file: a lost motion that builds up over the move.
         Directions.Moves moves = geo.pairs() ? Directions.Moves.NONE : Directions.moves(trainAll, validate);
@@ -1530,6 +1546,14 @@ public final class Diagnoser {
                     if (words != null) notes.add(words);
                 }
         timer.mark("aliases");
+        if (w.sixD && Double.isNaN(rotOverPos) && !selected.isEmpty()) {
+            double[] sd = w.rowSigmas(fit);
+            double used = w.sigmaRot / w.sigmaPos, left = sd[1] / sd[0];
+            if (left > used * REWEIGHT || left < used / REWEIGHT) {
+                LOG.debug("reweight: the model leaves rotation against position σ {} rad/m, weighted with {}: diagnosis redone", left, used);
+                return run(robot, trainAll, validate, o, forcedOutliers, t0, dirSource, excluded, left);
+            }
+        }
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
 
@@ -1700,7 +1724,7 @@ public final class Diagnoser {
         java.util.function.Supplier<List<String>> underEveryPose = () -> {
             // the final model's effects and geometry fitted again to every training pose but the gross readings among many
             List<Measurement> every = trainAll.rows().stream().filter(m -> !gross.contains(m.poseId())).toList();
-            Work wa = new Work(model, gravity, every, geoFin, validate, o);
+            Work wa = new Work(model, gravity, every, geoFin, validate, o, w.sigmaPos, w.sigmaRot);
             Fit fa = wa.fit(selected, absorbedCols, fin.full, null);
             List<String> u = new ArrayList<>(outliersUnder(selected, fa, trainAll).keySet());
             return u.isEmpty() ? u : otherFlankExplains(wa, fa, selected, u);
@@ -3354,7 +3378,8 @@ public final class Diagnoser {
     private static boolean shortWithout(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<String> leftOut,
                                         CalibrationResult geo, double stated, Measured kind) {
         Set<String> out = new HashSet<>(leftOut);
-        Work wu = new Work(w.model, w.gravity, w.rows.stream().filter(m -> !out.contains(m.poseId())).toList(), geo, w.validate, w.o);
+        Work wu = new Work(w.model, w.gravity, w.rows.stream().filter(m -> !out.contains(m.poseId())).toList(), geo, w.validate, w.o,
+                w.sigmaPos, w.sigmaRot);
         Fit fu = wu.fit(selected, absorbedCols, fit.full, null);
         double vu = wu.validateRms(fu);
         return shortOfFloor(Double.isFinite(vu) ? vu : fu.trainRms, stated, kind, perfectShare(fu, Double.isFinite(vu)));
@@ -3401,6 +3426,12 @@ public final class Diagnoser {
      * less), so the steps may be Gauss-Newton's from the first; at the default 1e-3 a refit took 10-15
      * accepted steps where 3-5 converge to the same point.
      */
+    /**
+     * The factor by which the ratio of the rotation rows' noise to the position rows' that the selected model leaves may
+     * differ from the one the residuals were weighted with before the diagnosis is redone with it (see {@link #run}).
+     */
+    static final double REWEIGHT = 1.5;
+
     static final double NEAR_START_DAMPING = 1e-6;
 
     /**
@@ -3831,6 +3862,13 @@ public final class Diagnoser {
         Pauses pauses;                // when the robot rested, from the whole file's reading times (null: unknown)
 
         Work(KinematicModel model, GravityTorques gravity, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o) {
+            this(model, gravity, rows, geo, validate, o, geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5,
+                    geo.sixD() && geo.sigmaRotRad() > 0 ? geo.sigmaRotRad() : 1e-4);
+        }
+
+        /** With the residuals weighted by {@code sigmaPos} (m) and {@code sigmaRot} (rad) instead of the geometric fit's. */
+        Work(KinematicModel model, GravityTorques gravity, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o,
+             double sigmaPos, double sigmaRot) {
             this.model = model;
             this.gravity = gravity;
             this.rows = rows;
@@ -3841,8 +3879,8 @@ public final class Diagnoser {
             geoFull = new double[ps.size()];
             geoFixed = new boolean[ps.size()];
             for (int i = 0; i < ps.size(); i++) { geoFull[i] = ps.get(i).identified(); geoFixed[i] = ps.get(i).fixed(); }
-            sigmaPos = geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5;
-            sigmaRot = sixD && geo.sigmaRotRad() > 0 ? geo.sigmaRotRad() : 1e-4;
+            this.sigmaPos = sigmaPos;
+            this.sigmaRot = sigmaRot;
             this.validate = validate;
             this.o = o;
         }
@@ -3891,6 +3929,21 @@ public final class Diagnoser {
             f.jac = lm.lastJacobian();
             f.trainRms = p.measurementRms(f.r, sigmaPos);
             return f;
+        }
+
+        /**
+         * The noise σ of the position rows (m) and of the rotation rows (rad) that {@code f} leaves: each kind's
+         * mean square residual, unweighted (no degrees of freedom taken off: only their ratio is used).
+         */
+        double[] rowSigmas(Fit f) {
+            int rpp = f.problem.rowsPerPose(), pos = f.problem.positionRowsPerPose();
+            double sp = 0, sr = 0;
+            int np = 0, nr = 0;
+            for (int i = 0; i < f.m; i++) {
+                double r = f.r[i];
+                if (i % rpp < pos) { sp += r * r; np++; } else { sr += r * r; nr++; }
+            }
+            return new double[] {sigmaPos * Math.sqrt(sp / Math.max(1, np)), nr == 0 ? sigmaRot : sigmaRot * Math.sqrt(sr / nr)};
         }
 
         /** Whether there are validation poses (a set given and not empty). */

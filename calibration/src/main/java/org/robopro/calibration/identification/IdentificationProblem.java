@@ -341,195 +341,228 @@ public final class IdentificationProblem implements LeastSquaresProblem {
      */
     public void evaluateFull(double[] full, double[] res, double[] jac) {
         if (pairs) { evaluatePairs(full, res, jac); return; }
-        KinematicModel mdl = model.withParameterValues(Arrays.copyOf(full, nGeo));
-        double[] rft = new double[9];
-        if (sixD) Se3.rotExp(full[toolOff + points * 3], full[toolOff + points * 3 + 1], full[toolOff + points * 3 + 2], rft);
-        else rft[0] = rft[4] = rft[8] = 1;
-        double[][] tools = new double[points][];
-        Pose[] flangeTtools = new Pose[points];
-        for (int k = 0; k < points; k++) {
-            tools[k] = new double[] {full[toolOff + 3 * k], full[toolOff + 3 * k + 1], full[toolOff + 3 * k + 2]};
-            flangeTtools[k] = sixD ? poseOf(rft, tools[k]) : Pose.translation(tools[k][0], tools[k][1], tools[k][2]);
-        }
-        double[] rib = new double[9];
-        double[] tib = new double[3];
-        if (instrument) {
-            Se3.rotExp(full[instOff + 3], full[instOff + 4], full[instOff + 5], rib);
-            tib[0] = full[instOff]; tib[1] = full[instOff + 1]; tib[2] = full[instOff + 2];
-        } else rib[0] = rib[4] = rib[8] = 1;
-        double[] anchor = distance ? new double[] {full[instOff], full[instOff + 1], full[instOff + 2]} : null;
-        double wp = 1 / sigmaPos, wr = 1 / sigmaRot;
-        int dof = model.dof();
-        double[] pbKin = new double[3];
-        double[] pb = new double[3], rbt = new double[9], rbf = new double[9], rib_rbf = new double[9],
-                rpred = new double[9], rmeas = new double[9], err = new double[9], e = new double[3];
-        double[] dTheta = new double[dof], dp = new double[3], dw = new double[3], turn = new double[9], turned = new double[9],
-                qEff = new double[dof];
-        // A distance row's point is evaluated as a position (3 rows) in scratch space, then projected.
-        double[] res3 = distance ? new double[3] : null, jac3 = distance && jac != null ? new double[3 * nFull] : null;
-        int rpp = rowsPerPose();
+        Frames f = new Frames(full, jac != null);
         if (jac != null) Arrays.fill(jac, 0);
-        for (int i = 0; i < rows.size(); i++) {
-            Measurement row = rows.get(i);
-            double[] q = row.q();
-            double[][] dThetaDv = null;
-            if (!effects.isEmpty()) {
-                Arrays.fill(dTheta, 0);
-                dThetaDv = new double[effects.size()][];
-                for (int k = 0; k < effects.size(); k++) {
-                    int size = effStart[k + 1] - effStart[k];
-                    double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
-                    dThetaDv[k] = jac == null ? null : new double[dof * size];
-                    effects.get(k).jointDelta(v, row, dTheta, dThetaDv[k]);
-                }
-                double[] theta = mdl.theta(q);
-                for (int j = 0; j < dof; j++) theta[j] += dTheta[j];
-                qEff = mdl.q(theta);
-            } else qEff = q;
-            // Residuals only: forward kinematics once per pose is enough (several times cheaper than the Jacobian).
-            if (jac == null) mdl.flange(qEff, ws, flange12);
-            for (int pt = 0; pt < points; pt++) {
-                double[] tool = tools[pt];
-                double[] rr = distance ? res3 : res, jj = distance ? jac3 : jac;
-                int r0 = distance ? 0 : i * rpp + 3 * pt;
-                if (jac3 != null) Arrays.fill(jac3, 0);
-                if (jac != null) mdl.poseJacobian(qEff, flangeTtools[pt], ws, pose12, jg);
-                else {
-                    for (int a = 0; a < 3; a++) {
-                        double f0 = flange12[4 * a], f1 = flange12[4 * a + 1], f2 = flange12[4 * a + 2];
-                        for (int b = 0; b < 3; b++) pose12[4 * a + b] = f0 * rft[b] + f1 * rft[3 + b] + f2 * rft[6 + b];
-                        pose12[4 * a + 3] = f0 * tool[0] + f1 * tool[1] + f2 * tool[2] + flange12[4 * a + 3];
-                    }
-                }
-                pb[0] = pose12[3]; pb[1] = pose12[7]; pb[2] = pose12[11];
-                rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
-                rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
-                rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
-                Se3.rotMulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
-                double[][] dpDv = null, dwDv = null;
-                double[] dpDpoint = null;
-                if (!effects.isEmpty()) {
-                    Arrays.fill(dp, 0);
-                    Arrays.fill(dw, 0);
-                    dpDpoint = new double[9];
-                    dpDv = new double[effects.size()][];
-                    if (sixD) dwDv = new double[effects.size()][];
-                    for (int k = 0; k < effects.size(); k++) {
-                        int size = effStart[k + 1] - effStart[k];
-                        double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
-                        dpDv[k] = jac == null ? null : new double[3 * size];
-                        effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
-                        if (sixD) {
-                            dwDv[k] = jac == null ? null : new double[3 * size];
-                            effects.get(k).rotationDelta(v, row, pb, dw, dwDv[k]);
-                        }
-                    }
-                    if (sixD && (dw[0] != 0 || dw[1] != 0 || dw[2] != 0)) { // the measured frame turned in base coordinates
-                        Se3.rotExp(dw[0], dw[1], dw[2], turn);
-                        Se3.rotMul(turn, rbt, turned);
-                        System.arraycopy(turned, 0, rbt, 0, 9);
-                    }
-                    System.arraycopy(pb, 0, pbKin, 0, 3);
-                    pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
-                }
-                double px = rib[0] * pb[0] + rib[1] * pb[1] + rib[2] * pb[2] + tib[0];
-                double py = rib[3] * pb[0] + rib[4] * pb[1] + rib[5] * pb[2] + tib[1];
-                double pz = rib[6] * pb[0] + rib[7] * pb[1] + rib[8] * pb[2] + tib[2];
-                double ux = 0, uy = 0, uz = 0;
-                if (distance) {
-                    // d_pred = |p - a|; residual (d_pred - d) / σ; ∂d_pred/∂p = uᵀ, u the unit vector from the anchor.
-                    double dx = px - anchor[0], dy = py - anchor[1], dz = pz - anchor[2];
-                    double n = Math.sqrt(dx * dx + dy * dy + dz * dz);
-                    if (n > 0) { ux = dx / n; uy = dy / n; uz = dz / n; }
-                    res[i] = (n - row.distance()) * wp;
-                } else {
-                    var meas = row.point(pt);
-                    rr[r0] = (px - meas.x()) * wp;
-                    rr[r0 + 1] = (py - meas.y()) * wp;
-                    rr[r0 + 2] = (pz - meas.z()) * wp;
-                }
+        // one method per pose and per point: each is compiled on its own, where one loop body holding them all was
+        // compiled again (on the stack) whenever a call took a branch the earlier ones had not
+        for (int i = 0; i < rows.size(); i++) evaluatePose(f, full, i, res, jac);
+    }
+
+    /** What every pose of one evaluation shares: the geometry's model, the tool, the instrument, weights and scratch. */
+    private final class Frames {
+        final KinematicModel mdl;
+        final double[] rft = new double[9], rib = new double[9], tib = new double[3], anchor;
+        final double[][] tools = new double[points][];
+        final Pose[] flangeTtools = new Pose[points];
+        final double wp = 1 / sigmaPos, wr = 1 / sigmaRot;
+        final double[] pbKin = new double[3], pb = new double[3], rbt = new double[9], rbf = new double[9], rib_rbf = new double[9],
+                rpred = new double[9], rmeas = new double[9], err = new double[9], e = new double[3];
+        final double[] dTheta, dp = new double[3], dw = new double[3], turn = new double[9], turned = new double[9];
+        // A distance row's point is evaluated as a position (3 rows) in scratch space, then projected.
+        final double[] res3, jac3;
+
+        Frames(double[] full, boolean withJacobian) {
+            mdl = model.withParameterValues(Arrays.copyOf(full, nGeo));
+            if (sixD) Se3.rotExp(full[toolOff + points * 3], full[toolOff + points * 3 + 1], full[toolOff + points * 3 + 2], rft);
+            else rft[0] = rft[4] = rft[8] = 1;
+            for (int k = 0; k < points; k++) {
+                tools[k] = new double[] {full[toolOff + 3 * k], full[toolOff + 3 * k + 1], full[toolOff + 3 * k + 2]};
+                flangeTtools[k] = sixD ? poseOf(rft, tools[k]) : Pose.translation(tools[k][0], tools[k][1], tools[k][2]);
+            }
+            if (instrument) {
+                Se3.rotExp(full[instOff + 3], full[instOff + 4], full[instOff + 5], rib);
+                tib[0] = full[instOff]; tib[1] = full[instOff + 1]; tib[2] = full[instOff + 2];
+            } else rib[0] = rib[4] = rib[8] = 1;
+            anchor = distance ? new double[] {full[instOff], full[instOff + 1], full[instOff + 2]} : null;
+            dTheta = new double[model.dof()];
+            res3 = distance ? new double[3] : null;
+            jac3 = distance && withJacobian ? new double[3 * nFull] : null;
+        }
+    }
+
+    /** Residuals (and Jacobian rows) of pose {@code i}: the effects' joint offsets, then every measured point. */
+    private void evaluatePose(Frames f, double[] full, int i, double[] res, double[] jac) {
+        Measurement row = rows.get(i);
+        double[] q = row.q(), qEff = q;
+        double[][] dThetaDv = null;
+        if (!effects.isEmpty()) {
+            int dof = model.dof();
+            double[] dTheta = f.dTheta;
+            Arrays.fill(dTheta, 0);
+            dThetaDv = new double[effects.size()][];
+            for (int k = 0; k < effects.size(); k++) {
+                int size = effStart[k + 1] - effStart[k];
+                double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
+                dThetaDv[k] = jac == null ? null : new double[dof * size];
+                effects.get(k).jointDelta(v, row, dTheta, dThetaDv[k]);
+            }
+            double[] theta = f.mdl.theta(q);
+            for (int j = 0; j < dof; j++) theta[j] += dTheta[j];
+            qEff = f.mdl.q(theta);
+        }
+        // Residuals only: forward kinematics once per pose is enough (several times cheaper than the Jacobian).
+        if (jac == null) f.mdl.flange(qEff, ws, flange12);
+        for (int pt = 0; pt < points; pt++) evaluatePoint(f, full, row, i, pt, qEff, dThetaDv, res, jac);
+    }
+
+    /** Residuals (and Jacobian rows) of point {@code pt} of pose {@code i} at the joint values {@code qEff}. */
+    private void evaluatePoint(Frames f, double[] full, Measurement row, int i, int pt, double[] qEff, double[][] dThetaDv,
+                               double[] res, double[] jac) {
+        double[] tool = f.tools[pt], rft = f.rft, rib = f.rib, tib = f.tib;
+        double[] pb = f.pb, rbt = f.rbt, rbf = f.rbf, dp = f.dp, dw = f.dw, pbKin = f.pbKin, jac3 = f.jac3;
+        double wp = f.wp, wr = f.wr;
+        double[] rr = distance ? f.res3 : res, jj = distance ? jac3 : jac;
+        int r0 = distance ? 0 : i * rowsPerPose() + 3 * pt;
+        if (jac3 != null) Arrays.fill(jac3, 0);
+        if (jac != null) f.mdl.poseJacobian(qEff, f.flangeTtools[pt], ws, pose12, jg);
+        else {
+            for (int a = 0; a < 3; a++) {
+                double f0 = flange12[4 * a], f1 = flange12[4 * a + 1], f2 = flange12[4 * a + 2];
+                for (int b = 0; b < 3; b++) pose12[4 * a + b] = f0 * rft[b] + f1 * rft[3 + b] + f2 * rft[6 + b];
+                pose12[4 * a + 3] = f0 * tool[0] + f1 * tool[1] + f2 * tool[2] + flange12[4 * a + 3];
+            }
+        }
+        pb[0] = pose12[3]; pb[1] = pose12[7]; pb[2] = pose12[11];
+        rbt[0] = pose12[0]; rbt[1] = pose12[1]; rbt[2] = pose12[2];
+        rbt[3] = pose12[4]; rbt[4] = pose12[5]; rbt[5] = pose12[6];
+        rbt[6] = pose12[8]; rbt[7] = pose12[9]; rbt[8] = pose12[10];
+        Se3.rotMulT(rbt, rft, rbf); // R_bf = R_bt R_ftᵀ
+        double[][] dpDv = null, dwDv = null;
+        double[] dpDpoint = null;
+        if (!effects.isEmpty()) {
+            Arrays.fill(dp, 0);
+            Arrays.fill(dw, 0);
+            dpDpoint = new double[9];
+            dpDv = new double[effects.size()][];
+            if (sixD) dwDv = new double[effects.size()][];
+            for (int k = 0; k < effects.size(); k++) {
+                int size = effStart[k + 1] - effStart[k];
+                double[] v = Arrays.copyOfRange(full, effStart[k], effStart[k + 1]);
+                dpDv[k] = jac == null ? null : new double[3 * size];
+                effects.get(k).positionDelta(v, row, pb.clone(), dp, dpDv[k], dpDpoint);
                 if (sixD) {
-                    Se3.rotMul(rib, rbt, rpred);
-                    double[] oq = row.orientation();
-                    Se3.rotFromQuaternion(oq[0], oq[1], oq[2], oq[3], rmeas);
-                    Se3.rotMulT(rpred, rmeas, err);
-                    Se3.rotLog(err, e, 0);
-                    rr[r0 + 3] = e[0] * wr;
-                    rr[r0 + 4] = e[1] * wr;
-                    rr[r0 + 5] = e[2] * wr;
+                    dwDv[k] = jac == null ? null : new double[3 * size];
+                    effects.get(k).rotationDelta(v, row, pb, dw, dwDv[k]);
                 }
-                if (jac == null) continue;
-                // geometry: R_ib * (∂p_base/∂k), R_ib * (∂ω_base/∂k)
-                for (int c = 0; c < nGeo; c++) {
-                    double a0 = jg[c], a1 = jg[nGeo + c], a2 = jg[2 * nGeo + c];
-                    jj[r0 * nFull + c] = (rib[0] * a0 + rib[1] * a1 + rib[2] * a2) * wp;
-                    jj[(r0 + 1) * nFull + c] = (rib[3] * a0 + rib[4] * a1 + rib[5] * a2) * wp;
-                    jj[(r0 + 2) * nFull + c] = (rib[6] * a0 + rib[7] * a1 + rib[8] * a2) * wp;
-                    if (sixD) {
-                        double b0 = jg[3 * nGeo + c], b1 = jg[4 * nGeo + c], b2 = jg[5 * nGeo + c];
-                        jj[(r0 + 3) * nFull + c] = (rib[0] * b0 + rib[1] * b1 + rib[2] * b2) * wr;
-                        jj[(r0 + 4) * nFull + c] = (rib[3] * b0 + rib[4] * b1 + rib[5] * b2) * wr;
-                        jj[(r0 + 5) * nFull + c] = (rib[6] * b0 + rib[7] * b1 + rib[8] * b2) * wr;
-                    }
+            }
+            if (sixD && (dw[0] != 0 || dw[1] != 0 || dw[2] != 0)) { // the measured frame turned in base coordinates
+                Se3.rotExp(dw[0], dw[1], dw[2], f.turn);
+                Se3.rotMul(f.turn, rbt, f.turned);
+                System.arraycopy(f.turned, 0, rbt, 0, 9);
+            }
+            System.arraycopy(pb, 0, pbKin, 0, 3);
+            pb[0] += dp[0]; pb[1] += dp[1]; pb[2] += dp[2];
+        }
+        double px = rib[0] * pb[0] + rib[1] * pb[1] + rib[2] * pb[2] + tib[0];
+        double py = rib[3] * pb[0] + rib[4] * pb[1] + rib[5] * pb[2] + tib[1];
+        double pz = rib[6] * pb[0] + rib[7] * pb[1] + rib[8] * pb[2] + tib[2];
+        double ux = 0, uy = 0, uz = 0;
+        if (distance) {
+            // d_pred = |p - a|; residual (d_pred - d) / σ; ∂d_pred/∂p = uᵀ, u the unit vector from the anchor.
+            double[] anchor = f.anchor;
+            double dx = px - anchor[0], dy = py - anchor[1], dz = pz - anchor[2];
+            double n = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (n > 0) { ux = dx / n; uy = dy / n; uz = dz / n; }
+            res[i] = (n - row.distance()) * wp;
+        } else {
+            var meas = row.point(pt);
+            rr[r0] = (px - meas.x()) * wp;
+            rr[r0 + 1] = (py - meas.y()) * wp;
+            rr[r0 + 2] = (pz - meas.z()) * wp;
+        }
+        if (sixD) {
+            Se3.rotMul(rib, rbt, f.rpred);
+            double[] oq = row.orientation();
+            Se3.rotFromQuaternion(oq[0], oq[1], oq[2], oq[3], f.rmeas);
+            Se3.rotMulT(f.rpred, f.rmeas, f.err);
+            Se3.rotLog(f.err, f.e, 0);
+            rr[r0 + 3] = f.e[0] * wr;
+            rr[r0 + 4] = f.e[1] * wr;
+            rr[r0 + 5] = f.e[2] * wr;
+        }
+        if (jac == null) return;
+        jacobianRows(f, pt, qEff, dThetaDv, dpDv, dwDv, dpDpoint, px, py, pz, jj, r0);
+        if (distance) {
+            for (int c = 0; c < nFull; c++)
+                jac[i * nFull + c] = ux * jac3[c] + uy * jac3[nFull + c] + uz * jac3[2 * nFull + c];
+            jac[i * nFull + instOff] = -ux * wp;
+            jac[i * nFull + instOff + 1] = -uy * wp;
+            jac[i * nFull + instOff + 2] = -uz * wp;
+        }
+    }
+
+    /**
+     * The Jacobian rows of one point from row {@code r0} of {@code jj}: geometry (the pose Jacobian {@link #jg}
+     * just evaluated), tool, instrument and effects, the rotation rows made exact for the residual's logarithm.
+     * ({@code px, py, pz}: the predicted point in instrument axes.)
+     */
+    private void jacobianRows(Frames f, int pt, double[] qEff, double[][] dThetaDv, double[][] dpDv, double[][] dwDv, double[] dpDpoint,
+                              double px, double py, double pz, double[] jj, int r0) {
+        double[] rib = f.rib, tib = f.tib;
+        double wp = f.wp, wr = f.wr;
+        // geometry: R_ib * (∂p_base/∂k), R_ib * (∂ω_base/∂k)
+        for (int c = 0; c < nGeo; c++) {
+            double a0 = jg[c], a1 = jg[nGeo + c], a2 = jg[2 * nGeo + c];
+            jj[r0 * nFull + c] = (rib[0] * a0 + rib[1] * a1 + rib[2] * a2) * wp;
+            jj[(r0 + 1) * nFull + c] = (rib[3] * a0 + rib[4] * a1 + rib[5] * a2) * wp;
+            jj[(r0 + 2) * nFull + c] = (rib[6] * a0 + rib[7] * a1 + rib[8] * a2) * wp;
+            if (sixD) {
+                double b0 = jg[3 * nGeo + c], b1 = jg[4 * nGeo + c], b2 = jg[5 * nGeo + c];
+                jj[(r0 + 3) * nFull + c] = (rib[0] * b0 + rib[1] * b1 + rib[2] * b2) * wr;
+                jj[(r0 + 4) * nFull + c] = (rib[3] * b0 + rib[4] * b1 + rib[5] * b2) * wr;
+                jj[(r0 + 5) * nFull + c] = (rib[6] * b0 + rib[7] * b1 + rib[8] * b2) * wr;
+            }
+        }
+        // tool point: ∂p/∂t_ft = R_ib R_bf; tool rotation (6-D): ∂ε/∂φ = R_ib R_bf
+        double[] rib_rbf = f.rib_rbf;
+        Se3.rotMul(rib, f.rbf, rib_rbf);
+        int tc = toolOff + 3 * pt;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                jj[(r0 + a) * nFull + tc + b] = rib_rbf[3 * a + b] * wp;
+                if (sixD) jj[(r0 + 3 + a) * nFull + toolOff + 3 + b] = rib_rbf[3 * a + b] * wr;
+            }
+        if (instrument) {
+            double qx = px - tib[0], qy = py - tib[1], qz = pz - tib[2]; // R_ib p_base
+            for (int a = 0; a < 3; a++) jj[(r0 + a) * nFull + instOff + a] = wp;
+            // ∂(Exp(δ) v)/∂δ = -[v]x
+            int c = instOff + 3;
+            jj[r0 * nFull + c + 1] = qz * wp;       jj[r0 * nFull + c + 2] = -qy * wp;
+            jj[(r0 + 1) * nFull + c] = -qz * wp;    jj[(r0 + 1) * nFull + c + 2] = qx * wp;
+            jj[(r0 + 2) * nFull + c] = qy * wp;     jj[(r0 + 2) * nFull + c + 1] = -qx * wp;
+            if (sixD) for (int a = 0; a < 3; a++) jj[(r0 + 3 + a) * nFull + c + a] = wr;
+        }
+        if (!effects.isEmpty()) {
+            // A position term that depends on the point itself scales every column that moves the point.
+            double[] g = dpDpoint;
+            boolean any = false;
+            for (double v : g) any |= v != 0;
+            if (any) {
+                double[] a = new double[9], t = new double[9], ribT = new double[9];
+                for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
+                // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
+                Se3.rotMul(rib, a, t);
+                Se3.rotMulT(t, rib, ribT);
+                int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
+                double[] col = new double[3];
+                for (int cIdx = 0; cIdx < effOff; cIdx++) {
+                    if (cIdx >= instStart && cIdx < instEnd) continue;
+                    for (int u = 0; u < 3; u++) col[u] = jj[(r0 + u) * nFull + cIdx];
+                    for (int u = 0; u < 3; u++)
+                        jj[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
                 }
-                // tool point: ∂p/∂t_ft = R_ib R_bf; tool rotation (6-D): ∂ε/∂φ = R_ib R_bf
-                Se3.rotMul(rib, rbf, rib_rbf);
-                int tc = toolOff + 3 * pt;
-                for (int a = 0; a < 3; a++)
-                    for (int b = 0; b < 3; b++) {
-                        jj[(r0 + a) * nFull + tc + b] = rib_rbf[3 * a + b] * wp;
-                        if (sixD) jj[(r0 + 3 + a) * nFull + toolOff + 3 + b] = rib_rbf[3 * a + b] * wr;
-                    }
-                if (instrument) {
-                    double qx = px - tib[0], qy = py - tib[1], qz = pz - tib[2]; // R_ib p_base
-                    for (int a = 0; a < 3; a++) jj[(r0 + a) * nFull + instOff + a] = wp;
-                    // ∂(Exp(δ) v)/∂δ = -[v]x
-                    int c = instOff + 3;
-                    jj[r0 * nFull + c + 1] = qz * wp;       jj[r0 * nFull + c + 2] = -qy * wp;
-                    jj[(r0 + 1) * nFull + c] = -qz * wp;    jj[(r0 + 1) * nFull + c + 2] = qx * wp;
-                    jj[(r0 + 2) * nFull + c] = qy * wp;     jj[(r0 + 2) * nFull + c + 1] = -qx * wp;
-                    if (sixD) for (int a = 0; a < 3; a++) jj[(r0 + 3 + a) * nFull + c + a] = wr;
-                }
-                if (!effects.isEmpty()) {
-                    // A position term that depends on the point itself scales every column that moves the point.
-                    double[] g = dpDpoint;
-                    boolean any = false;
-                    for (double v : g) any |= v != 0;
-                    if (any) {
-                        double[] a = new double[9], t = new double[9], ribT = new double[9];
-                        for (int u = 0; u < 9; u++) a[u] = g[u] + (u % 4 == 0 ? 1 : 0);
-                        // base-frame columns were mapped by R_ib; in instrument axes I + G becomes R_ib (I + G) R_ibᵀ
-                        Se3.rotMul(rib, a, t);
-                        Se3.rotMulT(t, rib, ribT);
-                        int instStart = instrument ? instOff : nFull, instEnd = instrument ? instOff + 6 : nFull;
-                        double[] col = new double[3];
-                        for (int cIdx = 0; cIdx < effOff; cIdx++) {
-                            if (cIdx >= instStart && cIdx < instEnd) continue;
-                            for (int u = 0; u < 3; u++) col[u] = jj[(r0 + u) * nFull + cIdx];
-                            for (int u = 0; u < 3; u++)
-                                jj[(r0 + u) * nFull + cIdx] = ribT[3 * u] * col[0] + ribT[3 * u + 1] * col[1] + ribT[3 * u + 2] * col[2];
-                        }
-                    }
-                    effectColumns(mdl, qEff, flangeTtools[pt], pbKin, rib, dThetaDv, dpDv, dwDv, g, jj, r0, wp, wr);
-                }
-                if (sixD) {
-                    // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
-                    double[] jinv = new double[9];
-                    Se3.rotLeftJacobianInverse(e, jinv);
-                    double[] col = new double[3];
-                    for (int cIdx = 0; cIdx < nFull; cIdx++) {
-                        for (int u = 0; u < 3; u++) col[u] = jj[(r0 + 3 + u) * nFull + cIdx];
-                        for (int u = 0; u < 3; u++)
-                            jj[(r0 + 3 + u) * nFull + cIdx] = jinv[3 * u] * col[0] + jinv[3 * u + 1] * col[1] + jinv[3 * u + 2] * col[2];
-                    }
-                }
-                if (distance) {
-                    for (int c = 0; c < nFull; c++)
-                        jac[i * nFull + c] = ux * jac3[c] + uy * jac3[nFull + c] + uz * jac3[2 * nFull + c];
-                    jac[i * nFull + instOff] = -ux * wp;
-                    jac[i * nFull + instOff + 1] = -uy * wp;
-                    jac[i * nFull + instOff + 2] = -uz * wp;
-                }
+            }
+            effectColumns(f.mdl, qEff, f.flangeTtools[pt], f.pbKin, rib, dThetaDv, dpDv, dwDv, g, jj, r0, wp, wr);
+        }
+        if (sixD) {
+            // Exact rotation rows: Log(Exp(ε) E) = e + J_l⁻¹(e) ε + O(ε²).
+            double[] jinv = new double[9];
+            Se3.rotLeftJacobianInverse(f.e, jinv);
+            double[] col = new double[3];
+            for (int cIdx = 0; cIdx < nFull; cIdx++) {
+                for (int u = 0; u < 3; u++) col[u] = jj[(r0 + 3 + u) * nFull + cIdx];
+                for (int u = 0; u < 3; u++)
+                    jj[(r0 + 3 + u) * nFull + cIdx] = jinv[3 * u] * col[0] + jinv[3 * u + 1] * col[1] + jinv[3 * u + 2] * col[2];
             }
         }
     }
