@@ -18,6 +18,7 @@ final class Plots {
      * Angles in millidegrees, strains in ppm.
      */
     static Diagnosis.Plot partialResidual(Diagnoser.Tester t, Effect e, double[] v) {
+        if (e.kind() == Effect.Kind.BASE_TURN && t.ends == 1) return turn(t, e, v);
         if (e.target() == Effect.Target.POSITION) return alongDisplacement(t, e, v);
         int rpp = t.rpp, poses = t.m / rpp, dof = t.dof;
         // A distance between two poses is put at the pose that carries more of the effect's change
@@ -203,6 +204,77 @@ final class Plots {
         }
         return new Diagnosis.Plot(xLabel(e), d == 1 ? "partial residual of the distance along the effect's change (mm)"
                 : "partial residual along the effect's displacement (mm)", x, y, fx, fy, null);
+    }
+
+    /**
+     * A turn of the base or the instrument ({@link Effect#baseTurn}) as its angle about the fitted
+     * turn's main axis â (the leading eigenvector of Σ (ω_i − ω̄)(ω_i − ω̄)ᵀ over the poses, signed so that the
+     * turn grows over the range) against time or temperature, from its value at the start of the
+     * range (a constant turn is the geometry's): the fitted angle θ(u) = ω(u)·â as the curve, and per pose the partial residual θ_i − d_iᵀ r_i / ‖d_i‖², with d_i the
+     * pose's residual rows' sensitivity to a further turn about â (the B-spline's functions sum to 1,
+     * so that is the sum of the turn's columns weighted by â). The partial residual along the
+     * displacement would mix each pose's lever arm into the size; this shows the tilt growing. Poses
+     * whose point barely moves with such a turn (‖d_i‖ below 0.3 x the median) are left out. Millidegrees.
+     */
+    static Diagnosis.Plot turn(Diagnoser.Tester t, Effect e, double[] v) {
+        int k = e.size(), nb = e.basisCount(), poses = t.m / t.rpp, rpp = t.rpp;
+        double[][] w = new double[poses][];
+        double[] mm = new double[9], mean = new double[3];
+        for (int i = 0; i < poses; i++) {
+            w[i] = e.rotation(v, t.w.rows.get(i).q(), t.w.conditions.get(i)).toArray();
+            for (int a = 0; a < 3; a++) mean[a] += w[i][a] / poses;
+        }
+        // the axis of the turn's change: a constant turn is the geometry's, and the spline's constant part is whatever is left of it
+        for (int i = 0; i < poses; i++)
+            for (int a = 0; a < 3; a++) for (int b = 0; b < 3; b++) mm[3 * a + b] += (w[i][a] - mean[a]) * (w[i][b] - mean[b]);
+        double[] axis = {1, 1, 1};
+        for (int it = 0; it < 100; it++) { // power iteration: mm is symmetric and positive semi-definite
+            double[] n = new double[3];
+            for (int a = 0; a < 3; a++) for (int b = 0; b < 3; b++) n[a] += mm[3 * a + b] * axis[b];
+            double len = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            if (!(len > 0)) break;
+            for (int a = 0; a < 3; a++) axis[a] = n[a] / len;
+        }
+        // a constant turn is the geometry's (the fit holds it): angles from the start of the range
+        double start = turnAt(e, v, axis, e.rangeLo());
+        if (turnAt(e, v, axis, e.rangeHi()) < start) { for (int a = 0; a < 3; a++) axis[a] = -axis[a]; start = -start; }
+        double[] s = t.signature(e, t.w.conditions);
+        double[] d = new double[t.m], dn = new double[poses];
+        for (int row = 0; row < t.m; row++) {
+            for (int a = 0; a < 3; a++) for (int j = 0; j < nb; j++) d[row] += s[row * k + a * nb + j] * axis[a];
+            dn[row / rpp] += d[row] * d[row];
+        }
+        double[] sorted = dn.clone();
+        Arrays.sort(sorted);
+        double cut = 0.09 * sorted[poses / 2], unit = Math.toDegrees(1) * 1e3;
+        List<double[]> pts = new ArrayList<>();
+        for (int i = 0; i < poses; i++) {
+            if (!(dn[i] > cut) || dn[i] == 0) continue;
+            double proj = 0;
+            for (int row = i * rpp; row < (i + 1) * rpp; row++) proj += d[row] * t.fit.r[row];
+            double theta = w[i][0] * axis[0] + w[i][1] * axis[1] + w[i][2] * axis[2];
+            pts.add(new double[] {xOf(e, t.w.rows.get(i), t.w.conditions.get(i)), (theta - start - proj / dn[i]) * unit});
+        }
+        double[] x = new double[pts.size()], y = new double[pts.size()];
+        for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
+        int nc = 200;
+        double[] cx = new double[nc], cy = new double[nc];
+        for (int i = 0; i < nc; i++) {
+            cx[i] = e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (nc - 1);
+            cy[i] = (turnAt(e, v, axis, cx[i]) - start) * unit;
+        }
+        return new Diagnosis.Plot(xLabel(e), String.format(java.util.Locale.ROOT,
+                "turn about (%.2f, %.2f, %.2f), base axes (mdeg)", axis[0], axis[1], axis[2]), x, y, cx, cy, null);
+    }
+
+    /** A base turn's fitted angle about {@code axis} at the reading {@code u} (rad). */
+    private static double turnAt(Effect e, double[] v, double[] axis, double u) {
+        int nb = e.basisCount();
+        double[] b = new double[nb];
+        Effect.bspline(u, e.rangeLo(), e.rangeHi(), b);
+        double s = 0;
+        for (int a = 0; a < 3; a++) for (int j = 0; j < nb; j++) s += axis[a] * b[j] * v[a * nb + j];
+        return s;
     }
 
     /** Amplitude of harmonics 1..n of y against the angle x (deg), each fitted alone with a constant. */

@@ -280,6 +280,21 @@ class HeldOutFormsTest {
         assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.BASE_TURN), d.effects().toString());
         assertTrue(d.finalValidateRmsM() < 1.15 * Math.sqrt(3) * 0.02e-3 && d.finalValidateRmsM() < d.geometricValidateRmsM(),
                 "validation RMS " + d.geometricValidateRmsM() + " -> " + d.finalValidateRmsM());
+        // the evidence plot shows the floor's turn growing: the world's angle between the coolest and the warmest pose
+        Diagnosis.Plot p = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.BASE_TURN).findFirst().orElseThrow().plot();
+        double[] cx = p.curveX(), cy = p.curveY();
+        List<org.robopro.calibration.measurement.Measurement> all = new ArrayList<>(c.train().rows());
+        all.addAll(c.validation().rows());
+        all.sort(java.util.Comparator.comparingDouble(org.robopro.calibration.measurement.Measurement::tempC));
+        double t0 = all.get(0).timeS(), t1 = all.get(all.size() - 1).timeS();
+        double grown = Math.toDegrees(tilt.maxRad() * (Math.exp(-t0 / tilt.tauS()) - Math.exp(-t1 / tilt.tauS()))) * 1e3;
+        assertEquals(0, cy[0], 1e-12);
+        assertEquals(grown, cy[cy.length - 1], 0.25 * grown, p.yLabel() + " against " + p.xLabel() + " " + cx[0] + ".." + cx[cx.length - 1]);
+        // about the world's axis, 30 degrees from the base's x axis (the label gives the axis in base coordinates)
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\(([-0-9.]+), ([-0-9.]+), ([-0-9.]+)\\)").matcher(p.yLabel());
+        assertTrue(m.find(), p.yLabel());
+        double along = Double.parseDouble(m.group(1)) * Math.cos(tilt.azimuth()) + Double.parseDouble(m.group(2)) * Math.sin(tilt.azimuth());
+        assertTrue(along > 0.9, p.yLabel());
     }
 
     /**
