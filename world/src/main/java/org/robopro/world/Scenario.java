@@ -458,6 +458,13 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var t = tracker(r, false, false, true); return w -> w.withTracker(t); }, same()));
         c.add(s("outside: tracker distance and azimuth errors", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var t = tracker(r, true, true, true); return w -> w.withTracker(t); }, same()));
+        // the air the beam crosses warms 12-20 K against the reading of the tracker's weather station (a station shaded or in a draft
+        // while lamps, the sun or a furnace warm the hall)
+        c.add(s("outside: the tracker's air compensation drifts as the hall warms", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    var t = tracker(r, false, false, false).withAirWarming(uniform(r, 12, 20), uniform(r, 1200, 2400));
+                    return w -> w.withTracker(t);
+                }, same()));
         c.add(s("outside: base rocks on its foundation above an overturning moment", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     // The file's arm weighs 86 kg (±30 %) and tips a 0.25-0.35 m foot edge by at most about 500 N·m with 10 kg:

@@ -247,11 +247,35 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      *     eccentricity parameters; "Laser trackers for large-scale dimensional metrology: a review",
      *     Precision Engineering 44 (2016) 13-28). The point moves tangentially by rho times the
      *     angle error.</li>
+     * <li>air compensation: the distance meter counts wavelengths in air and turns them into a
+     *     length with the air's refractive index, which it computes from its weather station; a
+     *     station that lags the hall's air as the hall warms scales every distance by the index's
+     *     error. The group index of air falls by about 0.93·10⁻⁶ per kelvin near 20 °C and 1013 hPa
+     *     (Edlén's equation as revised by K. P. Birch and M. J. Downs, Metrologia 30 (1993) 155-162
+     *     and 31 (1994) 315-316). Here the air the beam crosses warms by {@code airWarmK}
+     *     (1 − exp(−t / {@code airTauS})) over the campaign while the station reads the start's, so
+     *     rho' = rho (1 + rangeScale + 0.93·10⁻⁶ · that warming) (the index read too high by it: the
+     *     distance comes out long).</li>
      * </ul>
      * Orientation (6-D) is read by other means and is left as it is. Angles rad, lengths m.
      */
     public record Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
-                          int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase) {
+                          int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase,
+                          double airWarmK, double airTauS) {
+        /** The refractive index of air against its temperature near 20 °C and 1013 hPa, 1/K (Birch and Downs 1993). */
+        public static final double INDEX_PER_K = -0.93e-6;
+
+        /** A tracker whose air compensation holds (no warming of the air against its station). */
+        public Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
+                       int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase) {
+            this(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, 0, 1);
+        }
+
+        /** This tracker with the air the beam crosses warming by {@code warmK} with time constant {@code tauS} against its station. */
+        public Tracker withAirWarming(double warmK, double tauS) {
+            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, warmK, tauS);
+        }
+
         public Tracker {
             azK = azK.clone();
             azAmp = azAmp.clone();
@@ -270,8 +294,18 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         @Override public double[] elAmp() { return elAmp.clone(); }
         @Override public double[] elPhase() { return elPhase.clone(); }
 
-        /** The range reading of a true range rho, m. */
+        /** The range reading of a true range rho, m, with the air as the station reads it. */
         public double range(double rho) { return rho * (1 + rangeScale) + cyclicM * Math.sin(2 * Math.PI * rho / periodM + cyclicPhase); }
+
+        /**
+         * The range reading of a true range rho at {@code timeS} (unknown: the station's air): the
+         * index the station computes exceeds the true one by the warming times |dn/dT|, and the
+         * distance, the wavelengths counted times the wavelength in air the station assumes, by as much.
+         */
+        public double range(double rho, double timeS) {
+            double warm = Double.isFinite(timeS) && airWarmK != 0 ? airWarmK * (1 - Math.exp(-timeS / airTauS)) : 0;
+            return range(rho) + rho * -INDEX_PER_K * warm;
+        }
 
         /** The azimuth reading of a true azimuth, rad. */
         public double azimuth(double az) { return az + series(azK, azAmp, azPhase, az); }
@@ -280,9 +314,12 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         public double elevation(double el) { return el + series(elK, elAmp, elPhase, el); }
 
         /** The position the tracker reports for a true position x (its frame, m). */
-        public double[] read(double[] x) {
+        public double[] read(double[] x) { return read(x, Double.NaN); }
+
+        /** The position the tracker reports for a true position x (its frame, m) at {@code timeS}. */
+        public double[] read(double[] x, double timeS) {
             double h = Math.hypot(x[0], x[1]), rho = Rigid.norm(x);
-            double az = azimuth(Math.atan2(x[1], x[0])), el = elevation(Math.atan2(x[2], h)), r = range(rho);
+            double az = azimuth(Math.atan2(x[1], x[0])), el = elevation(Math.atan2(x[2], h)), r = range(rho, timeS);
             return new double[] {r * Math.cos(el) * Math.cos(az), r * Math.cos(el) * Math.sin(az), r * Math.sin(el)};
         }
 
@@ -517,7 +554,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             inst = new Rigid(inst.r(), Rigid.plus(inst.p(), drift));
         }
         Rigid seen = inst.times(tool);
-        return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p()));
+        return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p(), timeS));
     }
 
     /**

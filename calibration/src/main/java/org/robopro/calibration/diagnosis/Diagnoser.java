@@ -108,6 +108,11 @@ public final class Diagnoser {
      * angle error a few arc-seconds; far beyond that the instrument is broken, not erring.
      */
     static final double MAX_INSTRUMENT_RANGE_M = 0.5e-3, MAX_INSTRUMENT_ANGLE_RAD = 50 / 3600.0 * Math.PI / 180;
+    /**
+     * Nor an instrument whose distances change their scale by more than this over a campaign: 50 ppm
+     * is the air's index after a 50 K or a 180 hPa change (Edlén; see {@link Effect#instrumentScale}).
+     */
+    static final double MAX_INSTRUMENT_SCALE = 50e-6;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     /**
      * Bound of one link's growth per kelvin of the reading, 1/K: a link near its drives warms more
@@ -1193,6 +1198,7 @@ public final class Diagnoser {
         w.pauses = hasTime ? Pauses.of(history) : null;
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null, w.pauses))
             if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
+        family.addAll(instrumentScales(geo, history, hasTime, hasTemp));
         if (manyOutliers)
             notes.add(String.format(Locale.ROOT, "%d poses lie beyond 5 robust sigmas of the geometric fit, more than %s: too many "
                     + "to be bad measurements, so ", beyondGeo, 0.05 * train.size() > MAX_GROSS ? "5 % of them" : "the "
@@ -2056,6 +2062,26 @@ public final class Diagnoser {
                 + "the reading's temperature. Time constants tried: %s s; record temperatures on the arm's links to measure them",
                 which, s.press(), s.pressNone(), String.join(", ", Arrays.stream(ThermalLag.TAUS).skip(1)
                         .mapToObj(x -> String.format(Locale.ROOT, "%.0f", x)).toList()));
+    }
+
+    /**
+     * The instrument's distances scaling with time and with temperature ({@link Effect#instrumentScale}),
+     * over the readings of the whole file: where the positions are measured in the instrument's frame
+     * (points, not distances), and the reading is known on every pose.
+     */
+    static List<Effect> instrumentScales(CalibrationResult geo, List<Measurement> history, boolean hasTime, boolean hasTemp) {
+        List<Effect> out = new ArrayList<>();
+        if (geo.instrumentTbase() == null || geo.pairs() || geo.distance()) return out;
+        for (Effect.Along a : new Effect.Along[] {Effect.Along.TIME, Effect.Along.TEMPERATURE}) {
+            if (a == Effect.Along.TIME ? !hasTime : !hasTemp) continue;
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (Measurement m : history) {
+                double u = a == Effect.Along.TIME ? m.timeS() : m.tempC();
+                if (Double.isFinite(u)) { lo = Math.min(lo, u); hi = Math.max(hi, u); }
+            }
+            if (hi > lo) out.add(Effect.instrumentScale(a, geo.instrumentTbase(), lo, hi));
+        }
+        return out;
     }
 
     /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
@@ -3114,7 +3140,7 @@ public final class Diagnoser {
                 }
                 case DIRECTION -> { if (k == Effect.Kind.BACKLASH && e.joint() == f.probe.joint) return e; }
                 case TIME, TEMPERATURE -> {
-                    if (thermal || k == Effect.Kind.POINT_SMOOTH && f.probe.joint < 0) return e;
+                    if (thermal || (k == Effect.Kind.POINT_SMOOTH || k == Effect.Kind.INSTRUMENT_SCALE) && f.probe.joint < 0) return e;
                     if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
                 }
                 case TIME_STEP -> {
@@ -4971,6 +4997,12 @@ public final class Diagnoser {
                 double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
                 c.plausible = d < MAX_TARGET_STEP_M;
                 c.plausibility = String.format(Locale.ROOT, "the target's move %.4f mm < %.0f mm", d * 1e3, MAX_TARGET_STEP_M * 1e3);
+            }
+            case INSTRUMENT_SCALE -> {
+                // the scale's change over the readings (its constant part is the geometry's); a B-spline lies within its coefficients
+                double lo = Arrays.stream(v).min().orElse(0), hi = Arrays.stream(v).max().orElse(0);
+                c.plausible = hi - lo < MAX_INSTRUMENT_SCALE;
+                c.plausibility = String.format(Locale.ROOT, "the scale's change within %.2f ppm < %.0f ppm", 1e6 * (hi - lo), 1e6 * MAX_INSTRUMENT_SCALE);
             }
             case BASE_TURN -> {
                 // a B-spline's curve lies within its coefficients' range: the largest turn bounds the tilt

@@ -72,6 +72,8 @@ public final class Effect {
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
+        INSTRUMENT_SCALE("instrument-scale", "The measuring instrument's distances scaling with time or temperature (its air "
+                + "compensation), not the robot, of no known family"),
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
         AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family"),
         TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family"),
@@ -599,6 +601,32 @@ public final class Effect {
     }
 
     /**
+     * The instrument's distances scale with time or temperature: the measured point moves along
+     * the line of sight by s(u)·r, r its distance from the instrument, s a cubic B-spline
+     * ({@link #POINT_BASIS} functions) of u over [lo, hi]. A laser tracker's distance meter turns
+     * a count of wavelengths into a length through the air's refractive index, which it computes
+     * from a weather station's air temperature, pressure and humidity (Edlén's equation): near
+     * room conditions the index falls by about 0.93 ppm per kelvin and rises by about 0.27 ppm per
+     * hectopascal (Muralikrishnan et al., Precision Engineering 44 (2016) 13, §3.1; Birch &amp;
+     * Downs, Metrologia 30 (1993) 155), so a station that reads the air wrong, or air that changes
+     * between the station and the beam, scales every distance. Over a campaign the scale drifts
+     * with the hall's air; its constant part is the geometry's (a robot scaled about the
+     * instrument is a robot of other lengths). Scaled about the instrument, not the robot's base:
+     * the robot growing (a uniform thermal expansion) and the instrument moving toward it hold it
+     * together, neither alone. Computed through {@code instrumentTbase} (the geometric fit's), as
+     * {@link #instrumentReading}; an unknown time is taken as the end of the campaign, an unknown
+     * temperature contributes nothing.
+     */
+    public static Effect instrumentScale(Along along, Pose instrumentTbase, double lo, double hi) {
+        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a distance scale drifts with time or temperature");
+        if (!(hi > lo)) throw new IllegalArgumentException("instrument scale range " + lo + ".." + hi);
+        Effect e = new Effect(Kind.INSTRUMENT_SCALE, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, POINT_BASIS);
+        e.along = along;
+        e.instrument = instrumentTbase;
+        return e;
+    }
+
+    /**
      * A cyclic error of the instrument's {@code sight} reading, a·sin(2πu/period) + b·cos(2πu/period)
      * of the reading u (a distance meter that measures a phase repeats its error with the distance:
      * the cyclic, or periodic, error of phase-measuring distance meters; Muralikrishnan et al. 2016,
@@ -1061,8 +1089,8 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.BASE_TILT
-                || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.TARGET_INCIDENCE;
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
+                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.TARGET_INCIDENCE;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -1072,7 +1100,7 @@ public final class Effect {
     }
 
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
-    public boolean ofInstrument() { return kind == Kind.INSTRUMENT || kind == Kind.TARGET_INCIDENCE; }
+    public boolean ofInstrument() { return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.TARGET_INCIDENCE; }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
     public int basisCount() { return nBasis; }
@@ -1229,7 +1257,8 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
+                 TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -1269,7 +1298,7 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
-            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, BASE_TILT -> nBasis;
+            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case TOOL_SAG -> 9;
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
@@ -1309,6 +1338,7 @@ public final class Effect {
                 out.add("dx"); out.add("dy"); out.add("dz");
             }
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
+            case INSTRUMENT_SCALE -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); out.add("slide"); }
@@ -1362,6 +1392,7 @@ public final class Effect {
             case POINT_SMOOTH, TARGET_STEP, TOOL_SAG, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
+            case INSTRUMENT_SCALE -> "1";
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
             case LINK_SAG -> "m";
@@ -1408,7 +1439,7 @@ public final class Effect {
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
-            case POINT_SMOOTH, BASE_TURN -> kind.json + " (" + along.words + ")";
+            case POINT_SMOOTH, BASE_TURN, INSTRUMENT_SCALE -> kind.json + " (" + along.words + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
@@ -1528,7 +1559,8 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
+                 TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1571,6 +1603,17 @@ public final class Effect {
                 for (int a = 0; a < 3; a++) {
                     double da = instrument.rot(0, a) * d[0] + instrument.rot(1, a) * d[1] + instrument.rot(2, a) * d[2];
                     for (int i = 0; i < nBasis; i++) g3[a * k + i] = da * b[i];
+                }
+            }
+            case INSTRUMENT_SCALE -> {
+                // Δp = s(u) (p − o), o the instrument's origin: in base axes R_ibᵀ (s p_i) with p_i = R_ib p + t_ib
+                double u = reading(c);
+                if (!Double.isFinite(u)) break; // an unknown temperature contributes nothing
+                double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray(), b = new double[nBasis];
+                bspline(u, lo, hi, b);
+                for (int a = 0; a < 3; a++) {
+                    double ra = instrument.rot(0, a) * pi[0] + instrument.rot(1, a) * pi[1] + instrument.rot(2, a) * pi[2];
+                    for (int i = 0; i < nBasis; i++) g3[a * k + i] = ra * b[i];
                 }
             }
             case TARGET_STEP -> {
@@ -1667,6 +1710,24 @@ public final class Effect {
     private double reading(PoseConditions c) {
         if (along == Along.TEMPERATURE) return c.tempC();
         return Double.isFinite(c.timeS()) ? c.timeS() : hi;
+    }
+
+    /** An instrument scale's spline function {@code i} at c's reading (0 at an unknown temperature). */
+    private double scaleBasis(PoseConditions c, int i) {
+        double u = reading(c);
+        if (!Double.isFinite(u)) return 0;
+        double[] b = new double[nBasis];
+        bspline(u, lo, hi, b);
+        return b[i];
+    }
+
+    /** The scale of an instrument's distances at the reading {@code u} (time, s, or temperature, °C) under values {@code v}. */
+    public double scaleAt(double[] v, double u) {
+        double[] b = new double[nBasis];
+        bspline(u, lo, hi, b);
+        double s = 0;
+        for (int i = 0; i < nBasis; i++) s += b[i] * v[i];
+        return s;
     }
 
     /** A base turn's spline functions at c's reading; null at an unknown temperature. */
@@ -1814,6 +1875,11 @@ public final class Effect {
                         dp[a] += g3[a * k + col] * values[col];
                         if (dpDv != null) dpDv[a * k + col] = g3[a * k + col];
                     }
+                if (kind == Kind.INSTRUMENT_SCALE && dpDpoint != null) { // ∂(s (p − o))/∂p = s I
+                    double sc = 0;
+                    for (int col = 0; col < k; col++) sc += scaleBasis(c, col) * values[col];
+                    for (int a = 0; a < 3; a++) dpDpoint[4 * a] += sc;
+                }
                 if (kind == Kind.THERMAL_LINK && dpDpoint != null) {
                     // the last vector ends at the point: ∂/∂p of x α_tool (p − o_flange) = x α_tool I
                     int nl = links.length;
@@ -1854,6 +1920,7 @@ public final class Effect {
                 if (model != null) p.put("model_angle", 1.0);
             }
             case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
+            case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case AXIS_WOBBLE -> { }
             case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
@@ -1899,14 +1966,14 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, BASE_TILT, TOOL_SAG, TARGET_INCIDENCE -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, TOOL_SAG, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
         };
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
-        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN) && along == null)
+        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN || kind == Kind.INSTRUMENT_SCALE) && along == null)
             throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
         if (js.size() != need)
             throw new InputException(file, 0, 0, "effects.joints", d.effect() + " needs " + need + " joints, got " + js);
@@ -1969,6 +2036,11 @@ public final class Effect {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
                     throw new InputException(file, 0, 0, "effects.base-turn.parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
                 yield baseTurn(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
+            }
+            case INSTRUMENT_SCALE -> {
+                if (along != Along.TIME && along != Along.TEMPERATURE)
+                    throw new InputException(file, 0, 0, "effects.instrument-scale.parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
+                yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),

@@ -19,6 +19,7 @@ final class Plots {
      */
     static Diagnosis.Plot partialResidual(Diagnoser.Tester t, Effect e, double[] v) {
         if (e.kind() == Effect.Kind.BASE_TURN && t.ends == 1) return turn(t, e, v);
+        if (e.kind() == Effect.Kind.INSTRUMENT_SCALE && t.ends == 1) return scale(t, e, v);
         if (e.target() == Effect.Target.POSITION) return alongDisplacement(t, e, v);
         int rpp = t.rpp, poses = t.m / rpp, dof = t.dof;
         // A distance between two poses is put at the pose that carries more of the effect's change
@@ -100,7 +101,7 @@ final class Plots {
             case LINK_SAG -> "share of gravity across link " + (e.joint() + 1) + " (g)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
-            case ZERO_DRIFT, BASE_TURN -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
+            case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case BACKLASH -> e.buildsUp() ? "last move of joint " + (e.joint() + 1) + " before the pose, signed (deg)"
@@ -118,7 +119,7 @@ final class Plots {
             case SMOOTH -> Math.toDegrees(e.smoothVariable(row.q()));
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
-            case ZERO_DRIFT, BASE_TURN -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
+            case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
             case ZERO_STEP, TARGET_STEP -> c.timeS();
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
@@ -153,7 +154,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, TARGET_INCIDENCE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP -> Double.NaN;
@@ -265,6 +266,44 @@ final class Plots {
         }
         return new Diagnosis.Plot(xLabel(e), String.format(java.util.Locale.ROOT,
                 "turn about (%.2f, %.2f, %.2f), base axes (mdeg)", axis[0], axis[1], axis[2]), x, y, cx, cy, null);
+    }
+
+    /**
+     * The instrument's distance scale ({@link Effect#instrumentScale}) against time or temperature,
+     * from its value at the start of the range (a constant scale is the geometry's): the fitted
+     * scale as the curve, and per pose the partial residual s_i − d_iᵀ r_i / ‖d_i‖², d_i the pose's
+     * residual rows' sensitivity to a further scale (the sum of the effect's columns: its B-spline's
+     * functions sum to 1). Poses whose point barely moves with it (‖d_i‖ below 0.3 x the median) are
+     * left out. Parts per million.
+     */
+    static Diagnosis.Plot scale(Diagnoser.Tester t, Effect e, double[] v) {
+        int k = e.size(), poses = t.m / t.rpp, rpp = t.rpp;
+        double[] s = t.signature(e, t.w.conditions);
+        double[] d = new double[t.m], dn = new double[poses];
+        for (int row = 0; row < t.m; row++) {
+            for (int c = 0; c < k; c++) d[row] += s[row * k + c];
+            dn[row / rpp] += d[row] * d[row];
+        }
+        double[] sorted = dn.clone();
+        Arrays.sort(sorted);
+        double cut = 0.09 * sorted[poses / 2], start = e.scaleAt(v, e.rangeLo());
+        List<double[]> pts = new ArrayList<>();
+        for (int i = 0; i < poses; i++) {
+            double u = xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
+            if (!(dn[i] > cut) || !Double.isFinite(u)) continue;
+            double proj = 0;
+            for (int row = i * rpp; row < (i + 1) * rpp; row++) proj += d[row] * t.fit.r[row];
+            pts.add(new double[] {u, (e.scaleAt(v, u) - start - proj / dn[i]) * 1e6});
+        }
+        double[] x = new double[pts.size()], y = new double[pts.size()];
+        for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
+        int nc = 200;
+        double[] cx = new double[nc], cy = new double[nc];
+        for (int i = 0; i < nc; i++) {
+            cx[i] = e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (nc - 1);
+            cy[i] = (e.scaleAt(v, cx[i]) - start) * 1e6;
+        }
+        return new Diagnosis.Plot(xLabel(e), "scale of the instrument's distances (ppm)", x, y, cx, cy, null);
     }
 
     /** A base turn's fitted angle about {@code axis} at the reading {@code u} (rad). */

@@ -85,6 +85,7 @@ final class Words {
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
                     Math.toDegrees(Math.sqrt((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) / 4)));
             case BASE_TURN -> baseTurn(e, v);
+            case INSTRUMENT_SCALE -> instrumentScale(e, v, at);
             case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with %s (a smooth displacement in the "
                     + "base frame over %.4g..%.4g %s) and none of the known effects explains it; it is modelled as such so "
                     + "compensation can use it, but its cause is unknown (%s).", e.along() == Effect.Along.REACH
@@ -339,6 +340,20 @@ final class Words {
     }
 
     /** A base or instrument turning with time or temperature: its turn and move from one end of the range to the other. */
+    private static String instrumentScale(Effect e, double[] v, String at) {
+        boolean time = e.along() == Effect.Along.TIME;
+        double grown = e.scaleAt(v, e.rangeHi()) - e.scaleAt(v, e.rangeLo());
+        return String.format(Locale.ROOT, "The measured positions scale about the instrument with %s: from %.4g to %.4g %s its "
+                + "distances grow by %.2f ppm%s (the scale's change; a constant scale is the geometry's). No error of the robot "
+                + "explains it, and the robot growing with the instrument moving toward it would hold it only together: the "
+                + "instrument's distance meter, whose air compensation (the air's temperature, pressure and humidity, about 1 ppm "
+                + "per kelvin or per 3.7 hPa) drifted from the air the beam went through. It is modelled so that it does not bend "
+                + "the robot's fit, and left out of compensation: check the instrument's weather station against a calibrated "
+                + "thermometer and barometer at the beam's height, keep it out of drafts and sunlight, and re-measure a known "
+                + "length (a scale bar) every few poses.", time ? "time" : "temperature", e.rangeLo(), e.rangeHi(), e.along().unit,
+                1e6 * grown, at);
+    }
+
     private static String baseTurn(Effect e, double[] v) {
         int nb = e.basisCount();
         double[] b0 = new double[nb], b1 = new double[nb];

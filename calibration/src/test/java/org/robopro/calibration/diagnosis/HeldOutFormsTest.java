@@ -317,6 +317,36 @@ class HeldOutFormsTest {
     }
 
     /**
+     * The air the tracker's beam crosses warms against its weather station's reading, so every
+     * distance comes out long by 0.93 ppm per kelvin, more as the hall warms: the positions scale
+     * about the instrument with time. A robot growing uniformly and the instrument drifting toward
+     * it hold that only together, and before the instrument's scale was a candidate the world's
+     * draw was named `instrument-drift` and `thermal-expansion` (four of the scenario's first five
+     * draws were named `instrument-drift`). It is located as the instrument's, and its evidence plot
+     * grows by the world's scale over the readings.
+     */
+    @Test
+    void trackersAirCompensationDrifting_isTheInstrumentsScaleNotADriftOrAGrowth() {
+        WorldCampaigns.Sim c = WorldCampaigns.of(Scenario.named("outside: the tracker's air compensation drifts as the hall warms").trial(20261126));
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        Diagnosis.Finding f = d.effects().stream().filter(x -> x.effect().kind() == Effect.Kind.INSTRUMENT_SCALE).findFirst()
+                .orElseThrow(() -> new AssertionError(d.effects().toString()));
+        // the world's scale between the poses at the two ends of the effect's reading (time, or temperature: the poses' times)
+        List<org.robopro.calibration.measurement.Measurement> all = new ArrayList<>(c.train().rows());
+        all.addAll(c.validation().rows());
+        boolean time = f.effect().along() == Effect.Along.TIME;
+        all.sort(java.util.Comparator.comparingDouble(m -> time ? m.timeS() : m.tempC()));
+        WorldRobot.Tracker t = c.world().tracker();
+        java.util.function.DoubleUnaryOperator scale = ts -> -WorldRobot.Tracker.INDEX_PER_K * t.airWarmK() * (1 - Math.exp(-ts / t.airTauS()));
+        double grown = 1e6 * (scale.applyAsDouble(all.get(all.size() - 1).timeS()) - scale.applyAsDouble(all.get(0).timeS()));
+        double[] cy = f.plot().curveY();
+        assertEquals(grown, cy[cy.length - 1] - cy[0], 0.3 * grown, f.plot().yLabel());
+        assertTrue(d.finalValidateRmsM() < d.geometricValidateRmsM(),
+                "validation RMS " + d.geometricValidateRmsM() + " -> " + d.finalValidateRmsM());
+    }
+
+    /**
      * The same bump with 92 poses and no validation poses: the poses on its peak lie 5 to 33 robust
      * sigmas off the fallback that models the rest of it (a smooth curve or a window of joint 2's
      * reading, coarser than the bump), all of them within a band of joint 2's angle a few degrees
