@@ -211,14 +211,13 @@ final class Plots {
      * A turn of the base or the instrument ({@link Effect#baseTurn}) as its angle about the fitted
      * turn's main axis â (the leading eigenvector of Σ (ω_i − ω̄)(ω_i − ω̄)ᵀ over the poses, signed so that the
      * turn grows over the range) against time or temperature, from its value at the start of the
-     * range (a constant turn is the geometry's): the fitted angle θ(u) = ω(u)·â as the curve, and per pose the partial residual θ_i − d_iᵀ r_i / ‖d_i‖², with d_i the
-     * pose's residual rows' sensitivity to a further turn about â (the B-spline's functions sum to 1,
-     * so that is the sum of the turn's columns weighted by â). The partial residual along the
-     * displacement would mix each pose's lever arm into the size; this shows the tilt growing. Poses
-     * whose point barely moves with such a turn (‖d_i‖ below 0.3 x the median) are left out. Millidegrees.
+     * range (a constant turn is the geometry's): the fitted angle θ(u) = ω(u)·â as the curve, and per
+     * pose the partial residual along a further turn about â (the B-spline's functions sum to 1, so
+     * that is the sum of the turn's columns weighted by â). The partial residual along the
+     * displacement would mix each pose's lever arm into the size; this shows the tilt growing. Millidegrees.
      */
     static Diagnosis.Plot turn(Diagnoser.Tester t, Effect e, double[] v) {
-        int k = e.size(), nb = e.basisCount(), poses = t.m / t.rpp, rpp = t.rpp;
+        int k = e.size(), nb = e.basisCount(), poses = t.m / t.rpp;
         double[][] w = new double[poses][];
         double[] mm = new double[9], mean = new double[3];
         for (int i = 0; i < poses; i++) {
@@ -237,63 +236,52 @@ final class Plots {
             for (int a = 0; a < 3; a++) axis[a] = n[a] / len;
         }
         // a constant turn is the geometry's (the fit holds it): angles from the start of the range
-        double start = turnAt(e, v, axis, e.rangeLo());
-        if (turnAt(e, v, axis, e.rangeHi()) < start) { for (int a = 0; a < 3; a++) axis[a] = -axis[a]; start = -start; }
-        double[] s = t.signature(e, t.w.conditions);
-        double[] d = new double[t.m], dn = new double[poses];
-        for (int row = 0; row < t.m; row++) {
-            for (int a = 0; a < 3; a++) for (int j = 0; j < nb; j++) d[row] += s[row * k + a * nb + j] * axis[a];
-            dn[row / rpp] += d[row] * d[row];
-        }
-        double[] sorted = dn.clone();
-        Arrays.sort(sorted);
-        double cut = 0.09 * sorted[poses / 2], unit = Math.toDegrees(1) * 1e3;
-        List<double[]> pts = new ArrayList<>();
-        for (int i = 0; i < poses; i++) {
-            if (!(dn[i] > cut) || dn[i] == 0) continue;
-            double proj = 0;
-            for (int row = i * rpp; row < (i + 1) * rpp; row++) proj += d[row] * t.fit.r[row];
-            double theta = w[i][0] * axis[0] + w[i][1] * axis[1] + w[i][2] * axis[2];
-            pts.add(new double[] {xOf(e, t.w.rows.get(i), t.w.conditions.get(i)), (theta - start - proj / dn[i]) * unit});
-        }
-        double[] x = new double[pts.size()], y = new double[pts.size()];
-        for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
-        int nc = 200;
-        double[] cx = new double[nc], cy = new double[nc];
-        for (int i = 0; i < nc; i++) {
-            cx[i] = e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (nc - 1);
-            cy[i] = (turnAt(e, v, axis, cx[i]) - start) * unit;
-        }
-        return new Diagnosis.Plot(xLabel(e), String.format(java.util.Locale.ROOT,
-                "turn about (%.2f, %.2f, %.2f), base axes (mdeg)", axis[0], axis[1], axis[2]), x, y, cx, cy, null);
+        if (turnAt(e, v, axis, e.rangeHi()) < turnAt(e, v, axis, e.rangeLo())) for (int a = 0; a < 3; a++) axis[a] = -axis[a];
+        double[] cols = new double[k];
+        for (int a = 0; a < 3; a++) for (int j = 0; j < nb; j++) cols[a * nb + j] = axis[a];
+        return alongReading(t, e, cols, i -> w[i][0] * axis[0] + w[i][1] * axis[1] + w[i][2] * axis[2], u -> turnAt(e, v, axis, u),
+                Math.toDegrees(1) * 1e3, String.format(java.util.Locale.ROOT, "turn about (%.2f, %.2f, %.2f), base axes (mdeg)", axis[0], axis[1], axis[2]));
     }
 
     /**
      * The instrument's distance scale ({@link Effect#instrumentScale}) against time or temperature,
      * from its value at the start of the range (a constant scale is the geometry's): the fitted
-     * scale as the curve, and per pose the partial residual s_i − d_iᵀ r_i / ‖d_i‖², d_i the pose's
-     * residual rows' sensitivity to a further scale (the sum of the effect's columns: its B-spline's
-     * functions sum to 1). Poses whose point barely moves with it (‖d_i‖ below 0.3 x the median) are
-     * left out. Parts per million.
+     * scale as the curve, and per pose the partial residual along a further scale (the sum of the
+     * effect's columns: its B-spline's functions sum to 1). Parts per million.
      */
     static Diagnosis.Plot scale(Diagnoser.Tester t, Effect e, double[] v) {
+        double[] cols = new double[e.size()];
+        Arrays.fill(cols, 1);
+        return alongReading(t, e, cols, i -> e.scaleAt(v, xOf(e, t.w.rows.get(i), t.w.conditions.get(i))), u -> e.scaleAt(v, u), 1e6,
+                "scale of the instrument's distances (ppm)");
+    }
+
+    /**
+     * A quantity of an effect along time or temperature: per pose its fitted value f_i and the partial
+     * residual f_i − d_iᵀ r_i / ‖d_i‖², d_i the pose's residual rows' sensitivity to a further amount of
+     * it (the effect's signature columns weighted by {@code cols}); the fitted {@code curve} over the
+     * effect's range; both from the curve's value at the start of the range, times {@code unit}. Poses
+     * whose point barely moves with it (‖d_i‖ below 0.3 x the median) or whose reading is unknown are left out.
+     */
+    private static Diagnosis.Plot alongReading(Diagnoser.Tester t, Effect e, double[] cols, java.util.function.IntToDoubleFunction fitted,
+                                               java.util.function.DoubleUnaryOperator curve, double unit, String yLabel) {
         int k = e.size(), poses = t.m / t.rpp, rpp = t.rpp;
         double[] s = t.signature(e, t.w.conditions);
         double[] d = new double[t.m], dn = new double[poses];
         for (int row = 0; row < t.m; row++) {
-            for (int c = 0; c < k; c++) d[row] += s[row * k + c];
+            for (int c = 0; c < k; c++) d[row] += s[row * k + c] * cols[c];
             dn[row / rpp] += d[row] * d[row];
         }
         double[] sorted = dn.clone();
         Arrays.sort(sorted);
-        double cut = 0.09 * sorted[poses / 2], start = e.scaleAt(v, e.rangeLo());
+        double cut = 0.09 * sorted[poses / 2], start = curve.applyAsDouble(e.rangeLo());
         List<double[]> pts = new ArrayList<>();
         for (int i = 0; i < poses; i++) {
             double u = xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
             if (!(dn[i] > cut) || !Double.isFinite(u)) continue;
             double proj = 0;
             for (int row = i * rpp; row < (i + 1) * rpp; row++) proj += d[row] * t.fit.r[row];
-            pts.add(new double[] {u, (e.scaleAt(v, u) - start - proj / dn[i]) * 1e6});
+            pts.add(new double[] {u, (fitted.applyAsDouble(i) - start - proj / dn[i]) * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
@@ -301,9 +289,9 @@ final class Plots {
         double[] cx = new double[nc], cy = new double[nc];
         for (int i = 0; i < nc; i++) {
             cx[i] = e.rangeLo() + (e.rangeHi() - e.rangeLo()) * i / (nc - 1);
-            cy[i] = (e.scaleAt(v, cx[i]) - start) * 1e6;
+            cy[i] = (curve.applyAsDouble(cx[i]) - start) * unit;
         }
-        return new Diagnosis.Plot(xLabel(e), "scale of the instrument's distances (ppm)", x, y, cx, cy, null);
+        return new Diagnosis.Plot(xLabel(e), yLabel, x, y, cx, cy, null);
     }
 
     /** A base turn's fitted angle about {@code axis} at the reading {@code u} (rad). */
