@@ -121,4 +121,40 @@ class InstrumentErrorsTest {
         Effect.bspline(n, 2, 4.5, b);
         for (int a = 0; a < 3; a++) for (int i = 0; i < 4; i++) assertEquals(los[a] / n * b[i], g[a * 4 + i], 1e-12);
     }
+
+    /**
+     * The instrument's distance scale moves a point along its line of sight in proportion to its
+     * distance from the instrument: a point at the instrument does not move, one twice as far moves
+     * twice as much the same way, and a scale that grows with time moves a point more later. It is
+     * the instrument's, not the robot's pose, and the robot file keeps it.
+     */
+    @Test
+    void instrumentScaleIsAboutTheInstrumentNotTheRobotsAndSurvivesTheRobotFile() {
+        var desc = RobotLibrary.shipped("irb2000");
+        var model = org.robopro.kinematics.KinematicModel.build(desc);
+        // instrument_T_base: the base's origin 3 m in front of the instrument, a little off its axes
+        var inst = org.robopro.kinematics.Pose.translation(3, 0.2, -0.5);
+        Effect e = Effect.instrumentScale(Effect.Along.TIME, inst, 0, 3600);
+        double[] flat = {6e-6, 6e-6, 6e-6, 6e-6}, v = {0, 4e-6, 8e-6, 12e-6};
+        ExtendedModel ext = new ExtendedModel(model, List.of(new Effect.Term(e, v)));
+        double[] q = {0.3, 0.2, -0.1, 0.5, 0.4, 0.2};
+        var late = new org.robopro.calibration.PoseConditions(null, 3600, Double.NaN, Double.NaN);
+        var early = new org.robopro.calibration.PoseConditions(null, 0, Double.NaN, Double.NaN);
+        assertEquals(0, ext.flange(q, late).distanceTo(model.flange(q)), 1e-15);
+        Vec3 atInstrument = new Vec3(-3, -0.2, 0.5), near = new Vec3(-1, 0, 0), far = new Vec3(1, 0.2, -0.5);
+        assertEquals(0, e.displacement(flat, q, late, atInstrument).norm(), 1e-18);
+        // near is √4.29 m from the instrument along (2, 0.2, -0.5), far twice as far along the same line: a scale of 6 ppm
+        Vec3 dNear = e.displacement(flat, q, late, near), dFar = e.displacement(flat, q, late, far);
+        assertEquals(6e-6 * Math.sqrt(4.29), dNear.norm(), 1e-15);
+        assertEquals(2 * dNear.norm(), dFar.norm(), 1e-15);
+        assertEquals(1, dNear.dot(dFar) / (dNear.norm() * dFar.norm()), 1e-12);
+        assertEquals(1, dNear.dot(new Vec3(2, 0.2, -0.5)) / (dNear.norm() * Math.sqrt(4.29)), 1e-12);
+        Vec3 dLate = e.displacement(v, q, late, far), dEarly = e.displacement(v, q, early, far);
+        assertTrue(dLate.norm() > 1.5 * dEarly.norm() && dLate.dot(dEarly) > 0, dEarly + " -> " + dLate);
+        ExtendedModel back = ExtendedModel.of(org.robopro.models.RobotFile.parse("extended.robot.json",
+                org.robopro.models.RobotFile.format(ext.toDescription())), "extended.robot.json");
+        Effect e2 = back.terms().get(0).effect();
+        assertEquals(e.label(), e2.label());
+        assertEquals(0, e2.displacement(back.terms().get(0).values(), q, late, far).minus(dLate).norm(), 1e-15);
+    }
 }
