@@ -108,7 +108,9 @@ public final class DiagnoseCommand implements Callable<Integer> {
         if (val != null) w.printf(Locale.ROOT, "  validation: %.4f mm -> %.4f mm%n", Units.mToMm(d.geometricValidateRmsM()),
                 Units.mToMm(d.finalValidateRmsM()));
         if (d.effects().isEmpty()) w.println("  no non-geometric effect found");
-        for (Diagnosis.Finding f : d.effects()) w.println("  found " + f.effect().label());
+        // a fallback models a located structure without naming its physics: said so, not "found"
+        for (Diagnosis.Finding f : d.effects())
+            w.println(f.effect().isFallback() ? "  located " + f.effect().label() + " (modelled, no known family)" : "  found " + f.effect().label());
         for (String r : d.recommendations()) w.println("  advice: " + r);
         if (!cv.isEmpty()) {
             w.printf(Locale.ROOT, "  %d-fold cross-validation, held-out RMS: geometric %.4f mm -> %.4f mm with the effects of each fold%n",

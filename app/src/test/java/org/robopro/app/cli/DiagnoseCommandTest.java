@@ -45,6 +45,21 @@ class DiagnoseCommandTest {
         return new Path[] {train, val};
     }
 
+    /**
+     * A structure modelled by a fallback is printed as located, with no physics named: the world's
+     * tracker whose air compensation drifts, which the diagnosis models as the instrument's scale.
+     */
+    @Test
+    void diagnose_aFallback_isPrintedAsLocatedNotFound() throws Exception {
+        var t = Scenario.named("outside: the tracker's air compensation drifts as the hall warms").trial(20261126);
+        Path train = dir.resolve("air.csv");
+        Files.writeString(train, t.campaign().text());
+        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--out", dir.resolve("air").toString()),
+                cli.err());
+        assertTrue(cli.out().contains("  located instrument-scale (") && cli.out().contains("(modelled, no known family)"), cli.out());
+        assertTrue(!cli.out().contains("  found "), cli.out());
+    }
+
     @Test
     void diagnose_worldLostMotionJoint1_writesReportJsonAndExtendedModel() throws Exception {
         Path[] files = lostMotionCampaign();
