@@ -138,10 +138,11 @@ public final class Diagnoser {
 
     private Diagnoser() { }
 
+    /** Logs a step's candidates with the lowest BIC: six, or as many as the system property robopro.debugTop says. */
     private static void debug(int step, List<Candidate> cs) {
         List<Candidate> sorted = new ArrayList<>(cs);
         sorted.sort((x, y) -> Double.compare(x.bic, y.bic));
-        for (int i = 0; i < Math.min(6, sorted.size()); i++) {
+        for (int i = 0; i < Math.min(Integer.getInteger("robopro.debugTop", 6), sorted.size()); i++) {
             Candidate c = sorted.get(i);
             LOG.debug(String.format(Locale.ROOT, "step %d %-30s F %.2f p %.2e bic %.1f press %.1f/%.1f ratio %.3f %s %s est %s sd %s", step,
                     c.effect.label(), c.f, c.p, c.bic, c.pressBefore, c.pressAfter, c.ratio, c.plausible, c.plausibility,
@@ -1324,6 +1325,7 @@ public final class Diagnoser {
             for (Candidate c : cs) {
                 c.threshold = threshold;
                 if (!(c.p < threshold) || !(c.pressAfter < c.pressBefore)) continue;
+                if (inPlaceOnly(c.effect)) continue;
                 if (!c.plausible) { implausible.put(c.effect.label(), c); continue; }
                 if (best == null || lowerBic(c.bic, best.bic)) best = c;
             }
@@ -1448,10 +1450,14 @@ public final class Diagnoser {
         }
         fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
         fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
+        List<Effect> beforeGravity = selected.stream().filter(e -> !e.isFallback()).toList();
         fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
+        // a transmission error the gravity alias withdrew: what it held may be another shape of its drive's (a zero that moves)
+        List<Effect> gravityGone = beforeGravity.stream().filter(e -> !selected.contains(e)).toList();
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
         for (Effect e : family) if (e.isFallback()) rivals.putIfAbsent(e.label(), e);
-        List<Effect> claimed = selected.stream().filter(e -> !e.isFallback()).toList();
+        List<Effect> claimed = new ArrayList<>(selected.stream().filter(e -> !e.isFallback()).toList());
+        claimed.addAll(gravityGone);
         fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
         // (a two-joint fallback the claim check put in a withdrawn family's place)
         fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
@@ -1464,7 +1470,7 @@ public final class Diagnoser {
             for (Effect e : gone) for (Effect f : ownFallbacks(e, rows, model)) leftFor.putIfAbsent(f.label(), f);
             for (Effect f : rivals.values()) if (gone.stream().anyMatch(e -> sameVariable(e, f))) leftFor.putIfAbsent(f.label(), f);
             int before = selected.size();
-            fit = fallbacksForWhatIsLeft(w, fit, selected, absorbedCols, steps, leftFor.values(), aliasNotes);
+            fit = fallbacksForWhatIsLeft(w, fit, selected, absorbedCols, steps, leftFor.values(), aliasNotes, true);
             if (selected.size() == before) break;
             // the families still named are judged again beside what was added
             int families = (int) selected.stream().filter(e -> !e.isFallback()).count();
@@ -1472,12 +1478,26 @@ public final class Diagnoser {
             fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
             if (selected.stream().filter(e -> !e.isFallback()).count() == families) break;
         }
+        for (Effect e : gravityGone) {
+            // a zero that moves with time or temperature holds what the transmission error was taken for, and no shape of the
+            // angle is left: the question of a deflection under the arm's weight against a gear does not arise
+            int j = e.joint();
+            boolean zero = selected.stream().anyMatch(x -> x.joint() == j && (x.kind() == Effect.Kind.ZERO_DRIFT || x.kind() == Effect.Kind.ZERO_STEP));
+            boolean angle = selected.stream().anyMatch(x -> x.joint() == j && x.target() == Effect.Target.DRIVE
+                    && x.kind() != Effect.Kind.ZERO_DRIFT && x.kind() != Effect.Kind.ZERO_STEP && x.kind() != Effect.Kind.BACKLASH);
+            if (zero && !angle) recs.removeIf(r -> r.startsWith(gravityAliasAdvice(j)));
+        }
         if (selected.stream().anyMatch(e -> e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow())) {
             // a step of a joint's reading that took a withdrawn family's place may be a play held by gravity, as above
             List<String> before = selected.stream().map(Effect::label).toList();
             fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
             if (!selected.stream().map(Effect::label).toList().equals(before))
                 fit = claimCheck(w, fit, selected, absorbedCols, steps, new ArrayList<>(rivals.values()), family, rows, gravity, aliasNotes);
+        }
+        if (selected.isEmpty() && !foundGeo.isEmpty()) {
+            // nothing named, nor put in a withdrawn family's place, though the geometric fit left structure: the located
+            // structures' own fallbacks, one at a time while each holds on held-out data
+            fit = fallbacksForWhatIsLeft(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes, false);
         }
         fit = stillSignificant(w, fit, selected, absorbedCols, steps, familySize, aliasNotes);
         // With validation data, an effect is kept only when the final model predicts the validation poses better with
@@ -2188,12 +2208,25 @@ public final class Diagnoser {
                     + "without payload steps a transmission error of one cycle per turn and a deflection under gravity cannot "
                     + "be told apart on these poses%s", e.label(), j + 1, grav, own, selected.size() == before
                     ? ", so the joint's smooth fallback models the shape instead" : ", and nothing models it"));
-            recs.add(String.format(Locale.ROOT, "Joint %d's error follows its angle the way a deflection under the arm's weight "
-                    + "would: measure the same poses with two or three payloads (record payload_kg) to tell a compliance from a "
-                    + "transmission error, or give the robot file a mass_model.", j + 1));
+            recs.add(gravityAliasAdvice(j) + " would: measure the same poses with two or three payloads (record payload_kg) to "
+                    + "tell a compliance from a transmission error, or give the robot file a mass_model.");
             k = -1;
         }
         return fit;
+    }
+
+    /**
+     * Fallbacks the stepwise search does not choose, though they are tested with the families: a
+     * drive's error following two joints and a step of a joint's reading take a gear's or a coupling's
+     * place before that family is tried (a two-joint error holds a coupling and a scale error, a few
+     * steps follow any curve). They enter in a withdrawn family's place, beside what it left, or when
+     * nothing else models what the geometric fit left.
+     */
+    static boolean inPlaceOnly(Effect e) { return e.kind() == Effect.Kind.PAIR || e.kind() == Effect.Kind.ANGLE_STEP; }
+
+    /** The start of the advice {@link #gravityAliases} gives for drive {@code j} (0-based). */
+    private static String gravityAliasAdvice(int j) {
+        return "Joint " + (j + 1) + "'s error follows its angle the way a deflection under the arm's weight";
     }
 
     /** Shares of the poses left free (gravity torque below the holding torque) tried for a backlash held by gravity. */
@@ -2890,7 +2923,7 @@ public final class Diagnoser {
      * of what it held (a load across two joints: a shape of each); these model it. None is a claim.
      */
     private static Fit fallbacksForWhatIsLeft(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
-                                              List<Step> steps, java.util.Collection<Effect> candidates, List<String> notes) {
+                                              List<Step> steps, java.util.Collection<Effect> candidates, List<String> notes, boolean withdrawn) {
         for (int round = 0; round < MAX_LOCATED; round++) {
             Tester t = w.tester(fit);
             double press = t.pressFull();
@@ -2916,8 +2949,8 @@ public final class Diagnoser {
             }
             steps.add(new Step(best, g.trainRms, w.validateRms(g)));
             LOG.debug("left by the withdrawn families: {} (PRESS {} -> {})", best.effect.label(), press, best.pressAfter);
-            notes.add(String.format(Locale.ROOT, "%s models what the withdrawn families' fallbacks left (leave-one-pose-out error "
-                    + "%.1f against %.1f)", best.effect.label(), best.pressAfter, press));
+            notes.add(String.format(Locale.ROOT, "%s models what %s (leave-one-pose-out error %.1f against %.1f)", best.effect.label(),
+                    withdrawn ? "the withdrawn families' fallbacks left" : "the geometric fit left where it was located", best.pressAfter, press));
             fit = g;
         }
         return fit;
@@ -4943,6 +4976,27 @@ public final class Diagnoser {
                 double r = Words.rmsSmooth(e, v);
                 c.plausible = r < MAX_PERIODIC_RAD * 2;
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
+            }
+            case PAIR -> {
+                // the products' amplitudes as a transmission error's (twice, as the smooth error's), the linear terms as a coupling's
+                double amp = 0;
+                for (int i = 0; i < 4; i++) amp = Math.max(amp, Math.abs(v[i]));
+                double lin = 0;
+                for (int i = 4; i < v.length; i++) lin = Math.max(lin, Math.abs(v[i]));
+                c.plausible = amp < 2 * MAX_PERIODIC_RAD && lin < MAX_COUPLING;
+                c.plausibility = String.format(Locale.ROOT, "largest product amplitude %.4f deg < %.2f deg, linear terms %.2g < %.0e",
+                        Math.toDegrees(amp), Math.toDegrees(2 * MAX_PERIODIC_RAD), lin, MAX_COUPLING);
+            }
+            case ZERO_STEP, ANGLE_STEP -> {
+                // a slipped encoder or a misread bit can jump by more than a play, not by a visible fraction of a turn
+                c.plausible = Math.abs(v[0]) < MAX_BACKLASH_RAD;
+                c.plausibility = String.format(Locale.ROOT, "step %.4f deg < %.1f deg", Math.toDegrees(Math.abs(v[0])), Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case ZERO_DRIFT -> {
+                // a B-spline lies within its coefficients: their spread bounds the drift (the constant is the zero's, the geometry's)
+                double lo = Arrays.stream(v).min().orElse(0), hi = Arrays.stream(v).max().orElse(0);
+                c.plausible = hi - lo < MAX_BACKLASH_RAD;
+                c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(hi - lo), Math.toDegrees(MAX_BACKLASH_RAD));
             }
             case LINK_SAG -> {
                 c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_LINK_TURN_RAD;

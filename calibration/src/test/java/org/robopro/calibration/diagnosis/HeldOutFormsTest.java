@@ -347,6 +347,41 @@ class HeldOutFormsTest {
     }
 
     /**
+     * Joint 2's zero moving with its drive's temperature, without payload steps: a transmission
+     * error of joint 2 passed the tests first and was withdrawn because a deflection under the arm's
+     * weight predicted as well; nothing then modelled the structure, and the validation poses stayed
+     * at 2.8 × the noise floor (the twin at 1.06) with advice to measure payload steps. What a
+     * withdrawn family held is now looked for among the located structures of its drive: the zero's
+     * drift with temperature models it, and no advice about a deflection is given.
+     */
+    @Test
+    void zeroMovingWithTemperature_isModelledWhereAWithdrawnGearErrorStood() {
+        WorldCampaigns.Sim c = WorldCampaigns.of(Scenario.named("outside: j2 zero moving with drive temperature").trial(20261124));
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.ZERO_DRIFT && f.effect().joint() == 1), d.effects().toString());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+        assertTrue(d.recommendations().stream().noneMatch(r -> r.contains("deflection under the arm's weight")), d.recommendations().toString());
+    }
+
+    /**
+     * Joint 2's error depending on joints 2 and 4 together, 6-D: the two-joint fallback was
+     * significant at the first step but had no physical bound, so it was listed among the
+     * implausible findings; no family was named for it to take the place of, and nothing modelled
+     * the structure (1.9 × the floor left, the twin at 0.99). Where nothing is modelled though the
+     * geometric fit left located structure, the located structures' fallbacks are now tried.
+     */
+    @Test
+    void errorOfTwoJointsAlone_isModelledNotListedAsImplausible() {
+        WorldCampaigns.Sim c = WorldCampaigns.of(Scenario.named("outside: j2 error depending on j2 and j4, 6-D").trial(20261124));
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        assertEquals(List.of(), d.implausible().stream().filter(f -> f.effect().isFallback()).map(f -> f.effect().label()).toList());
+        assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.PAIR && f.effect().joint() == 1), d.effects().toString());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() + " vs floor " + c.floorM());
+    }
+
+    /**
      * The same bump with 92 poses and no validation poses: the poses on its peak lie 5 to 33 robust
      * sigmas off the fallback that models the rest of it (a smooth curve or a window of joint 2's
      * reading, coarser than the bump), all of them within a band of joint 2's angle a few degrees
