@@ -1181,8 +1181,8 @@ public final class Diagnoser {
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
 
-        Work w = Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, validate, o) : new Work(model, gravity, rows, geo, validate, o,
-                geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5, (geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5) * rotOverPos);
+        Work w = Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, validate, o)
+                : new Work(model, gravity, rows, geo, validate, o, Work.positionSigma(geo), Work.positionSigma(geo) * rotOverPos);
         List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
         // Each pose's last move per joint, in the measuring order of the whole file: a lost motion that builds up over the move.
         Directions.Moves moves = geo.pairs() ? Directions.Moves.NONE : Directions.moves(trainAll, validate);
@@ -3921,9 +3921,11 @@ public final class Diagnoser {
         Pauses pauses;                // when the robot rested, from the whole file's reading times (null: unknown)
 
         Work(KinematicModel model, GravityTorques gravity, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o) {
-            this(model, gravity, rows, geo, validate, o, geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5,
-                    geo.sixD() && geo.sigmaRotRad() > 0 ? geo.sigmaRotRad() : 1e-4);
+            this(model, gravity, rows, geo, validate, o, positionSigma(geo), geo.sixD() && geo.sigmaRotRad() > 0 ? geo.sigmaRotRad() : 1e-4);
         }
+
+        /** The position rows' σ the geometric fit estimated (m; 10 µm when it has none). */
+        static double positionSigma(CalibrationResult geo) { return geo.sigmaPosM() > 0 ? geo.sigmaPosM() : 1e-5; }
 
         /** With the residuals weighted by {@code sigmaPos} (m) and {@code sigmaRot} (rad) instead of the geometric fit's. */
         Work(KinematicModel model, GravityTorques gravity, List<Measurement> rows, CalibrationResult geo, MeasurementSet validate, Options o,
