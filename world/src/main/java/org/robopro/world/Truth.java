@@ -106,7 +106,7 @@ final class Truth {
             m.put("elevation_amplitude_arcsec", Arrays.stream(t.elAmp()).map(v -> Math.toDegrees(v) * 3600).boxed().toList());
             m.put("elevation_phase_rad", Arrays.stream(t.elPhase()).boxed().toList());
             if (t.airWarmK() != 0) {
-                m.put("air_form", "range' = range (1 + 0.93e-6 warm (1 - exp(-t / tau))): the beam's air warms against the weather station's reading");
+                m.put("air_form", "range' = range (1 - 0.93e-6 warm (1 - exp(-t / tau))): the beam's air warms against the weather station's reading");
                 m.put("air_warm_k", t.airWarmK());
                 m.put("air_tau_s", t.airTauS());
             }

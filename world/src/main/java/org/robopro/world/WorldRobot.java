@@ -254,8 +254,9 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      *     (Edlén's equation as revised by K. P. Birch and M. J. Downs, Metrologia 30 (1993) 155-162
      *     and 31 (1994) 315-316). Here the air the beam crosses warms by {@code airWarmK}
      *     (1 − exp(−t / {@code airTauS})) over the campaign while the station reads the start's, so
-     *     rho' = rho (1 + rangeScale + 0.93·10⁻⁶ · that warming) (the index read too high by it: the
-     *     distance comes out long).</li>
+     *     the index it assumes is too high by 0.93·10⁻⁶ · that warming. The meter counts N = n D / λ₀
+     *     wavelengths over a true distance D and reports N λ₀ / n_assumed = D n / n_assumed:
+     *     rho' = rho (1 + rangeScale − 0.93·10⁻⁶ · that warming), the distance comes out short.</li>
      * </ul>
      * Orientation (6-D) is read by other means and is left as it is. Angles rad, lengths m.
      */
@@ -299,12 +300,13 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
 
         /**
          * The range reading of a true range rho at {@code timeS} (unknown: the station's air): the
-         * index the station computes exceeds the true one by the warming times |dn/dT|, and the
-         * distance, the wavelengths counted times the wavelength in air the station assumes, by as much.
+         * index the station computes exceeds the true one by the warming times |dn/dT|, so the
+         * wavelength in air it assumes is that much too short, and the distance, the wavelengths
+         * counted times it, too.
          */
         public double range(double rho, double timeS) {
             double warm = Double.isFinite(timeS) && airWarmK != 0 ? airWarmK * (1 - Math.exp(-timeS / airTauS)) : 0;
-            return range(rho) + rho * -INDEX_PER_K * warm;
+            return range(rho) + rho * INDEX_PER_K * warm;
         }
 
         /** The azimuth reading of a true azimuth, rad. */

@@ -344,7 +344,7 @@ final class Words {
         boolean time = e.along() == Effect.Along.TIME;
         double grown = e.scaleAt(v, e.rangeHi()) - e.scaleAt(v, e.rangeLo());
         return String.format(Locale.ROOT, "The measured positions scale about the instrument with %s: from %.4g to %.4g %s its "
-                + "distances grow by %.2f ppm%s (the scale's change; a constant scale is the geometry's). No error of the robot "
+                + "distances' scale changes by %+.2f ppm%s (a constant scale is the geometry's). No error of the robot "
                 + "explains it, and the robot growing with the instrument moving toward it would hold it only together: the "
                 + "instrument's distance meter, whose air compensation (the air's temperature, pressure and humidity, about 1 ppm "
                 + "per kelvin or per 3.7 hPa) drifted from the air the beam went through. It is modelled so that it does not bend "
