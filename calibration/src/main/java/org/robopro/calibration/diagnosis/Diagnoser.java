@@ -1451,7 +1451,7 @@ public final class Diagnoser {
         fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
         fit = heldByGravity(w, fit, selected, absorbedCols, steps, gravity, rows, aliasNotes, recs);
         List<Effect> beforeGravity = selected.stream().filter(e -> !e.isFallback()).toList();
-        fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes, recs);
+        fit = gravityAliases(w, fit, selected, absorbedCols, steps, model, rows, aliasNotes);
         // a transmission error the gravity alias withdrew: what it held may be another shape of its drive's (a zero that moves)
         List<Effect> gravityGone = beforeGravity.stream().filter(e -> !selected.contains(e)).toList();
         fit = jointContest(w, fit, selected, absorbedCols, steps, rivals.values(), aliasNotes);
@@ -1479,13 +1479,16 @@ public final class Diagnoser {
             if (selected.stream().filter(e -> !e.isFallback()).count() == families) break;
         }
         for (Effect e : gravityGone) {
-            // a zero that moves with time or temperature holds what the transmission error was taken for, and no shape of the
-            // angle is left: the question of a deflection under the arm's weight against a gear does not arise
+            // what to measure to tell a deflection under the arm's weight from a gear's error; not asked where a zero that moves
+            // with time or temperature holds what the gear's error was taken for and no shape of the angle is left
             int j = e.joint();
             boolean zero = selected.stream().anyMatch(x -> x.joint() == j && (x.kind() == Effect.Kind.ZERO_DRIFT || x.kind() == Effect.Kind.ZERO_STEP));
             boolean angle = selected.stream().anyMatch(x -> x.joint() == j && x.target() == Effect.Target.DRIVE
                     && x.kind() != Effect.Kind.ZERO_DRIFT && x.kind() != Effect.Kind.ZERO_STEP && x.kind() != Effect.Kind.BACKLASH);
-            if (zero && !angle) recs.removeIf(r -> r.startsWith(gravityAliasAdvice(j)));
+            if (!zero || angle)
+                recs.add(String.format(Locale.ROOT, "Joint %d's error follows its angle the way a deflection under the arm's weight "
+                        + "would: measure the same poses with two or three payloads (record payload_kg) to tell a compliance from a "
+                        + "transmission error, or give the robot file a mass_model.", j + 1));
         }
         if (selected.stream().anyMatch(e -> e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow())) {
             // a step of a joint's reading that took a withdrawn family's place may be a play held by gravity, as above
@@ -2094,14 +2097,20 @@ public final class Diagnoser {
         if (geo.instrumentTbase() == null || geo.pairs() || geo.distance()) return out;
         for (Effect.Along a : new Effect.Along[] {Effect.Along.TIME, Effect.Along.TEMPERATURE}) {
             if (a == Effect.Along.TIME ? !hasTime : !hasTemp) continue;
-            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (Measurement m : history) {
-                double u = a == Effect.Along.TIME ? m.timeS() : m.tempC();
-                if (Double.isFinite(u)) { lo = Math.min(lo, u); hi = Math.max(hi, u); }
-            }
-            if (hi > lo) out.add(Effect.instrumentScale(a, geo.instrumentTbase(), lo, hi));
+            double[] r = readingRange(history, a);
+            if (r[1] > r[0]) out.add(Effect.instrumentScale(a, geo.instrumentTbase(), r[0], r[1]));
         }
         return out;
+    }
+
+    /** The lowest and highest time (s) or temperature (°C) read on {@code rows}, unknown readings left out (±∞ with none). */
+    static double[] readingRange(List<Measurement> rows, Effect.Along a) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement m : rows) {
+            double u = a == Effect.Along.TIME ? m.timeS() : m.tempC();
+            if (Double.isFinite(u)) { lo = Math.min(lo, u); hi = Math.max(hi, u); }
+        }
+        return new double[] {lo, hi};
     }
 
     /** Families whose claim rests on a shape in a joint angle, the gravity torque, time or temperature: they must beat the fallbacks. */
@@ -2133,13 +2142,9 @@ public final class Diagnoser {
             case PERIODIC, SCALE -> smoothCurves(out, rows, q -> q[j], (lo, hi, nb) -> Effect.smooth(j, lo, hi, nb));
             case DRIFT -> {
                 // the base or the instrument turning as well as moving with the same reading (a floor or a stand that tilts)
-                boolean time = e.usesTimeProxy();
-                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-                for (Measurement r : rows) {
-                    double u = time ? r.timeS() : r.tempC();
-                    if (Double.isFinite(u)) { lo = Math.min(lo, u); hi = Math.max(hi, u); }
-                }
-                if (hi > lo) out.add(Effect.baseTurn(time ? Effect.Along.TIME : Effect.Along.TEMPERATURE, lo, hi));
+                Effect.Along a = e.usesTimeProxy() ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
+                double[] r = readingRange(rows, a);
+                if (r[1] > r[0]) out.add(Effect.baseTurn(a, r[0], r[1]));
             }
             case COUPLING -> {
                 out.add(Effect.pair(j, k));
@@ -2182,7 +2187,7 @@ public final class Diagnoser {
      * with payload steps, which separate the two.
      */
     private static Fit gravityAliases(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
-                                      KinematicModel model, List<Measurement> rows, List<String> notes, List<String> recs) {
+                                      KinematicModel model, List<Measurement> rows, List<String> notes) {
         double pLo = Double.POSITIVE_INFINITY, pHi = Double.NEGATIVE_INFINITY;
         for (Measurement r : rows) {
             double p = Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0;
@@ -2208,8 +2213,6 @@ public final class Diagnoser {
                     + "without payload steps a transmission error of one cycle per turn and a deflection under gravity cannot "
                     + "be told apart on these poses%s", e.label(), j + 1, grav, own, selected.size() == before
                     ? ", so the joint's smooth fallback models the shape instead" : ", and nothing models it"));
-            recs.add(gravityAliasAdvice(j) + " would: measure the same poses with two or three payloads (record payload_kg) to "
-                    + "tell a compliance from a transmission error, or give the robot file a mass_model.");
             k = -1;
         }
         return fit;
@@ -2223,11 +2226,6 @@ public final class Diagnoser {
      * nothing else models what the geometric fit left.
      */
     static boolean inPlaceOnly(Effect e) { return e.kind() == Effect.Kind.PAIR || e.kind() == Effect.Kind.ANGLE_STEP; }
-
-    /** The start of the advice {@link #gravityAliases} gives for drive {@code j} (0-based). */
-    private static String gravityAliasAdvice(int j) {
-        return "Joint " + (j + 1) + "'s error follows its angle the way a deflection under the arm's weight";
-    }
 
     /** Shares of the poses left free (gravity torque below the holding torque) tried for a backlash held by gravity. */
     static final double[] HELD_FREE_SHARES = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8};
@@ -3485,13 +3483,13 @@ public final class Diagnoser {
      * less), so the steps may be Gauss-Newton's from the first; at the default 1e-3 a refit took 10-15
      * accepted steps where 3-5 converge to the same point.
      */
+    static final double NEAR_START_DAMPING = 1e-6;
+
     /**
      * The factor by which the ratio of the rotation rows' noise to the position rows' that the selected model leaves may
      * differ from the one the residuals were weighted with before the diagnosis is redone with it (see {@link #run}).
      */
     static final double REWEIGHT = 1.5;
-
-    static final double NEAR_START_DAMPING = 1e-6;
 
     /**
      * Whether BIC a is lower than b by more than rounding: two candidates that fit the same columns
@@ -4995,10 +4993,10 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "step %.4f deg < %.1f deg", Math.toDegrees(Math.abs(v[0])), Math.toDegrees(MAX_BACKLASH_RAD));
             }
             case ZERO_DRIFT -> {
-                // a B-spline lies within its coefficients: their spread bounds the drift (the constant is the zero's, the geometry's)
-                double lo = Arrays.stream(v).min().orElse(0), hi = Arrays.stream(v).max().orElse(0);
-                c.plausible = hi - lo < MAX_BACKLASH_RAD;
-                c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(hi - lo), Math.toDegrees(MAX_BACKLASH_RAD));
+                // (the constant is the zero's, the geometry's)
+                double d = spread(v);
+                c.plausible = d < MAX_BACKLASH_RAD;
+                c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(d), Math.toDegrees(MAX_BACKLASH_RAD));
             }
             case LINK_SAG -> {
                 c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_LINK_TURN_RAD;
@@ -5055,10 +5053,10 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "the target's move %.4f mm < %.0f mm", d * 1e3, MAX_TARGET_STEP_M * 1e3);
             }
             case INSTRUMENT_SCALE -> {
-                // the scale's change over the readings (its constant part is the geometry's); a B-spline lies within its coefficients
-                double lo = Arrays.stream(v).min().orElse(0), hi = Arrays.stream(v).max().orElse(0);
-                c.plausible = hi - lo < MAX_INSTRUMENT_SCALE;
-                c.plausibility = String.format(Locale.ROOT, "the scale's change within %.2f ppm < %.0f ppm", 1e6 * (hi - lo), 1e6 * MAX_INSTRUMENT_SCALE);
+                // the scale's change over the readings (its constant part is the geometry's)
+                double d = spread(v);
+                c.plausible = d < MAX_INSTRUMENT_SCALE;
+                c.plausibility = String.format(Locale.ROOT, "the scale's change within %.2f ppm < %.0f ppm", 1e6 * d, 1e6 * MAX_INSTRUMENT_SCALE);
             }
             case BASE_TURN -> {
                 // a B-spline's curve lies within its coefficients' range: the largest turn bounds the tilt
@@ -5079,6 +5077,14 @@ public final class Diagnoser {
             }
             default -> { }
         }
+    }
+
+    /**
+     * The spread of a B-spline's coefficients, max − min: the curve lies within them, so it bounds how
+     * much the curve changes over its range.
+     */
+    private static double spread(double[] v) {
+        return Arrays.stream(v).max().orElse(0) - Arrays.stream(v).min().orElse(0);
     }
 
     /** Whether [v − 3σ, v + 3σ] meets [lo, hi]. */

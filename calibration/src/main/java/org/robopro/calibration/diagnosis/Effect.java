@@ -1607,10 +1607,9 @@ public final class Effect {
             }
             case INSTRUMENT_SCALE -> {
                 // Δp = s(u) (p − o), o the instrument's origin: in base axes R_ibᵀ (s p_i) with p_i = R_ib p + t_ib
-                double u = reading(c);
-                if (!Double.isFinite(u)) break; // an unknown temperature contributes nothing
-                double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray(), b = new double[nBasis];
-                bspline(u, lo, hi, b);
+                double[] b = readingBasis(c);
+                if (b == null) break; // an unknown temperature contributes nothing
+                double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
                 for (int a = 0; a < 3; a++) {
                     double ra = instrument.rot(0, a) * pi[0] + instrument.rot(1, a) * pi[1] + instrument.rot(2, a) * pi[2];
                     for (int i = 0; i < nBasis; i++) g3[a * k + i] = ra * b[i];
@@ -1623,7 +1622,7 @@ public final class Effect {
                 for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
             }
             case BASE_TURN -> {
-                double[] b = turnBasis(c);
+                double[] b = readingBasis(c);
                 if (b == null) break; // an unknown temperature contributes nothing
                 double px = pointBase[0], py = pointBase[1], pz = pointBase[2];
                 for (int i = 0; i < nBasis; i++) {
@@ -1712,26 +1711,20 @@ public final class Effect {
         return Double.isFinite(c.timeS()) ? c.timeS() : hi;
     }
 
-    /** An instrument scale's spline function {@code i} at c's reading (0 at an unknown temperature). */
-    private double scaleBasis(PoseConditions c, int i) {
-        double u = reading(c);
-        if (!Double.isFinite(u)) return 0;
-        double[] b = new double[nBasis];
-        bspline(u, lo, hi, b);
-        return b[i];
-    }
-
-    /** The scale of an instrument's distances at the reading {@code u} (time, s, or temperature, °C) under values {@code v}. */
-    public double scaleAt(double[] v, double u) {
+    /**
+     * The effect's B-spline of its variable at {@code u} (time, s, or temperature, °C: a base turn's
+     * or an instrument scale's) with the coefficients {@code v[from]} .. {@code v[from + basisCount)}.
+     */
+    public double splineAt(double[] v, int from, double u) {
         double[] b = new double[nBasis];
         bspline(u, lo, hi, b);
         double s = 0;
-        for (int i = 0; i < nBasis; i++) s += b[i] * v[i];
+        for (int i = 0; i < nBasis; i++) s += b[i] * v[from + i];
         return s;
     }
 
-    /** A base turn's spline functions at c's reading; null at an unknown temperature. */
-    private double[] turnBasis(PoseConditions c) {
+    /** The spline functions of an effect along time or temperature at c's reading; null at an unknown temperature. */
+    private double[] readingBasis(PoseConditions c) {
         double u = reading(c);
         if (!Double.isFinite(u)) return null;
         double[] b = new double[nBasis];
@@ -1752,7 +1745,7 @@ public final class Effect {
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
         if (kind == Kind.BASE_TURN) {
-            double[] b = turnBasis(c);
+            double[] b = readingBasis(c);
             if (b == null) return;
             int k = size();
             for (int a = 0; a < 3; a++) System.arraycopy(b, 0, g3, a * k + a * nBasis, nBasis);
@@ -1875,9 +1868,10 @@ public final class Effect {
                         dp[a] += g3[a * k + col] * values[col];
                         if (dpDv != null) dpDv[a * k + col] = g3[a * k + col];
                     }
-                if (kind == Kind.INSTRUMENT_SCALE && dpDpoint != null) { // ∂(s (p − o))/∂p = s I
+                double[] sb = kind == Kind.INSTRUMENT_SCALE && dpDpoint != null ? readingBasis(c) : null;
+                if (sb != null) { // ∂(s (p − o))/∂p = s I
                     double sc = 0;
-                    for (int col = 0; col < k; col++) sc += scaleBasis(c, col) * values[col];
+                    for (int col = 0; col < k; col++) sc += sb[col] * values[col];
                     for (int a = 0; a < 3; a++) dpDpoint[4 * a] += sc;
                 }
                 if (kind == Kind.THERMAL_LINK && dpDpoint != null) {

@@ -252,7 +252,7 @@ final class Plots {
     static Diagnosis.Plot scale(Diagnoser.Tester t, Effect e, double[] v) {
         double[] cols = new double[e.size()];
         Arrays.fill(cols, 1);
-        return alongReading(t, e, cols, i -> e.scaleAt(v, xOf(e, t.w.rows.get(i), t.w.conditions.get(i))), u -> e.scaleAt(v, u), 1e6,
+        return alongReading(t, e, cols, i -> e.splineAt(v, 0, xOf(e, t.w.rows.get(i), t.w.conditions.get(i))), u -> e.splineAt(v, 0, u), 1e6,
                 "scale of the instrument's distances (ppm)");
     }
 
@@ -294,13 +294,10 @@ final class Plots {
         return new Diagnosis.Plot(xLabel(e), yLabel, x, y, cx, cy, null);
     }
 
-    /** A base turn's fitted angle about {@code axis} at the reading {@code u} (rad). */
+    /** A base turn's fitted angle about {@code axis} at the reading {@code u} (rad): each axis's turn is its own spline. */
     private static double turnAt(Effect e, double[] v, double[] axis, double u) {
-        int nb = e.basisCount();
-        double[] b = new double[nb];
-        Effect.bspline(u, e.rangeLo(), e.rangeHi(), b);
         double s = 0;
-        for (int a = 0; a < 3; a++) for (int j = 0; j < nb; j++) s += axis[a] * b[j] * v[a * nb + j];
+        for (int a = 0; a < 3; a++) s += axis[a] * e.splineAt(v, a * e.basisCount(), u);
         return s;
     }
 

@@ -339,10 +339,10 @@ final class Words {
                 + "cause.", e.label(), ev.f(), ev.pValue(), ev.plausibility()).replace("p = 0,", "p < 1e-300,");
     }
 
-    /** A base or instrument turning with time or temperature: its turn and move from one end of the range to the other. */
+    /** The instrument's distances scaling with time or temperature: the scale's change from one end of the range to the other. */
     private static String instrumentScale(Effect e, double[] v, String at) {
         boolean time = e.along() == Effect.Along.TIME;
-        double grown = e.scaleAt(v, e.rangeHi()) - e.scaleAt(v, e.rangeLo());
+        double grown = e.splineAt(v, 0, e.rangeHi()) - e.splineAt(v, 0, e.rangeLo());
         return String.format(Locale.ROOT, "The measured positions scale about the instrument with %s: from %.4g to %.4g %s its "
                 + "distances' scale changes by %+.2f ppm%s (a constant scale is the geometry's). No error of the robot "
                 + "explains it, and the robot growing with the instrument moving toward it would hold it only together: the "
@@ -354,13 +354,11 @@ final class Words {
                 1e6 * grown, at);
     }
 
+    /** A base or instrument turning with time or temperature: its turn and move from one end of the range to the other. */
     private static String baseTurn(Effect e, double[] v) {
         int nb = e.basisCount();
-        double[] b0 = new double[nb], b1 = new double[nb];
-        Effect.bspline(e.rangeLo(), e.rangeLo(), e.rangeHi(), b0);
-        Effect.bspline(e.rangeHi(), e.rangeLo(), e.rangeHi(), b1);
         double[] w = new double[3];
-        for (int a = 0; a < 3; a++) for (int i = 0; i < nb; i++) w[a] += v[a * nb + i] * (b1[i] - b0[i]);
+        for (int a = 0; a < 3; a++) w[a] = e.splineAt(v, a * nb, e.rangeHi()) - e.splineAt(v, a * nb, e.rangeLo());
         double tilt = Math.hypot(w[0], w[1]), move = Math.sqrt(v[3 * nb] * v[3 * nb] + v[3 * nb + 1] * v[3 * nb + 1] + v[3 * nb + 2] * v[3 * nb + 2]);
         boolean time = e.along() == Effect.Along.TIME;
         return String.format(Locale.ROOT, "The robot's base or the instrument turns with %s: from %.4g to %.4g %s it tilts by %.1f µrad "
