@@ -1099,10 +1099,7 @@ public final class Diagnoser {
      */
     static java.util.Optional<String> oneSidedNote(List<Measurement> rows, int dof) {
         List<String> joints = new ArrayList<>();
-        for (int j = 0; j < dof && !rows.isEmpty(); j++) {
-            int jj = j, first = rows.get(0).directions()[j];
-            if (first != 0 && rows.stream().allMatch(m -> m.directions()[jj] == first)) joints.add(Integer.toString(j + 1));
-        }
+        for (int j = 0; j < dof; j++) if (oneSided(rows, j)) joints.add(Integer.toString(j + 1));
         if (joints.isEmpty()) return java.util.Optional.empty();
         String which = joints.size() == 1 ? "joint " + joints.get(0) : "joints " + String.join(", ", joints.subList(0, joints.size() - 1))
                 + " and " + joints.get(joints.size() - 1);
@@ -1111,6 +1108,45 @@ public final class Diagnoser {
                 + "whether there is any (backlash is not identifiable there); a lag that builds up over the move can still vary with "
                 + "the motion before each pose. To tell either, approach some poses from the other side");
     }
+
+    /** Whether every row has joint j's recorded direction on the same side (not 0). */
+    static boolean oneSided(List<Measurement> rows, int j) {
+        if (rows.isEmpty()) return false;
+        int first = rows.get(0).directions()[j];
+        return first != 0 && rows.stream().allMatch(m -> m.directions()[j] == first);
+    }
+
+    /**
+     * The joints whose recorded direction disagrees with the last move in the file at
+     * {@link #MIN_APPROACHED} rows or more and at a tenth of them: there the pose was taken by a
+     * move the file does not hold (an approach from a fixed side), so the travel since the drive
+     * last turned is not the last move.
+     */
+    static boolean[] approachedJoints(List<Measurement> rows, Directions.Moves moves, int dof) {
+        boolean[] out = new boolean[dof];
+        if (moves.isEmpty()) return out;
+        for (int j = 0; j < dof; j++) {
+            int against = 0;
+            for (Measurement m : rows) {
+                double x = moves.of(m, j);
+                int d = m.directions() == null ? 0 : m.directions()[j];
+                if (d != 0 && Double.isFinite(x) && x != 0 && Math.signum(x) != d) against++;
+            }
+            out[j] = against >= MIN_APPROACHED && against >= 0.1 * rows.size();
+        }
+        return out;
+    }
+
+    /** Rows whose direction disagrees with their last move before a joint counts as approached ({@link #approachedJoints}). */
+    static final int MIN_APPROACHED = 5;
+
+    /**
+     * The wind-up an approached, one-sided joint is first tested with (rad): a build-up length of 4°
+     * and an approach of 1°, in the middle of the grids {@link #bestWindUp} then searches. Only how
+     * the lag differs between poses whose travel came from either side is seen there, and at these
+     * lengths that difference is most of the full lag.
+     */
+    static final double APPROACH_BUILD_UP_RAD = Math.toRadians(4), APPROACH_RAD = Math.toRadians(1);
 
     /**
      * Whether a pose's direction is unknown (0: the first pose of an inferred measuring order) on a
@@ -1200,6 +1236,13 @@ public final class Diagnoser {
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null, w.pauses))
             if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
         family.addAll(instrumentScales(geo, history, hasTime, hasTemp));
+        // A joint taken by an approach move from one side at every pose: a constant lost motion lags alike everywhere
+        // (the zero takes it), but a wind-up still differs with the travel before the approach.
+        boolean[] approached = hasDirs && dirSource == Directions.Source.RECORDED ? approachedJoints(rows, moves, model.dof())
+                : new boolean[model.dof()];
+        for (int j = 0; j < model.dof(); j++)
+            if (approached[j] && oneSided(rows, j) && !excluded.contains(claimKey(Effect.backlash(j))))
+                family.add(Effect.windUp(j, APPROACH_BUILD_UP_RAD, APPROACH_RAD, moves));
         if (manyOutliers)
             notes.add(String.format(Locale.ROOT, "%d poses lie beyond 5 robust sigmas of the geometric fit, more than %s: too many "
                     + "to be bad measurements, so ", beyondGeo, 0.05 * train.size() > MAX_GROSS ? "5 % of them" : "the "
@@ -1381,13 +1424,16 @@ public final class Diagnoser {
             if (e.kind() == Effect.Kind.BACKLASH && !moves.isEmpty()) {
                 // The other form of the same lost motion: constant, or building up over the move (the build-up
                 // length that predicts left-out poses best). It takes the place only when clearly better.
-                Effect form = e.buildsUp() ? Effect.backlash(e.joint()) : null;
+                // An approached wind-up is the same form with its two lengths still to choose: the best of them takes
+                // its place when it predicts better at all.
+                boolean refine = e.approached();
+                Effect form = e.buildsUp() && !refine ? Effect.backlash(e.joint()) : null;
                 double formPress = form == null ? Double.POSITIVE_INFINITY : at.pressReplacing(k, form, w.conditions);
-                if (!e.buildsUp()) {
-                    Effect.Term wu = bestWindUp(at, k, e.joint(), moves, w.conditions);
+                if (!e.buildsUp() || refine) {
+                    Effect.Term wu = bestWindUp(at, k, e.joint(), moves, w.conditions, approached[e.joint()]);
                     if (wu != null) { form = wu.effect(); formPress = wu.values()[0]; }
                 }
-                if (form != null && !refusedAliases.contains(form.label()) && formPress < own * (1 - ALIAS_MARGIN)) {
+                if (form != null && !refusedAliases.contains(form.label()) && formPress < own * (refine ? 1 : 1 - ALIAS_MARGIN)) {
                     best = form;
                     bestPress = formPress;
                 }
@@ -1881,28 +1927,60 @@ public final class Diagnoser {
      * length is testable.
      */
     static Effect.Term bestWindUp(Tester at, int k, int joint, Directions.Moves moves, List<PoseConditions> conds) {
+        return bestWindUp(at, k, joint, moves, conds, false);
+    }
+
+    /**
+     * Approach lengths of the approached wind-up's grid, rad: 0.25° to 16° in doublings, then refined
+     * in log length between the best one's neighbours at the best build-up length.
+     */
+    static final double[] APPROACH_GRID_RAD = {Math.toRadians(0.25), Math.toRadians(0.5), Math.toRadians(1), Math.toRadians(2),
+            Math.toRadians(4), Math.toRadians(8), Math.toRadians(16)};
+
+    /**
+     * As {@link #bestWindUp(Tester, int, int, Directions.Moves, List)}; with {@code approached} (the
+     * joint's poses were taken by approach moves the file does not hold) the approach's length is
+     * searched too: the build-up grid at every approach length of {@link #APPROACH_GRID_RAD}, then a
+     * golden-section search of each length in turn between the best one's neighbours.
+     */
+    static Effect.Term bestWindUp(Tester at, int k, int joint, Directions.Moves moves, List<PoseConditions> conds, boolean approached) {
         List<Double> grid = new ArrayList<>();
         for (double x = WINDUP_MIN_RAD; x <= WINDUP_MAX_RAD * 1.0001; x *= WINDUP_STEP) grid.add(x);
-        double[] press = new double[grid.size()];
-        int best = -1;
-        for (int i = 0; i < press.length; i++) {
-            press[i] = at.pressReplacing(k, Effect.windUp(joint, grid.get(i), moves), conds);
-            if (Double.isFinite(press[i]) && (best < 0 || press[i] < press[best])) best = i;
-        }
+        double[] approaches = approached ? APPROACH_GRID_RAD : new double[] {Double.NaN};
+        int best = -1, bestA = -1;
+        double pBest = Double.POSITIVE_INFINITY;
+        for (int ia = 0; ia < approaches.length; ia++)
+            for (int i = 0; i < grid.size(); i++) {
+                double p = at.pressReplacing(k, Effect.windUp(joint, grid.get(i), approaches[ia], moves), conds);
+                if (Double.isFinite(p) && p < pBest) { pBest = p; best = i; bestA = ia; }
+            }
         if (best < 0) return null;
-        double a = Math.log(grid.get(Math.max(0, best - 1))), b = Math.log(grid.get(Math.min(grid.size() - 1, best + 1)));
-        double xBest = grid.get(best), pBest = press[best];
+        double[] x = {grid.get(best), approaches[bestA]};
+        java.util.function.DoubleUnaryOperator byBuildUp = l -> at.pressReplacing(k, Effect.windUp(joint, Math.exp(l), x[1], moves), conds);
+        double[] r = goldenLog(byBuildUp, grid.get(Math.max(0, best - 1)), grid.get(Math.min(grid.size() - 1, best + 1)));
+        if (r[1] < pBest) { pBest = r[1]; x[0] = Math.exp(r[0]); }
+        if (approached) {
+            java.util.function.DoubleUnaryOperator byApproach = l -> at.pressReplacing(k, Effect.windUp(joint, x[0], Math.exp(l), moves), conds);
+            r = goldenLog(byApproach, approaches[Math.max(0, bestA - 1)], approaches[Math.min(approaches.length - 1, bestA + 1)]);
+            if (r[1] < pBest) { pBest = r[1]; x[1] = Math.exp(r[0]); }
+        }
+        return new Effect.Term(Effect.windUp(joint, x[0], x[1], moves), new double[] {pBest});
+    }
+
+    /**
+     * A golden-section search of {@code f} over log lengths between {@code lo} and {@code hi} (rad),
+     * eight steps: {log length, value} of the better of its last two points.
+     */
+    private static double[] goldenLog(java.util.function.DoubleUnaryOperator f, double lo, double hi) {
+        double a = Math.log(lo), b = Math.log(hi);
         double g = (Math.sqrt(5) - 1) / 2;
         double c = b - g * (b - a), d = a + g * (b - a);
-        double pc = at.pressReplacing(k, Effect.windUp(joint, Math.exp(c), moves), conds);
-        double pd = at.pressReplacing(k, Effect.windUp(joint, Math.exp(d), moves), conds);
+        double pc = f.applyAsDouble(c), pd = f.applyAsDouble(d);
         for (int it = 0; it < 8; it++) {
-            if (pc < pd) { b = d; d = c; pd = pc; c = b - g * (b - a); pc = at.pressReplacing(k, Effect.windUp(joint, Math.exp(c), moves), conds); }
-            else { a = c; c = d; pc = pd; d = a + g * (b - a); pd = at.pressReplacing(k, Effect.windUp(joint, Math.exp(d), moves), conds); }
+            if (pc < pd) { b = d; d = c; pd = pc; c = b - g * (b - a); pc = f.applyAsDouble(c); }
+            else { a = c; c = d; pc = pd; d = a + g * (b - a); pd = f.applyAsDouble(d); }
         }
-        if (pc < pBest) { pBest = pc; xBest = Math.exp(c); }
-        if (pd < pBest) { pBest = pd; xBest = Math.exp(d); }
-        return new Effect.Term(Effect.windUp(joint, xBest, moves), new double[] {pBest});
+        return pc < pd ? new double[] {c, pc} : new double[] {d, pd};
     }
 
     /**

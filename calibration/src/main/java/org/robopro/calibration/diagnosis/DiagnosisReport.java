@@ -99,6 +99,7 @@ public final class DiagnosisReport {
         }
         if (e.kind() == Effect.Kind.THERMAL) p.put(e.usesTimeProxy() ? "tau_s" : "t0_c", e.usesTimeProxy() ? e.tauS() : e.t0C());
         if (e.buildsUp()) { p.put("build_up_rad", e.buildUpRad()); u.put("build_up_rad", "rad"); }
+        if (e.approached()) { p.put("approach_rad", e.approachRad()); u.put("approach_rad", "rad"); }
         if (e.heldByGravity()) {
             p.put("held_above_nm", e.heldAboveNm());
             u.put("held_above_nm", "N·m");

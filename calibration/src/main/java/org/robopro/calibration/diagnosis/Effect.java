@@ -170,6 +170,7 @@ public final class Effect {
     private Along along;                     // point-smooth, zero-drift: the variable
     private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
     private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
+    private double approach = Double.NaN;    // that backlash: the approach move before each pose (rad); NaN: none in the program
     private double preloadNm = Double.NaN;   // backlash held on one flank by gravity: the torque above which it is held (N·m); NaN: free
     private double preloadWidth;             // that backlash: half-width of the hand-over, a share of preloadNm (0: a sharp one)
     private double[] massScales;             // that backlash, a base tilt: the file's masses re-estimated by a factor each (null: as in the file)
@@ -308,9 +309,27 @@ public final class Effect {
      * taken, which is plain backlash. b is the lag after a long move, as for {@link #backlash}.
      */
     public static Effect windUp(int joint, double buildUpRad, Directions.Moves moves) {
+        return windUp(joint, buildUpRad, Double.NaN, moves);
+    }
+
+    /**
+     * Lost motion that builds up over the travel since the drive last turned, each pose taken by an
+     * approach move of {@code approachRad} from the side its recorded direction gives (a one-sided
+     * approach program: the controller stops short of the pose and moves onto it from a fixed side;
+     * the approach's length is in the program, not in the file). The wind-up follows the travel since
+     * the motor last reversed (Dahl's model is a function of that travel, Armstrong-Hélouvry et al.
+     * 1994 §2.2). Where the last move in the file went the way of the recorded direction and is
+     * longer than the approach, the drive went on through the approach pose and the travel is that
+     * move (the approach is its last part); where it went the other way, or fell short of the
+     * approach pose, the motor turned round at the approach pose and the travel is the approach
+     * alone. {@code approachRad} NaN: no approach moves, as {@link #windUp(int, double, Directions.Moves)}.
+     */
+    public static Effect windUp(int joint, double buildUpRad, double approachRad, Directions.Moves moves) {
         if (!(buildUpRad > 0)) throw new IllegalArgumentException("build-up length " + buildUpRad);
+        if (!Double.isNaN(approachRad) && !(approachRad > 0)) throw new IllegalArgumentException("approach length " + approachRad);
         Effect e = drive(Kind.BACKLASH, joint);
         e.buildUp = buildUpRad;
+        e.approach = approachRad;
         e.moves = moves == null ? Directions.Moves.NONE : moves;
         return e;
     }
@@ -400,10 +419,31 @@ public final class Effect {
     /** The build-up length of a lost motion that builds up over the move, rad (NaN for a constant one). */
     public double buildUpRad() { return buildUp; }
 
-    /** A wind-up's share of its full lag after row m's last move of its joint (1 when the move is unknown). */
-    double windUpShare(Measurement m) {
-        double x = m == null ? Double.NaN : moves.of(m, joint);
+    /** Whether this is a wind-up of poses taken by an approach move ({@link #windUp(int, double, double, Directions.Moves)}). */
+    public boolean approached() { return buildsUp() && Double.isFinite(approach); }
+
+    /** The approach move's length of an approached wind-up, rad (NaN otherwise). */
+    public double approachRad() { return approach; }
+
+    /**
+     * A wind-up's share of its full lag after row m's travel since its joint last turned, the joint
+     * resting on side {@code dir} (1 when the move is unknown).
+     */
+    double windUpShare(Measurement m, int dir) {
+        double x = travel(m, dir);
         return Double.isFinite(x) ? windUpShare(x, buildUp) : 1;
+    }
+
+    /**
+     * The travel of this effect's joint since it last turned before row m (rad; NaN when unknown),
+     * the joint resting on side {@code d}: the last move in the file, or, for an approached wind-up,
+     * that move where it went the way of {@code d} and beyond the approach pose, else the approach
+     * alone (signed by d).
+     */
+    double travel(Measurement m, int d) {
+        double x = m == null ? Double.NaN : moves.of(m, joint);
+        if (!Double.isFinite(x) || !Double.isFinite(approach) || d == 0) return x;
+        return Math.signum(x) == d ? d * Math.max(Math.abs(x), approach) : d * approach;
     }
 
     /**
@@ -412,8 +452,7 @@ public final class Effect {
      */
     static double windUpShare(double moveRad, double buildUpRad) { return 1 - Math.exp(-Math.abs(moveRad) / buildUpRad); }
 
-    /** The signed last move of this effect's joint before row m (NaN when unknown). */
-    double lastMove(Measurement m) { return moves.of(m, joint); }
+
     public static Effect scale(int joint) { return drive(Kind.SCALE, joint); }
     /** q_out,target += κ q_source. */
     public static Effect coupling(int target, int source) {
@@ -1434,8 +1473,8 @@ public final class Effect {
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following " + (model != null ? "theta" : "j") + (source + 1) + ")" : "")
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
-            case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg)",
-                    Math.toDegrees(buildUp)) : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
+            case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg%s)",
+                    Math.toDegrees(buildUp), approached() ? String.format(Locale.ROOT, ", approached by %.1f deg", Math.toDegrees(approach)) : "") : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
@@ -1505,7 +1544,7 @@ public final class Effect {
      */
     public void regressor(Measurement row, PoseConditions c, double[] g) {
         regressor(row.q(), c, g);
-        if (buildsUp()) g[0] *= windUpShare(row);
+        if (buildsUp()) g[0] *= windUpShare(row, c.direction(joint));
     }
 
     /** The drive or strain value at a measured row ({@link #regressor(Measurement, PoseConditions, double[])}). */
@@ -1941,6 +1980,7 @@ public final class Effect {
             case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
             case BACKLASH -> {
                 if (buildsUp()) p.put("build_up_rad", buildUp);
+                if (approached()) p.put("approach_rad", approach);
                 if (heldByGravity()) {
                     p.put("held_above_nm", preloadNm);
                     p.put("held_width", preloadWidth);
@@ -2008,7 +2048,10 @@ public final class Effect {
                 if (!ps.containsKey("build_up_rad")) yield backlash(js.get(0) - 1);
                 double x0 = require(d, "build_up_rad", file);
                 if (!(x0 > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.build_up_rad", "must be > 0, got " + x0);
-                yield windUp(js.get(0) - 1, x0, null);
+                if (!ps.containsKey("approach_rad")) yield windUp(js.get(0) - 1, x0, null);
+                double a = require(d, "approach_rad", file);
+                if (!(a > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.approach_rad", "must be > 0, got " + a);
+                yield windUp(js.get(0) - 1, x0, a, null);
             }
             case SCALE -> scale(js.get(0) - 1);
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);

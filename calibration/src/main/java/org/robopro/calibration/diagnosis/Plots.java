@@ -104,7 +104,9 @@ final class Plots {
             case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
-            case BACKLASH -> e.buildsUp() ? "last move of joint " + (e.joint() + 1) + " before the pose, signed (deg)"
+            case BACKLASH -> e.approached() ? "travel of joint " + (e.joint() + 1) + " since it last turned, approach included, "
+                    + "signed by its direction (deg)"
+                    : e.buildsUp() ? "last move of joint " + (e.joint() + 1) + " before the pose, signed (deg)"
                     : e.heldByGravity() ? "gravity torque on drive " + (e.joint() + 1) + " (N·m)"
                     : "approach direction dir" + (e.joint() + 1);
             case THERMAL -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
@@ -129,8 +131,8 @@ final class Plots {
             case TARGET_INCIDENCE -> Double.NaN; // from the predicted point (alongDisplacement)
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
-            case BACKLASH -> e.buildsUp() && Double.isFinite(e.lastMove(row))
-                    ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.lastMove(row)))
+            case BACKLASH -> e.buildsUp() && Double.isFinite(e.travel(row, c.direction(e.joint())))
+                    ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.travel(row, c.direction(e.joint()))))
                     : e.heldByGravity() ? e.holdingTorque(row.q(), c.payloadKg()) : c.direction(e.joint());
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));

@@ -212,9 +212,14 @@ final class Words {
                     + "long move its output lags the motor-side encoder by half of %.4f ± %.4f deg behind the direction it last "
                     + "moved in%s; after a shorter move the lag is smaller, reaching 63 %% of that after %.1f deg of travel "
                     + "(build-up length, chosen by the leave-one-pose-out error; Dahl's solid-friction model). Directions %s, "
-                    + "move sizes from the joint values in the measuring order. Compensation does not know the next move's size "
+                    + "move sizes from the joint values in the measuring order.%s Compensation does not know the next move's size "
                     + "and takes the full lag.", e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(s[0]), at,
-                    Math.toDegrees(e.buildUpRad()), dirs.words)
+                    Math.toDegrees(e.buildUpRad()), dirs.words, e.approached() ? String.format(Locale.ROOT, " Each pose was "
+                    + "approached from the side its direction records, by a move the file does not hold: where the move before "
+                    + "it went the other way (or stopped short of the approach) the drive turned round short of the pose and its "
+                    + "lag built up over the approach alone, where it went the same way over that move; the approach's length "
+                    + "that predicts left-out poses best "
+                    + "is %.1f deg (check it against the measuring program).", Math.toDegrees(e.approachRad())) : "")
                     : String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
                     + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in%s (directions %s).", e.joint() + 1,
                     Math.toDegrees(v[0]), Math.toDegrees(s[0]), at, dirs.words);

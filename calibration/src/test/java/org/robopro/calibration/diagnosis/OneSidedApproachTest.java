@@ -114,20 +114,29 @@ class OneSidedApproachTest {
     /**
      * A friction wind-up on joint 3, every pose approached from above by 2 degrees: the drive turns
      * round at the approach pose when it came from above (its lag: the 2 degrees' share) and goes
-     * straight on when it came from below (the whole travel's share), so the lag still varies. The
-     * recorded directions are all the same, so neither form of lost motion is tested. No family may
-     * be named wrongly, and the report must say first that the error left is above the floor.
+     * straight on when it came from below (the whole travel's share), so the lag still varies though
+     * the recorded directions are all the same. It is named on joint 3 as a wind-up of approached
+     * poses, with the approach's length near the program's 2 degrees (a length the file does not
+     * hold), and brings the validation poses to the floor.
      */
     @Test
-    void windUpApproachedFromAboveByTwoDegrees_noWrongClaim_errorLeftSaid() {
+    void windUpApproachedFromAboveByTwoDegrees_namedWithTheApproach_atTheFloor() {
         Scenario s = Scenario.named("lost motion j3 building up over the move, every pose approached by 2 deg from above");
-        WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(20261124));
-        Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
-        for (Diagnosis.Finding f : d.effects())
-            assertTrue(f.effect().kind() == Effect.Kind.BACKLASH && f.effect().joint() == 2, "named wrongly: " + f.effect().label());
-        assertTrue(d.finalValidateRmsM() > 1.2 * c.floorM(), "the wind-up is there: " + d.finalValidateRmsM() / c.floorM());
-        assertFalse(d.warnings().isEmpty(), "the error left above the floor is said");
-        assertTrue(d.warnings().get(0).contains("x the noise floor"), d.warnings().get(0));
-        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("joints 1, 2, 3, 4, 5 and 6 were approached from the same side")), d.notes().toString());
+        for (long seed : new long[] {20261124, 20261126}) {
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            assertTrue(c.campaign().rows().stream().allMatch(r -> r.dir()[2] == 1), "every pose taken moving up");
+            Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
+            assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
+            Effect e = d.effects().get(0).effect();
+            assertEquals(Effect.Kind.BACKLASH, e.kind());
+            assertEquals(2, e.joint());
+            assertTrue(e.approached(), e.label());
+            double approach = Math.toDegrees(e.approachRad());
+            assertTrue(approach > 1 && approach < 4, "seed " + seed + ": approach " + approach + " deg, the program's 2 deg");
+            assertTrue(d.effects().get(0).values()[0] > 0, "lagging");
+            assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
+            assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("joints 1, 2, 3, 4, 5 and 6 were approached from the same side")),
+                    d.notes().toString());
+        }
     }
 }

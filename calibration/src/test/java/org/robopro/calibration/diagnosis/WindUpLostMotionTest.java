@@ -113,6 +113,41 @@ class WindUpLostMotionTest {
         assertFalse(Effect.fromDescription(Effect.backlash(2).describe(new double[] {7e-4}), model, null, "x.json").effect().buildsUp());
     }
 
+    /**
+     * The travel a drive's friction sees when each pose is taken by an approach move from one side
+     * (+1: moving up) of length a, worked by hand from the program: to the approach pose q - a, then
+     * up onto q. Coming from below past q - a the drive goes on up: the travel is the whole last move.
+     * Coming from above, or from just below q - a's far side (a move up shorter than a), it turns
+     * round at q - a: the travel is a. A drive that came up by 10 deg with a 2 deg approach has built
+     * up 1 - exp(-10/4) of its lag (build-up length 4 deg); one that came down, 1 - exp(-2/4).
+     */
+    @Test
+    void approachedWindUp_travelSinceTheDriveTurned() {
+        double deg = Math.toRadians(1);
+        Measurement start = row("s", 0, null, 20 * deg, 0), fromBelow = row("u", 10, null, 30 * deg, 0),
+                fromAbove = row("d", 20, null, 25 * deg, 0), shortUp = row("n", 30, null, 26 * deg, 0);
+        MeasurementSet s = new MeasurementSet("f", Map.of(), "base", List.of(start, fromBelow, fromAbove, shortUp));
+        Effect e = Effect.windUp(0, 4 * deg, 2 * deg, Directions.moves(s, null));
+        assertTrue(e.approached());
+        assertEquals(10 * deg, e.travel(fromBelow, 1), 1e-12, "came up past the approach pose: the whole move");
+        assertEquals(2 * deg, e.travel(fromAbove, 1), 1e-12, "came down, turned round at the approach pose");
+        assertEquals(2 * deg, e.travel(shortUp, 1), 1e-12, "came up by 1 deg, less than the approach: turned round below");
+        PoseConditions up = new PoseConditions(new int[] {1, 1}, 0, Double.NaN, Double.NaN);
+        double[] g = new double[1];
+        e.regressor(fromBelow, up, g);
+        assertEquals(-0.5 * (1 - Math.exp(-10 / 4.0)), g[0], 1e-12);
+        e.regressor(fromAbove, up, g);
+        assertEquals(-0.5 * (1 - Math.exp(-2 / 4.0)), g[0], 1e-12, "the output lags behind the side it was taken from");
+        Effect plain = Effect.windUp(0, 4 * deg, Directions.moves(s, null));
+        assertEquals(-5 * deg, plain.travel(fromAbove, 1), 1e-12, "without an approach: the last move, whatever the recorded side");
+
+        KinematicModel model = KinematicModel.build(irb2000);
+        Effect.Term back = Effect.fromDescription(Effect.windUp(2, 0.1, 0.03, null).describe(new double[] {7e-4}), model, null, "x.json");
+        assertTrue(back.effect().approached());
+        assertEquals(0.03, back.effect().approachRad(), 0);
+        assertEquals(0.1, back.effect().buildUpRad(), 0);
+    }
+
     private static Measurement row(String id, double t, Measurement.Split set, double... q) {
         return new Measurement(id, q, Vec3.ZERO, null, null, t, Double.NaN, Double.NaN, set, 0);
     }
