@@ -70,6 +70,29 @@ public sealed interface JointError {
         @Override public double delta(double[] q, Moment m) { return -0.5 * width * m.dir()[joint]; }
     }
 
+    /**
+     * Lost motion whose play changes once per turn of the output: the output gear runs off its
+     * bearing's centre by {@code runout}, so its centre distance to the pinion is
+     * a0 + runout cos(q - phase), and a gear pair's circumferential backlash grows with the centre
+     * distance by 2 Δa tan α (α the working pressure angle; ISO/TR 10064-2:1996, "Backlash",
+     * j_t from the centre distance; D. W. Dudley, Handbook of Practical Gear Design, §4.3). As an
+     * angle of the output gear of pitch radius r the play is
+     * width + 2 runout cos(q - phase) tan α / r, and the output lags by half of it:
+     * q_out = q - (play/2) dir.
+     */
+    record RunoutLostMotion(int joint, double width, double runoutM, double phase, double pitchRadiusM, double pressureAngle)
+            implements JointError {
+        public RunoutLostMotion {
+            if (!(2 * runoutM * Math.tan(pressureAngle) / pitchRadiusM < width))
+                throw new IllegalArgumentException("the play would close: runout " + runoutM + " m against width " + width + " rad");
+        }
+
+        /** The play at output angle q, rad. */
+        public double play(double q) { return width + 2 * runoutM * Math.cos(q - phase) * Math.tan(pressureAngle) / pitchRadiusM; }
+
+        @Override public double delta(double[] q, Moment m) { return -0.5 * play(q[joint]) * m.dir()[joint]; }
+    }
+
     /** Gear-ratio error: the output turns (1 + eps) times what the controller assumes. */
     record Scale(int joint, double eps) implements JointError {
         @Override public double delta(double[] q, Moment m) { return eps * q[joint]; }

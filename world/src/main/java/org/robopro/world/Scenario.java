@@ -197,6 +197,16 @@ public record Scenario(String name, String family, String robot, Expected expect
         return new JointError.LostMotion(joint, Math.toRadians(uniform(r, 0.02, 0.05)));
     }
 
+    /**
+     * Lost motion 0.02–0.05° whose output gear (pitch radius 60–120 mm, pressure angle 20°) runs out
+     * by enough to change the play by 30–80 % of its width over a turn.
+     */
+    public static JointError.RunoutLostMotion runoutLostMotion(int joint, Random r) {
+        double width = Math.toRadians(uniform(r, 0.02, 0.05)), radius = uniform(r, 0.06, 0.12), alpha = Math.toRadians(20);
+        double runout = uniform(r, 0.3, 0.8) * width * radius / (2 * Math.tan(alpha));
+        return new JointError.RunoutLostMotion(joint, width, runout, 2 * Math.PI * r.nextDouble(), radius, alpha);
+    }
+
     /** Gear-ratio error ±(1–3)·10⁻⁴. */
     public static JointError.Scale gearRatio(int joint, Random r) { return new JointError.Scale(joint, signed(r, 1e-4, 3e-4)); }
 
@@ -375,6 +385,11 @@ public record Scenario(String name, String family, String robot, Expected expect
                     double up = Math.toRadians(uniform(r, 0.02, 0.05));
                     return add(new JointError.AsymmetricLostMotion(1, up, up * uniform(r, 0.3, 0.7)));
                 }, same()));
+        c.add(s("lost motion j2 whose play changes over the turn (output gear runout)", "lost-motion", "irb2000",
+                Expected.named(claim(LOST_MOTION, 2)), (n, r) -> add(runoutLostMotion(1, r)), same()));
+        c.add(s("lost motion j1 irb2400 whose play changes over the turn (output gear runout), directions not recorded",
+                "lost-motion", "irb2400", Expected.named(claim(LOST_MOTION, 1)), (n, r) -> add(runoutLostMotion(0, r)),
+                p -> p.withDirColumns(false)));
         c.add(s("lost motion j3 building up over the move (friction wind-up)", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 3)),
                 (n, r) -> add(new JointError.WindUpLostMotion(2, Math.toRadians(uniform(r, 0.03, 0.06)), Math.toRadians(uniform(r, 3, 10)))),
                 same()));

@@ -1438,6 +1438,15 @@ public final class Diagnoser {
                     bestPress = formPress;
                 }
             }
+            if (e.kind() == Effect.Kind.BACKLASH && !e.heldByGravity() && !e.runout()) {
+                // The same lost motion (in the form just chosen) with a play that changes over the turn of its joint.
+                Effect ro = Effect.withRunout(best != null ? best : e);
+                double pr = at.pressReplacing(k, ro, w.conditions);
+                if (!refusedAliases.contains(ro.label()) && pr < bestPress * (1 - ALIAS_MARGIN)) {
+                    best = ro;
+                    bestPress = pr;
+                }
+            }
             if (e.kind() == Effect.Kind.THERMAL_LINK && lag != null) {
                 // The lags of the growth, re-chosen with the rest in place: one for every link, then each link its own
                 // where that predicts left-out poses better.
@@ -1468,10 +1477,12 @@ public final class Diagnoser {
                     aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, the physical form of the same joint "
                             + "angle's error, which predicts left-out poses as well (leave-one-pose-out error %.1f against %.1f)",
                             e.label(), best.label(), refitted, own));
-            } else if (selected.contains(best))
+            } else if (selected.contains(best)) {
                 aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
                         + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
-            else {
+                // what other effects held of a play changing over the turn before it had that form is now its own
+                if (best.runout()) fit = noLongerNeeded(w, fit, selected, absorbedCols, steps, familySize, best, aliasNotes);
+            } else {
                 refusedAliases.add(best.label());
                 aliasNotes.add(String.format(Locale.ROOT, "%s predicts left-out poses better than %s (leave-one-pose-out "
                         + "error %.1f against %.1f), but its estimate leaves the physical bounds once fitted with the rest, "
@@ -1609,6 +1620,13 @@ public final class Diagnoser {
                 (e, v) -> String.format(Locale.ROOT, "%s: the links also grow as the drives warm them while the robot works (time "
                         + "constant %s), beside the air's temperature; the validation poses confirm it (weighted error %.1f against %.1f "
                         + "without). Compensation takes the robot warmed through", e.label(), e.warmWords(), v[0], v[1]), aliasNotes);
+        // With validation data, a play that changes over the turn is claimed only when it predicts the validation poses better
+        // than the same lost motion with a constant play.
+        fit = validatedForm(w, fit, selected, absorbedCols, steps, Effect::runout, Effect::withoutRunout,
+                (e, v) -> String.format(Locale.ROOT, "%s predicted the left-out training poses better than a constant play but not "
+                        + "the validation poses (weighted error %.1f against %.1f), so the play is taken as constant", e.label(), v[0], v[1]),
+                (e, v) -> String.format(Locale.ROOT, "%s predicts the validation poses better than the same lost motion with a "
+                        + "constant play (weighted error %.1f against %.1f)", e.label(), v[0], v[1]), aliasNotes);
         // With validation data, a stiffening spring is claimed only when it predicts the validation poses better than a linear one.
         fit = validatedForm(w, fit, selected, absorbedCols, steps, Effect::stiffens, Effect::withoutStiffening,
                 (e, v) -> String.format(Locale.ROOT, "%s predicted the left-out training poses better than a linear spring but not "
@@ -1741,7 +1759,8 @@ public final class Diagnoser {
             if (!foundFinal.isEmpty() && !outliers.isEmpty())
                 notes.add("the outlier test is not reliable on these poses: a structure no named effect explains is left (see "
                         + "located), and poses on it can look like bad measurements; check the poses reported as outliers against it");
-            List<String> warnings = warnings(foundFinal, selected, fin, w, rssLeft, dfLeft, rows.size(), model.dof());
+            double statedTrainFloor = Double.isFinite(stated) ? noiseFloor(stated, kind.components) * perfectShare(fin, false) : Double.NaN;
+            List<String> warnings = warnings(foundFinal, selected, fin, w, rssLeft, dfLeft, rows.size(), model.dof(), statedTrainFloor);
             if (Double.isFinite(valFinal)) {
                 // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
                 double predicted = fin.trainRms * Math.sqrt((double) fin.m / Math.max(1, fin.m - fin.nf)) * Math.sqrt(1 + (double) fin.nf / fin.m);
@@ -2756,6 +2775,28 @@ public final class Diagnoser {
         return fit;
     }
 
+    /**
+     * After {@code kept} took a richer form: the backward step of the stepwise selection once more
+     * (partial F-test at its Holm threshold, and plausibility), over every other selected effect,
+     * fallbacks included; the weakest that fails leaves, until every one passes.
+     */
+    private static Fit noLongerNeeded(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                      int familySize, Effect kept, List<String> notes) {
+        while (selected.size() > 1) {
+            double threshold = w.o.alpha() / Math.max(1, familySize - selected.size() + 1);
+            double[] p = new double[1];
+            int drop = w.weakest(fit, selected, threshold, e -> e != kept, p);
+            if (drop < 0) break;
+            Effect gone = selected.get(drop);
+            LOG.debug("backward after {}: dropped {} (p {})", kept.label(), gone.label(), p[0]);
+            notes.add(String.format(Locale.ROOT, "%s left the model: beside %s it is no longer significant (p = %.2g against the "
+                    + "threshold %.2g) or no longer plausible", gone.label(), kept.label(), p[0], threshold));
+            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, drop);
+            restampLast(w, fit, steps);
+        }
+        return fit;
+    }
+
     private static List<Effect> withoutOne(List<Effect> es, int k) {
         List<Effect> out = new ArrayList<>(es);
         out.remove(k);
@@ -3357,13 +3398,15 @@ public final class Diagnoser {
                 b.append(e.buildsUp()
                         ? String.format(Locale.ROOT, " Lost motion of joint %d is modelled as building up over the move (build-up "
                         + "length %.1f deg, from the last move before each pose); if it builds up over the travel since the last "
-                        + "reversal rather than the last move, or differs between the two flanks, that model leaves this. To "
-                        + "tell: approach a few poses of joint %d from each side after moves of several sizes (0.5, 2, 10 and 30 "
-                        + "degrees), once in one step and once in several, and compare the lag.", j, Math.toDegrees(e.buildUpRad()), j)
+                        + "reversal rather than the last move, differs between the two flanks, or changes with the speed of the "
+                        + "move (not in the file), that model leaves this. To tell: approach a few poses of joint %d from each side "
+                        + "after moves of several sizes (0.5, 2, 10 and 30 degrees), once in one step and once in several, once "
+                        + "slowly and once fast, and compare the lag.", j, Math.toDegrees(e.buildUpRad()), j)
                         : String.format(Locale.ROOT, " Lost motion of joint %d is modelled as a constant half-play; if the lag "
-                        + "grows with the size of the move before each pose (friction winding up) or differs between the two "
-                        + "flanks, a constant play leaves this. To tell: approach a few poses of joint %d from each side after "
-                        + "moves of several sizes (0.5, 2, 10 and 30 degrees) and compare the lag.", j, j));
+                        + "grows with the size of the move before each pose (friction winding up), differs between the two "
+                        + "flanks or changes with the speed of the move (not in the file), a constant play leaves this. To tell: "
+                        + "approach a few poses of joint %d from each side after moves of several sizes (0.5, 2, 10 and 30 "
+                        + "degrees), slowly and fast, and compare the lag.", j, j));
             }
         if (selected.stream().noneMatch(e -> e.kind() == Effect.Kind.BACKLASH))
             b.append(kind == Measured.PAIRS
@@ -3382,17 +3425,24 @@ public final class Diagnoser {
         return b.toString();
     }
 
-    /** What the report says first when the model leaves error above the noise: what, where, what to measure next. */
+    /**
+     * What the report says first when the model leaves error above the noise: what, where, what to
+     * measure next. The floor is the instrument's stated one on the training poses
+     * ({@code statedFloor}, m) when the file states a noise, else the noise the residuals show once
+     * every structure still located is taken out.
+     */
     static List<String> warnings(List<Locator.Found> left, List<Effect> selected, Fit fit, Work w, double rssLeft, int dfLeft,
-                                 int poses, int dof) {
+                                 int poses, int dof, double statedFloor) {
         List<String> out = new ArrayList<>();
         double sigmaW = Math.sqrt(Math.max(rssLeft, 0) / Math.max(1, dfLeft)); // residual units (1 = the fit's σ)
-        double floor = noiseFloor(sigmaW * w.sigmaPos, fit.problem.measurementSize());
+        boolean stated = Double.isFinite(statedFloor);
+        double floor = stated ? statedFloor : noiseFloor(sigmaW * w.sigmaPos, fit.problem.measurementSize());
         double rms = fit.trainRms;
         List<Locator.Found> unexplained = left;
         if (rms > 1.2 * floor || !unexplained.isEmpty()) {
             StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "The model still leaves %.4f mm RMS on the training poses "
-                    + "against a noise floor of about %.4f mm (%.2f x)", rms * 1e3, floor * 1e3, rms / floor));
+                    + "against %s of about %.4f mm (%.2f x)", rms * 1e3, stated ? "the instrument's stated noise floor on them"
+                    : "a noise floor", floor * 1e3, rms / floor));
             if (unexplained.isEmpty()) sb.append(", and no structure could be located in what is left.");
             else {
                 sb.append(". It lives in: ");
@@ -5017,6 +5067,12 @@ public final class Diagnoser {
                 c.plausible = overlaps(v[0], sd[0], 0, MAX_BACKLASH_RAD);
                 c.plausibility = String.format(Locale.ROOT, "lost motion %.4f deg positive and < %.1f deg",
                         Math.toDegrees(v[0]), Math.toDegrees(MAX_BACKLASH_RAD));
+                if (e.runout()) {
+                    // the play may not close over the turn: its change no larger than its mean
+                    double change = Math.hypot(v[1], v[2]), changeSd = Math.max(sd[1], sd[2]);
+                    c.plausible &= change - 3 * (Double.isFinite(changeSd) ? changeSd : 0) <= v[0] + 3 * (Double.isFinite(sd[0]) ? sd[0] : 0);
+                    c.plausibility += String.format(Locale.ROOT, ", its change over the turn %.4f deg no larger", Math.toDegrees(change));
+                }
             }
             case THERMAL -> {
                 if (e.usesTimeProxy()) {

@@ -195,7 +195,7 @@ public final class DiagnosisReport {
                 h.append(Svg.plot("Evidence: partial residual against the regressor (" + p.x().length + " "
                         + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
-                                new Svg.Series("fitted " + (f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().heldByGravity()
+                                new Svg.Series("fitted " + (f.effect().runout() ? "play over the turn" : f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().heldByGravity()
                                         ? "lost motion held by gravity (centre of the play where the torque is small)" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728",
                                         // an effect on the measured point: its fitted size at each measurement, not a curve of the x variable
                                         f.effect().target() != Effect.Target.POSITION)), false));

@@ -171,6 +171,7 @@ public final class Effect {
     private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
     private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
     private double approach = Double.NaN;    // that backlash: the approach move before each pose (rad); NaN: none in the program
+    private boolean runout;                  // backlash whose play changes once per turn of its joint (b + b_cos cos q + b_sin sin q)
     private double preloadNm = Double.NaN;   // backlash held on one flank by gravity: the torque above which it is held (N·m); NaN: free
     private double preloadWidth;             // that backlash: half-width of the hand-over, a share of preloadNm (0: a sharp one)
     private double[] massScales;             // that backlash, a base tilt: the file's masses re-estimated by a factor each (null: as in the file)
@@ -418,6 +419,32 @@ public final class Effect {
 
     /** The build-up length of a lost motion that builds up over the move, rad (NaN for a constant one). */
     public double buildUpRad() { return buildUp; }
+
+    /**
+     * The same lost motion (constant or building up over the move) with a play that changes once per
+     * turn of its joint: b(q) = b + b_cos·cos q + b_sin·sin q, the output lagging by b(q)/2. An
+     * output gear running off its bearing's centre by e changes its centre distance to the pinion
+     * by e·cos(q − φ) over the turn, and a gear pair's circumferential backlash changes with the
+     * centre distance by 2·Δa·tan α (α the working pressure angle; ISO/TR 10064-2:1996, backlash
+     * from the centre distance), an angle of 2·e·tan α / r at the output of pitch radius r.
+     */
+    public static Effect withRunout(Effect lostMotion) {
+        if (lostMotion.kind != Kind.BACKLASH || lostMotion.heldByGravity())
+            throw new IllegalArgumentException("a play changing over the turn is a form of free lost motion, not of " + lostMotion.label());
+        Effect e = lostMotion.buildsUp() ? windUp(lostMotion.joint, lostMotion.buildUp, lostMotion.approach, lostMotion.moves)
+                : backlash(lostMotion.joint);
+        e.runout = true;
+        return e;
+    }
+
+    /** Whether this is lost motion whose play changes over the turn of its joint ({@link #withRunout}). */
+    public boolean runout() { return kind == Kind.BACKLASH && runout; }
+
+    /** A lost motion with a play that changes over the turn as the same lost motion with a constant play (itself otherwise). */
+    public static Effect withoutRunout(Effect e) {
+        if (!e.runout()) return e;
+        return e.buildsUp() ? windUp(e.joint, e.buildUp, e.approach, e.moves) : backlash(e.joint);
+    }
 
     /** Whether this is a wind-up of poses taken by an approach move ({@link #windUp(int, double, double, Directions.Moves)}). */
     public boolean approached() { return buildsUp() && Double.isFinite(approach); }
@@ -1337,6 +1364,7 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
+            case BACKLASH -> runout ? 3 : 1;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case TOOL_SAG -> 9;
@@ -1360,7 +1388,10 @@ public final class Effect {
                 } else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
             }
             case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
-            case BACKLASH -> out.add("b");
+            case BACKLASH -> {
+                out.add("b");
+                if (runout) { out.add("b_cos"); out.add("b_sin"); }
+            }
             case THERMAL -> out.add(usesTimeProxy() ? "strain" : "alpha");
             case THERMAL_LINK -> {
                 for (int i : links) out.add("alpha_" + linkName(i));
@@ -1473,8 +1504,9 @@ public final class Effect {
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following " + (model != null ? "theta" : "j") + (source + 1) + ")" : "")
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
-            case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg%s)",
-                    Math.toDegrees(buildUp), approached() ? String.format(Locale.ROOT, ", approached by %.1f deg", Math.toDegrees(approach)) : "") : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
+            case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg%s%s)",
+                    Math.toDegrees(buildUp), approached() ? String.format(Locale.ROOT, ", approached by %.1f deg", Math.toDegrees(approach)) : "",
+                    runout ? ", play changing over the turn" : "") : runout ? " (play changing over the turn)" : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
@@ -1544,7 +1576,10 @@ public final class Effect {
      */
     public void regressor(Measurement row, PoseConditions c, double[] g) {
         regressor(row.q(), c, g);
-        if (buildsUp()) g[0] *= windUpShare(row, c.direction(joint));
+        if (buildsUp()) {
+            double share = windUpShare(row, c.direction(joint));
+            for (int i = 0; i < g.length; i++) g[i] *= share;
+        }
     }
 
     /** The drive or strain value at a measured row ({@link #regressor(Measurement, PoseConditions, double[])}). */
@@ -1579,7 +1614,10 @@ public final class Effect {
                     g[o + 2 * i + 1] = Math.cos(stages[i] * q[joint]);
                 }
             }
-            case BACKLASH -> g[0] = lostMotion(q, c);
+            case BACKLASH -> {
+                g[0] = lostMotion(q, c);
+                if (runout) { g[1] = g[0] * Math.cos(q[joint]); g[2] = g[0] * Math.sin(q[joint]); }
+            }
             case THERMAL -> g[0] = conditionX(c);
             case SCALE -> g[0] = q[joint];
             case COUPLING -> g[0] = q[source];
@@ -2045,13 +2083,18 @@ public final class Effect {
                     if (!(wd >= 0 && wd < 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_width", "must be in [0, 1), got " + wd);
                     yield heldByGravity(js.get(0) - 1, g, t, wd, massScales(d, g, "held_mass_scale_", file));
                 }
-                if (!ps.containsKey("build_up_rad")) yield backlash(js.get(0) - 1);
-                double x0 = require(d, "build_up_rad", file);
-                if (!(x0 > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.build_up_rad", "must be > 0, got " + x0);
-                if (!ps.containsKey("approach_rad")) yield windUp(js.get(0) - 1, x0, null);
-                double a = require(d, "approach_rad", file);
-                if (!(a > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.approach_rad", "must be > 0, got " + a);
-                yield windUp(js.get(0) - 1, x0, a, null);
+                Effect form = backlash(js.get(0) - 1);
+                if (ps.containsKey("build_up_rad")) {
+                    double x0 = require(d, "build_up_rad", file);
+                    if (!(x0 > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.build_up_rad", "must be > 0, got " + x0);
+                    double a = Double.NaN;
+                    if (ps.containsKey("approach_rad")) {
+                        a = require(d, "approach_rad", file);
+                        if (!(a > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.approach_rad", "must be > 0, got " + a);
+                    }
+                    form = windUp(js.get(0) - 1, x0, a, null);
+                }
+                yield ps.containsKey("b_cos") || ps.containsKey("b_sin") ? withRunout(form) : form;
             }
             case SCALE -> scale(js.get(0) - 1);
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);

@@ -58,13 +58,21 @@ final class Plots {
             }
             double y = e.valueAt(v, row, c) - proj / dn[i]; // residual is predicted - measured
             double x = xOf(e, row, c);
-            if (e.kind() == Effect.Kind.BACKLASH && !e.buildsUp() && !e.heldByGravity()) x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
+            if (e.runout()) {
+                // the play at this pose: the lag −(b(q)/2)·dir·share over its direction and built-up share
+                int dir = c.direction(e.joint());
+                double share = e.buildsUp() ? e.windUpShare(row, dir) : 1;
+                if (dir == 0 || share < 0.5) continue;
+                y = -2 * y / (dir * share);
+            } else if (e.kind() == Effect.Kind.BACKLASH && !e.buildsUp() && !e.heldByGravity())
+                x += 0.3 * (((i * 0.6180339887) % 1) - 0.5); // spread the two columns of points
             pts.add(new double[] {x, y * unit});
         }
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() || e.stiffens() ? 400 : 2;
+        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() || e.stiffens()
+                || e.runout() ? 400 : 2;
         // a high stage order: enough curve points for about 16 per cycle over the range
         if (e.kind() == Effect.Kind.PERIODIC) nc = (int) Math.max(nc, Math.min(20000, 16 * maxOrder(e) * (hi - lo) / 360));
         double[] cx = new double[nc], cy = new double[nc];
@@ -76,6 +84,7 @@ final class Plots {
         double[] gram = null;
         if (e.kind() == Effect.Kind.PERIODIC) gram = periodogram(x, y, Math.max(8, (int) Math.ceil(maxOrder(e)) + 2));
         return new Diagnosis.Plot(t.ends > 1 ? xLabel(e) + ", at the pose of the pair that carries more of the change" : xLabel(e), e.isStrain() ? "partial residual strain (ppm)"
+                : e.runout() ? "play of joint " + (e.joint() + 1) + " from each pose's partial residual (mdeg)"
                 : "partial residual of joint " + (e.joint() + 1) + " angle (mdeg)", x, y, cx, cy, gram);
     }
 
@@ -104,7 +113,8 @@ final class Plots {
             case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
-            case BACKLASH -> e.approached() ? "travel of joint " + (e.joint() + 1) + " since it last turned, approach included, "
+            case BACKLASH -> e.runout() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
+                    : e.approached() ? "travel of joint " + (e.joint() + 1) + " since it last turned, approach included, "
                     + "signed by its direction (deg)"
                     : e.buildsUp() ? "last move of joint " + (e.joint() + 1) + " before the pose, signed (deg)"
                     : e.heldByGravity() ? "gravity torque on drive " + (e.joint() + 1) + " (N·m)"
@@ -131,7 +141,8 @@ final class Plots {
             case TARGET_INCIDENCE -> Double.NaN; // from the predicted point (alongDisplacement)
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
-            case BACKLASH -> e.buildsUp() && Double.isFinite(e.travel(row, c.direction(e.joint())))
+            case BACKLASH -> e.runout() ? Math.toDegrees(row.q(e.joint()))
+                    : e.buildsUp() && Double.isFinite(e.travel(row, c.direction(e.joint())))
                     ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.travel(row, c.direction(e.joint()))))
                     : e.heldByGravity() ? e.holdingTorque(row.q(), c.payloadKg()) : c.direction(e.joint());
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
@@ -167,7 +178,9 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case BACKLASH -> e.buildsUp() // the lag builds up with the move: −(b/2)·dir·(1 − exp(−|move|/x0))
+            case BACKLASH -> e.runout() // the play over the turn: b + b_cos·cos q + b_sin·sin q
+                    ? v[0] + v[1] * Math.cos(Math.toRadians(x)) + v[2] * Math.sin(Math.toRadians(x))
+                    : e.buildsUp() // the lag builds up with the move: −(b/2)·dir·(1 − exp(−|move|/x0))
                     ? -0.5 * v[0] * Math.signum(x) * Effect.windUpShare(Math.toRadians(x), e.buildUpRad())
                     // held on the flank the torque pushes it to; where the torque is small the direction decides (shown at the centre)
                     : e.heldByGravity() ? e.heldShare(x) * 0.5 * v[0] * Math.signum(x)

@@ -196,7 +196,8 @@ final class Words {
                     + "%.4f mm); the instrument or the robot's base moves. Compensation applies it only when the %s is given.",
                     e.usesTimeProxy() ? "with time" : "with temperature", 1e3 * Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]),
                     e.usesTimeProxy() ? "hour" : "K", 1e3 * v[0], 1e3 * v[1], 1e3 * v[2], e.usesTimeProxy() ? "time" : "temperature");
-            case BACKLASH -> e.heldByGravity()
+            case BACKLASH -> {
+                String text = e.heldByGravity()
                     ? String.format(Locale.ROOT, "Joint %d has backlash of %.4f ± %.4f deg held on one flank by gravity except "
                     + "where the gravity torque on it is small: where the torque is above %.1f N·m%s (%s) the "
                     + "output sits half the play ahead in the direction gravity pushes it, whatever the last motion; below it "
@@ -223,6 +224,9 @@ final class Words {
                     : String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
                     + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in%s (directions %s).", e.joint() + 1,
                     Math.toDegrees(v[0]), Math.toDegrees(s[0]), at, dirs.words);
+                if (e.runout()) text += runout(e, v);
+                yield text;
+            }
             case THERMAL -> e.usesTimeProxy()
                     ? String.format(Locale.ROOT, "The arm grows while it warms up (thermal expansion, inferred from time): "
                     + "strain %.3g ± %.2g at saturation, time constant %.0f s%s.", v[0], s[0], e.tauS(), e.coolsInPauses()
@@ -372,5 +376,19 @@ final class Words {
                 + "settles). It is modelled as such so compensation can use it, but its cause is unknown: re-measure a fixed "
                 + "reference point every few poses and read the instrument's level before and after.", time ? "time" : "temperature",
                 e.rangeLo(), e.rangeHi(), e.along().unit, 1e6 * tilt, Math.toDegrees(Math.atan2(w[1], w[0])), 1e6 * w[2], 1e3 * move);
+    }
+
+    /**
+     * A play that changes over the turn, in words: its least and largest width over the turn and
+     * where it is widest (values b, b_cos, b_sin in rad).
+     */
+    static String runout(Effect e, double[] v) {
+        double change = Math.hypot(v[1], v[2]);
+        double widest = Math.toDegrees(Math.atan2(v[2], v[1]));
+        return String.format(Locale.ROOT, " Its play changes over the turn of joint %d, from %.4f to %.4f deg, widest at q%d = %.0f deg: "
+                + "an output gear running off its bearing's centre (runout) moves closer to its pinion and away once per turn, and "
+                + "the play between their teeth changes with that distance (chosen by the leave-one-pose-out error; to confirm it, "
+                + "approach the joint from both sides at several angles over its range and compare the lag).", e.joint() + 1,
+                Math.toDegrees(v[0] - change), Math.toDegrees(v[0] + change), e.joint() + 1, widest);
     }
 }

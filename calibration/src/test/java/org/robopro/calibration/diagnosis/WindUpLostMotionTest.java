@@ -67,7 +67,7 @@ class WindUpLostMotionTest {
         assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("backlash j3: named by 5 of 5 folds")), d.notes().toString());
     }
 
-    /** A constant lost motion (world truth) must not be named as one that builds up. */
+    /** A constant lost motion (world truth) must not be named as one that builds up, nor as a play that changes over the turn. */
     @Test
     void constantLostMotion_staysConstant() {
         for (String s : List.of("lost motion j3, random order, directions recorded", "lost motion j2, directions not recorded")) {
@@ -77,6 +77,7 @@ class WindUpLostMotionTest {
             Effect e = d.effects().get(0).effect();
             assertEquals(Effect.Kind.BACKLASH, e.kind(), s);
             assertFalse(e.buildsUp(), s + ": named " + e.label() + "; notes " + d.notes());
+            assertFalse(e.runout(), s + ": named " + e.label() + " (a play changing over the turn); notes " + d.notes());
         }
     }
 
