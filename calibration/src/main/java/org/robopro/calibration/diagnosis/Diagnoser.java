@@ -553,10 +553,15 @@ public final class Diagnoser {
             return without.reported();
         }
         List<String> notes = new ArrayList<>(d.notes());
+        // those the final model still puts far beyond the rule where it misses the stated floor are reported all the same
+        List<String> reportedAnyway = under.stream().filter(d.outliers()::contains).toList();
         notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but %s not reported as bad "
                 + "measurements: left out, %d more poses come beyond the rule (%s), so they belong to a structure the model does not "
-                + "follow, not to bad readings", under.size() == 1 ? "pose" : "poses", String.join(", ", under), OUTLIER_K,
-                under.size() == 1 ? "is" : "are", more.size(), String.join(", ", more)));
+                + "follow, not to bad readings%s", under.size() == 1 ? "pose" : "poses", String.join(", ", under), OUTLIER_K,
+                under.size() == 1 ? "is" : "are", more.size(), String.join(", ", more), reportedAnyway.isEmpty() ? ""
+                : String.format(Locale.ROOT, " (but %s, beyond %.0f robust sigmas of a model that misses the stated floor, %s "
+                + "reported as %s)", String.join(", ", reportedAnyway), SHORT_MODEL_SIGMAS, reportedAnyway.size() == 1 ? "is" : "are",
+                reportedAnyway.size() == 1 ? "a bad reading" : "bad readings")));
         return with(d, d.outliers(), notes);
     }
 
@@ -964,13 +969,14 @@ public final class Diagnoser {
             Diagnosis d = d();
             if (!missesFloor) return d;
             List<String> far = new ArrayList<>(), near = new ArrayList<>();
-            for (String id : d.outliers()) (sigmasUnder.getOrDefault(id, Double.POSITIVE_INFINITY) > SHORT_MODEL_SIGMAS ? far : near).add(id);
+            // a pose the final model does not put beyond the rule at all is within it: near
+            for (String id : d.outliers()) (sigmasUnder.getOrDefault(id, 0.0) > SHORT_MODEL_SIGMAS ? far : near).add(id);
             if (near.isEmpty()) return d;
             List<String> notes = new ArrayList<>(d.notes());
-            notes.add(String.format(Locale.ROOT, "%s %s beyond %.0f robust sigmas of the final model but within %.0f, and the model misses "
-                    + "the instrument's stated floor (it does not follow every pose): %s left out of the fit but not reported as bad "
-                    + "readings", near.size() == 1 ? "pose" : "poses", String.join(", ", near), OUTLIER_K, SHORT_MODEL_SIGMAS,
-                    near.size() == 1 ? "it is" : "they are"));
+            notes.add(String.format(Locale.ROOT, "%s %s %s within %.0f robust sigmas of the final model (the rule flags beyond %.0f), "
+                    + "and the model misses the instrument's stated floor (it does not follow every pose): %s left out of the fit but "
+                    + "not reported as bad readings", near.size() == 1 ? "pose" : "poses", String.join(", ", near),
+                    near.size() == 1 ? "lies" : "lie", SHORT_MODEL_SIGMAS, OUTLIER_K, near.size() == 1 ? "it is" : "they are"));
             return with(d, far, notes);
         }
 
