@@ -93,16 +93,18 @@ class LeadsBesideFindingsTest {
 
     @Test
     void harmonicLeftBesideWindUpThatValidationDoesNotConfirm_isAWeakLeadNotALocatedStructure() {
-        // What the lost motion that builds up over the move leaves, on a campaign approached mostly from one side, looks
-        // like 24 cycles per turn of joint 3 on the training poses (p 1.5e-8); fitted, it raises the validation error.
+        // A lost motion that builds up over the move, every pose approached by a move the file does not hold, and no dir
+        // columns: the directions inferred from the measuring order miss the approaches, and what the model leaves looks like
+        // 38 cycles per turn of joint 3 on the training poses; fitted, it does not lower the validation error.
         WorldCampaigns.Sim c = WorldCampaigns.of(Scenario.named(
-                "lost motion j3 building up over the move, approached by 0.5-10 deg from above, a fifth from below").trial(20261124L));
+                "lost motion j3 building up over the move, approached by 0.5-10 deg from above, a fifth from below")
+                .trial(20261131L, p -> p.withDirColumns(false)));
         Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
         assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.BACKLASH && f.effect().joint() == 2),
                 "lost motion of joint 3 not named: " + d.effects());
-        assertTrue(d.located().stream().noneMatch(l -> l.explainedBy() == null && l.shape().equals("24 cycles per turn of joint 3")),
+        assertTrue(d.located().stream().noneMatch(l -> l.explainedBy() == null && l.shape().equals("38 cycles per turn of joint 3")),
                 "an unconfirmed harmonic reported as located: " + unexplained(d));
-        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("A weak lead, not a finding") && n.contains("24 cycles per turn of joint 3")
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("A weak lead, not a finding") && n.contains("38 cycles per turn of joint 3")
                 && n.contains("does not lower the validation")), "no weak lead in the notes: " + d.notes());
     }
 }
