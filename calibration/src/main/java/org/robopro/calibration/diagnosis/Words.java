@@ -220,7 +220,8 @@ final class Words {
                     + "it went the other way (or stopped short of the approach) the drive turned round short of the pose and its "
                     + "lag built up over the approach alone, where it went the same way over that move; the approach's length "
                     + "that predicts left-out poses best "
-                    + "is %.1f deg (check it against the measuring program).", Math.toDegrees(e.approachRad())) : "")
+                    + "is %.1f deg in this model (friction laws differ in how much a short move unwinds, so compare it with the "
+                    + "measuring program's approach rather than take it for that).", Math.toDegrees(e.approachRad())) : "")
                     : String.format(Locale.ROOT, "Joint %d has lost motion (backlash): its output lags the motor-side "
                     + "encoder by half of %.4f ± %.4f deg behind the direction it last moved in%s (directions %s).", e.joint() + 1,
                     Math.toDegrees(v[0]), Math.toDegrees(s[0]), at, dirs.words);
