@@ -3977,7 +3977,6 @@ public final class Diagnoser {
         Candidate c = at.test(a, w.conditions);
         boolean without = c.keptColumns == 0 || !(c.p < w.o.alpha());
         if (without) LOG.debug("alias: {} not in place of {}: more parameters and nothing significant beside it (p {})", a.label(), e.label(), c.p);
-        else LOG.debug("alias: {} may take the place of {}: significant beside it (p {}, F {} on {})", a.label(), e.label(), c.p, c.f, c.df1);
         return without;
     }
 

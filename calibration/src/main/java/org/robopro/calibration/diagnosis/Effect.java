@@ -1010,16 +1010,10 @@ public final class Effect {
 
     /**
      * Whether this fallback holds part of named effect {@code e}'s shape in its span: a link's
-     * bending holds the part of its joint's spring that the weight across the link drives (δ = L·θ);
-     * a smooth error of a drive along a controller value holds the error linear in that value
-     * (cubic B-splines reproduce every polynomial up to degree 3 over their range: de Boor, A
-     * Practical Guide to Splines, 2001, ch. IX), so it holds a gear-ratio error of its own drive's
-     * value and a coupling from the drive whose value it follows whole.
+     * bending holds the part of its joint's spring that the weight across the link drives (δ = L·θ).
      */
     public boolean holdsPartOf(Effect e) {
         if (kind == Kind.BASE_TURN && e.kind == Kind.DRIFT) return e.usesTimeProxy() == (along == Along.TIME);
-        if (kind == Kind.SMOOTH && !followsModelAngle() && e.joint == joint)
-            return e.kind == Kind.SCALE && angleJoint() == joint || e.kind == Kind.COUPLING && angleJoint() == e.source;
         return kind == Kind.LINK_SAG && e.kind == Kind.COMPLIANCE && e.joint == joint;
     }
 
