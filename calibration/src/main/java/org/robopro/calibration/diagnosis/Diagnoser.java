@@ -1944,16 +1944,6 @@ public final class Diagnoser {
     /** Build-up lengths of the wind-up grid, rad: 0.5° to 40° in steps of 25 %, refined between the neighbours of the best. */
     static final double WINDUP_MIN_RAD = Math.toRadians(0.5), WINDUP_MAX_RAD = Math.toRadians(40), WINDUP_STEP = 1.25;
 
-    /**
-     * The lost motion of {@code joint} that builds up over the move, with the build-up length that
-     * predicts left-out poses best in place of selected effect {@code k}: a grid of lengths (b is
-     * linear at each), then a golden-section search in log length between the best one's
-     * neighbours. Returned as a term whose value is that leave-one-pose-out error; null when no
-     * length is testable.
-     */
-    static Effect.Term bestWindUp(Tester at, int k, int joint, Directions.Moves moves, List<PoseConditions> conds) {
-        return bestWindUp(at, k, joint, moves, conds, false);
-    }
 
     /**
      * Approach lengths of the approached wind-up's grid, rad: 0.25° to 16° in doublings, then refined
@@ -1963,10 +1953,15 @@ public final class Diagnoser {
             Math.toRadians(4), Math.toRadians(8), Math.toRadians(16)};
 
     /**
-     * As {@link #bestWindUp(Tester, int, int, Directions.Moves, List)}; with {@code approached} (the
-     * joint's poses were taken by approach moves the file does not hold) the approach's length is
-     * searched too: the build-up grid at every approach length of {@link #APPROACH_GRID_RAD}, then a
-     * golden-section search of each length in turn between the best one's neighbours.
+     * The lost motion of {@code joint} that builds up over the move, with the build-up length that
+     * predicts left-out poses best in place of selected effect {@code k}: a grid of lengths (b is
+     * linear at each), then a golden-section search in log length between the best one's
+     * neighbours. Returned as a term whose value is that leave-one-pose-out error; null when no
+     * length is testable.
+     * With {@code approached} (the joint's poses were taken by approach moves the file does not
+     * hold) the approach's length is searched too: the build-up grid at every approach length of
+     * {@link #APPROACH_GRID_RAD}, then a golden-section search of each length in turn between the
+     * best one's neighbours.
      */
     static Effect.Term bestWindUp(Tester at, int k, int joint, Directions.Moves moves, List<PoseConditions> conds, boolean approached) {
         List<Double> grid = new ArrayList<>();
@@ -2766,19 +2761,9 @@ public final class Diagnoser {
      */
     private static Fit stillSignificant(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols,
                                         List<Step> steps, int familySize, List<String> notes) {
-        while (selected.stream().anyMatch(e -> !e.isFallback())) {
-            double threshold = w.o.alpha() / Math.max(1, familySize - selected.size() + 1);
-            double[] p = new double[1];
-            int drop = w.weakest(fit, selected, threshold, e -> !e.isFallback(), p);
-            if (drop < 0) break;
-            Effect gone = selected.get(drop);
-            LOG.debug("final backward: dropped {} (p {})", gone.label(), p[0]);
-            notes.add(String.format(Locale.ROOT, "%s is not claimed: in the final model, beside the structures located, it "
-                    + "is no longer significant (p = %.2g against the threshold %.2g) or no longer plausible", gone.label(), p[0], threshold));
-            fit = dropAndRefit(w, fit, selected, absorbedCols, steps, drop);
-            restampLast(w, fit, steps);
-        }
-        return fit;
+        return backward(w, fit, selected, absorbedCols, steps, familySize, e -> !e.isFallback(), (gone, p) -> String.format(Locale.ROOT,
+                "%s is not claimed: in the final model, beside the structures located, it is no longer significant (p = %.2g against "
+                + "the threshold %.2g) or no longer plausible", gone.label(), p[0], p[1]), notes);
     }
 
     /**
@@ -2788,15 +2773,27 @@ public final class Diagnoser {
      */
     private static Fit noLongerNeeded(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                       int familySize, Effect kept, List<String> notes) {
-        while (selected.size() > 1) {
+        return backward(w, fit, selected, absorbedCols, steps, familySize, e -> e != kept, (gone, p) -> String.format(Locale.ROOT,
+                "%s left the model: beside %s it is no longer significant (p = %.2g against the threshold %.2g) or no longer plausible",
+                gone.label(), kept.label(), p[0], p[1]), notes);
+    }
+
+    /**
+     * The backward step over the selected effects {@code which} accepts, at the Holm threshold of the
+     * family's size: the weakest that fails its partial F-test or its bounds leaves (said by
+     * {@code note} from it and {p, threshold}), until every one passes.
+     */
+    private static Fit backward(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                int familySize, java.util.function.Predicate<Effect> which,
+                                java.util.function.BiFunction<Effect, double[], String> note, List<String> notes) {
+        while (selected.stream().anyMatch(which)) {
             double threshold = w.o.alpha() / Math.max(1, familySize - selected.size() + 1);
             double[] p = new double[1];
-            int drop = w.weakest(fit, selected, threshold, e -> e != kept, p);
+            int drop = w.weakest(fit, selected, threshold, which, p);
             if (drop < 0) break;
             Effect gone = selected.get(drop);
-            LOG.debug("backward after {}: dropped {} (p {})", kept.label(), gone.label(), p[0]);
-            notes.add(String.format(Locale.ROOT, "%s left the model: beside %s it is no longer significant (p = %.2g against the "
-                    + "threshold %.2g) or no longer plausible", gone.label(), kept.label(), p[0], threshold));
+            LOG.debug("backward: dropped {} (p {})", gone.label(), p[0]);
+            notes.add(note.apply(gone, new double[] {p[0], threshold}));
             fit = dropAndRefit(w, fit, selected, absorbedCols, steps, drop);
             restampLast(w, fit, steps);
         }

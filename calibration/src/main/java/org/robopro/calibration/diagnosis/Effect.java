@@ -431,10 +431,15 @@ public final class Effect {
     public static Effect withRunout(Effect lostMotion) {
         if (lostMotion.kind != Kind.BACKLASH || lostMotion.heldByGravity())
             throw new IllegalArgumentException("a play changing over the turn is a form of free lost motion, not of " + lostMotion.label());
-        Effect e = lostMotion.buildsUp() ? windUp(lostMotion.joint, lostMotion.buildUp, lostMotion.approach, lostMotion.moves)
-                : backlash(lostMotion.joint);
+        Effect e = constantPlay(lostMotion);
         e.runout = true;
         return e;
+    }
+
+    /** A new lost motion of the same form as {@code lostMotion} (constant or building up), with a constant play. */
+    private static Effect constantPlay(Effect lostMotion) {
+        return lostMotion.buildsUp() ? windUp(lostMotion.joint, lostMotion.buildUp, lostMotion.approach, lostMotion.moves)
+                : backlash(lostMotion.joint);
     }
 
     /** Whether this is lost motion whose play changes over the turn of its joint ({@link #withRunout}). */
@@ -442,8 +447,7 @@ public final class Effect {
 
     /** A lost motion with a play that changes over the turn as the same lost motion with a constant play (itself otherwise). */
     public static Effect withoutRunout(Effect e) {
-        if (!e.runout()) return e;
-        return e.buildsUp() ? windUp(e.joint, e.buildUp, e.approach, e.moves) : backlash(e.joint);
+        return e.runout() ? constantPlay(e) : e;
     }
 
     /** Whether this is a wind-up of poses taken by an approach move ({@link #windUp(int, double, double, Directions.Moves)}). */

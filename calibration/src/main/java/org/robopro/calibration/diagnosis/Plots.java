@@ -141,10 +141,12 @@ final class Plots {
             case TARGET_INCIDENCE -> Double.NaN; // from the predicted point (alongDisplacement)
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
-            case BACKLASH -> e.runout() ? Math.toDegrees(row.q(e.joint()))
-                    : e.buildsUp() && Double.isFinite(e.travel(row, c.direction(e.joint())))
-                    ? c.direction(e.joint()) * Math.toDegrees(Math.abs(e.travel(row, c.direction(e.joint()))))
-                    : e.heldByGravity() ? e.holdingTorque(row.q(), c.payloadKg()) : c.direction(e.joint());
+            case BACKLASH -> {
+                double travel = e.buildsUp() ? e.travel(row, c.direction(e.joint())) : Double.NaN;
+                yield e.runout() ? Math.toDegrees(row.q(e.joint()))
+                        : Double.isFinite(travel) ? c.direction(e.joint()) * Math.toDegrees(Math.abs(travel))
+                        : e.heldByGravity() ? e.holdingTorque(row.q(), c.payloadKg()) : c.direction(e.joint());
+            }
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
         };
