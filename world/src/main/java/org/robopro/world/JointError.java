@@ -93,6 +93,41 @@ public sealed interface JointError {
         @Override public double delta(double[] q, Moment m) { return -0.5 * play(q[joint]) * m.dir()[joint]; }
     }
 
+    /**
+     * Lost motion of the last gear pair of a drive whose two gears both run off their centres: the
+     * output gear ({@code gearTeeth}) by {@code gearRunoutM}, and the pinion driving it
+     * ({@code pinionTeeth}, turning gearTeeth/pinionTeeth times per output turn, the other way) by
+     * {@code pinionRunoutM}. Each moves the centre distance by its runout times the cosine of its own
+     * angle, and the circumferential backlash changes with the centre distance by 2 Δa tan α
+     * (ISO/TR 10064-2:1996; as an angle of the output gear of pitch radius r). The output lags by
+     * half the play: q_out = q - (play/2) dir.
+     */
+    record GearPairLostMotion(int joint, double width, double gearRunoutM, double gearPhase, double pinionRunoutM, double pinionPhase,
+                              int gearTeeth, int pinionTeeth, double gearPitchRadiusM, double pressureAngle) implements JointError {
+        public GearPairLostMotion {
+            if (!(2 * (gearRunoutM + pinionRunoutM) * Math.tan(pressureAngle) / gearPitchRadiusM < width))
+                throw new IllegalArgumentException("the play would close: runouts " + gearRunoutM + " + " + pinionRunoutM
+                        + " m against width " + width + " rad");
+        }
+
+        /** The pinion's angle when the output is at q, rad. */
+        public double pinionAngle(double q) { return -q * gearTeeth / pinionTeeth; }
+
+        /** The play at output angle q, rad. */
+        public double play(double q) {
+            double da = gearRunoutM * Math.cos(q - gearPhase) + pinionRunoutM * Math.cos(pinionAngle(q) - pinionPhase);
+            return width + 2 * da * Math.tan(pressureAngle) / gearPitchRadiusM;
+        }
+
+        /** The play's change by the pinion's runout alone (amplitude), rad. */
+        public double pinionChange() { return 2 * pinionRunoutM * Math.tan(pressureAngle) / gearPitchRadiusM; }
+
+        /** The play's change by the output gear's runout alone (amplitude), rad. */
+        public double gearChange() { return 2 * gearRunoutM * Math.tan(pressureAngle) / gearPitchRadiusM; }
+
+        @Override public double delta(double[] q, Moment m) { return -0.5 * play(q[joint]) * m.dir()[joint]; }
+    }
+
     /** Gear-ratio error: the output turns (1 + eps) times what the controller assumes. */
     record Scale(int joint, double eps) implements JointError {
         @Override public double delta(double[] q, Moment m) { return eps * q[joint]; }

@@ -207,6 +207,25 @@ public record Scenario(String name, String family, String robot, Expected expect
         return new JointError.RunoutLostMotion(joint, width, runout, 2 * Math.PI * r.nextDouble(), radius, alpha);
     }
 
+    /**
+     * Lost motion 0.02–0.05° of a last gear pair whose pinion (13–23 teeth, driving an output gear
+     * 3.2–6.8 times its size, pitch radius 60–120 mm, pressure angle 20°) runs off its centre by
+     * enough to change the play by 30–80 % of its width, and, with {@code gearToo}, whose output gear
+     * runs off its centre by as much again as the pinion (0.5–1 times). The tooth counts make no whole
+     * ratio: a whole ratio would bring the same teeth into mesh every turn and wear them unevenly.
+     */
+    public static JointError.GearPairLostMotion gearPairLostMotion(int joint, boolean gearToo, Random r) {
+        double width = Math.toRadians(uniform(r, 0.02, 0.05)), radius = uniform(r, 0.06, 0.12), alpha = Math.toRadians(20);
+        int zp = 13 + r.nextInt(11), zg = (int) Math.round(uniform(r, 3.2, 6.8) * zp);
+        if (zg % zp == 0) zg++;
+        double change = uniform(r, 0.3, 0.8) * width;
+        double pinion = change, gear = gearToo ? uniform(r, 0.5, 1) * change : 0;
+        double scale = gearToo ? 1 / (1 + gear / pinion) : 1; // the two together still change the play by 30–80 %
+        double toM = radius / (2 * Math.tan(alpha));
+        return new JointError.GearPairLostMotion(joint, width, gear * scale * toM, 2 * Math.PI * r.nextDouble(), pinion * scale * toM,
+                2 * Math.PI * r.nextDouble(), zg, zp, radius, alpha);
+    }
+
     /** Gear-ratio error ±(1–3)·10⁻⁴. */
     public static JointError.Scale gearRatio(int joint, Random r) { return new JointError.Scale(joint, signed(r, 1e-4, 3e-4)); }
 
@@ -390,6 +409,13 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("lost motion j1 irb2400 whose play changes over the turn (output gear runout), directions not recorded",
                 "lost-motion", "irb2400", Expected.named(claim(LOST_MOTION, 1)), (n, r) -> add(runoutLostMotion(0, r)),
                 p -> p.withDirColumns(false)));
+        c.add(s("lost motion j3 whose play changes with its pinion's turn (eccentric pinion)", "lost-motion", "irb2000",
+                Expected.named(claim(LOST_MOTION, 3)), (n, r) -> add(gearPairLostMotion(2, false, r)), same()));
+        c.add(s("lost motion j1 puma560 whose play changes with its pinion's turn (eccentric pinion), directions not recorded",
+                "lost-motion", "puma560", Expected.named(claim(LOST_MOTION, 1)), (n, r) -> add(gearPairLostMotion(0, false, r)),
+                p -> p.withDirColumns(false)));
+        c.add(s("lost motion j2 whose play changes with its output gear's and its pinion's turn (both eccentric)", "lost-motion",
+                "irb2000", Expected.named(claim(LOST_MOTION, 2)), (n, r) -> add(gearPairLostMotion(1, true, r)), same()));
         c.add(s("lost motion j3 building up over the move (friction wind-up)", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 3)),
                 (n, r) -> add(new JointError.WindUpLostMotion(2, Math.toRadians(uniform(r, 0.03, 0.06)), Math.toRadians(uniform(r, 3, 10)))),
                 same()));

@@ -1445,12 +1445,36 @@ public final class Diagnoser {
                 }
             }
             if (e.kind() == Effect.Kind.BACKLASH && !e.heldByGravity() && !e.runout()) {
-                // The same lost motion (in the form just chosen) with a play that changes over the turn of its joint.
-                Effect ro = Effect.withRunout(best != null ? best : e);
-                double pr = at.pressReplacing(k, ro, w.conditions);
-                if (!refusedAliases.contains(ro.label()) && pr < bestPress * (1 - ALIAS_MARGIN)) {
-                    best = ro;
-                    bestPress = pr;
+                // The same lost motion (in the form just chosen) with a play that changes over the turn of its joint: once
+                // per turn (the output gear), or at the order the lag's spectrum shows (a pinion of the last stage).
+                Effect form = best != null ? best : e;
+                List<Effect> forms = new ArrayList<>(List.of(Effect.withRunout(form)));
+                StageScan.PlayLine line = StageScan.playOrder(at, e, o.alpha());
+                if (line != null && line.stage().order() != 1) {
+                    // the order the left-out poses choose within the scan's grid step of the line (one below the stage scan's
+                    // least stage order stays whole: a fraction of a cycle there is the geometry's and the low orders' alias; a
+                    // pinion's ratio is seldom whole): alone, and beside the output gear's runout (once per turn), each form judged
+                    // against the better before it
+                    double f0 = line.stage().refined(), lo = Math.max(1, f0 - line.step()), hi = f0 + line.step();
+                    int kk = k;
+                    for (boolean once : new boolean[] {false, true}) {
+                        java.util.function.DoubleFunction<Effect> at_ = f -> once ? Effect.withRunout(form, 1, f) : Effect.withRunout(form, f);
+                        double f = line.stage().order();
+                        if (f0 >= StageScan.MIN_STAGE_ORDER) {
+                            double[] r = goldenLog(l -> at.pressReplacing(kk, at_.apply(Math.exp(l)), w.conditions), lo, hi);
+                            if (r[1] < at.pressReplacing(k, at_.apply(f), w.conditions)) f = Math.exp(r[0]);
+                        }
+                        forms.add(at_.apply(f));
+                    }
+                }
+                if (LOG.isDebugEnabled()) LOG.debug("play of {}: line {}", e.label(), line == null ? "none" : line.stage());
+                for (Effect ro : forms) {
+                    double pr = at.pressReplacing(k, ro, w.conditions);
+                    LOG.debug("alias: {} PRESS {} against {} (best {})", ro.label(), pr, own, bestPress);
+                    if (!refusedAliases.contains(ro.label()) && pr < bestPress * (1 - ALIAS_MARGIN)) {
+                        best = ro;
+                        bestPress = pr;
+                    }
                 }
             }
             if (e.kind() == Effect.Kind.THERMAL_LINK && lag != null) {
@@ -5003,13 +5027,22 @@ public final class Diagnoser {
     /** S − U C for the coefficients c = Uᵀ S of {@link #spanCoefficients}. */
     static double[] subtractSpan(double[] u, int rank, int m, double[] s, int k, double[] c) {
         double[] out = s.clone();
+        int r4 = rank & ~3;
         for (int i = 0; i < m; i++) {
             int ui = i * rank, si = i * k;
             for (int col = 0; col < k; col++) {
                 int cc = col * rank;
-                double v = 0;
-                for (int r = 0; r < rank; r++) v += u[ui + r] * c[cc + r];
-                out[si + col] -= v;
+                // four partial sums: the row's dot product is a chain of dependent additions otherwise
+                double v0 = 0, v1 = 0, v2 = 0, v3 = 0;
+                int r = 0;
+                for (; r < r4; r += 4) {
+                    v0 += u[ui + r] * c[cc + r];
+                    v1 += u[ui + r + 1] * c[cc + r + 1];
+                    v2 += u[ui + r + 2] * c[cc + r + 2];
+                    v3 += u[ui + r + 3] * c[cc + r + 3];
+                }
+                for (; r < rank; r++) v0 += u[ui + r] * c[cc + r];
+                out[si + col] -= (v0 + v1) + (v2 + v3);
             }
         }
         return out;
@@ -5071,8 +5104,12 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "lost motion %.4f deg positive and < %.1f deg",
                         Math.toDegrees(v[0]), Math.toDegrees(MAX_BACKLASH_RAD));
                 if (e.runout()) {
-                    // the play may not close over the turn: its change no larger than its mean
-                    double change = Math.hypot(v[1], v[2]), changeSd = Math.max(sd[1], sd[2]);
+                    // the play may not close over the turn: its change (at every order at once) no larger than its mean
+                    double change = 0, changeSd = 0;
+                    for (int i = 1; i + 1 < v.length; i += 2) {
+                        change += Math.hypot(v[i], v[i + 1]);
+                        changeSd = Math.max(changeSd, Math.max(sd[i], sd[i + 1]));
+                    }
                     c.plausible &= change - 3 * (Double.isFinite(changeSd) ? changeSd : 0) <= v[0] + 3 * (Double.isFinite(sd[0]) ? sd[0] : 0);
                     c.plausibility += String.format(Locale.ROOT, ", its change over the turn %.4f deg no larger", Math.toDegrees(change));
                 }

@@ -171,7 +171,7 @@ public final class Effect {
     private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
     private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
     private double approach = Double.NaN;    // that backlash: the approach move before each pose (rad); NaN: none in the program
-    private boolean runout;                  // backlash whose play changes once per turn of its joint (b + b_cos cos q + b_sin sin q)
+    private double[] runout = new double[0]; // backlash whose play changes over the turn of its joint (b + Σ b_cos,f cos f q + b_sin,f sin f q): the orders f
     private double preloadNm = Double.NaN;   // backlash held on one flank by gravity: the torque above which it is held (N·m); NaN: free
     private double preloadWidth;             // that backlash: half-width of the hand-over, a share of preloadNm (0: a sharp one)
     private double[] massScales;             // that backlash, a base tilt: the file's masses re-estimated by a factor each (null: as in the file)
@@ -428,13 +428,46 @@ public final class Effect {
      * centre distance by 2·Δa·tan α (α the working pressure angle; ISO/TR 10064-2:1996, backlash
      * from the centre distance), an angle of 2·e·tan α / r at the output of pitch radius r.
      */
-    public static Effect withRunout(Effect lostMotion) {
+    public static Effect withRunout(Effect lostMotion) { return withRunout(lostMotion, 1); }
+
+    /**
+     * The same lost motion with a play that changes at each of {@code orders} (times per turn of its
+     * joint): b(q) = b + Σ_f (b_cos,f·cos f q + b_sin,f·sin f q). The pinion meshing with the output
+     * gear turns z_gear/z_pinion times per output turn (an order that need not be whole); running
+     * off its own centre, it changes the centre distance, and with it the play, at that rate (the
+     * same 2·Δa·tan α law as {@link #withRunout(Effect)}); the output gear's own runout adds order 1.
+     */
+    public static Effect withRunout(Effect lostMotion, double... orders) {
         if (lostMotion.kind != Kind.BACKLASH || lostMotion.heldByGravity())
             throw new IllegalArgumentException("a play changing over the turn is a form of free lost motion, not of " + lostMotion.label());
+        double[] f = Arrays.stream(orders).map(Effect::roundOrder).distinct().sorted().toArray();
+        if (f.length == 0 || !(f[0] >= 1))
+            throw new IllegalArgumentException("a play's change over the turn needs orders of at least 1, got " + Arrays.toString(orders));
         Effect e = constantPlay(lostMotion);
-        e.runout = true;
+        e.runout = f;
         return e;
     }
+
+    /**
+     * A play's change over the turn in a label's words: "play changing over the turn", "play changing
+     * 4.417 times per turn", "play changing once and 4.417 times per turn".
+     */
+    private String runoutWords() {
+        List<String> f = new ArrayList<>();
+        for (double o : runout) f.add(o == 1 ? runout.length == 1 ? "over the turn" : "once" : orderText(o));
+        String times = String.join(" and ", f);
+        return "play changing " + (runout.length == 1 && runout[0] == 1 ? times : times + " times per turn");
+    }
+
+    /** The play b + Σ_f (b_cos,f·cos f q + b_sin,f·sin f q) at joint angle q (rad) of a play changing at {@code orders}, values v (b first). */
+    static double play(double[] orders, double[] v, double q) {
+        double b = v[0];
+        for (int i = 0; i < orders.length; i++) b += v[1 + 2 * i] * Math.cos(orders[i] * q) + v[2 + 2 * i] * Math.sin(orders[i] * q);
+        return b;
+    }
+
+    /** The orders (times per turn of its joint) at which a play changing over the turn repeats ({@link #withRunout(Effect, double...)}); empty for any other effect. */
+    public double[] runoutOrders() { return runout() ? runout.clone() : new double[0]; }
 
     /** A new lost motion of the same form as {@code lostMotion} (constant or building up), with a constant play. */
     private static Effect constantPlay(Effect lostMotion) {
@@ -443,7 +476,7 @@ public final class Effect {
     }
 
     /** Whether this is lost motion whose play changes over the turn of its joint ({@link #withRunout}). */
-    public boolean runout() { return kind == Kind.BACKLASH && runout; }
+    public boolean runout() { return kind == Kind.BACKLASH && runout.length > 0; }
 
     /** A lost motion with a play that changes over the turn as the same lost motion with a constant play (itself otherwise). */
     public static Effect withoutRunout(Effect e) {
@@ -1368,7 +1401,7 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
-            case BACKLASH -> runout ? 3 : 1;
+            case BACKLASH -> 1 + 2 * runout.length;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case TOOL_SAG -> 9;
@@ -1394,7 +1427,11 @@ public final class Effect {
             case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
             case BACKLASH -> {
                 out.add("b");
-                if (runout) { out.add("b_cos"); out.add("b_sin"); }
+                for (double f : runout) {
+                    String o = f == 1 ? "" : "_" + orderText(f);
+                    out.add("b_cos" + o);
+                    out.add("b_sin" + o);
+                }
             }
             case THERMAL -> out.add(usesTimeProxy() ? "strain" : "alpha");
             case THERMAL_LINK -> {
@@ -1510,7 +1547,7 @@ public final class Effect {
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg%s%s)",
                     Math.toDegrees(buildUp), approached() ? String.format(Locale.ROOT, ", approached by %.1f deg", Math.toDegrees(approach)) : "",
-                    runout ? ", play changing over the turn" : "") : runout ? " (play changing over the turn)" : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
+                    runout() ? ", " + runoutWords() : "") : runout() ? " (" + runoutWords() + ")" : heldByGravity() ? String.format(Locale.ROOT, " (held by gravity above %.1f N·m%s%s)", preloadNm,
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
@@ -1620,7 +1657,10 @@ public final class Effect {
             }
             case BACKLASH -> {
                 g[0] = lostMotion(q, c);
-                if (runout) { g[1] = g[0] * Math.cos(q[joint]); g[2] = g[0] * Math.sin(q[joint]); }
+                for (int i = 0; i < runout.length; i++) {
+                    g[1 + 2 * i] = g[0] * Math.cos(runout[i] * q[joint]);
+                    g[2 + 2 * i] = g[0] * Math.sin(runout[i] * q[joint]);
+                }
             }
             case THERMAL -> g[0] = conditionX(c);
             case SCALE -> g[0] = q[joint];
@@ -2098,7 +2138,19 @@ public final class Effect {
                     }
                     form = windUp(js.get(0) - 1, x0, a, null);
                 }
-                yield ps.containsKey("b_cos") || ps.containsKey("b_sin") ? withRunout(form) : form;
+                // the play's orders from its parameters' names: b_cos (once per turn), b_cos_4.417 (4.417 times per turn)
+                List<Double> orders = new ArrayList<>();
+                for (String key : ps.keySet()) {
+                    if (key.equals("b_cos")) orders.add(1.0);
+                    else if (key.startsWith("b_cos_")) {
+                        double f;
+                        try { f = Double.parseDouble(key.substring(6)); } catch (NumberFormatException x) { f = Double.NaN; }
+                        if (!(f >= 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si." + key,
+                                "the play's order after b_cos_ must be a number >= 1 (times per turn)");
+                        orders.add(f);
+                    }
+                }
+                yield orders.isEmpty() ? form : withRunout(form, orders.stream().mapToDouble(Double::doubleValue).toArray());
             }
             case SCALE -> scale(js.get(0) - 1);
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);

@@ -180,8 +180,8 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case BACKLASH -> e.runout() // the play over the turn: b + b_cos·cos q + b_sin·sin q
-                    ? v[0] + v[1] * Math.cos(Math.toRadians(x)) + v[2] * Math.sin(Math.toRadians(x))
+            case BACKLASH -> e.runout() // the play over the turn: b + Σ b_cos,f·cos f q + b_sin,f·sin f q
+                    ? Effect.play(e.runoutOrders(), v, Math.toRadians(x))
                     : e.buildsUp() // the lag builds up with the move: −(b/2)·dir·(1 − exp(−|move|/x0))
                     ? -0.5 * v[0] * Math.signum(x) * Effect.windUpShare(Math.toRadians(x), e.buildUpRad())
                     // held on the flank the torque pushes it to; where the torque is small the direction decides (shown at the centre)

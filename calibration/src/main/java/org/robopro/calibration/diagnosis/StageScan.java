@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.robopro.calibration.measurement.Measurement;
+
 /**
  * The stage-frequency scan (docs/diagnosis.md "Reducer stages"): a periodogram of each joint's
  * partial residual over frequencies in cycles per turn of the joint, continuous (not only whole
@@ -56,8 +58,42 @@ final class StageScan {
     /** χ²₁ at 0.95: fixing a refined peak at the nearest whole order may cost this much (in σ²). */
     static final double WHOLE_ORDER_CHI2 = 3.84;
 
-    /** A stage frequency found on a joint. */
-    record Stage(int joint, double order, boolean whole, double refined, double p, double amplitudeRad) { }
+    /** A stage frequency found on a joint: its order, and the sinusoid's sin and cos coefficients there (rad). */
+    record Stage(int joint, double order, boolean whole, double refined, double p, double sinRad, double cosRad) {
+        double amplitudeRad() { return Math.hypot(sinRad, cosRad); }
+    }
+
+    /**
+     * The line of the spectrum at a grid peak {@code gridF} of the error d·(a sin f q + b cos f q) in
+     * residual r, when it holds: refined within one grid step, taken as a whole order where that costs
+     * little, p from F(2, ν) and against the spectrum's continuum below {@code threshold}, and kept on
+     * the poses it did not see ({@link #HELD_OUT_SHARE}); null otherwise.
+     */
+    static Stage line(int j, double[][] d, int rpp, double[][] q, double[] r, double gridF, double median, double step,
+                      double fMax, int nu, double threshold) {
+        double rss = 0;
+        for (double v : r) rss += v * v;
+        double f = refine(d, rpp, q, r, Math.max(1, gridF - step), Math.min(fMax, gridF + step));
+        double[] at = fitAt(d, rpp, q, r, f);
+        double whole = Math.max(1, Math.rint(f));
+        double[] atWhole = fitAt(d, rpp, q, r, whole);
+        double s2 = (rss - at[0]) / nu;
+        // the spectrum's continuum (2 ln 2 σ² is white noise's median power)
+        double continuum = median / (2 * Math.log(2));
+        // below MIN_STAGE_ORDER a fraction of a cycle over the range is geometry's and the low harmonics' alias: whole
+        boolean isWhole = f < MIN_STAGE_ORDER || (at[0] - atWhole[0]) < WHOLE_ORDER_CHI2 * s2;
+        double refined = f;
+        if (isWhole) { f = whole; at = atWhole; }
+        double fStat = (at[0] / 2) / ((rss - at[0]) / nu);
+        double p = Math.pow(1 + 2 * fStat / nu, -nu / 2.0);
+        // against the spectrum's own continuum: a residual with structure the model lacks raises every
+        // frequency's power (its median is 2 ln 2 σ² for white noise); a line must stand out of that
+        if (continuum > s2) p = Math.max(p, Math.exp(-at[0] / (2 * continuum)));
+        if (!(p < threshold)) return null;
+        // held out: fitted on every other pose, the sinusoid must predict the poses between (both ways)
+        if (heldOutDrop(d, rpp, q, r, f) < HELD_OUT_SHARE * at[0]) return null;
+        return new Stage(j, f, isWhole, refined, p, at[1], at[2]);
+    }
 
     private StageScan() { }
 
@@ -117,43 +153,65 @@ final class StageScan {
         if (mTotal <= 0) return out;
         double thr = alpha / mTotal;
         for (int k = 0; k < MAX_STAGES; k++) {
-            double rss = 0;
-            for (double v : r) rss += v * v;
             int bestJ = -1;
             double bestF = 0, bestP = 0, bestMedian = 0;
             for (int j = 0; j < dof; j++) {
                 if (!(fMax[j] > 1)) continue;
-                double[] peak = gridPeak(t, j, q[j], r, 1, fMax[j], 1 / (OVERSAMPLE * span[j]));
+                double[] peak = gridPeak(drive(t, j), t.rpp, q[j], r, 1, fMax[j], 1 / (OVERSAMPLE * span[j]));
                 if (peak[1] > bestP) { bestP = peak[1]; bestF = peak[0]; bestJ = j; bestMedian = peak[2]; }
             }
             if (bestJ < 0) break;
             int j = bestJ;
-            double step = 1 / (OVERSAMPLE * span[j]);
-            double f = refine(t, j, q[j], r, Math.max(1, bestF - step), Math.min(fMax[j], bestF + step));
-            double[] at = fitAt(t, j, q[j], r, f);
-            double whole = Math.max(1, Math.rint(f));
-            double[] atWhole = fitAt(t, j, q[j], r, whole);
-            double s2 = (rss - at[0]) / nu;
-            // the spectrum's continuum (2 ln 2 σ² is white noise's median power)
-            double continuum = bestMedian / (2 * Math.log(2));
-            double noise2 = s2;
-            // below MIN_STAGE_ORDER a fraction of a cycle over the range is geometry's and the low harmonics' alias: whole
-            boolean isWhole = f < MIN_STAGE_ORDER || (at[0] - atWhole[0]) < WHOLE_ORDER_CHI2 * noise2;
-            double refined = f;
-            if (isWhole) { f = whole; at = atWhole; }
-            double fStat = (at[0] / 2) / ((rss - at[0]) / nu);
-            double p = Math.pow(1 + 2 * fStat / nu, -nu / 2.0);
-            // against the spectrum's own continuum: a residual with structure the model lacks raises every
-            // frequency's power (its median is 2 ln 2 σ² for white noise); a line must stand out of that
-            if (continuum > s2) p = Math.max(p, Math.exp(-at[0] / (2 * continuum)));
-            if (!(p < thr)) break;
-            // held out: fitted on every other pose, the sinusoid must predict the poses between (both ways)
-            if (heldOutDrop(t, j, q[j], r, f) < HELD_OUT_SHARE * at[0]) break;
-            out.add(new Stage(j, f, isWhole, refined, p, Math.hypot(at[1], at[2])));
-            subtract(t, j, q[j], r, f, at[1], at[2]);
+            double[][] d = drive(t, j);
+            Stage s = line(j, d, t.rpp, q[j], r, bestF, bestMedian, 1 / (OVERSAMPLE * span[j]), fMax[j], nu, thr);
+            if (s == null) break;
+            out.add(s);
+            subtract(d, t.rpp, q[j], r, s.order(), s.sinRad(), s.cosRad());
         }
         return out;
     }
+
+    /**
+     * Orders of a play's change searched at most: an intermediate pinion or gear of the last stage
+     * turning up to this many times per output turn (one with a few teeth driving a large output gear).
+     */
+    static final double MAX_PLAY_ORDER = 40;
+
+    /**
+     * The order at which a lost motion's play changes over the turn of its joint, where the residual
+     * shows one: the scan of {@link #scan} for the error d_j·g·(a sin f q_j + b cos f q_j), g each
+     * pose's lost-motion regressor (the lag's direction and built-up share), so only a change of the
+     * play itself, seen with the lag's sign, can raise the power. An output gear running off its
+     * centre changes the play once per turn; an eccentric pinion meshing with it z_gear/z_pinion
+     * times per turn, an order that need not be whole. Same false-alarm control as the stage scan,
+     * over the orders 1..{@link #MAX_PLAY_ORDER} of this joint alone; null when no line holds.
+     */
+    static PlayLine playOrder(Diagnoser.Tester t, Effect lostMotion, double alpha) {
+        int j = lostMotion.joint(), rpp = t.rpp, poses = t.m / rpp, nu = t.m - t.rank - 2;
+        if (t.w.model.isPrismatic(j) || nu < 10 || poses < 20) return null;
+        double[][] q = new double[t.ends][poses], d = drive(t, j);
+        double[] g = new double[lostMotion.size()], deg = new double[t.ends * poses];
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (int e = 0; e < t.ends; e++)
+            for (int i = 0; i < poses; i++) {
+                Measurement row = t.endRows.get(e).get(i);
+                lostMotion.regressor(row, t.endConditions.get(e).get(i), g);
+                for (int a = 0; a < rpp; a++) d[e][i * rpp + a] *= g[0];
+                q[e][i] = row.q(j);
+                deg[e * poses + i] = Math.toDegrees(q[e][i]);
+                lo = Math.min(lo, q[e][i]);
+                hi = Math.max(hi, q[e][i]);
+            }
+        double span = (hi - lo) / (2 * Math.PI), fMax = Math.min(MAX_PLAY_ORDER, maxOrder(deg));
+        if (!(span > 1e-3) || !(fMax > 1)) return null;
+        double step = 1 / (OVERSAMPLE * span);
+        double[] peak = gridPeak(d, rpp, q, t.rPerp, 1, fMax, step);
+        Stage s = line(j, d, rpp, q, t.rPerp, peak[0], peak[2], step, fMax, nu, alpha / ((fMax - 1) * span + 1));
+        return s == null ? null : new PlayLine(s, step);
+    }
+
+    /** A play's line ({@link #playOrder}) and the scan's grid step there, cycles per turn: the order is known to about that. */
+    record PlayLine(Stage stage, double step) { }
 
     /**
      * The locate probes of the stages found that the harmonic probes (whole orders 1..{@code hMax})
@@ -178,14 +236,22 @@ final class StageScan {
         return f + " cycles per turn of joint " + (joint + 1) + " (a stage turning " + f + " times per output turn)";
     }
 
-    /** Grid search of P(f) on [lo, hi] with step df: {f, P} at the largest P, and the median P over the grid. */
-    static double[] gridPeak(Diagnoser.Tester t, int j, double[][] q, double[] r, double lo, double hi, double df) {
-        int ends = t.ends, poses = q[0].length, rpp = t.rpp, dof = t.dof;
+    /** Each end's sensitivity of the residual rows to drive j (ends x rows): the weights d of a scan of joint j's error. */
+    static double[][] drive(Diagnoser.Tester t, int j) {
+        double[][] d = new double[t.ends][t.m];
+        for (int e = 0; e < t.ends; e++)
+            for (int row = 0; row < t.m; row++) d[e][row] = t.endDQ[e][row * t.dof + j];
+        return d;
+    }
+
+    /**
+     * Grid search of P(f) on [lo, hi] with step df for the error d·(a sin f q + b cos f q) (d per end
+     * and row, rpp rows per pose, q per end and pose): {f, P} at the largest P, and the median P over the grid.
+     */
+    static double[] gridPeak(double[][] d, int rpp, double[][] q, double[] r, double lo, double hi, double df) {
+        int ends = d.length, poses = q[0].length;
         // per end and pose: the current (sin, cos) of f q and the rotation by df q
         double[][] sn = new double[ends][poses], cs = new double[ends][poses], rs = new double[ends][poses], rc = new double[ends][poses];
-        double[][] d = new double[ends][poses * rpp];
-        for (int e = 0; e < ends; e++)
-            for (int row = 0; row < poses * rpp; row++) d[e][row] = t.endDQ[e][row * dof + j];
         // one end: each pose's weight Σ d² and partial residual Σ r d (rows of a pose share its angle)
         double[] w = null, z = null;
         if (ends == 1) {
@@ -256,15 +322,15 @@ final class StageScan {
     }
 
     /** {P, a, b} at order f: the drop of the residual sum of squares and the sin, cos coefficients (rad). */
-    static double[] fitAt(Diagnoser.Tester t, int j, double[][] q, double[] r, double f) {
-        int ends = t.ends, poses = q[0].length, rpp = t.rpp, dof = t.dof;
+    static double[] fitAt(double[][] d, int rpp, double[][] q, double[] r, double f) {
+        int ends = d.length, poses = q[0].length;
         double sss = 0, scc = 0, ssc = 0, bs = 0, bc = 0;
         for (int i = 0; i < poses; i++)
             for (int a = 0; a < rpp; a++) {
                 int row = i * rpp + a;
                 double s = 0, c = 0;
                 for (int e = 0; e < ends; e++) {
-                    double dv = t.endDQ[e][row * dof + j];
+                    double dv = d[e][row];
                     s += dv * Math.sin(f * q[e][i]);
                     c += dv * Math.cos(f * q[e][i]);
                 }
@@ -281,15 +347,15 @@ final class StageScan {
     }
 
     /** The drop of the residual sum of squares on each half of the poses from the sinusoid of order f fitted on the other half, summed. */
-    static double heldOutDrop(Diagnoser.Tester t, int j, double[][] q, double[] r, double f) {
-        int ends = t.ends, poses = q[0].length, rpp = t.rpp, dof = t.dof;
+    static double heldOutDrop(double[][] d, int rpp, double[][] q, double[] r, double f) {
+        int ends = d.length, poses = q[0].length;
         double[][] n = new double[2][5]; // per half: sss, scc, ssc, bs, bc
         double[] s = new double[poses * rpp], c = new double[poses * rpp];
         for (int i = 0; i < poses; i++)
             for (int a = 0; a < rpp; a++) {
                 int row = i * rpp + a;
                 for (int e = 0; e < ends; e++) {
-                    double dv = t.endDQ[e][row * dof + j];
+                    double dv = d[e][row];
                     s[row] += dv * Math.sin(f * q[e][i]);
                     c[row] += dv * Math.cos(f * q[e][i]);
                 }
@@ -317,25 +383,25 @@ final class StageScan {
     }
 
     /** Golden-section search of the largest P on [lo, hi]. */
-    static double refine(Diagnoser.Tester t, int j, double[][] q, double[] r, double lo, double hi) {
+    static double refine(double[][] d, int rpp, double[][] q, double[] r, double lo, double hi) {
         double g = (Math.sqrt(5) - 1) / 2;
         double a = lo, b = hi, x1 = b - g * (b - a), x2 = a + g * (b - a);
-        double p1 = fitAt(t, j, q, r, x1)[0], p2 = fitAt(t, j, q, r, x2)[0];
+        double p1 = fitAt(d, rpp, q, r, x1)[0], p2 = fitAt(d, rpp, q, r, x2)[0];
         for (int it = 0; it < 40 && b - a > 1e-6; it++) {
-            if (p1 > p2) { b = x2; x2 = x1; p2 = p1; x1 = b - g * (b - a); p1 = fitAt(t, j, q, r, x1)[0]; }
-            else { a = x1; x1 = x2; p1 = p2; x2 = a + g * (b - a); p2 = fitAt(t, j, q, r, x2)[0]; }
+            if (p1 > p2) { b = x2; x2 = x1; p2 = p1; x1 = b - g * (b - a); p1 = fitAt(d, rpp, q, r, x1)[0]; }
+            else { a = x1; x1 = x2; p1 = p2; x2 = a + g * (b - a); p2 = fitAt(d, rpp, q, r, x2)[0]; }
         }
         return p1 > p2 ? x1 : x2;
     }
 
     /** r −= d_j (a sin f q + b cos f q). */
-    private static void subtract(Diagnoser.Tester t, int j, double[][] q, double[] r, double f, double a, double b) {
-        int ends = t.ends, poses = q[0].length, rpp = t.rpp, dof = t.dof;
+    private static void subtract(double[][] d, int rpp, double[][] q, double[] r, double f, double a, double b) {
+        int ends = d.length, poses = q[0].length;
         for (int i = 0; i < poses; i++)
             for (int x = 0; x < rpp; x++) {
                 int row = i * rpp + x;
                 for (int e = 0; e < ends; e++)
-                    r[row] -= t.endDQ[e][row * dof + j] * (a * Math.sin(f * q[e][i]) + b * Math.cos(f * q[e][i]));
+                    r[row] -= d[e][row] * (a * Math.sin(f * q[e][i]) + b * Math.cos(f * q[e][i]));
             }
     }
 }

@@ -381,15 +381,39 @@ final class Words {
 
     /**
      * A play that changes over the turn, in words: its least and largest width over the turn and
-     * where it is widest (values b, b_cos, b_sin in rad).
+     * where it is widest (values b, b_cos, b_sin in rad), and what turns at its order.
      */
     static String runout(Effect e, double[] v) {
-        double change = Math.hypot(v[1], v[2]);
-        double widest = Math.toDegrees(Math.atan2(v[2], v[1]));
-        return String.format(Locale.ROOT, " Its play changes over the turn of joint %d, from %.4f to %.4f deg, widest at q%d = %.0f deg: "
-                + "an output gear running off its bearing's centre (runout) moves closer to its pinion and away once per turn, and "
-                + "the play between their teeth changes with that distance (chosen by the leave-one-pose-out error; to confirm it, "
-                + "approach the joint from both sides at several angles over its range and compare the lag).", e.joint() + 1,
-                Math.toDegrees(v[0] - change), Math.toDegrees(v[0] + change), e.joint() + 1, widest);
+        double[] f = e.runoutOrders();
+        int jn = e.joint() + 1;
+        if (f.length == 1 && f[0] == 1) {
+            double change = Math.hypot(v[1], v[2]), widest = Math.toDegrees(Math.atan2(v[2], v[1]));
+            return String.format(Locale.ROOT, " Its play changes over the turn of joint %d, from %.4f to %.4f deg, widest at q%d = %.0f deg: "
+                    + "an output gear running off its bearing's centre (runout) moves closer to its pinion and away once per turn, and "
+                    + "the play between their teeth changes with that distance (chosen by the leave-one-pose-out error; to confirm it, "
+                    + "approach the joint from both sides at several angles over its range and compare the lag).", jn,
+                    Math.toDegrees(v[0] - change), Math.toDegrees(v[0] + change), jn, widest);
+        }
+        // the least and largest play over a turn, on a grid fine enough for the highest order
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        int n = (int) Math.ceil(64 * f[f.length - 1]);
+        for (int i = 0; i < n; i++) {
+            double b = Effect.play(f, v, -Math.PI + 2 * Math.PI * i / n);
+            lo = Math.min(lo, b);
+            hi = Math.max(hi, b);
+        }
+        List<String> parts = new ArrayList<>();
+        for (int i = 0; i < f.length; i++)
+            parts.add(String.format(Locale.ROOT, "%.4f deg %s", Math.toDegrees(Math.hypot(v[1 + 2 * i], v[2 + 2 * i])),
+                    f[i] == 1 ? "once per turn (the output gear running off its bearing's centre)"
+                    : Effect.orderText(f[i]) + " times per turn (a gear of the last stage turning that often per output turn, a pinion "
+                    + "meshing with the output gear: z_gear/z_pinion)"));
+        double top = f[f.length - 1];
+        return String.format(Locale.ROOT, " Its play changes over the turn of joint %d, between %.4f and %.4f deg: by %s. A gear running "
+                + "off its centre moves closer to its mate and away once per its own turn, and the play between their teeth changes with "
+                + "that distance (an order that is not whole found in the lag's spectrum; each chosen by the leave-one-pose-out error). "
+                + "To confirm it, approach the joint from both sides at angles %.1f deg apart, half a cycle of the fastest, and compare "
+                + "the lag, and check the stage's tooth counts.", jn, Math.toDegrees(lo), Math.toDegrees(hi), String.join(", and ", parts),
+                180 / top);
     }
 }
