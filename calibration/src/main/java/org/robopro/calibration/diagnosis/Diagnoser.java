@@ -461,7 +461,7 @@ public final class Diagnoser {
                                     Directions.Source dirSource, Set<String> excluded, List<Measurement> validationBeyond,
                                     Set<String> validationInRegion) {
         Run underRun = r;
-        if (!r.named) return r.d();
+        if (!r.named) return r.reported();
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
@@ -1753,7 +1753,8 @@ public final class Diagnoser {
         Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
         boolean onValidation = Double.isFinite(valFinal);
         double perfect = perfectShare(fit, onValidation);
-        Map<String, Double> beyond = selected.isEmpty() ? Map.of() : outliersUnder(selected, fit, trainAll);
+        // (with nothing named, the geometric model's own: a pose it left out is a bad reading only as far out as under any model)
+        Map<String, Double> beyond = selected.isEmpty() && outliers.isEmpty() ? Map.of() : outliersUnder(selected, fit, trainAll);
         List<String> under = new ArrayList<>(beyond.keySet());
         if (!under.isEmpty()) under = otherFlankExplains(w, fit, selected, under);
         // The final model short of the instrument's stated floor does not follow every pose, so a pose a few of its robust

@@ -66,8 +66,8 @@ class RunoutLostMotionTest {
      * A play changing with the pinion that drives the output gear (the world's tooth counts, its
      * ratio not whole): the order found in the lag's spectrum near z_gear/z_pinion (the fitted
      * cycle drifting from the truth's by no more than a twentieth of a cycle over the joint's
-     * measured range, {@link #orderTolerance}), the
-     * mean play and its change near the world's gear geometry, at the floor. On seed 20261124 the
+     * measured range, {@link #orderTolerance}), the mean play and its change near the world's gear
+     * geometry, at the floor. On seed 20261124 the
      * spectrum's line alone (4.53 against 4.95) left 1.36 times the floor and a smooth error of
      * joint 3 beside it; the order the left-out poses choose near it does not.
      */
@@ -77,9 +77,7 @@ class RunoutLostMotionTest {
         for (long seed : new long[] {20261124, 20261126}) {
             Scenario.Trial t = s.trial(seed);
             WorldCampaigns.Sim c = WorldCampaigns.of(t);
-            JointError.GearPairLostMotion truth = t.world().errors().stream()
-                    .filter(e -> e instanceof JointError.GearPairLostMotion).map(e -> (JointError.GearPairLostMotion) e)
-                    .findFirst().orElseThrow();
+            JointError.GearPairLostMotion truth = gearPair(t);
             Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
             assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
             assertTrue(d.located().stream().allMatch(l -> l.explainedBy() != null), "seed " + seed + ": " + d.located());
@@ -101,9 +99,7 @@ class RunoutLostMotionTest {
         Scenario.Trial t = Scenario.named("lost motion j1 puma560 whose play changes with its pinion's turn (eccentric pinion), "
                 + "directions not recorded").trial(20261125);
         WorldCampaigns.Sim c = WorldCampaigns.of(t);
-        JointError.GearPairLostMotion truth = t.world().errors().stream()
-                .filter(e -> e instanceof JointError.GearPairLostMotion).map(e -> (JointError.GearPairLostMotion) e)
-                .findFirst().orElseThrow();
+        JointError.GearPairLostMotion truth = gearPair(t);
         Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("puma560"), c.train(), c.validation());
         assertEquals(1, d.effects().size(), d.effects() + " " + d.notes());
         Effect e = d.effects().get(0).effect();
@@ -124,9 +120,7 @@ class RunoutLostMotionTest {
         for (long seed : new long[] {20261124, 20261126}) {
             Scenario.Trial t = s.trial(seed);
             WorldCampaigns.Sim c = WorldCampaigns.of(t);
-            JointError.GearPairLostMotion truth = t.world().errors().stream()
-                    .filter(e -> e instanceof JointError.GearPairLostMotion).map(e -> (JointError.GearPairLostMotion) e)
-                    .findFirst().orElseThrow();
+            JointError.GearPairLostMotion truth = gearPair(t);
             Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
             assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
             Diagnosis.Finding f = d.effects().get(0);
@@ -140,6 +134,12 @@ class RunoutLostMotionTest {
             assertEquals(truth.pinionChange(), Math.hypot(v[3], v[4]), 0.3 * truth.pinionChange(), "seed " + seed + ": the pinion's");
             assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
         }
+    }
+
+    /** The world's last gear pair in a trial. */
+    private static JointError.GearPairLostMotion gearPair(Scenario.Trial t) {
+        return t.world().errors().stream().filter(e -> e instanceof JointError.GearPairLostMotion)
+                .map(e -> (JointError.GearPairLostMotion) e).findFirst().orElseThrow();
     }
 
     /** Cycles per turn by which an order may miss: a twentieth of a cycle over joint j's measured range. */
