@@ -1450,17 +1450,16 @@ public final class Diagnoser {
                 Effect form = best != null ? best : e;
                 List<Effect> forms = new ArrayList<>(List.of(Effect.withRunout(form)));
                 StageScan.PlayLine line = StageScan.playOrder(at, e, o.alpha());
-                if (line != null && line.stage().order() != 1) {
-                    // the order the left-out poses choose within the scan's grid step of the line (one below the stage scan's
-                    // least stage order stays whole: a fraction of a cycle there is the geometry's and the low orders' alias; a
-                    // pinion's ratio is seldom whole): alone, and beside the output gear's runout (once per turn), each form judged
-                    // against the better before it
-                    double f0 = line.stage().refined(), lo = Math.max(1, f0 - line.step()), hi = f0 + line.step();
+                if (line != null) {
+                    // the order the left-out poses choose within the scan's grid step of the line (from the stage scan's least
+                    // stage order up; a pinion's ratio is seldom whole): alone, and beside the output gear's runout (once per
+                    // turn), each form judged against the better before it
+                    double f0 = line.stage().refined(), lo = Math.max(StageScan.MIN_STAGE_ORDER, f0 - line.step()), hi = f0 + line.step();
                     int kk = k;
                     for (boolean once : new boolean[] {false, true}) {
                         java.util.function.DoubleFunction<Effect> at_ = f -> once ? Effect.withRunout(form, 1, f) : Effect.withRunout(form, f);
                         double f = line.stage().order();
-                        if (f0 >= StageScan.MIN_STAGE_ORDER) {
+                        if (hi > lo) {
                             double[] r = goldenLog(l -> at.pressReplacing(kk, at_.apply(Math.exp(l)), w.conditions), lo, hi);
                             if (r[1] < at.pressReplacing(k, at_.apply(f), w.conditions)) f = Math.exp(r[0]);
                         }

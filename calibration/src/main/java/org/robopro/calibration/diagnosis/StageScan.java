@@ -184,7 +184,10 @@ final class StageScan {
      * play itself, seen with the lag's sign, can raise the power. An output gear running off its
      * centre changes the play once per turn; an eccentric pinion meshing with it z_gear/z_pinion
      * times per turn, an order that need not be whole. Same false-alarm control as the stage scan,
-     * over the orders 1..{@link #MAX_PLAY_ORDER} of this joint alone; null when no line holds.
+     * over the orders {@link #MIN_STAGE_ORDER}..{@link #MAX_PLAY_ORDER} of this joint alone; null when
+     * no line holds. Below them a play's change cannot be told from gravity holding the gear on one
+     * flank over part of the range (the gravity torque is a low-order function of the angles), nor
+     * from the once-per-turn form of an output gear's runout.
      */
     static PlayLine playOrder(Diagnoser.Tester t, Effect lostMotion, double alpha) {
         int j = lostMotion.joint(), rpp = t.rpp, poses = t.m / rpp, nu = t.m - t.rank - 2;
@@ -203,11 +206,11 @@ final class StageScan {
                 hi = Math.max(hi, q[e][i]);
             }
         double span = (hi - lo) / (2 * Math.PI), fMax = Math.min(MAX_PLAY_ORDER, maxOrder(deg));
-        if (!(span > 1e-3) || !(fMax > 1)) return null;
+        if (!(span > 1e-3) || !(fMax > MIN_STAGE_ORDER)) return null;
         double step = 1 / (OVERSAMPLE * span);
-        double[] peak = gridPeak(d, rpp, q, t.rPerp, 1, fMax, step);
-        Stage s = line(j, d, rpp, q, t.rPerp, peak[0], peak[2], step, fMax, nu, alpha / ((fMax - 1) * span + 1));
-        return s == null ? null : new PlayLine(s, step);
+        double[] peak = gridPeak(d, rpp, q, t.rPerp, MIN_STAGE_ORDER, fMax, step);
+        Stage s = line(j, d, rpp, q, t.rPerp, peak[0], peak[2], step, fMax, nu, alpha / ((fMax - MIN_STAGE_ORDER) * span + 1));
+        return s == null || s.order() < MIN_STAGE_ORDER ? null : new PlayLine(s, step);
     }
 
     /** A play's line ({@link #playOrder}) and the scan's grid step there, cycles per turn: the order is known to about that. */
