@@ -1457,13 +1457,13 @@ public final class Diagnoser {
                     double f0 = line.stage().refined(), lo = Math.max(StageScan.MIN_STAGE_ORDER, f0 - line.step()), hi = f0 + line.step();
                     int kk = k;
                     for (boolean once : new boolean[] {false, true}) {
-                        java.util.function.DoubleFunction<Effect> at_ = f -> once ? Effect.withRunout(form, 1, f) : Effect.withRunout(form, f);
+                        java.util.function.DoubleFunction<Effect> withOrder = f -> once ? Effect.withRunout(form, 1, f) : Effect.withRunout(form, f);
                         double f = line.stage().order();
                         if (hi > lo) {
-                            double[] r = goldenLog(l -> at.pressReplacing(kk, at_.apply(Math.exp(l)), w.conditions), lo, hi);
-                            if (r[1] < at.pressReplacing(k, at_.apply(f), w.conditions)) f = Math.exp(r[0]);
+                            double[] r = goldenLog(l -> at.pressReplacing(kk, withOrder.apply(Math.exp(l)), w.conditions), lo, hi);
+                            if (r[1] < at.pressReplacing(k, withOrder.apply(f), w.conditions)) f = Math.exp(r[0]);
                         }
-                        forms.add(at_.apply(f));
+                        forms.add(withOrder.apply(f));
                     }
                 }
                 if (LOG.isDebugEnabled()) LOG.debug("play of {}: line {}", e.label(), line == null ? "none" : line.stage());

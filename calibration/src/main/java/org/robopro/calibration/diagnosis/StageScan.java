@@ -59,9 +59,7 @@ final class StageScan {
     static final double WHOLE_ORDER_CHI2 = 3.84;
 
     /** A stage frequency found on a joint: its order, and the sinusoid's sin and cos coefficients there (rad). */
-    record Stage(int joint, double order, boolean whole, double refined, double p, double sinRad, double cosRad) {
-        double amplitudeRad() { return Math.hypot(sinRad, cosRad); }
-    }
+    record Stage(int joint, double order, boolean whole, double refined, double p, double sinRad, double cosRad) { }
 
     /**
      * The line of the spectrum at a grid peak {@code gridF} of the error d·(a sin f q + b cos f q) in
