@@ -71,36 +71,14 @@ public sealed interface JointError {
     }
 
     /**
-     * Lost motion whose play changes once per turn of the output: the output gear runs off its
-     * bearing's centre by {@code runout}, so its centre distance to the pinion is
-     * a0 + runout cos(q - phase), and a gear pair's circumferential backlash grows with the centre
-     * distance by 2 Δa tan α (α the working pressure angle; ISO/TR 10064-2:1996, "Backlash",
-     * j_t from the centre distance; D. W. Dudley, Handbook of Practical Gear Design, §4.3). As an
-     * angle of the output gear of pitch radius r the play is
-     * width + 2 runout cos(q - phase) tan α / r, and the output lags by half of it:
-     * q_out = q - (play/2) dir.
-     */
-    record RunoutLostMotion(int joint, double width, double runoutM, double phase, double pitchRadiusM, double pressureAngle)
-            implements JointError {
-        public RunoutLostMotion {
-            if (!(2 * runoutM * Math.tan(pressureAngle) / pitchRadiusM < width))
-                throw new IllegalArgumentException("the play would close: runout " + runoutM + " m against width " + width + " rad");
-        }
-
-        /** The play at output angle q, rad. */
-        public double play(double q) { return width + 2 * runoutM * Math.cos(q - phase) * Math.tan(pressureAngle) / pitchRadiusM; }
-
-        @Override public double delta(double[] q, Moment m) { return -0.5 * play(q[joint]) * m.dir()[joint]; }
-    }
-
-    /**
-     * Lost motion of the last gear pair of a drive whose two gears both run off their centres: the
-     * output gear ({@code gearTeeth}) by {@code gearRunoutM}, and the pinion driving it
+     * Lost motion of the last gear pair of a drive whose gears run off their centres: the output gear
+     * ({@code gearTeeth}) off its bearing's centre by {@code gearRunoutM}, and the pinion driving it
      * ({@code pinionTeeth}, turning gearTeeth/pinionTeeth times per output turn, the other way) by
-     * {@code pinionRunoutM}. Each moves the centre distance by its runout times the cosine of its own
-     * angle, and the circumferential backlash changes with the centre distance by 2 Δa tan α
-     * (ISO/TR 10064-2:1996; as an angle of the output gear of pitch radius r). The output lags by
-     * half the play: q_out = q - (play/2) dir.
+     * {@code pinionRunoutM} (either may be 0). Each moves the centre distance by its runout times the
+     * cosine of its own angle, and a gear pair's circumferential backlash changes with the centre
+     * distance by 2 Δa tan α (α the working pressure angle; ISO/TR 10064-2:1996, "Backlash", j_t from
+     * the centre distance; D. W. Dudley, Handbook of Practical Gear Design, §4.3), an angle of the
+     * output gear of pitch radius r. The output lags by half the play: q_out = q - (play/2) dir.
      */
     record GearPairLostMotion(int joint, double width, double gearRunoutM, double gearPhase, double pinionRunoutM, double pinionPhase,
                               int gearTeeth, int pinionTeeth, double gearPitchRadiusM, double pressureAngle) implements JointError {

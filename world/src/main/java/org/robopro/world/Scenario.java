@@ -199,31 +199,41 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     /**
      * Lost motion 0.02–0.05° whose output gear (pitch radius 60–120 mm, pressure angle 20°) runs out
-     * by enough to change the play by 30–80 % of its width over a turn.
+     * by enough to change the play by 30–80 % of its width over a turn; its pinion runs true.
      */
-    public static JointError.RunoutLostMotion runoutLostMotion(int joint, Random r) {
+    public static JointError.GearPairLostMotion runoutLostMotion(int joint, Random r) {
         double width = Math.toRadians(uniform(r, 0.02, 0.05)), radius = uniform(r, 0.06, 0.12), alpha = Math.toRadians(20);
         double runout = uniform(r, 0.3, 0.8) * width * radius / (2 * Math.tan(alpha));
-        return new JointError.RunoutLostMotion(joint, width, runout, 2 * Math.PI * r.nextDouble(), radius, alpha);
+        double phase = 2 * Math.PI * r.nextDouble();
+        int[] z = teeth(r);
+        return new JointError.GearPairLostMotion(joint, width, runout, phase, 0, 0, z[0], z[1], radius, alpha);
+    }
+
+    /**
+     * Tooth counts of a last gear pair, {output gear, pinion}: a pinion of 13–23 teeth driving 3.2–6.8
+     * times as many, never a whole ratio (a whole ratio would bring the same teeth into mesh every
+     * turn and wear them unevenly).
+     */
+    private static int[] teeth(Random r) {
+        int zp = 13 + r.nextInt(11), zg = (int) Math.round(uniform(r, 3.2, 6.8) * zp);
+        return new int[] {zg % zp == 0 ? zg + 1 : zg, zp};
     }
 
     /**
      * Lost motion 0.02–0.05° of a last gear pair whose pinion (13–23 teeth, driving an output gear
      * 3.2–6.8 times its size, pitch radius 60–120 mm, pressure angle 20°) runs off its centre by
      * enough to change the play by 30–80 % of its width, and, with {@code gearToo}, whose output gear
-     * runs off its centre by as much again as the pinion (0.5–1 times). The tooth counts make no whole
-     * ratio: a whole ratio would bring the same teeth into mesh every turn and wear them unevenly.
+     * runs off its centre by as much again as the pinion (0.5–1 times); tooth counts of {@link #teeth}.
      */
     public static JointError.GearPairLostMotion gearPairLostMotion(int joint, boolean gearToo, Random r) {
         double width = Math.toRadians(uniform(r, 0.02, 0.05)), radius = uniform(r, 0.06, 0.12), alpha = Math.toRadians(20);
-        int zp = 13 + r.nextInt(11), zg = (int) Math.round(uniform(r, 3.2, 6.8) * zp);
-        if (zg % zp == 0) zg++;
+        int[] z = teeth(r);
         double change = uniform(r, 0.3, 0.8) * width;
         double pinion = change, gear = gearToo ? uniform(r, 0.5, 1) * change : 0;
         double scale = gearToo ? 1 / (1 + gear / pinion) : 1; // the two together still change the play by 30–80 %
         double toM = radius / (2 * Math.tan(alpha));
         return new JointError.GearPairLostMotion(joint, width, gear * scale * toM, 2 * Math.PI * r.nextDouble(), pinion * scale * toM,
-                2 * Math.PI * r.nextDouble(), zg, zp, radius, alpha);
+                2 * Math.PI * r.nextDouble(), z[0], z[1], radius, alpha);
     }
 
     /** Gear-ratio error ±(1–3)·10⁻⁴. */

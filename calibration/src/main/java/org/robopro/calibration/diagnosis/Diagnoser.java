@@ -1968,7 +1968,6 @@ public final class Diagnoser {
     /** Build-up lengths of the wind-up grid, rad: 0.5° to 40° in steps of 25 %, refined between the neighbours of the best. */
     static final double WINDUP_MIN_RAD = Math.toRadians(0.5), WINDUP_MAX_RAD = Math.toRadians(40), WINDUP_STEP = 1.25;
 
-
     /**
      * Approach lengths of the approached wind-up's grid, rad: 0.25° to 16° in doublings, then refined
      * in log length between the best one's neighbours at the best build-up length.

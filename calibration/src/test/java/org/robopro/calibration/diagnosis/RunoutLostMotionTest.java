@@ -31,8 +31,7 @@ class RunoutLostMotionTest {
         for (long seed : new long[] {20261124, 20261126}) {
             Scenario.Trial t = s.trial(seed);
             WorldCampaigns.Sim c = WorldCampaigns.of(t);
-            JointError.RunoutLostMotion truth = t.world().errors().stream().filter(e -> e instanceof JointError.RunoutLostMotion)
-                    .map(e -> (JointError.RunoutLostMotion) e).findFirst().orElseThrow();
+            JointError.GearPairLostMotion truth = gearPair(t);
             Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
             assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
             Diagnosis.Finding f = d.effects().get(0);
@@ -41,11 +40,11 @@ class RunoutLostMotionTest {
             assertTrue(f.effect().runout(), "seed " + seed + ": " + f.effect().label());
             double[] v = f.values();
             // the truth's play over the turn: width + A cos(q - phase), A = 2 e tan(alpha) / r
-            double change = 2 * truth.runoutM() * Math.tan(truth.pressureAngle()) / truth.pitchRadiusM();
+            double change = truth.gearChange();
             assertEquals(truth.width(), v[0], 0.1 * truth.width(), "seed " + seed + ": mean play");
             assertEquals(change, Math.hypot(v[1], v[2]), 0.2 * change, "seed " + seed + ": change over the turn");
             double widest = Math.atan2(v[2], v[1]);
-            assertEquals(0, Math.IEEEremainder(widest - truth.phase(), 2 * Math.PI), Math.toRadians(15), "seed " + seed + ": widest angle");
+            assertEquals(0, Math.IEEEremainder(widest - truth.gearPhase(), 2 * Math.PI), Math.toRadians(15), "seed " + seed + ": widest angle");
             assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
         }
     }
