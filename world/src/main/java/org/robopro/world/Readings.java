@@ -116,8 +116,7 @@ public final class Readings {
     }
 
     private static WorldRobot at(WorldRobot w, Rigid flangeToTool) {
-        return new WorldRobot(w.robotName(), w.arm(), w.coupling(), w.zeroOffsets(), w.errors(), flangeToTool, w.instrumentFromBase(),
-                w.thermal(), w.compliance(), w.sag(), w.toolBump());
+        return w.withTool(flangeToTool);
     }
 
     private static void check(Campaign.Result c) {

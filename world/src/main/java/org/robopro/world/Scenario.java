@@ -239,6 +239,13 @@ public record Scenario(String name, String family, String robot, Expected expect
     /** Gear-ratio error ±(1–3)·10⁻⁴. */
     public static JointError.Scale gearRatio(int joint, Random r) { return new JointError.Scale(joint, signed(r, 1e-4, 3e-4)); }
 
+    /** The upper arm's twist: the file's masses ±30 %, a payload centre 0.15-0.25 m off the flange's axis, a stiffness in lo..hi N·m/rad. */
+    static WorldRobot.Twist twist(RobotDescription n, double lo, double hi, Random r) {
+        var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+        double[] pc = {uniform(r, 0.15, 0.25), signed(r, 0, 0.05), uniform(r, 0.05, 0.1)};
+        return new WorldRobot.Twist(uniform(r, lo, hi), m.masses(), pc, m.gravity());
+    }
+
     /** Cross-coupling ±(3–10)·10⁻⁴. */
     public static JointError.Coupling crossCoupling(int joint, int source, Random r) {
         return new JointError.Coupling(joint, source, signed(r, 3e-4, 10e-4));
@@ -526,6 +533,15 @@ public record Scenario(String name, String family, String robot, Expected expect
                             m.payloadCentre(), m.gravity());
                     return w -> w.withRocking(rock);
                 }, payloads("irb2000")));
+        c.add(s("outside: base rocks on its foundation above an overturning moment, puma560, payload steps", "outside", "puma560",
+                Expected.outside(), (n, r) -> {
+                    // The PUMA 560's arm (±30 %) and up to 5 kg on a 0.1-0.15 m foot: a hold of 2-10 N·m and 1.5-3·10⁵ N·m/rad
+                    // above it (a light arm on a small plate with its bolts slack) tilt the base by up to about 10⁻⁴ rad.
+                    var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+                    var rock = new WorldRobot.Rocking(uniform(r, 0.1, 0.15), uniform(r, 2, 10), uniform(r, 1.5e5, 3e5), m.masses(),
+                            m.payloadCentre(), m.gravity());
+                    return w -> w.withRocking(rock);
+                }, payloads("puma560")));
         c.add(s("outside: a pedestal's foot rocks on the floor above an overturning moment", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     // The robot bolted on a rigid steel pedestal 0.4-0.8 m tall whose foot plate (0.3-0.4 m half-width) sits on
@@ -557,6 +573,16 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("outside: narrow bump in the angle of j2, 100 poses", "outside", "irb2000", Expected.outside(),
                 (n, r) -> add(new JointError.Bump(1, Math.toRadians(uniform(r, 25, 55)), Math.toRadians(uniform(r, 6, 9)),
                         Math.toRadians(signed(r, 0.03, 0.06)))), p -> p.withPoses(100, 0)));
+        // The upper arm twisting under a payload whose centre sits 0.15-0.25 m off the flange's axis: the file's masses
+        // (±30 %) and 10 kg give up to some 30 N·m about the arm's axis as the wrist swings the payload from side to side; a
+        // torsional stiffness of 1.5-3·10⁵ N·m/rad (a cast arm's box section) turns the hand by up to about 10⁻⁴ rad. The PUMA
+        // 560's arm, a fifth of the size and carrying 2.5 kg, twists as much at 3-6·10⁴ N·m/rad.
+        c.add(s("outside: the upper arm twists under an off-axis payload", "outside", "irb2000", Expected.outside(),
+                (n, r) -> { var t = twist(n, 1.5e5, 3e5, r); return w -> w.withTwist(t); },
+                p -> p.withPayloads(RobotLibrary.shipped("irb2000").massModel().orElseThrow().ratedPayloadKg())));
+        c.add(s("outside: the upper arm twists under an off-axis payload, payload steps, 6-D", "outside", "puma560", Expected.outside(),
+                (n, r) -> { var t = twist(n, 3e4, 6e4, r); return w -> w.withTwist(t); },
+                p -> payloads("puma560").apply(p).withSixD(true)));
         c.add(s("joint elasticity j2 with a stiffening spring, masses off 30 %", "gravity-elasticity", "irb2000",
                 Expected.named(claim(GRAVITY_ELASTICITY, 2)),
                 (n, r) -> {

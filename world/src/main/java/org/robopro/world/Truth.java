@@ -122,6 +122,18 @@ final class Truth {
             m.put("tau_s", f.tauS());
             root.put("floor_tilt", m);
         }
+        if (w.twist() != null) {
+            WorldRobot.Twist t = w.twist();
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("form", "everything beyond the upper arm turns about its axis (joint 2's point, toward joint 3's across joint 2's axis) "
+                    + "by T / stiffness, T the moment about that axis of the weights beyond it and the payload");
+            m.put("stiffness_nm_per_rad", t.stiffnessNmPerRad());
+            m.put("payload_centre_mm", mm(t.payloadCentre()));
+            List<Map<String, Object>> masses = new ArrayList<>();
+            for (WorldRobot.Mass ms : t.masses()) masses.add(Map.of("joint", ms.joint() + 1, "mass_kg", ms.kg(), "centre_mm", mm(ms.centre())));
+            m.put("masses", masses);
+            root.put("upper_arm_twist", m);
+        }
         if (w.rocking() != null) {
             WorldRobot.Rocking ro = w.rocking();
             Map<String, Object> m = new LinkedHashMap<>();

@@ -26,7 +26,8 @@ import org.robopro.models.RobotDescription;
  * </ol>
  * Besides: a joint's bearing may wobble ({@link Wobble}, in the chain), the wrist's drives may
  * yield to a dress pack's pull ({@link DressPack}, with the gravity yield), and the whole robot
- * may rock on its foundation ({@link Rocking}, about a foot edge, after the chain).
+ * may rock on its foundation ({@link Rocking}, about a foot edge, after the chain), and the upper
+ * arm may twist about its long axis under the weights beyond it ({@link Twist}, after the chain).
  * Noise is added by the campaign, not here. SI units, angles rad. Immutable.
  *
  * @param robotName          the robot file's name
@@ -44,11 +45,13 @@ import org.robopro.models.RobotDescription;
  * @param rocking            the base rocking on its foundation above an overturning moment, or null
  * @param dressPack          the dress pack (cable hose) pulling on the wrist, or null
  * @param wobbles            bearing wobbles: joint axes tilting about a direction that turns with the joint
+ * @param floorTilt          the floor under the robot tilting as it warms, or null
+ * @param twist              the upper arm twisting under the weights beyond it, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                         FloorTilt floorTilt) {
+                         FloorTilt floorTilt, Twist twist) {
     public WorldRobot {
         coupling = copy(coupling);
         zeroOffsets = zeroOffsets.clone();
@@ -60,7 +63,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag, ToolBump toolBump) {
         this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump,
-                null, null, null, List.of(), null);
+                null, null, null, List.of(), null, null);
     }
 
     @Override public double[][] coupling() { return copy(coupling); }
@@ -545,6 +548,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             p[2] -= sag.at(r, payload);
             tool = new Rigid(tool.r(), p);
         }
+        if (twist != null) tool = twist.turn(a, theta, payload).times(tool);
         if (rocking != null) tool = rocking.tilt(overturningMoments(a, theta, payload)).times(tool);
         if (floorTilt != null && Double.isFinite(timeS)) tool = floorTilt.at(timeS).times(tool);
         Rigid inst = instrumentFromBase;
@@ -578,6 +582,65 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         public Rigid at(double timeS) {
             double[] axis = {Math.cos(azimuth), Math.sin(azimuth), 0};
             return Rigid.rotation(axis, maxRad * (1 - Math.exp(-timeS / tauS)), pivot);
+        }
+    }
+
+    /**
+     * Outside every catalogue family: the upper arm (from joint 2's axis to joint 3's) twisting about
+     * its own long axis. A bar under a torque T about its axis turns its far end by phi = T L / (G J)
+     * in the sense of T (Saint-Venant torsion: Gere &amp; Goodno, "Mechanics of Materials", 7th ed.,
+     * 2009, §3.3; Timoshenko &amp; Goodier, "Theory of Elasticity", ch. 10); here phi = T / k with
+     * k = G J / L. The torque is the moment about the arm's axis of every weight beyond it, the
+     * forearm's, the wrist's and the payload's: T = e · sum (c - p) × m g, with e the unit vector from
+     * joint 2's axis to joint 3's point across joint 2's axis and p joint 2's point, at the pose (statics
+     * of the bodies beyond a section: Meriam &amp; Kraige, "Engineering Mechanics: Statics", moments
+     * about an axis). Only weight beside the arm's plane gives it: a tool or payload whose centre
+     * sits off the flange's axis, swung to one side or the other by the wrist. Everything beyond the
+     * arm turns by phi about the line (p, e).
+     *
+     * @param masses         the bodies beyond joint 2 that load it (their joints 2.. count; others are ignored)
+     * @param payloadCentre  the payload's centre in flange coordinates, m
+     */
+    public record Twist(double stiffnessNmPerRad, List<Mass> masses, double[] payloadCentre, double[] gravity) {
+        public Twist {
+            masses = List.copyOf(masses);
+            payloadCentre = payloadCentre.clone();
+            gravity = gravity.clone();
+        }
+
+        @Override public double[] payloadCentre() { return payloadCentre.clone(); }
+        @Override public double[] gravity() { return gravity.clone(); }
+
+        /** The torque about the upper arm's axis (N·m) at model angles theta with {@code payload} kg. */
+        public double torque(Arm a, double[] theta, double payload) {
+            double[][] axis = axis(a, theta);
+            double[] e = axis[0], p = axis[1];
+            Rigid[] body = a.bodies(theta);
+            double t = 0;
+            for (Mass m : masses) {
+                if (m.joint < 2) continue;
+                t += Rigid.dot(e, Rigid.cross(Rigid.minus(body[m.joint].apply(m.centre), p), Rigid.scale(gravity, m.kg)));
+            }
+            if (payload > 0) {
+                double[] c = body[a.dof() - 1].apply(a.flange().apply(payloadCentre));
+                t += Rigid.dot(e, Rigid.cross(Rigid.minus(c, p), Rigid.scale(gravity, payload)));
+            }
+            return t;
+        }
+
+        /** The turn of everything beyond the upper arm at model angles theta with {@code payload} kg. */
+        public Rigid turn(Arm a, double[] theta, double payload) {
+            double[][] axis = axis(a, theta);
+            return Rigid.rotation(axis[0], torque(a, theta, payload) / stiffnessNmPerRad, axis[1]);
+        }
+
+        /** The upper arm's axis at theta: {unit direction from joint 2's axis to joint 3's point, joint 2's point}. */
+        private static double[][] axis(Arm a, double[] theta) {
+            Rigid[] body = a.bodies(theta);
+            double[] w = body[0].rotate(a.axes()[1]), p = body[0].apply(a.points()[1]), p3 = body[1].apply(a.points()[2]);
+            double[] l = Rigid.minus(p3, p);
+            l = Rigid.minus(l, Rigid.scale(w, Rigid.dot(l, w)));
+            return new double[][] {Rigid.unit(l), p};
         }
     }
 
@@ -638,56 +701,60 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist);
+    }
+
+    public WorldRobot withTwist(Twist t) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t);
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -118,13 +118,15 @@ class CampaignTest {
                 "lost motion j3 building up over the move, approached by 0.5-10 deg from above, a fifth from below",
                 "outside: tracker distance and azimuth errors", "outside: base rocks on its foundation above an overturning moment",
                 "outside: dress-pack drag on the wrist", "outside: bearing wobble of j1 at 0.38 times its angle, 3 gross outliers",
-                "lost motion j2 held on one flank by gravity + cross-coupling j5<-j4")) {
+                "lost motion j2 held on one flank by gravity + cross-coupling j5<-j4",
+                "outside: the upper arm twists under an off-axis payload, payload steps, 6-D")) {
             Scenario s = Scenario.named(name);
             Scenario.Trial t = s.trial(5), twin = s.twin(5);
             assertEquals(t.world().arm().flange().p()[0], twin.world().arm().flange().p()[0], 0.0, name);
             assertTrue(twin.world().errors().isEmpty() && twin.world().thermal() == null && twin.world().sag() == null, name);
             assertTrue(twin.world().compliance() == null && twin.world().toolBump() == null && twin.world().tracker() == null
-                    && twin.world().rocking() == null && twin.world().dressPack() == null && twin.world().wobbles().isEmpty(), name);
+                    && twin.world().rocking() == null && twin.world().dressPack() == null && twin.world().wobbles().isEmpty()
+                    && twin.world().twist() == null, name);
             assertEquals(t.campaign().rows().size(), twin.campaign().rows().size(), name);
             int outliers = 0;
             for (int i = 0; i < t.campaign().rows().size(); i++) {

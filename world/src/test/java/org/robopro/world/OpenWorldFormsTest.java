@@ -82,6 +82,38 @@ class OpenWorldFormsTest {
         assertEquals(Math.hypot(x[0], x[1]) * Math.abs(err), Rigid.norm(d), 1e-9);
     }
 
+    /**
+     * The upper arm twists about its own axis by T / k, T the moment of the weights beyond it about
+     * that axis; gravity then does work on the loads: a weight off the arm's plane moves down.
+     */
+    @Test
+    void upperArmTwist_byHand() {
+        var m = exact();
+        // 10 kg with their centre 0.2 m along the flange's y
+        var twist = new WorldRobot.Twist(2e5, m.masses(), new double[] {0, 0.2, 0}, m.gravity());
+        WorldRobot rigid = nominal(), twisted = rigid.withTwist(twist);
+        // Zero pose: the upper arm runs straight up from joint 2's point (0, 0, 0.78) to joint 3's (0, 0, 1.49), e = +z, and
+        // a weight's moment (c - p) × m g about a vertical axis is 0 whatever its place
+        assertEquals(0, twist.torque(rigid.arm(), new double[6], 10), 1e-9, "an upright arm: gravity is along its axis");
+        // Joint 2 at 90°: the upper arm lies along +x (joint 2 turns about +y, +90° swings +z to +x); the payload's centre
+        // sits off the arm's plane (y = 0), so its weight turns the arm about x
+        double[] q = deg(0, 90, 0, 0, 0, 0);
+        double[] e = {1, 0, 0};
+        double[] p = rigid.arm().bodies(q)[0].apply(rigid.arm().points()[1]);
+        double[] c = rigid.arm().bodies(q)[5].apply(rigid.arm().flange().apply(new double[] {0, 0.2, 0}));
+        double t = Rigid.dot(e, Rigid.cross(Rigid.minus(c, p), new double[] {0, 0, -10 * G}));
+        assertEquals(t, twist.torque(rigid.arm(), q, 10), 1e-9);
+        assertTrue(Math.abs(t) > 10, "the payload hangs beside the arm: " + t + " N·m");
+        // the payload's centre moves down under the twist (gravity does work on it), by about (T / k) times its lever
+        double[] before = c, after = twist.turn(rigid.arm(), q, 10).apply(c);
+        double lever = Math.abs(c[1] - p[1]);
+        assertTrue(after[2] < before[2], "the weight goes down: " + (after[2] - before[2]));
+        assertEquals(lever * Math.abs(t) / 2e5, before[2] - after[2], 1e-3 * lever * Math.abs(t) / 2e5);
+        // and the measured target moves with everything beyond the arm
+        double[] pt = rigid.target(q, UP, 20, 0, 10).p(), pw = twisted.target(q, UP, 20, 0, 10).p();
+        assertArrayEquals(twist.turn(rigid.arm(), q, 10).apply(pt), pw, 1e-12);
+    }
+
     @Test
     void baseRocksOverTheFootEdge_aboveTheHoldMoment_byHand() {
         var m = exact();

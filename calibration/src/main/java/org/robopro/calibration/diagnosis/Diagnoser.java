@@ -1527,11 +1527,13 @@ public final class Diagnoser {
             boolean angleFamily = e.target() == Effect.Target.DRIVE && e.kind() != Effect.Kind.BACKLASH && e.kind() != Effect.Kind.SMOOTH
                     && e.kind() != Effect.Kind.ANGLE_STEP;
             // a smooth curve of the drive's own angle takes any family of the drive; one following another joint, that joint's coupling
-            if (!angleFamily || selected.stream().noneMatch(x -> (x.kind() == Effect.Kind.SMOOTH || x.kind() == Effect.Kind.ANGLE_STEP)
-                    && x.joint() == e.joint() && (x.angleJoint() == x.joint() || e.kind() == Effect.Kind.COUPLING && e.source() == x.angleJoint())))
+            // and a wobble of the joint's axis at orders of its angle takes a gear's error of the same angle
+            if (!angleFamily || selected.stream().noneMatch(x -> ((x.kind() == Effect.Kind.SMOOTH || x.kind() == Effect.Kind.ANGLE_STEP)
+                    && (x.angleJoint() == x.joint() || e.kind() == Effect.Kind.COUPLING && e.source() == x.angleJoint())
+                    || x.kind() == Effect.Kind.AXIS_WOBBLE && e.kind() == Effect.Kind.PERIODIC) && x.joint() == e.joint()))
                 continue;
             aliasNotes.add(e.label() + " is not claimed: the angle-dependent error of joint " + (e.joint() + 1)
-                    + " needed a fallback of its angle (a smooth curve or a step) as well, so it is not that family's alone");
+                    + " needed a fallback of its angle (a smooth curve, a step, or a wobble of its axis) as well, so it is not that family's alone");
             fit = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
         }
         fit = pairNeeded(w, fit, selected, absorbedCols, steps, aliasNotes);
@@ -2680,9 +2682,10 @@ public final class Diagnoser {
                         double pf = at.pressReplacing(k, f, w.conditions);
                         if (pf < bestPress) { bestPress = pf; best = f; }
                     }
-                    why = String.format(Locale.ROOT, "%s is not claimed: joint %d's drive train runs from its motor through the "
-                            + "joints before it, so joint %d's angle has no path to it; the structure is an error of joint %d that "
-                            + "follows joint %d", e.label(), e.joint() + 1, e.source() + 1, e.joint() + 1, e.source() + 1);
+                    why = String.format(Locale.ROOT, "%s is not claimed: joint %d's drive train does not pass joint %d (a drive is "
+                            + "turned only by the joints between its motor and its own joint; a wrist's motors ride on the upper arm), "
+                            + "so joint %d's angle has no path to it; the structure is an error of joint %d that follows joint %d",
+                            e.label(), e.joint() + 1, e.source() + 1, e.source() + 1, e.joint() + 1, e.source() + 1);
                 } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress)
                         || best != null && besideAnother(e, selected)
                         && nestedTie(best, own, pressOwn, bestPress) && pressOwn >= bestPress * (1 - ALIAS_MARGIN)
@@ -3335,6 +3338,7 @@ public final class Diagnoser {
                 case TARGET_SIGHT -> { if (k == Effect.Kind.TARGET_INCIDENCE || k == Effect.Kind.INSTRUMENT) return e; }
                 // the link's bending, or its joint's spring (a beam's special case)
                 case LINK_BEND -> { if ((k == Effect.Kind.LINK_SAG || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint) return e; }
+                case LINK_TWIST -> { if (k == Effect.Kind.LINK_TWIST) return e; }
             }
         }
         return null;
@@ -3530,6 +3534,9 @@ public final class Diagnoser {
             case LINK_BEND -> String.format(Locale.ROOT, "put a second target on joint %d's housing (the link's far end) and "
                     + "measure it with the link horizontal and near vertical, with and without payload: a link that bends moves "
                     + "there across itself, a joint's spring turns it about joint %d.", f.probe.joint + 2, f.probe.joint + 1);
+            case LINK_TWIST -> "put two targets on joint 3's housing, either side of the upper arm's plane, and measure them with "
+                    + "the wrist turned so the tool's weight hangs to one side and then to the other, with and without payload: an "
+                    + "upper arm that twists lifts one and lowers the other.";
             case TARGET_SIGHT -> "measure a few poses again with an open-air (hollow) reflector, or with the reflector turned in its "
                     + "nest toward the instrument: an error that follows the line of sight in the tool's frame is the reflector's.";
             case TOOL_GRAVITY -> "measure a few places twice, with the flange pointing down and then sideways (and the "
@@ -3760,7 +3767,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
-                case AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, TARGET_SIGHT -> { }
+                case AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -3784,7 +3791,7 @@ public final class Diagnoser {
             if (!hs.isEmpty()) out.add(Effect.axisWobble(model, j, hs.stream().mapToInt(Integer::intValue).toArray()));
         }
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) out.add(Effect.toolSag(model, Effect.DOWN));
-        for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND) out.add(f.probe.bend);
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND || f.probe.var == Locator.Var.LINK_TWIST) out.add(f.probe.bend);
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.TARGET_SIGHT) out.add(f.probe.incidence);
         return out;
     }
@@ -5170,6 +5177,14 @@ public final class Diagnoser {
                 double d = spread(v);
                 c.plausible = d < MAX_BACKLASH_RAD;
                 c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(d), Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case LINK_TWIST -> {
+                // each lever's twist at a metre of lever and at a rated payload of 20 kg
+                double most = 0;
+                for (int i = 0; i < v.length; i++) most = Math.max(most, Math.abs(v[i]) * (i < Effect.TWIST_ARM_TERMS ? 1 : 20));
+                c.plausible = most < MAX_LINK_TURN_RAD;
+                c.plausibility = String.format(Locale.ROOT, "each weight's twist at a metre's lever (20 kg of payload) %.4f deg < %.2f deg",
+                        Math.toDegrees(most), Math.toDegrees(MAX_LINK_TURN_RAD));
             }
             case LINK_SAG -> {
                 c.plausible = Math.abs(v[0]) < MAX_TOOL_SAG_M && Math.abs(v[1]) < MAX_LINK_TURN_RAD;

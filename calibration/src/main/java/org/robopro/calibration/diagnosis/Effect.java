@@ -79,7 +79,8 @@ public final class Effect {
         TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family"),
         TARGET_INCIDENCE("target-incidence", "Error of the measured point that follows the direction the instrument sees it from, "
                 + "in the tool's frame: a reflector seen off its axis, of no known family"),
-        LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family");
+        LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family"),
+        LINK_TWIST("link-twist", "The upper arm twisting about its long axis under the weights beyond it, of no known family");
 
         public final String json;
         public final String title;
@@ -179,8 +180,8 @@ public final class Effect {
     private double[] lagTaus;                // thermal-link: each column's lag time constant, s (0: none)
     private double[] warmTaus;               // thermal-link: each link's warm-up time constant by its drives, s (null: the air's temperature only)
     private Pauses pauses;                   // that warm-up: when the robot rested during the campaign (null: never, as far as known)
-    private Vec3 down;                       // tool sag, link sag: gravity's direction, base frame (unit)
-    private boolean sagPayload;              // link sag: columns of the payload's weight at the far end
+    private Vec3 down;                       // tool sag, link sag and twist: gravity's direction, base frame (unit)
+    private boolean sagPayload;              // link sag and twist: columns of the payload's weight
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading, target incidence: instrumentTbase, fixed where the geometric fit put it
     private Vec3 sightAxis;                  // target incidence: the mean direction the point is seen from, flange frame (unit)
@@ -1091,6 +1092,102 @@ public final class Effect {
         }
     }
 
+    /**
+     * The upper arm twisting about its own long axis under the torque of the weights beyond it: a
+     * bar under a torque T about its axis turns its far end by φ = T L / (G J) in the sense of T
+     * (Saint-Venant torsion, Timoshenko &amp; Goodier, Theory of Elasticity, ch. 10; Gere &amp;
+     * Goodno, Mechanics of Materials, §3.3). The axis ê runs from joint 2's axis to joint 3's,
+     * across joint 2's axis; everything beyond turns by φ ê about joint 2's point: Δp = φ ê × (p − o).
+     * The weights' torque about ê through o is T = g Σ m (c − o)·(ĝ × ê) (ĝ the unit of gravity):
+     * only weight beside the arm's plane twists it, the forearm's centre off the plane and the
+     * tool's and the payload's, which the wrist swings about. With their masses and centres unknown
+     * it is linear in each body's mass and first moments: for the forearm, which turns with joint 3
+     * about an axis parallel to joint 2's, only the part across the plane counts, u·z₃ (u = ĝ × ê);
+     * for the wrist's two bodies, whose masses sit at the wrist's centre (their masses' part is the
+     * forearm's), their first moments along their own axes, u·x₄, u·y₄, u·z₄ and u·x₅, u·y₅, u·z₅;
+     * for the body on the flange (the hand, the tool) its mass at the flange's origin, u·(o_f − o),
+     * and its first moments along the flange's axes, u·x_f, u·y_f, u·z_f. With {@code
+     * payloadColumns}, the payload's four again, times its mass. Columns: φ per unit of each (the
+     * coefficients g m / k and g m c / k, k = G J / L); a lever that is no more than rounding at a
+     * pose (an axis that stays in the arm's plane) is taken as zero there.
+     * The forearm's own twist about its long axis is joint 4's turn, a spring of that drive.
+     */
+    public static Effect linkTwist(KinematicModel model, boolean payloadColumns) {
+        if (model.dof() < 6 || model.isPrismatic(1) || model.isPrismatic(2))
+            throw new IllegalArgumentException("link twist is of a six-axis arm's upper arm between revolute joints 2 and 3");
+        Effect e = new Effect(Kind.LINK_TWIST, 1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.sagPayload = payloadColumns;
+        e.down = DOWN;
+        return e;
+    }
+
+    /** Columns of a link twist before the payload's: the forearm's lateral weight, then the flange body's mass and first moments. */
+    static final int TWIST_ARM_TERMS = 11;
+    /** A link twist's lever below this (m, or a unit vector's component) is rounding of one that is zero. */
+    private static final double TWIST_LEVER_ZERO = 1e-9;
+
+    /**
+     * A link twist's lever columns at q under c (its size; the twist φ = Σ v_i x_i) and, in
+     * {@code axisAndRoot}, the twist's axis ê and joint 2's point o (6 values); false where the
+     * upper arm is shorter than {@link #MIN_LINK_M} across joint 2's axis.
+     */
+    boolean twistLevers(double[] q, PoseConditions c, double[] x, double[] axisAndRoot) {
+        Arrays.fill(x, 0);
+        Pose[] f = model.linkFrames(q);
+        Pose root = f[2];
+        Vec3 z = root.zAxis(), o = root.position();
+        Vec3 l = f[3].position().minus(o);
+        l = l.minus(z.times(l.dot(z)));
+        double len = l.norm();
+        if (len < MIN_LINK_M) return false;
+        Vec3 e = l.times(1 / len), u = down.cross(e);
+        Pose fl = f[f.length - 1];
+        double[] arm = {u.dot(f[3].zAxis()), u.dot(f[4].xAxis()), u.dot(f[4].yAxis()), u.dot(f[4].zAxis()),
+                u.dot(f[5].xAxis()), u.dot(f[5].yAxis()), u.dot(f[5].zAxis()),
+                u.dot(fl.position().minus(o)), u.dot(fl.xAxis()), u.dot(fl.yAxis()), u.dot(fl.zAxis())};
+        for (int i = 0; i < arm.length; i++) if (Math.abs(arm[i]) < TWIST_LEVER_ZERO) arm[i] = 0;
+        System.arraycopy(arm, 0, x, 0, TWIST_ARM_TERMS);
+        if (sagPayload) {
+            double payload = c != null && Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
+            for (int i = 0; i < HAND_TERMS; i++) x[TWIST_ARM_TERMS + i] = payload * arm[TWIST_ARM_TERMS - HAND_TERMS + i];
+        }
+        axisAndRoot[0] = e.x(); axisAndRoot[1] = e.y(); axisAndRoot[2] = e.z();
+        axisAndRoot[3] = o.x(); axisAndRoot[4] = o.y(); axisAndRoot[5] = o.z();
+        return true;
+    }
+
+    /** A link twist's columns at q under c: the point's move (3 x size) for a point at {@code pointBase}, or the frame's turn. */
+    private void linkTwistColumns(double[] q, PoseConditions c, double[] pointBase, double[] g3, double[] w3) {
+        int k = size();
+        if (g3 != null) Arrays.fill(g3, 0);
+        if (w3 != null) Arrays.fill(w3, 0);
+        double[] x = new double[k], ar = new double[6];
+        if (!twistLevers(q, c, x, ar)) return;
+        Vec3 e = new Vec3(ar[0], ar[1], ar[2]);
+        Vec3 move = pointBase == null ? null : e.cross(new Vec3(pointBase[0] - ar[3], pointBase[1] - ar[4], pointBase[2] - ar[5]));
+        for (int i = 0; i < k; i++) {
+            if (g3 != null && move != null) {
+                g3[i] = x[i] * move.x();
+                g3[k + i] = x[i] * move.y();
+                g3[2 * k + i] = x[i] * move.z();
+            }
+            if (w3 != null) {
+                w3[i] = x[i] * e.x();
+                w3[k + i] = x[i] * e.y();
+                w3[2 * k + i] = x[i] * e.z();
+            }
+        }
+    }
+
+    /** A link twist's lateral lever of the flange at q: u·(o_f − o), m (the plot's variable). */
+    public double twistLever(double[] q) {
+        double[] x = new double[size()], ar = new double[6];
+        return twistLevers(q, null, x, ar) ? x[TWIST_ARM_TERMS - HAND_TERMS] : 0;
+    }
+
+    /** A link twist's columns of the body on the flange (and of the payload): its mass, then its three first moments. */
+    static final int HAND_TERMS = 4;
+
     /** A base tilt's excess moment about its axis at q with a payload (N·m, ≥ 0 with a hold). */
     double tiltExcess(double[] q, double payloadKg) { return tilt(q, payloadKg)[2]; }
 
@@ -1193,7 +1290,7 @@ public final class Effect {
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
-                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.TARGET_INCIDENCE;
+                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
@@ -1361,7 +1458,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
-                 TARGET_INCIDENCE -> Target.POSITION;
+                 LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -1407,6 +1504,7 @@ public final class Effect {
             case TOOL_SAG -> 9;
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
+            case LINK_TWIST -> TWIST_ARM_TERMS + (sagPayload ? HAND_TERMS : 0);
             case POINT_SMOOTH -> 3 * nBasis;
             case BASE_TURN -> 3 * nBasis + 3;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
@@ -1461,6 +1559,11 @@ public final class Effect {
                 out.add("t_weight");
                 if (sagPayload) out.add("t_payload");
             }
+            case LINK_TWIST -> {
+                out.addAll(List.of("t_forearm", "t_wrist4_x", "t_wrist4_y", "t_wrist4_z", "t_wrist5_x", "t_wrist5_y", "t_wrist5_z",
+                        "t_hand_o", "t_hand_x", "t_hand_y", "t_hand_z"));
+                if (sagPayload) out.addAll(List.of("t_payload_o", "t_payload_x", "t_payload_y", "t_payload_z"));
+            }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
             case TARGET_INCIDENCE -> {
                 for (String a : new String[] {"x", "y", "z"}) for (String m : INCIDENCE_ACROSS) out.add(a + "_" + m);
@@ -1507,6 +1610,7 @@ public final class Effect {
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
             case LINK_SAG -> "m";
+            case LINK_TWIST -> "rad";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -1522,6 +1626,12 @@ public final class Effect {
         if (kind == Kind.BASE_TURN) { // the turns, then the drift over the whole range
             List<String> out = new ArrayList<>(java.util.Collections.nCopies(3 * nBasis, u));
             out.addAll(List.of("m", "m", "m"));
+            return out;
+        }
+        if (kind == Kind.LINK_TWIST) { // per unit of each lever: the forearm's and the first moments' unitless, the masses' in m
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(TWIST_ARM_TERMS, "rad"));
+            out.set(TWIST_ARM_TERMS - HAND_TERMS, "rad/m");
+            if (sagPayload) out.addAll(List.of("rad/(kg·m)", "rad/kg", "rad/kg", "rad/kg"));
             return out;
         }
         if (kind == Kind.LINK_SAG) {
@@ -1565,6 +1675,7 @@ public final class Effect {
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
             case TOOL_SAG, TARGET_INCIDENCE -> kind.json;
+            case LINK_TWIST -> kind.json + " j2 (upper arm)";
             case LINK_SAG -> kind.json + " j" + (joint + 1) + (joint == 1 ? " (upper arm)" : joint == 2 ? " (forearm)" : "");
             case AXIS_WOBBLE -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
                     + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
@@ -1681,7 +1792,7 @@ public final class Effect {
                 else Arrays.fill(g, 0);
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
-                 TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
+                 LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1702,6 +1813,7 @@ public final class Effect {
             case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
             case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), sightOrigin, sightAxis, sightAcross, pointBase, g3);
             case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
+            case LINK_TWIST -> linkTwistColumns(q, c, pointBase, g3, null);
             case AXIS_WOBBLE -> {
                 // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)
                 double[] w = new double[3 * k], o = new double[3];
@@ -1854,7 +1966,8 @@ public final class Effect {
     }
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
-    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.BASE_TURN; }
+    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST
+            || kind == Kind.BASE_TURN; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -1865,6 +1978,7 @@ public final class Effect {
         Arrays.fill(g3, 0);
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
+        if (kind == Kind.LINK_TWIST) { linkTwistColumns(q, c, null, null, g3); return; }
         if (kind == Kind.BASE_TURN) {
             double[] b = readingBasis(c);
             if (b == null) return;
@@ -1928,14 +2042,25 @@ public final class Effect {
     /**
      * Whether drive {@code target}'s output can follow drive {@code source}'s angle. A drive train
      * runs from its motor to its joint, so it can be turned only by the joints it passes: joints
-     * before its own in the chain (the wrist's shafts run through axes 4 and 5 to the hand). A
-     * linkage the controller couples (a parallel arm's rod, θ3 = q3 − q2) ties the pair both ways.
-     * A joint beyond the target has no path to it: its drive turns only what lies beyond itself.
+     * before its own in the chain, between the link its motor rides on and its own joint. A linkage
+     * the controller couples (a parallel arm's rod, θ3 = q3 − q2) ties the pair both ways. A joint
+     * beyond the target has no path to it: its drive turns only what lies beyond itself.
+     * <p>
+     * On a six-axis arm the motors sit where the industrial arms put them (Craig, <i>Introduction to
+     * Robotics</i>, 3rd ed., §8.5 and the PUMA 560's wrist coupling; the ABB IRB and KUKA product
+     * manuals' motor layouts): axes 1 and 2 on the base and the turret, axis 3 on the turret or the
+     * lower arm (a rod or a belt along the lower arm passes axis 2), axes 4–6 at the upper arm's rear,
+     * their shafts through axes 4 and 5 to the hand. So joint 3 may follow joint 2, a wrist joint the
+     * wrist joints before it, and nothing else: no shaft of the wrist passes axes 1–3. Other arms keep
+     * the general rule (any joint before the target).
      */
     static boolean canCouple(KinematicModel model, int target, int source) {
         if (target == source) return false;
         double[][] c = model.couplingMatrix();
-        return source < target || c[target][source] != 0 || c[source][target] != 0;
+        if (c[target][source] != 0 || c[source][target] != 0) return true;
+        if (source > target) return false;
+        if (model.dof() != 6) return true;
+        return target == 2 && source == 1 || source >= 3;
     }
 
     /** This effect as an identification parameter block on {@code m} (its coupling matrix), starting at zero. */
@@ -2045,7 +2170,7 @@ public final class Effect {
                 p.put("axis_z", sightAxis.z());
                 putInstrument(p, instrument);
             }
-            case LINK_SAG -> { }
+            case LINK_SAG, LINK_TWIST -> { }
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
                 if (squareFoot()) p.put("foot_edges", 4.0);
@@ -2186,6 +2311,11 @@ public final class Effect {
                 if (js.get(0) < 2 || js.get(0) > 3)
                     throw new InputException(file, 0, 0, "effects.joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));
                 yield linkSag(model, js.get(0) - 1, ps.containsKey("t_payload"));
+            }
+            case LINK_TWIST -> {
+                if (js.get(0) != 2)
+                    throw new InputException(file, 0, 0, "effects.joints", "link-twist is of the upper arm (joint 2), got " + js.get(0));
+                yield linkTwist(model, ps.containsKey("t_payload_o"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
             case TARGET_INCIDENCE -> {

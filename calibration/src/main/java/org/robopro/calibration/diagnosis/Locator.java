@@ -40,7 +40,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, TARGET_SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -101,7 +101,7 @@ final class Locator {
         double azimuthRef;                       // SIGHT: the azimuth the readings are taken about
         double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
-        Effect bend;                             // LINK_BEND: the link's sag
+        Effect bend;                             // LINK_BEND, LINK_TWIST: the link's sag or twist
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
         String xLabel;
     }
@@ -318,6 +318,7 @@ final class Locator {
         out.addAll(axisWobbles(t));
         out.add(toolGravity(t));
         out.addAll(linkBends(t));
+        out.addAll(linkTwist(t));
         out.addAll(sightProbes(t, steps));
         // the reflector's error shows in the geometric fit's residuals already; its 32 columns are left out of the stepwise re-scans
         Probe incidence = steps ? targetSight(t) : null;
@@ -502,6 +503,35 @@ final class Locator {
         }
         return out;
     }
+
+    /**
+     * The upper arm twisting about its long axis under the weights beyond it ({@link Effect#linkTwist}):
+     * its columns, where the flange's lever across the arm's plane changes over the poses by at least
+     * {@link #MIN_TWIST_LEVER_M} (the wrist swings the tool's weight from side to side). Positions and
+     * orientations, one pose per row.
+     */
+    static List<Probe> linkTwist(Diagnoser.Tester t) {
+        KinematicModel model = t.w.model;
+        if (t.ends != 1 || model.dof() < 6 || model.isPrismatic(1) || model.isPrismatic(2)) return List.of();
+        Effect e = Effect.linkTwist(model, Diagnoser.payloadVaries(t.w.rows));
+        int poses = t.m / t.rpp;
+        double[][] x = new double[1][poses];
+        for (int i = 0; i < poses; i++) x[0][i] = e.twistLever(t.endRows.get(0).get(i).q());
+        if (!varies(x, MIN_TWIST_LEVER_M)) return List.of();
+        Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
+        p.var = Var.LINK_TWIST;
+        p.joint = 1;
+        p.bend = e;
+        p.variable = "the weights' lever across the upper arm's plane";
+        p.shape = "the upper arm (joint 2 to joint 3) twists about its long axis under the weights beyond it (the tool's and the "
+                + "payload's, swung across the arm's plane by the wrist)";
+        p.x = x;
+        p.xLabel = "the flange's lever across the upper arm's plane, times gravity across the arm (m)";
+        return List.of(p);
+    }
+
+    /** Least change over the poses of the flange's lever across the upper arm's plane for its twist to be probed, m. */
+    static final double MIN_TWIST_LEVER_M = 0.05;
 
     /** Orders of a joint's axis wobble probed (cycles per turn in the stator's frame). */
     static final int WOBBLE_ORDERS = 4;

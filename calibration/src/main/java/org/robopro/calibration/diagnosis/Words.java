@@ -118,6 +118,12 @@ final class Words {
                     + "so compensation can use it, but check the link: measure a target at the %s's far end (on joint %d's housing) "
                     + "with the link horizontal and vertical, with and without payload.", e.joint() == 1 ? "upper arm (joint 2 to joint 3)"
                     : "forearm (joint 3 to the wrist)", 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])), e.sagPayload() ? ", beside the payload's" : "", e.joint() == 1 ? "upper arm" : "forearm", e.joint() + 2);
+            case LINK_TWIST -> String.format(Locale.ROOT, "The upper arm (joint 2 to joint 3) twists about its long axis under the "
+                    + "torque of the weights beyond it%s, which the wrist swings across the arm's plane (the tool's and the payload's), "
+                    + "and none of the known effects explains it (a joint's spring turns about the joint's axis, a twist about the "
+                    + "link's). It is modelled as such so compensation can use it, but check the upper arm and the tool's weight and "
+                    + "centre: measure two targets on joint 3's housing either side of the arm's plane with the tool's weight hung "
+                    + "to one side and then the other.", at);
             case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "
                     + "flange (it drops %.4f mm more with its holder turned to its softest direction than to its stiffest: a bar held "
                     + "across gravity against along it), and none of the "

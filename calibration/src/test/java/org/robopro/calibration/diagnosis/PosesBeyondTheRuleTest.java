@@ -159,6 +159,9 @@ class PosesBeyondTheRuleTest {
         assertTrue(Effect.canCouple(irb, 1, 2), "the parallel rod ties the pair both ways");
         assertFalse(Effect.canCouple(irb, 2, 5), "joint 6 has no path to joint 3's drive");
         assertFalse(Effect.canCouple(irb, 3, 4), "nor joint 5 to joint 4's");
+        assertFalse(Effect.canCouple(irb, 5, 1), "the wrist's motors ride on the upper arm: no shaft of joint 6 passes axis 2");
+        assertFalse(Effect.canCouple(irb, 3, 2), "joint 4's motor rides beyond axis 3");
+        assertFalse(Effect.canCouple(puma, 4, 0), "nor does joint 5's pass axis 1");
         assertFalse(Effect.canCouple(puma, 1, 2), "a serial arm without a linkage: joint 3 does not turn joint 2");
         assertFalse(Effect.canCouple(puma, 3, 3));
     }
