@@ -57,7 +57,9 @@ final class Words {
                         hs[hs.length - 1] > 3 ? "cycles of a multi-stage or cycloidal reducer" : "gear or encoder eccentricity"));
                 for (int i = 0; i < hs.length; i++)
                     sb.append(String.format(Locale.ROOT, " %s cycle%s per turn%s %.4f ± %.4f deg%s", Effect.orderText(hs[i]), hs[i] == 1 ? "" : "s",
-                            hs[i] > Effect.HARMONICS ? " (a stage turning " + Effect.orderText(hs[i]) + " times per output turn)" : "",
+                            hs[i] > Effect.HARMONICS ? " (a stage turning " + Effect.orderText(hs[i]) + " times per output turn: a reducer's "
+                                    + "stage, or, at the joint's gear ratio, the motor itself, whose resolver or encoder error "
+                                    + "repeats there the same way)" : "",
                             Math.toDegrees(Math.hypot(v[2 * i], v[2 * i + 1])),
                             Math.toDegrees(Math.max(s[2 * i], s[2 * i + 1])), i < hs.length - 1 ? "," : "."));
                 if (ev.projectionRatio() < 0.3)
@@ -241,7 +243,8 @@ final class Words {
                     : String.format(Locale.ROOT, "The arm grows with temperature (thermal expansion): %.3g ± %.2g per K "
                     + "(steel is about 12e-6, aluminium 23e-6), reference %.1f °C.", v[0], s[0], e.t0C());
             case SCALE -> String.format(Locale.ROOT, "Joint %d turns by a slightly different amount than commanded (gear ratio "
-                    + "or encoder scale error): %.3g ± %.2g.", e.joint() + 1, v[0], s[0]);
+                    + "or encoder scale error, or a spring that pulls the joint back in proportion to how far it has turned, such as "
+                    + "a cable or hose winding with it): %.3g ± %.2g.", e.joint() + 1, v[0], s[0]);
             case COUPLING -> String.format(Locale.ROOT, "Joint %d moves a little with joint %d (coupling error between the axes): "
                     + "%.3g ± %.2g rad per rad.", e.joint() + 1, e.source() + 1, v[0], s[0]);
         };

@@ -2,6 +2,7 @@ package org.robopro.calibration.diagnosis;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -114,5 +115,34 @@ class CrossValidatedClaimsTest {
         Diagnosis d = Diagnoser.diagnose(irb2000, small, null);
         assertEquals(List.of("backlash j2"), families(d), "notes " + d.notes());
         assertTrue(d.notes().stream().anyMatch(n -> n.contains("not by 5-fold cross-validation")), d.notes().toString());
+    }
+
+    /**
+     * A family is claimed only when every fold but at most one names it (and a majority): with five
+     * folds, 4 of 5, not 3 of 5, which a soft foot and a motor resolver reached on clean-room sets
+     * and were named wrongly for.
+     */
+    @Test
+    void foldsAgree_everyFoldButOne() {
+        assertTrue(Diagnoser.foldsAgree(5, 5));
+        assertTrue(Diagnoser.foldsAgree(4, 5));
+        assertFalse(Diagnoser.foldsAgree(3, 5));
+        assertTrue(Diagnoser.foldsAgree(2, 3));
+        assertFalse(Diagnoser.foldsAgree(1, 3));
+        assertTrue(Diagnoser.foldsAgree(2, 2));
+        assertFalse(Diagnoser.foldsAgree(1, 2));
+        assertTrue(Diagnoser.foldsAgree(9, 10));
+        assertFalse(Diagnoser.foldsAgree(8, 10));
+    }
+
+    /** The arm's growth counts the same in a fold uniform or link by link; other families by their own key. */
+    @Test
+    void foldCount_growthInEitherForm() {
+        java.util.Map<String, Integer> c = java.util.Map.of("thermal-link", 2, "thermal-expansion", 3, "backlash j2", 3, "instrument-drift", 1);
+        assertEquals(5, Diagnoser.foldCount(c, "thermal-link", 5));
+        assertEquals(5, Diagnoser.foldCount(c, "thermal-expansion", 5));
+        assertEquals(3, Diagnoser.foldCount(c, "backlash j2", 5));
+        assertEquals(1, Diagnoser.foldCount(c, "instrument-drift", 5));
+        assertEquals(0, Diagnoser.foldCount(c, "backlash j1", 5));
     }
 }
