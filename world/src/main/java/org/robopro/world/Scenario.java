@@ -576,7 +576,7 @@ public record Scenario(String name, String family, String robot, Expected expect
         // The upper arm twisting under a payload whose centre sits 0.15-0.25 m off the flange's axis: the file's masses
         // (±30 %) and 10 kg give up to some 30 N·m about the arm's axis as the wrist swings the payload from side to side; a
         // torsional stiffness of 1.5-3·10⁵ N·m/rad (a cast arm's box section) turns the hand by up to about 10⁻⁴ rad. The PUMA
-        // 560's arm, a fifth of the size and carrying 2.5 kg, twists as much at 3-6·10⁴ N·m/rad.
+        // 560's smaller arm, carrying 0-5 kg in steps, twists as much at 3-6·10⁴ N·m/rad.
         c.add(s("outside: the upper arm twists under an off-axis payload", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var t = twist(n, 1.5e5, 3e5, r); return w -> w.withTwist(t); },
                 p -> p.withPayloads(RobotLibrary.shipped("irb2000").massModel().orElseThrow().ratedPayloadKg())));
