@@ -613,30 +613,24 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
 
         /** The torque about the upper arm's axis (N·m) at model angles theta with {@code payload} kg. */
         public double torque(Arm a, double[] theta, double payload) {
-            double[][] axis = axis(a, theta);
-            double[] e = axis[0], p = axis[1];
             Rigid[] body = a.bodies(theta);
-            double t = 0;
-            for (Mass m : masses) {
-                if (m.joint < 2) continue;
-                t += Rigid.dot(e, Rigid.cross(Rigid.minus(body[m.joint].apply(m.centre), p), Rigid.scale(gravity, m.kg)));
-            }
-            if (payload > 0) {
-                double[] c = body[a.dof() - 1].apply(a.flange().apply(payloadCentre));
-                t += Rigid.dot(e, Rigid.cross(Rigid.minus(c, p), Rigid.scale(gravity, payload)));
-            }
-            return t;
+            return torque(a, body, axis(a, body), payload);
         }
 
         /** The turn of everything beyond the upper arm at model angles theta with {@code payload} kg. */
         public Rigid turn(Arm a, double[] theta, double payload) {
-            double[][] axis = axis(a, theta);
-            return Rigid.rotation(axis[0], torque(a, theta, payload) / stiffnessNmPerRad, axis[1]);
+            Rigid[] body = a.bodies(theta);
+            double[][] axis = axis(a, body);
+            return Rigid.rotation(axis[0], torque(a, body, axis, payload) / stiffnessNmPerRad, axis[1]);
         }
 
-        /** The upper arm's axis at theta: {unit direction from joint 2's axis to joint 3's point, joint 2's point}. */
-        private static double[][] axis(Arm a, double[] theta) {
-            Rigid[] body = a.bodies(theta);
+        /** The moment about the arm's {@code axis} of the bodies beyond it (joints 3..) and the payload, N·m. */
+        private double torque(Arm a, Rigid[] body, double[][] axis, double payload) {
+            return moment(body, withPayload(a, masses, payloadCentre, payload), 2, axis[0], axis[1], gravity);
+        }
+
+        /** The upper arm's axis with the bodies at {@code body}: {unit direction from joint 2's axis to joint 3's point, joint 2's point}. */
+        private static double[][] axis(Arm a, Rigid[] body) {
             double[] w = body[0].rotate(a.axes()[1]), p = body[0].apply(a.points()[1]), p3 = body[1].apply(a.points()[2]);
             double[] l = Rigid.minus(p3, p);
             l = Rigid.minus(l, Rigid.scale(w, Rigid.dot(l, w)));
@@ -681,23 +675,42 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         Rigid[] body = a.bodies(theta);
         double[][] pts = a.points(), axes = a.axes();
         boolean[] prismatic = a.prismatic();
-        List<Mass> all = new ArrayList<>(compliance.masses);
-        if (payload > 0) {
-            double[] c = a.flange().apply(compliance.payloadCentre); // flange coordinates -> zero-position base coordinates
-            all.add(new Mass(n - 1, payload, c));
-        }
+        List<Mass> all = withPayload(a, compliance.masses, compliance.payloadCentre, payload);
         double[] tau = new double[n];
         for (int i = 0; i < n; i++) {
             Rigid before = i == 0 ? Rigid.IDENTITY : body[i - 1];
             double[] w = before.rotate(axes[i]), p = before.apply(pts[i]);
-            for (Mass m : all) {
-                if (m.joint < i) continue;
-                double[] c = body[m.joint].apply(m.centre);
-                double[] f = Rigid.scale(compliance.gravity, m.kg);
-                tau[i] += prismatic[i] ? Rigid.dot(w, f) : Rigid.dot(w, Rigid.cross(Rigid.minus(c, p), f));
+            if (!prismatic[i]) {
+                tau[i] = moment(body, all, i, w, p, compliance.gravity);
+                continue;
             }
+            for (Mass m : all) if (m.joint >= i) tau[i] += Rigid.dot(w, Rigid.scale(compliance.gravity, m.kg));
         }
         return tau;
+    }
+
+    /**
+     * The masses, and the payload ({@code payload} kg above 0) at its centre in flange coordinates as
+     * a mass of the last body, in zero-position base coordinates.
+     */
+    static List<Mass> withPayload(Arm a, List<Mass> masses, double[] payloadCentre, double payload) {
+        List<Mass> all = new ArrayList<>(masses);
+        if (payload > 0) all.add(new Mass(a.dof() - 1, payload, a.flange().apply(payloadCentre)));
+        return all;
+    }
+
+    /**
+     * The moment about the line through {@code p} along unit {@code w} of the weights of the masses
+     * riding on body {@code from} and beyond, with the bodies at {@code body}: Σ w · ((c − p) × m g)
+     * (N·m), c each mass's centre at the pose.
+     */
+    static double moment(Rigid[] body, List<Mass> all, int from, double[] w, double[] p, double[] gravity) {
+        double t = 0;
+        for (Mass m : all) {
+            if (m.joint < from) continue;
+            t += Rigid.dot(w, Rigid.cross(Rigid.minus(body[m.joint].apply(m.centre), p), Rigid.scale(gravity, m.kg)));
+        }
+        return t;
     }
 
     public WorldRobot withErrors(List<JointError> e) {

@@ -349,7 +349,7 @@ public final class Diagnoser {
                 double[] h = held.get(key);
                 extra.add(String.format(Locale.ROOT, "%s is not claimed: %s", key, !foldsAgree(n, k)
                         ? String.format(Locale.ROOT, "only %d of %d cross-validation folds name it (at least %d must)", n, k,
-                        Math.max(k / 2 + 1, k - 1))
+                        foldsNeeded(k))
                         : h == null ? "the folds could not judge it on its own"
                         : String.format(Locale.ROOT, "the final model without it predicts the folds' held-out poses as well or "
                         + "better (error %.1f with it, %.1f without it)", h[0], h[1])));
@@ -368,9 +368,10 @@ public final class Diagnoser {
      * family those poses show clearly is found by nearly all of them, and one at the edge of what
      * they show is the kind the held-out gates pass by chance (docs/diagnosis.md, the held-out rule).
      */
-    static boolean foldsAgree(int n, int k) {
-        return n >= Math.max(k / 2 + 1, k - 1);
-    }
+    static boolean foldsAgree(int n, int k) { return n >= foldsNeeded(k); }
+
+    /** The folds of {@code k} that must name a family ({@link #foldsAgree}). */
+    private static int foldsNeeded(int k) { return Math.max(k / 2 + 1, k - 1); }
 
     /**
      * How many of the {@code k} folds named claim {@code key}: a growth of the arm with temperature

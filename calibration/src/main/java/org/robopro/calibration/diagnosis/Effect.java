@@ -1030,12 +1030,17 @@ public final class Effect {
         return b == null ? 0 : down.dot(b.across);
     }
 
-    /** A bending link at q: its joint's axis ẑ, its far end, the unit vector across it n̂ = ẑ × ê, its length across ẑ. */
-    private record Bend(Vec3 axis, Vec3 end, Vec3 across, double length) { }
+    /**
+     * A bending or twisting link at q: its joint's axis ẑ and point o, its far end, the unit vectors
+     * along it ê (across ẑ) and across it n̂ = ẑ × ê, its length across ẑ.
+     */
+    private record Bend(Vec3 axis, Vec3 root, Vec3 end, Vec3 along, Vec3 across, double length) { }
 
-    /** The link sag's link at q; null where it is shorter than {@link #MIN_LINK_M} across its joint's axis. */
-    private Bend bend(double[] q) {
-        Pose[] f = model.linkFrames(q);
+    /** The link sag's or twist's link at q; null where it is shorter than {@link #MIN_LINK_M} across its joint's axis. */
+    private Bend bend(double[] q) { return bend(model.linkFrames(q)); }
+
+    /** {@link #bend(double[])} with the link frames {@code f} at q. */
+    private Bend bend(Pose[] f) {
         Pose root = f[joint + 1];
         // the far end: the next joint's axis for the upper arm, the wrist's centre (joint 5's axis, which joints 4 and 6 meet)
         // for the forearm, whose own axis runs along joint 4's
@@ -1043,7 +1048,9 @@ public final class Effect {
         Vec3 l = end.minus(root.position());
         l = l.minus(z.times(l.dot(z)));
         double len = l.norm();
-        return len < MIN_LINK_M ? null : new Bend(z, end, z.cross(l.times(1 / len)), len);
+        if (len < MIN_LINK_M) return null;
+        Vec3 along = l.times(1 / len);
+        return new Bend(z, root.position(), end, along, z.cross(along), len);
     }
 
     /**
@@ -1121,26 +1128,22 @@ public final class Effect {
         return e;
     }
 
-    /** Columns of a link twist before the payload's: the forearm's lateral weight, then the flange body's mass and first moments. */
+    /** Columns of a link twist before the payload's: the forearm's weight across the arm's plane, the wrist's two bodies' first moments, the hand's mass and first moments. */
     static final int TWIST_ARM_TERMS = 11;
     /** A link twist's lever below this (m, or a unit vector's component) is rounding of one that is zero. */
     private static final double TWIST_LEVER_ZERO = 1e-9;
 
     /**
-     * A link twist's lever columns at q under c (its size; the twist φ = Σ v_i x_i) and, in
-     * {@code axisAndRoot}, the twist's axis ê and joint 2's point o (6 values); false where the
-     * upper arm is shorter than {@link #MIN_LINK_M} across joint 2's axis.
+     * A link twist's lever columns at q under c (its size; the twist φ = Σ v_i x_i), and the upper arm
+     * whose axis ê it turns about ({@link Bend#along}, through {@link Bend#root}); null, with the
+     * columns zero, where the upper arm is shorter than {@link #MIN_LINK_M} across joint 2's axis.
      */
-    boolean twistLevers(double[] q, PoseConditions c, double[] x, double[] axisAndRoot) {
+    private Bend twistLevers(double[] q, PoseConditions c, double[] x) {
         Arrays.fill(x, 0);
         Pose[] f = model.linkFrames(q);
-        Pose root = f[2];
-        Vec3 z = root.zAxis(), o = root.position();
-        Vec3 l = f[3].position().minus(o);
-        l = l.minus(z.times(l.dot(z)));
-        double len = l.norm();
-        if (len < MIN_LINK_M) return false;
-        Vec3 e = l.times(1 / len), u = down.cross(e);
+        Bend b = bend(f);
+        if (b == null) return null;
+        Vec3 o = b.root(), u = down.cross(b.along());
         Pose fl = f[f.length - 1];
         double[] arm = {u.dot(f[3].zAxis()), u.dot(f[4].xAxis()), u.dot(f[4].yAxis()), u.dot(f[4].zAxis()),
                 u.dot(f[5].xAxis()), u.dot(f[5].yAxis()), u.dot(f[5].zAxis()),
@@ -1151,9 +1154,7 @@ public final class Effect {
             double payload = c != null && Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
             for (int i = 0; i < HAND_TERMS; i++) x[TWIST_ARM_TERMS + i] = payload * arm[TWIST_ARM_TERMS - HAND_TERMS + i];
         }
-        axisAndRoot[0] = e.x(); axisAndRoot[1] = e.y(); axisAndRoot[2] = e.z();
-        axisAndRoot[3] = o.x(); axisAndRoot[4] = o.y(); axisAndRoot[5] = o.z();
-        return true;
+        return b;
     }
 
     /** A link twist's columns at q under c: the point's move (3 x size) for a point at {@code pointBase}, or the frame's turn. */
@@ -1161,10 +1162,11 @@ public final class Effect {
         int k = size();
         if (g3 != null) Arrays.fill(g3, 0);
         if (w3 != null) Arrays.fill(w3, 0);
-        double[] x = new double[k], ar = new double[6];
-        if (!twistLevers(q, c, x, ar)) return;
-        Vec3 e = new Vec3(ar[0], ar[1], ar[2]);
-        Vec3 move = pointBase == null ? null : e.cross(new Vec3(pointBase[0] - ar[3], pointBase[1] - ar[4], pointBase[2] - ar[5]));
+        double[] x = new double[k];
+        Bend b = twistLevers(q, c, x);
+        if (b == null) return;
+        Vec3 e = b.along();
+        Vec3 move = pointBase == null ? null : e.cross(new Vec3(pointBase[0], pointBase[1], pointBase[2]).minus(b.root()));
         for (int i = 0; i < k; i++) {
             if (g3 != null && move != null) {
                 g3[i] = x[i] * move.x();
@@ -1181,8 +1183,8 @@ public final class Effect {
 
     /** A link twist's lateral lever of the flange at q: u·(o_f − o), m (the plot's variable). */
     public double twistLever(double[] q) {
-        double[] x = new double[size()], ar = new double[6];
-        return twistLevers(q, null, x, ar) ? x[TWIST_ARM_TERMS - HAND_TERMS] : 0;
+        double[] x = new double[size()];
+        return twistLevers(q, null, x) == null ? 0 : x[TWIST_ARM_TERMS - HAND_TERMS];
     }
 
     /** A link twist's columns of the body on the flange (and of the payload): its mass, then its three first moments. */

@@ -29,14 +29,11 @@ class RunoutLostMotionTest {
     void playChangingOverTheTurn_namedOnJoint2_withTheTruthsPlay_atTheFloor() {
         Scenario s = Scenario.named("lost motion j2 whose play changes over the turn (output gear runout)");
         for (long seed : new long[] {20261124, 20261126}) {
-            Scenario.Trial t = s.trial(seed);
-            WorldCampaigns.Sim c = WorldCampaigns.of(t);
-            JointError.GearPairLostMotion truth = gearPair(t);
-            Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
-            assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
-            Diagnosis.Finding f = d.effects().get(0);
-            assertEquals(Effect.Kind.BACKLASH, f.effect().kind());
-            assertEquals(1, f.effect().joint());
+            Run run = lostMotion(s.trial(seed), 1, "seed " + seed);
+            WorldCampaigns.Sim c = run.c();
+            JointError.GearPairLostMotion truth = run.truth();
+            Diagnosis d = run.d();
+            Diagnosis.Finding f = run.f();
             assertTrue(f.effect().runout(), "seed " + seed + ": " + f.effect().label());
             double[] v = f.values();
             // the truth's play over the turn: width + A cos(q - phase), A = 2 e tan(alpha) / r
@@ -52,13 +49,9 @@ class RunoutLostMotionTest {
     @Test
     void playChangingOverTheTurn_directionsFromTheMeasuringOrder() {
         Scenario s = Scenario.named("lost motion j1 irb2400 whose play changes over the turn (output gear runout), directions not recorded");
-        WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(20261125));
-        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), c.validation());
-        assertEquals(1, d.effects().size(), d.effects() + " " + d.notes());
-        Effect e = d.effects().get(0).effect();
-        assertEquals(0, e.joint());
-        assertTrue(e.runout(), e.label());
-        assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), d.finalValidateRmsM() / c.floorM() + " x floor");
+        Run run = lostMotion(s.trial(20261125), 0, "seed 20261125");
+        assertTrue(run.f().effect().runout(), run.f().effect().label());
+        assertTrue(run.d().finalValidateRmsM() <= 1.15 * run.c().floorM(), run.d().finalValidateRmsM() / run.c().floorM() + " x floor");
     }
 
     /**
@@ -74,15 +67,12 @@ class RunoutLostMotionTest {
     void playChangingWithItsPinion_namedWithTheStageOrder() {
         Scenario s = Scenario.named("lost motion j3 whose play changes with its pinion's turn (eccentric pinion)");
         for (long seed : new long[] {20261124, 20261126}) {
-            Scenario.Trial t = s.trial(seed);
-            WorldCampaigns.Sim c = WorldCampaigns.of(t);
-            JointError.GearPairLostMotion truth = gearPair(t);
-            Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
-            assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
+            Run run = lostMotion(s.trial(seed), 2, "seed " + seed);
+            WorldCampaigns.Sim c = run.c();
+            JointError.GearPairLostMotion truth = run.truth();
+            Diagnosis d = run.d();
+            Diagnosis.Finding f = run.f();
             assertTrue(d.located().stream().allMatch(l -> l.explainedBy() != null), "seed " + seed + ": " + d.located());
-            Diagnosis.Finding f = d.effects().get(0);
-            assertEquals(Effect.Kind.BACKLASH, f.effect().kind());
-            assertEquals(2, f.effect().joint());
             double ratio = (double) truth.gearTeeth() / truth.pinionTeeth();
             assertEquals(1, f.effect().runoutOrders().length, "seed " + seed + ": " + f.effect().label());
             assertEquals(ratio, f.effect().runoutOrders()[0], orderTolerance(c, 2), "seed " + seed + ": " + f.effect().label());
@@ -95,14 +85,12 @@ class RunoutLostMotionTest {
 
     @Test
     void playChangingWithItsPinion_directionsFromTheMeasuringOrder() {
-        Scenario.Trial t = Scenario.named("lost motion j1 puma560 whose play changes with its pinion's turn (eccentric pinion), "
-                + "directions not recorded").trial(20261125);
-        WorldCampaigns.Sim c = WorldCampaigns.of(t);
-        JointError.GearPairLostMotion truth = gearPair(t);
-        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("puma560"), c.train(), c.validation());
-        assertEquals(1, d.effects().size(), d.effects() + " " + d.notes());
-        Effect e = d.effects().get(0).effect();
-        assertEquals(0, e.joint());
+        Run run = lostMotion(Scenario.named("lost motion j1 puma560 whose play changes with its pinion's turn (eccentric pinion), "
+                + "directions not recorded").trial(20261125), 0, "seed 20261125");
+        WorldCampaigns.Sim c = run.c();
+        JointError.GearPairLostMotion truth = run.truth();
+        Diagnosis d = run.d();
+        Effect e = run.f().effect();
         double ratio = (double) truth.gearTeeth() / truth.pinionTeeth();
         assertEquals(1, e.runoutOrders().length, e.label());
         assertEquals(ratio, e.runoutOrders()[0], orderTolerance(c, 0), e.label());
@@ -117,13 +105,11 @@ class RunoutLostMotionTest {
     void playChangingWithBothGears_namedWithBothOrders() {
         Scenario s = Scenario.named("lost motion j2 whose play changes with its output gear's and its pinion's turn (both eccentric)");
         for (long seed : new long[] {20261124, 20261126}) {
-            Scenario.Trial t = s.trial(seed);
-            WorldCampaigns.Sim c = WorldCampaigns.of(t);
-            JointError.GearPairLostMotion truth = gearPair(t);
-            Diagnosis d = Diagnoser.diagnose(irb2000, c.train(), c.validation());
-            assertEquals(1, d.effects().size(), "seed " + seed + ": " + d.effects() + " " + d.notes());
-            Diagnosis.Finding f = d.effects().get(0);
-            assertEquals(1, f.effect().joint());
+            Run run = lostMotion(s.trial(seed), 1, "seed " + seed);
+            WorldCampaigns.Sim c = run.c();
+            JointError.GearPairLostMotion truth = run.truth();
+            Diagnosis d = run.d();
+            Diagnosis.Finding f = run.f();
             double[] orders = f.effect().runoutOrders(), v = f.values();
             assertEquals(2, orders.length, "seed " + seed + ": " + f.effect().label());
             assertEquals(1, orders[0]);
@@ -133,6 +119,20 @@ class RunoutLostMotionTest {
             assertEquals(truth.pinionChange(), Math.hypot(v[3], v[4]), 0.3 * truth.pinionChange(), "seed " + seed + ": the pinion's");
             assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
         }
+    }
+
+    /** A world trial diagnosed blind: its campaign, the truth's last gear pair, the diagnosis and the one effect it names. */
+    private record Run(WorldCampaigns.Sim c, JointError.GearPairLostMotion truth, Diagnosis d, Diagnosis.Finding f) { }
+
+    /** Diagnoses trial {@code t} on its robot; exactly one effect must be named, lost motion of {@code joint} (0-based). */
+    private static Run lostMotion(Scenario.Trial t, int joint, String where) {
+        WorldCampaigns.Sim c = WorldCampaigns.of(t);
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped(t.scenario().robot()), c.train(), c.validation());
+        assertEquals(1, d.effects().size(), where + ": " + d.effects() + " " + d.notes());
+        Diagnosis.Finding f = d.effects().get(0);
+        assertEquals(Effect.Kind.BACKLASH, f.effect().kind(), where + ": " + f.effect().label());
+        assertEquals(joint, f.effect().joint(), where + ": " + f.effect().label());
+        return new Run(c, gearPair(t), d, f);
     }
 
     /** The world's last gear pair in a trial. */
