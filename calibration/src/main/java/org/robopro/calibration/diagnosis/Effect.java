@@ -2317,6 +2317,9 @@ public final class Effect {
             case LINK_TWIST -> {
                 if (js.get(0) != 2)
                     throw new InputException(file, 0, 0, "effects.joints", "link-twist is of the upper arm (joint 2), got " + js.get(0));
+                if (model.dof() < 6 || model.isPrismatic(1) || model.isPrismatic(2))
+                    throw new InputException(file, 0, 0, "effects.link-twist", "link-twist needs a six-axis arm whose joints 2 and 3 "
+                            + "are revolute; this robot has " + model.dof() + " joints");
                 yield linkTwist(model, ps.containsKey("t_payload_o"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));

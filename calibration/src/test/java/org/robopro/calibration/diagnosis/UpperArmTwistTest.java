@@ -97,6 +97,20 @@ class UpperArmTwistTest {
         }
     }
 
+    /** A robot file with the twist on an arm without a wrist of three joints is refused in one line naming the file and field. */
+    @Test
+    void linkTwist_onAFiveAxisArm_isRefusedNamingTheField() {
+        RobotDescription six = RobotLibrary.shipped("irb2000");
+        RobotDescription five = new RobotDescription("five", "five", six.joints().subList(0, 5), six.flange(), six.coupling(),
+                java.util.Optional.empty(), List.of(), List.of(), six.source(), six.provenance());
+        KinematicModel sixModel = KinematicModel.build(six), fiveModel = KinematicModel.build(five);
+        var d = Effect.linkTwist(sixModel, false).describe(new double[Effect.TWIST_ARM_TERMS]);
+        org.robopro.models.InputException x = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> Effect.fromDescription(d, fiveModel, null, "five.robot.json"));
+        assertEquals("five.robot.json: field 'effects.link-twist': link-twist needs a six-axis arm whose joints 2 and 3 are revolute; "
+                + "this robot has 5 joints", x.getMessage());
+    }
+
     /** The twist reads back from the robot file as written, with and without the payload's columns. */
     @Test
     void linkTwist_roundTripsThroughTheRobotFile() {
