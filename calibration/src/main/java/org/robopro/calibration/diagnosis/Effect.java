@@ -2312,6 +2312,10 @@ public final class Effect {
             case LINK_SAG -> {
                 if (js.get(0) < 2 || js.get(0) > 3)
                     throw new InputException(file, 0, 0, "effects.joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));
+                if (js.get(0) >= model.dof() || model.isPrismatic(js.get(0) - 1))
+                    throw new InputException(file, 0, 0, "effects.joints", "link-sag needs joint " + js.get(0) + " revolute with a joint "
+                            + "beyond it; this robot's joint " + js.get(0) + (js.get(0) > model.dof() ? " does not exist"
+                            : js.get(0) == model.dof() ? " is its last" : " is prismatic"));
                 yield linkSag(model, js.get(0) - 1, ps.containsKey("t_payload"));
             }
             case LINK_TWIST -> {

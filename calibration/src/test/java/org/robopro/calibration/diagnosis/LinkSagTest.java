@@ -76,4 +76,22 @@ class LinkSagTest {
         for (Effect e : List.of(Effect.linkSag(model, 1, true), Effect.linkSag(model, 2, false)))
             EffectTest.assertRoundTrips(e, 1e-5, model, g, new PoseConditions(null, Double.NaN, Double.NaN, 5.0), 1e-15);
     }
+
+    /** A robot file whose sag names a prismatic joint 3 is refused in one line naming the file and the field. */
+    @Test
+    void linkSag_ofAPrismaticJoint_isRefusedNamingTheField() {
+        RobotDescription six = RobotLibrary.shipped("irb2400");
+        List<org.robopro.models.JointDescription> joints = new ArrayList<>(six.joints());
+        org.robopro.models.JointDescription j3 = joints.get(2);
+        joints.set(2, new org.robopro.models.JointDescription(j3.name(), org.robopro.models.JointType.PRISMATIC, j3.point(), j3.axis(),
+                0, 0.5, 0.5));
+        RobotDescription sliding = new RobotDescription("sliding", "sliding", joints, six.flange(), six.coupling(),
+                java.util.Optional.empty(), List.of(), List.of(), six.source(), six.provenance());
+        KinematicModel model = KinematicModel.build(six), slidingModel = KinematicModel.build(sliding);
+        var d = Effect.linkSag(model, 2, false).describe(new double[Effect.linkSag(model, 2, false).size()]);
+        org.robopro.models.InputException x = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> Effect.fromDescription(d, slidingModel, null, "sliding.robot.json"));
+        assertEquals("sliding.robot.json: field 'effects.joints': link-sag needs joint 3 revolute with a joint beyond it; "
+                + "this robot's joint 3 is prismatic", x.getMessage());
+    }
 }
