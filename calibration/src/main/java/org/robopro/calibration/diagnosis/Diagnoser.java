@@ -1759,7 +1759,8 @@ public final class Diagnoser {
             findings.add(new Diagnosis.Finding(e, v, s, st.trainRms, st.validateRms, ev, plot,
                     Words.finding(e, v, s, ev, k == 0 ? geoTrain : steps.get(k - 1).trainRms, st.trainRms,
                             k == 0 ? geoVal : steps.get(k - 1).validateRms, st.validateRms, dirSource,
-                            e.kind() == Effect.Kind.BACKLASH && !fit.problem.pairs() ? halfPlaySizeM(plotTester, e.joint(), v[0]) : Double.NaN)));
+                            e.kind() == Effect.Kind.BACKLASH && !fit.problem.pairs() ? halfPlaySizeM(plotTester, e.joint(), v[0]) : Double.NaN,
+                            e.kind() == Effect.Kind.LINK_SAG ? springAlike(plotTester, k, e, family, selected, w, notes) : null)));
             terms.add(new Effect.Term(e, v));
         }
         List<Diagnosis.Finding> implausibleFindings = new ArrayList<>();
@@ -2950,6 +2951,28 @@ public final class Diagnoser {
                 + "a smooth error of its angle (a balancer's or a spring's torque, a cable's pull) follows the same curve: sample the "
                 + "joint over a whole turn where its range allows, or measure the reducer's transmission error on the drive (an "
                 + "encoder on the output side)", e.joint() + 1);
+    }
+
+    /**
+     * A link's bending holds the part of its own joint's spring that the weight across the link drives
+     * (δ = L·θ), and the two differ only in how far the link's far end moves for its turn (L·θ for the
+     * spring, 2/3 to 3/4 of it for a beam; Gere &amp; Goodno, Mechanics of Materials, table G-1). Where a
+     * spring of the joint, in the place of selected bending {@code k}, predicts left-out poses within
+     * {@link #ALIAS_MARGIN} of it, the poses cannot tell which gives: returns the words that say so (and
+     * adds a note), or null when the bending is told apart from every spring of its joint.
+     */
+    static String springAlike(Tester at, int k, Effect sag, List<Effect> family, List<Effect> selected, Work w, List<String> notes) {
+        double own = at.pressFull(), best = Double.POSITIVE_INFINITY;
+        Effect spring = null;
+        for (Effect a : family) {
+            if (a.kind() != Effect.Kind.COMPLIANCE || a.joint() != sag.joint() || selected.contains(a)) continue;
+            double pa = at.pressReplacing(k, a, w.conditions);
+            if (pa <= own * (1 + ALIAS_MARGIN) && pa < best) { best = pa; spring = a; }
+        }
+        if (spring == null) return null;
+        notes.add(String.format(Locale.ROOT, "%s and %s predict left-out poses alike (leave-one-pose-out error %.1f against %.1f): "
+                + "neither is claimed; the bending models what they share", sag.label(), spring.label(), own, best));
+        return Words.springAlike(sag, spring, best, own, w.sixD);
     }
 
     /** The share of a joint's sampled range within which half of a local error lies, at most. */
