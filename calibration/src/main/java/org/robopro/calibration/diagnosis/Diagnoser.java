@@ -1716,6 +1716,13 @@ public final class Diagnoser {
             List<PoseConditions> order = poseOrder(rows);
             int n = rows.size();
             for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
+            // any smooth drift with the measuring order (the point moving, or the base or instrument turning), asked only of a
+            // model short of the instrument's stated floor: on one that reaches it the order follows the poses' places
+            Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
+            if (n > 1 && shortOfFloor(fit.trainRms, statedSigmaM(trainAll), kind, perfectShare(fit, false))) {
+                probes.add(new Object[] {Effect.pointSmooth(Effect.Along.TIME, 0, n - 1), order, "order"});
+                probes.add(new Object[] {Effect.baseTurn(Effect.Along.TIME, 0, n - 1), order, "order"});
+            }
         }
         int nProbes = probes.size();
         boolean askedTime = false;
@@ -1728,6 +1735,13 @@ public final class Diagnoser {
                 recs.add(String.format(Locale.ROOT, "The residuals drift with the pose order (F = %.1f, p = %.1e), as a warm-up "
                         + "of the arm would make them: record temp_c (temperature near the robot) or at least time_s for "
                         + "every pose so thermal expansion can be identified.", c.f, c.p));
+            } else if (pr[2].equals("order") && !askedTime) {
+                askedTime = true;
+                recs.add(String.format(Locale.ROOT, "The residuals change smoothly with the pose order (F = %.1f, p = %.1e): "
+                        + "something changed while the poses were measured (a warm-up, the instrument drifting, a heat source or the "
+                        + "sun warming one side of the arm), or the error follows the poses' place in the workspace, which the "
+                        + "measuring order follows. Record time_s (and temp_c) for every pose so a drift can be located, and "
+                        + "measure a few poses again at the end.", c.f, c.p));
             }
         }
         if (dirSource.inferred() && selected.stream().anyMatch(e -> e.kind() == Effect.Kind.BACKLASH))
