@@ -76,7 +76,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
                 if (folds < 2) throw new IllegalArgumentException("--folds must be at least 2, got " + folds);
                 cv = CalibrationWorkflow.crossValidate(train, folds, foldSeed, (k, tr, va) -> Diagnoser.diagnose(desc, tr, va, o));
             }
-            d = Diagnoser.diagnose(desc, train, val, o);
+            d = Diagnoser.diagnose(desc, train, val, o).withWarningsFirst(data.warnings());
         } catch (CancellationException e) {
             spec.commandLine().getErr().println("robopro: diagnosis cancelled; nothing written");
             return 130;
@@ -101,6 +101,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
                 .addString("diagnosis.json", json)
                 .addString("report.html", DiagnosisReport.html(d, ctx))
                 .commit();
+        for (String warning : data.warnings()) spec.commandLine().getErr().println("robopro: warning: " + warning);
         var w = spec.commandLine().getOut();
         String kind = d.distances() ? " (distances)" : d.pointsPerPose() > 1 ? " (" + d.pointsPerPose() + " points each; RMS over every point)" : "";
         w.printf(Locale.ROOT, "diagnosed %s from %d poses%s: geometric RMS %.4f mm -> %.4f mm with effects (train)%n", desc.name(),

@@ -88,6 +88,23 @@ class DiagnoseCommandTest {
                 "--targets", targets.toString(), "--out", dir.resolve("comp.csv").toString()), cli.err());
     }
 
+    /** A file whose header names another robot is diagnosed, and the mismatch is said on stderr and first in the report. */
+    @Test
+    void diagnose_fileMeasuredOnAnotherRobot_warnsFirst() throws Exception {
+        String text = lostMotionCampaignText();
+        assertTrue(text.contains("# robot: irb2000\n"), text.substring(0, 200));
+        Path train = dir.resolve("other.csv");
+        Files.writeString(train, text.replace("# robot: irb2000\n", "# robot: irb2400\n"));
+        Path outDir = dir.resolve("other");
+        assertEquals(0, run("diagnose", "--robot", "irb2000", "--measurements", train.toString(), "--out", outDir.toString()), cli.err());
+        String said = "other.csv was measured on 'irb2400', but the robot given is 'irb2000'";
+        assertTrue(cli.err().contains("robopro: warning: " + said), cli.err());
+        JsonNode j = new ObjectMapper().readTree(Files.readString(outDir.resolve("diagnosis.json")));
+        assertEquals(said, j.get("warnings").get(0).asText());
+    }
+
+    private String lostMotionCampaignText() throws Exception { return Files.readString(lostMotionCampaign()[0]); }
+
     @Test
     void diagnose_missingMeasurementFile_exitCode2() {
         assertEquals(2, run("diagnose", "--robot", "irb2000", "--measurements", dir.resolve("none.csv").toString(), "--out",

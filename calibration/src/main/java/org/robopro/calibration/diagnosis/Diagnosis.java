@@ -37,6 +37,16 @@ public record Diagnosis(String robot, CalibrationResult geometric, double sigmaM
                         org.robopro.kinematics.Pose finalInstrumentTbase, int candidatesTested, double alpha, double elapsedMs,
                         Directions.Source directions, List<Located> located, List<String> warnings) {
 
+    /** This diagnosis with {@code first} (what the files themselves warn of, such as another robot's name) before its warnings. */
+    public Diagnosis withWarningsFirst(List<String> first) {
+        if (first.isEmpty()) return this;
+        List<String> all = new java.util.ArrayList<>(first);
+        all.addAll(warnings);
+        return new Diagnosis(robot, geometric, sigmaM, geometricTrainRmsM, geometricValidateRmsM, effects, finalTrainRmsM,
+                finalValidateRmsM, outliers, notIdentifiable, implausible, recommendations, notes, model, finalFlangeTtool,
+                finalInstrumentTbase, candidatesTested, alpha, elapsedMs, directions, located, List.copyOf(all));
+    }
+
     /** The measurements are distances (one component each), not measured points. */
     public boolean distances() { return geometric.distance(); }
 

@@ -154,7 +154,7 @@ public final class CalibrationWorkflow {
     private static void metadataWarnings(RobotDescription robot, String name, MeasurementSet s, List<String> out) {
         String measured = s.robot();
         if (measured != null && !measured.equalsIgnoreCase(robot.name()))
-            out.add(String.format(Locale.ROOT, "%s was measured on '%s', calibrating '%s'", name, measured, robot.name()));
+            out.add(String.format(Locale.ROOT, "%s was measured on '%s', but the robot given is '%s'", name, measured, robot.name()));
     }
 
     static String fileName(Path p) {
