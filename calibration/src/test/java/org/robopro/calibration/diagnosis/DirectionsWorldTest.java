@@ -80,14 +80,7 @@ class DirectionsWorldTest {
         MeasurementSet withJitterSigns = all.withRows(logged);
         Directions.Prepared p = Directions.prepare(withJitterSigns.split(Measurement.Split.TRAIN), withJitterSigns.split(Measurement.Split.VALIDATE));
         assertSame(Directions.Source.RECORDED, p.source());
-        Map<String, int[]> read = new HashMap<>();
-        for (Measurement m : p.train().rows()) read.put(m.poseId(), m.directions());
-        for (Measurement m : p.validate().rows()) read.put(m.poseId(), m.directions());
-        List<String> wrong = new ArrayList<>();
-        for (Campaign.Row row : c.rows())
-            for (int j = 0; j < r.dof(); j++)
-                if (read.get(row.id())[j] != row.dir()[j]) wrong.add("pose " + row.id() + " drive " + (j + 1));
-        assertEquals(List.of(), wrong, "poses whose direction differs from the world's");
+        assertEquals(List.of(), differing(c, p, r.dof()), "poses whose direction differs from the world's");
         assertEquals(1, p.notes().size(), p.notes().toString());
     }
 
@@ -99,14 +92,19 @@ class DirectionsWorldTest {
         assertTrue(all.hasSplit() && !all.hasDirections(), "validation rows interleaved, no dir columns");
         Directions.Prepared p = Directions.prepare(all.split(Measurement.Split.TRAIN), all.split(Measurement.Split.VALIDATE));
         assertSame(Directions.Source.TIME_ORDER, p.source());
-        Map<String, int[]> inferred = new HashMap<>();
-        for (Measurement m : p.train().rows()) inferred.put(m.poseId(), m.directions());
-        for (Measurement m : p.validate().rows()) inferred.put(m.poseId(), m.directions());
+        assertEquals(List.of(), differing(c, p, r.dof()), "poses whose inferred direction differs from the world's");
+        assertEquals(c.rows().size(), p.train().size() + p.validate().size());
+    }
+
+    /** The poses and drives whose prepared direction is not the world's true flank. */
+    private static List<String> differing(Campaign.Result c, Directions.Prepared p, int dof) {
+        Map<String, int[]> read = new HashMap<>();
+        for (Measurement m : p.train().rows()) read.put(m.poseId(), m.directions());
+        for (Measurement m : p.validate().rows()) read.put(m.poseId(), m.directions());
         List<String> wrong = new ArrayList<>();
         for (Campaign.Row row : c.rows())
-            for (int j = 0; j < r.dof(); j++)
-                if (inferred.get(row.id())[j] != row.dir()[j]) wrong.add("pose " + row.id() + " drive " + (j + 1));
-        assertEquals(List.of(), wrong, "poses whose inferred direction differs from the world's");
-        assertEquals(c.rows().size(), inferred.size());
+            for (int j = 0; j < dof; j++)
+                if (read.get(row.id())[j] != row.dir()[j]) wrong.add("pose " + row.id() + " drive " + (j + 1));
+        return wrong;
     }
 }

@@ -100,43 +100,33 @@ class LinkSagTest {
                 "no bending of the forearm: " + d.effects().stream().map(f -> f.effect().label()).toList());
     }
 
-    /** The forearm (joint 3's axis to the wrist's centre) as a cantilever under 20 kg of its own and 30 kg plus the payload at its far end, EI = 3·10⁵ N·m². */
-    private static MeasurementSet forearmBent(MeasurementSet set, KinematicModel model) {
-        double ei = 3e5, own = 20, carried = 30;
-        List<Measurement> rows = new ArrayList<>();
-        for (Measurement m : set.rows()) {
-            Pose[] f = model.linkFrames(m.q());
-            Vec3 root = f[3].position(), end = f[5].position(), z = new Vec3(f[3].rot(0, 2), f[3].rot(1, 2), f[3].rot(2, 2));
-            Vec3 along = end.minus(root);
-            along = along.minus(z.times(along.dot(z)));
-            double len = along.norm();
-            Vec3 across = z.cross(along.times(1 / len));
-            double share = -across.z();
-            double payload = Double.isFinite(m.payloadKg()) ? m.payloadKg() : 0;
-            double w = own * G / len * share, p = (carried + payload) * G * share;
-            double delta = w * Math.pow(len, 4) / (8 * ei) + p * Math.pow(len, 3) / (3 * ei);
-            double theta = w * Math.pow(len, 3) / (6 * ei) + p * len * len / (2 * ei);
-            rows.add(m.withPosition(m.position().plus(across.times(delta)).plus(z.cross(m.position().minus(end)).times(theta))));
-        }
-        return set.withRows(rows);
-    }
-
     /** Each measured point moved by the upper arm's bending: its far end's deflection δ across the link and turn θ about joint 2's axis. */
-    private static MeasurementSet bent(MeasurementSet set, KinematicModel model) {
-        double ei = 4e5, own = 25, carried = 60;
+    private static MeasurementSet bent(MeasurementSet set, KinematicModel model) { return bent(set, model, 2, 3, 4e5, 25, 60); }
+
+    /** The forearm (joint 3's axis to the wrist's centre) under 20 kg of its own and 30 kg plus the payload at its far end, EI = 3·10⁵ N·m². */
+    private static MeasurementSet forearmBent(MeasurementSet set, KinematicModel model) { return bent(set, model, 3, 5, 3e5, 20, 30); }
+
+    /**
+     * Each measured point moved by a link's bending as a cantilever from link frame {@code root}'s
+     * origin (on its joint's axis) to frame {@code end}'s: its own {@code own} kg spread along it and
+     * {@code carried} kg plus the payload at its far end, stiffness {@code ei} N·m², loaded by the
+     * part of gravity across it; the far end deflects by δ across the link and turns by θ.
+     */
+    private static MeasurementSet bent(MeasurementSet set, KinematicModel model, int root, int end, double ei, double own, double carried) {
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : set.rows()) {
             Pose[] f = model.linkFrames(m.q());
-            Vec3 root = f[2].position(), end = f[3].position(), z = new Vec3(f[2].rot(0, 2), f[2].rot(1, 2), f[2].rot(2, 2));
-            Vec3 along = end.minus(root);
+            Vec3 o = f[root].position(), e = f[end].position(), z = new Vec3(f[root].rot(0, 2), f[root].rot(1, 2), f[root].rot(2, 2));
+            Vec3 along = e.minus(o);
             along = along.minus(z.times(along.dot(z)));
             double len = along.norm();
             Vec3 across = z.cross(along.times(1 / len));
             double share = -across.z(); // gravity (0, 0, −g) across the link
-            double w = own * G / len * share, p = carried * G * share;
+            double payload = Double.isFinite(m.payloadKg()) ? m.payloadKg() : 0;
+            double w = own * G / len * share, p = (carried + payload) * G * share;
             double delta = w * Math.pow(len, 4) / (8 * ei) + p * Math.pow(len, 3) / (3 * ei);
             double theta = w * Math.pow(len, 3) / (6 * ei) + p * len * len / (2 * ei);
-            rows.add(m.withPosition(m.position().plus(across.times(delta)).plus(z.cross(m.position().minus(end)).times(theta))));
+            rows.add(m.withPosition(m.position().plus(across.times(delta)).plus(z.cross(m.position().minus(e)).times(theta))));
         }
         return set.withRows(rows);
     }
