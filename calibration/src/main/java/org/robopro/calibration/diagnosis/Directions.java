@@ -102,16 +102,18 @@ public final class Directions {
                 int n = m.dof();
                 // from the zero position a measuring program starts at, as the moves are taken (see moves)
                 if (at == null) { at = new StillPoints(n, new double[n]); last = new int[n]; }
-                int[] d = m.directions(), e = d == null ? null : d.clone();
+                int[] d = m.directions();
+                if (d == null) continue;
+                int[] e = d.clone();
                 for (int j = 0; j < n; j++) {
                     double moved = at.moved(j, m.q(j));
                     if (moved != 0) last[j] = moved > 0 ? 1 : -1;
-                    else if (e != null && last[j] != 0 && d[j] != 0 && d[j] != last[j]) {
+                    else if (last[j] != 0 && d[j] != 0 && d[j] != last[j]) {
                         e[j] = last[j];
                         changed.add(m.poseId() + " j" + (j + 1));
                     }
                 }
-                if (e != null && !Arrays.equals(e, d)) kept.put(m, e);
+                if (!Arrays.equals(e, d)) kept.put(m, e);
             }
         }
         if (kept.isEmpty()) return new Prepared(train, validate, Source.RECORDED);
