@@ -163,7 +163,7 @@ public final class Diagnoser {
         train = dirs.train();
         validate = dirs.validate();
         Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
-        List<String> flankNotes = new ArrayList<>(dirs.notes());
+        List<String> flankNotes = new ArrayList<>();
         if (dirs.source().inferred()) {
             MeasurementSet[] flipped = startFlanks(d, train, validate, flankNotes);
             if (flipped != null) {

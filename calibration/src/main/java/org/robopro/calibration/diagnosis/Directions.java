@@ -1,7 +1,6 @@
 package org.robopro.calibration.diagnosis;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
@@ -52,9 +51,7 @@ public final class Directions {
     }
 
     /** Training and validation sets with directions on every row, and where they came from. */
-    public record Prepared(MeasurementSet train, MeasurementSet validate, Source source, List<String> notes) {
-        public Prepared(MeasurementSet train, MeasurementSet validate, Source source) { this(train, validate, source, List.of()); }
-    }
+    public record Prepared(MeasurementSet train, MeasurementSet validate, Source source) { }
 
     /**
      * A reversal smaller than this (rad, or m for a prismatic joint) does not change a joint's
@@ -70,8 +67,8 @@ public final class Directions {
      * from the measuring order (see the class comment). Rows that already have directions keep them.
      */
     public static Prepared prepare(MeasurementSet train, MeasurementSet validate) {
-        if (train.size() == 0) return new Prepared(train, validate, Source.NONE);
-        if (train.hasDirections()) return recorded(train, validate);
+        if (train.size() == 0 || train.hasDirections())
+            return new Prepared(train, validate, train.size() > 0 ? Source.RECORDED : Source.NONE);
         List<List<Measurement>> seqs = sequences(train, validate);
         Source src = orderSource(seqs.get(0));
         Map<String, int[]> dirs = infer(seqs.get(0));
@@ -80,57 +77,6 @@ public final class Directions {
         if (validate != null && validate.size() > 0 && !validate.hasDirections())
             v = apply(validate, seqs.size() > 1 ? infer(seqs.get(1)) : dirs);
         return new Prepared(t, v, src);
-    }
-
-    /**
-     * Recorded directions, each kept but where a joint's move onto the pose (in the measuring order)
-     * is within {@link #PLAY_TOLERANCE} and its recorded direction is against the joint's last real
-     * move: read-back jitter, or a move far shorter than any play, does not take up the play the
-     * other way (the deadband of a backlash: the output stays until the input has crossed the play;
-     * Nordin &amp; Gutman, "Controlling mechanical systems with backlash — a survey", Automatica 38
-     * (2002) 1633, §2), so the joint rests on the flank of its last real move, whatever sign the
-     * controller logged for the jitter. The rows so read are said in the notes.
-     */
-    private static Prepared recorded(MeasurementSet train, MeasurementSet validate) {
-        List<List<Measurement>> seqs = sequences(train, validate);
-        Map<Measurement, int[]> kept = new HashMap<>();
-        List<String> changed = new ArrayList<>();
-        for (List<Measurement> seq : seqs) {
-            StillPoints at = null;
-            int[] last = null;
-            for (Measurement m : seq) {
-                int n = m.dof();
-                // from the zero position a measuring program starts at, as the moves are taken (see moves)
-                if (at == null) { at = new StillPoints(n, new double[n]); last = new int[n]; }
-                int[] d = m.directions();
-                if (d == null) continue;
-                int[] e = d.clone();
-                for (int j = 0; j < n; j++) {
-                    double moved = at.moved(j, m.q(j));
-                    if (moved != 0) last[j] = moved > 0 ? 1 : -1;
-                    else if (last[j] != 0 && d[j] != 0 && d[j] != last[j]) {
-                        e[j] = last[j];
-                        changed.add(m.poseId() + " j" + (j + 1));
-                    }
-                }
-                if (!Arrays.equals(e, d)) kept.put(m, e);
-            }
-        }
-        if (kept.isEmpty()) return new Prepared(train, validate, Source.RECORDED);
-        String note = String.format(java.util.Locale.ROOT, "recorded directions against the joint's last real move after a move of "
-                + "less than %.4f deg (read-back jitter, which takes up no play) were read as that move's: %s", Math.toDegrees(PLAY_TOLERANCE),
-                String.join(", ", changed));
-        return new Prepared(withDirections(train, kept), validate == null ? null : withDirections(validate, kept), Source.RECORDED,
-                List.of(note));
-    }
-
-    private static MeasurementSet withDirections(MeasurementSet s, Map<Measurement, int[]> dirs) {
-        List<Measurement> rows = new ArrayList<>();
-        for (Measurement m : s.rows()) {
-            int[] d = dirs.get(m);
-            rows.add(d == null ? m : m.withConditions(d, m.timeS(), m.tempC(), m.payloadKg()));
-        }
-        return s.withRows(rows);
     }
 
     /**
