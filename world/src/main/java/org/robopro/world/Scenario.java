@@ -338,7 +338,7 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> elastic(n, r, 2), payloads("irb2000")));
         c.add(s("joint elasticity j2 puma560, masses off 30 %", "gravity-elasticity", "puma560", Expected.named(claim(GRAVITY_ELASTICITY, 2)),
                 (n, r) -> elastic(n, r, 1), same()));
-        c.add(s("joint elasticity j2 + j3, masses off 30 %", "gravity-elasticity", "irb2000",
+        c.add(s("joint elasticity j2 + j3, masses off 30 %", "pair", "irb2000",
                 Expected.named(claim(GRAVITY_ELASTICITY, 2), claim(GRAVITY_ELASTICITY, 3)), (n, r) -> elastic(n, r, 1, 2), payloads("irb2000")));
         // gear ratio, coupling
         c.add(s("gear-ratio error j1", "gear-ratio", "irb2000", Expected.named(claim(GEAR_RATIO, 1)), (n, r) -> add(gearRatio(0, r)), same()));
