@@ -1709,6 +1709,11 @@ public final class Diagnoser {
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
         for (Effect e : selected) notIdent.remove(e.label());
 
+        // The instrument's stated noise, and its floor per kind of measurement as the diagnosis sets it: √3·σ for points, σ for a
+        // length (the missing columns' advice and the report's warnings ask whether the final model reaches it).
+        double stated = statedSigmaM(trainAll);
+        Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
+
         // Advice for columns that are missing.
         Tester finalTester = w.tester(fit);
         List<Object[]> probes = new ArrayList<>();
@@ -1718,8 +1723,7 @@ public final class Diagnoser {
             for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
             // any smooth drift with the measuring order (the point moving, or the base or instrument turning), asked only of a
             // model short of the instrument's stated floor: on one that reaches it the order follows the poses' places
-            Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
-            if (n > 1 && shortOfFloor(fit.trainRms, statedSigmaM(trainAll), kind, perfectShare(fit, false))) {
+            if (n > 1 && shortOfFloor(fit.trainRms, stated, kind, perfectShare(fit, false))) {
                 probes.add(new Object[] {Effect.pointSmooth(Effect.Along.TIME, 0, n - 1), order, "order"});
                 probes.add(new Object[] {Effect.baseTurn(Effect.Along.TIME, 0, n - 1), order, "order"});
             }
@@ -1791,10 +1795,7 @@ public final class Diagnoser {
         CalibrationResult geoFin = geo;
         int tested = Math.max(familySize, 0);
         double valFinal = w.validateRms(fit);
-        double stated = statedSigmaM(trainAll);
         double heldOutRms = Double.isFinite(valFinal) ? valFinal : fit.trainRms;
-        // The stated floor per kind of measurement, as the diagnosis sets it: √3·σ for points, σ for a length.
-        Measured kind = fit.problem.pairs() ? Measured.PAIRS : fit.problem.distance() ? Measured.ANCHOR : Measured.POINTS;
         boolean onValidation = Double.isFinite(valFinal);
         double perfect = perfectShare(fit, onValidation);
         // (with nothing named, the geometric model's own: a pose it left out is a bad reading only as far out as under any model)

@@ -123,17 +123,19 @@ final class Words {
                     + "while the arm reaches out in several directions with and without payload.", Math.toDegrees(e.tiltAzimuth()),
                     1e8 * v[0], Double.isInfinite(e.tiltHold()) ? ", in both directions" : String.format(Locale.ROOT,
                             ", once the moment about that edge exceeds %.0f N·m", e.tiltHold()));
-            case LINK_SAG -> spring == null ? String.format(Locale.ROOT, "The %s bends under gravity as a beam: its far end moves %.4f mm across it "
-                    + "and turns %.4f deg when it lies horizontal (its own weight and what it carries%s), and none of the known effects "
-                    + "explains it (a joint's spring turns the whole link about its axis, a beam bends along it). It is modelled as such "
-                    + "so compensation can use it, but check the link: measure a target at the %s's far end (on joint %d's housing) "
-                    + "with the link horizontal and vertical, with and without payload.", e.joint() == 1 ? "upper arm (joint 2 to joint 3)"
-                    : "forearm (joint 3 to the wrist)", 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])), e.sagPayload() ? ", beside the payload's" : "", e.joint() == 1 ? "upper arm" : "forearm", e.joint() + 2)
-                    : String.format(Locale.ROOT, "The %s bends under gravity as a beam, or joint %d gives way under it: modelled as "
-                    + "a bending, its far end moves %.4f mm across it and turns %.4f deg when it lies horizontal (its own weight and what "
-                    + "it carries%s). %s", e.joint() == 1 ? "upper arm (joint 2 to joint 3)" : "forearm (joint 3 to the wrist)",
-                    e.joint() + 1, 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])), e.sagPayload() ? ", beside the payload's" : "",
-                    spring);
+            case LINK_SAG -> {
+                String bend = String.format(Locale.ROOT, "its far end moves %.4f mm across it and turns %.4f deg when it lies "
+                        + "horizontal (its own weight and what it carries%s)", 1e3 * Math.abs(v[0]), Math.toDegrees(Math.abs(v[1])),
+                        e.sagPayload() ? ", beside the payload's" : "");
+                String link = e.joint() == 1 ? "upper arm (joint 2 to joint 3)" : "forearm (joint 3 to the wrist)";
+                yield spring == null ? String.format(Locale.ROOT, "The %s bends under gravity as a beam: %s, and none of the known "
+                        + "effects explains it (a joint's spring turns the whole link about its axis, a beam bends along it). It is "
+                        + "modelled as such so compensation can use it, but check the link: measure a target at the %s's far end "
+                        + "(on joint %d's housing) with the link horizontal and vertical, with and without payload.", link, bend,
+                        linkName(e), e.joint() + 2)
+                        : String.format(Locale.ROOT, "The %s bends under gravity as a beam, or joint %d gives way under it: modelled "
+                        + "as a bending, %s. %s", link, e.joint() + 1, bend, spring);
+            }
             case LINK_TWIST -> String.format(Locale.ROOT, "The upper arm (joint 2 to joint 3) twists about its long axis under the "
                     + "torque of the weights beyond it%s, which the wrist swings across the arm's plane (the tool's and the payload's), "
                     + "and none of the known effects explains it (a joint's spring turns about the joint's axis, a twist about the "
@@ -277,7 +279,6 @@ final class Words {
      * left-out poses within the alias margin of the bending's ({@code pressSpring} against {@code pressOwn}).
      */
     static String springAlike(Effect sag, Effect spring, double pressSpring, double pressOwn, boolean sixD) {
-        String link = sag.joint() == 1 ? "upper arm" : "forearm";
         return String.format(Locale.ROOT, "Joint %d's spring (%s) predicts left-out poses as well (leave-one-pose-out error %.1f "
                 + "against %.1f), and these poses cannot tell the two apart: a spring turns the whole link about its joint, moving "
                 + "its far end by L·θ as it turns it by θ, a beam moves its far end by 2/3 to 3/4 of that, and what differs is "
@@ -285,8 +286,11 @@ final class Words {
                 + "the joint is the likelier of the two. It is modelled as the bending so compensation can use it (both predict "
                 + "alike here), and neither is claimed. To tell them apart, measure %sa target on the %s's far end (on joint %d's "
                 + "housing), with two or three payloads.", sag.joint() + 1, spring.label(), pressSpring, pressOwn,
-                sixD ? "" : "the flange's orientation as well as its position (6-D), and ", link, sag.joint() + 2);
+                sixD ? "" : "the flange's orientation as well as its position (6-D), and ", linkName(sag), sag.joint() + 2);
     }
+
+    /** The link a link sag bends: "upper arm" (joint 2's) or "forearm" (joint 3's). */
+    private static String linkName(Effect sag) { return sag.joint() == 1 ? "upper arm" : "forearm"; }
 
     /**
      * On a joint sampled over less than three quarters of a turn, two harmonics closer than 360°/range cycles per turn
