@@ -158,7 +158,9 @@ public final class Campaign {
      * One measured pose.
      *
      * @param q           the controller's values as it reports them (with read-back jitter in a joint-by-joint campaign)
-     * @param dir         the side of the play each drive really rests on (the sign of its last real motion)
+     * @param dir         the sign of each drive's last commanded motion, as a controller logs it (the dir columns)
+     * @param side        where each drive's output really rests within its play, +1 (lagging, after a rise) to -1:
+     *                    a reversal shorter than the play leaves it where it stood
      * @param lastMove    each drive's last motion, signed (rad or m; infinite: none yet, taken as long): the move from the pose
      *                    before; with an {@link Approach} the approach move, or the travel and the approach together when both
      *                    went the same way
@@ -167,7 +169,7 @@ public final class Campaign {
      * @param truePoint   the position without noise, m
      * @param outlier     the reading is grossly wrong (an injected outlier)
      */
-    public record Row(String id, double[] q, int[] dir, double[] lastMove, double timeS, double tempC, double payloadKg, double[] point,
+    public record Row(String id, double[] q, int[] dir, double[] side, double[] lastMove, double timeS, double tempC, double payloadKg, double[] point,
                       double[] quaternion, double[] truePoint, boolean validate, boolean outlier) { }
 
     /** A campaign: the measurement file's text, the rows, and the warm-up the temperatures followed. */
@@ -210,6 +212,8 @@ public final class Campaign {
             Random d = new Random(plan.seed() * 131L + 7);
             for (int j = 0; j < n; j++) dir[j] = d.nextBoolean() ? 1 : -1;
         }
+        double[] side = new double[n];
+        for (int j = 0; j < n; j++) side[j] = dir[j];
         double t = 0;
         List<Row> rows = new ArrayList<>();
         double[] payloads = plan.payloadStepsKg();
@@ -223,9 +227,12 @@ public final class Campaign {
                         dir[j] = q[j] > prev[j] ? 1 : -1;
                         lastMove[j] = q[j] - prev[j];
                     }
+                moveWithinPlay(world, side, prev, q);
             } else {
                 double[] via = approachPose(nominal, plan.approach(), q, approach);
                 travel = travelS(nominal, prev, via) + travelS(nominal, via, q);
+                moveWithinPlay(world, side, prev, via);
+                moveWithinPlay(world, side, via, q);
                 for (int j = 0; j < n; j++) {
                     double first = via[j] - prev[j], last = q[j] - via[j];
                     if (last == 0) last = first;                      // no approach move: the travel was the last motion
@@ -239,7 +246,7 @@ public final class Campaign {
             t += travel + 3 + 5 + 4 * rng.nextDouble(); // travel, settle, measure, operator
             double temp = warm.at(t);
             double payload = payloads.length == 0 ? 0 : payloads[(i / POSES_PER_PAYLOAD) % payloads.length];
-            Rigid pose = world.target(q, dir, lastMove, temp, t, payload);
+            Rigid pose = world.target(q, dir, side, lastMove, temp, t, payload);
             double[] truth = pose.p();
             double[] p = Rigid.plus(truth, Arm.gauss(noise, plan.sigmaM()));
             if (outlier[i]) p = Rigid.plus(p, Rigid.scale(Rigid.unit(Arm.gauss(gross, 1)), 0.5e-3 + 2.5e-3 * gross.nextDouble()));
@@ -253,12 +260,31 @@ public final class Campaign {
             double tempRead = temp + warm.sensorNoiseK() * noise.nextGaussian();
             double[] read = q.clone();
             if (plan.movedJoints() > 0) for (int j = 0; j < n; j++) read[j] += READBACK_JITTER_RAD * jitter.nextGaussian();
-            rows.add(new Row(Integer.toString(i + 1), read, dir.clone(), lastMove.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
+            rows.add(new Row(Integer.toString(i + 1), read, dir.clone(), side.clone(), lastMove.clone(), t, tempRead, payload, p, quat, truth, validate[i], outlier[i]));
             prev = q;
         }
         boolean base = isIdentity(world.instrumentFromBase());
         String frame = base ? "base" : "tracker";
         return new Result(write(nominal, plan, rows, frame), rows, warm, plan, frame);
+    }
+
+    /**
+     * Each drive's output moved through its play by a commanded move from {@code a} to {@code b}: the
+     * output stays put until the motor has crossed the play, then follows it on the far flank (the
+     * play operator of a backlash, out = clamp(out_before, in - b/2, in + b/2); Nordin &amp; Gutman,
+     * "Controlling mechanical systems with backlash: a survey", Automatica 38 (2002) 1633, §2).
+     * {@code side} (+1 lagging after a rise, -1 after a fall) is updated in place; a drive without
+     * play rests on the flank of its last move.
+     */
+    static void moveWithinPlay(WorldRobot world, double[] side, double[] a, double[] b) {
+        for (int j = 0; j < side.length; j++) {
+            double move = b[j] - a[j];
+            if (move == 0) continue;
+            double wa = world.playWidth(j, a), wb = world.playWidth(j, b);
+            if (!(wb > 0)) { side[j] = move > 0 ? 1 : -1; continue; }
+            double offset = -0.5 * wa * side[j] - move;              // output minus motor if the output stood still
+            side[j] = -2 * Math.max(-0.5 * wb, Math.min(0.5 * wb, offset)) / wb;
+        }
     }
 
     /**

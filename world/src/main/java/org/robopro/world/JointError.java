@@ -22,6 +22,12 @@ public sealed interface JointError {
     double delta(double[] q, Moment m);
 
     /**
+     * The play (lost motion) this error puts into its drive at controller values q, rad; 0 for an
+     * error without play. A campaign tracks where each drive's output rests within its play from it.
+     */
+    default double playWidth(double[] q) { return 0; }
+
+    /**
      * What a drive's error may depend on besides the joint values, at the moment a pose is measured.
      *
      * @param dir      the sign of each drive's last motion before the pose was reached (+1, -1)
@@ -29,10 +35,15 @@ public sealed interface JointError {
      * @param timeS    seconds since the campaign started (NaN: unknown)
      * @param tempC    the drive's temperature, °C (NaN: unknown)
      * @param driveTorque the gravity torque each drive carries at the pose (N·m, tau_q = C^T tau_theta), or null
+     * @param side     where each drive's output rests within its play, from +1 (on the flank a rising move
+     *                 leaves it on: lagging) to -1 (after a falling move), or null: on the flank of dir
      */
-    record Moment(int[] dir, double[] lastMove, double timeS, double tempC, double[] driveTorque) {
+    record Moment(int[] dir, double[] lastMove, double timeS, double tempC, double[] driveTorque, double[] side) {
         /** A moment without the drives' gravity torques. */
-        public Moment(int[] dir, double[] lastMove, double timeS, double tempC) { this(dir, lastMove, timeS, tempC, null); }
+        public Moment(int[] dir, double[] lastMove, double timeS, double tempC) { this(dir, lastMove, timeS, tempC, null, null); }
+
+        /** Where drive j's output rests within its play (+1 lagging after a rise, -1 after a fall). */
+        public double side(int j) { return side == null ? dir[j] : side[j]; }
     }
 
     /**
@@ -65,9 +76,13 @@ public sealed interface JointError {
      * the play before the output moves, so after a positive move the output sits b/2 short of
      * where the encoder says; after a negative move b/2 beyond. See e.g. Nordin &amp; Gutman,
      * "Controlling mechanical systems with backlash: a survey", Automatica 38 (2002), §2.)
+     * A reversal shorter than the play leaves the output where it stood (the play's dead zone, same
+     * source): a campaign tracks that in {@link Moment#side}, q_out = q - (b/2) side.
      */
     record LostMotion(int joint, double width) implements JointError {
-        @Override public double delta(double[] q, Moment m) { return -0.5 * width * m.dir()[joint]; }
+        @Override public double delta(double[] q, Moment m) { return -0.5 * width * m.side(joint); }
+
+        @Override public double playWidth(double[] q) { return width; }
     }
 
     /**
@@ -103,7 +118,9 @@ public sealed interface JointError {
         /** The play's change by the output gear's runout alone (amplitude), rad. */
         public double gearChange() { return 2 * gearRunoutM * Math.tan(pressureAngle) / gearPitchRadiusM; }
 
-        @Override public double delta(double[] q, Moment m) { return -0.5 * play(q[joint]) * m.dir()[joint]; }
+        @Override public double delta(double[] q, Moment m) { return -0.5 * play(q[joint]) * m.side(joint); }
+
+        @Override public double playWidth(double[] q) { return play(q[joint]); }
     }
 
     /** Gear-ratio error: the output turns (1 + eps) times what the controller assumes. */

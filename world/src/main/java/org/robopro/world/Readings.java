@@ -41,7 +41,7 @@ public final class Readings {
             for (int k = 0; k < flangePointsM.length; k++) {
                 double[] pt = flangePointsM[k];
                 WorldRobot w = at(world, Rigid.translation(pt[0], pt[1], pt[2]));
-                double[] p = Rigid.plus(w.target(r.q(), r.dir(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p(),
+                double[] p = Rigid.plus(w.target(r.q(), r.dir(), r.side(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p(),
                         Arm.gauss(noise, c.plan().sigmaM()));
                 sb.append(r.id()).append(",P").append(k + 1);
                 row(sb, nominal, c, r, String.format(Locale.ROOT, "%s,%s,%s",
@@ -69,7 +69,7 @@ public final class Readings {
         sb.append(columns(nominal, c, false, "distance", false));
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
-            double[] p = inBase.target(r.q(), r.dir(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
+            double[] p = inBase.target(r.q(), r.dir(), r.side(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
             double d = Rigid.norm(Rigid.minus(p, anchorBaseM)) + c.plan().sigmaM() * noise.nextGaussian();
             sb.append(r.id());
             row(sb, nominal, c, r, Campaign.fmt(d * 1e3, 5), null);
@@ -95,7 +95,7 @@ public final class Readings {
         double[] prev = null;
         for (int i = 0; i < rows.size(); i++) {
             Campaign.Row r = rows.get(i);
-            double[] p = inBase.target(r.q(), r.dir(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
+            double[] p = inBase.target(r.q(), r.dir(), r.side(), r.lastMove(), c.warmup().at(r.timeS()), r.timeS(), r.payloadKg()).p();
             if (prev != null) {
                 Campaign.Row a = rows.get(i - 1);
                 double d = Rigid.norm(Rigid.minus(p, prev)) + c.plan().sigmaM() * noise.nextGaussian();

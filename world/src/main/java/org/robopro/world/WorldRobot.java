@@ -472,6 +472,13 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         return thermal != null || errors.stream().anyMatch(e -> e instanceof JointError.DriveThermal);
     }
 
+    /** The play (lost motion) of drive {@code joint} at controller values q, rad: the sum of its errors' plays. */
+    public double playWidth(int joint, double[] q) {
+        double w = 0;
+        for (JointError e : errors) if (e.joint() == joint) w += e.playWidth(q);
+        return w;
+    }
+
     /**
      * The pose of the measured target in the instrument frame (origin = the measured point).
      *
@@ -490,6 +497,14 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * (signed, rad or m; null: every move was long).
      */
     public Rigid target(double[] q, int[] dir, double[] lastMove, double tempC, double timeS, double payload) {
+        return target(q, dir, null, lastMove, tempC, timeS, payload);
+    }
+
+    /**
+     * {@link #target(double[], int[], double[], double, double, double)} knowing where each drive's
+     * output rests within its play ({@link JointError.Moment#side}; null: on the flank of dir).
+     */
+    public Rigid target(double[] q, int[] dir, double[] side, double[] lastMove, double tempC, double timeS, double payload) {
         int n = dof();
         double[] qo = q.clone();
         for (int i = 0; i < n; i++) qo[i] += zeroOffsets[i];
@@ -504,7 +519,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             if (compliance == null) throw new IllegalStateException("lost motion held by gravity needs the masses (a compliance)");
             driveTorque = driveSide(gravityTorques(a, times(coupling, qo), payload));
         }
-        JointError.Moment moment = new JointError.Moment(dir, lastMove, timeS, tempC, driveTorque);
+        JointError.Moment moment = new JointError.Moment(dir, lastMove, timeS, tempC, driveTorque, side);
         for (JointError e : errors) qo[e.joint()] += e.delta(q, moment);
         double[] theta = times(coupling, qo);
         double[] hose = dressPack != null && n >= 6 ? dressPack.torques(theta[3], theta[4], theta[5]) : null;
