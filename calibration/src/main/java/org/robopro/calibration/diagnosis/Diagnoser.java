@@ -163,13 +163,38 @@ public final class Diagnoser {
         train = dirs.train();
         validate = dirs.validate();
         Diagnosis d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
-        List<String> flankNotes = new ArrayList<>();
+        List<String> flankNotes = new ArrayList<>(dirs.notes());
         if (dirs.source().inferred()) {
             MeasurementSet[] flipped = startFlanks(d, train, validate, flankNotes);
             if (flipped != null) {
                 train = flipped[0];
                 validate = flipped[1];
                 d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
+            }
+        }
+        if (dirs.source() != Directions.Source.NONE) {
+            MeasurementSet[] kept = inPlay(d, train, validate, dirs.source().inferred(), false, flankNotes);
+            if (kept != null) {
+                train = kept[0];
+                validate = kept[1];
+                d = prepared(robot, train, validate, o, t0, dirs.source(), Set.of());
+            } else if (validate != null && validate.size() > 0) {
+                // A lost motion named as building up over the move lags less after a short move, as a play's dead zone
+                // does: the play's dead zone (no further parameter) takes its place when the validation poses say so.
+                List<String> trial = new ArrayList<>();
+                MeasurementSet[] alt = inPlay(d, train, validate, dirs.source().inferred(), true, trial);
+                Diagnosis d2 = alt == null ? null : prepared(robot, alt[0], alt[1], o, t0, dirs.source(), Set.of());
+                if (d2 != null && d2.effects().stream().noneMatch(f -> f.effect().buildsUp()) && namedKeys(d2).equals(namedKeys(d))
+                        && d2.finalValidateRmsM() < d.finalValidateRmsM() && d2.outliers().size() <= d.outliers().size()) {
+                    String windUp = d.effects().stream().filter(f -> f.effect().buildsUp()).map(f -> f.effect().label()).findFirst().orElse("");
+                    for (String t : trial)
+                        flankNotes.add(String.format(Locale.ROOT, "%s; %s first stood for it, and the play's dead zone predicts the "
+                                + "validation poses better (RMS %.4f mm against %.4f mm)", t, windUp, d2.finalValidateRmsM() * 1e3,
+                                d.finalValidateRmsM() * 1e3));
+                    train = alt[0];
+                    validate = alt[1];
+                    d = d2;
+                }
             }
         }
         if (!(validate != null && validate.size() > 0 || o.folds() < 2 || namedKeys(d).isEmpty()))
@@ -231,6 +256,81 @@ public final class Diagnoser {
             return set.withRows(rows);
         };
         return new MeasurementSet[] {apply.apply(train), apply.apply(validate)};
+    }
+
+    /**
+     * For each joint with lost motion named that does not build up over the move (play b), the poses
+     * at which its output, moved through the play by the joint values of the measuring order, rests
+     * inside the play or on the other flank than its direction gives ({@link Directions#inPlay}): a
+     * reversal shorter than the play leaves the output where it stood. Such a pose misses by up to
+     * the whole play under the flank model, and would be reported as a bad reading. Taken, for every
+     * such pose of the file, only when the training poses among them say so under the diagnosis'
+     * model: the output's place within the play lowers their sum of squared residuals by more than a
+     * pose's expected noise (3σ²) each. (A measuring program that approaches every pose through a
+     * pose the file does not hold crosses the play on moves the file cannot show; its residuals then
+     * keep the flanks.) The place is given to the model as the joint's value moved by −(b/2)(s − dir),
+     * so that the flank model's −(b/2)·dir makes the output's −(b/2)·s. Returns the sets with those
+     * joint values (null when none changes), and says so in {@code notes}.
+     */
+    static MeasurementSet[] inPlay(Diagnosis d, MeasurementSet train, MeasurementSet validate, boolean inferred, boolean windUps,
+                                   List<String> notes) {
+        Map<Measurement, double[]> moved = new java.util.IdentityHashMap<>();
+        double s2 = d.sigmaM() * d.sigmaM();
+        java.util.Set<Measurement> inTrain = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        inTrain.addAll(train.rows());
+        for (Diagnosis.Finding f : d.effects()) {
+            Effect e = f.effect();
+            if (e.kind() != Effect.Kind.BACKLASH || e.buildsUp() != windUps || e.approached() || e.heldByGravity() || f.values().length == 0)
+                continue;
+            int j = e.joint();
+            double[] v = f.values(), orders = e.runoutOrders();
+            java.util.function.DoubleUnaryOperator play = q -> Effect.play(orders, v, q);
+            List<Directions.InPlay> list = Directions.inPlay(train, validate, j, play);
+            if (list.isEmpty() || list.stream().anyMatch(r -> r.row().isDistance() || r.row().points().size() > 1)) continue;
+            double ssGiven = 0, ssInPlay = 0;
+            int n = 0;
+            for (Directions.InPlay r : list) {
+                if (!inTrain.contains(r.row())) continue;
+                Measurement m = r.row();
+                PoseConditions c = PoseConditions.of(m);
+                ssGiven += missed2(d, m, c);
+                ssInPlay += missed2(d, m.withQ(inPlayQ(m, r, play.applyAsDouble(m.q(j)))), c);
+                n++;
+            }
+            // with inferred directions the flanks already follow the file's moves, and so does the play: validation poses alone take
+            // it; a wind-up's residuals are not the flank model's, so the caller judges the dead zone in its place
+            if (!windUps && (n == 0 ? !inferred : !(ssInPlay + 3 * s2 * n < ssGiven))) continue;
+            for (Directions.InPlay r : list) {
+                double[] q = moved.computeIfAbsent(r.row(), Measurement::q);
+                q[j] = inPlayQ(r.row(), r, play.applyAsDouble(r.row().q(j)))[j];
+            }
+            notes.add(String.format(Locale.ROOT, "joint %d moved by less than its play (%.4f deg) against the flank it rested on before "
+                    + "pose%s %s, which leaves the output where it stood (a play's dead zone): there the output was taken within the "
+                    + "play as the joint values of the measuring order move it, not on the flank of the last motion ("
+                    + "%s)", j + 1, Math.toDegrees(v[0]), list.size() == 1 ? "" : "s",
+                    String.join(", ", list.stream().map(r -> r.row().poseId()).toList()), windUps ? "in place of its wind-up"
+                    : n == 0 ? "validation poses only"
+                    : String.format(Locale.ROOT, "training RMS %.4f mm against %.4f mm per pose", Math.sqrt(ssInPlay / n) * 1e3,
+                    Math.sqrt(ssGiven / n) * 1e3)));
+        }
+        if (moved.isEmpty()) return null;
+        java.util.function.Function<MeasurementSet, MeasurementSet> apply = set -> {
+            if (set == null) return null;
+            List<Measurement> rows = new ArrayList<>();
+            for (Measurement m : set.rows()) {
+                double[] q = moved.get(m);
+                rows.add(q == null ? m : m.withQ(q));
+            }
+            return set.withRows(rows);
+        };
+        return new MeasurementSet[] {apply.apply(train), apply.apply(validate)};
+    }
+
+    /** Row r's joint values with its joint moved so that the flank model's lag becomes the lag at its place in the play. */
+    private static double[] inPlayQ(Measurement m, Directions.InPlay r, double play) {
+        double[] q = m.q();
+        q[r.joint()] -= 0.5 * play * (r.side() - m.directions()[r.joint()]);
+        return q;
     }
 
     /** The squared distance between row m's measured point and where the diagnosis' final model puts it under conditions c. */
@@ -1717,16 +1817,15 @@ public final class Diagnoser {
         // Advice for columns that are missing.
         Tester finalTester = w.tester(fit);
         List<Object[]> probes = new ArrayList<>();
-        if (!hasTemp && !hasTime) {
+        // A drift with the measuring order is asked only of a model short of the instrument's stated floor: on one that reaches
+        // it nothing is left to drift, and the order follows the poses' places in the workspace.
+        if (!hasTemp && !hasTime && rows.size() > 1 && shortOfFloor(fit.trainRms, stated, kind, perfectShare(fit, false))) {
             List<PoseConditions> order = poseOrder(rows);
             int n = rows.size();
             for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
-            // any smooth drift with the measuring order (the point moving, or the base or instrument turning), asked only of a
-            // model short of the instrument's stated floor: on one that reaches it the order follows the poses' places
-            if (n > 1 && shortOfFloor(fit.trainRms, stated, kind, perfectShare(fit, false))) {
-                probes.add(new Object[] {Effect.pointSmooth(Effect.Along.TIME, 0, n - 1), order, "order"});
-                probes.add(new Object[] {Effect.baseTurn(Effect.Along.TIME, 0, n - 1), order, "order"});
-            }
+            // any smooth drift (the point moving, or the base or instrument turning)
+            probes.add(new Object[] {Effect.pointSmooth(Effect.Along.TIME, 0, n - 1), order, "order"});
+            probes.add(new Object[] {Effect.baseTurn(Effect.Along.TIME, 0, n - 1), order, "order"});
         }
         int nProbes = probes.size();
         boolean askedTime = false;

@@ -1,6 +1,7 @@
 package org.robopro.calibration.diagnosis;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
@@ -51,7 +52,9 @@ public final class Directions {
     }
 
     /** Training and validation sets with directions on every row, and where they came from. */
-    public record Prepared(MeasurementSet train, MeasurementSet validate, Source source) { }
+    public record Prepared(MeasurementSet train, MeasurementSet validate, Source source, List<String> notes) {
+        public Prepared(MeasurementSet train, MeasurementSet validate, Source source) { this(train, validate, source, List.of()); }
+    }
 
     /**
      * A reversal smaller than this (rad, or m for a prismatic joint) does not change a joint's
@@ -67,8 +70,8 @@ public final class Directions {
      * from the measuring order (see the class comment). Rows that already have directions keep them.
      */
     public static Prepared prepare(MeasurementSet train, MeasurementSet validate) {
-        if (train.size() == 0 || train.hasDirections())
-            return new Prepared(train, validate, train.size() > 0 ? Source.RECORDED : Source.NONE);
+        if (train.size() == 0) return new Prepared(train, validate, Source.NONE);
+        if (train.hasDirections()) return recorded(train, validate);
         List<List<Measurement>> seqs = sequences(train, validate);
         Source src = orderSource(seqs.get(0));
         Map<String, int[]> dirs = infer(seqs.get(0));
@@ -77,6 +80,55 @@ public final class Directions {
         if (validate != null && validate.size() > 0 && !validate.hasDirections())
             v = apply(validate, seqs.size() > 1 ? infer(seqs.get(1)) : dirs);
         return new Prepared(t, v, src);
+    }
+
+    /**
+     * Recorded directions, each kept but where a joint's move onto the pose (in the measuring order)
+     * is within {@link #PLAY_TOLERANCE} and its recorded direction is against the joint's last real
+     * move: read-back jitter, or a move far shorter than any play, does not take up the play the
+     * other way (the deadband of a backlash: the output stays until the input has crossed the play;
+     * Nordin &amp; Gutman, "Controlling mechanical systems with backlash — a survey", Automatica 38
+     * (2002) 1633, §2), so the joint rests on the flank of its last real move, whatever sign the
+     * controller logged for the jitter. The rows so read are said in the notes.
+     */
+    private static Prepared recorded(MeasurementSet train, MeasurementSet validate) {
+        List<List<Measurement>> seqs = sequences(train, validate);
+        Map<Measurement, int[]> kept = new HashMap<>();
+        List<String> changed = new ArrayList<>();
+        for (List<Measurement> seq : seqs) {
+            StillPoints at = null;
+            int[] last = null;
+            for (Measurement m : seq) {
+                int n = m.dof();
+                // from the zero position a measuring program starts at, as the moves are taken (see moves)
+                if (at == null) { at = new StillPoints(n, new double[n]); last = new int[n]; }
+                int[] d = m.directions(), e = d == null ? null : d.clone();
+                for (int j = 0; j < n; j++) {
+                    double moved = at.moved(j, m.q(j));
+                    if (moved != 0) last[j] = moved > 0 ? 1 : -1;
+                    else if (e != null && last[j] != 0 && d[j] != 0 && d[j] != last[j]) {
+                        e[j] = last[j];
+                        changed.add(m.poseId() + " j" + (j + 1));
+                    }
+                }
+                if (e != null && !Arrays.equals(e, d)) kept.put(m, e);
+            }
+        }
+        if (kept.isEmpty()) return new Prepared(train, validate, Source.RECORDED);
+        String note = String.format(java.util.Locale.ROOT, "recorded directions against the joint's last real move after a move of "
+                + "less than %.4f deg (read-back jitter, which takes up no play) were read as that move's: %s", Math.toDegrees(PLAY_TOLERANCE),
+                String.join(", ", changed));
+        return new Prepared(withDirections(train, kept), validate == null ? null : withDirections(validate, kept), Source.RECORDED,
+                List.of(note));
+    }
+
+    private static MeasurementSet withDirections(MeasurementSet s, Map<Measurement, int[]> dirs) {
+        List<Measurement> rows = new ArrayList<>();
+        for (Measurement m : s.rows()) {
+            int[] d = dirs.get(m);
+            rows.add(d == null ? m : m.withConditions(d, m.timeS(), m.tempC(), m.payloadKg()));
+        }
+        return s.withRows(rows);
     }
 
     /**
@@ -128,6 +180,47 @@ public final class Directions {
                 if (moved != 0) d[j] = moved > 0 ? 1 : -1;                      // further along its flank, or took up the play the other way
             }
             out.put(m.poseId(), d.clone());
+        }
+        return out;
+    }
+
+    /**
+     * A pose at which joint {@code joint}'s output rests at {@code side} within its play (+1 on the
+     * flank a rising move leaves it on, −1 on the other, between them inside the play), not on the
+     * flank its direction gives.
+     */
+    record InPlay(Measurement row, int joint, double side) { }
+
+    /**
+     * The poses at which joint {@code j}'s output, moved through a play of {@code play} (rad, at the joint's value q) by the
+     * joint values of the measuring order (training and validation rows of one file merged, as
+     * {@link #prepare}), does not rest on the flank its direction gives: a reversal shorter than the
+     * play leaves the output where it stood, and only a move beyond it puts the output on the far
+     * flank. The play operator of a backlash (Nordin &amp; Gutman, "Controlling mechanical systems
+     * with backlash — a survey", Automatica 38 (2002) 1633, §2): the output's lag o = −(b/2)·s moved to
+     * clamp(o − move, −b'/2, b'/2), b' the play where the move ends, with the place in the play s in
+     * flank units, starting on the first pose's direction; listed where s
+     * differs from the direction by more than 5 % of the play. Moves the file does not hold (an
+     * approach pose between two rows) are not seen here, so the caller must check the list against
+     * the measurements.
+     */
+    static List<InPlay> inPlay(MeasurementSet train, MeasurementSet validate, int j, java.util.function.DoubleUnaryOperator play) {
+        List<InPlay> out = new ArrayList<>();
+        if (train.size() == 0 || train.isPairs()) return out;
+        for (List<Measurement> seq : sequences(train, validate)) {
+            double side = 0, prev = Double.NaN;
+            for (Measurement m : seq) {
+                int[] d = m.directions();
+                if (d == null) { prev = Double.NaN; side = 0; continue; }
+                double q = m.q(j);
+                double b0 = Double.isFinite(prev) ? play.applyAsDouble(prev) : 0, b1 = play.applyAsDouble(q);
+                if (Double.isFinite(prev) && side != 0 && b0 > 0 && b1 > 0) {
+                    double lag = Math.max(-0.5 * b1, Math.min(0.5 * b1, -0.5 * b0 * side - (q - prev)));
+                    side = -2 * lag / b1;
+                    if (d[j] != 0 && Math.abs(side - d[j]) > 0.1) out.add(new InPlay(m, j, side));
+                } else side = d[j];
+                prev = q;
+            }
         }
         return out;
     }

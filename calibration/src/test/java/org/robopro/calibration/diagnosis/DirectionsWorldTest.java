@@ -49,6 +49,48 @@ class DirectionsWorldTest {
         check("irb2000", seed, p -> p.withDirColumns(false).withMovedJoints(1));
     }
 
+    /**
+     * A controller that logs, for a still joint, the sign of its read-back jitter: the recorded
+     * direction then turns with every jitter, though no play was taken up. Recorded directions
+     * against the joint's last real move after a move within the jitter are read as that move's, and
+     * every pose's direction equals the world's true flank again.
+     */
+    @ParameterizedTest(name = "irb2000, one joint moved per pose, seed {0}")
+    @org.junit.jupiter.params.provider.ValueSource(longs = {3, 4})
+    void recordedJitterSigns_areReadAsTheLastRealMove(long seed) {
+        Scenario s = Scenario.ofFamily("null").stream().filter(x -> x.robot().equals("irb2000")).findFirst().orElseThrow();
+        Campaign.Result c = s.trial(seed, p -> p.withMovedJoints(1)).campaign();
+        RobotDescription r = RobotLibrary.shipped("irb2000");
+        MeasurementSet all = MeasurementReader.parse("world.csv", c.text(), r.joints().stream().map(JointDescription::type).toList());
+        assertTrue(all.hasDirections(), "dir columns written");
+        List<Measurement> inOrder = Directions.ordered(all.rows()), logged = new ArrayList<>();
+        int flipped = 0;
+        double[] prev = null;
+        for (Measurement m : inOrder) {
+            int[] d = m.directions().clone();
+            for (int j = 0; prev != null && j < r.dof(); j++) {
+                double jitter = m.q(j) - prev[j];
+                int sign = jitter > 0 ? 1 : -1;
+                if (jitter != 0 && Math.abs(jitter) <= Directions.PLAY_TOLERANCE && d[j] != sign) { d[j] = sign; flipped++; }
+            }
+            prev = m.q();
+            logged.add(m.withConditions(d, m.timeS(), m.tempC(), m.payloadKg()));
+        }
+        assertTrue(flipped > 20, "jitter signs against the flank: " + flipped);
+        MeasurementSet withJitterSigns = all.withRows(logged);
+        Directions.Prepared p = Directions.prepare(withJitterSigns.split(Measurement.Split.TRAIN), withJitterSigns.split(Measurement.Split.VALIDATE));
+        assertSame(Directions.Source.RECORDED, p.source());
+        Map<String, int[]> read = new HashMap<>();
+        for (Measurement m : p.train().rows()) read.put(m.poseId(), m.directions());
+        for (Measurement m : p.validate().rows()) read.put(m.poseId(), m.directions());
+        List<String> wrong = new ArrayList<>();
+        for (Campaign.Row row : c.rows())
+            for (int j = 0; j < r.dof(); j++)
+                if (read.get(row.id())[j] != row.dir()[j]) wrong.add("pose " + row.id() + " drive " + (j + 1));
+        assertEquals(List.of(), wrong, "poses whose direction differs from the world's");
+        assertEquals(1, p.notes().size(), p.notes().toString());
+    }
+
     private static void check(String robot, long seed, UnaryOperator<Campaign.Plan> plan) {
         Scenario s = Scenario.ofFamily("null").stream().filter(x -> x.robot().equals(robot)).findFirst().orElseThrow();
         Campaign.Result c = s.trial(seed, plan).campaign();
