@@ -192,17 +192,17 @@ public final class Directions {
     record InPlay(Measurement row, int joint, double side) { }
 
     /**
-     * The poses at which joint {@code j}'s output, moved through a play of {@code play} (rad, at the joint's value q) by the
-     * joint values of the measuring order (training and validation rows of one file merged, as
-     * {@link #prepare}), does not rest on the flank its direction gives: a reversal shorter than the
-     * play leaves the output where it stood, and only a move beyond it puts the output on the far
-     * flank. The play operator of a backlash (Nordin &amp; Gutman, "Controlling mechanical systems
-     * with backlash — a survey", Automatica 38 (2002) 1633, §2): the output's lag o = −(b/2)·s moved to
-     * clamp(o − move, −b'/2, b'/2), b' the play where the move ends, with the place in the play s in
-     * flank units, starting on the first pose's direction; listed where s
-     * differs from the direction by more than 5 % of the play. Moves the file does not hold (an
-     * approach pose between two rows) are not seen here, so the caller must check the list against
-     * the measurements.
+     * The poses at which joint {@code j}'s output, moved through a play of {@code play} (rad, at the
+     * joint's value q) by the joint values of the measuring order (training and validation rows of
+     * one file merged, as {@link #prepare}), does not rest on the flank its direction gives: a
+     * reversal shorter than the play leaves the output where it stood, and only a move beyond it
+     * puts the output on the far flank. The play operator of a backlash (Nordin &amp; Gutman,
+     * "Controlling mechanical systems with backlash — a survey", Automatica 38 (2002) 1633, §2): the
+     * output's lag o = −(b/2)·s moved to clamp(o − move, −b'/2, b'/2), b' the play where the move
+     * ends, s the place in the play in flank units, starting on the first pose's direction; listed
+     * where s differs from the direction by more than 5 % of the play. Moves the file does not hold
+     * (an approach pose between two rows) are not seen here, so the caller must check the list
+     * against the measurements.
      */
     static List<InPlay> inPlay(MeasurementSet train, MeasurementSet validate, int j, java.util.function.DoubleUnaryOperator play) {
         List<InPlay> out = new ArrayList<>();

@@ -42,6 +42,21 @@ class DeadZoneTest {
     }
 
     /**
+     * A commanded reversal of 0.00008° (pose 135 of this draw), logged by its sign as dir2 = −1: the
+     * world keeps the output on its rising flank, and the diagnosis reads the recorded direction as
+     * the last real move's, so the pose is not reported as a bad reading.
+     */
+    @Test
+    void aRecordedReversalWithinJitter_isReadAsTheLastRealMove() {
+        WorldCampaigns.Sim s = WorldCampaigns.of(Scenario.named("lost motion j2, directions recorded").trial(7, p -> p));
+        Campaign.Row row = s.campaign().rows().stream().filter(r -> r.dir()[1] < 0 && r.side()[1] > 0.99).findFirst().orElseThrow();
+        Diagnosis d = Diagnoser.diagnose(s.nominal(), s.train(), s.validation());
+        assertEquals(List.of(), d.outliers());
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("recorded directions against") && n.contains(row.id() + " j2")),
+                d.notes().toString());
+    }
+
+    /**
      * Every pose approached from above through a pose the file does not hold: the file's own moves
      * go both ways, so a play operator run over them puts many outputs on the other flank, but the
      * approach crossed the play each time. The residuals keep the recorded flanks.
