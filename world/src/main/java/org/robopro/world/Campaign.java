@@ -57,10 +57,13 @@ public final class Campaign {
      *                       reports its values with a read-back jitter of {@link #READBACK_JITTER_RAD}
      * @param approach       null: each pose is reached by one move from the pose before; else the drives it rules take
      *                       each pose by a short move from a fixed side ({@link Approach})
+     * @param linkageRange   a linkage's joint kept within its limits as the arm's own angle θ = C q, not only as the drive's
+     *                       value q (a parallel arm's crank cannot turn through the upper arm; without this the drives' ranges
+     *                       alone are kept, as a planner reading only the drive limits would)
      */
     public record Plan(int poses, int validatePoses, double sigmaM, double sigmaRotRad, boolean sixD, boolean dirColumns,
                        boolean conditionColumns, double[] payloadStepsKg, Order order, long seed, int outliers, Start start,
-                       int movedJoints, Approach approach) {
+                       int movedJoints, Approach approach, boolean linkageRange) {
         public Plan {
             if (poses < 1 || validatePoses < 0) throw new IllegalArgumentException("poses " + poses + ", validate " + validatePoses);
             if (outliers < 0 || outliers > poses / 10) throw new IllegalArgumentException("outliers " + outliers + " of " + poses + " poses");
@@ -72,22 +75,23 @@ public final class Campaign {
 
         /** 200 training and 100 validation poses, σ 0.02 mm, directions, time and temperature written, no payload, nearest order. */
         public static Plan defaults(long seed) {
-            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME, 0, null);
+            return new Plan(200, 100, 0.02e-3, Math.toRadians(0.002), false, true, true, new double[0], Order.NEAREST, seed, 0, Start.HOME, 0, null, false);
         }
 
-        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withSigmaRot(double rad) { return new Plan(poses, validatePoses, sigmaM, rad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start, movedJoints, approach); }
-        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start, movedJoints, approach); }
-        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start, movedJoints, approach); }
-        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s, movedJoints, approach); }
-        public Plan withMovedJoints(int k) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, k, approach); }
-        public Plan withApproach(Approach a) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, a); }
-        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start, movedJoints, approach); }
+        public Plan withPoses(int n, int validate) { return new Plan(n, validate, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withSigma(double m) { return new Plan(poses, validatePoses, m, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withSigmaRot(double rad) { return new Plan(poses, validatePoses, sigmaM, rad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withSixD(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, b, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withDirColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, b, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withConditionColumns(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, b, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withPayloads(double... kg) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, kg, order, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withOrder(Order o) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, o, seed, outliers, start, movedJoints, approach, linkageRange); }
+        public Plan withOutliers(int n) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, n, start, movedJoints, approach, linkageRange); }
+        public Plan withStart(Start s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, s, movedJoints, approach, linkageRange); }
+        public Plan withMovedJoints(int k) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, k, approach, linkageRange); }
+        public Plan withApproach(Approach a) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, a, linkageRange); }
+        public Plan withLinkageRange(boolean b) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, seed, outliers, start, movedJoints, approach, b); }
+        public Plan withSeed(long s) { return new Plan(poses, validatePoses, sigmaM, sigmaRotRad, sixD, dirColumns, conditionColumns, payloadStepsKg, order, s, outliers, start, movedJoints, approach, linkageRange); }
     }
 
     /**
@@ -186,10 +190,10 @@ public final class Campaign {
         // the gross errors have their own stream, so that a campaign without them (a twin) keeps every other draw
         Random gross = new Random(plan.seed() * 104_729L + 17);
         int total = plan.poses() + plan.validatePoses();
-        List<double[]> drawn = new PoseRule(nominal).sample(total, rng);
+        List<double[]> drawn = new PoseRule(nominal, plan.linkageRange()).sample(total, rng);
         double[] start = plan.start() == Start.ELSEWHERE
                 ? new PoseRule(nominal).sample(1, new Random(plan.seed() * 65_537L + 5)).get(0) : home(nominal);
-        List<double[]> seq = plan.movedJoints() > 0 ? new PoseRule(nominal).walk(total, plan.movedJoints(), rng)
+        List<double[]> seq = plan.movedJoints() > 0 ? new PoseRule(nominal, plan.linkageRange()).walk(total, plan.movedJoints(), rng)
                 : plan.order() == Order.NEAREST ? nearestOrder(nominal, drawn, start) : drawn;
         Random jitter = new Random(plan.seed() * 524_287L + 13);
         Random approach = new Random(plan.seed() * 2_305_843L + 29);

@@ -146,6 +146,38 @@ public sealed interface JointError {
     }
 
     /**
+     * Outside every catalogue family: a parallel arm whose rod is not as long as the upper arm's
+     * pivot distance. Drive {@code joint}'s motor turns a crank of length {@code crankM} at the upper
+     * arm's pivot; a rod of length {@code rodM} carries it to a lever of length {@code leverM} on the
+     * forearm at the elbow, {@code groundM} along the upper arm from the pivot. With rod = ground and
+     * lever = crank the four bars are a parallelogram and the forearm turns with the crank; otherwise
+     * the forearm's angle to the upper arm φ is the four-bar's closure at the crank's angle to the
+     * upper arm ψ = psi0 + q_joint − q_upper (Norton, Design of Machinery, §4.5, position analysis:
+     * the elbow, the crank's end and the lever's end form a triangle of sides d, rod and lever), and
+     * the drive's output is off by φ − ψ. To first order −δrod/(crank·sin ψ): large where the crank
+     * lies near the upper arm.
+     */
+    record LinkageRod(int joint, int upper, double groundM, double crankM, double leverM, double rodM, double psi0) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            double psi = psi0 + q[joint] - q[upper];
+            return wrap(leverAngle(psi) - psi);
+        }
+
+        /** The lever's angle to the upper arm (rad) at the crank's angle psi, on the branch of the parallelogram. */
+        public double leverAngle(double psi) {
+            double ax = crankM * Math.cos(psi) - groundM, ay = crankM * Math.sin(psi);     // elbow to the crank's end
+            double d = Math.hypot(ax, ay);
+            double c = (d * d + leverM * leverM - rodM * rodM) / (2 * leverM * d);
+            if (!(Math.abs(c) <= 1)) throw new IllegalStateException("the linkage cannot close at a crank angle of " + Math.toDegrees(psi) + " deg");
+            double toCrank = Math.atan2(ay, ax), g = Math.acos(c);
+            double a = toCrank + g, b = toCrank - g;
+            return Math.abs(wrap(a - psi)) < Math.abs(wrap(b - psi)) ? a : b;
+        }
+
+        private static double wrap(double x) { return Math.atan2(Math.sin(x), Math.cos(x)); }
+    }
+
+    /**
      * Outside every catalogue family: an error depending on two joints at once (a hose package
      * dragging on an axis with a force that depends on another axis): a sin(q_joint) sin(q_other).
      */

@@ -11,7 +11,8 @@ import org.robopro.models.RobotDescription;
  * controller value uniform in the inner 90 % of its range; a pose is refused when the flange is
  * below the base plane, within 0.25 m of the first axis (inside the robot's own column), or close
  * to a singularity (smallest singular value of the space Jacobian, positions divided by the
- * reach, below 0.05). The Jacobian columns are the joint twists carried to the pose (Lynch &amp;
+ * reach, below 0.05); on request, also where a linkage's joint leaves its limits as the arm's own
+ * angle. The Jacobian columns are the joint twists carried to the pose (Lynch &amp;
  * Park, Modern Robotics, §5.1.1), written here from the robot file's axes.
  */
 final class PoseRule {
@@ -19,8 +20,16 @@ final class PoseRule {
     private final Arm arm;
     private final double[][] coupling;
     private final double reach;
+    private final boolean linkageRange;
 
-    PoseRule(RobotDescription robot) {
+    PoseRule(RobotDescription robot) { this(robot, false); }
+
+    /**
+     * With {@code linkageRange}, a pose is also refused where a joint its linkage couples (θ_j = Σ C[j][l] q_l
+     * with other drives in it: θ3 = q3 − q2 on a parallel arm) has its arm angle θ_j outside the joint's limits.
+     */
+    PoseRule(RobotDescription robot, boolean linkageRange) {
+        this.linkageRange = linkageRange;
         this.robot = robot;
         this.arm = Arm.of(robot);
         this.coupling = robot.couplingMatrix();
@@ -78,6 +87,13 @@ final class PoseRule {
 
     boolean acceptable(double[] q) {
         double[] theta = WorldRobot.times(coupling, q);
+        if (linkageRange)
+            for (int j = 0; j < theta.length; j++) {
+                JointDescription jd = robot.joints().get(j);
+                boolean coupled = false;
+                for (int l = 0; l < theta.length; l++) coupled |= l != j && coupling[j][l] != 0;
+                if (coupled && (theta[j] < jd.min() || theta[j] > jd.max())) return false;
+            }
         Rigid[] body = arm.bodies(theta);
         double[] f = body[body.length - 1].times(arm.flange()).p();
         if (f[2] < 0) return false;

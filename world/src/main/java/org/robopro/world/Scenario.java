@@ -373,6 +373,15 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("outside: bump in the angle of j2 puma560", "outside", "puma560", Expected.outside(),
                 (n, r) -> add(new JointError.Bump(1, Math.toRadians(uniform(r, 20, 160)), Math.toRadians(uniform(r, 10, 20)),
                         Math.toRadians(signed(r, 0.02, 0.04)))), same()));
+        // a parallel arm's rod 40-80 µm longer or shorter than the upper arm's pivot distance (crank 250-320 mm, the crank at
+        // 85-95 deg to the upper arm where θ3 = 0, the lever within 20 µm of the crank); the poses keep θ3 = q3 − q2 within
+        // joint 3's limits, as the linkage does (the crank then stays 25-35 deg or more away from the upper arm)
+        for (String robot : List.of("irb2000", "irb2400"))
+            c.add(s("outside: parallel-arm rod off its length, " + robot, "outside", robot, Expected.outside(), (n, r) -> {
+                double ground = Math.abs(n.joints().get(2).point().z() - n.joints().get(1).point().z()), crank = uniform(r, 0.25, 0.32);
+                return add(new JointError.LinkageRod(2, 1, ground, crank, crank + signed(r, 0, 20e-6), ground + signed(r, 40e-6, 80e-6),
+                        Math.toRadians(uniform(r, 85, 95))));
+            }, p -> p.withLinkageRange(true)));
         c.add(s("outside: measured point sags with reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var sag = new WorldRobot.Sag(uniform(r, 0.1e-3, 0.2e-3), 1.5); return w -> w.withSag(sag); }, same()));
         heldOutStyle(c);

@@ -205,6 +205,14 @@ final class Truth {
             m.put("type", "cross-coupling");
             m.put("source", c.source() + 1);
             m.put("kappa", c.kappa());
+        } else if (e instanceof JointError.LinkageRod l) {
+            m.put("type", "parallel-arm rod of another length than the upper arm's pivot distance (outside): four-bar closure");
+            m.put("upper_joint", "j" + (l.upper() + 1));
+            m.put("ground_mm", l.groundM() * 1e3);
+            m.put("crank_mm", l.crankM() * 1e3);
+            m.put("lever_mm", l.leverM() * 1e3);
+            m.put("rod_mm", l.rodM() * 1e3);
+            m.put("psi0_deg", Math.toDegrees(l.psi0()));
         } else if (e instanceof JointError.Bump b) {
             m.put("type", "bump (outside)");
             m.put("centre_deg", Math.toDegrees(b.centre()));

@@ -2426,6 +2426,23 @@ public final class Diagnoser {
         return out;
     }
 
+    /**
+     * A smooth error of drive j following its own model angle θ_j over the poses' range, when
+     * {@code model}'s linkage makes θ_j of q_j and q_other; null otherwise.
+     */
+    static Effect ownModelAngleSmooth(int j, int other, KinematicModel model, List<Measurement> rows) {
+        double[] row = model.couplingMatrix()[j];
+        if (isUnitRow(row, j) || row[other] == 0) return null;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) {
+            double th = 0;
+            for (int l = 0; l < row.length; l++) th += row[l] * r.q(l);
+            lo = Math.min(lo, th);
+            hi = Math.max(hi, th);
+        }
+        return hi > lo ? Effect.smoothFollowingModelAngle(j, j, model, lo, hi, Effect.SMOOTH_BASIS) : null;
+    }
+
     /** A smooth curve over [lo, hi] with nb functions. */
     private interface SmoothOf { Effect at(double lo, double hi, int nb); }
 
@@ -3848,7 +3865,14 @@ public final class Diagnoser {
                 if (f.probe.var == Locator.Var.ANGLE_PERIODIC && f.probe.order > 0) stages.add(f.probe.order);
                 else if (f.probe.var == Locator.Var.ANGLE_PERIODIC) hs.add(f.probe.harmonic);
                 if (f.probe.var == Locator.Var.ANGLE_SMOOTH && f.sparseClaim()) for (int h : f.sparse) hs.add(h);
-                if (f.probe.var == Locator.Var.JOINT_PAIR) out.add(Effect.pair(j, f.probe.other));
+                if (f.probe.var == Locator.Var.JOINT_PAIR) {
+                    out.add(Effect.pair(j, f.probe.other));
+                    // where the linkage makes the joint's angle in the arm of the two (θ3 = q3 − q2 on a parallel arm), the same
+                    // structure as one curve of that angle: a parallel arm's rod or lever of the wrong length turns the forearm by a
+                    // non-linear function of θ3 (the four-bar closure; Norton, Design of Machinery, §4.5)
+                    Effect own = ownModelAngleSmooth(j, f.probe.other, model, rows);
+                    if (own != null && out.stream().noneMatch(x -> x.label().equals(own.label()))) out.add(own);
+                }
                 if (f.probe.var == Locator.Var.ANGLE_STEP) out.add(stepEffect(f.probe.var, j, f.probe.lo, model));
             }
             // two steps of one joint's reading: the reading may be off over the window between them (a step up and back)

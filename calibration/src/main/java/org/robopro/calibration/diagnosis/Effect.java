@@ -553,7 +553,9 @@ public final class Effect {
      * of {@code model}'s controller coupling (on a parallel-arm linkage θ3 = q3 − q2, the forearm's
      * angle to the upper arm): what turns with one joint of the arm itself, whatever the drives did
      * to set it (a bearing's wobble turning with the forearm's own angle moves drive 4's axis by a
-     * function of θ3, which no function of q3 alone holds).
+     * function of θ3, which no function of q3 alone holds). {@code source} may be the joint itself:
+     * a drive's error following its own model angle (a parallel arm's rod or lever of the wrong
+     * length turns the forearm by a non-linear function of θ3, the four-bar closure).
      */
     public static Effect smoothFollowingModelAngle(int joint, int source, KinematicModel model, double lo, double hi, int n) {
         Effect e = smoothFollowing(joint, source, lo, hi, n);
@@ -1655,7 +1657,8 @@ public final class Effect {
             case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
-            case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 ? " (following " + (model != null ? "theta" : "j") + (source + 1) + ")" : "")
+            case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 || model != null ? " (following " + (model != null ? "theta" : "j")
+                    + (angleJoint() + 1) + ")" : "")
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
             case BACKLASH -> kind.json + " j" + (joint + 1) + (buildsUp() ? String.format(Locale.ROOT, " (building up over %.1f deg%s%s)",
                     Math.toDegrees(buildUp), approached() ? String.format(Locale.ROOT, ", approached by %.1f deg", Math.toDegrees(approach)) : "",
@@ -2286,8 +2289,9 @@ public final class Effect {
                 if (n < 4) throw new InputException(file, 0, 0, "effects.joint-smooth-error.parameters_si", "needs s1..sN, N >= 4");
                 if (js.size() == 2 && js.get(0).equals(js.get(1)))
                     throw new InputException(file, 0, 0, "effects.joints", "joint-smooth-error following another joint needs two different joints");
-                if (ps.containsKey("model_angle") && js.size() == 2)
-                    yield smoothFollowingModelAngle(js.get(0) - 1, js.get(1) - 1, model, require(d, "q_min", file), require(d, "q_max", file), n);
+                if (ps.containsKey("model_angle"))
+                    yield smoothFollowingModelAngle(js.get(0) - 1, js.get(js.size() - 1) - 1, model, require(d, "q_min", file),
+                            require(d, "q_max", file), n);
                 yield smoothFollowing(js.get(0) - 1, js.size() == 2 ? js.get(1) - 1 : -1, require(d, "q_min", file), require(d, "q_max", file), n);
             }
             case PAIR -> {

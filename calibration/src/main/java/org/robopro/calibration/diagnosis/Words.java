@@ -80,7 +80,14 @@ final class Words {
                             .append(" look like geometry on these poses and were left to the geometric model.");
                 yield sb.toString();
             }
-            case SMOOTH -> e.angleJoint() != e.joint() ? String.format(Locale.ROOT, "Joint %d's error follows joint %d's angle, not in "
+            case SMOOTH -> e.angleJoint() == e.joint() && e.followsModelAngle() ? String.format(Locale.ROOT, "Joint %d's error follows "
+                    + "its own angle in the arm, θ%d (on a parallel arm the forearm's angle to the upper arm), not its drive's value q%d: "
+                    + "%.4f deg RMS over %.0f..%.0f deg of θ%d. None of the known effects explains it (a parallel arm's rod or lever of "
+                    + "the wrong length turns the forearm by such a function of θ%d, the four-bar linkage's closure). It is modelled as a "
+                    + "smooth curve of θ%d (%d-function cubic spline) so compensation can use it, but its cause is unknown.",
+                    e.joint() + 1, e.joint() + 1, e.joint() + 1, Math.toDegrees(rmsSmooth(e, v)), Math.toDegrees(e.rangeLo()),
+                    Math.toDegrees(e.rangeHi()), e.joint() + 1, e.joint() + 1, e.joint() + 1, e.basisCount())
+                    : e.angleJoint() != e.joint() ? String.format(Locale.ROOT, "Joint %d's error follows joint %d's angle, not in "
                     + "proportion to it (%.4f deg RMS over joint %d's range, %.0f..%.0f deg), so it is no cross-coupling; none of the known "
                     + "effects explains it (a cable or hose pulling as joint %d winds up, a linkage's play?). It is modelled as a smooth "
                     + "curve of joint %d's angle (%d-function cubic spline) so compensation can use it, but its cause is unknown.",
