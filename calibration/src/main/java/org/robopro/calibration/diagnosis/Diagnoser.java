@@ -1819,8 +1819,8 @@ public final class Diagnoser {
         List<Object[]> probes = new ArrayList<>();
         // A drift with the measuring order is asked only of a model short of the instrument's stated floor: on one that reaches
         // it nothing is left to drift, and the order follows the poses' places in the workspace.
+        List<PoseConditions> order = poseOrder(rows);
         if (!hasTemp && !hasTime && rows.size() > 1 && shortOfFloor(fit.trainRms, stated, kind, perfectShare(fit, false))) {
-            List<PoseConditions> order = poseOrder(rows);
             int n = rows.size();
             for (double f : new double[] {0.25, 0.5, 1, 3}) probes.add(new Object[] {Effect.thermalFromTime(f * n), order, "time"});
             // any smooth drift (the point moving, or the base or instrument turning)
@@ -1828,43 +1828,12 @@ public final class Diagnoser {
             probes.add(new Object[] {Effect.baseTurn(Effect.Along.TIME, 0, n - 1), order, "order"});
         }
         int nProbes = probes.size();
-        // and one step of the target on the flange between two poses of the order (a nest knocked, a holder slipping), at
-        // every twentieth of the poses: its own family of probes, the best of them judged against their number
-        Candidate bestStep = null;
-        int stepAt = -1, nSteps = 0;
-        if (nProbes > 0 && rows.size() >= 20 && !geo.pairs() && !geo.distance()) {
-            List<PoseConditions> order = poseOrder(rows);
-            for (int k = rows.size() / 20; k < rows.size() - rows.size() / 20; k += Math.max(1, rows.size() / 20)) {
-                Candidate c = finalTester.test(Effect.targetStep(model, k - 0.5), order);
-                nSteps++;
-                if (c.keptColumns > 0 && (bestStep == null || c.p < bestStep.p)) { bestStep = c; stepAt = k; }
-            }
-        }
-        // a smooth drift a step only approximates (a warm-up, a floor tilting) is left to the smooth probes' advice
+        boolean askedTime = false;
         double smoothPress = Double.POSITIVE_INFINITY;
         for (Object[] pr : probes) {
             @SuppressWarnings("unchecked") List<PoseConditions> cond = (List<PoseConditions>) pr[1];
             Candidate c = finalTester.test((Effect) pr[0], cond);
             if (c.keptColumns > 0) smoothPress = Math.min(smoothPress, c.pressAfter);
-        }
-        if (bestStep != null && bestStep.p < o.alpha() / nSteps && bestStep.pressAfter < Math.min(bestStep.pressBefore, smoothPress)) {
-            // placed between the grid's neighbours of the best, pose by pose
-            List<PoseConditions> order = poseOrder(rows);
-            int grid = Math.max(1, rows.size() / 20), from = Math.max(1, stepAt - grid + 1), to = Math.min(rows.size() - 1, stepAt + grid - 1);
-            for (int k = from; k <= to; k++) {
-                Candidate c = k == stepAt ? null : finalTester.test(Effect.targetStep(model, k - 0.5), order);
-                if (c != null && c.keptColumns > 0 && c.p < bestStep.p) { bestStep = c; stepAt = k; }
-            }
-            recs.add(String.format(Locale.ROOT, "The residuals jump once along the pose order, between poses %s and %s (F = %.1f, "
-                    + "p = %.1e), as a target that moved on the flange would make them (a reflector's nest knocked, a holder slipping "
-                    + "in its clamp): check the target's seat, record time_s for every pose so such a step can be located, and measure "
-                    + "a few of the first poses again at the end.", rows.get(stepAt - 1).poseId(), rows.get(stepAt).poseId(),
-                    bestStep.f, bestStep.p));
-        }
-        boolean askedTime = false;
-        for (Object[] pr : probes) {
-            @SuppressWarnings("unchecked") List<PoseConditions> cond = (List<PoseConditions>) pr[1];
-            Candidate c = finalTester.test((Effect) pr[0], cond);
             if (c.keptColumns == 0 || !(c.p < o.alpha() / nProbes) || !(c.pressAfter < c.pressBefore)) continue;
             if (pr[2].equals("time") && !askedTime) {
                 askedTime = true;
@@ -1879,6 +1848,30 @@ public final class Diagnoser {
                         + "measuring order follows. Record time_s (and temp_c) for every pose so a drift can be located, and "
                         + "measure a few poses again at the end.", c.f, c.p));
             }
+        }
+        // and one step of the target on the flange between two poses of the order (a nest knocked, a holder slipping), at
+        // every twentieth of the poses: its own family of probes, the best of them judged against their number
+        Candidate bestStep = null;
+        int stepAt = -1, nSteps = 0, grid = rows.size() / 20;
+        if (nProbes > 0 && grid >= 1 && !geo.pairs() && !geo.distance()) {
+            for (int k = grid; k < rows.size() - grid; k += grid) {
+                Candidate c = finalTester.test(Effect.targetStep(model, k - 0.5), order);
+                nSteps++;
+                if (c.keptColumns > 0 && (bestStep == null || c.p < bestStep.p)) { bestStep = c; stepAt = k; }
+            }
+        }
+        // a smooth drift a step only approximates (a warm-up, a floor tilting) is left to the smooth probes' advice
+        if (bestStep != null && bestStep.p < o.alpha() / nSteps && bestStep.pressAfter < Math.min(bestStep.pressBefore, smoothPress)) {
+            // placed between the grid's neighbours of the best, pose by pose
+            for (int k = stepAt - grid + 1; k < stepAt + grid; k++) {
+                Candidate c = k == stepAt ? null : finalTester.test(Effect.targetStep(model, k - 0.5), order);
+                if (c != null && c.keptColumns > 0 && c.p < bestStep.p) { bestStep = c; stepAt = k; }
+            }
+            recs.add(String.format(Locale.ROOT, "The residuals jump once along the pose order, between poses %s and %s (F = %.1f, "
+                    + "p = %.1e), as a target that moved on the flange would make them (a reflector's nest knocked, a holder slipping "
+                    + "in its clamp): check the target's seat, record time_s for every pose so such a step can be located, and measure "
+                    + "a few of the first poses again at the end.", rows.get(stepAt - 1).poseId(), rows.get(stepAt).poseId(),
+                    bestStep.f, bestStep.p));
         }
         if (dirSource.inferred() && selected.stream().anyMatch(e -> e.kind() == Effect.Kind.BACKLASH))
             recs.add("Backlash was identified with approach directions " + dirSource.words + ": record the approach direction "
