@@ -22,9 +22,10 @@ import org.robopro.world.Scenario;
 
 /**
  * Inferred directions against the truth of the independent world simulator: the world knows, per
- * pose and per drive, the side of the play each gear really rests on (from the real measuring
- * sequence, starting at the home position, on the motor side of a parallel-arm linkage; in a
- * joint-by-joint campaign the joints that stand still show only read-back jitter). The
+ * pose and per drive, the sign of the last real motion (from the real measuring sequence, starting
+ * at the home position, on the motor side of a parallel-arm linkage; in a joint-by-joint campaign
+ * the joints that stand still show only read-back jitter). These campaigns have no play, so that
+ * sign is also the flank each output rests on. The
  * campaign is written without dir columns, read back by the product's reader (training and
  * validation rows interleaved in one file), and every pose's inferred direction must equal the truth.
  */
