@@ -20,7 +20,8 @@ final class PoseRule {
     private final Arm arm;
     private final double[][] coupling;
     private final double reach;
-    private final boolean linkageRange;
+    /** Per joint: kept within its limits as the arm's angle θ_j too (a linkage's joint, when asked); else false. */
+    private final boolean[] armAngleLimited;
 
     PoseRule(RobotDescription robot) { this(robot, false); }
 
@@ -29,10 +30,12 @@ final class PoseRule {
      * with other drives in it: θ3 = q3 − q2 on a parallel arm) has its arm angle θ_j outside the joint's limits.
      */
     PoseRule(RobotDescription robot, boolean linkageRange) {
-        this.linkageRange = linkageRange;
         this.robot = robot;
         this.arm = Arm.of(robot);
         this.coupling = robot.couplingMatrix();
+        this.armAngleLimited = new boolean[coupling.length];
+        for (int j = 0; linkageRange && j < coupling.length; j++)
+            for (int l = 0; l < coupling.length; l++) armAngleLimited[j] |= l != j && coupling[j][l] != 0;
         double[] zero = arm.flange(new double[robot.dof()]).p();
         double r = 0.1;
         for (double[] p : arm.points()) r = Math.max(r, Rigid.norm(Rigid.minus(p, zero)));
@@ -87,13 +90,10 @@ final class PoseRule {
 
     boolean acceptable(double[] q) {
         double[] theta = WorldRobot.times(coupling, q);
-        if (linkageRange)
-            for (int j = 0; j < theta.length; j++) {
-                JointDescription jd = robot.joints().get(j);
-                boolean coupled = false;
-                for (int l = 0; l < theta.length; l++) coupled |= l != j && coupling[j][l] != 0;
-                if (coupled && (theta[j] < jd.min() || theta[j] > jd.max())) return false;
-            }
+        for (int j = 0; j < theta.length; j++) {
+            JointDescription jd = robot.joints().get(j);
+            if (armAngleLimited[j] && (theta[j] < jd.min() || theta[j] > jd.max())) return false;
+        }
         Rigid[] body = arm.bodies(theta);
         double[] f = body[body.length - 1].times(arm.flange()).p();
         if (f[2] < 0) return false;

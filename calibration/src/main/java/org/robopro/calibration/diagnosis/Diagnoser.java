@@ -246,16 +246,11 @@ public final class Diagnoser {
                     Math.sqrt(ss[other + 1] / start.size()) * 1e3, Math.sqrt(ssAssumed / start.size()) * 1e3, d.model().geometry().dof()));
         }
         if (flips.isEmpty()) return null;
-        java.util.function.Function<MeasurementSet, MeasurementSet> apply = set -> {
-            if (set == null) return null;
-            List<Measurement> rows = new ArrayList<>();
-            for (Measurement m : set.rows()) {
-                int[] dir = flips.get(m.poseId() + "|" + m.set());
-                rows.add(dir == null ? m : m.withConditions(dir, m.timeS(), m.tempC(), m.payloadKg()));
-            }
-            return set.withRows(rows);
+        java.util.function.UnaryOperator<Measurement> flip = m -> {
+            int[] dir = flips.get(m.poseId() + "|" + m.set());
+            return dir == null ? m : m.withConditions(dir, m.timeS(), m.tempC(), m.payloadKg());
         };
-        return new MeasurementSet[] {apply.apply(train), apply.apply(validate)};
+        return new MeasurementSet[] {train.map(flip), validate == null ? null : validate.map(flip)};
     }
 
     /**
@@ -287,6 +282,8 @@ public final class Diagnoser {
             java.util.function.DoubleUnaryOperator play = q -> Effect.play(orders, v, q);
             List<Directions.InPlay> list = Directions.inPlay(train, validate, j, play);
             if (list.isEmpty() || list.stream().anyMatch(r -> r.row().isDistance() || r.row().points().size() > 1)) continue;
+            Map<Measurement, double[]> inPlace = new java.util.IdentityHashMap<>();
+            for (Directions.InPlay r : list) inPlace.put(r.row(), inPlayQ(r, play.applyAsDouble(r.row().q(j))));
             double ssGiven = 0, ssInPlay = 0;
             int n = 0;
             for (Directions.InPlay r : list) {
@@ -294,16 +291,13 @@ public final class Diagnoser {
                 Measurement m = r.row();
                 PoseConditions c = PoseConditions.of(m);
                 ssGiven += missed2(d, m, c);
-                ssInPlay += missed2(d, m.withQ(inPlayQ(m, r, play.applyAsDouble(m.q(j)))), c);
+                ssInPlay += missed2(d, m.withQ(inPlace.get(m)), c);
                 n++;
             }
             // with inferred directions the flanks already follow the file's moves, and so does the play: validation poses alone take
             // it; a wind-up's residuals are not the flank model's, so the caller judges the dead zone in its place
             if (!windUps && (n == 0 ? !inferred : !(ssInPlay + 3 * s2 * n < ssGiven))) continue;
-            for (Directions.InPlay r : list) {
-                double[] q = moved.computeIfAbsent(r.row(), Measurement::q);
-                q[j] = inPlayQ(r.row(), r, play.applyAsDouble(r.row().q(j)))[j];
-            }
+            for (Directions.InPlay r : list) moved.computeIfAbsent(r.row(), Measurement::q)[j] = inPlace.get(r.row())[j];
             notes.add(String.format(Locale.ROOT, "joint %d moved by less than its play (%.4f deg) against the flank it rested on before "
                     + "pose%s %s, which leaves the output where it stood (a play's dead zone): there the output was taken within the "
                     + "play as the joint values of the measuring order move it, not on the flank of the last motion ("
@@ -314,22 +308,14 @@ public final class Diagnoser {
                     Math.sqrt(ssGiven / n) * 1e3)));
         }
         if (moved.isEmpty()) return null;
-        java.util.function.Function<MeasurementSet, MeasurementSet> apply = set -> {
-            if (set == null) return null;
-            List<Measurement> rows = new ArrayList<>();
-            for (Measurement m : set.rows()) {
-                double[] q = moved.get(m);
-                rows.add(q == null ? m : m.withQ(q));
-            }
-            return set.withRows(rows);
-        };
-        return new MeasurementSet[] {apply.apply(train), apply.apply(validate)};
+        java.util.function.UnaryOperator<Measurement> toPlace = m -> moved.containsKey(m) ? m.withQ(moved.get(m)) : m;
+        return new MeasurementSet[] {train.map(toPlace), validate == null ? null : validate.map(toPlace)};
     }
 
-    /** Row r's joint values with its joint moved so that the flank model's lag becomes the lag at its place in the play. */
-    private static double[] inPlayQ(Measurement m, Directions.InPlay r, double play) {
-        double[] q = m.q();
-        q[r.joint()] -= 0.5 * play * (r.side() - m.directions()[r.joint()]);
+    /** Pose r's joint values with its joint moved so that the flank model's lag becomes the lag at its place in the play. */
+    private static double[] inPlayQ(Directions.InPlay r, double play) {
+        double[] q = r.row().q();
+        q[r.joint()] -= 0.5 * play * (r.side() - r.row().directions()[r.joint()]);
         return q;
     }
 
@@ -1863,9 +1849,11 @@ public final class Diagnoser {
         // a smooth drift a step only approximates (a warm-up, a floor tilting) is left to the smooth probes' advice
         if (bestStep != null && bestStep.p < o.alpha() / nSteps && bestStep.pressAfter < Math.min(bestStep.pressBefore, smoothPress)) {
             // placed between the grid's neighbours of the best, pose by pose
-            for (int k = stepAt - grid + 1; k < stepAt + grid; k++) {
-                Candidate c = k == stepAt ? null : finalTester.test(Effect.targetStep(model, k - 0.5), order);
-                if (c != null && c.keptColumns > 0 && c.p < bestStep.p) { bestStep = c; stepAt = k; }
+            int coarse = stepAt;
+            for (int k = coarse - grid + 1; k < coarse + grid; k++) {
+                if (k == coarse) continue;
+                Candidate c = finalTester.test(Effect.targetStep(model, k - 0.5), order);
+                if (c.keptColumns > 0 && c.p < bestStep.p) { bestStep = c; stepAt = k; }
             }
             recs.add(String.format(Locale.ROOT, "The residuals jump once along the pose order, between poses %s and %s (F = %.1f, "
                     + "p = %.1e), as a target that moved on the flange would make them (a reflector's nest knocked, a holder slipping "
@@ -2459,10 +2447,10 @@ public final class Diagnoser {
     static Effect ownModelAngleSmooth(int j, int other, KinematicModel model, List<Measurement> rows) {
         double[] row = model.couplingMatrix()[j];
         if (isUnitRow(row, j) || row[other] == 0) return null;
+        Effect angle = Effect.smoothFollowingModelAngle(j, j, model, 0, 1, Effect.SMOOTH_BASIS);
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (Measurement r : rows) {
-            double th = 0;
-            for (int l = 0; l < row.length; l++) th += row[l] * r.q(l);
+            double th = angle.smoothVariable(r.q());
             lo = Math.min(lo, th);
             hi = Math.max(hi, th);
         }

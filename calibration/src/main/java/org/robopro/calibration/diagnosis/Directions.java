@@ -123,12 +123,7 @@ public final class Directions {
     }
 
     private static MeasurementSet withDirections(MeasurementSet s, Map<Measurement, int[]> dirs) {
-        List<Measurement> rows = new ArrayList<>();
-        for (Measurement m : s.rows()) {
-            int[] d = dirs.get(m);
-            rows.add(d == null ? m : m.withConditions(d, m.timeS(), m.tempC(), m.payloadKg()));
-        }
-        return s.withRows(rows);
+        return s.map(m -> dirs.containsKey(m) ? m.withConditions(dirs.get(m), m.timeS(), m.tempC(), m.payloadKg()) : m);
     }
 
     /**
@@ -333,11 +328,7 @@ public final class Directions {
     }
 
     private static MeasurementSet apply(MeasurementSet s, Map<String, int[]> dirs) {
-        List<Measurement> rows = new ArrayList<>();
-        for (Measurement m : s.rows()) {
-            int[] d = m.directions() != null ? m.directions() : dirs.get(m.poseId());
-            rows.add(m.withConditions(d, m.timeS(), m.tempC(), m.payloadKg()));
-        }
-        return s.withRows(rows);
+        return s.map(m -> m.withConditions(m.directions() != null ? m.directions() : dirs.get(m.poseId()), m.timeS(), m.tempC(),
+                m.payloadKg()));
     }
 }
