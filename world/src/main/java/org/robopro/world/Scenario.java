@@ -534,6 +534,20 @@ public record Scenario(String name, String family, String robot, Expected expect
                     var t = tracker(r, false, false, false).withAirWarming(uniform(r, 12, 20), uniform(r, 1200, 2400));
                     return w -> w.withTracker(t);
                 }, same()));
+        c.add(s("outside: the tracker's distance taken again at every beam break, sigma 0.005 mm", "outside", "irb2400", Expected.outside(),
+                (n, r) -> {
+                    var t = beamBreaks(tracker(r, false, false, false), 300, 900, r);
+                    return w -> w.withTracker(t);
+                }, p -> p.withSigma(0.005e-3)));
+        c.add(s("instrument drift with time + the tracker's distance taken again at beam breaks, sigma 0.005 mm", "thermal-growth", "irb2400",
+                Expected.named(claim(THERMAL_GROWTH)),
+                (n, r) -> {
+                    // a tracker settling on its stand as it warms: 1-2 µm per minute; the arm crossing the beam now and then
+                    double[] d = Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 1e-6, 2e-6) / 60);
+                    var th = new WorldRobot.Thermal(20, new double[n.dof() + 1], new double[3], d);
+                    var t = beamBreaks(tracker(r, false, false, false), 600, 1500, r);
+                    return w -> w.withThermal(th).withTracker(t);
+                }, p -> p.withSigma(0.005e-3)));
         c.add(s("outside: base rocks on its foundation above an overturning moment", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     // The file's arm weighs 86 kg (±30 %) and tips a 0.25-0.35 m foot edge by at most about 500 N·m with 10 kg:
@@ -631,6 +645,21 @@ public record Scenario(String name, String family, String robot, Expected expect
         double[] amp = azimuth ? new double[] {uniform(r, 2, 5) * arcsec, uniform(r, 2, 5) * arcsec} : new double[0];
         double[] aph = azimuth ? new double[] {2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble()} : new double[0];
         return new WorldRobot.Tracker(a, period, ph, sc, k, amp, aph, new int[0], new double[0], new double[0]);
+    }
+
+    /**
+     * {@code t} with its distance taken again from the absolute distance meter at the campaign's
+     * start and at beam breaks every {@code minS}–{@code maxS} on average (a Poisson process over
+     * the first 10 000 s): each time the meter's offset is drawn anew, normal with a sigma of
+     * 8–15 µm (a tracker's ADM states ±10 µm or so; the upper end is a warm or worn meter).
+     */
+    static WorldRobot.Tracker beamBreaks(WorldRobot.Tracker t, double minS, double maxS, Random r) {
+        double mean = uniform(r, minS, maxS), sigma = uniform(r, 8e-6, 15e-6);
+        List<Double> at = new ArrayList<>(List.of(0.0));
+        for (double s = -mean * Math.log(1 - r.nextDouble()); s < 10_000; s += -mean * Math.log(1 - r.nextDouble())) at.add(s);
+        double[] times = new double[at.size()], offsets = new double[at.size()];
+        for (int i = 0; i < times.length; i++) { times[i] = at.get(i); offsets[i] = sigma * r.nextGaussian(); }
+        return t.withBeamBreaks(times, offsets);
     }
 
     /** A bearing wobble of 0.005–0.02° on {@code joint} at {@code ratio} times its angle, random phase. */

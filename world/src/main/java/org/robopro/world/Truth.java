@@ -110,6 +110,11 @@ final class Truth {
                 m.put("air_warm_k", t.airWarmK());
                 m.put("air_tau_s", t.airTauS());
             }
+            if (t.resetS().length > 0) {
+                m.put("beam_break_form", "range' = range + offset_i from beam break i on: the distance taken again from the absolute distance meter");
+                m.put("beam_break_s", Arrays.stream(t.resetS()).boxed().toList());
+                m.put("beam_break_offset_um", Arrays.stream(t.resetM()).map(v -> v * 1e6).boxed().toList());
+            }
             root.put("tracker", m);
         }
         if (w.floorTilt() != null) {

@@ -260,24 +260,37 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      *     the index it assumes is too high by 0.93·10⁻⁶ · that warming. The meter counts N = n D / λ₀
      *     wavelengths over a true distance D and reports N λ₀ / n_assumed = D n / n_assumed:
      *     rho' = rho (1 + rangeScale − 0.93·10⁻⁶ · that warming), the distance comes out short.</li>
+     * <li>beam breaks: the interferometer counts only changes of the distance, so when the arm
+     *     crosses the beam the count is lost; the tracker takes the distance again from its
+     *     absolute distance meter, whose error at that moment (its accuracy, a few micrometres)
+     *     then stays in every distance until the next break: rho' = rho + offset_i from break time
+     *     {@code resetS[i]} on (B. Muralikrishnan et al., Precision Engineering 44 (2016) 13-28,
+     *     the IFM and ADM; ASME B89.4.19-2006, ranging tests). Which moves break the beam is
+     *     drawn, not worked out from the arm's shape.</li>
      * </ul>
      * Orientation (6-D) is read by other means and is left as it is. Angles rad, lengths m.
      */
     public record Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
                           int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase,
-                          double airWarmK, double airTauS) {
+                          double airWarmK, double airTauS, double[] resetS, double[] resetM) {
         /** The refractive index of air against its temperature near 20 °C and 1013 hPa, 1/K (Birch and Downs 1993). */
         public static final double INDEX_PER_K = -0.93e-6;
 
         /** A tracker whose air compensation holds (no warming of the air against its station). */
         public Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
                        int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase) {
-            this(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, 0, 1);
+            this(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, 0, 1, new double[0], new double[0]);
         }
 
         /** This tracker with the air the beam crosses warming by {@code warmK} with time constant {@code tauS} against its station. */
         public Tracker withAirWarming(double warmK, double tauS) {
-            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, warmK, tauS);
+            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, warmK, tauS, resetS, resetM);
+        }
+
+        /** This tracker with its distance taken again at beam breaks at {@code timesS} (ascending), each with its offset, m. */
+        public Tracker withBeamBreaks(double[] timesS, double[] offsetsM) {
+            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, airWarmK, airTauS,
+                    timesS, offsetsM);
         }
 
         public Tracker {
@@ -287,6 +300,11 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             elK = elK.clone();
             elAmp = elAmp.clone();
             elPhase = elPhase.clone();
+            resetS = resetS.clone();
+            resetM = resetM.clone();
+            if (resetS.length != resetM.length) throw new IllegalArgumentException("beam break times and offsets differ in length");
+            for (int i = 1; i < resetS.length; i++)
+                if (!(resetS[i] > resetS[i - 1])) throw new IllegalArgumentException("beam break times must ascend");
             if (azK.length != azAmp.length || azK.length != azPhase.length || elK.length != elAmp.length || elK.length != elPhase.length)
                 throw new IllegalArgumentException("encoder harmonic arrays differ in length");
         }
@@ -297,19 +315,28 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         @Override public int[] elK() { return elK.clone(); }
         @Override public double[] elAmp() { return elAmp.clone(); }
         @Override public double[] elPhase() { return elPhase.clone(); }
+        @Override public double[] resetS() { return resetS.clone(); }
+        @Override public double[] resetM() { return resetM.clone(); }
+
+        /** The absolute distance meter's offset in the distance at {@code timeS} (unknown: the start): that of the last beam break before it. */
+        public double resetOffset(double timeS) {
+            double at = Double.isFinite(timeS) ? timeS : 0, off = 0;
+            for (int i = 0; i < resetS.length && resetS[i] <= at; i++) off = resetM[i];
+            return off;
+        }
 
         /** The range reading of a true range rho, m, with the air as the station reads it. */
         public double range(double rho) { return rho * (1 + rangeScale) + cyclicM * Math.sin(2 * Math.PI * rho / periodM + cyclicPhase); }
 
         /**
-         * The range reading of a true range rho at {@code timeS} (unknown: the station's air): the
-         * index the station computes exceeds the true one by the warming times |dn/dT|, so the
-         * wavelength in air it assumes is that much too short, and the distance, the wavelengths
-         * counted times it, too.
+         * The range reading of a true range rho at {@code timeS} (unknown: the station's air, and no
+         * beam break yet): the index the station computes exceeds the true one by the warming times
+         * |dn/dT|, so the wavelength in air it assumes is that much too short, and the distance, the
+         * wavelengths counted times it, too; the offset of the last beam break adds to it.
          */
         public double range(double rho, double timeS) {
             double warm = Double.isFinite(timeS) && airWarmK != 0 ? airWarmK * (1 - Math.exp(-timeS / airTauS)) : 0;
-            return range(rho) + rho * INDEX_PER_K * warm;
+            return range(rho) + rho * INDEX_PER_K * warm + resetOffset(timeS);
         }
 
         /** The azimuth reading of a true azimuth, rad. */

@@ -60,6 +60,25 @@ class OpenWorldFormsTest {
     }
 
     @Test
+    void beamBreaks_eachOffsetAlongTheLineOfSightUntilTheNextBreak_byHand() {
+        var t = distance(0, 1, 0, 0).withBeamBreaks(new double[] {0, 100, 250}, new double[] {4e-6, -11e-6, 7e-6});
+        // before any break the start's offset; at and after a break its own; the point stays on its line of sight
+        assertArrayEquals(new double[] {3 + 4e-6, 0, 0}, t.read(new double[] {3, 0, 0}, 50), 1e-12);
+        assertArrayEquals(new double[] {0, 4 * (5 - 11e-6) / 5, 3 * (5 - 11e-6) / 5}, t.read(new double[] {0, 4, 3}, 100), 1e-12);
+        assertArrayEquals(new double[] {0, 0, 2 + 7e-6}, t.read(new double[] {0, 0, 2}, 1e4), 1e-12);
+        // an unknown time: the start's
+        assertArrayEquals(new double[] {3 + 4e-6, 0, 0}, t.read(new double[] {3, 0, 0}), 1e-12);
+        // seen through a tilted tracker: the robot's point moves along the line of sight by the offset of the moment
+        Rigid inst = Rigid.rotation(new double[] {1, 0, 0}, Math.toRadians(4), new double[3]).times(Rigid.translation(-2.5, 1.0, -0.4));
+        WorldRobot plain = nominal().withInstrument(inst), seen = plain.withTracker(t);
+        double[] q = deg(30, 20, -10, 40, 50, 60);
+        double[] p = plain.target(q, UP, 20, 180, 0).p(), m = seen.target(q, UP, 20, 180, 0).p();
+        assertArrayEquals(Rigid.scale(Rigid.unit(p), -11e-6), Rigid.minus(m, p), 1e-12);
+        assertTrue(Scenario.named("outside: the tracker's distance taken again at every beam break, sigma 0.005 mm").trial(3).truthJson()
+                .contains("beam_break_offset_um"));
+    }
+
+    @Test
     void azimuthEncoderError_turnsThePointAboutTheTrackersOwnVerticalAxis_byHand() {
         double a1 = 4 * ARCSEC, a2 = 3 * ARCSEC;
         var t = new WorldRobot.Tracker(0, 1, 0, 0, new int[] {1, 2}, new double[] {a1, a2}, new double[] {Math.PI / 2, 0},

@@ -71,6 +71,8 @@ public final class Effect {
         ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
+        RANGE_STEP("range-step", "The measuring instrument's distances that jumped at one time during the campaign (its distance "
+                + "taken again after the beam was broken), not the robot, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
         INSTRUMENT_SCALE("instrument-scale", "The measuring instrument's distances scaling with time or temperature (its air "
                 + "compensation), not the robot, of no known family"),
@@ -687,6 +689,22 @@ public final class Effect {
     }
 
     /**
+     * The instrument's distance reading jumped at time {@code tauS}: a laser tracker's interferometer
+     * counts only changes of the distance, and when the beam is broken it takes the distance again
+     * from its absolute distance meter, whose error then stays in every distance until the next
+     * break (Muralikrishnan et al., Precision Engineering 44 (2016) 13, the IFM and the ADM).
+     * Δp = −d·û before the jump, û the line of sight from the instrument to the point, 0 after it and
+     * at an unknown time (the state the campaign ended in). Computed through {@code instrumentTbase}
+     * (the geometric fit's), as {@link #instrumentReading}.
+     */
+    public static Effect rangeStep(Pose instrumentTbase, double tauS) {
+        if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
+        Effect e = new Effect(Kind.RANGE_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null, 1);
+        e.instrument = instrumentTbase;
+        return e;
+    }
+
+    /**
      * An error of the instrument's {@code sight} reading: a cubic B-spline of {@code n} functions of
      * that reading over [lo, hi] (m, or rad about {@code azimuthRef} for the azimuth), moving the
      * measured point along the line of sight (distance) or across it by the distance times the
@@ -724,9 +742,15 @@ public final class Effect {
      * temperature contributes nothing.
      */
     public static Effect instrumentScale(Along along, Pose instrumentTbase, double lo, double hi) {
+        return instrumentScale(along, instrumentTbase, lo, hi, POINT_BASIS);
+    }
+
+    /** {@link #instrumentScale(Along, Pose, double, double)} with {@code n} functions of the reading (a campaign long enough to follow the air's changes). */
+    public static Effect instrumentScale(Along along, Pose instrumentTbase, double lo, double hi, int n) {
         if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a distance scale drifts with time or temperature");
         if (!(hi > lo)) throw new IllegalArgumentException("instrument scale range " + lo + ".." + hi);
-        Effect e = new Effect(Kind.INSTRUMENT_SCALE, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, POINT_BASIS);
+        if (n < POINT_BASIS) throw new IllegalArgumentException("instrument scale with " + n + " functions");
+        Effect e = new Effect(Kind.INSTRUMENT_SCALE, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
         e.along = along;
         e.instrument = instrumentTbase;
         return e;
@@ -1293,7 +1317,7 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.RANGE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 
@@ -1304,7 +1328,9 @@ public final class Effect {
     }
 
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
-    public boolean ofInstrument() { return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.TARGET_INCIDENCE; }
+    public boolean ofInstrument() {
+        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.RANGE_STEP || kind == Kind.TARGET_INCIDENCE;
+    }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
     public int basisCount() { return nBasis; }
@@ -1461,7 +1487,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
                  LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
@@ -1554,6 +1580,7 @@ public final class Effect {
             case INSTRUMENT_SCALE -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
+            case RANGE_STEP -> out.add("d");
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); out.add("slide"); }
             case AXIS_WOBBLE -> {
                 for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
@@ -1607,7 +1634,7 @@ public final class Effect {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
-            case POINT_SMOOTH, TARGET_STEP, TOOL_SAG, TARGET_INCIDENCE -> "m";
+            case POINT_SMOOTH, TARGET_STEP, RANGE_STEP, TOOL_SAG, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
@@ -1666,13 +1693,14 @@ public final class Effect {
                     preloadWidth > 0 ? String.format(Locale.ROOT, " ± %.0f %%", 100 * preloadWidth) : "", gravity.fromLengths() ? ", masses from the link lengths"
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
-            case POINT_SMOOTH, BASE_TURN, INSTRUMENT_SCALE -> kind.json + " (" + along.words + ")";
+            case POINT_SMOOTH, BASE_TURN -> kind.json + " (" + along.words + ")";
+            case INSTRUMENT_SCALE -> kind.json + " (" + along.words + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
-            case TARGET_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case TARGET_STEP, RANGE_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
                     : squareFoot() ? String.format(Locale.ROOT, " (square foot, edges at %.0f deg, above %.0f N·m)",
                     (Math.toDegrees(tiltAzimuth) % 90 + 90) % 90, tiltHold)
@@ -1796,7 +1824,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
                  LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
@@ -1858,6 +1886,16 @@ public final class Effect {
                 if (!(c.timeS() <= tauS)) break;
                 Pose f = model.flange(q);
                 for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
+            }
+            case RANGE_STEP -> {
+                // before the jump every distance read d less than at the end: −d along the line of sight, in base axes
+                // R_ibᵀ p_i/|p_i| with p_i = R_ib p + t_ib (its change with the point itself, d/|p_i|, is left out: 10⁻⁵ of d)
+                if (!(c.timeS() <= tauS)) break;
+                double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
+                double rho = Math.sqrt(pi[0] * pi[0] + pi[1] * pi[1] + pi[2] * pi[2]);
+                if (!(rho > 0)) break;
+                for (int a = 0; a < 3; a++)
+                    g3[a * k] = -(instrument.rot(0, a) * pi[0] + instrument.rot(1, a) * pi[1] + instrument.rot(2, a) * pi[2]) / rho;
             }
             case BASE_TURN -> {
                 double[] b = readingBasis(c);
@@ -2167,6 +2205,7 @@ public final class Effect {
             case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
+            case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
             case AXIS_WOBBLE -> { }
             case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
             case TARGET_INCIDENCE -> {
@@ -2212,7 +2251,8 @@ public final class Effect {
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, TOOL_SAG, TARGET_INCIDENCE -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, TOOL_SAG,
+                 TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -2307,12 +2347,15 @@ public final class Effect {
             case INSTRUMENT_SCALE -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
                     throw new InputException(file, 0, 0, "effects.instrument-scale.parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
-                yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file));
+                int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("s\\d+")).count();
+                if (n < POINT_BASIS) throw new InputException(file, 0, 0, "effects.instrument-scale.parameters_si", "needs s1..sN, N >= " + POINT_BASIS);
+                yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
             }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case RANGE_STEP -> rangeStep(instrumentOf(d, file), require(d, "time_s_step", file));
             case LINK_SAG -> {
                 if (js.get(0) < 2 || js.get(0) > 3)
                     throw new InputException(file, 0, 0, "effects.joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));

@@ -40,7 +40,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -95,9 +95,10 @@ final class Locator {
         double[][] x; // per end and pose, the variable (plots)
         double[][] endS; // with two ends: each end's own columns (m x k, unprojected), else null
         double[][][] rf; // a move of the target on the flange: each end's and pose's flange rotation (row-major)
+        double[] sens;   // RANGE_STEP: each residual row's change for a unit change of the instrument's distance
         Angle angle;     // a drive's error as a function of its joint angle: the regressor (ANGLE_PERIODIC, ANGLE_SMOOTH)
         Effect.Sight sight;                      // SIGHT: the instrument's reading
-        org.robopro.kinematics.Pose instrument;  // SIGHT: instrumentTbase at the scanned fit
+        org.robopro.kinematics.Pose instrument;  // SIGHT, RANGE_STEP: instrumentTbase at the scanned fit
         double azimuthRef;                       // SIGHT: the azimuth the readings are taken about
         double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
@@ -592,9 +593,10 @@ final class Locator {
      * functions of their own readings, which over a robot's workspace seen from metres away are
      * neither a joint's angle nor the point's reach; without these shapes such an error was named a
      * transmission error of joint 1. Points only (3 rows each), one pose per row. With {@code cycles},
-     * also a distance meter's cyclic error at every period ({@link #rangeCycles}); the stepwise search's
-     * re-scans leave those out (such an error shows in the geometric fit's residuals already, and its
-     * hundred-odd probes are most of the instrument's share of a scan).
+     * also a distance meter's cyclic error at every period ({@link #rangeCycles}) and, with a time
+     * column, the distances jumping at each of the scan's time places ({@link #rangeStep}); the
+     * stepwise search's re-scans leave those out (such an error shows in the geometric fit's residuals
+     * already, and its hundred-odd probes are most of the instrument's share of a scan).
      */
     static List<Probe> sightProbes(Diagnoser.Tester t, boolean cycles) {
         List<Probe> out = new ArrayList<>();
@@ -663,7 +665,11 @@ final class Locator {
                 pr.xLabel = "the instrument's " + sight.words + " reading" + (range ? " (m)" : " (deg)");
                 out.add(pr);
             }
-            if (sight == Effect.Sight.RANGE && cycles) out.addAll(rangeCycles(t, inst, u, sens, x, l0, h0));
+            if (sight == Effect.Sight.RANGE && cycles) {
+                out.addAll(rangeCycles(t, inst, u, sens, x, l0, h0));
+                double[][] time = column(t, c -> c.timeS());
+                if (varies(time, 1)) for (double tau : stepPlaces(time[0], STEP_PLACES)) out.add(rangeStep(t, inst, sens, tau, time));
+            }
         }
         return out;
     }
@@ -783,6 +789,25 @@ final class Locator {
         return tp;
     }
 
+    /**
+     * The instrument's distances jumped at tau ({@link Effect#rangeStep}): −1 along the line of sight
+     * before it, {@code sens} each residual row's change for a unit change of the distance.
+     */
+    private static Probe rangeStep(Diagnoser.Tester t, org.robopro.kinematics.Pose inst, double[] sens, double tau, double[][] time) {
+        double[] s = new double[t.m];
+        for (int row = 0; row < t.m; row++) if (time[0][row / t.rpp] <= tau) s[row] = -sens[row];
+        Probe p = finish(t, s, 1);
+        p.var = Var.RANGE_STEP;
+        p.instrument = inst;
+        p.sens = sens;
+        p.lo = tau;
+        p.variable = "time";
+        p.shape = String.format(Locale.ROOT, "the instrument's distances jump at about %.0f s", tau);
+        p.x = time;
+        p.xLabel = "time since the start (s)";
+        return p;
+    }
+
     /** Drive j's zero jumps at tau. */
     private static Probe zeroStep(Diagnoser.Tester t, int j, double tau, double[][] time) {
         Probe p = drive(t, j, 1, (e, pi, g) -> g[0] = time[e][pi] > tau ? 1 : 0);
@@ -802,13 +827,14 @@ final class Locator {
      * to the pose: the poses between a quantile and the true place would be mispredicted).
      */
     static List<Probe> finerSteps(Diagnoser.Tester t, Probe p) {
-        if (p.var != Var.ANGLE_STEP && p.var != Var.TIME_STEP && p.var != Var.TARGET_STEP) return List.of();
+        if (p.var != Var.ANGLE_STEP && p.var != Var.TIME_STEP && p.var != Var.TARGET_STEP && p.var != Var.RANGE_STEP) return List.of();
         double[] v = p.var == Var.ANGLE_STEP ? t.endRows.get(0).stream().mapToDouble(r -> r.q(p.joint)).toArray() : p.x[0];
         List<Probe> out = new ArrayList<>();
         for (double place : placesNear(v, p.lo))
             out.add(switch (p.var) {
                 case ANGLE_STEP -> angleStep(t, p.joint, place, p.x);
                 case TARGET_STEP -> targetStep(t, place, p.x, p.rf);
+                case RANGE_STEP -> rangeStep(t, p.instrument, p.sens, place, p.x);
                 default -> zeroStep(t, p.joint, place, p.x);
             });
         return out;

@@ -199,6 +199,11 @@ final class Words {
                     + "target knocked in its nest, a holder that slipped); the poses before it are modelled with the point where it "
                     + "was then, but check the target's mounting and re-measure a few poses from before that time.",
                     Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * 1e3, v[0] * 1e3, v[1] * 1e3, v[2] * 1e3, e.tauS());
+            case RANGE_STEP -> String.format(Locale.ROOT, "Every distance the instrument read changed by %.4f mm at about %.0f s into "
+                    + "the campaign, along its line of sight, and none of the known effects explains it (a laser tracker takes the "
+                    + "distance again from its absolute distance meter after its beam is broken, and that meter's error stays until "
+                    + "the next break); it is the instrument, not the robot: keep the beam clear of the arm, or measure a fixed "
+                    + "reference point after each break and before the next pose.", v[0] * 1e3, e.tauS());
             case ZERO_STEP -> String.format(Locale.ROOT, "Joint %d's zero jumped by %.4f deg at about %.0f s into the campaign "
                     + "and none of the known effects explains it (an encoder slip, a collision, a re-synchronisation); the poses "
                     + "before and after it do not belong to one robot: re-measure after checking the joint's zero.", e.joint() + 1,
