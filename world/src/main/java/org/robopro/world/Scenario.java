@@ -327,8 +327,7 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var t = thermal(n, r, true); return w -> w.withThermal(t); }, same()));
         c.add(s("instrument drift with time", "thermal-growth", "irb2000", Expected.named(claim(THERMAL_GROWTH)),
                 (n, r) -> {
-                    double[] d = Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 0.5e-6, 1e-6) / 60); // 0.5-1 µm per minute
-                    var t = new WorldRobot.Thermal(20, new double[n.dof() + 1], new double[3], d);
+                    var t = driftPerMinute(n, r, 0.5e-6, 1e-6);
                     return w -> w.withThermal(t);
                 }, same()));
         // gravity elasticity
@@ -543,8 +542,7 @@ public record Scenario(String name, String family, String robot, Expected expect
                 Expected.named(claim(THERMAL_GROWTH)),
                 (n, r) -> {
                     // a tracker settling on its stand as it warms: 1-2 µm per minute; the arm crossing the beam now and then
-                    double[] d = Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 1e-6, 2e-6) / 60);
-                    var th = new WorldRobot.Thermal(20, new double[n.dof() + 1], new double[3], d);
+                    var th = driftPerMinute(n, r, 1e-6, 2e-6);
                     var t = beamBreaks(tracker(r, false, false, false), 600, 1500, r);
                     return w -> w.withThermal(th).withTracker(t);
                 }, p -> p.withSigma(0.005e-3)));
@@ -645,6 +643,12 @@ public record Scenario(String name, String family, String robot, Expected expect
         double[] amp = azimuth ? new double[] {uniform(r, 2, 5) * arcsec, uniform(r, 2, 5) * arcsec} : new double[0];
         double[] aph = azimuth ? new double[] {2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble()} : new double[0];
         return new WorldRobot.Tracker(a, period, ph, sc, k, amp, aph, new int[0], new double[0], new double[0]);
+    }
+
+    /** The instrument drifting in a random direction by {@code lo}–{@code hi} m per minute, nothing else warming. */
+    static WorldRobot.Thermal driftPerMinute(RobotDescription n, Random r, double lo, double hi) {
+        double[] d = Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, lo, hi) / 60);
+        return new WorldRobot.Thermal(20, new double[n.dof() + 1], new double[3], d);
     }
 
     /**

@@ -2846,8 +2846,16 @@ public final class Diagnoser {
                 if (tilt != null) rivals.putIfAbsent(tilt.label(), tilt);
                 for (Effect s : selected) rivals.remove(s.label());
                 // a fallback that holds part of the family's shape stands against it only for what it finds beside it
-                int at_k = k;
-                rivals.values().removeIf(f -> f.holdsPartOf(e) && (!significantBeside(at, f, w) || mostlyFamily(at, at_k, e, f, w)));
+                // and, when the family explains nearly all it does, what it finds beside it is another structure, left to be located
+                Set<String> besideFamily = new HashSet<>();
+                int fam = k;
+                rivals.values().removeIf(f -> {
+                    if (!f.holdsPartOf(e)) return false;
+                    if (!significantBeside(at, f, w)) return true;
+                    if (!mostlyFamily(at, fam, e, f, w)) return false;
+                    besideFamily.add(f.label());
+                    return true;
+                });
                 if (e.kind() == Effect.Kind.DRIFT)
                     rivals.values().removeIf(f -> f.kind() == Effect.Kind.POINT_SMOOTH
                             && (f.along() == Effect.Along.TIME || f.along() == Effect.Along.TEMPERATURE));
@@ -2901,9 +2909,7 @@ public final class Diagnoser {
                     double thr = w.o.alpha() / Math.max(1, own.size());
                     for (Effect f : own) {
                         if (selected.stream().anyMatch(s -> s.label().equals(f.label()))) continue;
-                        // what a fallback holding the family's shape finds beside it, when the family holds nearly all it explains,
-                        // is another structure: it is left to be located
-                        if (f.holdsPartOf(e) && mostlyFamily(at, k, e, f, w)) continue;
+                        if (besideFamily.contains(f.label())) continue;
                         Candidate c = at.test(f, w.conditions);
                         if (c.keptColumns == 0 || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
                         why = String.format(Locale.ROOT, "%s is not claimed: with it fitted, %s still finds significant structure "
@@ -3060,7 +3066,6 @@ public final class Diagnoser {
         steps.remove(k);
     }
 
-    /** Takes selected effect {@code k} out ({@link #drop}) and refits the rest from {@code fit}'s values. */
     /**
      * A smooth scale of the instrument's distances with time (the air along the beam) that predicts
      * left-out poses as well as jump {@code k} of the distances, or better, in its place (or, when
@@ -3077,12 +3082,8 @@ public final class Diagnoser {
         Tester at = w.tester(fit);
         double own = at.pressFull(), best = own;
         Effect out = null;
-        for (Effect s : selected)
-            if (s.kind() == Effect.Kind.INSTRUMENT_SCALE && s.along() == Effect.Along.TIME) {
-                double without = at.pressReplacing(k, null, null);
-                if (without <= best) { best = without; out = s; }
-            }
-        if (out != null) return out;
+        for (Effect s : selected) if (s.kind() == Effect.Kind.INSTRUMENT_SCALE && s.along() == Effect.Along.TIME) out = s;
+        if (out != null) return at.pressReplacing(k, null, null) <= own ? out : null;
         List<Effect> rivals = new ArrayList<>();
         for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
             if (nb == Effect.POINT_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
@@ -3102,6 +3103,7 @@ public final class Diagnoser {
      */
     static final int[] INSTRUMENT_SCALE_RESOLUTIONS = {Effect.POINT_BASIS, 7};
 
+    /** Takes selected effect {@code k} out ({@link #drop}) and refits the rest from {@code fit}'s values. */
     private static Fit dropAndRefit(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                     int k) {
         Fit without = w.refitWithout(fit, selected, absorbedCols, k);
@@ -3464,7 +3466,7 @@ public final class Diagnoser {
                 if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
                     out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
                             : Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
-        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP
+        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.RANGE_STEP
                 || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
             Locator.Var var = angle ? Locator.Var.ANGLE_STEP
@@ -3472,10 +3474,8 @@ public final class Diagnoser {
             double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
                     : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).toArray();
             // the midpoints between the poses within a twentieth of the campaign (of the joint's poses) either side
-            for (double tau : Locator.placesNear(t, angle ? e.rangeLo() : e.tauS())) out.add(stepEffect(var, e.joint(), tau, w.model));
-        } else if (e.kind() == Effect.Kind.RANGE_STEP) {
-            double[] t = w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).toArray();
-            for (double tau : Locator.placesNear(t, e.tauS())) out.add(Effect.rangeStep(e.instrumentPose(), tau));
+            for (double tau : Locator.placesNear(t, angle ? e.rangeLo() : e.tauS()))
+                out.add(e.kind() == Effect.Kind.RANGE_STEP ? Effect.rangeStep(e.instrumentPose(), tau) : stepEffect(var, e.joint(), tau, w.model));
         }
         return out;
     }
@@ -4288,7 +4288,7 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         // the splines, and the few periods of a distance meter's cycle the residual holds most of
         List<Effect> cycles = new ArrayList<>();
-        for (Locator.Probe p : Locator.sightProbes(t, true)) if (p.var == Locator.Var.SIGHT) (p.cycle > 0 ? cycles : out).add(sightEffect(p));
+        for (Locator.Probe p : Locator.sightProbes(t, true, false)) (p.cycle > 0 ? cycles : out).add(sightEffect(p));
         Map<Effect, Double> drop = new java.util.IdentityHashMap<>();
         for (Effect c : cycles) {
             Candidate cd = t.test(c, conds);
@@ -4302,14 +4302,6 @@ public final class Diagnoser {
     /** The periods of a distance meter's cycle put in a family's place: those that take most of what is left. */
     static final int INSTRUMENT_CYCLE_RIVALS = 3;
 
-    /**
-     * Whether alias {@code a} has more parameters than the selected {@code e} it would replace and finds
-     * nothing significant beside it (its partial F-test on the model holding {@code e}, at the
-     * family-wise α). Its lower leave-one-pose-out error is then the extra parameters' share of the
-     * noise, not a shape {@code e} leaves: over a joint's short range a few harmonics of its angle
-     * follow a scale error's ramp as closely as the ramp itself, and the simpler form stays.
-     */
-    /** Whether {@code f}, tested beside the model fitted in {@code at}, is significant at the family-wise α. */
     /**
      * Share of what a fallback holding part of a family's shape explains (its lowering of the
      * leave-one-pose-out error, in the family's place) that the family explains alone, at or above
@@ -4327,6 +4319,7 @@ public final class Diagnoser {
         return without > rival && share >= FAMILY_SHARE;
     }
 
+    /** Whether {@code f}, tested beside the model fitted in {@code at}, is significant at the family-wise α. */
     static boolean significantBeside(Tester at, Effect f, Work w) {
         Candidate c = at.test(f, w.conditions);
         boolean yes = c.keptColumns > 0 && c.p < w.o.alpha();
@@ -4334,6 +4327,13 @@ public final class Diagnoser {
         return yes;
     }
 
+    /**
+     * Whether alias {@code a} has more parameters than the selected {@code e} it would replace and finds
+     * nothing significant beside it (its partial F-test on the model holding {@code e}, at the
+     * family-wise α). Its lower leave-one-pose-out error is then the extra parameters' share of the
+     * noise, not a shape {@code e} leaves: over a joint's short range a few harmonics of its angle
+     * follow a scale error's ramp as closely as the ramp itself, and the simpler form stays.
+     */
     static boolean richerWithoutCause(Tester at, Effect e, Effect a, Work w) {
         // like a richer form, a fallback that holds part of the named form's shape takes its place only for what it finds beside it
         if (a.size() <= e.size() || a.isFallback() && !a.holdsPartOf(e)) return false;

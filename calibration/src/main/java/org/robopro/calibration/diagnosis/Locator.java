@@ -320,7 +320,7 @@ final class Locator {
         out.add(toolGravity(t));
         out.addAll(linkBends(t));
         out.addAll(linkTwist(t));
-        out.addAll(sightProbes(t, steps));
+        out.addAll(sightProbes(t, steps, steps));
         // the reflector's error shows in the geometric fit's residuals already; its 32 columns are left out of the stepwise re-scans
         Probe incidence = steps ? targetSight(t) : null;
         if (incidence != null) out.add(incidence);
@@ -593,12 +593,12 @@ final class Locator {
      * functions of their own readings, which over a robot's workspace seen from metres away are
      * neither a joint's angle nor the point's reach; without these shapes such an error was named a
      * transmission error of joint 1. Points only (3 rows each), one pose per row. With {@code cycles},
-     * also a distance meter's cyclic error at every period ({@link #rangeCycles}) and, with a time
-     * column, the distances jumping at each of the scan's time places ({@link #rangeStep}); the
-     * stepwise search's re-scans leave those out (such an error shows in the geometric fit's residuals
-     * already, and its hundred-odd probes are most of the instrument's share of a scan).
+     * also a distance meter's cyclic error at every period ({@link #rangeCycles}); with {@code jumps}
+     * and a time column, the distances jumping at each of the scan's time places ({@link #rangeStep}).
+     * The stepwise search's re-scans leave both out (such errors show in the geometric fit's residuals
+     * already, and the cycle's hundred-odd probes are most of the instrument's share of a scan).
      */
-    static List<Probe> sightProbes(Diagnoser.Tester t, boolean cycles) {
+    static List<Probe> sightProbes(Diagnoser.Tester t, boolean cycles, boolean jumps) {
         List<Probe> out = new ArrayList<>();
         if (!t.w.instrument || t.ends != 1 || t.dim != 3) return out;
         int poses = t.w.rows.size(), pts = t.perPose;
@@ -665,8 +665,8 @@ final class Locator {
                 pr.xLabel = "the instrument's " + sight.words + " reading" + (range ? " (m)" : " (deg)");
                 out.add(pr);
             }
-            if (sight == Effect.Sight.RANGE && cycles) {
-                out.addAll(rangeCycles(t, inst, u, sens, x, l0, h0));
+            if (sight == Effect.Sight.RANGE && cycles) out.addAll(rangeCycles(t, inst, u, sens, x, l0, h0));
+            if (sight == Effect.Sight.RANGE && jumps) {
                 double[][] time = column(t, c -> c.timeS());
                 if (varies(time, 1)) for (double tau : stepPlaces(time[0], STEP_PLACES)) out.add(rangeStep(t, inst, sens, tau, time));
             }

@@ -6,11 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.robopro.calibration.measurement.Measurement;
-import org.robopro.calibration.measurement.MeasurementReader;
-import org.robopro.calibration.measurement.MeasurementSet;
-import org.robopro.models.RobotDescription;
-import org.robopro.models.RobotLibrary;
+import org.robopro.calibration.WorldCampaigns;
 import org.robopro.world.Scenario;
 
 /**
@@ -24,10 +20,8 @@ import org.robopro.world.Scenario;
  */
 class FamilyShareTest {
     private static Diagnosis diagnose(String scenario, long seed) {
-        Scenario.Trial t = Scenario.named(scenario).trial(seed);
-        RobotDescription robot = RobotLibrary.shipped(t.scenario().robot());
-        MeasurementSet all = MeasurementReader.parse("w.csv", t.campaign().text(), robot.joints().stream().map(j -> j.type()).toList());
-        return Diagnoser.diagnose(robot, all.split(Measurement.Split.TRAIN), all.split(Measurement.Split.VALIDATE));
+        WorldCampaigns.Sim s = WorldCampaigns.of(Scenario.named(scenario).trial(seed));
+        return Diagnoser.diagnose(s.nominal(), s.train(), s.validation());
     }
 
     private static List<Effect> claimed(Diagnosis d) {

@@ -9,12 +9,10 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.WorldCampaigns;
 import org.robopro.calibration.measurement.Measurement;
-import org.robopro.calibration.measurement.MeasurementReader;
-import org.robopro.calibration.measurement.MeasurementSet;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
-import org.robopro.models.RobotDescription;
 import org.robopro.models.RobotFile;
 import org.robopro.models.RobotLibrary;
 import org.robopro.models.Vec3;
@@ -30,17 +28,15 @@ import org.robopro.world.Scenario;
 class RangeStepTest {
     @Test
     void beamBreaks_locatedAtTheWorldsBreaks_nothingNamed() {
-        Scenario.Trial t = Scenario.named("outside: the tracker's distance taken again at every beam break, sigma 0.005 mm").trial(20261126);
-        RobotDescription robot = RobotLibrary.shipped(t.scenario().robot());
-        MeasurementSet all = MeasurementReader.parse("w.csv", t.campaign().text(), robot.joints().stream().map(j -> j.type()).toList());
-        MeasurementSet train = all.split(Measurement.Split.TRAIN);
-        Diagnosis d = Diagnoser.diagnose(robot, train, all.split(Measurement.Split.VALIDATE));
+        WorldCampaigns.Sim s = WorldCampaigns.of(
+                Scenario.named("outside: the tracker's distance taken again at every beam break, sigma 0.005 mm").trial(20261126));
+        Diagnosis d = Diagnoser.diagnose(s.nominal(), s.train(), s.validation());
         assertTrue(d.effects().stream().allMatch(f -> f.effect().isFallback()), "nothing may be named: " + d.effects());
         List<Effect> steps = d.effects().stream().map(f -> f.effect()).filter(e -> e.kind() == Effect.Kind.RANGE_STEP).toList();
         assertFalse(steps.isEmpty(), d.effects().toString());
         // each step between the training poses either side of one of the world's breaks (the world's own record)
-        double[] breaks = t.world().tracker().resetS();
-        double[] times = train.rows().stream().mapToDouble(Measurement::timeS).sorted().toArray();
+        double[] breaks = s.world().tracker().resetS();
+        double[] times = s.train().rows().stream().mapToDouble(Measurement::timeS).sorted().toArray();
         for (Effect e : steps) {
             int i = 0;
             while (i < times.length && times[i] <= e.tauS()) i++;
@@ -58,10 +54,8 @@ class RangeStepTest {
      */
     @Test
     void airWarming_isNoJump() {
-        Scenario.Trial t = Scenario.named("outside: the tracker's air compensation drifts as the hall warms").trial(20261125);
-        RobotDescription robot = RobotLibrary.shipped(t.scenario().robot());
-        MeasurementSet all = MeasurementReader.parse("w.csv", t.campaign().text(), robot.joints().stream().map(j -> j.type()).toList());
-        Diagnosis d = Diagnoser.diagnose(robot, all.split(Measurement.Split.TRAIN), all.split(Measurement.Split.VALIDATE));
+        WorldCampaigns.Sim s = WorldCampaigns.of(Scenario.named("outside: the tracker's air compensation drifts as the hall warms").trial(20261125));
+        Diagnosis d = Diagnoser.diagnose(s.nominal(), s.train(), s.validation());
         assertTrue(d.effects().stream().noneMatch(f -> f.effect().kind() == Effect.Kind.RANGE_STEP), d.effects() + " " + d.notes());
         assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.INSTRUMENT_SCALE), d.effects().toString());
         assertTrue(d.effects().stream().allMatch(f -> f.effect().isFallback()), d.effects().toString());
