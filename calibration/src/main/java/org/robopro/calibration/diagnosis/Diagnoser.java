@@ -1799,6 +1799,17 @@ public final class Diagnoser {
                     String words = lagWords(w.tester(fit), k, selected.get(k), model, t0C, lag, w.conditions);
                     if (words != null) notes.add(words);
                 }
+        // A gear's error of a few harmonics named on a joint sampled over less than a turn: say why the data tell it.
+        for (int k = 0; k < selected.size(); k++) {
+            Effect e = selected.get(k);
+            if (!periodicityUntested(e, rows)) continue;
+            int turns = turningPoints(e, fit.effectValues(k), rows);
+            if (turns >= REPEAT_TURNS)
+                notes.add(String.format(Locale.ROOT, "%s is named though joint %d was sampled over %.0f deg, less than a turn: its error "
+                        + "turns %d times within that range (maxima and minima), and a torque that follows the angle without repeating "
+                        + "(the arm's weight, a balancer's spring, a cable's pull) turns it at most twice; sampling the joint over a whole turn would "
+                        + "show the error repeat", e.label(), e.joint() + 1, Math.toDegrees(spans(rows)[e.joint()]), turns));
+        }
         timer.mark("aliases");
         if (w.sixD && Double.isNaN(rotOverPos) && !selected.isEmpty()) {
             double[] sd = w.rowSigmas(fit);
@@ -2871,7 +2882,8 @@ public final class Diagnoser {
                 double pressWithout = at.pressReplacing(k, null, null);
                 if (LOG.isDebugEnabled())
                     LOG.debug(String.format(Locale.ROOT, "claim check %s: press own %.1f without %.1f best rival %s %.1f", e.label(),
-                            pressOwn, pressWithout, best == null ? "-" : best.label(), bestPress));
+                            pressOwn, pressWithout, best == null ? "-" : best.label(), bestPress)
+                            + (e.kind() == Effect.Kind.PERIODIC ? ", turning points " + turningPoints(e, fit.effectValues(k), rows) : ""));
                 if (!(pressOwn < pressWithout)) {
                     why = String.format(Locale.ROOT, "%s is not claimed: with the rest of the model it does not lower the "
                             + "leave-one-pose-out error (%.1f against %.1f without it)", e.label(), pressOwn, pressWithout);
@@ -2899,6 +2911,7 @@ public final class Diagnoser {
                             ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
                             + "be told apart on these poses: measure with two or three payloads to tell" : "");
                 else if (best != null && best.isFallback() && periodicityUntested(e, rows)
+                        && turningPoints(e, fit.effectValues(k), rows) < REPEAT_TURNS
                         && (pressOwn > bestPress * (1 - ALIAS_MARGIN) || tellsApart(at, k, best, w) < TELL_Z))
                     why = String.format(Locale.ROOT, "%s is not claimed: %s, a shape of no known physics, predicts left-out poses "
                             + "nearly as well (leave-one-pose-out error %.1f against %.1f: to be told apart, %.0f %% lower and by "
@@ -3145,6 +3158,55 @@ public final class Diagnoser {
         if (e.kind() != Effect.Kind.PERIODIC || e.stages().length > 0 || rows.isEmpty()) return false;
         for (int h : e.harmonics()) if (h > LOW_HARMONIC) return false;
         return spans(rows)[e.joint()] < TURN_SHARE * 2 * Math.PI;
+    }
+
+    /**
+     * Turning points a fitted error of one joint's angle must show within the sampled range before
+     * it is taken as a gear's repeating error though the range holds less than a turn. The torques
+     * that follow one joint's angle without repeating turn the error at most twice over a joint's
+     * range: an arm's weight about a joint, sin(q + φ) summed over links, is one sinusoid of q with
+     * one period per turn (two turning points in 300°); a spring or gas-strut balancer's moment,
+     * F(q)·r(q) with the stroke a smooth function of q, rises to one maximum and falls (Kolarski et
+     * al., "Dynamic balancing of robots", Robotics and Autonomous Systems 11 (1993) 215; Arakelian,
+     * "Gravity compensation in robotics", Advanced Robotics 30 (2016) 79); a cable or hose winding
+     * with the joint pulls back monotonically. An error with three maxima and minima within the
+     * range is none of them.
+     */
+    static final int REPEAT_TURNS = 3;
+
+    /**
+     * The turning points of transmission error {@code e}, with fitted sine and cosine amplitudes
+     * {@code v}, over the range of its joint's angle the poses sample: extrema whose rise or fall to
+     * the next one is at least a fifth of the curve's whole range (a ripple smaller than that is no
+     * turn of the shape).
+     */
+    static int turningPoints(Effect e, double[] v, List<Measurement> rows) {
+        int j = e.joint();
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement m : rows) { lo = Math.min(lo, m.q(j)); hi = Math.max(hi, m.q(j)); }
+        double[] h = e.orders();
+        int n = 2001;
+        double[] y = new double[n];
+        double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            double q = lo + (hi - lo) * i / (n - 1), s = 0;
+            for (int c = 0; c < h.length; c++) s += v[2 * c] * Math.sin(h[c] * q) + v[2 * c + 1] * Math.cos(h[c] * q);
+            y[i] = s;
+            min = Math.min(min, s);
+            max = Math.max(max, s);
+        }
+        double band = (max - min) / 5;
+        if (!(band > 0)) return 0;
+        // zig-zag: a turn counts once the curve has gone back from its running extreme by the band
+        int turns = 0, dir = 0;
+        double ext = y[0];
+        for (int i = 1; i < n; i++) {
+            if (dir == 0) {
+                if (Math.abs(y[i] - y[0]) >= band) { dir = y[i] > y[0] ? 1 : -1; ext = y[i]; }
+            } else if (dir * (y[i] - ext) > 0) ext = y[i];
+            else if (dir * (ext - y[i]) >= band) { turns++; dir = -dir; ext = y[i]; }
+        }
+        return turns;
     }
 
     /**
