@@ -302,6 +302,57 @@ public sealed interface JointError {
     }
 
     /**
+     * An error of the motor's angle sensor, seen at the joint: the servo holds the motor where its
+     * resolver reads the commanded angle N·q, so the motor stands off by the sensor's error δ_m and
+     * the output (N turns of the motor per output turn) by −δ_m/N. A resolver's error repeats with
+     * the motor's angle, once per turn from the rotor's eccentricity and twice per turn from the
+     * windings' and the excitation's imbalance (Hanselman, "Resolver signal requirements for high
+     * accuracy resolver-to-digital conversion", IEEE Trans. Industrial Electronics 37 (1990) 556):
+     * δ_m = Σ_h A_h sin(h N q + φ_h), h = 1, 2, ... So the joint's error repeats N and 2N times per
+     * output turn, at a gear ratio N that need not be whole.
+     */
+    record MotorSensor(int joint, double ratio, double[] amplitude, double[] phase) implements JointError {
+        public MotorSensor {
+            amplitude = amplitude.clone();
+            phase = phase.clone();
+            if (amplitude.length != phase.length) throw new IllegalArgumentException("amplitudes and phases differ in length");
+        }
+
+        @Override public double[] amplitude() { return amplitude.clone(); }
+        @Override public double[] phase() { return phase.clone(); }
+
+        @Override public double delta(double[] q, Moment m) {
+            double motor = ratio * q[joint], s = 0;
+            for (int h = 0; h < amplitude.length; h++) s += amplitude[h] * Math.sin((h + 1) * motor + phase[h]);
+            return -s / ratio;
+        }
+    }
+
+    /**
+     * A joint read as whole counts of its motor's encoder: the controller reports the count, and the
+     * joint stands anywhere within it, so the output is off by a uniform error of one count
+     * ({@code countRad} at the joint: 2π over the counts per motor turn and the gear ratio) that no
+     * recorded variable predicts (quantization noise: Widrow &amp; Kollár, Quantization Noise,
+     * Cambridge 2008, ch. 4; Bennett, Bell System Technical Journal 27 (1948) 446). Where within the
+     * count a pose falls is drawn from the pose's angles by a hash, so a campaign is the same on every
+     * run.
+     */
+    record Counts(int joint, double countRad) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            long h = joint * 0x9E3779B97F4A7C15L;
+            for (double v : q) h = mix(h ^ Double.doubleToLongBits(v));
+            return countRad * ((h >>> 11) * 0x1.0p-53 - 0.5);
+        }
+
+        /** SplitMix64's finaliser (Steele, Lea &amp; Flood, OOPSLA 2014). */
+        private static long mix(long z) {
+            z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+            z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+            return z ^ (z >>> 31);
+        }
+    }
+
+    /**
      * Outside every catalogue family: an absolute encoder whose reading jumps by {@code step} where
      * the joint passes {@code at} (a code-track defect, a misread bit): the output is off by the
      * step wherever q_joint is beyond that angle, whatever the time or the direction.

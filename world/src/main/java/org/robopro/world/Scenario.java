@@ -381,6 +381,28 @@ public record Scenario(String name, String family, String robot, Expected expect
                 return add(new JointError.LinkageRod(2, 1, ground, crank, crank + signed(r, 0, 20e-6), ground + signed(r, 40e-6, 80e-6),
                         Math.toRadians(uniform(r, 85, 95))));
             }, p -> p.withLinkageRange(true)));
+        // a motor's resolver 8-20 arc-minutes off once per motor turn, 0.3-0.7 of that twice, behind a gear ratio of 60-110
+        // (whole or not); alone, and beside a gear-ratio error of another joint, whose residual hides the motor's lines at first
+        c.add(s("outside: motor resolver error of j3 at its gear ratio", "outside", "irb2000", Expected.outside(),
+                (n, r) -> add(motorSensor(2, r)), same()));
+        c.add(s("motor resolver error of j3 at its gear ratio (outside) + gear-ratio error j1", "pair", "irb2000",
+                Expected.named(claim(GEAR_RATIO, 1)), (n, r) -> add(motorSensor(2, r), gearRatio(0, r)), same()));
+        // joints read as whole counts: the PUMA 560's 1000-count motor encoders behind its published gear ratios (Armstrong,
+        // Khatib & Burdick 1986: 62.61, 107.36, 53.69, 76.01, 71.91, 76.73), and an arm's 10-bit resolver converters behind
+        // ratios of 60-130
+        c.add(s("outside: joint angles read as whole counts of 1000-count motor encoders, puma560, sigma 0.01 mm", "outside", "puma560",
+                Expected.outside(), (n, r) -> {
+                    double[] ratio = {62.61, 107.36, 53.69, 76.01, 71.91, 76.73};
+                    JointError[] e = new JointError[6];
+                    for (int j = 0; j < 6; j++) e[j] = new JointError.Counts(j, 2 * Math.PI / (1000 * ratio[j]));
+                    return add(e);
+                }, p -> p.withSigma(0.01e-3)));
+        c.add(s("outside: joint angles read as whole counts of 10-bit resolver converters, sigma 0.01 mm", "outside", "irb2400",
+                Expected.outside(), (n, r) -> {
+                    JointError[] e = new JointError[6];
+                    for (int j = 0; j < 6; j++) e[j] = new JointError.Counts(j, 2 * Math.PI / (1024 * uniform(r, 60, 130)));
+                    return add(e);
+                }, p -> p.withSigma(0.01e-3)));
         c.add(s("outside: measured point sags with reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var sag = new WorldRobot.Sag(uniform(r, 0.1e-3, 0.2e-3), 1.5); return w -> w.withSag(sag); }, same()));
         heldOutStyle(c);
@@ -672,6 +694,13 @@ public record Scenario(String name, String family, String robot, Expected expect
     }
 
     /** A smooth local bump of 0.02–0.04° in joint 3's angle, 10–20° wide, centred in the middle 60 % of its range. */
+    /** A motor's resolver error on drive {@code joint} (see {@link JointError.MotorSensor}), gear ratio 60-110. */
+    static JointError.MotorSensor motorSensor(int joint, Random r) {
+        double arcmin = Math.toRadians(1.0 / 60), a1 = uniform(r, 8, 20) * arcmin;
+        return new JointError.MotorSensor(joint, uniform(r, 60, 110), new double[] {a1, uniform(r, 0.3, 0.7) * a1},
+                new double[] {2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble()});
+    }
+
     static UnaryOperator<WorldRobot> bumpJ3(RobotDescription n, Random r) {
         var j = n.joints().get(2);
         double mid = 0.5 * (j.min() + j.max()), half = 0.3 * (j.max() - j.min());

@@ -247,7 +247,7 @@ public final class DiagnosisBenchmark {
         List<String> named = new ArrayList<>(), located = new ArrayList<>();
         Set<String> claims = new LinkedHashSet<>();
         for (Diagnosis.Finding f : d.effects()) {
-            String name = f.effect().kind().json;
+            String name = f.effect().json();
             Expected.Family fam = Expected.Family.ofDiagnosisName(name);
             if (fam == null) { located.add(f.effect().label()); continue; }
             named.add(f.effect().label());

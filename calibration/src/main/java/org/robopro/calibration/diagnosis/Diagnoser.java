@@ -353,7 +353,7 @@ public final class Diagnoser {
 
     /** What a named effect claims: its family and joints (a gear's harmonics or a mass model may differ between folds). */
     static String claimKey(Effect e) {
-        StringBuilder b = new StringBuilder(e.kind().json);
+        StringBuilder b = new StringBuilder(e.json());
         for (int j : e.joints1()) b.append(" j").append(j);
         return b.toString();
     }
@@ -1465,14 +1465,17 @@ public final class Diagnoser {
             Tester t = scanned != null && scannedFit == fit ? scanned : w.tester(fit);
             if (step > 0 && scannedFit != fit) {
                 // Locate again after each accepted effect: what is left may call for other families or harmonics.
-                // (the steps of a reading and of the target are looked for in the geometric fit's and the final residuals only)
-                List<Locator.Found> more = Locator.scan(t, Locator.probes(t, dirSource, false), o.alpha(), MAX_LOCATED);
+                // (the steps of a reading and of the target are looked for in the geometric fit's and the final residuals only;
+                // the stage lines again, as a large effect's residual raised the spectrum's continuum over a weak line)
+                List<Locator.Probe> again = Locator.probes(t, dirSource, false);
+                again.addAll(StageScan.probes(t, StageScan.scan(t, o.alpha()), hMax));
+                List<Locator.Found> more = Locator.scan(t, again, o.alpha(), MAX_LOCATED);
                 for (Effect e : locatedFallbacks(more, rows, model)) rivals.putIfAbsent(e.label(), e);
                 for (Effect e : fromLocated(more, model, rows, null, t0C, false, false)) {
                     Effect merged = e;
-                    if (e.kind() == Effect.Kind.PERIODIC)
+                    if (e.kind() == Effect.Kind.PERIODIC && !e.shaftOrders())
                         for (Effect sel : selected)
-                            if (sel.kind() == Effect.Kind.PERIODIC && sel.joint() == e.joint()) {
+                            if (sel.kind() == Effect.Kind.PERIODIC && !sel.shaftOrders() && sel.joint() == e.joint()) {
                                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
                                 for (int h : sel.harmonics()) hs.add(h);
                                 for (int h : e.harmonics()) hs.add(h);
@@ -1492,7 +1495,7 @@ public final class Diagnoser {
             for (Effect e : remaining) {
                 Candidate c = t.test(e, w.conditions);
                 if (c.keptColumns == 0) {
-                    notIdent.putIfAbsent(e.label(), new Diagnosis.NotIdentifiable(e.kind().json, e.joints1(), e.label(),
+                    notIdent.putIfAbsent(e.label(), new Diagnosis.NotIdentifiable(e.json(), e.joints1(), e.label(),
                             c.ratio, c.ratio == 0 ? "its regressor is zero on these poses"
                             : "the geometric model absorbs its signature on these poses"));
                 } else cs.add(c);
@@ -1519,7 +1522,7 @@ public final class Diagnoser {
             int older = -1; // a periodic effect of the same joint whose harmonics the chosen one holds: one effect, not two
             for (int k = 0; k < selected.size(); k++)
                 if (chosen.kind() == Effect.Kind.PERIODIC && selected.get(k).kind() == Effect.Kind.PERIODIC
-                        && selected.get(k).joint() == chosen.joint()
+                        && selected.get(k).joint() == chosen.joint() && chosen.shaftOrders() == selected.get(k).shaftOrders()
                         && Arrays.stream(selected.get(k).orders()).allMatch(h -> Arrays.stream(chosen.orders()).anyMatch(x -> x == h)))
                     older = k;
             if (older >= 0) {
@@ -1970,6 +1973,11 @@ public final class Diagnoser {
             }
             if (!selected.isEmpty())
                 for (Locator.Found f : foundFinal) located.add(located(f, lastTester, "final", null, false, true));
+            // a model short of the instrument's floor with no shape left to follow, and none followed through a fallback (whose
+            // misfit is left in the residual too): a joint whose angle scatters (a coarse encoder's counts, a joint not settled)
+            // moves the point along its own motion only
+            if (aboveFloor && foundFinal.isEmpty() && approximated.isEmpty())
+                for (JointScatter.Found f : JointScatter.scan(lastTester, o.alpha())) located.add(JointScatter.located(f));
             // The noise floor without every structure still located; above 1.2x it the report says so first.
             double rssLeft = lastTester.rss0;
             int dfLeft = lastTester.m - lastTester.rank;
@@ -2903,7 +2911,7 @@ public final class Diagnoser {
                 } else if (best != null && !(pressOwn < bestPress) && !nestedTie(best, own, pressOwn, bestPress)
                         || best != null && besideAnother(e, selected)
                         && nestedTie(best, own, pressOwn, bestPress) && pressOwn >= bestPress * (1 - ALIAS_MARGIN)
-                        || best != null && sharedWithAnotherDrive(e, selected, located, at, w)
+                        || best != null && !turnsOften(e, fit.effectValues(k), rows) && sharedWithAnotherDrive(e, selected, located, at, w)
                         && nestedTie(best, own, pressOwn, bestPress) && pressOwn >= bestPress * (1 - SHARED_MARGIN))
                     why = String.format(Locale.ROOT, "%s is not claimed: the located structure's own fallback %s predicts "
                             + "left-out poses as well or better (leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(),
@@ -2911,7 +2919,7 @@ public final class Diagnoser {
                             ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
                             + "be told apart on these poses: measure with two or three payloads to tell" : "");
                 else if (best != null && best.isFallback() && periodicityUntested(e, rows)
-                        && turningPoints(e, fit.effectValues(k), rows) < REPEAT_TURNS
+                        && !turnsOften(e, fit.effectValues(k), rows)
                         && (pressOwn > bestPress * (1 - ALIAS_MARGIN) || tellsApart(at, k, best, w) < TELL_Z))
                     why = String.format(Locale.ROOT, "%s is not claimed: %s, a shape of no known physics, predicts left-out poses "
                             + "nearly as well (leave-one-pose-out error %.1f against %.1f: to be told apart, %.0f %% lower and by "
@@ -3173,6 +3181,15 @@ public final class Diagnoser {
      * range is none of them.
      */
     static final int REPEAT_TURNS = 3;
+
+    /**
+     * Whether transmission error {@code e} (fitted amplitudes {@code v}) turns at least
+     * {@link #REPEAT_TURNS} times over the sampled range of its joint: a shape that no torque of a
+     * weight, a spring, a cable or a dress pack across the joints gives.
+     */
+    static boolean turnsOften(Effect e, double[] v, List<Measurement> rows) {
+        return e.kind() == Effect.Kind.PERIODIC && !rows.isEmpty() && turningPoints(e, v, rows) >= REPEAT_TURNS;
+    }
 
     /**
      * The turning points of transmission error {@code e}, with fitted sine and cosine amplitudes
@@ -3485,6 +3502,8 @@ public final class Diagnoser {
      * better than its own fallback by {@link #SHARED_MARGIN}; else the fallback models the shape. The
      * structure must be there beside the model fitted in {@code at}: one in the model lowers its
      * leave-one-pose-out error by more than {@link #ALIAS_MARGIN}, one located is significant beside it.
+     * (The claim check does not ask it of a transmission error that turns often over its range,
+     * {@link #turnsOften}: such a load's torque is smooth in the joints' angles.)
      */
     static boolean sharedWithAnotherDrive(Effect e, List<Effect> selected, List<Effect> located, Tester at, Work w) {
         if (e.target() != Effect.Target.DRIVE || e.joint() < 0 || e.kind() == Effect.Kind.COUPLING) return false;
@@ -4071,13 +4090,16 @@ public final class Diagnoser {
             for (int a = 0; a < places.size(); a++)
                 for (int b = a + 1; b < places.size(); b++)
                     if (places.get(b) > places.get(a)) out.add(Effect.angleWindow(j, places.get(a), places.get(b)));
-            if (!stages.isEmpty() || !hs.isEmpty() && hs.last() > Effect.HARMONICS) {
+            // a shaft's orders (above the output's own) are a shape of their own, never part of a gear's error
+            for (int h : hs.tailSet((int) Effect.SHAFT_ORDER, false)) stages.add((double) h);
+            hs.removeIf(h -> h > Effect.SHAFT_ORDER);
+            if (!stages.isEmpty()) out.add(Effect.periodic(j, new int[0], stages.stream().mapToDouble(Double::doubleValue).toArray()));
+            if (!hs.isEmpty() && hs.last() > Effect.HARMONICS) {
                 int[] h = hs.stream().mapToInt(Integer::intValue).toArray();
-                double[] st = stages.stream().mapToDouble(Double::doubleValue).toArray();
-                out.add(Effect.periodic(j, h, st));
+                out.add(Effect.periodic(j, h));
                 java.util.TreeSet<Integer> withLow = new java.util.TreeSet<>(hs);
                 for (int i = 1; i <= Effect.HARMONICS; i++) withLow.add(i);
-                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray(), st));
+                out.add(Effect.periodic(j, withLow.stream().mapToInt(Integer::intValue).toArray()));
             }
             if (any) {
                 double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;

@@ -87,7 +87,7 @@ public final class DiagnosisReport {
     private static Map<String, Object> finding(Diagnosis.Finding f, boolean withRms) {
         Map<String, Object> m = new LinkedHashMap<>();
         Effect e = f.effect();
-        m.put("effect", e.kind().json);
+        m.put("effect", e.json());
         m.put("joints", e.joints1());
         m.put("label", e.label());
         Map<String, Object> p = new LinkedHashMap<>(), s = new LinkedHashMap<>(), u = new LinkedHashMap<>();

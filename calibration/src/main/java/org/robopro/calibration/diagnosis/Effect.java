@@ -1316,10 +1316,39 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
+        return shaftOrders() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.RANGE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
+
+    /**
+     * Whether this is a periodic error of a joint at orders above {@link #SHAFT_ORDER} only: the turn
+     * of a shaft that turns many times per output turn. At the joint's gear ratio that shaft is the
+     * motor, whose angle sensor (a resolver's or an encoder's once- and twice-per-turn error) and the
+     * reducer's input stage repeat their errors alike, and the output's measurements cannot tell the
+     * two; an intermediate shaft gives such an order too, whole or not (over part of a turn a line's
+     * order is known to a cycle or two). So it is located and modelled, a shape of known period, not
+     * named as a gear's error.
+     */
+    public boolean shaftOrders() {
+        if (kind != Kind.PERIODIC) return false;
+        for (double f : orders()) if (!(f > SHAFT_ORDER)) return false;
+        return true;
+    }
+
+    /** The name of a shaft's periodic error in reports and robot files ({@link #shaftOrders}). */
+    public static final String SHAFT_JSON = "shaft-periodic";
+
+    /** This effect's name in reports and robot files: its kind's, or {@link #SHAFT_JSON} for a shaft's orders. */
+    public String json() { return shaftOrders() ? SHAFT_JSON : kind.json; }
+
+    /**
+     * Orders of a joint's error (cycles per turn) above which it is a shaft's ({@link #shaftOrders}):
+     * the output's own gear features (an output gear's eccentricity and its teeth's pattern, a
+     * cycloidal disc's lobes, 39-40 on a robot's RV stage) repeat at most this often per turn, the
+     * motor and the input stage at the total ratio (60-200 on an industrial arm's joint).
+     */
+    public static final double SHAFT_ORDER = 40;
 
     /** An instrument-reading error's reading of a predicted point (base frame, m): m, or rad for an angle; NaN for other kinds. */
     public double sightReadingOf(double[] pointBase) {
@@ -1681,7 +1710,9 @@ public final class Effect {
             case DRIFT -> kind.json + (usesTimeProxy() ? " (with time)" : " (with temperature)");
             case THERMAL_LINK -> kind.json + lagWords() + (warms() ? " (warm-up " + warmWords() + ")" : "");
             case COUPLING -> kind.json + " j" + (joint + 1) + "<-j" + (source + 1);
-            case PERIODIC -> kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
+            case PERIODIC -> shaftOrders() ? SHAFT_JSON + " j" + (joint + 1) + " (" + String.join(",",
+                    Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + " per turn)"
+                    : kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 || model != null ? " (following " + (model != null ? "theta" : "j")
@@ -2242,12 +2273,12 @@ public final class Effect {
             }
             default -> { }
         }
-        return new EffectDescription(kind.json, joints1(), p);
+        return new EffectDescription(json(), joints1(), p);
     }
 
     /** Reads an effect back from its robot-file form; values in the order of {@link #parameterNames()}. */
     public static Term fromDescription(EffectDescription d, KinematicModel model, GravityTorques gravity, String file) {
-        Kind kind = Kind.of(d.effect());
+        Kind kind = SHAFT_JSON.equals(d.effect()) ? Kind.PERIODIC : Kind.of(d.effect());
         if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {

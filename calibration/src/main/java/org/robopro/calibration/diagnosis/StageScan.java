@@ -222,10 +222,10 @@ final class StageScan {
         List<Locator.Probe> out = new ArrayList<>();
         for (Stage s : stages) {
             if (System.getenv("ROBOPRO_STAGES_DEBUG") != null) System.err.println("stage " + s);
-            // a stage that is not a whole order is reported among the scan's findings only when the locate scan
-            // can judge it against the place-bound shapes it resembles (not yet: a bump in an angle has lines at
-            // orders 4-16 that are not whole, and such a gear family was named in its place)
-            if (!s.whole() || s.order() <= hMax) continue;
+            // a line above every harmonic the locate scan searches, whole or not, is a probe (a shaft's turn:
+            // Effect.shaftOrders); below, the whole orders are the harmonic probes', and a bump in an angle has lines
+            // at orders 4-16 that are not whole
+            if (s.order() <= Math.max(hMax, Effect.SHAFT_ORDER)) continue;
             out.add(Locator.stageProbe(t, s.joint(), Effect.roundOrder(s.order())));
         }
         return out;

@@ -61,6 +61,21 @@ final class Words {
                     + "rad/(N·m), a stiffness of %.3g N·m/rad.", e.joint() + 1, v[0], s[0], 1 / v[0]);
             case PERIODIC -> {
                 double[] hs = e.orders();
+                if (e.shaftOrders()) {
+                    StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "Joint %d's error repeats at the turn of a shaft "
+                            + "that turns a fraction of times per turn of the joint, not at the joint's own turn:", e.joint() + 1));
+                    for (int i = 0; i < hs.length; i++)
+                        sb.append(String.format(Locale.ROOT, " %s cycles per turn %.4f ± %.4f deg%s", Effect.orderText(hs[i]),
+                                Math.toDegrees(Math.hypot(v[2 * i], v[2 * i + 1])), Math.toDegrees(Math.max(s[2 * i], s[2 * i + 1])),
+                                i < hs.length - 1 ? "," : "."));
+                    sb.append(String.format(Locale.ROOT, " At the joint's gear ratio that shaft is the motor: the error of its angle "
+                            + "sensor (a resolver's or an encoder's, once and twice per motor turn) and of the reducer's input stage "
+                            + "repeat alike there, and measurements of the arm cannot tell them apart; an intermediate shaft of the "
+                            + "drive gives such an order too. Compare the order with joint %d's gear ratio (the drive's data sheet), and "
+                            + "the motor's encoder with an encoder on the output side, to tell which. It is modelled as sinusoids at "
+                            + "those orders so compensation can use it.", e.joint() + 1));
+                    yield sb.toString();
+                }
                 StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
                         "Joint %d has a transmission error that repeats with its angle (%s):", e.joint() + 1,
                         hs[hs.length - 1] > 3 ? "cycles of a multi-stage or cycloidal reducer" : "gear or encoder eccentricity"));

@@ -336,7 +336,7 @@ public final class CalibrationPanel extends JPanel {
     }
 
     static String effectName(Effect e) {
-        return e.kind().title;
+        return e.shaftOrders() ? "Periodic error at a shaft's turn (motor sensor or input stage)" : e.kind().title;
     }
 
     private static String joinInts(List<Integer> js) {
