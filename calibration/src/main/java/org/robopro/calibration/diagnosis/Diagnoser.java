@@ -3744,7 +3744,8 @@ public final class Diagnoser {
     /** Share of the scanned fit's unexplained sum of squares a structure removes. */
     private static double share(Locator.Found f, Tester t) { return t.rss0 > 0 ? Math.min(1, f.c.drss / t.rss0) : 0; }
 
-    private static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
+    /** {@code s} with its first letter upper-case. */
+    static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
 
     /** Above this multiple of the floor the instrument's stated noise gives, the report says first that error is left. */
     static final double STATED_FLOOR_MARGIN = 1.2;

@@ -143,7 +143,7 @@ final class JointScatter {
                 + "instrument measured (the arm not settled after its move), and so does an error along the joint's motion that "
                 + "follows something the file does not record (the time, a temperature). No model of these poses can compensate it: "
                 + "record the joint values at a finer resolution (the controller's measured, not commanded, angles), time_s and "
-                + "temp_c, let the arm settle longer before each measurement, and measure a few poses twice to see it", capital(shape), f.sizeM() * 1e3, f.joint() + 1, f.ratio(),
+                + "temp_c, let the arm settle longer before each measurement, and measure a few poses twice to see it", Diagnoser.capital(shape), f.sizeM() * 1e3, f.joint() + 1, f.ratio(),
                 Words.p(f.p()), f.threshold(), deg * Math.sqrt(12));
         // evidence: the residual along the joint's motion against the joint's lever, with the ±2σ envelope of the noise and the scatter
         double maxLever = 0;
@@ -165,6 +165,4 @@ final class JointScatter {
         return new Diagnosis.Located("joint " + (f.joint() + 1) + " reading", shape, f.sizeM(), f.share(), f.ratio(), 1, f.p(),
                 f.threshold(), "final", null, words, plot);
     }
-
-    private static String capital(String s) { return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1); }
 }
