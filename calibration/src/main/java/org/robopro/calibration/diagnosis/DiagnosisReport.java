@@ -196,13 +196,14 @@ public final class DiagnosisReport {
                         + (f.effect().target() == Effect.Target.POSITION || d.distances() ? d.measurementWords() : "poses") + ")", p.xLabel(), p.yLabel(),
                         List.of(new Svg.Series("measured (partial residual)", p.x(), p.y(), "#1f77b4", false),
                                 new Svg.Series("fitted " + (f.effect().runout() ? "play over the turn" : f.effect().buildsUp() ? "lost motion building up over the move" : f.effect().heldByGravity()
-                                        ? "lost motion held by gravity (centre of the play where the torque is small)" : f.effect().kind().json), p.curveX(), p.curveY(), "#d62728",
+                                        ? "lost motion held by gravity (centre of the play where the torque is small)" : f.effect().json()), p.curveX(), p.curveY(), "#d62728",
                                         // an effect on the measured point: its fitted size at each measurement, not a curve of the x variable
                                         f.effect().target() != Effect.Target.POSITION)), false));
                 if (p.periodogram() != null) {
                     double[] hx = new double[p.periodogram().length];
                     for (int i = 0; i < hx.length; i++) hx[i] = i + 1;
-                    h.append(Svg.plot("Periodogram of the partial residual (harmonics 1-3 are modelled)", "harmonic of q"
+                    h.append(Svg.plot("Periodogram of the partial residual (modelled: " + String.join(", ", java.util.Arrays.stream(
+                                    f.effect().orders()).mapToObj(Effect::orderText).toList()) + " cycles per turn)", "cycles per turn of q"
                                     + (f.effect().joint() + 1), "amplitude (mdeg)",
                             List.of(new Svg.Series("amplitude", hx, p.periodogram(), "#2ca02c", true)), false));
                 }

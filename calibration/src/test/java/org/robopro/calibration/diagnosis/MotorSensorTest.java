@@ -61,7 +61,7 @@ class MotorSensorTest {
      * motor's lines are found once the ratio is modelled: the ratio is named, the lines located.
      */
     @Test
-    void resolverBesideAGearRatio_ratioNamed_linesLocatedOnceItIsModelled() {
+    void resolverBesideAGearRatio_ratioNamed_linesLocatedOnceItIsModelled() throws Exception {
         WorldCampaigns.Sim s = WorldCampaigns.of(
                 Scenario.named("motor resolver error of j3 at its gear ratio (outside) + gear-ratio error j1").trial(20261125));
         Diagnosis d = Diagnoser.diagnose(s.nominal(), s.train(), s.validation());
@@ -70,6 +70,12 @@ class MotorSensorTest {
         assertTrue(d.effects().stream().anyMatch(f -> f.effect().shaftOrders() && hasOrder(f.effect(), sensor(s).ratio())),
                 d.effects() + " against the world's ratio " + sensor(s).ratio());
         assertTrue(d.finalValidateRmsM() < 1.15 * d.noiseFloorM(), d.finalValidateRmsM() / d.noiseFloorM() + " x the floor");
+        // the report names the shaft's curve and the orders its periodogram holds, not a gear's harmonics 1-3
+        Effect shaft = d.effects().stream().map(Diagnosis.Finding::effect).filter(Effect::shaftOrders).findFirst().orElseThrow();
+        String html = DiagnosisReport.html(d, new DiagnosisReport.Context("train.csv", "validate.csv", "now"));
+        assertTrue(html.contains(">fitted shaft-periodic<"), "the evidence plot's legend");
+        assertTrue(html.contains("Periodogram of the partial residual (modelled: " + String.join(", ",
+                Arrays.stream(shaft.orders()).mapToObj(Effect::orderText).toList()) + " cycles per turn)"), "the periodogram's title");
     }
 
     /** A shaft's orders written to a robot file read back as the same located shape and move the joint alike. */
