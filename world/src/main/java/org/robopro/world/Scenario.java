@@ -391,17 +391,12 @@ public record Scenario(String name, String family, String robot, Expected expect
         // Khatib & Burdick 1986: 62.61, 107.36, 53.69, 76.01, 71.91, 76.73), and an arm's 10-bit resolver converters behind
         // ratios of 60-130
         c.add(s("outside: joint angles read as whole counts of 1000-count motor encoders, puma560, sigma 0.01 mm", "outside", "puma560",
-                Expected.outside(), (n, r) -> {
-                    double[] ratio = {62.61, 107.36, 53.69, 76.01, 71.91, 76.73};
-                    JointError[] e = new JointError[6];
-                    for (int j = 0; j < 6; j++) e[j] = new JointError.Counts(j, 2 * Math.PI / (1000 * ratio[j]));
-                    return add(e);
-                }, p -> p.withSigma(0.01e-3)));
+                Expected.outside(), (n, r) -> counts(1000, new double[] {62.61, 107.36, 53.69, 76.01, 71.91, 76.73}), p -> p.withSigma(0.01e-3)));
         c.add(s("outside: joint angles read as whole counts of 10-bit resolver converters, sigma 0.01 mm", "outside", "irb2400",
                 Expected.outside(), (n, r) -> {
-                    JointError[] e = new JointError[6];
-                    for (int j = 0; j < 6; j++) e[j] = new JointError.Counts(j, 2 * Math.PI / (1024 * uniform(r, 60, 130)));
-                    return add(e);
+                    double[] ratio = new double[6];
+                    for (int j = 0; j < 6; j++) ratio[j] = uniform(r, 60, 130);
+                    return counts(1024, ratio);
                 }, p -> p.withSigma(0.01e-3)));
         c.add(s("outside: measured point sags with reach", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var sag = new WorldRobot.Sag(uniform(r, 0.1e-3, 0.2e-3), 1.5); return w -> w.withSag(sag); }, same()));
@@ -693,7 +688,6 @@ public record Scenario(String name, String family, String robot, Expected expect
         return new WorldRobot.Wobble(joint, Math.toRadians(uniform(r, 0.005, 0.02)), ratio, 2 * Math.PI * r.nextDouble());
     }
 
-    /** A smooth local bump of 0.02–0.04° in joint 3's angle, 10–20° wide, centred in the middle 60 % of its range. */
     /** A motor's resolver error on drive {@code joint} (see {@link JointError.MotorSensor}), gear ratio 60-110. */
     static JointError.MotorSensor motorSensor(int joint, Random r) {
         double arcmin = Math.toRadians(1.0 / 60), a1 = uniform(r, 8, 20) * arcmin;
@@ -701,6 +695,14 @@ public record Scenario(String name, String family, String robot, Expected expect
                 new double[] {2 * Math.PI * r.nextDouble(), 2 * Math.PI * r.nextDouble()});
     }
 
+    /** Every joint read as whole counts of its motor's sensor: {@code perTurn} counts a motor turn behind gear ratio {@code ratio[j]}. */
+    static UnaryOperator<WorldRobot> counts(int perTurn, double[] ratio) {
+        JointError[] e = new JointError[ratio.length];
+        for (int j = 0; j < ratio.length; j++) e[j] = new JointError.Counts(j, 2 * Math.PI / (perTurn * ratio[j]));
+        return add(e);
+    }
+
+    /** A smooth local bump of 0.02–0.04° in joint 3's angle, 10–20° wide, centred in the middle 60 % of its range. */
     static UnaryOperator<WorldRobot> bumpJ3(RobotDescription n, Random r) {
         var j = n.joints().get(2);
         double mid = 0.5 * (j.min() + j.max()), half = 0.3 * (j.max() - j.min());

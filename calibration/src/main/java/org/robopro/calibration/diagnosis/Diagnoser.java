@@ -3201,13 +3201,11 @@ public final class Diagnoser {
         int j = e.joint();
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (Measurement m : rows) { lo = Math.min(lo, m.q(j)); hi = Math.max(hi, m.q(j)); }
-        double[] h = e.orders();
         int n = 2001;
         double[] y = new double[n];
         double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) {
-            double q = lo + (hi - lo) * i / (n - 1), s = 0;
-            for (int c = 0; c < h.length; c++) s += v[2 * c] * Math.sin(h[c] * q) + v[2 * c + 1] * Math.cos(h[c] * q);
+            double s = Plots.curve(e, v, Math.toDegrees(lo + (hi - lo) * i / (n - 1)));
             y[i] = s;
             min = Math.min(min, s);
             max = Math.max(max, s);

@@ -4,8 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-import org.apache.commons.math3.special.Gamma;
-
 /**
  * Scatter of one joint's angle beyond the instrument's noise: an error of the joint that is no
  * function of anything recorded, so no shape of the locate scan follows it, yet it moves the
@@ -31,10 +29,13 @@ final class JointScatter {
     record Found(int joint, double sRad, double p, double threshold, double ratio, double sizeM, double share, double[] lever, double[] along,
                  double sigmaAlongM) { }
 
+    /** The six distinct entries of a symmetric 3 x 3 matrix, in the regression's column order: xx, yy, zz, xy, xz, yz. */
+    private static final int[][] PAIRS = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+
     /**
      * The joints whose angle scatters beyond the instrument's noise in the residual the tester holds
-     * (single measured points with positions only; none otherwise), each below {@code alpha} over the
-     * number of joints tested.
+     * (one measured point per pose, its position rows, with or without orientations; none
+     * otherwise), each below {@code alpha} over the number of joints tested.
      */
     static List<Found> scan(Diagnoser.Tester t, double alpha) {
         List<Found> out = new ArrayList<>();
@@ -45,14 +46,13 @@ final class JointScatter {
         int nj = joints.size(), p = 6 + nj;
         if (n < 10 * p) return out;
         double[] r = t.rPerp;
-        int[][] pairs = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
         double[][] d = new double[n * dof][3];
         double[][] x = new double[n * 6][p];
         double[] y = new double[n * 6];
         for (int i = 0; i < n; i++) {
             for (int j = 0; j < dof; j++) for (int a = 0; a < 3; a++) d[i * dof + j][a] = t.endDQ[0][(i * rpp + a) * dof + j];
             for (int e = 0; e < 6; e++) {
-                int a = pairs[e][0], b = pairs[e][1], row = i * 6 + e;
+                int a = PAIRS[e][0], b = PAIRS[e][1], row = i * 6 + e;
                 y[row] = r[i * rpp + a] * r[i * rpp + b];
                 x[row][e] = 1;
                 for (int k = 0; k < nj; k++) {
@@ -125,11 +125,11 @@ final class JointScatter {
         return out;
     }
 
-    /** The column of Σ₀'s entry (a, b) among the six distinct ones: xx, yy, zz, xy, xz, yz. */
+    /** The column of Σ₀'s entry (a, b) among the six distinct ones ({@link #PAIRS}). */
     private static int index(int a, int b) {
-        if (a == b) return a;
-        int lo = Math.min(a, b), hi = Math.max(a, b);
-        return lo == 0 ? (hi == 1 ? 3 : 4) : 5;
+        for (int e = 0; e < PAIRS.length; e++)
+            if (PAIRS[e][0] == Math.min(a, b) && PAIRS[e][1] == Math.max(a, b)) return e;
+        throw new IllegalArgumentException("entry " + a + ", " + b);
     }
 
     /** The located entry of a scattering joint, with its words and evidence plot. */

@@ -63,7 +63,7 @@ final class Words {
                 double[] hs = e.orders();
                 if (e.shaftOrders()) {
                     StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "Joint %d's error repeats at the turn of a shaft "
-                            + "that turns a fraction of times per turn of the joint, not at the joint's own turn:", e.joint() + 1));
+                            + "that turns many times per turn of the joint, not at the joint's own turn:", e.joint() + 1));
                     for (int i = 0; i < hs.length; i++)
                         sb.append(String.format(Locale.ROOT, " %s cycles per turn %.4f ± %.4f deg%s", Effect.orderText(hs[i]),
                                 Math.toDegrees(Math.hypot(v[2 * i], v[2 * i + 1])), Math.toDegrees(Math.max(s[2 * i], s[2 * i + 1])),
