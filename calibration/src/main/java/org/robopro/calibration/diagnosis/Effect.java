@@ -2313,7 +2313,7 @@ public final class Effect {
                     if (key.matches("a\\d+")) hs.add(Integer.parseInt(key.substring(1)));
                     else if (key.matches("a\\d+\\.\\d+")) st.add(Double.parseDouble(key.substring(1)));
                 if (hs.isEmpty() && st.isEmpty())
-                    throw new InputException(file, 0, 0, "effects.gear-periodic.parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
+                    throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
                 yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray(), st.stream().mapToDouble(Double::doubleValue).toArray());
             }
             case BACKLASH -> {
