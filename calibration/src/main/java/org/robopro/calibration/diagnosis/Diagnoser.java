@@ -1577,17 +1577,21 @@ public final class Diagnoser {
                     bestPress = formPress;
                 }
             }
-            if (e.kind() == Effect.Kind.BACKLASH && !e.heldByGravity() && !e.runout()) {
+            if (e.kind() == Effect.Kind.BACKLASH && !e.heldByGravity() && (!e.runout() || onceOnly(e))) {
                 // The same lost motion (in the form just chosen) with a play that changes over the turn of its joint: once
-                // per turn (the output gear), or at the order the lag's spectrum shows (a pinion of the last stage).
+                // per turn (the output gear), or at the order the lag's spectrum shows (a pinion of the last stage). The
+                // pinion's line is looked for again beside the output gear's runout once that is in the model: the larger
+                // once-per-turn change, not yet modelled, can hide it.
                 Effect form = best != null ? best : e;
                 List<Effect> forms = new ArrayList<>(List.of(Effect.withRunout(form)));
                 StageScan.PlayLine line = StageScan.playOrder(at, e, o.alpha());
                 if (line != null) {
-                    // the order the left-out poses choose within the scan's grid step of the line (from the stage scan's least
-                    // stage order up; a pinion's ratio is seldom whole): alone, and beside the output gear's runout (once per
-                    // turn), each form judged against the better before it
-                    double f0 = line.stage().refined(), lo = Math.max(StageScan.MIN_STAGE_ORDER, f0 - line.step()), hi = f0 + line.step();
+                    // the order the left-out poses choose within the scan's grid step of the line (a pinion's ratio is seldom
+                    // whole; a line found at the scan's least order may be a pinion turning a little slower, 3.57 times per
+                    // output turn, but no lower than twice per turn, where its change over part of a turn is the output gear's
+                    // once-per-turn shape): alone, and beside the output gear's runout (once per turn), each form judged
+                    // against the better before it
+                    double f0 = line.stage().refined(), lo = Math.max(MIN_PINION_ORDER, f0 - line.step()), hi = f0 + line.step();
                     int kk = k;
                     for (boolean once : new boolean[] {false, true}) {
                         java.util.function.DoubleFunction<Effect> withOrder = f -> once ? Effect.withRunout(form, 1, f) : Effect.withRunout(form, f);
@@ -2508,7 +2512,7 @@ public final class Diagnoser {
         }
         if (hi > lo)
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
-                if (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()) out.add(make.at(lo, hi, nb));
+                if (Effect.supported(nb, Effect.SMOOTH_BASIS, rows.size())) out.add(make.at(lo, hi, nb));
     }
 
     /**
@@ -3107,7 +3111,7 @@ public final class Diagnoser {
         if (out != null) return at.pressReplacing(k, null, null) <= own ? out : null;
         List<Effect> rivals = new ArrayList<>();
         for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
-            if (nb == Effect.POINT_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size())
+            if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                 rivals.add(Effect.instrumentScale(Effect.Along.TIME, jump.instrumentPose(), lo, hi, nb));
         for (Effect r : rivals) {
             double pr = at.pressReplacing(k, r, w.conditions);
@@ -3148,6 +3152,15 @@ public final class Diagnoser {
      */
     private static boolean nestedTie(Effect rival, List<Effect> own, double pressOwn, double pressRival) {
         return own.stream().anyMatch(f -> f.label().equals(rival.label())) && pressOwn <= pressRival * (1 + ALIAS_MARGIN);
+    }
+
+    /** The least order a pinion's change of the play is refined to, times per output turn ({@link StageScan#playOrder} finds it from 4). */
+    static final double MIN_PINION_ORDER = 2;
+
+    /** Whether lost motion {@code e}'s play changes once per turn only (an output gear's runout, no pinion's order). */
+    static boolean onceOnly(Effect e) {
+        double[] f = e.runoutOrders();
+        return f.length == 1 && f[0] == 1;
     }
 
     /** The largest harmonic of a transmission error whose periodicity needs a sampled turn to be seen. */
@@ -3534,15 +3547,15 @@ public final class Diagnoser {
         } else if (e.kind() == Effect.Kind.INSTRUMENT_SCALE) {
             // a long campaign's air warms and cools and its pressure drifts: a finer curve of the same reading
             for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
-                if (nb != e.basisCount() && (nb == Effect.POINT_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
+                if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentScale(e.along(), e.instrumentPose(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.INSTRUMENT) {
             for (int nb : e.sight() == Effect.Sight.RANGE ? Locator.RANGE_RESOLUTIONS : Locator.ANGLE_RESOLUTIONS)
-                if (nb != e.basisCount() && (nb == Effect.POINT_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
+                if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentReading(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.SMOOTH) {
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
-                if (nb != e.basisCount() && (nb == Effect.SMOOTH_BASIS || nb * Effect.POSES_PER_BASIS <= rows.size()))
+                if (nb != e.basisCount() && Effect.supported(nb, Effect.SMOOTH_BASIS, rows.size()))
                     out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
                             : Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.RANGE_STEP

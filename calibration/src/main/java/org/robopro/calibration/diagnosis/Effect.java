@@ -151,6 +151,13 @@ public final class Effect {
     static final int[] SMOOTH_RESOLUTIONS = {7, 13, 25};
     /** Poses needed per basis function of a smooth fallback. */
     static final int POSES_PER_BASIS = 6;
+
+    /**
+     * Whether {@code poses} support a curve of {@code nb} functions: the coarsest resolution of its
+     * kind ({@code coarsest}) always, a finer one with {@link #POSES_PER_BASIS} poses per function.
+     */
+    static boolean supported(int nb, int coarsest, int poses) { return nb <= coarsest || nb * POSES_PER_BASIS <= poses; }
+
     /** Basis functions of the point's smooth displacement along reach or height (per axis). */
     public static final int POINT_BASIS = 4;
     /** Gravity's direction in the base frame the tool sag takes: straight down the base's z (a robot standing on the floor). */

@@ -183,7 +183,7 @@ final class Locator {
             final double l0 = lo, h0 = hi;
             List<Integer> resolutions = new ArrayList<>();
             for (int nb : Effect.SMOOTH_RESOLUTIONS) {
-                if (nb != Effect.SMOOTH_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
+                if (!Effect.supported(nb, Effect.SMOOTH_BASIS, poses)) continue;
                 resolutions.add(nb);
                 regs.add((e, i, g) -> Effect.bspline(t.endRows.get(e).get(i).q(jj), l0, h0, g));
                 ks.add(nb);
@@ -637,7 +637,7 @@ final class Locator {
             if (!(max(x) - min(x) > (sight == Effect.Sight.RANGE ? 0.05 : Math.toRadians(2)))) continue;
             double l0 = lo, h0 = hi;
             for (int nb : sight == Effect.Sight.RANGE ? RANGE_RESOLUTIONS : ANGLE_RESOLUTIONS) {
-                if (nb > Effect.POINT_BASIS && nb * Effect.POSES_PER_BASIS > poses) continue;
+                if (!Effect.supported(nb, Effect.POINT_BASIS, poses)) continue;
                 double[] s = new double[t.m * nb], g = new double[nb];
                 for (int row = 0; row < t.m; row++) {
                     if (sens[row] == 0) continue;

@@ -103,8 +103,27 @@ class RunoutLostMotionTest {
      */
     @Test
     void playChangingWithBothGears_namedWithBothOrders() {
+        bothGears(new long[] {20261124, 20261126}, 1);
+    }
+
+    /**
+     * Both gears again, on a draw whose pinion turns 3.57 times per output turn, below the least
+     * order the play's scan searches (4): its line shows in the lag's spectrum only once the output
+     * gear's larger once-per-turn change is modelled, at the scan's edge, and the left-out poses
+     * choose the order below it. Before, the play was named changing once per turn, at 1.35 times
+     * the floor, with a jump of joint 2's reading located beside it. The left-out error changes
+     * little with the order here (within 0.4 % between 3.2 and 3.6 times per turn), so the order
+     * is held to a tenth of a cycle over the range, not a twentieth.
+     */
+    @Test
+    void playChangingWithBothGears_pinionBelowTheScansLeastOrder() {
+        bothGears(new long[] {20261125}, 2);
+    }
+
+    /** The both-gears scenario on {@code seeds}: both orders named, the pinion's within {@code cycles}/20 of a cycle over the range. */
+    private static void bothGears(long[] seeds, double cycles) {
         Scenario s = Scenario.named("lost motion j2 whose play changes with its output gear's and its pinion's turn (both eccentric)");
-        for (long seed : new long[] {20261124, 20261126}) {
+        for (long seed : seeds) {
             Run run = lostMotion(s.trial(seed), 1, "seed " + seed);
             WorldCampaigns.Sim c = run.c();
             JointError.GearPairLostMotion truth = run.truth();
@@ -114,7 +133,7 @@ class RunoutLostMotionTest {
             assertEquals(2, orders.length, "seed " + seed + ": " + f.effect().label());
             assertEquals(1, orders[0]);
             double ratio = (double) truth.gearTeeth() / truth.pinionTeeth();
-            assertEquals(ratio, orders[1], orderTolerance(c, 1), "seed " + seed + ": " + f.effect().label());
+            assertEquals(ratio, orders[1], cycles * orderTolerance(c, 1), "seed " + seed + ": " + f.effect().label());
             assertEquals(truth.gearChange(), Math.hypot(v[1], v[2]), 0.3 * truth.gearChange(), "seed " + seed + ": once per turn");
             assertEquals(truth.pinionChange(), Math.hypot(v[3], v[4]), 0.3 * truth.pinionChange(), "seed " + seed + ": the pinion's");
             assertTrue(d.finalValidateRmsM() <= 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
