@@ -254,7 +254,7 @@ public final class RobotFile {
         if (e.has("parameters_si"))
             for (Map.Entry<String, LocatedJson.Node> p : e.get("parameters_si").members().entrySet())
                 params.put(p.getKey(), p.getValue().asDouble());
-        return new EffectDescription(name, joints, params);
+        return new EffectDescription(name, joints, params, e);
     }
 
 

@@ -2286,7 +2286,7 @@ public final class Effect {
     /** Reads an effect back from its robot-file form; values in the order of {@link #parameterNames()}. */
     public static Term fromDescription(EffectDescription d, KinematicModel model, GravityTorques gravity, String file) {
         Kind kind = SHAFT_JSON.equals(d.effect()) ? Kind.PERIODIC : Kind.of(d.effect());
-        if (kind == null) throw new InputException(file, 0, 0, "effects.effect", "unknown effect '" + d.effect() + "'");
+        if (kind == null) throw d.error(file, "effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
             case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, TOOL_SAG,
@@ -2298,12 +2298,12 @@ public final class Effect {
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
         if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN || kind == Kind.INSTRUMENT_SCALE) && along == null)
-            throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
+            throw d.error(file, "parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
         if (js.size() != need)
-            throw new InputException(file, 0, 0, "effects.joints", d.effect() + " needs " + need + " joints, got " + js);
+            throw d.error(file, "joints", d.effect() + " needs " + need + " joints, got " + js);
         for (int j : js)
             if (j < 1 || j > model.dof())
-                throw new InputException(file, 0, 0, "effects.joints", "joint " + j + " outside 1.." + model.dof());
+                throw d.error(file, "joints", "joint " + j + " outside 1.." + model.dof());
         Map<String, Double> ps = d.parameters();
         Effect e = switch (kind) {
             case COMPLIANCE -> {
@@ -2320,7 +2320,7 @@ public final class Effect {
                     if (key.matches("a\\d+")) hs.add(Integer.parseInt(key.substring(1)));
                     else if (key.matches("a\\d+\\.\\d+")) st.add(Double.parseDouble(key.substring(1)));
                 if (hs.isEmpty() && st.isEmpty())
-                    throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
+                    throw d.error(file, "parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
                 yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray(), st.stream().mapToDouble(Double::doubleValue).toArray());
             }
             case BACKLASH -> {
@@ -2330,19 +2330,19 @@ public final class Effect {
                     GravityTorques g = ps.containsKey("held_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
                     if (g == null || g.massesUnknown())
                         throw new InputException(file, 0, 0, "mass_model", "backlash held by gravity needs the robot's mass_model");
-                    if (!(t >= 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_above_nm", "must be >= 0, got " + t);
+                    if (!(t >= 0)) throw d.error(file, "parameters_si.held_above_nm", "must be >= 0, got " + t);
                     double wd = ps.containsKey("held_width") ? require(d, "held_width", file) : 0;
-                    if (!(wd >= 0 && wd < 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.held_width", "must be in [0, 1), got " + wd);
+                    if (!(wd >= 0 && wd < 1)) throw d.error(file, "parameters_si.held_width", "must be in [0, 1), got " + wd);
                     yield heldByGravity(js.get(0) - 1, g, t, wd, massScales(d, g, "held_mass_scale_", file));
                 }
                 Effect form = backlash(js.get(0) - 1);
                 if (ps.containsKey("build_up_rad")) {
                     double x0 = require(d, "build_up_rad", file);
-                    if (!(x0 > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.build_up_rad", "must be > 0, got " + x0);
+                    if (!(x0 > 0)) throw d.error(file, "parameters_si.build_up_rad", "must be > 0, got " + x0);
                     double a = Double.NaN;
                     if (ps.containsKey("approach_rad")) {
                         a = require(d, "approach_rad", file);
-                        if (!(a > 0)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si.approach_rad", "must be > 0, got " + a);
+                        if (!(a > 0)) throw d.error(file, "parameters_si.approach_rad", "must be > 0, got " + a);
                     }
                     form = windUp(js.get(0) - 1, x0, a, null);
                 }
@@ -2353,7 +2353,7 @@ public final class Effect {
                     else if (key.startsWith("b_cos_")) {
                         double f;
                         try { f = Double.parseDouble(key.substring(6)); } catch (NumberFormatException x) { f = Double.NaN; }
-                        if (!(f >= 1)) throw new InputException(file, 0, 0, "effects.backlash.parameters_si." + key,
+                        if (!(f >= 1)) throw d.error(file, "parameters_si." + key,
                                 "the play's order after b_cos_ must be a number >= 1 (times per turn)");
                         orders.add(f);
                     }
@@ -2364,29 +2364,29 @@ public final class Effect {
             case COUPLING -> coupling(js.get(0) - 1, js.get(1) - 1);
             case SMOOTH -> {
                 int n = (int) ps.keySet().stream().filter(key -> key.matches("s\\d+")).count();
-                if (n < 4) throw new InputException(file, 0, 0, "effects.joint-smooth-error.parameters_si", "needs s1..sN, N >= 4");
+                if (n < 4) throw d.error(file, "parameters_si", "needs s1..sN, N >= 4");
                 if (js.size() == 2 && js.get(0).equals(js.get(1)))
-                    throw new InputException(file, 0, 0, "effects.joints", "joint-smooth-error following another joint needs two different joints");
+                    throw d.error(file, "joints", "joint-smooth-error following another joint needs two different joints");
                 if (ps.containsKey("model_angle"))
                     yield smoothFollowingModelAngle(js.get(0) - 1, js.get(js.size() - 1) - 1, model, require(d, "q_min", file),
                             require(d, "q_max", file), n);
                 yield smoothFollowing(js.get(0) - 1, js.size() == 2 ? js.get(1) - 1 : -1, require(d, "q_min", file), require(d, "q_max", file), n);
             }
             case PAIR -> {
-                if (js.get(0).equals(js.get(1))) throw new InputException(file, 0, 0, "effects.joints", "joint-pair-error needs two different joints");
+                if (js.get(0).equals(js.get(1))) throw d.error(file, "joints", "joint-pair-error needs two different joints");
                 yield pair(js.get(0) - 1, js.get(1) - 1);
             }
             case POINT_SMOOTH -> pointSmooth(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             case BASE_TURN -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
-                    throw new InputException(file, 0, 0, "effects.base-turn.parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
+                    throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
                 yield baseTurn(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             }
             case INSTRUMENT_SCALE -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
-                    throw new InputException(file, 0, 0, "effects.instrument-scale.parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
+                    throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
                 int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("s\\d+")).count();
-                if (n < POINT_BASIS) throw new InputException(file, 0, 0, "effects.instrument-scale.parameters_si", "needs s1..sN, N >= " + POINT_BASIS);
+                if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs s1..sN, N >= " + POINT_BASIS);
                 yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
             }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
@@ -2396,18 +2396,18 @@ public final class Effect {
             case RANGE_STEP -> rangeStep(instrumentOf(d, file), require(d, "time_s_step", file));
             case LINK_SAG -> {
                 if (js.get(0) < 2 || js.get(0) > 3)
-                    throw new InputException(file, 0, 0, "effects.joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));
+                    throw d.error(file, "joints", "link-sag is of the upper arm (joint 2) or the forearm (joint 3), got " + js.get(0));
                 if (js.get(0) >= model.dof() || model.isPrismatic(js.get(0) - 1))
-                    throw new InputException(file, 0, 0, "effects.joints", "link-sag needs joint " + js.get(0) + " revolute with a joint "
+                    throw d.error(file, "joints", "link-sag needs joint " + js.get(0) + " revolute with a joint "
                             + "beyond it; this robot's joint " + js.get(0) + (js.get(0) > model.dof() ? " does not exist"
                             : js.get(0) == model.dof() ? " is its last" : " is prismatic"));
                 yield linkSag(model, js.get(0) - 1, ps.containsKey("t_payload"));
             }
             case LINK_TWIST -> {
                 if (js.get(0) != 2)
-                    throw new InputException(file, 0, 0, "effects.joints", "link-twist is of the upper arm (joint 2), got " + js.get(0));
+                    throw d.error(file, "joints", "link-twist is of the upper arm (joint 2), got " + js.get(0));
                 if (model.dof() < 6 || model.isPrismatic(1) || model.isPrismatic(2))
-                    throw new InputException(file, 0, 0, "effects.link-twist", "link-twist needs a six-axis arm whose joints 2 and 3 "
+                    throw d.error(file, "", "link-twist needs a six-axis arm whose joints 2 and 3 "
                             + "are revolute; this robot has " + model.dof() + " joints");
                 yield linkTwist(model, ps.containsKey("t_payload_o"));
             }
@@ -2415,16 +2415,16 @@ public final class Effect {
             case TARGET_INCIDENCE -> {
                 Vec3 axis = new Vec3(require(d, "axis_x", file), require(d, "axis_y", file), require(d, "axis_z", file));
                 if (!(axis.norm() > 0))
-                    throw new InputException(file, 0, 0, "effects.target-incidence.parameters_si.axis_x", "the sight axis must not be zero");
+                    throw d.error(file, "parameters_si.axis_x", "the sight axis must not be zero");
                 yield targetIncidence(model, instrumentOf(d, file), axis);
             }
             case AXIS_WOBBLE -> {
                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
                 for (String key : ps.keySet()) if (key.matches("xc\\d+")) hs.add(Integer.parseInt(key.substring(2)));
                 if (hs.isEmpty() || hs.first() < 1)
-                    throw new InputException(file, 0, 0, "effects.axis-wobble.parameters_si", "needs xc1, xs1, yc1, ys1 (or another order >= 1)");
+                    throw d.error(file, "parameters_si", "needs xc1, xs1, yc1, ys1 (or another order >= 1)");
                 if (model.isPrismatic(js.get(0) - 1))
-                    throw new InputException(file, 0, 0, "effects.joints", "axis-wobble needs a revolute joint, joint " + js.get(0) + " is prismatic");
+                    throw d.error(file, "joints", "axis-wobble needs a revolute joint, joint " + js.get(0) + " is prismatic");
                 yield axisWobble(model, js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
             }
             case BASE_TILT -> {
@@ -2432,7 +2432,7 @@ public final class Effect {
                     throw new InputException(file, 0, 0, "mass_model", "base-tilt needs the robot's mass_model");
                 if (ps.containsKey("foot_edges")) {
                     if (require(d, "foot_edges", file) != 4)
-                        throw new InputException(file, 0, 0, "effects.base-tilt.parameters_si.foot_edges", "must be 4 (a square foot)");
+                        throw d.error(file, "parameters_si.foot_edges", "must be 4 (a square foot)");
                     yield squareFootTilt(gravity, require(d, "axis_azimuth_rad", file), require(d, "hold_nm", file),
                             massScales(d, gravity, "tilt_mass_scale_", file));
                 }
@@ -2444,21 +2444,21 @@ public final class Effect {
                 Sight sg = null;
                 for (Sight x : Sight.values()) if (ps.containsKey(x.key + "_min")) sg = x;
                 if (sg == null)
-                    throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si", "needs the reading's range, e.g. range_m_min and range_m_max");
+                    throw d.error(file, "parameters_si", "needs the reading's range, e.g. range_m_min and range_m_max");
                 int n = (int) ps.keySet().stream().filter(key -> key.matches("e\\d+")).count();
                 Pose inst0 = instrumentOf(d, file);
                 double ref = sg == Sight.AZIMUTH ? require(d, "azimuth_ref_rad", file) : 0;
                 if (ps.containsKey(sg.key + "_cycle")) {
                     double cyc = require(d, sg.key + "_cycle", file);
-                    if (!(cyc > 0)) throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si." + sg.key + "_cycle", "must be > 0, got " + cyc);
+                    if (!(cyc > 0)) throw d.error(file, "parameters_si." + sg.key + "_cycle", "must be > 0, got " + cyc);
                     yield instrumentCyclic(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), cyc);
                 }
-                if (n < 4) throw new InputException(file, 0, 0, "effects.instrument-reading-error.parameters_si", "needs e1..eN, N >= 4");
+                if (n < 4) throw d.error(file, "parameters_si", "needs e1..eN, N >= 4");
                 yield instrumentReading(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), n);
             }
             case ZERO_DRIFT -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
-                    throw new InputException(file, 0, 0, "effects.joint-zero-drift.parameters_si", "a joint zero drifts with time_s or temp_c");
+                    throw d.error(file, "parameters_si", "a joint zero drifts with time_s or temp_c");
                 yield zeroDrift(js.get(0) - 1, along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             }
             case THERMAL -> ps.containsKey("tau_s") ? thermalFromTime(ps.get("tau_s")) : thermal(require(d, "t0_c", file));
@@ -2472,14 +2472,14 @@ public final class Effect {
                         String key = "warm_tau_s_" + plain.linkName(plain.links[col]);
                         warm[col] = require(d, key, file);
                         if (!(warm[col] > 0) || Double.isInfinite(warm[col]))
-                            throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si." + key, "must be > 0, got " + warm[col]);
+                            throw d.error(file, "parameters_si." + key, "must be > 0, got " + warm[col]);
                     }
                 }
                 if (ps.keySet().stream().noneMatch(key -> key.startsWith("lag_s_"))) yield warm == null ? plain : withWarmUp(plain, warm);
                 double[] taus = new double[plain.links.length];
                 for (int col = 0; col < taus.length; col++) {
                     taus[col] = require(d, "lag_s_" + plain.linkName(plain.links[col]), file);
-                    if (!(taus[col] >= 0)) throw new InputException(file, 0, 0, "effects.thermal-link.parameters_si.lag_s_"
+                    if (!(taus[col] >= 0)) throw d.error(file, "parameters_si.lag_s_"
                             + plain.linkName(plain.links[col]), "must be >= 0, got " + taus[col]);
                 }
                 Effect lagged = thermalLinks(model, plain.t0C, null, taus);
@@ -2509,7 +2509,7 @@ public final class Effect {
         for (int k = 0; k < sc.length; k++) {
             String key = prefix + gravity.massName(k);
             sc[k] = d.parameters().containsKey(key) ? require(d, key, file) : 1;
-            if (!(sc[k] > 0)) throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si." + key, "must be > 0, got " + sc[k]);
+            if (!(sc[k] > 0)) throw d.error(file, "parameters_si." + key, "must be > 0, got " + sc[k]);
             scaled |= d.parameters().containsKey(key);
         }
         return scaled ? sc : null;
@@ -2518,7 +2518,7 @@ public final class Effect {
     private static double require(EffectDescription d, String key, String file) {
         Double v = d.parameters().get(key);
         if (v == null || !Double.isFinite(v))
-            throw new InputException(file, 0, 0, "effects." + d.effect() + ".parameters_si." + key, "missing or not a finite number");
+            throw d.error(file, "parameters_si." + key, "missing or not a finite number");
         return v;
     }
 

@@ -74,6 +74,58 @@ class ExtendedModelTest {
     }
 
     /**
+     * A robot file edited by hand with a bad effect is refused with the file, the line and the
+     * field of the bad value: a backlash's build-up length made negative points at that key's line,
+     * a parameter left out at its effect's parameters' line, two joints for a backlash at the
+     * joints' line (each line
+     * found here by searching the file's text, not from the reader).
+     */
+    @Test
+    void robotFile_badEffect_namesItsLineAndField() {
+        ExtendedModel ext = new ExtendedModel(model, List.of(
+                new Effect.Term(Effect.compliance(1, g), new double[] {1e-6}),
+                new Effect.Term(Effect.backlash(1), new double[] {8e-4})));
+        String text = RobotFile.format(ext.toDescription());
+        String b = "(\"b\"\\s*:\\s*[-0-9.eE]+)";
+
+        String negative = text.replaceFirst(b, "$1,\n      \"build_up_rad\" : -0.1");
+        assertTrue(!negative.equals(text), "the build-up length was added: " + negative);
+        var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> ExtendedModel.of(RobotFile.parse("x.robot.json", negative), "x.robot.json"));
+        assertEquals(lineOf(negative, "\"build_up_rad\""), e.line(), e.getMessage());
+        assertTrue(e.getMessage().startsWith("x.robot.json:" + e.line() + ":"), e.getMessage());
+        assertTrue(e.field().startsWith("effects[") && e.field().endsWith(".parameters_si.build_up_rad"), e.getMessage());
+
+        String missing = text.replaceFirst("\"b\"(\\s*:)", "\"b_typo\"$1");
+        e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> ExtendedModel.of(RobotFile.parse("x.robot.json", missing), "x.robot.json"));
+        // the backlash's parameters, the object the missing key belongs in
+        assertEquals(lineAt(missing, missing.lastIndexOf("\"parameters_si\"", missing.indexOf("\"b_typo\""))), e.line(), e.getMessage());
+        assertTrue(e.field().endsWith(".parameters_si.b"), e.getMessage());
+
+        String outside = text.replaceFirst("(\"backlash\",\\s*\"joints\"\\s*:\\s*\\[\\s*\"j2\")", "$1, \"j3\"");
+        assertTrue(!outside.equals(text), "a second joint was given to the backlash: " + text);
+        e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> ExtendedModel.of(RobotFile.parse("x.robot.json", outside), "x.robot.json"));
+        assertEquals(lineOf(outside, "\"joints\"", "\"effect\": \"backlash\""), e.line(), e.getMessage());
+        assertTrue(e.field().endsWith(".joints"), e.getMessage());
+    }
+
+    /** The 1-based line of the first occurrence of {@code s} in {@code text} (after the first of {@code after}, when given). */
+    private static int lineOf(String text, String s, String... after) {
+        int from = 0;
+        for (String a : after) from = text.indexOf(a, from);
+        return lineAt(text, text.indexOf(s, from));
+    }
+
+    /** The 1-based line of character {@code at} of {@code text}. */
+    private static int lineAt(String text, int at) {
+        assertTrue(at >= 0, "found in the text");
+        return (int) text.substring(0, at).chars().filter(c -> c == '\n').count() + 1;
+    }
+
+
+    /**
      * The same physics written independently by the world simulator (its own kinematics and
      * forms, nothing shared with this package): the robot file's geometry with the measured point
      * at the flange, and each of {@link #terms} in the world's words.
