@@ -1550,6 +1550,7 @@ public final class Diagnoser {
         // Held-out rule: a named effect must beat its aliases on the leave-one-pose-out error; when the
         // smooth fallback or another family predicts better, the effect is replaced.
         Set<String> refusedAliases = new HashSet<>();
+        Map<String, String> orderNotes = new java.util.HashMap<>(); // a play's form whose pinion order the left-out poses do not fix: why
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
             Tester at = w.tester(fit);
@@ -1586,21 +1587,46 @@ public final class Diagnoser {
                 List<Effect> forms = new ArrayList<>(List.of(Effect.withRunout(form)));
                 StageScan.PlayLine line = StageScan.playOrder(at, e, o.alpha());
                 if (line != null) {
-                    // the order the left-out poses choose within the scan's grid step of the line (a pinion's ratio is seldom
-                    // whole; a line found at the scan's least order may be a pinion turning a little slower, 3.57 times per
-                    // output turn, but no lower than twice per turn, where its change over part of a turn is the output gear's
-                    // once-per-turn shape): alone, and beside the output gear's runout (once per turn), each form judged
-                    // against the better before it
-                    double f0 = line.stage().refined(), lo = Math.max(MIN_PINION_ORDER, f0 - line.step()), hi = f0 + line.step();
+                    // the order the left-out poses choose within the line's main lobe (a pinion's ratio is seldom whole): over
+                    // part of a turn the spectrum places a line only to about one cycle over the sampled range, 1/span cycles
+                    // per turn (the grid step times the oversampling), and a once-per-turn change fitted beside it, or a pinion
+                    // turning slower than the scan's least order (3.3 times per output turn), moves its peak within that. A grid
+                    // of half steps over the lobe, then a golden section about the best point; no lower than twice per turn,
+                    // where a change over part of a turn is the output gear's once-per-turn shape. Alone, and beside the output
+                    // gear's runout (once per turn), each form judged against the better before it.
+                    double f0 = line.stage().refined(), lobe = StageScan.OVERSAMPLE * line.step();
+                    double lo = Math.max(MIN_PINION_ORDER, f0 - lobe), hi = f0 + lobe;
                     int kk = k;
                     for (boolean once : new boolean[] {false, true}) {
                         java.util.function.DoubleFunction<Effect> withOrder = f -> once ? Effect.withRunout(form, 1, f) : Effect.withRunout(form, f);
-                        double f = line.stage().order();
-                        if (hi > lo) {
-                            double[] r = goldenLog(l -> at.pressReplacing(kk, withOrder.apply(Math.exp(l)), w.conditions), lo, hi);
-                            if (r[1] < at.pressReplacing(k, withOrder.apply(f), w.conditions)) f = Math.exp(r[0]);
+                        java.util.function.DoubleUnaryOperator press = f -> at.pressReplacing(kk, withOrder.apply(f), w.conditions);
+                        double f = line.stage().order(), pf = press.applyAsDouble(f);
+                        List<double[]> grid = new ArrayList<>();
+                        for (double g = lo; g <= hi + 1e-9; g += line.step() / 2) {
+                            double pg = press.applyAsDouble(g);
+                            grid.add(new double[] {g, pg});
+                            if (pg < pf) { f = g; pf = pg; }
                         }
-                        forms.add(withOrder.apply(f));
+                        double a = Math.max(MIN_PINION_ORDER, f - line.step() / 2), b = f + line.step() / 2;
+                        if (b > a) {
+                            double[] r = goldenLog(l -> press.applyAsDouble(Math.exp(l)), a, b);
+                            if (r[1] < pf) { f = Math.exp(r[0]); pf = r[1]; }
+                        }
+                        Effect chosen = withOrder.apply(f);
+                        forms.add(chosen);
+                        // the orders that predict as well: spread over the whole lobe, the poses do not fix the pinion's ratio
+                        double best0 = pf, fLo = f, fHi = f;
+                        for (double[] gp : grid)
+                            if (gp[1] <= best0 * (1 + ALIAS_MARGIN)) { fLo = Math.min(fLo, gp[0]); fHi = Math.max(fHi, gp[0]); }
+                        if (fHi - fLo >= lobe)
+                            orderNotes.put(chosen.label(), String.format(Locale.ROOT, "the order at which joint %d's play changes "
+                                    + "(%s times per turn in %s) is not fixed by these poses: every order from %.1f to %.1f predicts "
+                                    + "left-out poses within %.0f %% as well; over the %.0f deg of joint %d measured, changes at these "
+                                    + "rates differ by less than a cycle%s. To tell the pinion's ratio, count the last gear pair's "
+                                    + "teeth (z_gear / z_pinion) or measure over more of joint %d's range", e.joint() + 1,
+                                    Effect.orderText(f), chosen.label(), fLo, fHi, 100 * ALIAS_MARGIN,
+                                    Math.toDegrees(2 * Math.PI / (lobe)), e.joint() + 1,
+                                    once ? " and the once-per-turn change beside them takes up the difference" : "", e.joint() + 1));
                     }
                 }
                 if (LOG.isDebugEnabled()) LOG.debug("play of {}: line {}", e.label(), line == null ? "none" : line.stage());
@@ -1647,6 +1673,7 @@ public final class Diagnoser {
                 aliasNotes.add(String.format(Locale.ROOT, "%s was replaced by %s, which predicts left-out poses better "
                         + "(leave-one-pose-out error %.1f against %.1f)", e.label(), best.label(), bestPress, own));
                 // what other effects held of a play changing over the turn before it had that form is now its own
+                if (orderNotes.containsKey(best.label())) aliasNotes.add(orderNotes.get(best.label()));
                 if (best.runout()) fit = noLongerNeeded(w, fit, selected, absorbedCols, steps, familySize, best, aliasNotes);
             } else {
                 refusedAliases.add(best.label());
