@@ -1615,18 +1615,18 @@ public final class Diagnoser {
                         Effect chosen = withOrder.apply(f);
                         forms.add(chosen);
                         // the orders that predict as well: spread over the whole lobe, the poses do not fix the pinion's ratio
-                        double best0 = pf, fLo = f, fHi = f;
+                        double fLo = f, fHi = f;
                         for (double[] gp : grid)
-                            if (gp[1] <= best0 * (1 + ALIAS_MARGIN)) { fLo = Math.min(fLo, gp[0]); fHi = Math.max(fHi, gp[0]); }
+                            if (gp[1] <= pf * (1 + ALIAS_MARGIN)) { fLo = Math.min(fLo, gp[0]); fHi = Math.max(fHi, gp[0]); }
                         if (fHi - fLo >= lobe)
                             orderNotes.put(chosen.label(), String.format(Locale.ROOT, "the order at which joint %d's play changes "
-                                    + "(%s times per turn in %s) is not fixed by these poses: every order from %.1f to %.1f predicts "
-                                    + "left-out poses within %.0f %% as well; over the %.0f deg of joint %d measured, changes at these "
-                                    + "rates differ by less than a cycle%s. To tell the pinion's ratio, count the last gear pair's "
-                                    + "teeth (z_gear / z_pinion) or measure over more of joint %d's range", e.joint() + 1,
+                                    + "(%s times per turn in %s) is not fixed by these poses: every order from %.1f to %.1f times per "
+                                    + "turn predicts left-out poses within %.0f %% as well, though over the %.0f deg of joint %d "
+                                    + "measured they differ by a cycle or more%s. To tell the pinion's ratio, count the last gear "
+                                    + "pair's teeth (z_gear / z_pinion) or measure over more of joint %d's range", e.joint() + 1,
                                     Effect.orderText(f), chosen.label(), fLo, fHi, 100 * ALIAS_MARGIN,
-                                    Math.toDegrees(2 * Math.PI / (lobe)), e.joint() + 1,
-                                    once ? " and the once-per-turn change beside them takes up the difference" : "", e.joint() + 1));
+                                    Math.toDegrees(2 * Math.PI / lobe), e.joint() + 1,
+                                    once ? " (the once-per-turn change fitted beside them takes up the difference)" : "", e.joint() + 1));
                     }
                 }
                 if (LOG.isDebugEnabled()) LOG.debug("play of {}: line {}", e.label(), line == null ? "none" : line.stage());
