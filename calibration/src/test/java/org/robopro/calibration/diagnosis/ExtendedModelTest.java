@@ -77,8 +77,7 @@ class ExtendedModelTest {
      * A robot file edited by hand with a bad effect is refused with the file, the line and the
      * field of the bad value: a backlash's build-up length made negative points at that key's line,
      * a parameter left out at its effect's parameters' line, two joints for a backlash at the
-     * joints' line (each line
-     * found here by searching the file's text, not from the reader).
+     * joints' line (each line found here by searching the file's text, not from the reader).
      */
     @Test
     void robotFile_badEffect_namesItsLineAndField() {
@@ -123,7 +122,6 @@ class ExtendedModelTest {
         assertTrue(at >= 0, "found in the text");
         return (int) text.substring(0, at).chars().filter(c -> c == '\n').count() + 1;
     }
-
 
     /**
      * The same physics written independently by the world simulator (its own kinematics and
