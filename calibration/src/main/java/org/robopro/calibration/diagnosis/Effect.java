@@ -1349,6 +1349,9 @@ public final class Effect {
     /** This effect's name in reports and robot files: its kind's, or {@link #SHAFT_JSON} for a shaft's orders. */
     public String json() { return shaftOrders() ? SHAFT_JSON : kind.json; }
 
+    /** This effect's title in words (the workbench's list): its kind's, or a shaft's for {@link #shaftOrders}. */
+    public String title() { return shaftOrders() ? "Periodic error at a shaft's turn (motor sensor or input stage)" : kind.title; }
+
     /**
      * Orders of a joint's error (cycles per turn) above which it is a shaft's ({@link #shaftOrders}):
      * the output's own gear features (an output gear's eccentricity and its teeth's pattern, a

@@ -296,7 +296,7 @@ public final class CalibrationPanel extends JPanel {
         int n = 1;
         for (Diagnosis.Finding f : d.effects()) {
             Effect e = f.effect();
-            b.append(String.format(Locale.ROOT, "%n%d. %s%s%n", n++, effectName(e), e.joints1().isEmpty() ? ""
+            b.append(String.format(Locale.ROOT, "%n%d. %s%s%n", n++, e.title(), e.joints1().isEmpty() ? ""
                     : (e.joints1().size() == 1 ? " on joint " : " on joints ") + joinInts(e.joints1())));
             b.append("   ").append(f.words()).append('\n');
             b.append("   Parameters: ").append(parameters(e, f.values(), f.sigmas())).append('\n');
@@ -333,10 +333,6 @@ public final class CalibrationPanel extends JPanel {
         }
         b.append(String.format(Locale.ROOT, "(%d candidates tested, %.1f s)%n", d.candidatesTested(), d.elapsedMs() / 1e3));
         return b.toString();
-    }
-
-    static String effectName(Effect e) {
-        return e.shaftOrders() ? "Periodic error at a shaft's turn (motor sensor or input stage)" : e.kind().title;
     }
 
     private static String joinInts(List<Integer> js) {
