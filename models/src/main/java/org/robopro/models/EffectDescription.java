@@ -27,10 +27,13 @@ public record EffectDescription(String effect, List<Integer> joints, Map<String,
      * Bad input at {@code field} of this effect ("joints", "parameters_si", "parameters_si.b", or ""
      * for the effect as a whole): located at that field's value in the file where it is there, else
      * at the nearest enclosing one (a parameter that is missing: its effect's); without a place in a
-     * file, {@code file} and the field's path.
+     * file, {@code file} and the field's path under the effect's name ("effects.backlash.parameters_si.b";
+     * "effects.joints").
      */
     public InputException error(String file, String field, String problem) {
-        if (source == null) return new InputException(file, 0, 0, field.isEmpty() ? "effects." + effect : "effects." + field, problem);
+        if (source == null)
+            return new InputException(file, 0, 0, field.isEmpty() || field.startsWith("parameters_si") ? "effects." + effect
+                    + (field.isEmpty() ? "" : "." + field) : "effects." + field, problem);
         LocatedJson.Node at = source;
         if (!field.isEmpty())
             for (String part : field.split("\\.")) {
