@@ -188,6 +188,23 @@ public sealed interface JointError {
     }
 
     /**
+     * Outside every catalogue family: a hose routed through the wrist to the tool is twisted as
+     * joint {@code joint} turns from the angle {@code neutral} where it hangs free, and its restoring
+     * torque deflects the drive (a torsion spring, τ = −(GJ/L)·(q − neutral), and the drive yields by
+     * τ/k). Bending the wrist at joint {@code bend} draws the hose taut over the wrist's housing, so
+     * its free length shortens as L = L₀ / (1 + β(1 − cos q_bend)) and its torsional stiffness GJ/L
+     * rises with the bend (Timoshenko &amp; Goodier, Theory of Elasticity, §101: a shaft's twist
+     * stiffness is GJ/L). Δq = −c·(q − neutral)·(1 + β(1 − cos q_bend)), c = GJ/(L₀·k): straight, a
+     * scale error of the drive about {@code neutral}; bent, a scale that changes with joint
+     * {@code bend}'s angle.
+     */
+    record HoseTwist(int joint, int bend, double c, double neutral, double beta) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            return -c * (q[joint] - neutral) * (1 + beta * (1 - Math.cos(q[bend])));
+        }
+    }
+
+    /**
      * Lost motion with unequal flanks: gravity (or a spring) presses the gear on one flank, so a
      * move one way leaves the output lagging by the full half-play and a move the other way by
      * less: q_out = q - (up/2) after a positive move, q + (down/2) after a negative one.

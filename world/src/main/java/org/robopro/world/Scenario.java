@@ -31,7 +31,21 @@ import org.robopro.models.RobotLibrary;
  * @param plan     adjusts the default campaign plan
  */
 public record Scenario(String name, String family, String robot, Expected expected,
-                       BiFunction<RobotDescription, Random, UnaryOperator<WorldRobot>> effects, UnaryOperator<Campaign.Plan> plan) {
+                       BiFunction<RobotDescription, Random, UnaryOperator<WorldRobot>> effects, UnaryOperator<Campaign.Plan> plan,
+                       double[] targetInFlangeM) {
+
+    /** A scenario measuring the target at {@link #TARGET_IN_FLANGE_M}, on the flange's axis. */
+    public Scenario(String name, String family, String robot, Expected expected,
+                    BiFunction<RobotDescription, Random, UnaryOperator<WorldRobot>> effects, UnaryOperator<Campaign.Plan> plan) {
+        this(name, family, robot, expected, effects, plan, TARGET_IN_FLANGE_M);
+    }
+
+    public Scenario {
+        targetInFlangeM = targetInFlangeM.clone();
+    }
+
+    /** Where the measured target sits nominally on the flange, m (off by ~2 mm in each drawn robot). */
+    @Override public double[] targetInFlangeM() { return targetInFlangeM.clone(); }
 
     /** One drawn robot and its campaign. */
     public record Trial(Scenario scenario, long seed, WorldRobot world, Campaign.Result campaign) {
@@ -52,7 +66,7 @@ public record Scenario(String name, String family, String robot, Expected expect
      */
     public boolean answerNeedsItsCampaign() { return family.equals(ONE_SIDED); }
 
-    /** Where the measured target sits nominally on the flange, m: 100 mm along its z axis. */
+    /** Where the measured target sits nominally on the flange unless a scenario says otherwise, m: 100 mm along its z axis. */
     static final double[] TARGET_IN_FLANGE_M = {0, 0, 0.1};
 
     /** Draws the robot and measures it. */
@@ -60,7 +74,7 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     /** Draws the robot and measures it with the scenario's plan changed by {@code adjust} (e.g. more poses). */
     public Trial trial(long seed, UnaryOperator<Campaign.Plan> adjust) {
-        WorldRobot world = robot(seed, TARGET_IN_FLANGE_M);
+        WorldRobot world = robot(seed, targetInFlangeM);
         return new Trial(this, seed, world, Campaign.run(world, RobotLibrary.shipped(robot), campaignPlan(seed, adjust)));
     }
 
@@ -77,7 +91,7 @@ public record Scenario(String name, String family, String robot, Expected expect
     /** {@link #twin(long)} of the trial {@link #trial(long, UnaryOperator)} gives with {@code adjust}. */
     public Trial twin(long seed, UnaryOperator<Campaign.Plan> adjust) {
         RobotDescription nominal = RobotLibrary.shipped(robot);
-        WorldRobot world = baseRobot(nominal, robotStream(seed), 1e-3, Math.toRadians(0.1), TARGET_IN_FLANGE_M);
+        WorldRobot world = baseRobot(nominal, robotStream(seed), 1e-3, Math.toRadians(0.1), targetInFlangeM);
         return new Trial(this, seed, world, Campaign.run(world, nominal, campaignPlan(seed, adjust).withOutliers(0)));
     }
 
@@ -159,6 +173,15 @@ public record Scenario(String name, String family, String robot, Expected expect
             all.addAll(List.of(e));
             return w.withErrors(all);
         };
+    }
+
+    /**
+     * A hose twisted by joint 6 ({@link JointError.HoseTwist}): 0.03–0.06° at a half turn from where
+     * it hangs free (within 90° of zero), straight; its stiffness one to two times higher again at a
+     * right-angle bend of joint 5.
+     */
+    static JointError.HoseTwist hoseTwist(Random r) {
+        return new JointError.HoseTwist(5, 4, Math.toRadians(uniform(r, 0.03, 0.06)) / Math.PI, Math.toRadians(signed(r, 0, 90)), uniform(r, 1, 2));
     }
 
     /** Transmission error of a single-stage gear train: harmonics 1..3, 0.004–0.01° each (0.02–0.05° on the wrist), random phases. */
@@ -525,6 +548,12 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("outside: measured point sags with reach, 50 poses", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var sag = new WorldRobot.Sag(uniform(r, 0.1e-3, 0.2e-3), 1.5); return w -> w.withSag(sag); },
                 p -> p.withPoses(50, 50)));
+        // a hose twisted by joint 6 of the IRB 2400 (±400 deg), stiffer as joint 5 bends: 0.03-0.06 deg at a half turn from
+        // where it hangs free, straight; measured at a target 80 mm off joint 6's axis (a torch's tip), or on the axis in 6-D
+        c.add(new Scenario("outside: hose twisted by j6, stiffer as the wrist bends, target off joint 6's axis", "outside", "irb2400",
+                Expected.outside(), (n, r) -> add(hoseTwist(r)), same(), new double[] {0.08, 0, 0.1}));
+        c.add(s("outside: hose twisted by j6, stiffer as the wrist bends, 6-D", "outside", "irb2400", Expected.outside(),
+                (n, r) -> add(hoseTwist(r)), p -> p.withSixD(true)));
     }
 
     /**
@@ -602,6 +631,18 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var wb = wobble(2, 2, r); return w -> w.withWobbles(List.of(wb)); }, same()));
         c.add(s("outside: bearing wobble of j1 at 0.38 times its angle, 3 gross outliers", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var wb = wobble(0, 0.38, r); return w -> w.withWobbles(List.of(wb)); }, p -> p.withOutliers(3)));
+        // a race's face ground in two or three lobes, 0.05-0.1 mm: the arm beyond joint 1 (the IRB 2000) or joint 2 (the PUMA
+        // 560, beside a lost motion of joint 3) rides up and down along the axis as the joint turns
+        c.add(s("outside: joint 1's bearing runs out along its axis", "outside", "irb2000", Expected.outside(),
+                (n, r) -> { var wb = axialRunout(0, r); return w -> w.withWobbles(List.of(wb)); }, same()));
+        // a reflector's ball in a nest with 0.1-0.2 mm of radial clearance, rolling once the tool leans 5-15 deg
+        c.add(s("outside: the target rolls within its nest's clearance toward gravity", "outside", "irb2000", Expected.outside(),
+                (n, r) -> { var tp = new WorldRobot.TargetPlay(uniform(r, 0.1e-3, 0.2e-3), Math.toRadians(uniform(r, 5, 15)));
+                    return w -> w.withTargetPlay(tp); }, same()));
+        c.add(s("joint 2's bearing runs out along its axis (outside) + lost motion j3 puma560", "pair", "puma560",
+                Expected.named(claim(LOST_MOTION, 3)),
+                (n, r) -> { var wb = axialRunout(1, r); var lm = lostMotion(2, r); return w -> add(lm).apply(w).withWobbles(List.of(wb)); },
+                same()));
         c.add(s("outside: measured target slips mid-campaign, 60 poses", "outside", "irb2000", Expected.outside(),
                 (n, r) -> {
                     // 120 poses take about 30 minutes: the slip comes between 9 and 21 minutes in
@@ -684,6 +725,11 @@ public record Scenario(String name, String family, String robot, Expected expect
     }
 
     /** A bearing wobble of 0.005–0.02° on {@code joint} at {@code ratio} times its angle, random phase. */
+    /** A bearing's race ground in two or three lobes on its face, 0.05-0.1 mm ({@link WorldRobot.Wobble#axial}). */
+    static WorldRobot.Wobble axialRunout(int joint, Random r) {
+        return WorldRobot.Wobble.axial(joint, uniform(r, 0.05e-3, 0.1e-3), r.nextBoolean() ? 2 : 3, 2 * Math.PI * r.nextDouble());
+    }
+
     static WorldRobot.Wobble wobble(int joint, double ratio, Random r) {
         return new WorldRobot.Wobble(joint, Math.toRadians(uniform(r, 0.005, 0.02)), ratio, 2 * Math.PI * r.nextDouble());
     }

@@ -166,6 +166,9 @@ final class Truth {
             m.put("wrist_stiffness_nm_per_rad", Arrays.stream(d.wristStiffness()).boxed().toList());
             root.put("dress_pack", m);
         }
+        if (w.targetPlay() != null)
+            root.put("target_play", Map.of("clearance_mm", w.targetPlay().clearanceM() * 1e3, "friction_deg", Math.toDegrees(w.targetPlay().frictionRad()),
+                    "form", "the target moved in the flange's frame by clearance * min(1, |g_xy| / sin(friction)) * g_xy / |g_xy|, g gravity seen from the flange"));
         if (!w.wobbles().isEmpty()) {
             List<Map<String, Object>> ws = new ArrayList<>();
             for (WorldRobot.Wobble wb : w.wobbles()) {
@@ -174,6 +177,12 @@ final class Truth {
                 m.put("tilt_deg", Math.toDegrees(wb.tiltRad()));
                 m.put("ratio", wb.ratio());
                 m.put("phase_rad", wb.phase());
+                if (wb.axialM() != 0) {
+                    m.put("axial_mm", wb.axialM() * 1e3);
+                    m.put("lobes", wb.lobes());
+                    m.put("axial_phase_rad", wb.axialPhase());
+                    m.put("axial_form", "everything outboard moved along w by axial cos(lobes theta + axial_phase), after the tilt");
+                }
                 m.put("form", "the axis w (joint's true axis at zero) tilted by tilt about d = cos(ratio theta + phase) u + sin(ratio theta + phase) v "
                         + "through its axis point; u = w x (the base axis least along w), normalised; v = w x u; theta the model angle");
                 ws.add(m);
@@ -257,6 +266,12 @@ final class Truth {
             m.put("phi0_deg", Math.toDegrees(gs.phi0()));
             m.put("force_n", gs.f0N());
             m.put("stiffness_nm_per_rad", gs.stiffness());
+        } else if (e instanceof JointError.HoseTwist h) {
+            m.put("type", "hose twisted by the joint, stiffer as another joint bends (outside): -c (q - neutral)(1 + beta (1 - cos q_bend))");
+            m.put("bend_joint", h.bend() + 1);
+            m.put("c", h.c());
+            m.put("neutral_deg", Math.toDegrees(h.neutral()));
+            m.put("beta", h.beta());
         } else if (e instanceof JointError.MotorWarm mw) {
             m.put("type", "drive zero moving as its motor warms (outside)");
             m.put("shift_deg", Math.toDegrees(mw.shift()));

@@ -47,11 +47,12 @@ import org.robopro.models.RobotDescription;
  * @param wobbles            bearing wobbles: joint axes tilting about a direction that turns with the joint
  * @param floorTilt          the floor under the robot tilting as it warms, or null
  * @param twist              the upper arm twisting under the weights beyond it, or null
+ * @param targetPlay         the measured target shifting within its nest's clearance toward gravity, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                         FloorTilt floorTilt, Twist twist) {
+                         FloorTilt floorTilt, Twist twist, TargetPlay targetPlay) {
     public WorldRobot {
         coupling = copy(coupling);
         zeroOffsets = zeroOffsets.clone();
@@ -63,7 +64,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag, ToolBump toolBump) {
         this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump,
-                null, null, null, List.of(), null, null);
+                null, null, null, List.of(), null, null, null);
     }
 
     @Override public double[][] coupling() { return copy(coupling); }
@@ -215,6 +216,23 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * reflector nest bumped by a cable or a hand): from then on it sits {@code shiftM} (flange
      * coordinates) from where it was and is turned by the rotation vector {@code turnRad}.
      */
+    /**
+     * The measured target (a reflector's ball) sitting in a nest with a radial clearance: the ball
+     * rolls to the low side of the clearance, by {@code clearanceM} toward the part of gravity across
+     * the tool's axis (flange z) once the axis leans more than the friction angle {@code frictionRad}
+     * (tan φ = μ: Coulomb, the ball rolls when the slope beats the friction), and in proportion below
+     * it (the ball resting part of the way, where the last lean left it being unknown).
+     */
+    public record TargetPlay(double clearanceM, double frictionRad) {
+        /** The ball's shift in flange coordinates for gravity {@code gFlange} (unit) seen from the flange. */
+        public double[] shift(double[] gFlange) {
+            double across = Math.hypot(gFlange[0], gFlange[1]), hold = Math.sin(frictionRad);
+            if (across == 0) return new double[3];
+            double f = clearanceM * Math.min(1, across / hold) / across;
+            return new double[] {f * gFlange[0], f * gFlange[1], 0};
+        }
+    }
+
     public record ToolBump(double atS, double[] shiftM, double[] turnRad) {
         public ToolBump {
             shiftM = shiftM.clone();
@@ -468,13 +486,29 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * rolling bearings), so a rolling element set with one large element or a cage out of round tilts
      * the axis at that ratio.
      */
-    public record Wobble(int joint, double tiltRad, double ratio, double phase) {
-        /** The transform of the tilt at model angle theta of the joint, given the arm's axis and point (zero position). */
+    public record Wobble(int joint, double tiltRad, double ratio, double phase, double axialM, int lobes, double axialPhase) {
+        /** A bearing that tilts only. */
+        public Wobble(int joint, double tiltRad, double ratio, double phase) { this(joint, tiltRad, ratio, phase, 0, 0, 0); }
+
+        /**
+         * A bearing whose rotating race was ground with {@code lobes} lobes on its face (a three-jaw
+         * chuck leaves three, a ring clamped out of round two): everything outboard rides up and down
+         * along the axis by axialM·cos(lobes·θ + axialPhase) as the joint turns (the axial error motion
+         * of ISO 230-7:2015), without a tilt.
+         */
+        public static Wobble axial(int joint, double axialM, int lobes, double axialPhase) {
+            return new Wobble(joint, 0, 1, 0, axialM, lobes, axialPhase);
+        }
+
+        /** The transform of the tilt (and the axial shift) at model angle theta of the joint, given the arm's axis and point (zero position). */
         public Rigid tilt(double[] axis, double[] point, double theta) {
             double[] u = perpendicular(axis), v = Rigid.cross(axis, u);
             double a = ratio * theta + phase;
             double[] d = Rigid.plus(Rigid.scale(u, Math.cos(a)), Rigid.scale(v, Math.sin(a)));
-            return Rigid.rotation(Rigid.unit(d), tiltRad, point);
+            Rigid t = Rigid.rotation(Rigid.unit(d), tiltRad, point);
+            if (axialM == 0) return t;
+            double[] z = Rigid.scale(axis, axialM * Math.cos(lobes * theta + axialPhase));
+            return Rigid.translation(z[0], z[1], z[2]).times(t);
         }
 
         /** A unit vector perpendicular to w: w × the base axis least along w, normalised. */
@@ -580,6 +614,12 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
                 pre[wb.joint()] = pre[wb.joint()] == null ? t : pre[wb.joint()].times(t);
             }
             flangeNow = a.flange(theta, pre);
+        }
+        if (targetPlay != null) {
+            // gravity (straight down the base's z) seen from the flange
+            double[] g = flangeNow.inverse().rotate(new double[] {0, 0, -1});
+            double[] d = targetPlay.shift(g);
+            onFlange = new Rigid(onFlange.r(), Rigid.plus(onFlange.p(), d));
         }
         Rigid tool = flangeNow.times(onFlange);
         if (sag != null) {
@@ -756,60 +796,64 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay);
+    }
+
+    public WorldRobot withTargetPlay(TargetPlay p) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay);
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -81,6 +81,8 @@ public final class Diagnoser {
     static final double MAX_TILT_PER_NM = 1e-5;
     /** A bearing's tilt across its axis beyond this (about 3.5 arc-minutes RMS) would be a failed bearing, not a wobble, rad. */
     static final double MAX_WOBBLE_RAD = 1e-3;
+    /** Nor a shift of a bearing along its axis beyond this, RMS over a turn (a large slewing ring's axial runout is 0.05-0.3 mm), m. */
+    static final double MAX_RUNOUT_M = 1e-3;
     /** Nor a holder that bends more than this under its own weight (it would be seen bending), m. */
     static final double MAX_TOOL_SAG_M = 2e-3;
     /** Largest plausible turn of the base or the instrument with time or temperature, rad (2 mm at 2 m). */
@@ -2488,7 +2490,14 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         int j = e.joint(), k = e.source();
         switch (e.kind()) {
-            case PERIODIC, SCALE -> smoothCurves(out, rows, q -> q[j], (lo, hi, nb) -> Effect.smooth(j, lo, hi, nb));
+            case PERIODIC -> smoothCurves(out, rows, q -> q[j], (lo, hi, nb) -> Effect.smooth(j, lo, hi, nb));
+            case SCALE -> {
+                smoothCurves(out, rows, q -> q[j], (lo, hi, nb) -> Effect.smooth(j, lo, hi, nb));
+                // a scale that changes with another joint's angle (a hose twisted by j, stiffer as k bends): the two-joint
+                // fallback nests the scale and holds that change, which no function of j alone does
+                for (int o = 0; o < (rows.isEmpty() ? 0 : rows.get(0).q().length); o++)
+                    if (o != j && (model == null || !model.isPrismatic(o)) && moves(rows, o)) out.add(Effect.pair(j, o));
+            }
             case DRIFT -> {
                 // the base or the instrument turning as well as moving with the same reading (a floor or a stand that tilts)
                 Effect.Along a = e.usesTimeProxy() ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
@@ -2524,6 +2533,12 @@ public final class Diagnoser {
             hi = Math.max(hi, th);
         }
         return hi > lo ? Effect.smoothFollowingModelAngle(j, j, model, lo, hi, Effect.SMOOTH_BASIS) : null;
+    }
+
+    /** Whether joint {@code j} takes more than one value over the poses. */
+    private static boolean moves(List<Measurement> rows, int j) {
+        for (Measurement r : rows) if (Math.abs(r.q()[j] - rows.get(0).q()[j]) > 1e-6) return true;
+        return false;
     }
 
     /** A smooth curve over [lo, hi] with nb functions. */
@@ -3754,8 +3769,10 @@ public final class Diagnoser {
                 // the base's tilt, or a drive of the arm's first joints giving way under the same weight
                 case BASE_MOMENT -> { if (k == Effect.Kind.BASE_TILT || k == Effect.Kind.COMPLIANCE && e.joint() <= 2) return e; }
                 case AXIS_WOBBLE -> { if (k == Effect.Kind.AXIS_WOBBLE && e.joint() == f.probe.joint) return e; }
+                case AXIAL_RUNOUT -> { if (k == Effect.Kind.AXIAL_RUNOUT && e.joint() == f.probe.joint) return e; }
                 // the holder's sag, or a wrist drive giving way under the tool's weight
                 case TOOL_GRAVITY -> { if (k == Effect.Kind.TOOL_SAG || k == Effect.Kind.COMPLIANCE && e.joint() >= 3) return e; }
+                case TOOL_PLAY -> { if (k == Effect.Kind.TOOL_PLAY || k == Effect.Kind.COMPLIANCE && e.joint() >= 3) return e; }
                 case TARGET_SIGHT -> { if (k == Effect.Kind.TARGET_INCIDENCE || k == Effect.Kind.INSTRUMENT) return e; }
                 // the link's bending, or its joint's spring (a beam's special case)
                 case LINK_BEND -> { if ((k == Effect.Kind.LINK_SAG || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint) return e; }
@@ -3968,9 +3985,15 @@ public final class Diagnoser {
                     + "upper arm that twists lifts one and lowers the other.";
             case TARGET_SIGHT -> "measure a few poses again with an open-air (hollow) reflector, or with the reflector turned in its "
                     + "nest toward the instrument: an error that follows the line of sight in the tool's frame is the reflector's.";
+            case TOOL_PLAY -> "measure one place with the tool leaning one way and then the other, and again pointing down: a "
+                    + "play taken up by the tool's weight moves the point by about the same amount whichever way it leans; tighten "
+                    + "the target's nest or the tool's mount, or check the flange bearing's clearance.";
             case TOOL_GRAVITY -> "measure a few places twice, with the flange pointing down and then sideways (and the "
                     + "holder turned about the flange's axis): a holder that bends moves the point toward gravity; shorten or "
                     + "stiffen the target's holder.";
+            case AXIAL_RUNOUT -> String.format(Locale.ROOT, "put a dial indicator on the link beyond joint %d, along the joint's axis, "
+                    + "and read it while the joint turns slowly through its range, both ways: a bearing that runs out axially repeats "
+                    + "its pattern every turn; check the bearing's preload and the seat of its races.", f.probe.joint + 1);
             case AXIS_WOBBLE -> String.format(Locale.ROOT, "put a dial indicator or an electronic level on the link beyond joint %d "
                     + "and read its tilt across the axis while the joint turns slowly through its range, both ways: a bearing that "
                     + "wobbles repeats its pattern every turn; check the bearing's preload.", f.probe.joint + 1);
@@ -4209,7 +4232,7 @@ public final class Diagnoser {
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
-                case AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
+                case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -4231,8 +4254,12 @@ public final class Diagnoser {
             java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
             for (Locator.Found f : found) if (f.probe.var == Locator.Var.AXIS_WOBBLE && f.probe.joint == j) hs.add(f.probe.harmonic);
             if (!hs.isEmpty()) out.add(Effect.axisWobble(model, j, hs.stream().mapToInt(Integer::intValue).toArray()));
+            java.util.TreeSet<Integer> zs = new java.util.TreeSet<>();
+            for (Locator.Found f : found) if (f.probe.var == Locator.Var.AXIAL_RUNOUT && f.probe.joint == j) zs.add(f.probe.harmonic);
+            if (!zs.isEmpty()) out.add(Effect.axialRunout(model, j, zs.stream().mapToInt(Integer::intValue).toArray()));
         }
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) out.add(Effect.toolSag(model, Effect.DOWN));
+        if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_PLAY)) out.add(Effect.toolPlay(model, Effect.DOWN));
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND || f.probe.var == Locator.Var.LINK_TWIST) out.add(f.probe.bend);
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.TARGET_SIGHT) out.add(f.probe.incidence);
         return out;
@@ -5617,11 +5644,12 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "RMS error %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
             case PAIR -> {
-                // the products' amplitudes as a transmission error's (twice, as the smooth error's), the linear terms as a coupling's
-                double amp = 0;
-                for (int i = 0; i < 4; i++) amp = Math.max(amp, Math.abs(v[i]));
-                double lin = 0;
-                for (int i = 4; i < v.length; i++) lin = Math.max(lin, Math.abs(v[i]));
+                // the periodic terms' amplitudes (the products, k's once-per-turn term) as a transmission error's (twice, as the
+                // smooth error's), the terms proportional to an angle as a coupling's
+                double amp = 0, lin = 0;
+                for (int i = 0; i < v.length; i++)
+                    if (i < 4 || i >= 9) amp = Math.max(amp, Math.abs(v[i]));
+                    else lin = Math.max(lin, Math.abs(v[i]));
                 c.plausible = amp < 2 * MAX_PERIODIC_RAD && lin < MAX_COUPLING;
                 c.plausibility = String.format(Locale.ROOT, "largest product amplitude %.4f deg < %.2f deg, linear terms %.2g < %.0e",
                         Math.toDegrees(amp), Math.toDegrees(2 * MAX_PERIODIC_RAD), lin, MAX_COUPLING);
@@ -5663,10 +5691,20 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "every term's move half a radian off the mean sight within %.0f mm (largest %.3f mm)",
                         MAX_INCIDENCE_M * 1e3, m * 1e3);
             }
+            case TOOL_PLAY -> {
+                double d = Words.playSize(v);
+                c.plausible = d < MAX_TOOL_SAG_M;
+                c.plausibility = String.format(Locale.ROOT, "play %.3f mm < %.0f mm", d * 1e3, MAX_TOOL_SAG_M * 1e3);
+            }
             case TOOL_SAG -> {
                 double d = Words.sagSpan(v);
                 c.plausible = d < MAX_TOOL_SAG_M;
                 c.plausibility = String.format(Locale.ROOT, "deflection %.3f mm < %.0f mm", d * 1e3, MAX_TOOL_SAG_M * 1e3);
+            }
+            case AXIAL_RUNOUT -> {
+                double r = Words.rmsWobble(v);
+                c.plausible = r < MAX_RUNOUT_M;
+                c.plausibility = String.format(Locale.ROOT, "RMS shift %.4f mm < %.1f mm", r * 1e3, MAX_RUNOUT_M * 1e3);
             }
             case AXIS_WOBBLE -> {
                 double r = Words.rmsWobble(v);

@@ -78,7 +78,10 @@ public final class Effect {
                 + "compensation), not the robot, of no known family"),
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
         AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family"),
+        AXIAL_RUNOUT("axial-runout", "The arm beyond a joint moving along the joint's axis as it turns (its bearing runs out "
+                + "axially), of no known family"),
         TOOL_SAG("tool-sag", "The measured point's holder bending under its own weight, of no known family"),
+        TOOL_PLAY("tool-play", "The measured point's holder or the flange tipping within a clearance toward gravity, of no known family"),
         TARGET_INCIDENCE("target-incidence", "Error of the measured point that follows the direction the instrument sees it from, "
                 + "in the tool's frame: a reflector seen off its axis, of no known family"),
         LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family"),
@@ -586,19 +589,23 @@ public final class Effect {
 
     /**
      * Error of drive {@code joint} that depends on its own angle and joint {@code other}'s together:
-     * Δq = v·(sin q_j sin q_k, sin q_j cos q_k, cos q_j sin q_k, cos q_j cos q_k, q_j, q_k, q_j q_k):
-     * the first-order products of the sines and cosines, which no function of one joint alone
-     * holds, and the two angles' Taylor terms to the first interaction (linear in each, and their
-     * product), so that a scale error of j and a coupling of j from k are nested in it (a coupling
-     * must beat it on held-out error) and an interaction that is not periodic is held too.
+     * Δq = v·(sin q_j sin q_k, sin q_j cos q_k, cos q_j sin q_k, cos q_j cos q_k, q_j, q_k, q_j q_k,
+     * q_j cos q_k, q_j sin q_k, cos q_k, sin q_k): the first-order products of the sines and cosines,
+     * which no function of one joint alone holds; the two angles' Taylor terms to the first
+     * interaction (linear in each, and their product), so that a scale error of j and a coupling of j
+     * from k are nested in it (each must beat it on held-out error) and an interaction that is not
+     * periodic is held too; and a scale of j that changes once per turn of k, with k's own once-per-
+     * turn term (a load on drive j growing with its travel from where it is free, made stiffer or
+     * softer by joint k's angle: a hose or cable twisted by j and drawn over the housing as k bends),
+     * which over more than a turn of j no product of sines holds.
      */
     public static Effect pair(int joint, int other) {
         if (joint == other) throw new IllegalArgumentException("a joint pair needs two joints");
         return new Effect(Kind.PAIR, joint, other, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, PAIR_COLUMNS);
     }
 
-    /** Columns of the two-joint fallback: four products, then q_j, q_k and q_j q_k. */
-    static final int PAIR_COLUMNS = 7;
+    /** Columns of the two-joint fallback: four products, q_j, q_k and q_j q_k, then j's scale changing with k and k's once-per-turn term. */
+    static final int PAIR_COLUMNS = 11;
 
     /** The four first-order products of joints j and k's sines and cosines (the two-joint locate probe; the fallback's first columns). */
     static void pairProducts(double[] q, int j, int k, double[] g) {
@@ -860,6 +867,30 @@ public final class Effect {
     }
 
     /**
+     * A joint's bearing running out along its axis (outside every family): the rotating ring follows
+     * the axial waviness of its race, or a race's face runs out, so everything beyond the joint moves
+     * along the joint's axis as it turns, δ(θ) = Σ_h (z_c cos hθ + z_s sin hθ) (the axial error
+     * motion of ISO 230-7:2015; Harris &amp; Kotzalas, Rolling Bearing Analysis, on raceway waviness),
+     * θ the joint's own turn (its model angle). The measured point moves by δ(θ) ẑ, ẑ the axis in
+     * base coordinates; the measured frame does not turn. Two parameters per order (m). No error of a
+     * joint's angle moves a point along that joint's own axis, and a tilt of the axis moves it in
+     * proportion to its distance from the axis, so the shift is its own structure. A constant shift
+     * (order 0) is the geometry's.
+     */
+    public static Effect axialRunout(KinematicModel model, int joint, int[] orders) {
+        if (model.isPrismatic(joint)) throw new IllegalArgumentException("joint " + (joint + 1) + " is prismatic: no bearing to run out");
+        for (int h : orders) if (h < 1) throw new IllegalArgumentException("an axial runout's order is >= 1, not " + h);
+        return new Effect(Kind.AXIAL_RUNOUT, joint, -1, null, false, Double.NaN, Double.NaN, orders.clone(), Double.NaN, Double.NaN, model, null);
+    }
+
+    /** The joint's axis in base coordinates at q, into {@code z}; returns the joint's own turn (its model angle). */
+    private double runoutFrame(double[] q, double[] z) {
+        Pose rotor = model.linkFrames(q)[joint + 1]; // z on the joint's axis
+        for (int a = 0; a < 3; a++) z[a] = rotor.rot(a, 2);
+        return model.theta(q)[joint];
+    }
+
+    /**
      * An axis wobble's columns at q (3 x size, row-major, base frame): the distal bodies' rotation
      * per unit of each parameter; and a point {@code o} of the joint's axis.
      */
@@ -904,6 +935,40 @@ public final class Effect {
         Effect e = new Effect(Kind.TOOL_SAG, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
         e.down = down.times(1 / down.norm());
         return e;
+    }
+
+    /**
+     * The measured point's holder, or the flange on its bearing, tipping within a clearance toward
+     * gravity (outside every family): a loose target nest or tool mount, or the radial clearance of
+     * the flange's bearing pair, is taken up to the side the tool's weight pulls it across its axis,
+     * by about the same amount whichever way that is once the pull is more than the friction holds
+     * (a play taken up by a load; Nordin &amp; Gutman 2002 for a play, Harris &amp; Kotzalas for a
+     * bearing's clearance). With ĝ_f gravity's direction in the flange's frame (z the tool's axis),
+     * the side it pulls to is u = (ĝ_x, ĝ_y) / √(ĝ_x² + ĝ_y² + {@link #PLAY_TAKE_UP}²), a unit vector
+     * across the axis once the axis leans, fading where it hangs straight down or up; the point moves
+     * by Δp_f = B·u (B 3 x 2: the play's sizes and directions unknown), Δp = R·B·u in base axes. A
+     * holder that bends (tool-sag) moves in proportion to the pull instead. Six parameters (m);
+     * positions only.
+     */
+    public static Effect toolPlay(KinematicModel model, Vec3 down) {
+        if (!(down.norm() > 0)) throw new IllegalArgumentException("no gravity direction");
+        Effect e = new Effect(Kind.TOOL_PLAY, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.down = down.times(1 / down.norm());
+        return e;
+    }
+
+    /** The lean of the tool's axis (as the part of gravity across it) over which a play is taken up: about 9 deg. */
+    static final double PLAY_TAKE_UP = 0.15;
+
+    /** The 3 x 6 regressor (row-major, base axes) of {@link #toolPlay} at flange pose {@code f}. */
+    static void toolPlayRegressor(Pose f, Vec3 down, double[] g3) {
+        double gx = f.rot(0, 0) * down.x() + f.rot(1, 0) * down.y() + f.rot(2, 0) * down.z();
+        double gy = f.rot(0, 1) * down.x() + f.rot(1, 1) * down.y() + f.rot(2, 1) * down.z();
+        double n = Math.sqrt(gx * gx + gy * gy + PLAY_TAKE_UP * PLAY_TAKE_UP);
+        double[] u = {gx / n, gy / n};
+        for (int axis = 0; axis < 3; axis++)
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 2; b++) g3[axis * 6 + 2 * a + b] = f.rot(axis, a) * u[b];
     }
 
     /** The kinematic model an effect on the measured point works with (thermal growth per link, a step of the target, a wobble, a tool sag); null otherwise. */
@@ -1325,7 +1390,7 @@ public final class Effect {
     public boolean isFallback() {
         return shaftOrders() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
                 || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.RANGE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
-                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.TOOL_SAG || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
+                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 
     /**
@@ -1526,7 +1591,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG,
                  LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
@@ -1570,7 +1635,9 @@ public final class Effect {
             case BACKLASH -> 1 + 2 * runout.length;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT -> nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
+            case AXIAL_RUNOUT -> 2 * harmonics.length;
             case TOOL_SAG -> 9;
+            case TOOL_PLAY -> 6;
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case LINK_TWIST -> TWIST_ARM_TERMS + (sagPayload ? HAND_TERMS : 0);
@@ -1609,7 +1676,9 @@ public final class Effect {
             case SCALE -> out.add("eps");
             case COUPLING -> out.add("kappa");
             case SMOOTH -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
-            case PAIR -> { out.add("ss"); out.add("sc"); out.add("cs"); out.add("cc"); out.add("lin_j"); out.add("lin_k"); out.add("lin_jk"); }
+            case PAIR -> {
+                for (String n : new String[] {"ss", "sc", "cs", "cc", "lin_j", "lin_k", "lin_jk", "lin_j_ck", "lin_j_sk", "ck", "sk"}) out.add(n);
+            }
             case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
             case BASE_TURN -> {
                 for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("r" + a + k);
@@ -1624,6 +1693,7 @@ public final class Effect {
             case AXIS_WOBBLE -> {
                 for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
             }
+            case AXIAL_RUNOUT -> { for (int h : harmonics) { out.add("zc" + h); out.add("zs" + h); } }
             case LINK_SAG -> {
                 out.add("d_weight");
                 out.add("t_weight");
@@ -1635,6 +1705,7 @@ public final class Effect {
                 if (sagPayload) out.addAll(List.of("t_payload_o", "t_payload_x", "t_payload_y", "t_payload_z"));
             }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
+            case TOOL_PLAY -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y"}) out.add("p" + a + b); }
             case TARGET_INCIDENCE -> {
                 for (String a : new String[] {"x", "y", "z"}) for (String m : INCIDENCE_ACROSS) out.add(a + "_" + m);
                 for (String m : INCIDENCE_ALONG) out.add("r_" + m);
@@ -1673,12 +1744,13 @@ public final class Effect {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
-            case POINT_SMOOTH, TARGET_STEP, RANGE_STEP, TOOL_SAG, TARGET_INCIDENCE -> "m";
+            case POINT_SMOOTH, TARGET_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
+            case AXIAL_RUNOUT -> "m";
             case LINK_SAG -> "m";
             case LINK_TWIST -> "rad";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
@@ -1748,10 +1820,10 @@ public final class Effect {
                     : String.format(Locale.ROOT, " (about %.0f deg%s)", Math.toDegrees(tiltAzimuth),
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
-            case TOOL_SAG, TARGET_INCIDENCE -> kind.json;
+            case TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> kind.json;
             case LINK_TWIST -> kind.json + " j2 (upper arm)";
             case LINK_SAG -> kind.json + " j" + (joint + 1) + (joint == 1 ? " (upper arm)" : joint == 2 ? " (forearm)" : "");
-            case AXIS_WOBBLE -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
+            case AXIS_WOBBLE, AXIAL_RUNOUT -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
                     + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
                     : harmonics[0] + " times") + " per turn)";
             case INSTRUMENT -> kind.json + " (" + sight.words + (Double.isFinite(cycle)
@@ -1853,9 +1925,14 @@ public final class Effect {
             case SMOOTH -> bspline(smoothVariable(q), lo, hi, g);
             case PAIR -> {
                 pairProducts(q, joint, source, g);
+                double co = Math.cos(q[source]), so = Math.sin(q[source]);
                 g[4] = q[joint];
                 g[5] = q[source];
                 g[6] = q[joint] * q[source];
+                g[7] = q[joint] * co;
+                g[8] = q[joint] * so;
+                g[9] = co;
+                g[10] = so;
             }
             // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
@@ -1865,7 +1942,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG,
                  LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
@@ -1885,9 +1962,22 @@ public final class Effect {
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
             case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
+            case TOOL_PLAY -> toolPlayRegressor(model.flange(q), down, g3);
             case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), sightOrigin, sightAxis, sightAcross, pointBase, g3);
             case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
             case LINK_TWIST -> linkTwistColumns(q, c, pointBase, g3, null);
+            case AXIAL_RUNOUT -> {
+                // the distal bodies move along the joint's axis: Δp = δ(θ) ẑ, whatever the point
+                double[] z = new double[3];
+                double th = runoutFrame(q, z);
+                for (int i = 0; i < harmonics.length; i++) {
+                    double cs = Math.cos(harmonics[i] * th), sn = Math.sin(harmonics[i] * th);
+                    for (int a = 0; a < 3; a++) {
+                        g3[a * k + 2 * i] = cs * z[a];
+                        g3[a * k + 2 * i + 1] = sn * z[a];
+                    }
+                }
+            }
             case AXIS_WOBBLE -> {
                 // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)
                 double[] w = new double[3 * k], o = new double[3];
@@ -2247,8 +2337,8 @@ public final class Effect {
             case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
-            case AXIS_WOBBLE -> { }
-            case TOOL_SAG -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
+            case AXIS_WOBBLE, AXIAL_RUNOUT -> { }
+            case TOOL_SAG, TOOL_PLAY -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
             case TARGET_INCIDENCE -> {
                 p.put("axis_x", sightAxis.x());
                 p.put("axis_y", sightAxis.y());
@@ -2293,7 +2383,7 @@ public final class Effect {
         List<Integer> js = d.joints();
         int need = switch (kind) {
             case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, TOOL_SAG,
-                 TARGET_INCIDENCE -> 0;
+                 TOOL_PLAY, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -2312,7 +2402,7 @@ public final class Effect {
             case COMPLIANCE -> {
                 // a compliance "c" is a stiffness on the file's masses; without them only the remassed form means anything
                 if (gravity == null || gravity.massesUnknown() && ps.containsKey("c"))
-                    throw new InputException(file, 0, 0, "mass_model", "joint-compliance needs the robot's mass_model");
+                    throw needsMassModel(d, file, "joint-compliance");
                 yield ps.containsKey("c3") ? complianceStiffening(js.get(0) - 1, gravity)
                         : ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
@@ -2332,7 +2422,7 @@ public final class Effect {
                     // the masses it was fitted with: the robot file's, or estimated from the link lengths when the file had none
                     GravityTorques g = ps.containsKey("held_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
                     if (g == null || g.massesUnknown())
-                        throw new InputException(file, 0, 0, "mass_model", "backlash held by gravity needs the robot's mass_model");
+                        throw needsMassModel(d, file, "backlash held by gravity");
                     if (!(t >= 0)) throw d.error(file, "parameters_si.held_above_nm", "must be >= 0, got " + t);
                     double wd = ps.containsKey("held_width") ? require(d, "held_width", file) : 0;
                     if (!(wd >= 0 && wd < 1)) throw d.error(file, "parameters_si.held_width", "must be in [0, 1), got " + wd);
@@ -2415,11 +2505,21 @@ public final class Effect {
                 yield linkTwist(model, ps.containsKey("t_payload_o"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
+            case TOOL_PLAY -> toolPlay(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
             case TARGET_INCIDENCE -> {
                 Vec3 axis = new Vec3(require(d, "axis_x", file), require(d, "axis_y", file), require(d, "axis_z", file));
                 if (!(axis.norm() > 0))
                     throw d.error(file, "parameters_si.axis_x", "the sight axis must not be zero");
                 yield targetIncidence(model, instrumentOf(d, file), axis);
+            }
+            case AXIAL_RUNOUT -> {
+                java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+                for (String key : ps.keySet()) if (key.matches("zc\\d+")) hs.add(Integer.parseInt(key.substring(2)));
+                if (hs.isEmpty() || hs.first() < 1)
+                    throw d.error(file, "parameters_si", "needs zc1, zs1 (or another order >= 1)");
+                if (model.isPrismatic(js.get(0) - 1))
+                    throw d.error(file, "joints", "axial-runout needs a revolute joint, joint " + js.get(0) + " is prismatic");
+                yield axialRunout(model, js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
             }
             case AXIS_WOBBLE -> {
                 java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
@@ -2432,7 +2532,7 @@ public final class Effect {
             }
             case BASE_TILT -> {
                 if (gravity == null || gravity.massesUnknown())
-                    throw new InputException(file, 0, 0, "mass_model", "base-tilt needs the robot's mass_model");
+                    throw needsMassModel(d, file, "base-tilt");
                 if (ps.containsKey("foot_edges")) {
                     if (require(d, "foot_edges", file) != 4)
                         throw d.error(file, "parameters_si.foot_edges", "must be 4 (a square foot)");
@@ -2493,11 +2593,21 @@ public final class Effect {
         List<String> names = e.parameterNames();
         double[] v = new double[names.size()];
         for (int i = 0; i < v.length; i++)
-            // a two-joint error written before it had its Taylor terms has none, a base tilt before its slide none
-            v[i] = (kind == Kind.PAIR && names.get(i).startsWith("lin_") || kind == Kind.BASE_TILT && names.get(i).equals("slide"))
+            // a two-joint error written before it had its Taylor terms or its changing scale has none, a base tilt before its slide none
+            v[i] = (kind == Kind.PAIR && i >= 4 || kind == Kind.BASE_TILT && names.get(i).equals("slide"))
                     && !d.parameters().containsKey(names.get(i)) ? 0
                     : require(d, names.get(i), file);
         return new Term(e, v);
+    }
+
+    /**
+     * An effect that needs the robot's masses in a file without {@code mass_model}: reported at the
+     * effect (the field the file lacks has no place of its own), or as the field {@code mass_model}
+     * for an effect made in code.
+     */
+    private static InputException needsMassModel(EffectDescription d, String file, String what) {
+        return d.source() == null ? new InputException(file, 0, 0, "mass_model", what + " needs the robot's mass_model")
+                : d.error(file, "", what + " needs the robot's mass_model, which the file does not have");
     }
 
     /** Each re-estimated mass's factor as {@code prefix + name} (a factor of 1 is left out). */

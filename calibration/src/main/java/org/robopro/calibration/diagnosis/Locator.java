@@ -40,7 +40,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, TOOL_GRAVITY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -317,7 +317,9 @@ final class Locator {
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
         out.addAll(baseMoment(t));
         out.addAll(axisWobbles(t));
+        out.addAll(axialRunouts(t));
         out.add(toolGravity(t));
+        out.add(toolPlay(t));
         out.addAll(linkBends(t));
         out.addAll(linkTwist(t));
         out.addAll(sightProbes(t, steps, steps));
@@ -474,6 +476,33 @@ final class Locator {
         return p;
     }
 
+    /** The measured point's holder or the flange tipping within a clearance toward gravity ({@link Effect#toolPlay}). */
+    static Probe toolPlay(Diagnoser.Tester t) {
+        Diagnoser.Work w = t.w;
+        Vec3 down = Effect.DOWN;
+        int poses = w.rows.size();
+        double[][][] rf = new double[t.ends][poses][];
+        double[][] x = new double[t.ends][poses];
+        for (int e = 0; e < t.ends; e++)
+            for (int i = 0; i < poses; i++) {
+                Pose f = w.model.flange(t.endRows.get(e).get(i).q());
+                rf[e][i] = new double[18];
+                Effect.toolPlayRegressor(f, down, rf[e][i]);
+                x[e][i] = Effect.angleFromDown(f, down);
+            }
+        // column c moves the point along base axis a by rf[a·6 + c]
+        Probe p = columns(t, 6, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
+                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[6 + col] + t.endDTrans[e][row * 3 + 2] * g[12 + col],
+                18, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 18));
+        p.var = Var.TOOL_PLAY;
+        p.variable = "the flange's orientation to gravity";
+        p.shape = "the measured point moves across the tool's axis toward the side gravity pulls it to, by the same amount whichever "
+                + "way (a play taken up by the tool's weight)";
+        p.x = x;
+        p.xLabel = "angle of the flange's axis from straight down (deg)";
+        return p;
+    }
+
     /**
      * The upper arm and the forearm each bending under gravity as a beam ({@link Effect#linkSag}):
      * its columns, on links that the geometric model places at least {@link Effect#MIN_LINK_M}
@@ -561,6 +590,38 @@ final class Locator {
                 p.variable = "joint " + (j + 1) + " angle";
                 p.shape = "the axis of joint " + (j + 1) + " tilts across itself " + (h == 1 ? "once" : h + " times")
                         + " per turn of the joint (its bearing wobbles)";
+                p.x = qx;
+                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
+                out.add(p);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * A joint's bearing running out along its axis ({@link Effect#axialRunout}): for each revolute
+     * joint that turns over a range and each order h up to {@link #WOBBLE_ORDERS}, the two columns of
+     * the shift along the axis, cos and sin of h·θ. Positions (and orientations, which it leaves), one
+     * pose per row.
+     */
+    static List<Probe> axialRunouts(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        if (t.ends != 1) return out;
+        KinematicModel model = t.w.model;
+        int poses = t.m / t.rpp;
+        for (int j = 0; j < t.dof; j++) {
+            double[][] qx = new double[1][poses];
+            for (int i = 0; i < poses; i++) qx[0][i] = Math.toDegrees(t.endRows.get(0).get(i).q(j));
+            if (model.isPrismatic(j) || !varies(qx, 30)) continue;
+            for (int h = 1; h <= WOBBLE_ORDERS; h++) {
+                Effect e = Effect.axialRunout(model, j, new int[] {h});
+                Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
+                p.var = Var.AXIAL_RUNOUT;
+                p.joint = j;
+                p.harmonic = h;
+                p.variable = "joint " + (j + 1) + " angle";
+                p.shape = "the arm beyond joint " + (j + 1) + " moves along the joint's axis " + (h == 1 ? "once" : h + " times")
+                        + " per turn of the joint (its bearing runs out axially)";
                 p.x = qx;
                 p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);

@@ -104,8 +104,8 @@ final class Plots {
             };
             case ZERO_STEP, TARGET_STEP, RANGE_STEP -> "time since start (s)";
             case BASE_TILT -> "moment of the arm's weight about the base's tipping axis (N·m)";
-            case AXIS_WOBBLE -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
-            case TOOL_SAG -> "angle of the flange's axis from straight down (deg)";
+            case AXIS_WOBBLE, AXIAL_RUNOUT -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
+            case TOOL_SAG, TOOL_PLAY -> "angle of the flange's axis from straight down (deg)";
             case TARGET_INCIDENCE -> "angle of the line of sight from its mean direction in the tool's frame (deg)";
             case LINK_SAG -> "share of gravity across link " + (e.joint() + 1) + " (g)";
             case LINK_TWIST -> "the flange's lever across the upper arm's plane, times gravity across the arm (m)";
@@ -136,10 +136,10 @@ final class Plots {
             case ZERO_STEP, TARGET_STEP, RANGE_STEP -> c.timeS();
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
-            case ANGLE_STEP, AXIS_WOBBLE -> Math.toDegrees(row.q(e.joint()));
+            case ANGLE_STEP, AXIS_WOBBLE, AXIAL_RUNOUT -> Math.toDegrees(row.q(e.joint()));
             case LINK_SAG -> e.sagAcross(row.q());
             case LINK_TWIST -> e.twistLever(row.q());
-            case TOOL_SAG -> Effect.angleFromDown(e.model().flange(row.q()), e.down());
+            case TOOL_SAG, TOOL_PLAY -> Effect.angleFromDown(e.model().flange(row.q()), e.down());
             case TARGET_INCIDENCE -> Double.NaN; // from the predicted point (alongDisplacement)
             case THERMAL_LINK -> c.tempC();
             case DRIFT -> e.usesTimeProxy() ? c.timeS() : c.tempC();
@@ -171,7 +171,7 @@ final class Plots {
                 for (int i = 0; i < g.length; i++) s += g[i] * v[i];
                 yield s;
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, TOOL_SAG, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP, RANGE_STEP -> Double.NaN;

@@ -143,12 +143,14 @@ class EffectTest {
         double[] p12 = new double[12];
         for (int i = 0; i < p12.length; i++) p12[i] = 1e-5 * Math.cos(i);
         return List.of(new Effect.Term(Effect.smooth(2, -0.9, 0.9, 13), s13),
-                new Effect.Term(Effect.pair(1, 3), new double[] {2e-4, -1e-4, 5e-5, 3e-5, 4e-5, -6e-5, 2e-5}),
+                new Effect.Term(Effect.pair(1, 3), new double[] {2e-4, -1e-4, 5e-5, 3e-5, 4e-5, -6e-5, 2e-5, -3e-5, 1e-5, 7e-5, -4e-5}),
                 new Effect.Term(Effect.pointSmooth(Effect.Along.REACH, 0.3, 1.8), p12),
                 new Effect.Term(Effect.pointSmooth(Effect.Along.TIME, 0, 4000), p12),
                 new Effect.Term(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, 0.3, 1.8), p12),
                 new Effect.Term(Effect.zeroDrift(2, Effect.Along.TEMPERATURE, 20, 32), new double[] {1e-4, -2e-4, 3e-4, 1e-4}),
-                new Effect.Term(Effect.zeroStep(1, 1500), new double[] {3e-4}));
+                new Effect.Term(Effect.zeroStep(1, 1500), new double[] {3e-4}),
+                new Effect.Term(Effect.axialRunout(model, 0, new int[] {2, 3}), new double[] {5e-5, -3e-5, 2e-5, 4e-5}),
+                new Effect.Term(Effect.toolPlay(model, Effect.DOWN), new double[] {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5}));
     }
 
     @Test

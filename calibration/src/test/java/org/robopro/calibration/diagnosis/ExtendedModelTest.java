@@ -60,6 +60,14 @@ class ExtendedModelTest {
         var e = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
                 () -> ExtendedModel.of(withCompliance, "x.robot.json"));
         assertTrue(e.getMessage().contains("x.robot.json") && e.getMessage().contains("mass_model"), e.getMessage());
+
+        // read from a file, the error points at the effect that needs the masses (the missing field has no line)
+        String text = RobotFile.format(withCompliance);
+        var fromFile = org.junit.jupiter.api.Assertions.assertThrows(org.robopro.models.InputException.class,
+                () -> ExtendedModel.of(RobotFile.parse("x.robot.json", text), "x.robot.json"));
+        assertEquals(lineAt(text, text.lastIndexOf('{', text.indexOf("\"joint-compliance\""))), fromFile.line(), fromFile.getMessage());
+        assertEquals("effects[0]", fromFile.field(), fromFile.getMessage());
+        assertTrue(fromFile.getMessage().contains("mass_model"), fromFile.getMessage());
     }
 
     @Test
