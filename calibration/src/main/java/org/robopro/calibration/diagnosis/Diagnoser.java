@@ -5692,7 +5692,7 @@ public final class Diagnoser {
                         MAX_INCIDENCE_M * 1e3, m * 1e3);
             }
             case TOOL_PLAY -> {
-                double d = Words.playSize(v);
+                double d = Words.rmsOverCircle(v);
                 c.plausible = d < MAX_TOOL_SAG_M;
                 c.plausibility = String.format(Locale.ROOT, "play %.3f mm < %.0f mm", d * 1e3, MAX_TOOL_SAG_M * 1e3);
             }
@@ -5702,12 +5702,12 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "deflection %.3f mm < %.0f mm", d * 1e3, MAX_TOOL_SAG_M * 1e3);
             }
             case AXIAL_RUNOUT -> {
-                double r = Words.rmsWobble(v);
+                double r = Words.rmsOverCircle(v);
                 c.plausible = r < MAX_RUNOUT_M;
                 c.plausibility = String.format(Locale.ROOT, "RMS shift %.4f mm < %.1f mm", r * 1e3, MAX_RUNOUT_M * 1e3);
             }
             case AXIS_WOBBLE -> {
-                double r = Words.rmsWobble(v);
+                double r = Words.rmsOverCircle(v);
                 c.plausible = r < MAX_WOBBLE_RAD;
                 c.plausibility = String.format(Locale.ROOT, "RMS tilt %.4f deg < %.2f deg", Math.toDegrees(r), Math.toDegrees(MAX_WOBBLE_RAD));
             }

@@ -2512,24 +2512,8 @@ public final class Effect {
                     throw d.error(file, "parameters_si.axis_x", "the sight axis must not be zero");
                 yield targetIncidence(model, instrumentOf(d, file), axis);
             }
-            case AXIAL_RUNOUT -> {
-                java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
-                for (String key : ps.keySet()) if (key.matches("zc\\d+")) hs.add(Integer.parseInt(key.substring(2)));
-                if (hs.isEmpty() || hs.first() < 1)
-                    throw d.error(file, "parameters_si", "needs zc1, zs1 (or another order >= 1)");
-                if (model.isPrismatic(js.get(0) - 1))
-                    throw d.error(file, "joints", "axial-runout needs a revolute joint, joint " + js.get(0) + " is prismatic");
-                yield axialRunout(model, js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
-            }
-            case AXIS_WOBBLE -> {
-                java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
-                for (String key : ps.keySet()) if (key.matches("xc\\d+")) hs.add(Integer.parseInt(key.substring(2)));
-                if (hs.isEmpty() || hs.first() < 1)
-                    throw d.error(file, "parameters_si", "needs xc1, xs1, yc1, ys1 (or another order >= 1)");
-                if (model.isPrismatic(js.get(0) - 1))
-                    throw d.error(file, "joints", "axis-wobble needs a revolute joint, joint " + js.get(0) + " is prismatic");
-                yield axisWobble(model, js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray());
-            }
+            case AXIAL_RUNOUT -> axialRunout(model, revolute(d, model, file), bearingOrders(d, "zc", "zc1, zs1", file));
+            case AXIS_WOBBLE -> axisWobble(model, revolute(d, model, file), bearingOrders(d, "xc", "xc1, xs1, yc1, ys1", file));
             case BASE_TILT -> {
                 if (gravity == null || gravity.massesUnknown())
                     throw needsMassModel(d, file, "base-tilt");
@@ -2598,6 +2582,22 @@ public final class Effect {
                     && !d.parameters().containsKey(names.get(i)) ? 0
                     : require(d, names.get(i), file);
         return new Term(e, v);
+    }
+
+    /** The orders of a bearing's error motion in a file: those of its keys {@code prefix}N (N >= 1). */
+    private static int[] bearingOrders(EffectDescription d, String prefix, String keys, String file) {
+        java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
+        for (String key : d.parameters().keySet())
+            if (key.matches(prefix + "\\d+")) hs.add(Integer.parseInt(key.substring(prefix.length())));
+        if (hs.isEmpty() || hs.first() < 1) throw d.error(file, "parameters_si", "needs " + keys + " (or another order >= 1)");
+        return hs.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** The effect's one joint (0-based), which must be revolute (a bearing's error motion). */
+    private static int revolute(EffectDescription d, KinematicModel model, String file) {
+        int j = d.joints().get(0);
+        if (model.isPrismatic(j - 1)) throw d.error(file, "joints", d.effect() + " needs a revolute joint, joint " + j + " is prismatic");
+        return j - 1;
     }
 
     /**

@@ -452,32 +452,26 @@ final class Locator {
      * only (a point's holder turns no measured frame of its own).
      */
     static Probe toolGravity(Diagnoser.Tester t) {
-        Diagnoser.Work w = t.w;
-        Vec3 down = Effect.DOWN;
-        int poses = w.rows.size();
-        double[][][] rf = new double[t.ends][poses][];
-        double[][] x = new double[t.ends][poses];
-        for (int e = 0; e < t.ends; e++)
-            for (int i = 0; i < poses; i++) {
-                Pose f = w.model.flange(t.endRows.get(e).get(i).q());
-                rf[e][i] = new double[27];
-                Effect.toolSagRegressor(f, down, rf[e][i]);
-                x[e][i] = Effect.angleFromDown(f, down);
-            }
-        // column c moves the point along base axis a by rf[a·9 + c]
-        Probe p = columns(t, 9, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
-                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[9 + col] + t.endDTrans[e][row * 3 + 2] * g[18 + col],
-                27, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 27));
+        Probe p = flangeGravity(t, 9, Effect::toolSagRegressor);
         p.var = Var.TOOL_GRAVITY;
-        p.variable = "the flange's orientation to gravity";
         p.shape = "the measured point moves with the direction of gravity seen from the flange (its holder bends under its own weight)";
-        p.x = x;
-        p.xLabel = "angle of the flange's axis from straight down (deg)";
         return p;
     }
 
     /** The measured point's holder or the flange tipping within a clearance toward gravity ({@link Effect#toolPlay}). */
     static Probe toolPlay(Diagnoser.Tester t) {
+        Probe p = flangeGravity(t, 6, Effect::toolPlayRegressor);
+        p.var = Var.TOOL_PLAY;
+        p.shape = "the measured point moves across the tool's axis toward the side gravity pulls it to, by the same amount whichever "
+                + "way (a play taken up by the tool's weight)";
+        return p;
+    }
+
+    /** The 3 x k regressor (row-major, base axes) of an effect of gravity seen from the flange, at flange pose f. */
+    private interface FlangeRegressor { void at(Pose f, Vec3 down, double[] g3); }
+
+    /** A probe of k columns that move the measured point with gravity seen from the flange (positions only). */
+    private static Probe flangeGravity(Diagnoser.Tester t, int k, FlangeRegressor r) {
         Diagnoser.Work w = t.w;
         Vec3 down = Effect.DOWN;
         int poses = w.rows.size();
@@ -486,18 +480,15 @@ final class Locator {
         for (int e = 0; e < t.ends; e++)
             for (int i = 0; i < poses; i++) {
                 Pose f = w.model.flange(t.endRows.get(e).get(i).q());
-                rf[e][i] = new double[18];
-                Effect.toolPlayRegressor(f, down, rf[e][i]);
+                rf[e][i] = new double[3 * k];
+                r.at(f, down, rf[e][i]);
                 x[e][i] = Effect.angleFromDown(f, down);
             }
-        // column c moves the point along base axis a by rf[a·6 + c]
-        Probe p = columns(t, 6, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
-                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[6 + col] + t.endDTrans[e][row * 3 + 2] * g[12 + col],
-                18, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 18));
-        p.var = Var.TOOL_PLAY;
+        // column c moves the point along base axis a by rf[a·k + c]
+        Probe p = columns(t, k, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
+                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[k + col] + t.endDTrans[e][row * 3 + 2] * g[2 * k + col],
+                3 * k, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 3 * k));
         p.variable = "the flange's orientation to gravity";
-        p.shape = "the measured point moves across the tool's axis toward the side gravity pulls it to, by the same amount whichever "
-                + "way (a play taken up by the tool's weight)";
         p.x = x;
         p.xLabel = "angle of the flange's axis from straight down (deg)";
         return p;
@@ -572,6 +563,35 @@ final class Locator {
      * about the stator's two axes across the joint. Positions and orientations, one pose per row.
      */
     static List<Probe> axisWobbles(Diagnoser.Tester t) {
+        return bearingProbes(t, Var.AXIS_WOBBLE, Effect::axisWobble,
+                (j, h) -> "the axis of joint " + (j + 1) + " tilts across itself " + times(h) + " per turn of the joint (its bearing wobbles)");
+    }
+
+    /**
+     * A joint's bearing running out along its axis ({@link Effect#axialRunout}): for each revolute
+     * joint that turns over a range and each order h, the two columns of the shift along the axis,
+     * cos and sin of h·θ. Positions (and orientations, which it leaves), one pose per row.
+     */
+    static List<Probe> axialRunouts(Diagnoser.Tester t) {
+        return bearingProbes(t, Var.AXIAL_RUNOUT, Effect::axialRunout,
+                (j, h) -> "the arm beyond joint " + (j + 1) + " moves along the joint's axis " + times(h) + " per turn of the joint "
+                        + "(its bearing runs out axially)");
+    }
+
+    /** "once" or "h times". */
+    private static String times(int h) { return h == 1 ? "once" : h + " times"; }
+
+    /** A bearing's error motion at orders of its joint's angle. */
+    private interface BearingEffect { Effect of(KinematicModel model, int joint, int[] orders); }
+
+    /** The words of a bearing probe of joint j at order h. */
+    private interface BearingShape { String of(int joint, int order); }
+
+    /**
+     * A bearing probe of {@code var} for each revolute joint that turns 30° or more and each order up
+     * to {@link #WOBBLE_ORDERS}: the columns of {@code effect} at that one order.
+     */
+    private static List<Probe> bearingProbes(Diagnoser.Tester t, Var var, BearingEffect effect, BearingShape shape) {
         List<Probe> out = new ArrayList<>();
         if (t.ends != 1) return out;
         KinematicModel model = t.w.model;
@@ -582,46 +602,13 @@ final class Locator {
             // a joint that turns less than this shows no pattern of its turn
             if (model.isPrismatic(j) || !varies(qx, 30)) continue;
             for (int h = 1; h <= WOBBLE_ORDERS; h++) {
-                Effect e = Effect.axisWobble(model, j, new int[] {h});
+                Effect e = effect.of(model, j, new int[] {h});
                 Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
-                p.var = Var.AXIS_WOBBLE;
+                p.var = var;
                 p.joint = j;
                 p.harmonic = h;
                 p.variable = "joint " + (j + 1) + " angle";
-                p.shape = "the axis of joint " + (j + 1) + " tilts across itself " + (h == 1 ? "once" : h + " times")
-                        + " per turn of the joint (its bearing wobbles)";
-                p.x = qx;
-                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
-                out.add(p);
-            }
-        }
-        return out;
-    }
-
-    /**
-     * A joint's bearing running out along its axis ({@link Effect#axialRunout}): for each revolute
-     * joint that turns over a range and each order h up to {@link #WOBBLE_ORDERS}, the two columns of
-     * the shift along the axis, cos and sin of h·θ. Positions (and orientations, which it leaves), one
-     * pose per row.
-     */
-    static List<Probe> axialRunouts(Diagnoser.Tester t) {
-        List<Probe> out = new ArrayList<>();
-        if (t.ends != 1) return out;
-        KinematicModel model = t.w.model;
-        int poses = t.m / t.rpp;
-        for (int j = 0; j < t.dof; j++) {
-            double[][] qx = new double[1][poses];
-            for (int i = 0; i < poses; i++) qx[0][i] = Math.toDegrees(t.endRows.get(0).get(i).q(j));
-            if (model.isPrismatic(j) || !varies(qx, 30)) continue;
-            for (int h = 1; h <= WOBBLE_ORDERS; h++) {
-                Effect e = Effect.axialRunout(model, j, new int[] {h});
-                Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
-                p.var = Var.AXIAL_RUNOUT;
-                p.joint = j;
-                p.harmonic = h;
-                p.variable = "joint " + (j + 1) + " angle";
-                p.shape = "the arm beyond joint " + (j + 1) + " moves along the joint's axis " + (h == 1 ? "once" : h + " times")
-                        + " per turn of the joint (its bearing runs out axially)";
+                p.shape = shape.of(j, h);
                 p.x = qx;
                 p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);

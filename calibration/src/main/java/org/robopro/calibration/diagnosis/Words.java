@@ -169,7 +169,7 @@ final class Words {
                     + "explains it: a play taken up by the tool's weight (a loose target nest or tool mount, or clearance in the "
                     + "flange's bearing), not a holder that bends (that moves in proportion to the pull). It is modelled as such so "
                     + "compensation can use it, but check the mount: measure one place with the tool leaning one way and then the "
-                    + "other; tighten the nest or the mount, or check the flange bearing's preload.", 1e3 * playSize(v));
+                    + "other; tighten the nest or the mount, or check the flange bearing's preload.", 1e3 * rmsOverCircle(v));
             case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "
                     + "flange (it drops %.4f mm more with its holder turned to its softest direction than to its stiffest: a bar held "
                     + "across gravity against along it), and none of the "
@@ -181,7 +181,7 @@ final class Words {
                     + "wobbles (runout or waviness of a race, a worn or unloaded main bearing). It is modelled as such so compensation "
                     + "can use it, but check the bearing: put a dial indicator or an electronic level on the link beyond joint %d and "
                     + "read its tilt across the axis while the joint turns slowly through its range.", e.joint() + 1,
-                    wobbleOrders(e), Math.toDegrees(rmsWobble(v)), Math.toDegrees(rmsWobble(v)) * 3600, e.joint() + 1)
+                    wobbleOrders(e), Math.toDegrees(rmsOverCircle(v)), Math.toDegrees(rmsOverCircle(v)) * 3600, e.joint() + 1)
                     + (e.joint() >= 3 ? String.format(Locale.ROOT, " On the wrist, whose axes meet, a tilt across joint %d's axis is also "
                     + "what a neighbouring wrist drive does when its error follows joint %d's angle (a cable or dress pack pulling on the "
                     + "wrist as it winds, a coupling of the wrist's drives), and these poses cannot tell the two apart.", e.joint() + 1,
@@ -191,7 +191,7 @@ final class Words {
                     + "(waviness or a face runout of a race, a worn or unloaded main bearing), which no error of a joint's angle and "
                     + "no tilt of its axis does. It is modelled as such so compensation can use it, but check the bearing: put a dial "
                     + "indicator on the link beyond joint %d, along the axis, and read it while the joint turns slowly through its "
-                    + "range, both ways.", e.joint() + 1, wobbleOrders(e), 1e3 * rmsWobble(v), e.joint() + 1);
+                    + "range, both ways.", e.joint() + 1, wobbleOrders(e), 1e3 * rmsOverCircle(v), e.joint() + 1);
             case TARGET_INCIDENCE -> "The measured positions err with the direction the instrument sees the point from, in the "
                     + "tool's frame" + at + ", and none of the known effects explains it: the reflector, not the robot (a glass-prism "
                     + "reflector seen off its axis refracts the beam, a reflector's optical centre off its sphere's). It is modelled so "
@@ -392,10 +392,12 @@ final class Words {
     }
 
     /**
-     * An axis wobble's tilt across the axis, RMS over a turn (rad): each order's four coefficients
-     * share (x² + y²) / 2; likewise an axial runout's shift along the axis (m) from its two.
+     * RMS over a circle of a form linear in the cosine and sine of its angle, √(Σ v² / 2): an axis
+     * wobble's tilt across the axis over a turn (rad; each order's four coefficients share
+     * (x² + y²) / 2), an axial runout's shift along it (m), a tool play's move across the tool's axis
+     * over the directions it is pulled to (m; B·u with u on the unit circle).
      */
-    static double rmsWobble(double[] v) {
+    static double rmsOverCircle(double[] v) {
         double s = 0;
         for (double x : v) s += x * x;
         return Math.sqrt(s / 2);
@@ -416,13 +418,6 @@ final class Words {
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < 3; i++) { double l = eig.getEigenvalue(i).real; lo = Math.min(lo, l); hi = Math.max(hi, l); }
         return hi - lo;
-    }
-
-    /** A tool play's move across the axis, RMS over the directions it is pulled to (m): √(Σ B² / 2). */
-    static double playSize(double[] v) {
-        double s = 0;
-        for (double x : v) s += x * x;
-        return Math.sqrt(s / 2);
     }
 
     private static String wobbleOrders(Effect e) {
