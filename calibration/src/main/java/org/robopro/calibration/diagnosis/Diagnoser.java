@@ -2490,8 +2490,9 @@ public final class Diagnoser {
 
     /**
      * The generic fallbacks of the variables a family explains: a per-joint smooth spline (at every
-     * resolution the poses support) for a one-joint angle family; for a coupling j←k the two-joint
-     * probe, a smooth curve of q_k on drive j, and, where {@code model}'s linkage couples joint k, a
+     * resolution the poses support) for a one-joint angle family, and for a scale error of joint j
+     * also the two-joint fallback of j with every other joint that moves; for a coupling j←k the
+     * two-joint fallback, a smooth curve of q_k on drive j, and, where {@code model}'s linkage couples joint k, a
      * smooth curve of its model angle θ_k. Thermal growth and drift have none of their own (growth
      * follows the arm's links; the point moving with time or temperature in any shape is what a drift
      * is); they must beat the located ones that are not the point's own displacement.
