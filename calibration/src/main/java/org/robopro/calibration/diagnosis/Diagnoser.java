@@ -2050,15 +2050,16 @@ public final class Diagnoser {
                 Map<String, Measurement> byId = new LinkedHashMap<>();
                 for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
                 org.robopro.kinematics.Pose tool = fin.problem.toolOf(fin.full);
-                List<CalibrationResult.Outlier> extrapolated = valOut.stream().filter(ol -> outsideFitted(selected, byId.get(ol.poseId()), ext, tool) != null).toList();
-                valOut.removeIf(ol -> extrapolated.contains(ol) || inStepGap(selected, byId.get(ol.poseId()), rows));
-                for (CalibrationResult.Outlier ol : extrapolated) {
+                Map<CalibrationResult.Outlier, Effect> extrapolated = new LinkedHashMap<>();
+                for (CalibrationResult.Outlier ol : valOut) {
                     Effect e = outsideFitted(selected, byId.get(ol.poseId()), ext, tool);
-                    notes.add(String.format(Locale.ROOT, "validation pose %s lies beyond the range %s was fitted over on the training "
-                            + "poses and misses by %.4f mm, %.0f robust sigmas: the model's extrapolation there, not a bad reading, so it is "
-                            + "not reported as an outlier and stays in the validation error; measure training poses over that range too",
-                            ol.poseId(), e.label(), ol.residualM() * 1e3, ol.residualM() / ol.robustSigmaM()));
+                    if (e != null) extrapolated.put(ol, e);
                 }
+                valOut.removeIf(ol -> extrapolated.containsKey(ol) || inStepGap(selected, byId.get(ol.poseId()), rows));
+                extrapolated.forEach((ol, e) -> notes.add(String.format(Locale.ROOT, "validation pose %s lies beyond the range %s was "
+                        + "fitted over on the training poses and misses by %.4f mm, %.0f robust sigmas: the model's extrapolation there, not a "
+                        + "bad reading, so it is not reported as an outlier and stays in the validation error; measure training poses over "
+                        + "that range too", ol.poseId(), e.label(), ol.residualM() * 1e3, ol.residualM() / ol.robustSigmaM())));
                 // nor is one the play's other flank explains where gravity hands the gear over: the model's miss, said as such
                 Fit at = fin;
                 List<String> handedOver = valOut.stream().map(CalibrationResult.Outlier::poseId)
@@ -4255,19 +4256,22 @@ public final class Diagnoser {
         return out;
     }
 
+    /** The orders (ascending, each once) at which structures of {@code var} were located on joint {@code j}. */
+    private static int[] ordersFound(List<Locator.Found> found, Locator.Var var, int j) {
+        return found.stream().filter(f -> f.probe.var == var && f.probe.joint == j).mapToInt(f -> f.probe.harmonic).distinct().sorted().toArray();
+    }
+
     /**
-     * The fallbacks of the arm's bodies giving way where they were located: each joint's axis wobble at
-     * every order located for it (one effect per joint), the tool's sag, each link's bending.
+     * The fallbacks of the arm's bodies giving way where they were located: each joint's axis wobble and
+     * axial runout at every order located for it (one effect of each per joint), the tool's sag and
+     * play, each link's bending.
      */
     static List<Effect> bodyShapes(List<Locator.Found> found, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         for (int j = 0; j < model.dof(); j++) {
-            java.util.TreeSet<Integer> hs = new java.util.TreeSet<>();
-            for (Locator.Found f : found) if (f.probe.var == Locator.Var.AXIS_WOBBLE && f.probe.joint == j) hs.add(f.probe.harmonic);
-            if (!hs.isEmpty()) out.add(Effect.axisWobble(model, j, hs.stream().mapToInt(Integer::intValue).toArray()));
-            java.util.TreeSet<Integer> zs = new java.util.TreeSet<>();
-            for (Locator.Found f : found) if (f.probe.var == Locator.Var.AXIAL_RUNOUT && f.probe.joint == j) zs.add(f.probe.harmonic);
-            if (!zs.isEmpty()) out.add(Effect.axialRunout(model, j, zs.stream().mapToInt(Integer::intValue).toArray()));
+            int[] tilts = ordersFound(found, Locator.Var.AXIS_WOBBLE, j), shifts = ordersFound(found, Locator.Var.AXIAL_RUNOUT, j);
+            if (tilts.length > 0) out.add(Effect.axisWobble(model, j, tilts));
+            if (shifts.length > 0) out.add(Effect.axialRunout(model, j, shifts));
         }
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) out.add(Effect.toolSag(model, Effect.DOWN));
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_PLAY)) out.add(Effect.toolPlay(model, Effect.DOWN));
@@ -5659,7 +5663,7 @@ public final class Diagnoser {
                 // smooth error's), the terms proportional to an angle as a coupling's
                 double amp = 0, lin = 0;
                 for (int i = 0; i < v.length; i++)
-                    if (i < 4 || i >= 9) amp = Math.max(amp, Math.abs(v[i]));
+                    if (Effect.pairTermPeriodic(i)) amp = Math.max(amp, Math.abs(v[i]));
                     else lin = Math.max(lin, Math.abs(v[i]));
                 c.plausible = amp < 2 * MAX_PERIODIC_RAD && lin < MAX_COUPLING;
                 c.plausibility = String.format(Locale.ROOT, "largest product amplitude %.4f deg < %.2f deg, linear terms %.2g < %.0e",

@@ -607,6 +607,12 @@ public final class Effect {
     /** Columns of the two-joint fallback: four products, q_j, q_k and q_j q_k, then j's scale changing with k and k's once-per-turn term. */
     static final int PAIR_COLUMNS = 11;
 
+    /** The two-joint fallback's first columns, the products of the two joints' sines and cosines ({@link #pairProducts}). */
+    static final int PAIR_PRODUCTS = 4;
+
+    /** Whether the two-joint fallback's term {@code i} is periodic (a product, or k's own once-per-turn term), not proportional to an angle. */
+    static boolean pairTermPeriodic(int i) { return i < PAIR_PRODUCTS || i >= PAIR_COLUMNS - 2; }
+
     /** The four first-order products of joints j and k's sines and cosines (the two-joint locate probe; the fallback's first columns). */
     static void pairProducts(double[] q, int j, int k, double[] g) {
         double sj = Math.sin(q[j]), cj = Math.cos(q[j]), so = Math.sin(q[k]), co = Math.cos(q[k]);
@@ -2578,7 +2584,7 @@ public final class Effect {
         double[] v = new double[names.size()];
         for (int i = 0; i < v.length; i++)
             // a two-joint error written before it had its Taylor terms or its changing scale has none, a base tilt before its slide none
-            v[i] = (kind == Kind.PAIR && i >= 4 || kind == Kind.BASE_TILT && names.get(i).equals("slide"))
+            v[i] = (kind == Kind.PAIR && i >= PAIR_PRODUCTS || kind == Kind.BASE_TILT && names.get(i).equals("slide"))
                     && !d.parameters().containsKey(names.get(i)) ? 0
                     : require(d, names.get(i), file);
         return new Term(e, v);
