@@ -215,6 +215,15 @@ public record Scenario(String name, String family, String robot, Expected expect
         return new JointError.Harmonics(joint, k, a, ph);
     }
 
+    /**
+     * The tracker's stand knocked once, 0.1–0.3 mm and 20–100 µrad about its own origin in random
+     * directions, 900–2600 s into the campaign (a quarter to three quarters of the hour 300 poses take).
+     */
+    static WorldRobot.Knock knock(Random r) {
+        return new WorldRobot.Knock(uniform(r, 900, 2600), Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 0.1e-3, 0.3e-3)),
+                Rigid.scale(Rigid.unit(Arm.gauss(r, 1)), uniform(r, 20e-6, 100e-6)));
+    }
+
     /** Lost motion 0.02–0.05°. */
     public static JointError.LostMotion lostMotion(int joint, Random r) {
         return new JointError.LostMotion(joint, Math.toRadians(uniform(r, 0.02, 0.05)));
@@ -568,6 +577,16 @@ public record Scenario(String name, String family, String robot, Expected expect
     private static void openWorldForms(List<Scenario> c) {
         c.add(s("outside: tracker distance-meter cyclic error", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var t = tracker(r, true, false, false); return w -> w.withTracker(t); }, same()));
+        // a meter resolving its phase on 1-3 GHz modulations: a fine period of 0.1-0.3 m (half the wavelength) with its second and
+        // fourth overtones, 10-20 µm each, measured at 5 µm
+        c.add(s("outside: tracker distance-meter cyclic error with overtones, sigma 0.005", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    var t = new WorldRobot.Tracker(uniform(r, 10e-6, 20e-6), uniform(r, 0.1, 0.3), 2 * Math.PI * r.nextDouble(), 0,
+                            new int[0], new double[0], new double[0], new int[0], new double[0], new double[0])
+                            .withCyclicOvertones(new double[] {uniform(r, 10e-6, 20e-6), 0, uniform(r, 10e-6, 20e-6)},
+                                    new double[] {2 * Math.PI * r.nextDouble(), 0, 2 * Math.PI * r.nextDouble()});
+                    return w -> w.withTracker(t);
+                }, p -> p.withSigma(0.005e-3)));
         c.add(s("outside: tracker azimuth encoder error", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var t = tracker(r, false, false, true); return w -> w.withTracker(t); }, same()));
         c.add(s("outside: tracker distance and azimuth errors", "outside", "irb2000", Expected.outside(),
@@ -639,6 +658,22 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("outside: the target rolls within its nest's clearance toward gravity", "outside", "irb2000", Expected.outside(),
                 (n, r) -> { var tp = new WorldRobot.TargetPlay(uniform(r, 0.1e-3, 0.2e-3), Math.toRadians(uniform(r, 5, 15)));
                     return w -> w.withTargetPlay(tp); }, same()));
+        c.add(s("outside: the instrument is knocked once during the campaign", "outside", "irb2000", Expected.outside(), (n, r) -> {
+                    var k = knock(r);
+                    return w -> w.withKnock(k);
+                }, same()));
+        c.add(s("the instrument is knocked once (outside) + transmission error j1 puma560", "pair", "puma560",
+                Expected.named(claim(TRANSMISSION_ERROR, 1)), (n, r) -> {
+                    var k = knock(r);
+                    var te = lowHarmonics(0, r);
+                    return w -> add(te).apply(w).withKnock(k);
+                }, same()));
+        // a flange on a worn bearing pair (some 30-60 µm of radial clearance over a 30-40 mm span) tipping by 0.5-1.5 mrad
+        // toward gravity about a point 20-45 mm inside it, measured in 6-D: the target's position and the flange's turn
+        c.add(s("outside: the flange tips within its worn bearing's clearance toward gravity, 6-D", "outside", "irb2000",
+                Expected.outside(), (n, r) -> { var tp = new WorldRobot.TargetPlay(0, Math.toRadians(uniform(r, 5, 15)), uniform(r, 0.5e-3, 1.5e-3),
+                        uniform(r, 0.02, 0.045));
+                    return w -> w.withTargetPlay(tp); }, p -> p.withSixD(true)));
         c.add(s("joint 2's bearing runs out along its axis (outside) + lost motion j3 puma560", "pair", "puma560",
                 Expected.named(claim(LOST_MOTION, 3)),
                 (n, r) -> { var wb = axialRunout(1, r); var lm = lostMotion(2, r); return w -> add(lm).apply(w).withWobbles(List.of(wb)); },

@@ -98,6 +98,10 @@ final class Truth {
             m.put("cyclic_um", t.cyclicM() * 1e6);
             m.put("cyclic_period_mm", t.periodM() * 1e3);
             m.put("cyclic_phase_rad", t.cyclicPhase());
+            if (t.cyclicOverM().length > 0) {
+                m.put("cyclic_overtones_um", Arrays.stream(t.cyclicOverM()).map(v -> v * 1e6).boxed().toList());
+                m.put("cyclic_overtone_phases_rad", Arrays.stream(t.cyclicOverPhase()).boxed().toList());
+            }
             m.put("range_scale", t.rangeScale());
             m.put("azimuth_cycles_per_turn", Arrays.stream(t.azK()).boxed().toList());
             m.put("azimuth_amplitude_arcsec", Arrays.stream(t.azAmp()).map(v -> Math.toDegrees(v) * 3600).boxed().toList());

@@ -48,11 +48,21 @@ import org.robopro.models.RobotDescription;
  * @param floorTilt          the floor under the robot tilting as it warms, or null
  * @param twist              the upper arm twisting under the weights beyond it, or null
  * @param targetPlay         the measured target shifting within its nest's clearance toward gravity, or null
+ * @param knock              the instrument knocked (or the base slipping) once during the campaign, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                         FloorTilt floorTilt, Twist twist, TargetPlay targetPlay) {
+                         FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock) {
+    /** A world robot whose instrument is never knocked. */
+    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
+                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
+                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
+                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay) {
+        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, null);
+    }
+
     public WorldRobot {
         coupling = copy(coupling);
         zeroOffsets = zeroOffsets.clone();
@@ -222,14 +232,65 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * the tool's axis (flange z) once the axis leans more than the friction angle {@code frictionRad}
      * (tan φ = μ: Coulomb, the ball rolls when the slope beats the friction), and in proportion below
      * it (the ball resting part of the way, where the last lean left it being unknown).
+     * <p>
+     * With {@code tiltRad} the mount itself also gives: a flange on a worn bearing pair (radial
+     * clearance c over a span s tips it by up to c/s; Harris &amp; Kotzalas, Rolling Bearing
+     * Analysis, misalignment of shaft-bearing systems) tips by {@code tiltRad} in the same
+     * proportion, about the point {@code pivotM} inside the flange on its axis, so that the tool's
+     * axis turns toward gravity.
      */
-    public record TargetPlay(double clearanceM, double frictionRad) {
+    public record TargetPlay(double clearanceM, double frictionRad, double tiltRad, double pivotM) {
+        /** A ball rolling in its nest, the mount rigid. */
+        public TargetPlay(double clearanceM, double frictionRad) { this(clearanceM, frictionRad, 0, 0); }
+
+        /** The share (0..1) of the play taken up, times the unit direction across the tool's axis; null when straight along it. */
+        private double[] takeUp(double[] gFlange) {
+            double across = Math.hypot(gFlange[0], gFlange[1]), hold = Math.sin(frictionRad);
+            if (across == 0) return null;
+            double f = Math.min(1, across / hold) / across;
+            return new double[] {f * gFlange[0], f * gFlange[1]};
+        }
+
         /** The ball's shift in flange coordinates for gravity {@code gFlange} (unit) seen from the flange. */
         public double[] shift(double[] gFlange) {
-            double across = Math.hypot(gFlange[0], gFlange[1]), hold = Math.sin(frictionRad);
-            if (across == 0) return new double[3];
-            double f = clearanceM * Math.min(1, across / hold) / across;
-            return new double[] {f * gFlange[0], f * gFlange[1], 0};
+            double[] u = takeUp(gFlange);
+            return u == null ? new double[3] : new double[] {clearanceM * u[0], clearanceM * u[1], 0};
+        }
+
+        /**
+         * The mount's tip as a rigid motion in flange coordinates: a turn by tiltRad·|u| about
+         * z × u (which brings the tool's axis z toward u), about the point (0, 0, −pivotM).
+         */
+        public Rigid tip(double[] gFlange) {
+            double[] u = takeUp(gFlange);
+            if (u == null) return Rigid.IDENTITY;
+            double share = Math.hypot(u[0], u[1]);
+            if (tiltRad == 0 || share == 0) return Rigid.IDENTITY;
+            // Rodrigues: the turn about n = z × û takes z to z cos a + û sin a
+            return Rigid.rotation(new double[] {-u[1] / share, u[0] / share, 0}, tiltRad * share, new double[] {0, 0, -pivotM});
+        }
+    }
+
+    /**
+     * The instrument knocked once during the campaign (a tracker's stand bumped by a cart or a
+     * person, a tripod's foot slipping on the floor): from {@code atS} seconds on it stands
+     * turned by the rotation vector {@code turnRad} about its own origin and shifted by
+     * {@code shiftM} (base axes), and sees every point, and every measured frame, from there.
+     */
+    public record Knock(double atS, double[] shiftM, double[] turnRad) {
+        public Knock {
+            shiftM = shiftM.clone();
+            turnRad = turnRad.clone();
+        }
+
+        @Override public double[] shiftM() { return shiftM.clone(); }
+        @Override public double[] turnRad() { return turnRad.clone(); }
+
+        /** The instrument's motion in base coordinates: the turn about its origin {@code o} (base), then the shift. */
+        public Rigid motion(double[] o) {
+            double a = Rigid.norm(turnRad);
+            Rigid turn = a == 0 ? Rigid.IDENTITY : Rigid.rotation(Rigid.scale(turnRad, 1 / a), a, o);
+            return Rigid.translation(shiftM[0], shiftM[1], shiftM[2]).times(turn);
         }
     }
 
@@ -290,25 +351,39 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      */
     public record Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
                           int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase,
-                          double airWarmK, double airTauS, double[] resetS, double[] resetM) {
+                          double airWarmK, double airTauS, double[] resetS, double[] resetM, double[] cyclicOverM, double[] cyclicOverPhase) {
         /** The refractive index of air against its temperature near 20 °C and 1013 hPa, 1/K (Birch and Downs 1993). */
         public static final double INDEX_PER_K = -0.93e-6;
 
         /** A tracker whose air compensation holds (no warming of the air against its station). */
         public Tracker(double cyclicM, double periodM, double cyclicPhase, double rangeScale,
                        int[] azK, double[] azAmp, double[] azPhase, int[] elK, double[] elAmp, double[] elPhase) {
-            this(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, 0, 1, new double[0], new double[0]);
+            this(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, 0, 1, new double[0], new double[0],
+                    new double[0], new double[0]);
         }
 
         /** This tracker with the air the beam crosses warming by {@code warmK} with time constant {@code tauS} against its station. */
         public Tracker withAirWarming(double warmK, double tauS) {
-            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, warmK, tauS, resetS, resetM);
+            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, warmK, tauS, resetS, resetM,
+                    cyclicOverM, cyclicOverPhase);
         }
 
         /** This tracker with its distance taken again at beam breaks at {@code timesS} (ascending), each with its offset, m. */
         public Tracker withBeamBreaks(double[] timesS, double[] offsetsM) {
             return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, airWarmK, airTauS,
-                    timesS, offsetsM);
+                    timesS, offsetsM, cyclicOverM, cyclicOverPhase);
+        }
+
+        /**
+         * This tracker with its distance meter's cyclic error also at the overtones of its period:
+         * {@code ampM[i]} sin(2π(i + 2)ρ/period + {@code phase[i]}). A meter that resolves the phase
+         * on a fine and a coarse modulation, or whose crosstalk is detected non-linearly, repeats
+         * its error at half, a third or a quarter of the fine period as well (Rüeger, Electronic
+         * Distance Measurement, cyclic errors of the second and higher orders).
+         */
+        public Tracker withCyclicOvertones(double[] ampM, double[] phase) {
+            return new Tracker(cyclicM, periodM, cyclicPhase, rangeScale, azK, azAmp, azPhase, elK, elAmp, elPhase, airWarmK, airTauS,
+                    resetS, resetM, ampM, phase);
         }
 
         public Tracker {
@@ -320,6 +395,9 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             elPhase = elPhase.clone();
             resetS = resetS.clone();
             resetM = resetM.clone();
+            cyclicOverM = cyclicOverM.clone();
+            cyclicOverPhase = cyclicOverPhase.clone();
+            if (cyclicOverM.length != cyclicOverPhase.length) throw new IllegalArgumentException("overtone amplitudes and phases differ in length");
             if (resetS.length != resetM.length) throw new IllegalArgumentException("beam break times and offsets differ in length");
             for (int i = 1; i < resetS.length; i++)
                 if (!(resetS[i] > resetS[i - 1])) throw new IllegalArgumentException("beam break times must ascend");
@@ -335,6 +413,8 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         @Override public double[] elPhase() { return elPhase.clone(); }
         @Override public double[] resetS() { return resetS.clone(); }
         @Override public double[] resetM() { return resetM.clone(); }
+        @Override public double[] cyclicOverM() { return cyclicOverM.clone(); }
+        @Override public double[] cyclicOverPhase() { return cyclicOverPhase.clone(); }
 
         /** The absolute distance meter's offset in the distance at {@code timeS} (unknown: the start): that of the last beam break before it. */
         public double resetOffset(double timeS) {
@@ -344,7 +424,11 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         }
 
         /** The range reading of a true range rho, m, with the air as the station reads it. */
-        public double range(double rho) { return rho * (1 + rangeScale) + cyclicM * Math.sin(2 * Math.PI * rho / periodM + cyclicPhase); }
+        public double range(double rho) {
+            double r = rho * (1 + rangeScale) + cyclicM * Math.sin(2 * Math.PI * rho / periodM + cyclicPhase);
+            for (int i = 0; i < cyclicOverM.length; i++) r += cyclicOverM[i] * Math.sin(2 * Math.PI * (i + 2) * rho / periodM + cyclicOverPhase[i]);
+            return r;
+        }
 
         /**
          * The range reading of a true range rho at {@code timeS} (unknown: the station's air, and no
@@ -619,7 +703,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             // gravity (straight down the base's z) seen from the flange
             double[] g = flangeNow.inverse().rotate(new double[] {0, 0, -1});
             double[] d = targetPlay.shift(g);
-            onFlange = new Rigid(onFlange.r(), Rigid.plus(onFlange.p(), d));
+            onFlange = targetPlay.tip(g).times(new Rigid(onFlange.r(), Rigid.plus(onFlange.p(), d)));
         }
         Rigid tool = flangeNow.times(onFlange);
         if (sag != null) {
@@ -641,6 +725,8 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
                         + (Double.isFinite(timeS) ? thermal.driftPerS[i] * timeS : 0);
             inst = new Rigid(inst.r(), Rigid.plus(inst.p(), drift));
         }
+        // knocked: the instrument's pose in base coordinates moved by K, so it maps base points by inst · K⁻¹
+        if (knock != null && Double.isFinite(timeS) && timeS >= knock.atS()) inst = inst.times(knock.motion(inst.inverse().p()).inverse());
         Rigid seen = inst.times(tool);
         return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p(), timeS));
     }
@@ -796,64 +882,68 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock);
+    }
+
+    public WorldRobot withKnock(Knock k) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k);
     }
 
     public WorldRobot withTargetPlay(TargetPlay p) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock);
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -2021,18 +2021,23 @@ public final class Diagnoser {
                         + "located), and poses on it can look like bad measurements; check the poses reported as outliers against it");
             double statedTrainFloor = Double.isFinite(stated) ? noiseFloor(stated, kind.components) * perfectShare(fin, false) : Double.NaN;
             List<String> warnings = warnings(foundFinal, selected, fin, w, rssLeft, dfLeft, rows.size(), model.dof(), statedTrainFloor);
-            if (Double.isFinite(valFinal)) {
-                // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
-                double predicted = fin.trainRms * Math.sqrt((double) fin.m / Math.max(1, fin.m - fin.nf)) * Math.sqrt(1 + (double) fin.nf / fin.m);
-                if (valFinal > 1.2 * predicted)
-                    warnings.add(0, String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what the training fit "
-                            + "predicts (%.4f mm): the model does not carry over to new poses. Something the scan cannot resolve on "
-                            + "these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints at once, "
-                            + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
-                            + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax));
+            // What the training fit predicts for new poses: its RMS inflated by the parameters it estimated.
+            double predicted = fin.trainRms * Math.sqrt((double) fin.m / Math.max(1, fin.m - fin.nf)) * Math.sqrt(1 + (double) fin.nf / fin.m);
+            String carryOver = null, floorWarning = null;
+            if (Double.isFinite(valFinal) && valFinal > 1.2 * predicted) {
+                carryOver = String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what the training fit "
+                        + "predicts (%.4f mm): the model does not carry over to new poses. Something the scan cannot resolve on "
+                        + "these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints at once, "
+                        + "or a change between the measuring sessions). Measure more poses, spread over every joint's range, and "
+                        + "repeat some poses at the end to see a drift.", valFinal * 1e3, valFinal / predicted, predicted * 1e3, hMax);
+                warnings.add(0, carryOver);
             }
-            if (aboveFloor)
-                warnings.add(0, aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fin.nf, selected, foundFinal.isEmpty()));
+            if (aboveFloor) {
+                floorWarning = aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fin.nf, selected, foundFinal.isEmpty());
+                warnings.add(0, floorWarning);
+            }
+            if (onValidation && (carryOver != null || floorWarning != null))
+                sayWhereValidationMisses(w, fin, selected, ext, rows, warnings, carryOver, floorWarning, valFinal, predicted, hMax);
             o.progress().update("done", 1);
             // σ per position axis, or per distance: from the position (distance) rows only, degrees of freedom corrected.
             int rppF = fin.problem.rowsPerPose(), posRows = fin.problem.positionRowsPerPose();
@@ -2104,10 +2109,15 @@ public final class Diagnoser {
      * and so its prediction, is not known.
      */
     static boolean inStepGap(List<Effect> selected, Measurement m, List<Measurement> rows) {
-        if (m == null) return false;
+        return stepAround(selected, m, rows) != null;
+    }
+
+    /** The selected step whose gap between two training poses pose {@code m} lies in ({@link #inStepGap}), or null. */
+    private static Effect stepAround(List<Effect> selected, Measurement m, List<Measurement> rows) {
+        if (m == null) return null;
         for (Effect e : selected) {
             java.util.function.ToDoubleFunction<Measurement> x = switch (e.kind()) {
-                case ZERO_STEP, TARGET_STEP, RANGE_STEP -> Measurement::timeS;
+                case ZERO_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP -> Measurement::timeS;
                 case ANGLE_STEP -> r -> r.q(e.joint());
                 default -> null;
             };
@@ -2122,10 +2132,64 @@ public final class Diagnoser {
                     if (xr <= place) below = Math.max(below, xr);
                     else above = Math.min(above, xr);
                 }
-                if (xm > below && xm < above) return true;
+                if (xm > below && xm < above) return e;
             }
         }
-        return false;
+        return null;
+    }
+
+    /**
+     * Where the final model misses the validation poses, when it does (the warnings {@code carryOver}
+     * and {@code floorWarning}, either null): poses beyond the range a fallback was fitted over are
+     * predicted by extrapolation, and a pose between the two training poses either side of a step
+     * may lie on either side of it. When some are, the warnings say how many and why, and what the
+     * others miss by: whether the model carries over to the poses it can predict.
+     */
+    private static void sayWhereValidationMisses(Work w, Fit fin, List<Effect> selected, ExtendedModel ext, List<Measurement> rows,
+                                                 List<String> warnings, String carryOver, String floorWarning, double valFinal,
+                                                 double predicted, int hMax) {
+        org.robopro.kinematics.Pose tool = fin.problem.toolOf(fin.full);
+        Map<Measurement, Effect> beyond = new LinkedHashMap<>(), inGap = new LinkedHashMap<>();
+        for (Measurement m : w.validate.rows()) {
+            Effect e = outsideFitted(selected, m, ext, tool);
+            if (e != null) beyond.put(m, e);
+            else if ((e = stepAround(selected, m, rows)) != null) inGap.put(m, e);
+        }
+        List<Measurement> rest = w.validate.rows().stream().filter(m -> !beyond.containsKey(m) && !inGap.containsKey(m)).toList();
+        if (beyond.isEmpty() && inGap.isEmpty() || rest.isEmpty()) return;
+        double valRest = w.heldOut(fin, rest, false);
+        List<String> why = new ArrayList<>(), measure = new ArrayList<>();
+        if (!beyond.isEmpty()) {
+            String fallbacks = String.join(", ", new java.util.TreeSet<>(beyond.values().stream().map(Effect::label).toList()));
+            why.add(String.format(Locale.ROOT, "%s beyond the range %s was fitted over on the training poses (extrapolated there)",
+                    posesLie(beyond.keySet()), fallbacks));
+            measure.add(String.format(Locale.ROOT, "measure training poses over the range the model is to be used in: the shape %s "
+                    + "follows is fitted, not known, beyond the training poses", fallbacks));
+        }
+        if (!inGap.isEmpty()) {
+            String steps = String.join(", ", new java.util.TreeSet<>(inGap.values().stream().map(Effect::label).toList()));
+            why.add(String.format(Locale.ROOT, "%s between the two training poses either side of %s (on either side of the step, "
+                    + "which the training poses do not tell)", posesLie(inGap.keySet()), steps));
+            measure.add("a step's place is known only to the gap between two training poses: measure a few poses there again");
+        }
+        String reasons = String.join(", and ", why);
+        String advice = " " + Character.toUpperCase(measure.get(0).charAt(0)) + String.join("; ", measure).substring(1) + ".";
+        if (carryOver != null)
+            warnings.set(warnings.indexOf(carryOver), String.format(Locale.ROOT, "The validation poses miss by %.4f mm RMS, %.1f x what "
+                    + "the training fit predicts (%.4f mm), but %s; the other %d miss by %.4f mm (%.1f x): %s", valFinal * 1e3,
+                    valFinal / predicted, predicted * 1e3, reasons, rest.size(), valRest * 1e3, valRest / predicted,
+                    (valRest <= 1.2 * predicted ? "the model carries over to the poses it can predict."
+                            : String.format(Locale.ROOT, "the model does not carry over even to those; something the scan cannot "
+                            + "resolve on these poses is left (a harmonic above %d cycles per turn, an error that depends on two joints "
+                            + "at once, or a change between the measuring sessions).", hMax)) + advice));
+        if (floorWarning != null)
+            warnings.set(warnings.indexOf(floorWarning), floorWarning + String.format(Locale.ROOT, " %s; the other %d validation poses "
+                    + "miss by %.4f mm.", Character.toUpperCase(reasons.charAt(0)) + reasons.substring(1), rest.size(), valRest * 1e3));
+    }
+
+    /** "validation pose 12 lies" or "28 validation poses lie". */
+    private static String posesLie(java.util.Set<Measurement> poses) {
+        return poses.size() == 1 ? "validation pose " + poses.iterator().next().poseId() + " lies" : poses.size() + " validation poses lie";
     }
 
     /** The selected fallback whose variable a pose lies beyond the fitted range of (its prediction there is an extrapolation), or null. */
@@ -3597,7 +3661,13 @@ public final class Diagnoser {
             double f0 = 1 / e.cycle(), step = 1 / (3 * (e.rangeHi() - e.rangeLo()));
             for (int i = -2; i <= 2; i++)
                 if (i != 0 && f0 + i * step / 4 > 0)
-                    out.add(Effect.instrumentCyclic(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), 1 / (f0 + i * step / 4)));
+                    out.add(Effect.instrumentCyclic(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), 1 / (f0 + i * step / 4),
+                            e.cycleOrders()));
+            // and with more of its harmonics (a phase meter's error repeats at its cycle's harmonics too; one may be missing), as
+            // far as the poses support them
+            for (int h = e.cycleOrders() + 1; h <= MAX_CYCLE_ORDERS; h++)
+                if (Effect.supported(2 * h, 2, rows.size()))
+                    out.add(Effect.instrumentCyclic(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), e.cycle(), h));
         } else if (e.kind() == Effect.Kind.INSTRUMENT_SCALE) {
             // a long campaign's air warms and cools and its pressure drifts: a finer curve of the same reading
             for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
@@ -3612,11 +3682,11 @@ public final class Diagnoser {
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.SMOOTH_BASIS, rows.size()))
                     out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
                             : Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
-        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.RANGE_STEP
-                || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
+        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.BASE_STEP
+                || e.kind() == Effect.Kind.RANGE_STEP || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
-            Locator.Var var = angle ? Locator.Var.ANGLE_STEP
-                    : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP : Locator.Var.TIME_STEP;
+            Locator.Var var = angle ? Locator.Var.ANGLE_STEP : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP
+                    : e.kind() == Effect.Kind.BASE_STEP ? Locator.Var.BASE_STEP : Locator.Var.TIME_STEP;
             double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
                     : w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).toArray();
             // the midpoints between the poses within a twentieth of the campaign (of the joint's poses) either side
@@ -3773,6 +3843,8 @@ public final class Diagnoser {
                     if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
                 }
                 case TARGET_STEP -> { if (k == Effect.Kind.TARGET_STEP) return e; }
+                // the instrument's pose changed: a drift of it, or a turn of the base, with time follows part of a step
+                case BASE_STEP -> { if (k == Effect.Kind.BASE_STEP || k == Effect.Kind.DRIFT || k == Effect.Kind.BASE_TURN) return e; }
                 case RANGE_STEP -> { if (k == Effect.Kind.DRIFT || k == Effect.Kind.INSTRUMENT_SCALE) return e; }
                 case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE && e.joint() == f.probe.joint) return e; }
@@ -3978,6 +4050,9 @@ public final class Diagnoser {
             case TARGET_STEP -> String.format(Locale.ROOT, "check the measured target's mounting on the flange (knocked, "
                     + "slipped in its nest) and re-measure a few poses from before %.0f s; mark the target's nest and check it "
                     + "between sessions.", f.probe.lo);
+            case BASE_STEP -> String.format(Locale.ROOT, "check the instrument's stand and the robot's anchors for a knock or a slip "
+                    + "near %.0f s, and measure two or three fixed reference points (nests on the floor or on the robot's base) at the "
+                    + "start and the end of each campaign: they move together when the instrument or the base moved.", f.probe.lo);
             case PAYLOAD_REACH -> "measure the same poses stretched and folded with two or three payloads, and check the "
                     + "stiffness of the arm and of the point's holder.";
             case PAYLOAD -> "measure with two or three payloads at the same poses to separate deflection from geometry.";
@@ -4097,6 +4172,9 @@ public final class Diagnoser {
         return sorted.subList(0, cut);
     }
 
+    /** A cyclic error of the instrument's reading is refined with at most this many harmonics of its cycle. */
+    static final int MAX_CYCLE_ORDERS = 4;
+
     /** At most this many structures are located per scan. */
     static final int MAX_LOCATED = 8;
     /** An alias replaces a named effect when its leave-one-pose-out error is lower by this fraction. */
@@ -4196,7 +4274,8 @@ public final class Diagnoser {
         }
         if (hasTime) out.add(Effect.driftWithTime());
         for (Locator.Found f : found) {
-            if (f.probe.var == Locator.Var.TARGET_STEP) out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
+            if (f.probe.var == Locator.Var.TARGET_STEP || f.probe.var == Locator.Var.BASE_STEP)
+                out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
             if (f.probe.var == Locator.Var.RANGE_STEP) out.add(Effect.rangeStep(f.probe.instrument, f.probe.lo));
         }
         // an error of the instrument's readings: modelled where it is located, so that it does not bend the robot's fit
@@ -4220,6 +4299,7 @@ public final class Diagnoser {
             case ANGLE_STEP -> Effect.angleStep(joint, place);
             case TIME_STEP -> Effect.zeroStep(joint, place);
             case TARGET_STEP -> Effect.targetStep(model, place);
+            case BASE_STEP -> Effect.baseStep(place);
             default -> throw new IllegalArgumentException("not a step: " + var);
         };
     }
@@ -4239,7 +4319,7 @@ public final class Diagnoser {
                 case JOINT_PAIR -> out.add(Effect.pair(f.probe.joint, f.probe.other));
                 case REACH, HEIGHT -> out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH,
                         f.probe.lo, f.probe.hi));
-                case TIME_STEP, ANGLE_STEP, TARGET_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
+                case TIME_STEP, ANGLE_STEP, TARGET_STEP, BASE_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
                 case RANGE_STEP -> out.add(Effect.rangeStep(f.probe.instrument, f.probe.lo));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
@@ -4254,6 +4334,11 @@ public final class Diagnoser {
             }
         out.addAll(bodyShapes(found, model));
         return out;
+    }
+
+    /** Whether the tool's play was located with the flange's tips (its orientation measured). */
+    private static boolean playTips(List<Locator.Found> found) {
+        return found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_PLAY && f.probe.k > Effect.PLAY_SHIFTS);
     }
 
     /** The orders (ascending, each once) at which structures of {@code var} were located on joint {@code j}. */
@@ -4274,7 +4359,7 @@ public final class Diagnoser {
             if (shifts.length > 0) out.add(Effect.axialRunout(model, j, shifts));
         }
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_GRAVITY)) out.add(Effect.toolSag(model, Effect.DOWN));
-        if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_PLAY)) out.add(Effect.toolPlay(model, Effect.DOWN));
+        if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_PLAY)) out.add(Effect.toolPlay(model, Effect.DOWN, playTips(found)));
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND || f.probe.var == Locator.Var.LINK_TWIST) out.add(f.probe.bend);
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.TARGET_SIGHT) out.add(f.probe.incidence);
         return out;
@@ -5750,6 +5835,12 @@ public final class Diagnoser {
             case RANGE_STEP -> {
                 c.plausible = Math.abs(v[0]) < MAX_RANGE_STEP_M;
                 c.plausibility = String.format(Locale.ROOT, "the distance's jump %.4f mm < %.1f mm", Math.abs(v[0]) * 1e3, MAX_RANGE_STEP_M * 1e3);
+            }
+            case BASE_STEP -> {
+                double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), turn = Math.sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+                c.plausible = d < MAX_TARGET_STEP_M && turn < MAX_BASE_TURN_RAD;
+                c.plausibility = String.format(Locale.ROOT, "the move %.4f mm < %.0f mm, the turn %.1f µrad < %.0f µrad", d * 1e3,
+                        MAX_TARGET_STEP_M * 1e3, turn * 1e6, MAX_BASE_TURN_RAD * 1e6);
             }
             case TARGET_STEP -> {
                 double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

@@ -71,6 +71,8 @@ public final class Effect {
         ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
+        BASE_STEP("base-step", "The measuring instrument and the robot's base that moved against each other at one time during the "
+                + "campaign (the instrument knocked, the base slipped), of no known family"),
         RANGE_STEP("range-step", "The measuring instrument's distances that jumped at one time during the campaign (its distance "
                 + "taken again after the beam was broken), not the robot, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
@@ -194,6 +196,7 @@ public final class Effect {
     private Pauses pauses;                   // that warm-up: when the robot rested during the campaign (null: never, as far as known)
     private Vec3 down;                       // tool sag, link sag and twist: gravity's direction, base frame (unit)
     private boolean sagPayload;              // link sag and twist: columns of the payload's weight
+    private boolean playTurns;               // tool play: the flange also tips (its orientation measured), four more columns
     private Sight sight;                     // instrument reading: the reading it follows
     private Pose instrument;                 // instrument reading, target incidence: instrumentTbase, fixed where the geometric fit put it
     private Vec3 sightAxis;                  // target incidence: the mean direction the point is seen from, flange frame (unit)
@@ -709,6 +712,47 @@ public final class Effect {
     }
 
     /**
+     * The instrument and the robot's base moved against each other at time {@code tauS}: a
+     * tracker's stand knocked or its tripod's foot slipping, the robot's base plate sliding on its
+     * anchors. Every measured point moves by one rigid motion there, a translation d and a small
+     * turn ω about the base's origin (base axes): Δp = −(d + ω × p) before it, 0 after it and at an
+     * unknown time (the state the campaign ended in, which the geometry's instrument pose holds),
+     * and a measured frame turns by −ω before it. Not a drift (the instrument's pose changes once,
+     * not with time or temperature) nor a move of the target on the flange (the motion is the
+     * same in base axes whatever the arm's pose). Six parameters: d (m), then ω (rad).
+     */
+    public static Effect baseStep(double tauS) {
+        if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
+        return new Effect(Kind.BASE_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null, 1);
+    }
+
+    /** The parameters of a base step: the translation's three, then the turn's three. */
+    static final int BASE_STEP_TERMS = 6;
+
+    /**
+     * The regressors (row-major, 3 x 6, base axes) of a base step before its time, at base point
+     * p: g3 moves the point by −(d + ω × p), w3 turns a measured frame by −ω (either may be null).
+     */
+    static void baseStepRegressor(double[] p, double[] g3, double[] w3) {
+        int k = BASE_STEP_TERMS;
+        if (g3 != null) {
+            Arrays.fill(g3, 0);
+            for (int a = 0; a < 3; a++) g3[a * k + a] = -1;
+            // −(e_c × p) for the turn about base axis c
+            g3[k + 3] = p[2];
+            g3[2 * k + 3] = -p[1];
+            g3[3] = -p[2];
+            g3[2 * k + 4] = p[0];
+            g3[5] = p[1];
+            g3[k + 5] = -p[0];
+        }
+        if (w3 != null) {
+            Arrays.fill(w3, 0);
+            for (int a = 0; a < 3; a++) w3[a * k + 3 + a] = -1;
+        }
+    }
+
+    /**
      * The instrument's distance reading jumped at time {@code tauS}: a laser tracker's interferometer
      * counts only changes of the distance, and when the beam is broken it takes the distance again
      * from its absolute distance meter, whose error then stays in every distance until the next
@@ -783,9 +827,22 @@ public final class Effect {
      * §3.1), acting as {@link #instrumentReading}; [lo, hi] is the range of the reading seen.
      */
     public static Effect instrumentCyclic(Sight sight, Pose instrumentTbase, double azimuthRef, double lo, double hi, double period) {
+        return instrumentCyclic(sight, instrumentTbase, azimuthRef, lo, hi, period, 1);
+    }
+
+    /**
+     * {@link #instrumentCyclic(Sight, Pose, double, double, double, double)} with its harmonics
+     * 1..{@code orders}: a_h·sin(2πhu/period) + b_h·cos(2πhu/period). A phase meter's error repeats
+     * at the phase's cycle and at its harmonics (the mixing of the signals' leakage and a
+     * non-linear detection add twice and more the cycle; Heydemann, Applied Optics 20 (1981) 3382,
+     * for an interferometer's first- and second-order periodic errors), so a meter that measures
+     * on several modulation frequencies shows a cycle and its halves and quarters.
+     */
+    public static Effect instrumentCyclic(Sight sight, Pose instrumentTbase, double azimuthRef, double lo, double hi, double period, int orders) {
         if (!(period > 0) || Double.isInfinite(period)) throw new IllegalArgumentException("cycle " + period);
         if (!(hi > lo)) throw new IllegalArgumentException("instrument reading range " + lo + ".." + hi);
-        Effect c = new Effect(Kind.INSTRUMENT, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, 2);
+        if (orders < 1) throw new IllegalArgumentException("cyclic error with " + orders + " harmonics");
+        Effect c = new Effect(Kind.INSTRUMENT, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, 2 * orders);
         c.sight = sight;
         c.instrument = instrumentTbase;
         c.azimuthRef = sight == Sight.AZIMUTH ? azimuthRef : 0;
@@ -795,6 +852,17 @@ public final class Effect {
 
     /** The period of a cyclic instrument-reading error (m, or rad), NaN otherwise. */
     public double cycle() { return cycle; }
+
+    /** The harmonics of the period a cyclic instrument-reading error holds (1..this), 0 otherwise. */
+    public int cycleOrders() { return Double.isFinite(cycle) ? nBasis / 2 : 0; }
+
+    /** The basis of a cyclic reading error at reading u: sin and cos of 2πhu/cycle for h = 1..orders. */
+    private void cyclicBasis(double u, double[] b) {
+        for (int h = 1; h <= nBasis / 2; h++) {
+            b[2 * h - 2] = Math.sin(2 * Math.PI * h * u / cycle);
+            b[2 * h - 1] = Math.cos(2 * Math.PI * h * u / cycle);
+        }
+    }
 
     /**
      * The robot's base tilting on its foundation about a horizontal edge: with e the unit horizontal
@@ -953,28 +1021,41 @@ public final class Effect {
      * the side it pulls to is u = (ĝ_x, ĝ_y) / √(ĝ_x² + ĝ_y² + {@link #PLAY_TAKE_UP}²), a unit vector
      * across the axis once the axis leans, fading where it hangs straight down or up; the point moves
      * by Δp_f = B·u (B 3 x 2: the play's sizes and directions unknown), Δp = R·B·u in base axes. A
-     * holder that bends (tool-sag) moves in proportion to the pull instead. Six parameters (m);
-     * positions only.
+     * holder that bends (tool-sag) moves in proportion to the pull instead. Six parameters (m).
+     * With {@code turns} (the flange's orientation measured) the flange also tips across its axis,
+     * Δω_f = (C·u, 0) with C 2 x 2 (rad), Δω = R·Δω_f: four more parameters. The point's share of
+     * that tip (Δω_f × its offset) is again linear in u, held by B.
      */
-    public static Effect toolPlay(KinematicModel model, Vec3 down) {
+    public static Effect toolPlay(KinematicModel model, Vec3 down, boolean turns) {
         if (!(down.norm() > 0)) throw new IllegalArgumentException("no gravity direction");
         Effect e = new Effect(Kind.TOOL_PLAY, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
         e.down = down.times(1 / down.norm());
+        e.playTurns = turns;
         return e;
     }
+
+    /** The tool-play columns that move the point ({@link #toolPlay}): six. */
+    static final int PLAY_SHIFTS = 6;
+
+    /** The tool-play columns that tip the flange ({@link #toolPlay} with its turns): four. */
+    static final int PLAY_TIPS = 4;
 
     /** The lean of the tool's axis (as the part of gravity across it) over which a play is taken up: about 9 deg. */
     static final double PLAY_TAKE_UP = 0.15;
 
-    /** The 3 x 6 regressor (row-major, base axes) of {@link #toolPlay} at flange pose {@code f}. */
-    static void toolPlayRegressor(Pose f, Vec3 down, double[] g3) {
+    /**
+     * The regressor (row-major, base axes, 3 x k from column {@code from}) of {@link #toolPlay} at
+     * flange pose {@code f}: its point shifts B·u, or with {@code tips} its flange's tips C·u.
+     */
+    static void toolPlayRegressor(Pose f, Vec3 down, boolean tips, double[] g3, int k, int from) {
         double gx = f.rot(0, 0) * down.x() + f.rot(1, 0) * down.y() + f.rot(2, 0) * down.z();
         double gy = f.rot(0, 1) * down.x() + f.rot(1, 1) * down.y() + f.rot(2, 1) * down.z();
         double n = Math.sqrt(gx * gx + gy * gy + PLAY_TAKE_UP * PLAY_TAKE_UP);
         double[] u = {gx / n, gy / n};
+        int across = tips ? 2 : 3; // a tip turns about the flange's x and y only
         for (int axis = 0; axis < 3; axis++)
-            for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 2; b++) g3[axis * 6 + 2 * a + b] = f.rot(axis, a) * u[b];
+            for (int a = 0; a < across; a++)
+                for (int b = 0; b < 2; b++) g3[axis * k + from + 2 * a + b] = f.rot(axis, a) * u[b];
     }
 
     /** The kinematic model an effect on the measured point works with (thermal growth per link, a step of the target, a wobble, a tool sag); null otherwise. */
@@ -1395,7 +1476,7 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return shaftOrders() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.RANGE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
+                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.BASE_STEP || kind == Kind.RANGE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 
@@ -1439,7 +1520,7 @@ public final class Effect {
 
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
     public boolean ofInstrument() {
-        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.RANGE_STEP || kind == Kind.TARGET_INCIDENCE;
+        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.RANGE_STEP || kind == Kind.BASE_STEP || kind == Kind.TARGET_INCIDENCE;
     }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
@@ -1597,8 +1678,8 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG,
-                 LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -1643,7 +1724,7 @@ public final class Effect {
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case AXIAL_RUNOUT -> 2 * harmonics.length;
             case TOOL_SAG -> 9;
-            case TOOL_PLAY -> 6;
+            case TOOL_PLAY -> PLAY_SHIFTS + (playTurns ? PLAY_TIPS : 0);
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case LINK_TWIST -> TWIST_ARM_TERMS + (sagPayload ? HAND_TERMS : 0);
@@ -1651,6 +1732,7 @@ public final class Effect {
             case BASE_TURN -> 3 * nBasis + 3;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
+            case BASE_STEP -> BASE_STEP_TERMS;
             default -> 1;
         };
     }
@@ -1694,6 +1776,7 @@ public final class Effect {
             case INSTRUMENT_SCALE -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
+            case BASE_STEP -> out.addAll(List.of("dx", "dy", "dz", "wx", "wy", "wz"));
             case RANGE_STEP -> out.add("d");
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); out.add("slide"); }
             case AXIS_WOBBLE -> {
@@ -1711,13 +1794,17 @@ public final class Effect {
                 if (sagPayload) out.addAll(List.of("t_payload_o", "t_payload_x", "t_payload_y", "t_payload_z"));
             }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
-            case TOOL_PLAY -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y"}) out.add("p" + a + b); }
+            case TOOL_PLAY -> {
+                for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y"}) out.add("p" + a + b);
+                if (playTurns) for (String a : new String[] {"x", "y"}) for (String b : new String[] {"x", "y"}) out.add("r" + a + b);
+            }
             case TARGET_INCIDENCE -> {
                 for (String a : new String[] {"x", "y", "z"}) for (String m : INCIDENCE_ACROSS) out.add(a + "_" + m);
                 for (String m : INCIDENCE_ALONG) out.add("r_" + m);
             }
             case INSTRUMENT -> {
-                if (Double.isFinite(cycle)) { out.add("a"); out.add("b"); }
+                if (Double.isFinite(cycle))
+                    for (int h = 1; h <= nBasis / 2; h++) { out.add(h == 1 ? "a" : "a" + h); out.add(h == 1 ? "b" : "b" + h); }
                 else for (int k = 1; k <= nBasis; k++) out.add("e" + k);
             }
         }
@@ -1750,7 +1837,7 @@ public final class Effect {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
-            case POINT_SMOOTH, TARGET_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
+            case POINT_SMOOTH, TARGET_STEP, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
@@ -1771,6 +1858,12 @@ public final class Effect {
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
         if (kind == Kind.BASE_TILT) return List.of(u, "m/(N·m)", "m/(N·m)"); // the lift and the slide: the tilt times a distance
+        if (kind == Kind.BASE_STEP) return List.of(u, u, u, "rad", "rad", "rad");
+        if (kind == Kind.TOOL_PLAY && playTurns) { // the point's shifts, then the flange's tips
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(PLAY_SHIFTS, u));
+            out.addAll(java.util.Collections.nCopies(PLAY_TIPS, "rad"));
+            return out;
+        }
         if (kind == Kind.BASE_TURN) { // the turns, then the drift over the whole range
             List<String> out = new ArrayList<>(java.util.Collections.nCopies(3 * nBasis, u));
             out.addAll(List.of("m", "m", "m"));
@@ -1819,7 +1912,7 @@ public final class Effect {
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
-            case TARGET_STEP, RANGE_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case TARGET_STEP, BASE_STEP, RANGE_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
                     : squareFoot() ? String.format(Locale.ROOT, " (square foot, edges at %.0f deg, above %.0f N·m)",
                     (Math.toDegrees(tiltAzimuth) % 90 + 90) % 90, tiltHold)
@@ -1833,7 +1926,8 @@ public final class Effect {
                     + String.join(",", Arrays.stream(harmonics).mapToObj(Integer::toString).toList()) : harmonics[0] == 1 ? "once"
                     : harmonics[0] + " times") + " per turn)";
             case INSTRUMENT -> kind.json + " (" + sight.words + (Double.isFinite(cycle)
-                    ? String.format(Locale.ROOT, ", cyclic %.0f %s", sight == Sight.RANGE ? cycle * 1e3 : Math.toDegrees(cycle), sight == Sight.RANGE ? "mm" : "deg")
+                    ? String.format(Locale.ROOT, ", cyclic %.0f %s%s", sight == Sight.RANGE ? cycle * 1e3 : Math.toDegrees(cycle), sight == Sight.RANGE ? "mm" : "deg",
+                            nBasis > 2 ? ", harmonics 1-" + nBasis / 2 : "")
                     : nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
             default -> kind.json + " j" + (joint + 1);
         };
@@ -1948,8 +2042,8 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG,
-                 LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -1968,7 +2062,7 @@ public final class Effect {
                 tiltRegressor(t[2], t[0], t[1], pointBase, g3);
             }
             case TOOL_SAG -> toolSagRegressor(model.flange(q), down, g3);
-            case TOOL_PLAY -> toolPlayRegressor(model.flange(q), down, g3);
+            case TOOL_PLAY -> toolPlayRegressor(model.flange(q), down, false, g3, k, 0);
             case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), sightOrigin, sightAxis, sightAcross, pointBase, g3);
             case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
             case LINK_TWIST -> linkTwistColumns(q, c, pointBase, g3, null);
@@ -2001,7 +2095,7 @@ public final class Effect {
                 double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
                 double[] d = sightDirection(sight, pi), b = new double[nBasis];
                 double u = sightReading(sight, azimuthRef, pi);
-                if (Double.isFinite(cycle)) { b[0] = Math.sin(2 * Math.PI * u / cycle); b[1] = Math.cos(2 * Math.PI * u / cycle); }
+                if (Double.isFinite(cycle)) cyclicBasis(u, b);
                 else bspline(u, lo, hi, b);
                 for (int a = 0; a < 3; a++) {
                     double da = instrument.rot(0, a) * d[0] + instrument.rot(1, a) * d[1] + instrument.rot(2, a) * d[2];
@@ -2024,6 +2118,7 @@ public final class Effect {
                 Pose f = model.flange(q);
                 for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
             }
+            case BASE_STEP -> { if (c.timeS() <= tauS) baseStepRegressor(pointBase, g3, null); }
             case RANGE_STEP -> {
                 // before the jump every distance read d less than at the end: −d along the line of sight, in base axes
                 // R_ibᵀ p_i/|p_i| with p_i = R_ib p + t_ib (its change with the point itself, d/|p_i|, is left out: 10⁻⁵ of d)
@@ -2147,7 +2242,7 @@ public final class Effect {
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
     public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST
-            || kind == Kind.BASE_TURN; }
+            || kind == Kind.BASE_TURN || kind == Kind.BASE_STEP || kind == Kind.TOOL_PLAY && playTurns; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -2159,6 +2254,8 @@ public final class Effect {
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
         if (kind == Kind.LINK_TWIST) { linkTwistColumns(q, c, null, null, g3); return; }
+        if (kind == Kind.TOOL_PLAY) { if (playTurns) toolPlayRegressor(model.flange(q), down, true, g3, size(), PLAY_SHIFTS); return; }
+        if (kind == Kind.BASE_STEP) { if (c.timeS() <= tauS) baseStepRegressor(null, null, g3); return; }
         if (kind == Kind.BASE_TURN) {
             double[] b = readingBasis(c);
             if (b == null) return;
@@ -2341,7 +2438,7 @@ public final class Effect {
             }
             case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
-            case ZERO_STEP, TARGET_STEP -> p.put("time_s_step", tauS);
+            case ZERO_STEP, TARGET_STEP, BASE_STEP -> p.put("time_s_step", tauS);
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
             case AXIS_WOBBLE, AXIAL_RUNOUT -> { }
             case TOOL_SAG, TOOL_PLAY -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
@@ -2388,8 +2485,8 @@ public final class Effect {
         if (kind == null) throw d.error(file, "effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, TOOL_SAG,
-                 TOOL_PLAY, TARGET_INCIDENCE -> 0;
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT,
+                 TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -2492,6 +2589,7 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case BASE_STEP -> baseStep(require(d, "time_s_step", file));
             case RANGE_STEP -> rangeStep(instrumentOf(d, file), require(d, "time_s_step", file));
             case LINK_SAG -> {
                 if (js.get(0) < 2 || js.get(0) > 3)
@@ -2511,7 +2609,8 @@ public final class Effect {
                 yield linkTwist(model, ps.containsKey("t_payload_o"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
-            case TOOL_PLAY -> toolPlay(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
+            case TOOL_PLAY -> toolPlay(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)),
+                    ps.containsKey("rxx"));
             case TARGET_INCIDENCE -> {
                 Vec3 axis = new Vec3(require(d, "axis_x", file), require(d, "axis_y", file), require(d, "axis_z", file));
                 if (!(axis.norm() > 0))
@@ -2544,7 +2643,8 @@ public final class Effect {
                 if (ps.containsKey(sg.key + "_cycle")) {
                     double cyc = require(d, sg.key + "_cycle", file);
                     if (!(cyc > 0)) throw d.error(file, "parameters_si." + sg.key + "_cycle", "must be > 0, got " + cyc);
-                    yield instrumentCyclic(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), cyc);
+                    int orders = 1 + (int) ps.keySet().stream().filter(key -> key.matches("a\\d+")).count();
+                    yield instrumentCyclic(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), cyc, orders);
                 }
                 if (n < 4) throw d.error(file, "parameters_si", "needs e1..eN, N >= 4");
                 yield instrumentReading(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), n);

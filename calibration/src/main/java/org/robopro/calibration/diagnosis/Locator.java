@@ -40,7 +40,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -51,7 +51,7 @@ final class Locator {
      * their error over half a modulation wavelength, decimetres to metres; a shorter one is within
      * the noise of a campaign's poses (a few per period at least are needed).
      */
-    static final double MIN_RANGE_CYCLE_M = 0.1;
+    static final double MIN_RANGE_CYCLE_M = 0.02;
 
     /**
      * Places of a step (a reading's step in a joint's angle, a joint's zero step or the target's move
@@ -266,6 +266,7 @@ final class Locator {
                 for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
             for (double tau : stepPlaces(time[0], STEP_PLACES)) {
                 if (steps) out.add(targetStep(t, tau, time, rf));
+                if (steps && ends == 1) out.add(baseStep(t, tau, time));
                 for (int j = 0; j < dof; j++) out.add(zeroStep(t, j, tau, time));
             }
         }
@@ -452,25 +453,36 @@ final class Locator {
      * only (a point's holder turns no measured frame of its own).
      */
     static Probe toolGravity(Diagnoser.Tester t) {
-        Probe p = flangeGravity(t, 9, Effect::toolSagRegressor);
+        Probe p = flangeGravity(t, 9, (f, down, g3, r3) -> Effect.toolSagRegressor(f, down, g3));
         p.var = Var.TOOL_GRAVITY;
         p.shape = "the measured point moves with the direction of gravity seen from the flange (its holder bends under its own weight)";
         return p;
     }
 
-    /** The measured point's holder or the flange tipping within a clearance toward gravity ({@link Effect#toolPlay}). */
+    /**
+     * The measured point's holder or the flange tipping within a clearance toward gravity ({@link Effect#toolPlay}):
+     * six columns that move the point, and where orientations are measured four that tip the flange.
+     */
     static Probe toolPlay(Diagnoser.Tester t) {
-        Probe p = flangeGravity(t, 6, Effect::toolPlayRegressor);
+        boolean tips = t.rpp > t.posRows;
+        int k = Effect.PLAY_SHIFTS + (tips ? Effect.PLAY_TIPS : 0);
+        Probe p = flangeGravity(t, k, (f, down, g3, r3) -> {
+            Effect.toolPlayRegressor(f, down, false, g3, k, 0);
+            if (tips) Effect.toolPlayRegressor(f, down, true, r3, k, Effect.PLAY_SHIFTS);
+        });
         p.var = Var.TOOL_PLAY;
         p.shape = "the measured point moves across the tool's axis toward the side gravity pulls it to, by the same amount whichever "
                 + "way (a play taken up by the tool's weight)";
         return p;
     }
 
-    /** The 3 x k regressor (row-major, base axes) of an effect of gravity seen from the flange, at flange pose f. */
-    private interface FlangeRegressor { void at(Pose f, Vec3 down, double[] g3); }
+    /**
+     * The 3 x k regressors (row-major, base axes) of an effect of gravity seen from the flange, at
+     * flange pose f: g3 moves the measured point, r3 turns the measured frame (both zeroed before).
+     */
+    private interface FlangeRegressor { void at(Pose f, Vec3 down, double[] g3, double[] r3); }
 
-    /** A probe of k columns that move the measured point with gravity seen from the flange (positions only). */
+    /** A probe of k columns that move the measured point, and turn the measured frame, with gravity seen from the flange. */
     private static Probe flangeGravity(Diagnoser.Tester t, int k, FlangeRegressor r) {
         Diagnoser.Work w = t.w;
         Vec3 down = Effect.DOWN;
@@ -480,14 +492,19 @@ final class Locator {
         for (int e = 0; e < t.ends; e++)
             for (int i = 0; i < poses; i++) {
                 Pose f = w.model.flange(t.endRows.get(e).get(i).q());
-                rf[e][i] = new double[3 * k];
-                r.at(f, down, rf[e][i]);
+                double[] g3 = new double[3 * k], r3 = new double[3 * k];
+                r.at(f, down, g3, r3);
+                rf[e][i] = new double[6 * k];
+                System.arraycopy(g3, 0, rf[e][i], 0, 3 * k);
+                System.arraycopy(r3, 0, rf[e][i], 3 * k, 3 * k);
                 x[e][i] = Effect.angleFromDown(f, down);
             }
-        // column c moves the point along base axis a by rf[a·k + c]
-        Probe p = columns(t, k, (e, row, g, col) -> row % t.rpp >= t.posRows ? 0
-                : t.endDTrans[e][row * 3] * g[col] + t.endDTrans[e][row * 3 + 1] * g[k + col] + t.endDTrans[e][row * 3 + 2] * g[2 * k + col],
-                3 * k, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 3 * k));
+        // column c moves the point along base axis a by rf[a·k + c] and turns the frame about it by rf[(3 + a)·k + c]
+        Probe p = columns(t, k, (e, row, g, col) -> {
+                    double[] d = row % t.rpp >= t.posRows ? t.endDRot[e] : t.endDTrans[e];
+                    int o = row % t.rpp >= t.posRows ? 3 * k : 0;
+                    return d[row * 3] * g[o + col] + d[row * 3 + 1] * g[o + k + col] + d[row * 3 + 2] * g[o + 2 * k + col];
+                }, 6 * k, (e, i, g) -> System.arraycopy(rf[e][i], 0, g, 0, 6 * k));
         p.variable = "the flange's orientation to gravity";
         p.x = x;
         p.xLabel = "angle of the flange's axis from straight down (deg)";
@@ -838,6 +855,35 @@ final class Locator {
     }
 
     /**
+     * The instrument and the robot's base moved against each other at tau ({@link Effect#baseStep}):
+     * a translation and a turn in base axes before it, six columns (one pose per row).
+     */
+    private static Probe baseStep(Diagnoser.Tester t, double tau, double[][] time) {
+        int k = Effect.BASE_STEP_TERMS, poses = t.m / t.rpp;
+        double[] s = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
+        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+        for (int i = 0; i < poses; i++) {
+            if (!(time[0][i] <= tau)) continue;
+            for (int a = 0; a < t.rpp; a++) {
+                int row = i * t.rpp + a;
+                boolean turn = a >= t.posRows;
+                Effect.baseStepRegressor(turn ? null : t.pointsBase[i][t.pointOfRow(a)], turn ? null : g3, turn ? w3 : null);
+                double[] d = turn ? dr : dt, g = turn ? w3 : g3;
+                for (int c = 0; c < k; c++) s[row * k + c] = d[row * 3] * g[c] + d[row * 3 + 1] * g[k + c] + d[row * 3 + 2] * g[2 * k + c];
+            }
+        }
+        Probe p = finish(t, s, k);
+        p.var = Var.BASE_STEP;
+        p.lo = tau;
+        p.variable = "time";
+        p.shape = String.format(Locale.ROOT, "every measured point moved by one rigid motion at about %.0f s, whatever the arm's pose "
+                + "(the instrument or the robot's base moved)", tau);
+        p.x = time;
+        p.xLabel = "time since the start (s)";
+        return p;
+    }
+
+    /**
      * The instrument's distances jumped at tau ({@link Effect#rangeStep}): −1 along the line of sight
      * before it, {@code sens} each residual row's change for a unit change of the distance.
      */
@@ -875,13 +921,15 @@ final class Locator {
      * to the pose: the poses between a quantile and the true place would be mispredicted).
      */
     static List<Probe> finerSteps(Diagnoser.Tester t, Probe p) {
-        if (p.var != Var.ANGLE_STEP && p.var != Var.TIME_STEP && p.var != Var.TARGET_STEP && p.var != Var.RANGE_STEP) return List.of();
+        if (p.var != Var.ANGLE_STEP && p.var != Var.TIME_STEP && p.var != Var.TARGET_STEP && p.var != Var.BASE_STEP && p.var != Var.RANGE_STEP)
+            return List.of();
         double[] v = p.var == Var.ANGLE_STEP ? t.endRows.get(0).stream().mapToDouble(r -> r.q(p.joint)).toArray() : p.x[0];
         List<Probe> out = new ArrayList<>();
         for (double place : placesNear(v, p.lo))
             out.add(switch (p.var) {
                 case ANGLE_STEP -> angleStep(t, p.joint, place, p.x);
                 case TARGET_STEP -> targetStep(t, place, p.x, p.rf);
+                case BASE_STEP -> baseStep(t, place, p.x);
                 case RANGE_STEP -> rangeStep(t, p.instrument, p.sens, place, p.x);
                 default -> zeroStep(t, p.joint, place, p.x);
             });

@@ -203,7 +203,8 @@ final class Words {
                     + "absolute distance meter), not the robot. It is modelled so that it does not bend the robot's fit, and left out of "
                     + "compensation: check the distance meter against a known length at several distances (the instrument's own "
                     + "compensation or a field check) and measure again.", 1e3 * rmsInstrument(e, v), e.rangeLo(), e.rangeHi(),
-                    Double.isFinite(e.cycle()) ? String.format(Locale.ROOT, ", repeating every %.0f mm", 1e3 * e.cycle()) : "")
+                    Double.isFinite(e.cycle()) ? String.format(Locale.ROOT, ", repeating every %.0f mm%s", 1e3 * e.cycle(),
+                            e.cycleOrders() > 1 ? " and at its harmonics up to " + e.cycleOrders() : "") : "")
                     : String.format(Locale.ROOT, "The measured positions err across the instrument's line of sight as a function of its "
                     + "%s reading (%.2f arc-seconds RMS over %.0f..%.0f deg), which no error of the robot explains: the instrument's %s "
                     + "(an angle encoder's error or its axes' misalignment), not the robot. It is modelled so that it does not bend the "
@@ -226,6 +227,15 @@ final class Words {
                     + "target knocked in its nest, a holder that slipped); the poses before it are modelled with the point where it "
                     + "was then, but check the target's mounting and re-measure a few poses from before that time.",
                     Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * 1e3, v[0] * 1e3, v[1] * 1e3, v[2] * 1e3, e.tauS());
+            case BASE_STEP -> String.format(Locale.ROOT, "Every measured point moved by one rigid motion at about %.0f s into the "
+                    + "campaign, %.4f mm (%.4f, %.4f, %.4f mm along the base's axes) and a turn of %.1f µrad, the same whatever the "
+                    + "arm's pose, and none of the known effects explains it: the instrument and the robot's base moved against each "
+                    + "other (the instrument's stand knocked or a tripod's foot slipping, the base plate sliding on its anchors). The "
+                    + "poses before it are modelled as seen from where the instrument then stood; it is not the robot's error and is "
+                    + "left out of compensation. Check the instrument's stand and the base's anchors, and measure two or three fixed "
+                    + "reference points (nests on the floor or the base) at the start and end of each campaign to see such a move.",
+                    e.tauS(), Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * 1e3, v[0] * 1e3, v[1] * 1e3, v[2] * 1e3,
+                    Math.sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]) * 1e6);
             case RANGE_STEP -> String.format(Locale.ROOT, "Every distance the instrument read changed by %.4f mm at about %.0f s into "
                     + "the campaign, along its line of sight, and none of the known effects explains it (a laser tracker takes the "
                     + "distance again from its absolute distance meter after its beam is broken, and that meter's error stays until "
@@ -355,7 +365,10 @@ final class Words {
 
     /** RMS of an instrument-reading error over the readings' range: its spline's, or a cycle's amplitude over √2. */
     static double rmsInstrument(Effect e, double[] v) {
-        return Double.isFinite(e.cycle()) ? Math.sqrt((v[0] * v[0] + v[1] * v[1]) / 2) : rmsCurve(e, v);
+        if (!Double.isFinite(e.cycle())) return rmsCurve(e, v);
+        double s = 0;
+        for (double x : v) s += x * x;
+        return Math.sqrt(s / 2); // the harmonics are orthogonal over a whole cycle
     }
 
     /** RMS over its range of a spline effect's curve, its mean included (an instrument's offset is part of its error). */

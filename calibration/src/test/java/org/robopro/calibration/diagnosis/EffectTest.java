@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -114,7 +115,13 @@ class EffectTest {
      */
     private double assertColumnsMatchCentralDifferences(List<Measurement> rows, List<EffectBlock> blocks, double[] x, int e0,
                                                         double tol, String label) {
-        IdentificationProblem p = new IdentificationProblem(model, rows, false, true, blocks, x);
+        return assertColumnsMatchCentralDifferences(rows, false, blocks, x, e0, tol, label);
+    }
+
+    /** As above, with the orientation rows too when {@code sixD} (the rows then carry orientations). */
+    private double assertColumnsMatchCentralDifferences(List<Measurement> rows, boolean sixD, List<EffectBlock> blocks, double[] x, int e0,
+                                                        double tol, String label) {
+        IdentificationProblem p = new IdentificationProblem(model, rows, sixD, true, blocks, x);
         p.setSigmas(1, 1);
         int m = p.residualCount(), n = p.fullSize();
         double[] jac = new double[m * n], r = new double[m], rp = new double[m], rm = new double[m];
@@ -150,7 +157,45 @@ class EffectTest {
                 new Effect.Term(Effect.zeroDrift(2, Effect.Along.TEMPERATURE, 20, 32), new double[] {1e-4, -2e-4, 3e-4, 1e-4}),
                 new Effect.Term(Effect.zeroStep(1, 1500), new double[] {3e-4}),
                 new Effect.Term(Effect.axialRunout(model, 0, new int[] {2, 3}), new double[] {5e-5, -3e-5, 2e-5, 4e-5}),
-                new Effect.Term(Effect.toolPlay(model, Effect.DOWN), new double[] {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5}));
+                new Effect.Term(Effect.toolPlay(model, Effect.DOWN, false), new double[] {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5}));
+    }
+
+    /**
+     * A tool play with the flange's tips, measured in 6-D: it reads back with its tips, and its
+     * columns (the point's shifts and the frame's turns) match central differences; the tips turn
+     * the frame and do not move the point.
+     */
+    @Test
+    void toolPlayWithTips_6d_roundTripsAndColumnsMatchCentralDifferences() {
+        Pose tool = Pose.translation(0.0, 0.0, 0.1);
+        Pose inst = Pose.translation(2, 1, 0.3).times(Pose.rotZ(0.7));
+        List<Measurement> rows = new ArrayList<>();
+        // each measured frame as the geometry predicts it
+        for (Measurement m : rows(new TrueRobot(model, tool, inst, 0, 0, List.of()), 8, 13))
+            rows.add(m.withOrientation(inst.times(model.flange(m.q())).times(tool).quaternion()));
+        Effect play = Effect.toolPlay(model, Effect.DOWN, true);
+        double[] v = {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5, 4e-4, -1e-3, 9e-4, -3e-4};
+        assertEquals(v.length, play.size());
+        assertEquals(true, play.turnsFrame());
+        Effect.Term back = Effect.fromDescription(play.describe(v), model, g, "test");
+        assertEquals(play.size(), back.effect().size());
+        assertEquals(true, back.effect().turnsFrame());
+        assertArrayEquals(v, back.values(), 0);
+        // the orientation residual's columns are first order in the turn left: compared where the tips are zero
+        Arrays.fill(v, Effect.PLAY_SHIFTS, v.length, 0);
+        List<EffectBlock> blocks = List.of(play.block(model));
+        double[] x = IdentificationProblem.startVector(model, tool, true, inst, blocks);
+        int e0 = x.length - v.length;
+        System.arraycopy(v, 0, x, e0, v.length);
+        assertEquals(true, assertColumnsMatchCentralDifferences(rows, true, blocks, x, e0, 1e-6, "tool-play tips ") > 0);
+        double[] q = rows.get(0).q(), gp = new double[3 * v.length], gr = new double[3 * v.length];
+        play.positionRegressor(q, PoseConditions.of(rows.get(0)), new double[] {1, 0, 1}, gp);
+        play.rotationRegressor(q, PoseConditions.of(rows.get(0)), gr);
+        for (int a = 0; a < 3; a++)
+            for (int c = 0; c < v.length; c++) {
+                if (c >= Effect.PLAY_SHIFTS) assertEquals(0, gp[a * v.length + c], 0, "a tip moves no point, column " + c);
+                else assertEquals(0, gr[a * v.length + c], 0, "a shift turns no frame, column " + c);
+            }
     }
 
     @Test

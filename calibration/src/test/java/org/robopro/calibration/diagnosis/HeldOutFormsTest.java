@@ -9,6 +9,7 @@ import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.Test;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.WorldCampaigns;
+import org.robopro.calibration.measurement.Measurement;
 import org.robopro.models.RobotFile;
 import org.robopro.models.RobotLibrary;
 import org.robopro.world.Campaign;
@@ -137,6 +138,121 @@ class HeldOutFormsTest {
                     w -> w.withTargetPlay(new WorldRobot.TargetPlay(0.15e-3, Math.toRadians(10))), p -> p).trial(seed));
             Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("puma560"), c.train(), c.validation());
             modelledByFallbackAlone(d, c, seed, "tool-play", 1.5);
+        }
+    }
+
+    /**
+     * The flange tipping within its worn bearing's clearance toward gravity, measured in 6-D (the
+     * world's mount tipping 1.2 mrad about a point 30 mm inside the flange once the tool leans 10°):
+     * the play is modelled with the flange's tips, and those tips turn the tool's axis toward
+     * gravity by about the drawn angle (the world turns z toward û: Δω_f = t·(−û_y, û_x), so
+     * rxy ≈ −t and ryx ≈ +t), however the estimator softens the take-up near vertical.
+     */
+    @Test
+    void flangeTippingWithinItsBearingsClearance_6d_isModelledWithItsTips() {
+        double tilt = 1.2e-3;
+        for (long seed : new long[] {1, 5}) {
+            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("flange tip", "irb2000", Expected.outside(),
+                    w -> w.withTargetPlay(new WorldRobot.TargetPlay(0, Math.toRadians(10), tilt, 0.03)), p -> p.withSixD(true)).trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+            modelledByFallbackAlone(d, c, seed, "tool-play", 1.5);
+            Diagnosis.Finding play = d.effects().stream().filter(f -> f.effect().label().equals("tool-play")).findFirst().orElseThrow();
+            List<String> names = play.effect().parameterNames();
+            double rxy = play.values()[names.indexOf("rxy")], ryx = play.values()[names.indexOf("ryx")];
+            assertEquals(-tilt, rxy, 0.1 * tilt, "seed " + seed + ": rxy");
+            assertEquals(tilt, ryx, 0.1 * tilt, "seed " + seed + ": ryx");
+        }
+    }
+
+    /**
+     * Validation poses taken beyond the training poses' range of joint 2 (the top tenth of its
+     * angles, as a user validating in another part of the cell), on a joint bent by a gas-spring
+     * balancer (the world's torque of a spring on a lever, not a shape the estimator has): the
+     * fallback that follows the bend is fitted over the training range only, and beyond it
+     * extrapolates. The warnings say that the validation error's excess lies at those poses and that
+     * the model carries over within the range; with the same poses split at random, the validation
+     * poses lie within the range and no such sentence is written.
+     */
+    @Test
+    void validationBeyondTheTrainingRange_isSaidToBeExtrapolated() {
+        for (long seed : new long[] {1, 3}) {
+            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("gas spring beyond", "irb2000", Expected.outside(),
+                    withErrors(List.of(new JointError.GasSpring(1, 0.15, 0.35, Math.toRadians(95), 3000, 0.2 / 3, 1.3, 2e5))), p -> p).trial(seed));
+            List<Measurement> all = new ArrayList<>(c.train().rows());
+            all.addAll(c.validation().rows());
+            double[] q2 = all.stream().mapToDouble(m -> m.q(1)).sorted().toArray();
+            double cut = q2[(int) (0.9 * q2.length)];
+            for (boolean beyond : new boolean[] {true, false}) {
+                List<Measurement> tr = new ArrayList<>(), va = new ArrayList<>();
+                for (int i = 0; i < all.size(); i++) {
+                    Measurement m = all.get(i);
+                    if (i % 4 == 0 || beyond && m.q(1) > cut || !beyond && i % 10 == 1) va.add(m);
+                    else tr.add(m);
+                }
+                Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train().withRows(tr), c.validation().withRows(va));
+                String said = String.join(" | ", d.warnings());
+                assertTrue(d.effects().stream().anyMatch(f -> f.effect().label().equals("joint-smooth-error j2")), "seed " + seed + ": "
+                        + d.effects().stream().map(f -> f.effect().label()).toList());
+                if (beyond) {
+                    assertTrue(d.finalValidateRmsM() > 1.5 * c.floorM(), "the extrapolation misses: " + d.finalValidateRmsM() / c.floorM());
+                    assertTrue(said.contains("validation poses lie beyond the range joint-smooth-error j2 was fitted over")
+                            && said.contains("the model carries over to the poses it can predict"), "seed " + seed + ": " + said);
+                } else {
+                    assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
+                    assertTrue(!said.contains("beyond the range"), "seed " + seed + ": " + said);
+                }
+            }
+        }
+    }
+
+    /**
+     * The instrument knocked once, 30 minutes into the campaign (the world's tracker turned by 50
+     * µrad about its own origin and shifted by 0.2 mm): every point moves by one rigid motion from
+     * then on, whatever the arm's pose. A drift of the instrument with time (a family) follows part
+     * of it and was named (a clean-room set's knocked tracker, beside a transmission error); it is
+     * located as a step of the instrument against the base at that time, modelled to the floor on
+     * the training poses, and nothing is named. (A validation pose between the two training poses
+     * either side of the knock can lie on either side of it: the validation error is not held to
+     * the floor.)
+     */
+    @Test
+    void instrumentKnockedOnce_isLocatedAsAStepOfTheBase() {
+        double at = 1800;
+        for (long seed : new long[] {1, 2}) {
+            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("instrument knocked", "irb2000", Expected.outside(),
+                    w -> w.withKnock(new WorldRobot.Knock(at, new double[] {0.15e-3, -0.1e-3, 0.08e-3}, new double[] {20e-6, -40e-6, 20e-6})),
+                    p -> p).trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            Diagnosis.Finding step = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.BASE_STEP).findFirst()
+                    .orElseThrow(() -> new AssertionError("seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList()));
+            assertEquals(at, step.effect().tauS(), 40, "seed " + seed + ": the knock's time");
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the knock matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalTrainRmsM() < 1.1 * c.floorM(), "seed " + seed + ": " + d.finalTrainRmsM() / c.floorM() + " x the floor");
+            assertTrue(d.finalValidateRmsM() < 0.5 * d.geometricValidateRmsM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
+        }
+    }
+
+    /**
+     * A laser tracker's distance meter whose cyclic error repeats at a fine period of 94 mm (a
+     * modulation near 1.6 GHz) and at its second and fourth overtones, 15 µm each (the world's
+     * tracker), measured at σ 5 µm: a single sine left 1.4-1.9 x the floor (a clean-room set's
+     * meter, beside a lost motion that was named right). The periods down to 20 mm are scanned and
+     * the cycle is modelled with its overtones, to the floor; nothing is named.
+     */
+    @Test
+    void distanceMetersCyclicErrorWithOvertones_isModelledToTheFloor() {
+        for (long seed : new long[] {1, 2}) {
+            var tracker = new WorldRobot.Tracker(15e-6, 0.094, 0.7, 0, new int[0], new double[0], new double[0], new int[0], new double[0],
+                    new double[0]).withCyclicOvertones(new double[] {15e-6, 0, 15e-6}, new double[] {2.1, 0, 4.4});
+            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("meter overtones", "irb2000", Expected.outside(), w -> w.withTracker(tracker),
+                    p -> p.withSigma(0.005e-3)).trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.INSTRUMENT && f.effect().cycleOrders() > 0),
+                    "seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
+            assertTrue(d.geometricValidateRmsM() > 1.5 * c.floorM(), "the error matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
         }
     }
 
