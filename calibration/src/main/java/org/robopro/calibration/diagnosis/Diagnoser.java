@@ -408,7 +408,7 @@ public final class Diagnoser {
         List<Fold> folds = CalibrationWorkflow.crossValidate(train, fold, k, (f, tr, va) -> {
             o.cancel().check();
             o.progress().update("cross-validating the claims (fold " + (f + 1) + " of " + k + ")", (double) f / k);
-            Fold df = run(robot, tr, va, fo, null, t0, dirSource, Set.of()).fold;
+            Fold df = firstRun(robot, tr, va, fo, t0, dirSource, Set.of()).fold;
             for (String key : df.named()) count.merge(key, 1, Integer::sum);
             heldSs[0] += va.size() * df.geometricValidateRmsM() * df.geometricValidateRmsM();
             heldSs[1] += va.size() * df.finalValidateRmsM() * df.finalValidateRmsM();
@@ -538,6 +538,17 @@ public final class Diagnoser {
     }
 
     /**
+     * The first run of a diagnosis: with the geometric fit's outliers left out; but a run of them one
+     * after another in time is kept in as a change at one time ({@link #runInTime}), and when no step
+     * at that time is found, they are left out after all.
+     */
+    private static Run firstRun(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
+                                Directions.Source dirSource, Set<String> excluded) {
+        Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
+        return r.unexplainedRun.isEmpty() ? r : run(robot, train, validate, o, r.unexplainedRun, t0, dirSource, excluded);
+    }
+
+    /**
      * The diagnosis of data whose directions are prepared, with the outlier rule judged under the
      * extended model. A validation pose beyond the same rule (5 robust sigmas of the validation
      * poses under the final model) is a bad measurement too: it would decide the validation gates
@@ -547,14 +558,14 @@ public final class Diagnoser {
      */
     private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                       Directions.Source dirSource, Set<String> excluded) {
-        Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
+        Run r = firstRun(robot, train, validate, o, t0, dirSource, excluded);
         if (r.validationOutliers().isEmpty()) return judged(r, robot, train, validate, o, t0, dirSource, excluded, List.of(), new HashSet<>());
         Set<String> bad = new HashSet<>();
         for (CalibrationResult.Outlier ol : r.validationOutliers()) bad.add(ol.poseId());
         MeasurementSet clean = validate.filter(m -> !bad.contains(m.poseId()));
         List<Measurement> beyond = validate.rows().stream().filter(m -> bad.contains(m.poseId())).toList();
         Set<String> inRegion = new HashSet<>();
-        Diagnosis d = judged(run(robot, train, clean, o, null, t0, dirSource, excluded), robot, train, clean, o, t0, dirSource, excluded,
+        Diagnosis d = judged(firstRun(robot, train, clean, o, t0, dirSource, excluded), robot, train, clean, o, t0, dirSource, excluded,
                 beyond, inRegion);
         List<String> outliers = new ArrayList<>(d.outliers()), notes = new ArrayList<>(d.notes());
         for (CalibrationResult.Outlier ol : r.validationOutliers()) {
@@ -1064,6 +1075,8 @@ public final class Diagnoser {
         final List<String> outliersUnder, gross;
         final java.util.function.Supplier<List<String>> underEveryPose;
         final Map<String, Double> sigmasUnder;
+        /** Poses beyond the rule one after another in time that the run kept in and no step at their time explains (else empty). */
+        List<String> unexplainedRun = List.of();
 
         Run(java.util.function.Supplier<Finished> finish, boolean named, Fold fold, boolean validationFlagged, boolean missesFloor,
             List<String> approximated, List<String> outliersUnder, List<String> gross, java.util.function.Supplier<List<String>> underEveryPose,
@@ -1330,6 +1343,10 @@ public final class Diagnoser {
         CalibrationResult geo = Calibrator.calibrate(model, train, validate, co);
         int beyondGeo = geo.outliers().size(); // the geometric fit's poses beyond the rule, every pose in
         boolean manyOutliers = forcedOutliers == null && tooManyToBeBad(beyondGeo, train.size());
+        // A run of poses one after another in time (the instrument knocked, the target slipping, a zero jumping, near the campaign's
+        // end or start, where the geometry cannot follow the change) is a change at one time, not readings gone bad at random.
+        List<String> timeRun = forcedOutliers == null && !manyOutliers ? runInTime(geo.outliers(), train.rows()) : List.of();
+        if (!timeRun.isEmpty()) geo = Calibrator.calibrate(model, train, validate, co.withOutliers(co.outlierK(), false));
         if (LOG.isDebugEnabled())
             for (CalibrationResult.Outlier ol : geo.outliers())
                 LOG.debug("geometric outlier {}: {} robust sigmas", ol.poseId(), ol.residualM() / ol.robustSigmaM());
@@ -1349,7 +1366,7 @@ public final class Diagnoser {
         Set<String> outlierIds = new HashSet<>(forced);
         List<String> outliers = new ArrayList<>(forced.isEmpty() ? List.of() : forcedOutliers);
         for (Measurement m : train.rows()) if (gross.contains(m.poseId()) && outlierIds.add(m.poseId())) outliers.add(m.poseId());
-        if (forcedOutliers == null && !manyOutliers) // with many, the calibration only reports them: none is left out
+        if (forcedOutliers == null && !manyOutliers && timeRun.isEmpty()) // with many, the calibration only reports them: none is left out
             for (CalibrationResult.Outlier ol : geo.outliers())
                 if (outlierIds.add(ol.poseId())) outliers.add(ol.poseId());
         List<Measurement> rows = new ArrayList<>();
@@ -1381,6 +1398,11 @@ public final class Diagnoser {
         for (int j = 0; j < model.dof(); j++)
             if (approached[j] && oneSided(rows, j) && !excluded.contains(claimKey(Effect.backlash(j))))
                 family.add(Effect.windUp(j, APPROACH_BUILD_UP_RAD, APPROACH_RAD, moves));
+        if (!timeRun.isEmpty())
+            notes.add(String.format(Locale.ROOT, "poses %s lie beyond 5 robust sigmas of the geometric fit and were measured one after "
+                    + "another (no other training pose between them in time): bad readings at random would be so with a chance of "
+                    + "%.1g, so none was left out (a change at one time, located below)", String.join(", ", timeRun),
+                    runChance(timeRun.size(), train.size())));
         if (manyOutliers)
             notes.add(String.format(Locale.ROOT, "%d poses lie beyond 5 robust sigmas of the geometric fit, more than %s: too many "
                     + "to be bad measurements, so ", beyondGeo, 0.05 * train.size() > MAX_GROSS ? "5 % of them" : "the "
@@ -2099,7 +2121,25 @@ public final class Diagnoser {
         };
         Fold fold = new Fold(namedKeys(selected), List.copyOf(outliers), geo, geoVal, valFinal);
         // the validation poses' outliers need the finished report only when the rule flags any
-        return new Run(finish, !selected.isEmpty(), fold, !valBeyond.isEmpty(), missesFloor, approximated, under, List.copyOf(gross), underEveryPose, beyond);
+        Run made = new Run(finish, !selected.isEmpty(), fold, !valBeyond.isEmpty(), missesFloor, approximated, under, List.copyOf(gross),
+                underEveryPose, beyond);
+        // a run of poses kept in as a change at one time must be what a step at that time explains; else they are bad readings
+        made.unexplainedRun = timeRun.isEmpty() || stepAtRun(selected, timeRun, trainAll.rows()) ? List.of() : timeRun;
+        return made;
+    }
+
+    /**
+     * Whether a selected step in time (of the instrument against the base, the target, a zero, the
+     * distances) lies at the run of poses {@code run} (ids in time order): after the training pose
+     * before its first, and no later than its last.
+     */
+    static boolean stepAtRun(List<Effect> selected, List<String> run, List<Measurement> rows) {
+        Map<String, Double> time = new java.util.HashMap<>();
+        for (Measurement m : rows) time.put(m.poseId(), m.timeS());
+        double first = time.get(run.get(0)), last = time.get(run.get(run.size() - 1));
+        double before = rows.stream().mapToDouble(Measurement::timeS).filter(t -> t < first).max().orElse(Double.NEGATIVE_INFINITY);
+        return selected.stream().anyMatch(e -> (e.kind() == Effect.Kind.BASE_STEP || e.kind() == Effect.Kind.TARGET_STEP
+                || e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.RANGE_STEP) && e.tauS() > before && e.tauS() <= last);
     }
 
     /**
@@ -4147,6 +4187,33 @@ public final class Diagnoser {
         return Double.isFinite(stated) && heldOutRms > STATED_FLOOR_MARGIN * perfect * noiseFloor(stated, kind.components);
     }
 
+    /**
+     * The poses beyond the outlier rule, when there are at least {@link #MIN_RUN} of them and they were
+     * measured one after another among the training poses {@code rows} (in time): their ids in time
+     * order, else none. Bad readings fall on poses at random; a run in time is a change at one time.
+     */
+    static List<String> runInTime(List<CalibrationResult.Outlier> beyond, List<Measurement> rows) {
+        if (beyond.size() < MIN_RUN || !rows.stream().allMatch(m -> Double.isFinite(m.timeS()))) return List.of();
+        Set<String> ids = new HashSet<>();
+        for (CalibrationResult.Outlier ol : beyond) ids.add(ol.poseId());
+        List<Measurement> byTime = rows.stream().sorted(java.util.Comparator.comparingDouble(Measurement::timeS)).toList();
+        int first = -1, last = -1;
+        for (int i = 0; i < byTime.size(); i++)
+            if (ids.contains(byTime.get(i).poseId())) { if (first < 0) first = i; last = i; }
+        if (first < 0 || last - first + 1 != ids.size()) return List.of();
+        return byTime.subList(first, last + 1).stream().map(Measurement::poseId).toList();
+    }
+
+    /** The chance that g poses picked at random among n are one after another: (n − g + 1) / C(n, g). */
+    static double runChance(int g, int n) {
+        double c = n - g + 1;
+        for (int i = 0; i < g; i++) c *= (double) (i + 1) / (n - i);
+        return c;
+    }
+
+    /** The fewest poses beyond the outlier rule that {@link #runInTime} takes for a run: fewer fall together by chance too often. */
+    static final int MIN_RUN = 3;
+
     /** Whether {@code beyond} poses beyond the outlier rule among {@code poses} are too many to be bad readings (more than {@link #MAX_GROSS} and 5 %). */
     static boolean tooManyToBeBad(int beyond, int poses) { return beyond > Math.max(MAX_GROSS, 0.05 * poses); }
 
@@ -4537,8 +4604,25 @@ public final class Diagnoser {
     static List<Effect> instrumentRivals(Tester t, List<PoseConditions> conds) {
         List<Effect> out = new ArrayList<>();
         // the splines, and the few periods of a distance meter's cycle the residual holds most of
+        List<Locator.Probe> periods = new ArrayList<>();
+        for (Locator.Probe p : Locator.sightProbes(t, true, false)) {
+            if (p.cycle > 0) periods.add(p);
+            else out.add(sightEffect(p));
+        }
+        if (periods.size() > INSTRUMENT_CYCLES_TRIED) {
+            // the periods ranked by their F test on the residual as it is (a k x k cost each); the best few are fitted
+            double[] res = t.residualOutOf(new double[0], 0);
+            double rss = t.rssOutOf(new double[0], 0);
+            Map<Locator.Probe, Double> p0 = new java.util.IdentityHashMap<>();
+            for (Locator.Probe p : periods) {
+                double pv = p.raw == null ? 0 : new Locator.Gram(p).p(t, res, rss, 0);
+                p0.put(p, Double.isNaN(pv) ? 1 : pv);
+            }
+            periods.sort((a, b) -> Double.compare(p0.get(a), p0.get(b)));
+            periods = periods.subList(0, INSTRUMENT_CYCLES_TRIED);
+        }
         List<Effect> cycles = new ArrayList<>();
-        for (Locator.Probe p : Locator.sightProbes(t, true, false)) (p.cycle > 0 ? cycles : out).add(sightEffect(p));
+        for (Locator.Probe p : periods) cycles.add(sightEffect(p));
         Map<Effect, Double> drop = new java.util.IdentityHashMap<>();
         for (Effect c : cycles) {
             Candidate cd = t.test(c, conds);
@@ -4551,6 +4635,9 @@ public final class Diagnoser {
 
     /** The periods of a distance meter's cycle put in a family's place: those that take most of what is left. */
     static final int INSTRUMENT_CYCLE_RIVALS = 3;
+
+    /** The periods of a distance meter's cycle fitted to choose those rivals from: the ones the residual holds most of. */
+    static final int INSTRUMENT_CYCLES_TRIED = 24;
 
     /**
      * Share of what a fallback holding part of a family's shape explains (its lowering of the
