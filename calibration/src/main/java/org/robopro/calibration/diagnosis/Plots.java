@@ -202,17 +202,26 @@ final class Plots {
     static Diagnosis.Plot alongDisplacement(Diagnoser.Tester t, Effect e, double[] v) {
         int k = e.size(), n = t.measurements(), d = t.dim;
         double[] s = t.signature(e, t.w.conditions);
+        // a step in time moves no pose after it: there the residual is taken along the way the step would have moved the pose
+        boolean step = e.kind() == Effect.Kind.BASE_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.RANGE_STEP;
+        double[] sBefore = step ? t.signature(e, t.w.conditions.stream()
+                .map(c -> new PoseConditions(c.directions(), e.tauS(), c.tempC(), c.payloadKg())).toList()) : null;
         double[] x = new double[n], y = new double[n], fx = new double[n], fy = new double[n];
         double unit = t.fit.problem.sigmaPos() * 1e3;
         for (int mi = 0; mi < n; mi++) {
             int r0 = t.rowOf(mi), i = t.poseOf(mi);
-            double[] c = new double[d];
+            double[] c = new double[d], dir = new double[d];
             for (int a = 0; a < d; a++) for (int col = 0; col < k; col++) c[a] += s[(r0 + a) * k + col] * v[col];
             double nc = 0;
             for (double cv : c) nc += cv * cv;
             nc = Math.sqrt(nc);
+            if (nc == 0 && sBefore != null) for (int a = 0; a < d; a++) for (int col = 0; col < k; col++) dir[a] += sBefore[(r0 + a) * k + col] * v[col];
+            else System.arraycopy(c, 0, dir, 0, d);
+            double nd = 0;
+            for (double dv : dir) nd += dv * dv;
+            nd = Math.sqrt(nd);
             double along = 0;
-            if (nc > 0) for (int a = 0; a < d; a++) along += c[a] / nc * t.fit.r[r0 + a];
+            if (nd > 0) for (int a = 0; a < d; a++) along += dir[a] / nd * t.fit.r[r0 + a];
             double[] pb = t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0];
             double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(pb)
                     : e.kind() == Effect.Kind.INSTRUMENT ? e.sightReadingOf(pb) * (e.sight() == Effect.Sight.RANGE ? 1 : 180 / Math.PI)

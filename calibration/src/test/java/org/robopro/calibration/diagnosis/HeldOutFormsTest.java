@@ -227,6 +227,19 @@ class HeldOutFormsTest {
             Diagnosis.Finding step = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.BASE_STEP).findFirst()
                     .orElseThrow(() -> new AssertionError("seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList()));
             assertEquals(at, step.effect().tauS(), 40, "seed " + seed + ": the knock's time");
+            // the evidence: before the knock the partial residual stands at the step's size, after it it scatters about zero
+            // (the residual along the way the step would have moved each pose, not a zero drawn for want of a direction)
+            Diagnosis.Plot p = step.plot();
+            double sizeMm = 1e3 * Math.sqrt(0.15e-3 * 0.15e-3 + 0.1e-3 * 0.1e-3 + 0.08e-3 * 0.08e-3);
+            double before = 0, after = 0, afterSq = 0;
+            int nb = 0, na = 0;
+            for (int i = 0; i < p.x().length; i++) {
+                if (p.x()[i] <= step.effect().tauS()) { before += p.y()[i]; nb++; }
+                else { after += p.y()[i]; afterSq += p.y()[i] * p.y()[i]; na++; }
+            }
+            assertEquals(sizeMm, before / nb, 0.5 * sizeMm, "seed " + seed + ": before the knock");
+            assertEquals(0, after / na, 0.1 * sizeMm, "seed " + seed + ": after the knock");
+            assertTrue(Math.sqrt(afterSq / na) > 0.2 * 1e3 * c.sigmaM(), "seed " + seed + ": the poses after the knock scatter with the noise");
             assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the knock matters: " + d.geometricValidateRmsM() / c.floorM());
             assertTrue(d.finalTrainRmsM() < 1.1 * c.floorM(), "seed " + seed + ": " + d.finalTrainRmsM() / c.floorM() + " x the floor");
             assertTrue(d.finalValidateRmsM() < 0.5 * d.geometricValidateRmsM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM());
