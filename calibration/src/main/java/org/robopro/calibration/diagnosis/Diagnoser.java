@@ -2058,8 +2058,12 @@ public final class Diagnoser {
                 floorWarning = aboveStatedFloor(heldOutRms, onValidation, stated, kind, perfect, fin.nf, selected, foundFinal.isEmpty());
                 warnings.add(0, floorWarning);
             }
+            // the validation poses beyond the range a fallback was fitted over (predicted by extrapolation): for the warnings and the
+            // validation poses' outliers
+            Map<String, Effect> beyondFitted = onValidation && (carryOver != null || floorWarning != null || !valBeyond.isEmpty())
+                    ? beyondFitted(selected, w.validate.rows(), ext, fin.problem.toolOf(fin.full)) : Map.of();
             if (onValidation && (carryOver != null || floorWarning != null))
-                sayWhereValidationMisses(w, fin, selected, ext, rows, warnings, carryOver, floorWarning, valFinal, predicted, hMax);
+                sayWhereValidationMisses(w, fin, selected, beyondFitted, rows, warnings, carryOver, floorWarning, valFinal, predicted, hMax);
             o.progress().update("done", 1);
             // σ per position axis, or per distance: from the position (distance) rows only, degrees of freedom corrected.
             int rppF = fin.problem.rowsPerPose(), posRows = fin.problem.positionRowsPerPose();
@@ -2076,10 +2080,9 @@ public final class Diagnoser {
                 // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
                 Map<String, Measurement> byId = new LinkedHashMap<>();
                 for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
-                org.robopro.kinematics.Pose tool = fin.problem.toolOf(fin.full);
                 Map<CalibrationResult.Outlier, Effect> extrapolated = new LinkedHashMap<>();
                 for (CalibrationResult.Outlier ol : valOut) {
-                    Effect e = outsideFitted(selected, byId.get(ol.poseId()), ext, tool);
+                    Effect e = beyondFitted.get(ol.poseId());
                     if (e != null) extrapolated.put(ol, e);
                 }
                 valOut.removeIf(ol -> extrapolated.containsKey(ol) || inStepGap(selected, byId.get(ol.poseId()), rows));
@@ -2138,8 +2141,7 @@ public final class Diagnoser {
         for (Measurement m : rows) time.put(m.poseId(), m.timeS());
         double first = time.get(run.get(0)), last = time.get(run.get(run.size() - 1));
         double before = rows.stream().mapToDouble(Measurement::timeS).filter(t -> t < first).max().orElse(Double.NEGATIVE_INFINITY);
-        return selected.stream().anyMatch(e -> (e.kind() == Effect.Kind.BASE_STEP || e.kind() == Effect.Kind.TARGET_STEP
-                || e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.RANGE_STEP) && e.tauS() > before && e.tauS() <= last);
+        return selected.stream().anyMatch(e -> e.stepInTime() && e.tauS() > before && e.tauS() <= last);
     }
 
     /**
@@ -2156,11 +2158,8 @@ public final class Diagnoser {
     private static Effect stepAround(List<Effect> selected, Measurement m, List<Measurement> rows) {
         if (m == null) return null;
         for (Effect e : selected) {
-            java.util.function.ToDoubleFunction<Measurement> x = switch (e.kind()) {
-                case ZERO_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP -> Measurement::timeS;
-                case ANGLE_STEP -> r -> r.q(e.joint());
-                default -> null;
-            };
+            java.util.function.ToDoubleFunction<Measurement> x = e.stepInTime() ? Measurement::timeS
+                    : e.kind() == Effect.Kind.ANGLE_STEP ? r -> r.q(e.joint()) : null;
             if (x == null) continue;
             double[] places = e.kind() == Effect.Kind.ANGLE_STEP
                     ? (e.isWindow() ? new double[] {e.rangeLo(), e.rangeHi()} : new double[] {e.rangeLo()}) : new double[] {e.tauS()};
@@ -2185,13 +2184,12 @@ public final class Diagnoser {
      * may lie on either side of it. When some are, the warnings say how many and why, and what the
      * others miss by: whether the model carries over to the poses it can predict.
      */
-    private static void sayWhereValidationMisses(Work w, Fit fin, List<Effect> selected, ExtendedModel ext, List<Measurement> rows,
-                                                 List<String> warnings, String carryOver, String floorWarning, double valFinal,
-                                                 double predicted, int hMax) {
-        org.robopro.kinematics.Pose tool = fin.problem.toolOf(fin.full);
+    private static void sayWhereValidationMisses(Work w, Fit fin, List<Effect> selected, Map<String, Effect> beyondFitted,
+                                                 List<Measurement> rows, List<String> warnings, String carryOver, String floorWarning,
+                                                 double valFinal, double predicted, int hMax) {
         Map<Measurement, Effect> beyond = new LinkedHashMap<>(), inGap = new LinkedHashMap<>();
         for (Measurement m : w.validate.rows()) {
-            Effect e = outsideFitted(selected, m, ext, tool);
+            Effect e = beyondFitted.get(m.poseId());
             if (e != null) beyond.put(m, e);
             else if ((e = stepAround(selected, m, rows)) != null) inGap.put(m, e);
         }
@@ -2230,6 +2228,17 @@ public final class Diagnoser {
     /** "validation pose 12 lies" or "28 validation poses lie". */
     private static String posesLie(java.util.Set<Measurement> poses) {
         return poses.size() == 1 ? "validation pose " + poses.iterator().next().poseId() + " lies" : poses.size() + " validation poses lie";
+    }
+
+    /** Each pose of {@code poses} that lies beyond the fitted range of a selected fallback ({@link #outsideFitted}), by id, with it. */
+    private static Map<String, Effect> beyondFitted(List<Effect> selected, List<Measurement> poses, ExtendedModel ext,
+                                                    org.robopro.kinematics.Pose tool) {
+        Map<String, Effect> out = new LinkedHashMap<>();
+        for (Measurement m : poses) {
+            Effect e = outsideFitted(selected, m, ext, tool);
+            if (e != null) out.put(m.poseId(), e);
+        }
+        return out;
     }
 
     /** The selected fallback whose variable a pose lies beyond the fitted range of (its prediction there is an extrapolation), or null. */
@@ -3722,8 +3731,7 @@ public final class Diagnoser {
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.SMOOTH_BASIS, rows.size()))
                     out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
                             : Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
-        } else if (e.kind() == Effect.Kind.ZERO_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.BASE_STEP
-                || e.kind() == Effect.Kind.RANGE_STEP || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
+        } else if (e.stepInTime() || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
             Locator.Var var = angle ? Locator.Var.ANGLE_STEP : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP
                     : e.kind() == Effect.Kind.BASE_STEP ? Locator.Var.BASE_STEP : Locator.Var.TIME_STEP;

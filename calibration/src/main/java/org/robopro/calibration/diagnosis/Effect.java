@@ -1473,10 +1473,15 @@ public final class Effect {
         };
     }
 
+    /** Whether this effect is a step at one time (s): of a joint's zero, the target on the flange, the instrument against the base, the distances. */
+    public boolean stepInTime() {
+        return kind == Kind.ZERO_STEP || kind == Kind.TARGET_STEP || kind == Kind.BASE_STEP || kind == Kind.RANGE_STEP;
+    }
+
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN || kind == Kind.ZERO_DRIFT || kind == Kind.ZERO_STEP
-                || kind == Kind.ANGLE_STEP || kind == Kind.TARGET_STEP || kind == Kind.BASE_STEP || kind == Kind.RANGE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 

@@ -203,8 +203,7 @@ final class Plots {
         int k = e.size(), n = t.measurements(), d = t.dim;
         double[] s = t.signature(e, t.w.conditions);
         // a step in time moves no pose after it: there the residual is taken along the way the step would have moved the pose
-        boolean step = e.kind() == Effect.Kind.BASE_STEP || e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.RANGE_STEP;
-        double[] sBefore = step ? t.signature(e, t.w.conditions.stream()
+        double[] sBefore = e.stepInTime() ? t.signature(e, t.w.conditions.stream()
                 .map(c -> new PoseConditions(c.directions(), e.tauS(), c.tempC(), c.payloadKg())).toList()) : null;
         double[] x = new double[n], y = new double[n], fx = new double[n], fy = new double[n];
         double unit = t.fit.problem.sigmaPos() * 1e3;

@@ -61,6 +61,19 @@ class HeldOutFormsTest {
         assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
     }
 
+    /** The world's IRB 2000 with its tracker knocked at {@code atS} (0.2 mm and 50 µrad), the default plan; the name seeds the draws. */
+    static WorldCampaigns.Sim knocked(double atS, long seed) {
+        return WorldCampaigns.of(scenario("instrument knocked", "irb2000", Expected.outside(),
+                w -> w.withKnock(new WorldRobot.Knock(atS, new double[] {0.15e-3, -0.1e-3, 0.08e-3}, new double[] {20e-6, -40e-6, 20e-6})),
+                p -> p).trial(seed));
+    }
+
+    /** The diagnosis's step of the base, which must be there. */
+    static Diagnosis.Finding baseStep(Diagnosis d, long seed) {
+        return d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.BASE_STEP).findFirst()
+                .orElseThrow(() -> new AssertionError("seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList()));
+    }
+
     static List<String> families(Diagnosis d) {
         return d.effects().stream().filter(f -> !f.effect().isFallback()).map(f -> f.effect().label()).toList();
     }
@@ -219,13 +232,10 @@ class HeldOutFormsTest {
     void instrumentKnockedOnce_isLocatedAsAStepOfTheBase() {
         double at = 1800;
         for (long seed : new long[] {1, 2}) {
-            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("instrument knocked", "irb2000", Expected.outside(),
-                    w -> w.withKnock(new WorldRobot.Knock(at, new double[] {0.15e-3, -0.1e-3, 0.08e-3}, new double[] {20e-6, -40e-6, 20e-6})),
-                    p -> p).trial(seed));
+            WorldCampaigns.Sim c = knocked(at, seed);
             Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
             assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
-            Diagnosis.Finding step = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.BASE_STEP).findFirst()
-                    .orElseThrow(() -> new AssertionError("seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList()));
+            Diagnosis.Finding step = baseStep(d, seed);
             assertEquals(at, step.effect().tauS(), 40, "seed " + seed + ": the knock's time");
             // the evidence: before the knock the partial residual stands at the step's size, after it it scatters about zero
             // (the residual along the way the step would have moved each pose, not a zero drawn for want of a direction)
@@ -280,14 +290,11 @@ class HeldOutFormsTest {
     @Test
     void runOfPosesInTime_isAStepWhenOneExplainsIt_elseBadReadings() {
         for (long seed : new long[] {1, 2}) {
-            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("instrument knocked", "irb2000", Expected.outside(),
-                    w -> w.withKnock(new WorldRobot.Knock(3350, new double[] {0.15e-3, -0.1e-3, 0.08e-3}, new double[] {20e-6, -40e-6, 20e-6})),
-                    p -> p).trial(seed));
+            WorldCampaigns.Sim c = knocked(3350, seed);
             Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
             assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
             assertEquals(List.of(), d.outliers(), "seed " + seed + ": notes " + d.notes());
-            Diagnosis.Finding step = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.BASE_STEP).findFirst()
-                    .orElseThrow(() -> new AssertionError("seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList()));
+            Diagnosis.Finding step = baseStep(d, seed);
             assertEquals(3350, step.effect().tauS(), 15, "seed " + seed + ": the knock's time");
             assertTrue(d.finalTrainRmsM() < 1.1 * c.floorM(), "seed " + seed + ": " + d.finalTrainRmsM() / c.floorM() + " x the floor");
 
