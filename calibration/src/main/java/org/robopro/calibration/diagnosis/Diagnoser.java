@@ -544,8 +544,14 @@ public final class Diagnoser {
      */
     private static Run firstRun(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                 Directions.Source dirSource, Set<String> excluded) {
-        Run r = run(robot, train, validate, o, null, t0, dirSource, excluded);
-        return r.unexplainedRun.isEmpty() ? r : run(robot, train, validate, o, r.unexplainedRun, t0, dirSource, excluded);
+        return firstRun(robot, train, validate, o, t0, dirSource, excluded, false);
+    }
+
+    /** {@link #firstRun} that may set gross validation readings aside from the start ({@link #run}'s {@code screen}). */
+    private static Run firstRun(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
+                                Directions.Source dirSource, Set<String> excluded, boolean screen) {
+        Run r = run(robot, train, validate, o, null, t0, dirSource, excluded, Double.NaN, screen);
+        return r.unexplainedRun.isEmpty() ? r : run(robot, train, validate, o, r.unexplainedRun, t0, dirSource, excluded, Double.NaN, screen);
     }
 
     /**
@@ -558,15 +564,18 @@ public final class Diagnoser {
      */
     private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                       Directions.Source dirSource, Set<String> excluded) {
-        Run r = firstRun(robot, train, validate, o, t0, dirSource, excluded);
-        if (r.validationOutliers().isEmpty()) return judged(r, robot, train, validate, o, t0, dirSource, excluded, List.of(), new HashSet<>());
+        Run r = firstRun(robot, train, validate, o, t0, dirSource, excluded, true);
+        if (r.validationOutliers().isEmpty() && r.screened.isEmpty())
+            return judged(r, robot, train, validate, o, t0, dirSource, excluded, List.of(), new HashSet<>());
         Set<String> bad = new HashSet<>();
         for (CalibrationResult.Outlier ol : r.validationOutliers()) bad.add(ol.poseId());
         MeasurementSet clean = validate.filter(m -> !bad.contains(m.poseId()));
         List<Measurement> beyond = validate.rows().stream().filter(m -> bad.contains(m.poseId())).toList();
         Set<String> inRegion = new HashSet<>();
-        Diagnosis d = judged(firstRun(robot, train, clean, o, t0, dirSource, excluded), robot, train, clean, o, t0, dirSource, excluded,
-                beyond, inRegion);
+        // the poses set aside from the start are exactly those the final model puts beyond the rule: that run was the run
+        // without them already
+        Run clear = bad.equals(new HashSet<>(r.screened)) ? r : firstRun(robot, train, clean, o, t0, dirSource, excluded);
+        Diagnosis d = judged(clear, robot, train, clean, o, t0, dirSource, excluded, beyond, inRegion);
         List<String> outliers = new ArrayList<>(d.outliers()), notes = new ArrayList<>(d.notes());
         for (CalibrationResult.Outlier ol : r.validationOutliers()) {
             boolean region = inRegion.contains(ol.poseId());
@@ -1077,6 +1086,8 @@ public final class Diagnoser {
         final Map<String, Double> sigmasUnder;
         /** Poses beyond the rule one after another in time that the run kept in and no step at their time explains (else empty). */
         List<String> unexplainedRun = List.of();
+        /** The validation poses set aside from the start as gross readings under the geometric fit ({@link #grossValidation}). */
+        List<String> screened = List.of();
 
         Run(java.util.function.Supplier<Finished> finish, boolean named, Fold fold, boolean validationFlagged, boolean missesFloor,
             List<String> approximated, List<String> outliersUnder, List<String> gross, java.util.function.Supplier<List<String>> underEveryPose,
@@ -1136,6 +1147,21 @@ public final class Diagnoser {
 
     /** A run's report and the validation poses beyond the outlier rule under its final model. */
     private record Finished(Diagnosis d, List<CalibrationResult.Outlier> validationOutliers) { }
+
+    /**
+     * The validation poses that are gross readings under the geometric fit of {@code w} ({@link #grossAmong} of those beyond
+     * the outlier rule, their robust sigma the validation poses'), in file order; none with fewer than 10 validation poses,
+     * or with lengths (a length's gross error is judged with the model that tells it).
+     */
+    static List<String> grossValidation(Work w, CalibrationResult geo) {
+        if (w.validate == null || w.validate.size() < 10 || geo.distance() || geo.pairs()) return List.of();
+        Fit g = w.fit(List.of(), new java.util.IdentityHashMap<>(), w.geoFull, null);
+        List<CalibrationResult.Outlier> far = grossAmong(List.copyOf(
+                Calibrator.outliers(g.problem, g.full, w.validate, Set.of(), OUTLIER_K).values()), w.validate.size());
+        Set<String> ids = new HashSet<>();
+        for (CalibrationResult.Outlier ol : far) ids.add(ol.poseId());
+        return w.validate.rows().stream().map(Measurement::poseId).filter(ids::contains).toList();
+    }
 
     /** Robust sigmas beyond which a pose is an outlier under the extended model (the calibration's default rule). */
     static final double OUTLIER_K = 5;
@@ -1318,7 +1344,7 @@ public final class Diagnoser {
      */
     private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
                            List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded) {
-        return run(robot, trainAll, validate, o, forcedOutliers, t0, dirSource, excluded, Double.NaN);
+        return run(robot, trainAll, validate, o, forcedOutliers, t0, dirSource, excluded, Double.NaN, false);
     }
 
     /**
@@ -1332,7 +1358,8 @@ public final class Diagnoser {
      * of the weighted residual, is kept).
      */
     private static Run run(RobotDescription robot, MeasurementSet trainAll, MeasurementSet validate, Options o,
-                           List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded, double rotOverPos) {
+                           List<String> forcedOutliers, long t0, Directions.Source dirSource, Set<String> excluded, double rotOverPos,
+                           boolean screen) {
         KinematicModel model = KinematicModel.build(robot);
         GravityTorques gravity = GravityTorques.of(model, robot);
         o.progress().update("geometric calibration", 0);
@@ -1372,8 +1399,17 @@ public final class Diagnoser {
         List<Measurement> rows = new ArrayList<>();
         for (Measurement m : train.rows()) if (!outlierIds.contains(m.poseId())) rows.add(m);
 
-        Work w = Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, validate, o)
+        Work allValidation = Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, validate, o)
                 : new Work(model, gravity, rows, geo, validate, o, Work.positionSigma(geo), Work.positionSigma(geo) * rotOverPos);
+        // Validation poses far beyond the outlier rule under the geometric fit already (gross readings: a beam broken and caught
+        // again) are set aside from every decision taken on the validation poses; the final model judges them again with the
+        // rest, and when it puts exactly these beyond the rule this run is the run without them (prepared), which judged only
+        // at the end would be the whole diagnosis once more.
+        List<String> screened = screen ? grossValidation(allValidation, geo) : List.of();
+        Set<String> setAside = new HashSet<>(screened);
+        MeasurementSet kept = screened.isEmpty() ? validate : validate.filter(m -> !setAside.contains(m.poseId()));
+        Work w = screened.isEmpty() ? allValidation : Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, kept, o)
+                : new Work(model, gravity, rows, geo, kept, o, Work.positionSigma(geo), Work.positionSigma(geo) * rotOverPos);
         List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
         // Each pose's last move per joint, in the measuring order of the whole file: a lost motion that builds up over the move.
         Directions.Moves moves = geo.pairs() ? Directions.Moves.NONE : Directions.moves(trainAll, validate);
@@ -1874,7 +1910,7 @@ public final class Diagnoser {
             double used = w.sigmaRot / w.sigmaPos, left = sd[1] / sd[0];
             if (left > used * REWEIGHT || left < used / REWEIGHT) {
                 LOG.debug("reweight: the model leaves rotation against position σ {} rad/m, weighted with {}: diagnosis redone", left, used);
-                return run(robot, trainAll, validate, o, forcedOutliers, t0, dirSource, excluded, left);
+                return run(robot, trainAll, validate, o, forcedOutliers, t0, dirSource, excluded, left, screen);
             }
         }
         // Candidates selected later are not "not identifiable" even if an earlier basis absorbed them.
@@ -2008,8 +2044,9 @@ public final class Diagnoser {
         // A fallback follows a structure by a shape fitted to it, not by its physics: where the shape and the structure part,
         // a clean pose may lie a few robust sigmas out.
         List<String> approximated = selected.stream().filter(Effect::isFallback).map(Effect::label).toList();
-        List<CalibrationResult.Outlier> valBeyond = w.validate == null || w.validate.size() < 10 ? List.of()
-                : List.copyOf(Calibrator.outliers(fit.problem, fit.full, w.validate, Set.of(), OUTLIER_K).values());
+        // (every validation pose, those set aside from the start too)
+        List<CalibrationResult.Outlier> valBeyond = validate == null || validate.size() < 10 ? List.of()
+                : List.copyOf(Calibrator.outliers(fit.problem, fit.full, validate, Set.of(), OUTLIER_K).values());
         java.util.function.Supplier<Finished> finish = () -> {
             // Locate what is left, and report every structure found (named or not).
             Tester lastTester = plotTester != null ? plotTester : geoTester;
@@ -2061,7 +2098,7 @@ public final class Diagnoser {
             // the validation poses beyond the range a fallback was fitted over (predicted by extrapolation): for the warnings and the
             // validation poses' outliers
             Map<String, Effect> beyondFitted = onValidation && (carryOver != null || floorWarning != null || !valBeyond.isEmpty())
-                    ? beyondFitted(selected, w.validate.rows(), ext, fin.problem.toolOf(fin.full)) : Map.of();
+                    ? beyondFitted(selected, validate.rows(), ext, fin.problem.toolOf(fin.full)) : Map.of();
             if (onValidation && (carryOver != null || floorWarning != null))
                 sayWhereValidationMisses(w, fin, selected, beyondFitted, rows, warnings, carryOver, floorWarning, valFinal, predicted, hMax);
             o.progress().update("done", 1);
@@ -2074,12 +2111,12 @@ public final class Diagnoser {
             // structure located and left, a few gross readings only; with the model short of the instrument's stated floor, or
             // resting on a fallback's shape, only those beyond SHORT_MODEL_SIGMAS.
             List<CalibrationResult.Outlier> valOut = new ArrayList<>(valBeyond);
-            if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, w.validate.size());
+            if (!foundFinal.isEmpty() && !valOut.isEmpty()) valOut = grossAmong(valOut, validate.size());
             else if ((missesFloor || !approximated.isEmpty()) && !valOut.isEmpty()) valOut.removeIf(ol -> !(ol.residualM() / ol.robustSigmaM() > SHORT_MODEL_SIGMAS));
             if (!valOut.isEmpty()) {
                 // A pose beyond the range a fallback was fitted over is predicted by extrapolation, not judged.
                 Map<String, Measurement> byId = new LinkedHashMap<>();
-                for (Measurement m : w.validate.rows()) byId.put(m.poseId(), m);
+                for (Measurement m : validate.rows()) byId.put(m.poseId(), m);
                 Map<CalibrationResult.Outlier, Effect> extrapolated = new LinkedHashMap<>();
                 for (CalibrationResult.Outlier ol : valOut) {
                     Effect e = beyondFitted.get(ol.poseId());
@@ -2126,6 +2163,7 @@ public final class Diagnoser {
         // the validation poses' outliers need the finished report only when the rule flags any
         Run made = new Run(finish, !selected.isEmpty(), fold, !valBeyond.isEmpty(), missesFloor, approximated, under, List.copyOf(gross),
                 underEveryPose, beyond);
+        made.screened = screened;
         // a run of poses kept in as a change at one time must be what a step at that time explains; else they are bad readings
         made.unexplainedRun = timeRun.isEmpty() || stepAtRun(selected, timeRun, trainAll.rows()) ? List.of() : timeRun;
         return made;
@@ -3104,6 +3142,10 @@ public final class Diagnoser {
                         if (besideFamily.contains(f.label())) continue;
                         Candidate c = at.test(f, w.conditions);
                         if (c.keptColumns == 0 || !(c.p < thr) || !(c.pressAfter < c.pressBefore)) continue;
+                        // what it finds beside a family that explains nearly all it does in the family's place (or more) is
+                        // another structure, left to be located: a gear's pin order the fallback's curve cannot follow, and a
+                        // trace of the noise's in the same joint
+                        if (mostlyFamily(at, k, e, f, w)) continue;
                         why = String.format(Locale.ROOT, "%s is not claimed: with it fitted, %s still finds significant structure "
                                 + "in the same variable (F = %.1f, p = %.2g), so the family does not explain what was located",
                                 e.label(), f.label(), c.f, c.p);
@@ -3169,6 +3211,7 @@ public final class Diagnoser {
             k = -1;
             if (++refinements > 2 * MAX_LOCATED) break;
         }
+        fit = tuneCycles(w, fit, selected, absorbedCols, steps, rows);
         // A jump of the instrument's distances taken while a smooth change of them with the same time was held back (outside
         // its bounds then, taken later) must still hold beside the final model: at the threshold it was taken at, and with a
         // lower leave-one-pose-out error. A smooth drift the scale's spline does not quite follow is no broken beam.
@@ -3745,6 +3788,77 @@ public final class Diagnoser {
     }
 
     /**
+     * A distance meter's cycle in the model, its period tuned and its overtones taken in. A period a
+     * fraction of the scan's grid step off leaves a phase error that grows with the harmonic (over
+     * a span of metres, a quarter cycle at the fourth where the cycle itself is followed), and what
+     * the cycle then misses was taken by a second cycle at a half or a quarter of its period, or
+     * one near it. Each cycle, the longest first, is refitted with as many harmonics as the poses
+     * support (up to {@link #MAX_CYCLE_ORDERS}) at the period that predicts left-out poses best,
+     * searched over half the scan's step either side of its period and a step either side of half
+     * its period (a sixteenth of a step apart, then by golden section), the other cycles at its
+     * overtones' periods taken out; it stays when the model predicts left-out poses at least as well.
+     */
+    private static Fit tuneCycles(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
+                                  List<Measurement> rows) {
+        List<Effect> cycles = selected.stream().filter(e -> e.kind() == Effect.Kind.INSTRUMENT && Double.isFinite(e.cycle()))
+                .sorted((x, y) -> Double.compare(y.cycle(), x.cycle())).toList();
+        for (Effect ea : cycles) {
+            if (!selected.contains(ea)) continue;
+            double fa = 1 / ea.cycle(), step = 1 / (3 * (ea.rangeHi() - ea.rangeLo()));
+            int orders = ea.cycleOrders();
+            while (orders < MAX_CYCLE_ORDERS && Effect.supported(2 * (orders + 1), 2, rows.size())) orders++;
+            List<Effect> overtones = new ArrayList<>();
+            for (Effect eb : selected) {
+                if (eb == ea || eb.kind() != Effect.Kind.INSTRUMENT || !Double.isFinite(eb.cycle()) || eb.sight() != ea.sight()) continue;
+                long m = Math.round(ea.cycle() / eb.cycle());
+                if (m >= 1 && m <= orders && Math.abs(1 / eb.cycle() - m * fa) <= m * step) overtones.add(eb);
+            }
+            double before = w.tester(fit).pressFull();
+            List<Effect> keptSel = new ArrayList<>(selected);
+            Map<Effect, boolean[]> keptCols = new java.util.IdentityHashMap<>(absorbedCols);
+            List<Step> keptSteps = new ArrayList<>(steps);
+            Fit without = fit;
+            for (Effect eb : overtones) without = dropAndRefit(w, without, selected, absorbedCols, steps, selected.indexOf(eb));
+            int ka = selected.indexOf(ea);
+            Tester at = w.tester(without);
+            int h = orders;
+            java.util.function.DoubleUnaryOperator press = f -> at.pressReplacing(ka, Effect.instrumentCyclic(ea.sight(), ea.instrumentPose(),
+                    ea.azimuthRef(), ea.rangeLo(), ea.rangeHi(), 1 / f, h), w.conditions);
+            // (and at twice its frequency: a scan's probe with harmonics holds the cycle's own harmonics at half its period too, and
+            // the one at half the period, with its own harmonics, holds a fourth overtone the longer one's four harmonics miss)
+            double bestF = fa, bestP = Double.POSITIVE_INFINITY, d = step / 16;
+            for (int mult = 1; mult <= 2; mult++)
+                for (int i = -8 * mult; i <= 8 * mult; i++) {
+                    double f = mult * fa + i * d, pf = f > 0 ? press.applyAsDouble(f) : Double.POSITIVE_INFINITY;
+                    if (pf < bestP) { bestP = pf; bestF = f; }
+                }
+            // golden section within a grid point either side of the best
+            double lo = bestF - d, hi = bestF + d, g = (Math.sqrt(5) - 1) / 2;
+            double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), p1 = press.applyAsDouble(x1), p2 = press.applyAsDouble(x2);
+            for (int it = 0; it < 8; it++) {
+                if (p1 < p2) { hi = x2; x2 = x1; p2 = p1; x1 = hi - g * (hi - lo); p1 = press.applyAsDouble(x1); }
+                else { lo = x1; x1 = x2; p1 = p2; x2 = lo + g * (hi - lo); p2 = press.applyAsDouble(x2); }
+            }
+            if (Math.min(p1, p2) < bestP) { bestP = Math.min(p1, p2); bestF = p1 < p2 ? x1 : x2; }
+            Effect tuned = Effect.instrumentCyclic(ea.sight(), ea.instrumentPose(), ea.azimuthRef(), ea.rangeLo(), ea.rangeHi(), 1 / bestF, h);
+            int n = selected.size();
+            Fit one = bestP <= before ? replaceEffect(w, without, selected, absorbedCols, steps, ka, tuned, false) : null;
+            if (one != null && selected.size() == n && w.tester(one).pressFull() <= before) {
+                LOG.debug("{} tuned to {}, taking {}", ea.label(), tuned.label(), overtones.stream().map(Effect::label).toList());
+                fit = one;
+                continue;
+            }
+            selected.clear();
+            selected.addAll(keptSel);
+            absorbedCols.clear();
+            absorbedCols.putAll(keptCols);
+            steps.clear();
+            steps.addAll(keptSteps);
+        }
+        return fit;
+    }
+
+    /**
      * What took a structure found after the geometric fit that the final model no longer leaves,
      * though no effect of its own variable was named: the selected effect with which, added to the
      * geometric model, the structure is no longer significant at its own threshold (the one that
@@ -4078,8 +4192,16 @@ public final class Diagnoser {
             case JOINT_PAIR -> String.format(Locale.ROOT, "move joint %d through its range at several fixed angles of joint %d "
                     + "(and the reverse) to map how joint %d's error depends on both; look for cross-talk between their drives, "
                     + "cables or counterbalance.", f.probe.joint + 1, f.probe.other + 1, f.probe.joint + 1);
-            case DIRECTION -> String.format(Locale.ROOT, "approach each pose of joint %d from both directions and record "
-                    + "dir1..dirN.", f.probe.joint + 1);
+            // with the directions recorded, the structure is there beside every named lost motion: not one of a fixed size (a
+            // structure's residual deflection decays and swings after the stop, e^(−ζωt)·cos(ω_d·t), so a reading taken within a
+            // second of it carries a deflection that follows the move just made; Rao, Mechanical Vibrations, §2.6)
+            case DIRECTION -> f.probe.dirs == Directions.Source.RECORDED
+                    ? "repeat a few poses, approached from each side, reading once right after the arm stops and once after "
+                    + "waiting a few seconds: an error that shrinks with the wait is the arm not yet settled at the reading (a "
+                    + "residual vibration after the stop, a servo's following error: wait longer before each reading), one that "
+                    + "stays is a lost motion of the drive whose size changes with the load or the move."
+                    : String.format(Locale.ROOT, "approach each pose of joint %d from both directions and record dir1..dirN.",
+                    f.probe.joint + 1);
             case TIME, TEMPERATURE -> f.probe.joint >= 0
                     ? String.format(Locale.ROOT, "re-measure a few fixed poses of joint %d every few minutes and record the drive's "
                     + "temperature: a zero that creeps or warms up shows as a trend at the same pose.", f.probe.joint + 1)
@@ -4598,7 +4720,7 @@ public final class Diagnoser {
 
     /** The instrument-reading fallback of an instrument probe ({@link Locator#sightProbes}). */
     static Effect sightEffect(Locator.Probe p) {
-        if (p.cycle > 0) return Effect.instrumentCyclic(p.sight, p.instrument, p.azimuthRef, p.lo, p.hi, p.cycle);
+        if (p.cycle > 0) return Effect.instrumentCyclic(p.sight, p.instrument, p.azimuthRef, p.lo, p.hi, p.cycle, p.cycleOrders);
         return Effect.instrumentReading(p.sight, p.instrument, p.azimuthRef, p.lo, p.hi, p.basis);
     }
 

@@ -101,6 +101,9 @@ final class Locator {
         org.robopro.kinematics.Pose instrument;  // SIGHT, RANGE_STEP: instrumentTbase at the scanned fit
         double azimuthRef;                       // SIGHT: the azimuth the readings are taken about
         double cycle;                            // SIGHT: the period of a cyclic error of the reading (0: a spline)
+        int cycleOrders = 1;                     // SIGHT with a cycle: its harmonics 1..this
+        double[] reading;                        // SIGHT with a cycle: each residual row's reading (its sensitivity in sens)
+        Directions.Source dirs;                  // DIRECTION: where the directions came from
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
         Effect bend;                             // LINK_BEND, LINK_TWIST: the link's sag or twist
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
@@ -246,6 +249,7 @@ final class Locator {
             if (dirs != Directions.Source.NONE && t.endRows.stream().allMatch(er -> er.stream().allMatch(r -> r.directions() != null))) {
                 Probe d = drive(t, j, 1, (e, i, g) -> g[0] = -0.5 * t.endConditions.get(e).get(i).direction(jj));
                 d.var = Var.DIRECTION;
+                d.dirs = dirs;
                 d.joint = j;
                 d.variable = "direction of joint " + (j + 1);
                 d.shape = "changes sign with the direction joint " + (j + 1) + " last moved in (directions " + dirs.words + ")";
@@ -748,32 +752,76 @@ final class Locator {
     private static List<Probe> rangeCycles(Diagnoser.Tester t, org.robopro.kinematics.Pose inst, double[] u, double[] sens,
                                            double[][] x, double lo, double hi) {
         List<Probe> out = new ArrayList<>();
-        int poses = x[0].length;
-        double span = hi - lo;
-        double fMax = Math.min(1 / MIN_RANGE_CYCLE_M, poses / (3 * span)), step = 1 / (3 * span);
+        double span = hi - lo, fMax = cycleFrequencyMax(x[0].length, span), step = 1 / (3 * span);
         for (double f = 2 / span; f <= fMax; f += step) {
-            double lambda = 1 / f;
-            double[] s = new double[t.m * 2];
-            for (int row = 0; row < t.m; row++) {
-                if (sens[row] == 0) continue;
-                double ph = 2 * Math.PI * u[row] / lambda;
-                s[row * 2] = sens[row] * Math.sin(ph);
-                s[row * 2 + 1] = sens[row] * Math.cos(ph);
+            // the period alone, and with as many of its harmonics as the poses resolve (up to MAX_CYCLE_ORDERS): a phase
+            // meter's error repeats at its cycle's halves and quarters too, and spread over them each alone may be too weak
+            int most = mostCycleOrders(f, fMax);
+            out.add(cycleProbe(t, inst, u, sens, x, lo, hi, 1 / f, 1));
+            if (most > 1) out.add(cycleProbe(t, inst, u, sens, x, lo, hi, 1 / f, most));
+        }
+        return out;
+    }
+
+    /** The highest frequency of a distance meter's cycle scanned (1/m): down to {@link #MIN_RANGE_CYCLE_M}, 3 poses per period. */
+    private static double cycleFrequencyMax(int poses, double span) { return Math.min(1 / MIN_RANGE_CYCLE_M, poses / (3 * span)); }
+
+    /** The most harmonics of a cycle at frequency f the scan resolves (each at most fMax), up to {@link Diagnoser#MAX_CYCLE_ORDERS}. */
+    private static int mostCycleOrders(double f, double fMax) {
+        return Math.min(Diagnoser.MAX_CYCLE_ORDERS, (int) Math.floor(fMax / f + 1e-9));
+    }
+
+    /** A distance meter's cyclic error of period {@code lambda} (m) with its harmonics 1..{@code orders}: 2·orders columns. */
+    private static Probe cycleProbe(Diagnoser.Tester t, org.robopro.kinematics.Pose inst, double[] u, double[] sens, double[][] x,
+                                    double lo, double hi, double lambda, int orders) {
+        int k = 2 * orders;
+        double[] s = new double[t.m * k];
+        for (int row = 0; row < t.m; row++) {
+            if (sens[row] == 0) continue;
+            for (int h = 1; h <= orders; h++) {
+                double ph = 2 * Math.PI * h * u[row] / lambda;
+                s[row * k + 2 * h - 2] = sens[row] * Math.sin(ph);
+                s[row * k + 2 * h - 1] = sens[row] * Math.cos(ph);
             }
-            Probe pr = finish(t, s, 2);
-            pr.var = Var.SIGHT;
-            pr.sight = Effect.Sight.RANGE;
-            pr.instrument = inst;
-            pr.cycle = lambda;
-            pr.lo = lo;
-            pr.hi = hi;
-            pr.variable = "instrument distance";
-            // one probe per period tried, a few hundred: the words without the formatter (the same rounding as %.0f)
-            pr.shape = "the measured positions err along the instrument's line of sight, repeating every "
-                    + Math.round(1e3 * lambda) + " mm of its distance reading (a distance meter's cyclic error)";
-            pr.x = x;
-            pr.xLabel = "the instrument's distance reading (m)";
-            out.add(pr);
+        }
+        Probe pr = finish(t, s, k);
+        pr.var = Var.SIGHT;
+        pr.sight = Effect.Sight.RANGE;
+        pr.instrument = inst;
+        pr.cycle = lambda;
+        pr.cycleOrders = orders;
+        pr.reading = u;
+        pr.sens = sens;
+        pr.lo = lo;
+        pr.hi = hi;
+        pr.variable = "instrument distance";
+        // one probe per period tried, a few hundred: the words without the formatter (the same rounding as %.0f)
+        pr.shape = "the measured positions err along the instrument's line of sight, repeating every "
+                + Math.round(1e3 * lambda) + " mm of its distance reading" + (orders > 1 ? " with its harmonics 1-" + orders : "")
+                + " (a distance meter's cyclic error)";
+        pr.x = x;
+        pr.xLabel = "the instrument's distance reading (m)";
+        return pr;
+    }
+
+    /**
+     * A distance meter's cycle found: its period on a grid eight times finer than the scan's, half a
+     * step either side, alone and with as many of its harmonics as the poses resolve. Over a span of
+     * metres a period a fraction of the scan's step off leaves a phase error that grows with the
+     * harmonic: a quarter cycle at the fourth, where the cycle itself is followed.
+     */
+    static List<Probe> finerCycles(Diagnoser.Tester t, Probe p) {
+        if (p.var != Var.SIGHT || !(p.cycle > 0) || p.reading == null) return List.of();
+        double span = p.hi - p.lo, fMax = cycleFrequencyMax(p.x[0].length, span), step = 1 / (3 * span), f0 = 1 / p.cycle;
+        List<Probe> out = new ArrayList<>();
+        for (int i = -4; i <= 4; i++) {
+            double f = f0 + i * step / 8;
+            if (!(f > 0) || f > fMax) continue;
+            int most = mostCycleOrders(f, fMax);
+            for (int orders = 1; orders <= most; orders *= 2)
+                if (i != 0 || orders != p.cycleOrders) out.add(cycleProbe(t, p.instrument, p.reading, p.sens, p.x, p.lo, p.hi, 1 / f, orders));
+            if (most > 1 && Integer.bitCount(most) != 1 && (i != 0 || most != p.cycleOrders))
+                out.add(cycleProbe(t, p.instrument, p.reading, p.sens, p.x, p.lo, p.hi, 1 / f, most));
         }
         return out;
     }
@@ -1281,6 +1329,15 @@ final class Locator {
             for (Probe fine : finerSteps(t, best.probe)) {
                 Diagnoser.Candidate c = test(t, fine, q, nq, best.c.threshold);
                 if (c != null && c.p < best.c.threshold && c.drss > best.c.drss) {
+                    c.threshold = best.c.threshold;
+                    best.probe = fine;
+                    best.c = c;
+                }
+            }
+            // a cycle: the period and the harmonics that explain most for their count (BIC)
+            for (Probe fine : finerCycles(t, best.probe)) {
+                Diagnoser.Candidate c = test(t, fine, q, nq, best.c.threshold);
+                if (c != null && c.p < best.c.threshold && Diagnoser.lowerBic(c.bic, best.c.bic)) {
                     c.threshold = best.c.threshold;
                     best.probe = fine;
                     best.c = c;
