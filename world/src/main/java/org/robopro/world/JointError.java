@@ -362,10 +362,44 @@ public sealed interface JointError {
         }
 
         /** SplitMix64's finaliser (Steele, Lea &amp; Flood, OOPSLA 2014). */
-        private static long mix(long z) {
+        static long mix(long z) {
             z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
             z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
             return z ^ (z >>> 31);
+        }
+    }
+
+    /**
+     * Outside every catalogue family: the arm read before it settled. Each move is synchronised and
+     * limited by acceleration alone (bang-bang: every joint accelerates for half the move and brakes
+     * for the other half, the move lasting as long as the joint that needs longest at its limit
+     * {@code accel[k]}, rad/s²: T = max_k 2·√(|Δq_k| / A_k), joint j braking at a_j = 4·Δq_j / T²).
+     * While it brakes, the structure of drive j carries the quasi-static deflection a_j/ω² ahead of
+     * its motor, and released at the stop it rings as a damped single mode from rest there,
+     * x(t) = e^(−ζωt)·(cos ω_d t + ζ/√(1−ζ²)·sin ω_d t), ω_d = ω√(1−ζ²) (the free response of a
+     * viscously damped oscillator; W. T. Thomson, Theory of Vibration with Applications, §2.5): the
+     * output at the reading, {@code dwellS} after the stop (plus up to {@code jitterS} more, uniform,
+     * drawn from the pose: the controller's cycle and the instrument's averaging shift the moment of
+     * the reading), is off by (a_j/ω²)·x(t). Nothing before the first move.
+     */
+    record Settling(int joint, double hz, double zeta, double dwellS, double jitterS, double[] accel) implements JointError {
+        public Settling { accel = accel.clone(); }
+
+        @Override public double delta(double[] q, Moment m) {
+            if (m.lastMove() == null) return 0;
+            double t = 0;
+            for (int k = 0; k < m.lastMove().length && k < accel.length; k++) {
+                double d = m.lastMove()[k];
+                if (!Double.isFinite(d)) return 0;
+                t = Math.max(t, 2 * Math.sqrt(Math.abs(d) / accel[k]));
+            }
+            if (!(t > 0)) return 0;
+            double a = 4 * m.lastMove()[joint] / (t * t), w = 2 * Math.PI * hz, wd = w * Math.sqrt(1 - zeta * zeta);
+            long h = 0x2545F4914F6CDD1DL;
+            for (double v : q) h = Counts.mix(h ^ Double.doubleToLongBits(v));
+            double at = dwellS + jitterS * ((h >>> 11) * 0x1.0p-53);
+            double x = Math.exp(-zeta * w * at) * (Math.cos(wd * at) + zeta / Math.sqrt(1 - zeta * zeta) * Math.sin(wd * at));
+            return a / (w * w) * x;
         }
     }
 

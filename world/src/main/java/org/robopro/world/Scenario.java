@@ -563,6 +563,21 @@ public record Scenario(String name, String family, String robot, Expected expect
                 Expected.outside(), (n, r) -> add(hoseTwist(r)), same(), new double[] {0.08, 0, 0.1}));
         c.add(s("outside: hose twisted by j6, stiffer as the wrist bends, 6-D", "outside", "irb2400", Expected.outside(),
                 (n, r) -> add(hoseTwist(r)), p -> p.withSixD(true)));
+        // the arm read about a second after each stop, still ringing at 7-9 Hz (ζ 0.03-0.05) from the braking of its
+        // acceleration-limited moves; on the PUMA, whose file gives no joint speeds
+        c.add(s("outside: arm read before it settled", "outside", "irb2000", Expected.outside(), (n, r) -> add(settling(r)), same()));
+        c.add(s("outside: arm read before it settled, no joint speeds in the robot file", "outside", "puma560", Expected.outside(),
+                (n, r) -> add(settling(r)), same()));
+    }
+
+    /** One structural mode ringing on drives 1-3 after acceleration-limited moves (rad/s²: 1.5-3 for the arm, 5-9 for the wrist). */
+    private static JointError[] settling(Random r) {
+        double hz = uniform(r, 7, 9), zeta = uniform(r, 0.03, 0.05), dwell = uniform(r, 0.9, 1.1);
+        double[] accel = new double[6];
+        for (int k = 0; k < 6; k++) accel[k] = k < 3 ? uniform(r, 1.5, 3) : uniform(r, 5, 9);
+        JointError[] out = new JointError[3];
+        for (int j = 0; j < 3; j++) out[j] = new JointError.Settling(j, hz, zeta, dwell, 0, accel);
+        return out;
     }
 
     /**

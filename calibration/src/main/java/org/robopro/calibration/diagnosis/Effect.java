@@ -69,6 +69,8 @@ public final class Effect {
         BASE_TURN("base-turn", "The robot's base or the instrument turning with time or temperature, of no known family"),
         ZERO_DRIFT("joint-zero-drift", "Joint zero that moves with time or temperature, of no known family"),
         ZERO_STEP("joint-zero-step", "Joint zero that jumped at one time during the campaign, of no known family"),
+        SETTLING("joint-settling", "A joint's deflection that follows the move made just before the reading (the arm read before "
+                + "it settled: a residual vibration after the stop, a servo's following error), of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
         BASE_STEP("base-step", "The measuring instrument and the robot's base that moved against each other at one time during the "
@@ -184,7 +186,8 @@ public final class Effect {
     private final int nBasis;                // smooth, point-smooth, zero-drift: spline functions (per axis)
     private Along along;                     // point-smooth, zero-drift: the variable
     private double buildUp = Double.NaN;     // backlash that builds up over the move: the build-up length (rad); NaN: constant
-    private Directions.Moves moves = Directions.Moves.NONE; // that backlash: each row's last move
+    private Directions.Moves moves = Directions.Moves.NONE; // that backlash, a settling: each row's last move
+    private double[] speeds;                 // a settling: each joint's top speed (rad/s; NaN or null: unknown, taken alike)
     private double approach = Double.NaN;    // that backlash: the approach move before each pose (rad); NaN: none in the program
     private double[] runout = new double[0]; // backlash whose play changes over the turn of its joint (b + Σ b_cos,f cos f q + b_sin,f sin f q): the orders f
     private double preloadNm = Double.NaN;   // backlash held on one flank by gravity: the torque above which it is held (N·m); NaN: free
@@ -667,6 +670,41 @@ public final class Effect {
         Effect e = new Effect(Kind.ZERO_DRIFT, joint, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, POINT_BASIS);
         e.along = along;
         return e;
+    }
+
+    /**
+     * Drive {@code joint} deflected at the reading in proportion to its speed in the move made just
+     * before it: Δq = c·v_j, v_j = m_j / max_k(|m_k| / s_k) with m_k each joint's last move (rad) and
+     * s_k its top speed (the robot file's; 1 rad/s for each when unknown), the speed a synchronised
+     * point-to-point move gives joint j when the slowest joint sets its time. A structure stopped by
+     * a deceleration a_j springs back and forth after the stop, δ_j = −(a_j/ω²)·e^(−ζωt)·cos(ω_d t)
+     * (a damped single-mode oscillator: S. S. Rao, Mechanical Vibrations, §2.6), and in a synchronised
+     * move every joint decelerates in proportion to its share of the move, so a reading taken a fixed
+     * time t after the stop carries a deflection that follows the move: the arm read before it
+     * settled (a servo's following error lags the same way). One parameter c (s). It is not the
+     * robot's at rest: a compensated target leaves it out (0 where the move is unknown).
+     */
+    public static Effect settling(int joint, Directions.Moves moves, double[] speedsRadS) {
+        Effect e = new Effect(Kind.SETTLING, joint, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null, 1);
+        e.moves = moves == null ? Directions.Moves.NONE : moves;
+        e.speeds = speedsRadS == null ? null : speedsRadS.clone();
+        return e;
+    }
+
+    /**
+     * A settling's speed of its joint in the move before row m ({@link #settling}), rad/s; 0 when a
+     * joint's last move is unknown (the first pose) or nothing moved.
+     */
+    double settlingSpeed(Measurement m) {
+        if (m == null || moves.isEmpty()) return 0;
+        double time = 0;
+        for (int k = 0; k < m.dof(); k++) {
+            double x = moves.of(m, k);
+            if (!Double.isFinite(x)) return 0;
+            double top = speeds != null && k < speeds.length && speeds[k] > 0 ? speeds[k] : 1;
+            time = Math.max(time, Math.abs(x) / top);
+        }
+        return time > 0 ? moves.of(m, joint) / time : 0;
     }
 
     /**
@@ -1481,7 +1519,7 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
-                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
+                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 
@@ -1780,6 +1818,7 @@ public final class Effect {
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case INSTRUMENT_SCALE -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
+            case SETTLING -> out.add("per_speed");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
             case BASE_STEP -> out.addAll(List.of("dx", "dy", "dz", "wx", "wy", "wz"));
             case RANGE_STEP -> out.add("d");
@@ -1842,6 +1881,7 @@ public final class Effect {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
+            case SETTLING -> "s";
             case POINT_SMOOTH, TARGET_STEP, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
@@ -1914,6 +1954,7 @@ public final class Effect {
             case INSTRUMENT_SCALE -> kind.json + " (" + along.words + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case SETTLING -> kind.json + " j" + (joint + 1);
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
@@ -1979,6 +2020,7 @@ public final class Effect {
      */
     public void regressor(Measurement row, PoseConditions c, double[] g) {
         regressor(row.q(), c, g);
+        if (kind == Kind.SETTLING) g[0] = settlingSpeed(row);
         if (buildsUp()) {
             double share = windUpShare(row, c.direction(joint));
             for (int i = 0; i < g.length; i++) g[i] *= share;
@@ -2041,6 +2083,8 @@ public final class Effect {
             }
             // before the jump the zero was v lower; after it (and at an unknown time: the state the campaign ended in) nothing
             case ZERO_STEP -> g[0] = c.timeS() <= tauS ? -1 : 0;
+            // the move before the reading is not known from q and c: the arm at rest
+            case SETTLING -> g[0] = 0;
             case ANGLE_STEP -> g[0] = q[joint] > lo && !(q[joint] > hi) ? 1 : 0;
             case ZERO_DRIFT -> {
                 double x = reading(c);
@@ -2591,6 +2635,7 @@ public final class Effect {
                 yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
             }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
+            case SETTLING -> settling(js.get(0) - 1, Directions.Moves.NONE, null);
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));

@@ -27,7 +27,7 @@ final class JointScatter {
 
     /** A joint whose angle scatters: its joint (0-based), the scatter's RMS (rad), p, and the evidence plot's points. */
     record Found(int joint, double sRad, double p, double threshold, double ratio, double sizeM, double share, double[] lever, double[] along,
-                 double sigmaAlongM) { }
+                 double sigmaAlongM, double speedRho, double speedP) { }
 
     /** The six distinct entries of a symmetric 3 x 3 matrix, in the regression's column order: xx, yy, zz, xy, xz, yz. */
     private static final int[][] PAIRS = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
@@ -119,10 +119,41 @@ final class JointScatter {
                 alongSq += dr * dr / dd;
             }
             double excess = s2 * sumLever;
+            double[] speed = speedFollows(t, j, lever, along);
             out.add(new Found(j, Math.sqrt(s2), pv, threshold, alongSq > excess ? alongSq / (alongSq - excess) : Double.POSITIVE_INFINITY,
-                    Math.sqrt(excess / n) * sigmaM, t.rss0 > 0 ? Math.min(1, excess / t.rss0) : 0, lever, along, Math.sqrt(sigAlong / n) * sigmaM));
+                    Math.sqrt(excess / n) * sigmaM, t.rss0 > 0 ? Math.min(1, excess / t.rss0) : 0, lever, along, Math.sqrt(sigAlong / n) * sigmaM,
+                    speed[0], speed[1]));
         }
         return out;
+    }
+
+    /**
+     * Whether the joint's scatter grows with its speed in the move made just before the reading: the
+     * rank correlation (Spearman) of the angle each pose's residual implies along the joint's motion,
+     * |along| / lever, with the joint's speed in that move ({@link Effect#settling}), over the poses
+     * whose lever is at least a third of the longest (the others carry mostly the instrument's
+     * noise), and its one-sided p (Student's t with n − 2 degrees of freedom); NaN, NaN where the
+     * moves are unknown. A reading taken while the arm still rings after its stop is off by more
+     * after a faster move, whatever the phase; a coarse count's error is not.
+     */
+    static double[] speedFollows(Diagnoser.Tester t, int j, double[] lever, double[] along) {
+        if (t.w.moves.isEmpty()) return new double[] {Double.NaN, Double.NaN};
+        Effect st = Effect.settling(j, t.w.moves, t.w.speeds);
+        double most = 0;
+        for (double l : lever) most = Math.max(most, l);
+        List<double[]> pts = new ArrayList<>();
+        for (int i = 0; i < lever.length; i++)
+            if (lever[i] >= most / 3 && lever[i] > 0)
+                pts.add(new double[] {Math.abs(along[i]) / lever[i], Math.abs(st.settlingSpeed(t.endRows.get(0).get(i)))});
+        int n = pts.size();
+        if (n < 10) return new double[] {Double.NaN, Double.NaN};
+        double[] a = new double[n], b = new double[n];
+        for (int i = 0; i < n; i++) { a[i] = pts.get(i)[0]; b[i] = pts.get(i)[1]; }
+        double rho = new org.apache.commons.math3.stat.correlation.SpearmansCorrelation().correlation(a, b);
+        if (!Double.isFinite(rho) || Math.abs(rho) >= 1) return new double[] {rho, Double.NaN};
+        double tt = rho * Math.sqrt((n - 2) / (1 - rho * rho));
+        double p = 1 - new org.apache.commons.math3.distribution.TDistribution(null, n - 2).cumulativeProbability(tt);
+        return new double[] {rho, p};
     }
 
     /** The column of Σ₀'s entry (a, b) among the six distinct ones ({@link #PAIRS}). */
@@ -131,6 +162,9 @@ final class JointScatter {
             if (PAIRS[e][0] == Math.min(a, b) && PAIRS[e][1] == Math.max(a, b)) return e;
         throw new IllegalArgumentException("entry " + a + ", " + b);
     }
+
+    /** One-sided level below which a scatter is said to grow with the move's speed (one test per joint found scattering). */
+    static final double SPEED_ALPHA = 0.01;
 
     /** The located entry of a scattering joint, with its words and evidence plot. */
     static Diagnosis.Located located(Found f) {
@@ -145,6 +179,10 @@ final class JointScatter {
                 + "record the joint values at a finer resolution (the controller's measured, not commanded, angles), time_s and "
                 + "temp_c, let the arm settle longer before each measurement, and measure a few poses twice to see it", Diagnoser.capital(shape), f.sizeM() * 1e3, f.joint() + 1, f.ratio(),
                 Words.p(f.p()), f.threshold(), deg * Math.sqrt(12));
+        if (f.speedP() < SPEED_ALPHA)
+            words += String.format(Locale.ROOT, ". Here it grows with the joint's speed in the move made just before the reading (rank "
+                    + "correlation %.2f, p %s): the arm was read before it settled, a residual vibration after the stop whose phase at the "
+                    + "reading varies; wait longer after each stop before the reading", f.speedRho(), Words.p(f.speedP()));
         // evidence: the residual along the joint's motion against the joint's lever, with the ±2σ envelope of the noise and the scatter
         double maxLever = 0;
         for (double l : f.lever()) maxLever = Math.max(maxLever, l);

@@ -40,7 +40,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -104,6 +104,7 @@ final class Locator {
         int cycleOrders = 1;                     // SIGHT with a cycle: its harmonics 1..this
         double[] reading;                        // SIGHT with a cycle: each residual row's reading (its sensitivity in sens)
         Directions.Source dirs;                  // DIRECTION: where the directions came from
+        Effect settling;                         // DIRECTION, SETTLING: the joint's settling after the move, where the moves are known
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
         Effect bend;                             // LINK_BEND, LINK_TWIST: the link's sag or twist
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
@@ -250,6 +251,7 @@ final class Locator {
                 Probe d = drive(t, j, 1, (e, i, g) -> g[0] = -0.5 * t.endConditions.get(e).get(i).direction(jj));
                 d.var = Var.DIRECTION;
                 d.dirs = dirs;
+                if (!t.w.moves.isEmpty()) d.settling = Effect.settling(j, t.w.moves, t.w.speeds);
                 d.joint = j;
                 d.variable = "direction of joint " + (j + 1);
                 d.shape = "changes sign with the direction joint " + (j + 1) + " last moved in (directions " + dirs.words + ")";
@@ -257,6 +259,21 @@ final class Locator {
                 for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) d.x[e][i] = t.endConditions.get(e).get(i).direction(j);
                 d.xLabel = "approach direction dir" + (j + 1);
                 out.add(d);
+            }
+            // the joint's speed in the move just made (from the whole file's measuring order): the arm read before it settled
+            if (!t.w.moves.isEmpty()) {
+                Effect st = Effect.settling(j, t.w.moves, t.w.speeds);
+                Probe sp = drive(t, j, 1, (e, i, g) -> g[0] = st.settlingSpeed(t.endRows.get(e).get(i)));
+                sp.var = Var.SETTLING;
+                sp.joint = j;
+                sp.settling = st;
+                sp.variable = "speed of joint " + (j + 1) + " in the move before the reading";
+                sp.shape = "follows joint " + (j + 1) + "'s speed in the move made just before the reading (the arm not settled when read)";
+                sp.x = new double[ends][poses];
+                for (int e = 0; e < ends; e++)
+                    for (int i = 0; i < poses; i++) sp.x[e][i] = Math.toDegrees(st.settlingSpeed(t.endRows.get(e).get(i)));
+                sp.xLabel = "speed of joint " + (j + 1) + " in the move before the reading, synchronised (deg/s)";
+                out.add(sp);
             }
         }
         double[][] time = column(t, c -> c.timeS()), temp = column(t, c -> c.tempC()), pay = column(t, c -> c.payloadKg());

@@ -122,6 +122,7 @@ final class Plots {
                     : "approach direction dir" + (e.joint() + 1);
             case THERMAL -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case COUPLING -> "joint " + (e.source() + 1) + " angle q" + (e.source() + 1) + " (deg)";
+            case SETTLING -> "speed of joint " + (e.joint() + 1) + " in the move before the reading, synchronised (deg/s)";
         };
     }
 
@@ -151,6 +152,7 @@ final class Plots {
             }
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
+            case SETTLING -> Math.toDegrees(e.settlingSpeed(row));
         };
     }
 
@@ -190,7 +192,7 @@ final class Plots {
                     : e.heldByGravity() ? e.heldShare(x) * 0.5 * v[0] * Math.signum(x)
                     : -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
-            case SCALE, COUPLING -> v[0] * Math.toRadians(x);
+            case SCALE, COUPLING, SETTLING -> v[0] * Math.toRadians(x);
         };
     }
 

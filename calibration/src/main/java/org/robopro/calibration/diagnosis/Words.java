@@ -245,6 +245,11 @@ final class Words {
                     + "and none of the known effects explains it (an encoder slip, a collision, a re-synchronisation); the poses "
                     + "before and after it do not belong to one robot: re-measure after checking the joint's zero.", e.joint() + 1,
                     Math.toDegrees(v[0]), e.tauS());
+            case SETTLING -> String.format(Locale.ROOT, "Joint %d was read before it settled: its angle is off by %.3g ± %.2g "
+                    + "mdeg per deg/s of its speed in the move just made (synchronised, the slowest joint setting the time), the way a "
+                    + "residual vibration after the stop, or a servo's following error, leaves it, and none of the known effects "
+                    + "explains it; it is no error of the robot at rest, so compensation leaves it out: wait longer after each stop "
+                    + "before the reading.", e.joint() + 1, 1e3 * v[0], 1e3 * s[0]);
             case ZERO_DRIFT -> String.format(Locale.ROOT, "Joint %d's zero moves with %s (a smooth curve over %.4g..%.4g %s) and "
                     + "none of the known effects explains it; it is modelled as such, but compensation cannot use it without "
                     + "the %s and its cause is unknown (encoder slip or creep, a drive warming up).", e.joint() + 1,
