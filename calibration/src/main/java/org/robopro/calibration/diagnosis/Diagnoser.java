@@ -1164,12 +1164,15 @@ public final class Diagnoser {
     }
 
     /**
-     * A lost motion stays named only when it predicts left-out poses better than its joint's settling
-     * in its place ({@link Effect#settling}), by {@link #ALIAS_MARGIN} and by {@link #TELL_Z} standard
-     * errors of the pose-by-pose difference: both follow the sign of the move before the reading,
-     * and a reading taken before the arm settled (its size following the move's speed, its sign the
-     * phase of the ringing at the reading) can lag like a play. Where the poses cannot tell, the
-     * settling models the structure and the notes say how to tell.
+     * A lost motion is not claimed where its joint's settling ({@link Effect#settling}) in its place
+     * predicts left-out poses better, by {@link #ALIAS_MARGIN}: both follow the sign of the move before
+     * the reading, and a reading taken before the arm settled (its size following the move's speed,
+     * its sign the phase of the ringing at the reading) can lag like a play. A play, the commoner cause
+     * and the catalogue's, stays named where the two predict alike (a 30-pose campaign of a real play),
+     * except beside another joint's settling in the model: where the arm was read before it settled a
+     * play must beat its joint's settling by the margin and by {@link #TELL_Z} standard errors of the
+     * pose-by-pose difference. Else the settling models the structure and the notes say how to tell.
+     * A settling taken before the play was, and redundant beside it, leaves.
      */
     private static Fit playOrSettling(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps,
                                       List<String> notes) {
@@ -1180,18 +1183,36 @@ public final class Diagnoser {
             Effect settle = Effect.settling(e.joint(), w.moves, w.speeds);
             Tester at = w.tester(fit);
             double own = at.pressFull(), rival = at.pressReplacing(k, settle, w.conditions);
-            if (!(own > rival * (1 - ALIAS_MARGIN)) && tellsApart(at, k, settle, w) >= TELL_Z) continue;
+            // beside another joint's settling in the model (the arm was read before it settled) a play must beat its joint's
+            // settling, by the margin and by TELL_Z standard errors of the pose-by-pose difference; else it must not lose to it
+            boolean ringing = selected.stream().anyMatch(x -> x.kind() == Effect.Kind.SETTLING && x.joint() != e.joint());
+            boolean stays = ringing ? own < rival * (1 - ALIAS_MARGIN) && tellsApart(at, k, settle, w) >= TELL_Z
+                    : !(rival < own * (1 - ALIAS_MARGIN));
+            if (stays) continue;
             LOG.debug("{}: settling predicts left-out poses {} against {}", e.label(), rival, own);
             int before = selected.size();
             fit = replaceEffect(w, fit, selected, absorbedCols, steps, k, settle, true);
             notes.add(String.format(Locale.ROOT, "%s is not claimed: %s, a deflection that follows the speed of the move just made (the "
-                    + "arm read before it settled), predicts left-out poses nearly as well (leave-one-pose-out error %.1f against %.1f: "
-                    + "to be told apart, %.0f %% lower and by %.0f standard errors of the pose-by-pose difference); both follow the sign of "
-                    + "the move before the reading. To tell, repeat a few poses approached from each side, reading once right after the "
-                    + "stop and once after a wait of a few seconds: a play stays, a settling fades%s", e.label(), settle.label(), own, rival,
-                    100 * ALIAS_MARGIN, TELL_Z, selected.size() < before ? "; the settling did not lower the held-out error, so nothing "
+                    + "arm read before it settled), predicts left-out poses %s (leave-one-pose-out error %.1f against %.1f); both "
+                    + "follow the sign of the move before the reading%s. To tell, repeat a few poses approached from each side, reading once "
+                    + "right after the stop and once after a wait of a few seconds: a play stays, a settling fades%s", e.label(),
+                    settle.label(), rival < own ? "better" : "nearly as well", rival, own, rival < own ? ""
+                    : ", and other joints' readings were taken before the arm settled", selected.size() < before ? "; the settling did not lower the held-out error, so nothing "
                     + "models it" : ""));
             k = -1;
+        }
+        // a settling taken before its joint's lost motion was, that the play (built up over the move) has made redundant
+        for (int k = selected.size() - 1; k >= 0; k--) {
+            Effect e = selected.get(k);
+            if (e.kind() != Effect.Kind.SETTLING
+                    || selected.stream().noneMatch(x -> x.kind() == Effect.Kind.BACKLASH && x.joint() == e.joint())) continue;
+            Fit without = w.refitWithout(fit, selected, absorbedCols, k);
+            Candidate c = w.tester(without).test(e, w.conditions);
+            if (c.keptColumns > 0 && c.p < w.o.alpha() && c.pressAfter < c.pressBefore) continue;
+            LOG.debug("{} is redundant beside its joint's lost motion (p {})", e.label(), c.p);
+            drop(selected, absorbedCols, steps, k);
+            fit = without;
+            restampLast(w, fit, steps);
         }
         return fit;
     }
@@ -1202,10 +1223,19 @@ public final class Diagnoser {
      * grows with the move's speed, not only the move's sign. True where no lost motion can be tested.
      */
     static boolean followsSpeed(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, Effect e) {
-        Effect play = Effect.backlash(e.joint());
-        if (!play.testableOn(w.rows)) return true;
-        Candidate pc = w.tester(fit).test(play, w.conditions);
-        if (pc.keptColumns == 0) return true;
+        // the lost motion that explains most: of a fixed size, or building up over the move (a wind-up's lag follows the
+        // move's size as a settling's does)
+        Tester at = w.tester(fit);
+        Effect play = null;
+        Candidate pc = null;
+        List<Effect> plays = new ArrayList<>(List.of(Effect.backlash(e.joint())));
+        if (!w.moves.isEmpty()) for (double deg : SETTLING_PLAY_BUILD_UPS_DEG) plays.add(Effect.windUp(e.joint(), Math.toRadians(deg), w.moves));
+        for (Effect b : plays) {
+            if (!b.testableOn(w.rows)) continue;
+            Candidate c = at.test(b, w.conditions);
+            if (c.keptColumns > 0 && (pc == null || c.drss > pc.drss)) { play = b; pc = c; }
+        }
+        if (play == null) return true;
         List<Effect> with = new ArrayList<>(selected);
         with.add(play);
         Map<Effect, boolean[]> abs = new java.util.IdentityHashMap<>(absorbedCols);
@@ -1213,6 +1243,9 @@ public final class Diagnoser {
         Candidate sc = w.tester(w.fit(with, abs, fit.full, pc)).test(e, w.conditions);
         return sc.keptColumns > 0 && sc.p < w.o.alpha() && sc.pressAfter < sc.pressBefore;
     }
+
+    /** Build-up lengths of a lost motion building up over the move a settling must be significant beside (deg). */
+    static final double[] SETTLING_PLAY_BUILD_UPS_DEG = {2, 5, 10, 20};
 
     /**
      * Each joint's top speed for a settling's synchronised move (rad/s): the robot file's, or where it

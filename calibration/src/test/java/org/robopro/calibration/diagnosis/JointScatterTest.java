@@ -66,9 +66,6 @@ class JointScatterTest {
             WorldCampaigns.Sim s = HeldOutFormsTest.world("irb2000", org.robopro.world.Expected.outside(), ringing, p -> p, seed);
             Diagnosis d = Diagnoser.diagnose(s.nominal(), s.train(), s.validation());
             assertTrue(d.effects().stream().noneMatch(f -> !f.effect().isFallback()), "seed " + seed + ": notes " + d.notes());
-            System.out.printf("ringing seed %d: %.2f -> %.2f x floor, %s, located %s%n", seed, d.geometricValidateRmsM() / s.floorM(),
-                    d.finalValidateRmsM() / s.floorM(), d.effects().stream().map(f -> f.effect().label()).toList(),
-                    d.located().stream().map(Diagnosis.Located::shape).toList());
             List<Diagnosis.Located> scatter = d.located().stream().filter(l -> l.variable().endsWith(" reading")).toList();
             assertTrue(!scatter.isEmpty(), "seed " + seed + ": " + d.located());
             assertTrue(scatter.stream().anyMatch(l -> l.words().contains("grows with the joint's speed in the move made just before")),
