@@ -4870,7 +4870,8 @@ public final class Diagnoser {
         // the splines, and the few periods of a distance meter's cycle the residual holds most of
         List<Locator.Probe> periods = new ArrayList<>();
         for (Locator.Probe p : Locator.sightProbes(t, true, false)) {
-            if (p.cycle > 0) periods.add(p);
+            // (the cycles alone: a located cycle's fallback brings its harmonics, and is a rival as every located structure's is)
+            if (p.cycle > 0) { if (p.cycleOrders == 1) periods.add(p); }
             else out.add(sightEffect(p));
         }
         if (periods.size() > INSTRUMENT_CYCLES_TRIED) {

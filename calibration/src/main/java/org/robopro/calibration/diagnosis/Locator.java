@@ -770,15 +770,32 @@ final class Locator {
                                            double[][] x, double lo, double hi) {
         List<Probe> out = new ArrayList<>();
         double span = hi - lo, fMax = cycleFrequencyMax(x[0].length, span), step = 1 / (3 * span);
-        for (double f = 2 / span; f <= fMax; f += step) {
-            // the period alone, and with as many of its harmonics as the poses resolve (up to MAX_CYCLE_ORDERS): a phase
-            // meter's error repeats at its cycle's halves and quarters too, and spread over them each alone may be too weak
-            int most = mostCycleOrders(f, fMax);
-            out.add(cycleProbe(t, inst, u, sens, x, lo, hi, 1 / f, 1));
-            if (most > 1) out.add(cycleProbe(t, inst, u, sens, x, lo, hi, 1 / f, most));
+        for (double f = 2 / span; f <= fMax; f += step) out.add(cycleProbe(t, inst, u, sens, x, lo, hi, 1 / f, 1));
+        // and with as many of its harmonics as the poses resolve (up to MAX_CYCLE_ORDERS), for the periods the residual holds
+        // most of alone (a k x k cost each): a phase meter's error repeats at its cycle's halves and quarters too, and spread
+        // over them each alone may be too weak
+        double[] res = t.residualOutOf(new double[0], 0);
+        List<double[]> ranked = new ArrayList<>(); // {what the period takes of the residual (two columns each: its F test's order), frequency}
+        for (Probe pr : out) {
+            double f = 1 / pr.cycle;
+            if (mostCycleOrders(f, fMax) < 2 || pr.raw == null) continue;
+            double[] r = new Gram(pr).reduction(t, res);
+            ranked.add(new double[] {r == null ? 0 : r[0], f});
+        }
+        ranked.sort((a, b) -> Double.compare(b[0], a[0]));
+        for (int i = 0; i < Math.min(CYCLES_WITH_HARMONICS, ranked.size()); i++) {
+            double f = ranked.get(i)[1];
+            out.add(cycleProbe(t, inst, u, sens, x, lo, hi, 1 / f, mostCycleOrders(f, fMax)));
         }
         return out;
     }
+
+    /**
+     * The periods of a distance meter's cycle also probed with their harmonics: those whose period alone the residual holds
+     * most of (a cycle with strong overtones is among them by its fundamental or by an overtone, whose own probe the
+     * tuning in the model takes to the fundamental).
+     */
+    static final int CYCLES_WITH_HARMONICS = 24;
 
     /** The highest frequency of a distance meter's cycle scanned (1/m): down to {@link #MIN_RANGE_CYCLE_M}, 3 poses per period. */
     private static double cycleFrequencyMax(int poses, double span) { return Math.min(1 / MIN_RANGE_CYCLE_M, poses / (3 * span)); }
@@ -1263,6 +1280,22 @@ final class Locator {
 
         /** The F test's p, as the test on the projected columns finds it; 0 when a column's share left is too close to the bound to tell, NaN with no column kept. */
         double p(Diagnoser.Tester t, double[] res, double rss, int nq) {
+            double[] r = reduction(t, res);
+            if (r == null) return 0;
+            int q = (int) r[1];
+            if (q == 0) return Double.NaN;
+            double drss = r[0];
+            int df2 = t.m - t.rank - nq - q;
+            double rss1 = Math.max(rss - drss, 1e-300);
+            double f = (drss / q) / (rss1 / Math.max(1, df2));
+            return Stats.fUpperTail(f, q, df2);
+        }
+
+        /**
+         * The residual's sum of squares the probe's kept columns take and how many are kept, {drss, q}; null when a column
+         * lies too close to the absorbed-ratio bound to tell here.
+         */
+        double[] reduction(Diagnoser.Tester t, double[] res) {
             int k = p.k, m = t.m;
             double ar = t.w.o.absorbedRatio();
             double[] rr = new double[k * k]; // row t: the kept column t's factor entries, by column
@@ -1280,13 +1313,12 @@ final class Locator {
                     d -= r * r;
                 }
                 double ratio = Math.sqrt(Math.max(d, 0) / n0);
-                if (Math.abs(ratio - ar) <= 1e-6 * ar) return 0; // too close to the bound to tell here
+                if (Math.abs(ratio - ar) <= 1e-6 * ar) return null; // too close to the bound to tell here
                 if (ratio >= ar) {
                     rr[q * k + col] = Math.sqrt(d);
                     kept[q++] = col;
                 }
             }
-            if (q == 0) return Double.NaN;
             double[] coef = new double[q];
             double drss = 0;
             for (int a = 0; a < q; a++) {
@@ -1297,10 +1329,7 @@ final class Locator {
                 coef[a] = x / rr[a * k + col];
                 drss += coef[a] * coef[a];
             }
-            int df2 = m - t.rank - nq - q;
-            double rss1 = Math.max(rss - drss, 1e-300);
-            double f = (drss / q) / (rss1 / Math.max(1, df2));
-            return Stats.fUpperTail(f, q, df2);
+            return new double[] {drss, q};
         }
     }
 
