@@ -1149,13 +1149,12 @@ public final class Diagnoser {
     private record Finished(Diagnosis d, List<CalibrationResult.Outlier> validationOutliers) { }
 
     /**
-     * The validation poses that are gross readings under the geometric fit of {@code w} ({@link #grossAmong} of those beyond
-     * the outlier rule, their robust sigma the validation poses'), in file order; none with fewer than 10 validation poses,
-     * or with lengths (a length's gross error is judged with the model that tells it).
+     * The validation poses of {@code w} that are gross readings under its geometric fit {@code g} ({@link #grossAmong} of
+     * those beyond the outlier rule, their robust sigma the validation poses'), in file order; none with fewer than 10
+     * validation poses, or with lengths (a length's gross error is judged with the model that tells it).
      */
-    static List<String> grossValidation(Work w, CalibrationResult geo) {
+    static List<String> grossValidation(Work w, Fit g, CalibrationResult geo) {
         if (w.validate == null || w.validate.size() < 10 || geo.distance() || geo.pairs()) return List.of();
-        Fit g = w.fit(List.of(), new java.util.IdentityHashMap<>(), w.geoFull, null);
         List<CalibrationResult.Outlier> far = grossAmong(List.copyOf(
                 Calibrator.outliers(g.problem, g.full, w.validate, Set.of(), OUTLIER_K).values()), w.validate.size());
         Set<String> ids = new HashSet<>();
@@ -1516,11 +1515,12 @@ public final class Diagnoser {
         // again) are set aside from every decision taken on the validation poses; the final model judges them again with the
         // rest, and when it puts exactly these beyond the rule this run is the run without them (prepared), which judged only
         // at the end would be the whole diagnosis once more.
-        List<String> screened = screen ? grossValidation(allValidation, geo) : List.of();
+        // (the geometric model's fit to the training poses, which no validation pose changes: the stepwise search starts from it)
+        Fit geoFit = allValidation.fit(List.of(), new java.util.IdentityHashMap<>(), allValidation.geoFull, null);
+        List<String> screened = screen ? grossValidation(allValidation, geoFit, geo) : List.of();
         Set<String> setAside = new HashSet<>(screened);
-        MeasurementSet kept = screened.isEmpty() ? validate : validate.filter(m -> !setAside.contains(m.poseId()));
-        Work w = screened.isEmpty() ? allValidation : Double.isNaN(rotOverPos) ? new Work(model, gravity, rows, geo, kept, o)
-                : new Work(model, gravity, rows, geo, kept, o, Work.positionSigma(geo), Work.positionSigma(geo) * rotOverPos);
+        Work w = screened.isEmpty() ? allValidation : new Work(model, gravity, rows, geo,
+                validate.filter(m -> !setAside.contains(m.poseId())), o, allValidation.sigmaPos, allValidation.sigmaRot);
         List<String> notes = new ArrayList<>(), recs = new ArrayList<>();
         // Each pose's last move per joint, in the measuring order of the whole file: a lost motion that builds up over the move.
         Directions.Moves moves = geo.pairs() ? Directions.Moves.NONE : Directions.moves(trainAll, validate);
@@ -1594,7 +1594,7 @@ public final class Diagnoser {
         List<Effect> selected = new ArrayList<>();
         Map<Effect, boolean[]> absorbedCols = new java.util.IdentityHashMap<>();
         List<Step> steps = new ArrayList<>();
-        Fit fit = w.fit(selected, absorbedCols, w.geoFull, null);
+        Fit fit = geoFit;
         double geoTrain = fit.trainRms, geoVal = w.validateRms(fit);
         // Locate: where does what the geometry leaves live? Structures found bring the families that can fit them.
         Timer timer = new Timer();
@@ -3943,9 +3943,7 @@ public final class Diagnoser {
                 if (m >= 1 && m <= orders && Math.abs(1 / eb.cycle() - m * fa) <= m * step) overtones.add(eb);
             }
             double before = w.tester(fit).pressFull();
-            List<Effect> keptSel = new ArrayList<>(selected);
-            Map<Effect, boolean[]> keptCols = new java.util.IdentityHashMap<>(absorbedCols);
-            List<Step> keptSteps = new ArrayList<>(steps);
+            Selection saved = Selection.of(selected, absorbedCols, steps);
             Fit without = fit;
             for (Effect eb : overtones) without = dropAndRefit(w, without, selected, absorbedCols, steps, selected.indexOf(eb));
             int ka = selected.indexOf(ea);
@@ -3977,12 +3975,7 @@ public final class Diagnoser {
                 fit = one;
                 continue;
             }
-            selected.clear();
-            selected.addAll(keptSel);
-            absorbedCols.clear();
-            absorbedCols.putAll(keptCols);
-            steps.clear();
-            steps.addAll(keptSteps);
+            saved.restore(selected, absorbedCols, steps);
         }
         return fit;
     }

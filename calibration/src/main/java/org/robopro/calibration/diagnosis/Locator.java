@@ -247,11 +247,13 @@ final class Locator {
                 p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);
             }
+            // the joint's settling after the move, where the measuring order gives the moves
+            Effect settling = t.w.moves.isEmpty() ? null : Effect.settling(j, t.w.moves, t.w.speeds);
             if (dirs != Directions.Source.NONE && t.endRows.stream().allMatch(er -> er.stream().allMatch(r -> r.directions() != null))) {
                 Probe d = drive(t, j, 1, (e, i, g) -> g[0] = -0.5 * t.endConditions.get(e).get(i).direction(jj));
                 d.var = Var.DIRECTION;
                 d.dirs = dirs;
-                if (!t.w.moves.isEmpty()) d.settling = Effect.settling(j, t.w.moves, t.w.speeds);
+                d.settling = settling;
                 d.joint = j;
                 d.variable = "direction of joint " + (j + 1);
                 d.shape = "changes sign with the direction joint " + (j + 1) + " last moved in (directions " + dirs.words + ")";
@@ -261,17 +263,19 @@ final class Locator {
                 out.add(d);
             }
             // the joint's speed in the move just made (from the whole file's measuring order): the arm read before it settled
-            if (!t.w.moves.isEmpty()) {
-                Effect st = Effect.settling(j, t.w.moves, t.w.speeds);
-                Probe sp = drive(t, j, 1, (e, i, g) -> g[0] = st.settlingSpeed(t.endRows.get(e).get(i)));
+            if (settling != null) {
+                double[][] speed = new double[ends][poses]; // rad/s
+                for (int e = 0; e < ends; e++)
+                    for (int i = 0; i < poses; i++) speed[e][i] = settling.settlingSpeed(t.endRows.get(e).get(i));
+                Probe sp = drive(t, j, 1, (e, i, g) -> g[0] = speed[e][i]);
                 sp.var = Var.SETTLING;
                 sp.joint = j;
-                sp.settling = st;
+                sp.settling = settling;
                 sp.variable = "speed of joint " + (j + 1) + " in the move before the reading";
                 sp.shape = "follows joint " + (j + 1) + "'s speed in the move made just before the reading (the arm not settled when read)";
                 sp.x = new double[ends][poses];
                 for (int e = 0; e < ends; e++)
-                    for (int i = 0; i < poses; i++) sp.x[e][i] = Math.toDegrees(st.settlingSpeed(t.endRows.get(e).get(i)));
+                    for (int i = 0; i < poses; i++) sp.x[e][i] = Math.toDegrees(speed[e][i]);
                 sp.xLabel = "speed of joint " + (j + 1) + " in the move before the reading, synchronised (deg/s)";
                 out.add(sp);
             }
