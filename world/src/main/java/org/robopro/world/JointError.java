@@ -10,6 +10,9 @@ public sealed interface JointError {
     /** The drive (0-based) this error acts on. */
     int joint();
 
+    /** Whether the error needs the drive's gravity torque ({@link Moment#driveTorque}): the robot's masses. */
+    default boolean needsTorque() { return false; }
+
     /**
      * The error of the drive's output angle, rad.
      *
@@ -225,12 +228,31 @@ public sealed interface JointError {
      * The torque is the drive's, tau_q = C^T tau_theta, from the moment's {@code driveTorque}.
      */
     record GravityHeldLostMotion(int joint, double width, double holdTorque) implements JointError {
+        @Override public boolean needsTorque() { return true; }
+
         @Override public double delta(double[] q, Moment m) {
             if (m.driveTorque() == null) throw new IllegalStateException("lost motion held by gravity needs the drive's gravity torque");
             double tau = m.driveTorque()[joint];
             int flank = Math.abs(tau) > holdTorque ? (tau > 0 ? -1 : 1) : m.dir()[joint];
             return -0.5 * width * flank;
         }
+    }
+
+    /**
+     * A gear's transmission error under load: the mesh's stiffness varies over the mesh cycle, so
+     * the part of the output's deflection that repeats with the angle grows with the torque the
+     * gear carries (the loaded transmission error: J. D. Smith, "Gear Noise and Vibration", 2nd ed.,
+     * Marcel Dekker 2003, §2–3). q_out = q + (unloaded + loaded·τ/torqueRef)·sin(k·q + phase), τ the
+     * drive's gravity torque from the moment, with its sign (the mesh deflects the other way when
+     * the torque turns).
+     */
+    record LoadedHarmonic(int joint, int k, double unloaded, double loaded, double torqueRef, double phase) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            if (m.driveTorque() == null) throw new IllegalStateException("a loaded transmission error needs the drive's gravity torque");
+            return (unloaded + loaded * m.driveTorque()[joint] / torqueRef) * Math.sin(k * q[joint] + phase);
+        }
+
+        @Override public boolean needsTorque() { return true; }
     }
 
     /**

@@ -727,6 +727,14 @@ public record Scenario(String name, String family, String robot, Expected expect
         c.add(s("cross-coupling j6<-j4 + lost motion j5, 6-D", "pair", "irb2000",
                 Expected.named(claim(CROSS_COUPLING, 6, 4), claim(LOST_MOTION, 5)),
                 (n, r) -> add(crossCoupling(5, 3, r), lostMotion(4, r)), p -> p.withSixD(true)));
+        // a gear whose mesh deflects more under load: the part that repeats with the angle grows with the torque on it
+        c.add(s("outside: transmission error j2 growing with the load, masses off 30 %", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+                    var te = new JointError.LoadedHarmonic(1, 2 + r.nextInt(5), Math.toRadians(uniform(r, 0.002, 0.004)),
+                            Math.toRadians(signed(r, 0.01, 0.02)), 200, 2 * Math.PI * r.nextDouble());
+                    return w -> add(te).apply(w.withCompliance(m));
+                }, same()));
         c.add(s("lost motion j2 held on one flank by gravity + cross-coupling j5<-j4", "pair", "irb2000",
                 Expected.named(claim(LOST_MOTION, 2), claim(CROSS_COUPLING, 5, 4)),
                 (n, r) -> {

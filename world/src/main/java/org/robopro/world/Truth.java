@@ -252,6 +252,13 @@ final class Truth {
             m.put("type", "lost motion held by gravity (output = q - b/2 flank; flank = -sign(tau_q) where |tau_q| > hold, else dir)");
             m.put("width_deg", Math.toDegrees(g.width()));
             m.put("hold_torque_nm", g.holdTorque());
+        } else if (e instanceof JointError.LoadedHarmonic lh) {
+            m.put("type", "transmission error growing with the load (output = q + (a0 + a1 tau_q/tau_ref) sin(k q + phase)) (outside)");
+            m.put("cycles_per_turn", lh.k());
+            m.put("unloaded_deg", Math.toDegrees(lh.unloaded()));
+            m.put("loaded_deg", Math.toDegrees(lh.loaded()));
+            m.put("torque_ref_nm", lh.torqueRef());
+            m.put("phase_rad", lh.phase());
         } else if (e instanceof JointError.Slip sl) {
             m.put("type", "encoder slip (outside)");
             m.put("at_s", sl.atS());

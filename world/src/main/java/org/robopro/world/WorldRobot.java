@@ -660,8 +660,8 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             a = arm.grown(strain);
         }
         double[] driveTorque = null;
-        if (errors.stream().anyMatch(e -> e instanceof JointError.GravityHeldLostMotion)) {
-            if (compliance == null) throw new IllegalStateException("lost motion held by gravity needs the masses (a compliance)");
+        if (errors.stream().anyMatch(JointError::needsTorque)) {
+            if (compliance == null) throw new IllegalStateException("an error that follows the gravity torque needs the masses (a compliance)");
             driveTorque = driveSide(gravityTorques(a, times(coupling, qo), payload));
         }
         JointError.Moment moment = new JointError.Moment(dir, lastMove, timeS, tempC, driveTorque, side);

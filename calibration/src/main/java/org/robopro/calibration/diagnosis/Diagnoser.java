@@ -2763,6 +2763,22 @@ public final class Diagnoser {
         };
     }
 
+    /**
+     * The rivals of a named transmission error {@code e} whose size follows the gravity torque on its
+     * joint ({@link Effect#loadPeriodic}): with the torque's sign and with its size. The torque is the
+     * robot file's masses', or without them an estimate from the link lengths; its reference the
+     * largest on the rows. None for a shaft's orders, or where the joint bears no torque.
+     */
+    static List<Effect> loadPeriodics(Effect e, GravityTorques gravity, List<Measurement> rows, KinematicModel model) {
+        if (e.kind() != Effect.Kind.PERIODIC || e.shaftOrders() || gravity == null || rows.isEmpty()) return List.of();
+        GravityTorques g = gravity.massesUnknown() ? GravityTorques.fromLengths(model) : gravity;
+        double ref = 0;
+        for (Measurement r : rows)
+            ref = Math.max(ref, Math.abs(g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[e.joint()]));
+        if (!(ref > 0) || Double.isInfinite(ref)) return List.of();
+        return List.of(Effect.loadPeriodic(e, g, ref, false), Effect.loadPeriodic(e, g, ref, true));
+    }
+
     /** Whether a coupling matrix row is joint k's own value alone (θ_k = q_k). */
     private static boolean isUnitRow(double[] row, int k) {
         for (int l = 0; l < row.length; l++) if (row[l] != (l == k ? 1 : 0)) return false;
@@ -3193,6 +3209,7 @@ public final class Diagnoser {
                 if (!checkedAgainstFallbacks(e)) continue;
                 Tester at = w.tester(fit);
                 List<Effect> own = ownFallbacks(e, rows, w.model);
+                own.addAll(loadPeriodics(e, gravity, rows, w.model));
                 Map<String, Effect> rivals = new LinkedHashMap<>();
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
@@ -3204,12 +3221,13 @@ public final class Diagnoser {
                 for (Effect s : selected) rivals.remove(s.label());
                 // a fallback that holds part of the family's shape stands against it only for what it finds beside it
                 // and, when the family explains nearly all it does, what it finds beside it is another structure, left to be located
+                // (unless it nests the family: then what it finds is the family's own shape changing)
                 Set<String> besideFamily = new HashSet<>();
                 int fam = k;
                 rivals.values().removeIf(f -> {
                     if (!f.holdsPartOf(e)) return false;
                     if (!significantBeside(at, f, w)) return true;
-                    if (!mostlyFamily(at, fam, e, f, w)) return false;
+                    if (f.nests(e) || !mostlyFamily(at, fam, e, f, w)) return false;
                     besideFamily.add(f.label());
                     return true;
                 });
@@ -3274,7 +3292,7 @@ public final class Diagnoser {
                         // what it finds beside a family that explains nearly all it does in the family's place (or more) is
                         // another structure, left to be located: a gear's pin order the fallback's curve cannot follow, and a
                         // trace of the noise's in the same joint
-                        if (mostlyFamily(at, k, e, f, w)) continue;
+                        if (!f.nests(e) && mostlyFamily(at, k, e, f, w)) continue;
                         why = String.format(Locale.ROOT, "%s is not claimed: with it fitted, %s still finds significant structure "
                                 + "in the same variable (F = %.1f, p = %.2g), so the family does not explain what was located",
                                 e.label(), f.label(), c.f, c.p);
@@ -6084,6 +6102,17 @@ public final class Diagnoser {
                 double max = e.usesTimeProxy() ? MAX_DRIFT_PER_H : MAX_DRIFT_PER_K;
                 c.plausible = overlaps(n, sn, 0, max);
                 c.plausibility = String.format(Locale.ROOT, "drift %.3g mm per %s < %.2g", n * 1e3, e.usesTimeProxy() ? "hour" : "K", max * 1e3);
+            }
+            case LOAD_PERIODIC -> {
+                // without load and at the reference torque, each order within a smooth error's bound
+                double max = 0;
+                for (int h = 0, n = v.length / 4; h < n; h++) {
+                    double amp = Math.hypot(v[2 * h], v[2 * h + 1]), per = Math.hypot(v[2 * n + 2 * h], v[2 * n + 2 * h + 1]);
+                    max = Math.max(max, Math.max(amp, amp + per));
+                }
+                c.plausible = max < 2 * MAX_PERIODIC_RAD;
+                c.plausibility = String.format(Locale.ROOT, "largest amplitude at no load or at %.0f N·m %.4f deg < %.2f deg",
+                        e.loadRefNm(), Math.toDegrees(max), Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
             case SMOOTH -> {
                 double r = Words.rmsSmooth(e, v);

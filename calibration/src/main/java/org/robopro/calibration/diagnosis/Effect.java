@@ -64,6 +64,8 @@ public final class Effect {
         SCALE("joint-scale", "Joint scale error (gear ratio or encoder)"),
         COUPLING("joint-coupling", "Joint coupling"),
         SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family"),
+        LOAD_PERIODIC("joint-load-periodic", "A joint's periodic error whose size follows the gravity torque on the joint (a gear mesh "
+                + "deflecting more under load), of no known family"),
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
         POINT_SMOOTH("point-smooth-error", "Displacement of the measured point with its reach, height, time or temperature, of no known family"),
         BASE_TURN("base-turn", "The robot's base or the instrument turning with time or temperature, of no known family"),
@@ -209,6 +211,8 @@ public final class Effect {
     private double cycle = Double.NaN;       // instrument reading: the period of a cyclic error of the reading (NaN: a spline)
     private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
     private int tiltEdges = 1;               // base tilt: 1, one edge; 4, a square foot's edges at the axis azimuth + k·90°
+    private double loadRefNm = Double.NaN;   // load-periodic: the torque its load columns are scaled by (N·m)
+    private boolean loadMagnitude;           // load-periodic: the size follows |τ| (true) or τ with its sign
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -304,6 +308,39 @@ public final class Effect {
         e.stages = other.stream().mapToDouble(Double::doubleValue).toArray();
         return e;
     }
+
+    /**
+     * A periodic error of joint {@code joint} at the orders of {@code periodic} whose size follows the
+     * gravity torque τ on the joint: Δq = Σ_h (a_h + a'_h x) sin h q + (b_h + b'_h x) cos h q, with
+     * x = τ/τ_ref, or |τ|/τ_ref when {@code magnitude}. A gear mesh's error under load is its unloaded
+     * error plus the load over the mesh stiffness, and that stiffness varies over the mesh cycle, so
+     * the part that repeats with the angle grows with the transmitted torque (the loaded
+     * transmission error: J. D. Smith, "Gear Noise and Vibration", 2nd ed., Marcel Dekker 2003, §2–3;
+     * W. D. Mark, J. Acoust. Soc. Am. 63 (1978) 1409). Of no known family: located, not named.
+     */
+    public static Effect loadPeriodic(Effect periodic, GravityTorques g, double refNm, boolean magnitude) {
+        if (periodic.kind != Kind.PERIODIC) throw new IllegalArgumentException("a load-periodic error follows a periodic one, not " + periodic.label());
+        if (!(refNm > 0) || Double.isInfinite(refNm)) throw new IllegalArgumentException("reference torque " + refNm);
+        if (g == null || g.massesUnknown()) throw new IllegalArgumentException("a load-periodic error needs the arm's masses");
+        Effect e = new Effect(Kind.LOAD_PERIODIC, periodic.joint, -1, g, false, Double.NaN, Double.NaN, periodic.harmonics.clone(),
+                Double.NaN, Double.NaN, null, null);
+        e.stages = periodic.stages.clone();
+        e.loadRefNm = refNm;
+        e.loadMagnitude = magnitude;
+        return e;
+    }
+
+    /** A load-periodic error's load at controller values q with payload {@code payloadKg}: τ/τ_ref or |τ|/τ_ref. */
+    double loadShare(double[] q, double payloadKg) {
+        double t = gravity.driveTorques(q, Double.isFinite(payloadKg) ? payloadKg : 0)[joint] / loadRefNm;
+        return loadMagnitude ? Math.abs(t) : t;
+    }
+
+    /** Whether a load-periodic error's size follows the torque's magnitude (else the torque with its sign). */
+    public boolean loadMagnitude() { return loadMagnitude; }
+
+    /** A load-periodic error's reference torque, N·m. */
+    public double loadRefNm() { return loadRefNm; }
 
     /** A stage order kept to 3 decimals (the label and the parameter names carry it). */
     static double roundOrder(double f) { return Math.rint(f * 1000) / 1000; }
@@ -1278,11 +1315,22 @@ public final class Effect {
 
     /**
      * Whether this fallback holds part of named effect {@code e}'s shape in its span: a link's
-     * bending holds the part of its joint's spring that the weight across the link drives (δ = L·θ).
+     * bending holds the part of its joint's spring that the weight across the link drives (δ = L·θ);
+     * a load-periodic error holds the whole of the transmission error it was made from ({@link #nests}).
      */
     public boolean holdsPartOf(Effect e) {
         if (kind == Kind.BASE_TURN && e.kind == Kind.DRIFT) return e.usesTimeProxy() == (along == Along.TIME);
+        if (nests(e)) return true;
         return kind == Kind.LINK_SAG && e.kind == Kind.COMPLIANCE && e.joint == joint;
+    }
+
+    /**
+     * Whether this fallback holds all of named effect {@code e}'s columns and more: a load-periodic
+     * error and the transmission error of its joint at its orders. What it finds beside {@code e} is
+     * then {@code e}'s own shape changing (its size with the load), not another structure.
+     */
+    public boolean nests(Effect e) {
+        return kind == Kind.LOAD_PERIODIC && e.kind == Kind.PERIODIC && e.joint == joint && Arrays.equals(e.orders(), orders());
     }
 
     /** Whether a link sag has the columns of the payload's weight at its far end. */
@@ -1518,7 +1566,7 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
@@ -1761,6 +1809,7 @@ public final class Effect {
     public int size() {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
+            case LOAD_PERIODIC -> 4 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
             case BACKLASH -> 1 + 2 * runout.length;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT -> nBasis;
@@ -1790,6 +1839,10 @@ public final class Effect {
                 } else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
             }
             case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
+            case LOAD_PERIODIC -> {
+                for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); }
+                for (double h : orders()) { out.add("la" + orderText(h)); out.add("lb" + orderText(h)); }
+            }
             case BACKLASH -> {
                 out.add("b");
                 for (double f : runout) {
@@ -1880,7 +1933,7 @@ public final class Effect {
     public List<String> units() {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
-            case PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
+            case PERIODIC, LOAD_PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
             case POINT_SMOOTH, TARGET_STEP, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
@@ -1940,6 +1993,8 @@ public final class Effect {
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + " per turn)"
                     : kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
+            case LOAD_PERIODIC -> kind.json + " j" + (joint + 1) + " (h " + String.join(",", Arrays.stream(orders()).mapToObj(Effect::orderText).toList())
+                    + (loadMagnitude ? ", with the torque's size)" : ", with the torque)");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 || model != null ? " (following " + (model != null ? "theta" : "j")
                     + (angleJoint() + 1) + ")" : "")
@@ -2057,6 +2112,16 @@ public final class Effect {
                 for (int i = 0, o = 2 * harmonics.length; i < stages.length; i++) {
                     g[o + 2 * i] = Math.sin(stages[i] * q[joint]);
                     g[o + 2 * i + 1] = Math.cos(stages[i] * q[joint]);
+                }
+            }
+            case LOAD_PERIODIC -> {
+                double[] hs = orders();
+                double x = loadShare(q, c.payloadKg());
+                for (int i = 0, n = hs.length; i < n; i++) {
+                    g[2 * i] = Math.sin(hs[i] * q[joint]);
+                    g[2 * i + 1] = Math.cos(hs[i] * q[joint]);
+                    g[2 * n + 2 * i] = x * g[2 * i];
+                    g[2 * n + 2 * i + 1] = x * g[2 * i + 1];
                 }
             }
             case BACKLASH -> {
@@ -2512,6 +2577,11 @@ public final class Effect {
                 putInstrument(p, instrument);
             }
             case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
+            case LOAD_PERIODIC -> {
+                p.put("load_ref_nm", loadRefNm);
+                if (loadMagnitude) p.put("load_magnitude", 1.0);
+                if (gravity.fromLengths()) p.put("load_masses_from_lengths", 1.0);
+            }
             case BACKLASH -> {
                 if (buildsUp()) p.put("build_up_rad", buildUp);
                 if (approached()) p.put("approach_rad", approach);
@@ -2526,6 +2596,18 @@ public final class Effect {
             default -> { }
         }
         return new EffectDescription(json(), joints1(), p);
+    }
+
+    /** The periodic error of drive {@code joint} at the orders its description's a-parameters name (a7: whole, a7.1: a stage). */
+    private static Effect periodicOf(EffectDescription d, int joint, String file) {
+        List<Integer> hs = new ArrayList<>();
+        List<Double> st = new ArrayList<>();
+        for (String key : d.parameters().keySet())
+            if (key.matches("a\\d+")) hs.add(Integer.parseInt(key.substring(1)));
+            else if (key.matches("a\\d+\\.\\d+")) st.add(Double.parseDouble(key.substring(1)));
+        if (hs.isEmpty() && st.isEmpty())
+            throw d.error(file, "parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
+        return periodic(joint, hs.stream().mapToInt(Integer::intValue).toArray(), st.stream().mapToDouble(Double::doubleValue).toArray());
     }
 
     /** Reads an effect back from its robot-file form; values in the order of {@link #parameterNames()}. */
@@ -2558,15 +2640,13 @@ public final class Effect {
                 yield ps.containsKey("c3") ? complianceStiffening(js.get(0) - 1, gravity)
                         : ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
-            case PERIODIC -> {
-                List<Integer> hs = new ArrayList<>();
-                List<Double> st = new ArrayList<>();
-                for (String key : ps.keySet())
-                    if (key.matches("a\\d+")) hs.add(Integer.parseInt(key.substring(1)));
-                    else if (key.matches("a\\d+\\.\\d+")) st.add(Double.parseDouble(key.substring(1)));
-                if (hs.isEmpty() && st.isEmpty())
-                    throw d.error(file, "parameters_si", "no harmonic a1, a2, ... or stage order a7.1, ...");
-                yield periodic(js.get(0) - 1, hs.stream().mapToInt(Integer::intValue).toArray(), st.stream().mapToDouble(Double::doubleValue).toArray());
+            case PERIODIC -> periodicOf(d, js.get(0) - 1, file);
+            case LOAD_PERIODIC -> {
+                GravityTorques g = ps.containsKey("load_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
+                if (g == null || g.massesUnknown()) throw needsMassModel(d, file, "joint-load-periodic");
+                double ref = require(d, "load_ref_nm", file);
+                if (!(ref > 0) || Double.isInfinite(ref)) throw d.error(file, "parameters_si.load_ref_nm", "must be > 0, got " + ref);
+                yield loadPeriodic(periodicOf(d, js.get(0) - 1, file), g, ref, ps.containsKey("load_magnitude"));
             }
             case BACKLASH -> {
                 if (ps.containsKey("held_above_nm")) {

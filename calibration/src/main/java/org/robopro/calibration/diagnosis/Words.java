@@ -113,6 +113,23 @@ final class Words {
                     + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
                     Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
                     + shortRange(e);
+            case LOAD_PERIODIC -> {
+                double[] hs = e.orders();
+                int n = hs.length;
+                double at0 = 0, per = 0;
+                for (int i = 0; i < n; i++) {
+                    at0 += v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1];
+                    per += v[2 * n + 2 * i] * v[2 * n + 2 * i] + v[2 * n + 2 * i + 1] * v[2 * n + 2 * i + 1];
+                }
+                yield String.format(Locale.ROOT, "Joint %d's error repeats %s times per turn of its angle, and its size follows the "
+                        + "gravity torque on the joint (%s): %.4f deg without load, changing by %.4f deg per %.0f N·m (amplitudes "
+                        + "over the orders, root-sum-square). A gear mesh that deflects more under load does so (the loaded "
+                        + "transmission error); a transmission error of fixed size does not explain it, so no known family is named. "
+                        + "It is modelled as such so compensation can use it. To confirm, measure the same angles of joint %d with "
+                        + "two or three payloads.", e.joint() + 1, String.join(", ", java.util.Arrays.stream(hs).mapToObj(Effect::orderText).toList()),
+                        e.loadMagnitude() ? "its size, whichever way it turns the joint" : "with its sign", Math.toDegrees(Math.sqrt(at0)),
+                        Math.toDegrees(Math.sqrt(per)), e.loadRefNm(), e.joint() + 1);
+            }
             case PAIR -> String.format(Locale.ROOT, "Joint %d's error depends on joints %d and %d together (%.4f deg RMS over the "
                     + "poses, in products of their sines and cosines, beside terms linear in each angle and in their product) and none of the known effects explains it; it is modelled "
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,

@@ -310,6 +310,39 @@ class HeldOutFormsTest {
     }
 
     /**
+     * A transmission error of joint 2 whose cycle grows with the torque on the joint (the world's
+     * loaded mesh, its own masses 30 % off the robot file's), measured with two payloads (without
+     * them the torque on joint 2 follows joint 2's angle nearly alone, and the growing cycle is
+     * a periodic error of that angle with sidebands): a transmission error of fixed size
+     * would be named for the part that does not change, and predicts left-out poses worse than the
+     * same cycle growing with the load. Nothing is named, the validation error comes within 1.15 x
+     * the floor, and on one seed at least the load-periodic error models it (on another a smooth
+     * curve of joint 2 may be located first: no family was named that it must stand against).
+     */
+    @Test
+    void transmissionErrorGrowingWithTheLoad_isLocatedNotNamed() {
+        var n = RobotLibrary.shipped("irb2000");
+        int loaded = 0;
+        for (long seed : new long[] {1, 3}) {
+            Scenario s = scenario("loaded mesh", "irb2000", Expected.outside(), w -> {
+                var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, new java.util.Random(seed));
+                var te = new JointError.LoadedHarmonic(1, 7, Math.toRadians(0.006), Math.toRadians(0.012), 200, 0.7 * seed);
+                return withErrors(List.of(te)).apply(w.withCompliance(m));
+            }, p -> p.withPayloads(0, 10));
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(n, c.train(), c.validation());
+            System.out.printf("loaded mesh seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the structure matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+            loaded += d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.LOAD_PERIODIC).count();
+        }
+        // where a transmission error of fixed size was named first, the claim check puts the growing cycle in its place
+        assertTrue(loaded > 0, "no seed modelled by the load-periodic error");
+    }
+
+    /**
      * Two validation readings gone grossly wrong (a beam broken and caught again on the wrong
      * reflector, 2 mm) beside a backlash of joint 2: they are reported as outliers, said with their
      * miss, and left out of the validation error and of every decision taken on the validation
