@@ -565,6 +565,9 @@ public final class Diagnoser {
     private static Diagnosis prepared(RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                       Directions.Source dirSource, Set<String> excluded) {
         Run r = firstRun(robot, train, validate, o, t0, dirSource, excluded, true);
+        // a structure only the poses beyond the rule carry, which the validation poses on its far side show too (see judged)
+        Run every = everyPose(r, robot, train, validate, o, t0, dirSource, excluded);
+        if (every != null) r = every;
         if (r.validationOutliers().isEmpty() && r.screened.isEmpty())
             return judged(r, robot, train, validate, o, t0, dirSource, excluded, List.of(), new HashSet<>());
         Set<String> bad = new HashSet<>();
@@ -600,12 +603,31 @@ public final class Diagnoser {
      */
     static final double SHORT_MODEL_SIGMAS = 10;
 
+    /**
+     * Too many training poses beyond the rule to be bad readings, left out all the same (the farthest
+     * as gross readings, the rest then few enough) by a run that found nothing in what was left: a
+     * structure only they carry (a play whose other side few poses show, a step) is seen only with
+     * them in. The run with every pose in, when it models something and leaves fewer poses beyond
+     * the rule; else null.
+     */
+    private static Run everyPose(Run r, RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
+                                 Directions.Source dirSource, Set<String> excluded) {
+        if (r.named || !tooManyToBeBad(r.outliers().size(), train.size())) return null;
+        Run all = run(robot, train, validate, o, List.of(), t0, dirSource, excluded);
+        LOG.debug("nothing found without {} poses beyond the rule; with every pose: named {}, beyond the rule {}", r.outliers().size(),
+                all.named, all.outliersUnder);
+        return all.named && all.outliersUnder.size() < r.outliers().size() ? all : null;
+    }
+
     /** {@link #prepared}'s outlier rule under the extended model, given the first run. */
     private static Diagnosis judged(Run r, RobotDescription robot, MeasurementSet train, MeasurementSet validate, Options o, long t0,
                                     Directions.Source dirSource, Set<String> excluded, List<Measurement> validationBeyond,
                                     Set<String> validationInRegion) {
         Run underRun = r;
-        if (!r.named) return r.reported();
+        if (!r.named) {
+            Run every = everyPose(r, robot, train, validate, o, t0, dirSource, excluded);
+            return every == null ? r.reported() : judged(every, robot, train, validate, o, t0, dirSource, excluded, validationBeyond, validationInRegion);
+        }
         // The geometric fit's outlier rule sees an effect's residuals: it flags poses an effect moved
         // most and misses outliers the effect's spread hides. The same rule under the extended model
         // decides; if it differs, diagnose again with its outliers.
@@ -3331,7 +3353,7 @@ public final class Diagnoser {
             if (!changed) break;
         }
         // A smooth fallback takes the resolution that predicts left-out poses best (a bump needs finer knots than a drift),
-        // a zero step the time between two poses that does.
+        // a zero step the time between two poses that does, a joint's curve or step the play taken up by gravity that does.
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
             List<Effect> variants = refinements(e, w, rows);
@@ -3340,13 +3362,28 @@ public final class Diagnoser {
             double pressOwn = at.pressFull();
             Effect best = null;
             double bestPress = pressOwn;
-            for (Effect f : variants) {
-                double pf = at.pressReplacing(k, f, w.conditions);
-                if (pf < bestPress) { bestPress = pf; best = f; }
+            // its own kind's variants first (a curve's resolution, a step's time); another shape only once they are settled
+            for (boolean own : new boolean[] {true, false}) {
+                for (Effect f : variants) {
+                    if ((f.kind() == e.kind()) != own) continue;
+                    double pf = at.pressReplacing(k, f, w.conditions);
+                    if (pf < bestPress) { bestPress = pf; best = f; }
+                }
+                if (best != null) break;
             }
             if (best == null) continue;
             int before = selected.size();
+            Selection saved = Selection.of(selected, absorbedCols, steps);
             Fit refined = replaceEffect(w, fit, selected, absorbedCols, steps, k, best, true);
+            // another shape in its place (a play taken up by gravity for a curve of the joint's angle) must not predict the
+            // validation poses worse
+            if (best.kind() != e.kind() && selected.contains(best) && w.hasValidation()
+                    && !(w.validateError(refined) < w.validateError(fit) * (1 + ALIAS_MARGIN))) {
+                LOG.debug("{} not in place of {}: validation error {} against {}", best.label(), e.label(), w.validateError(refined),
+                        w.validateError(fit));
+                saved.restore(selected, absorbedCols, steps);
+                continue;
+            }
             if (selected.size() < before) { // the finer curve did not hold on held-out data: keep the one fitted
                 Candidate c = w.tester(refined).test(e, w.conditions);
                 selected.add(e);
@@ -3916,13 +3953,21 @@ public final class Diagnoser {
             for (int nb : e.sight() == Effect.Sight.RANGE ? Locator.RANGE_RESOLUTIONS : Locator.ANGLE_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentReading(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.GRAVITY_PLAY) {
+            // where the side changes (the file's masses put the torque's zero only roughly) and how sharply
+            for (Effect f : gravityPlays(e.joint(), e.gravity(), rows, w.model, PLAY_SIDE_SHIFTS, PLAY_SIDE_WIDTHS))
+                if (f.sideNm() != e.sideNm() || f.sideWidthNm() != e.sideWidthNm()) out.add(f);
         } else if (e.kind() == Effect.Kind.SMOOTH) {
+            // a curve of the joint's angle may stand for its play taken up by gravity (the torque's sign follows the angle closely)
+            if (e.angleJoint() == e.joint()) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, new double[] {0}, PLAY_SIDE_WIDTHS));
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.SMOOTH_BASIS, rows.size()))
                     out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
                             : Effect.smoothFollowing(e.joint(), e.angleJoint(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.stepInTime() || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
+            // a step of the reading at one angle may stand for a play taken up by gravity, whose side changes with the torque
+            if (angle) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, new double[] {0}, PLAY_SIDE_WIDTHS));
             Locator.Var var = angle ? Locator.Var.ANGLE_STEP : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP
                     : e.kind() == Effect.Kind.BASE_STEP ? Locator.Var.BASE_STEP : Locator.Var.TIME_STEP;
             double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
@@ -3933,6 +3978,35 @@ public final class Diagnoser {
         }
         return out;
     }
+
+    /**
+     * Joint {@code j}'s plays taken up by gravity ({@link Effect#gravityPlay}) with their side changing
+     * at each of {@code shifts} (a share of the largest torque on the drive over {@code rows}) and
+     * each hand-over half-width of {@code widths}; the masses the robot file's, or estimated from the
+     * link lengths. None where fewer than {@link Locator#MIN_PLAY_SIDE} poses lie on either side of
+     * the torque's zero.
+     */
+    static List<Effect> gravityPlays(int j, GravityTorques g0, List<Measurement> rows, KinematicModel model, double[] shifts, double[] widths) {
+        if (g0 == null || model.isPrismatic(j)) return List.of();
+        GravityTorques g = g0.massesUnknown() ? GravityTorques.fromLengths(model) : g0;
+        double max = 0;
+        int pos = 0, neg = 0;
+        for (Measurement r : rows) {
+            double t = g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
+            max = Math.max(max, Math.abs(t));
+            if (t > 0) pos++;
+            else if (t < 0) neg++;
+        }
+        if (Math.min(pos, neg) < Locator.MIN_PLAY_SIDE || !(max > 0)) return List.of();
+        List<Effect> out = new ArrayList<>();
+        for (double c : shifts) for (double wd : widths) out.add(Effect.gravityPlay(j, g, c * max, wd * max));
+        return out;
+    }
+
+    /** Where a gravity play's side changes, tried when it is refined: a share of the largest torque on its drive either side of zero. */
+    static final double[] PLAY_SIDE_SHIFTS = {-0.1, -0.05, -0.02, 0, 0.02, 0.05, 0.1};
+    /** The hand-over's half-widths tried, a share of the largest torque (0: sharp). */
+    static final double[] PLAY_SIDE_WIDTHS = {0, 0.05, 0.1, 0.2};
 
     /**
      * A distance meter's cycle in the model, its period tuned and its overtones taken in. A period a
@@ -4164,6 +4238,11 @@ public final class Diagnoser {
                 // the link's bending, or its joint's spring (a beam's special case)
                 case LINK_BEND -> { if ((k == Effect.Kind.LINK_SAG || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint) return e; }
                 case LINK_TWIST -> { if (k == Effect.Kind.LINK_TWIST) return e; }
+                // the joint's play taken up by gravity, a lost motion held by it, or its spring under the same torque
+                case GRAVITY_PLAY -> {
+                    if ((k == Effect.Kind.GRAVITY_PLAY || k == Effect.Kind.BACKLASH || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint)
+                        return e;
+                }
             }
         }
         return null;
@@ -4378,6 +4457,9 @@ public final class Diagnoser {
             case LINK_BEND -> String.format(Locale.ROOT, "put a second target on joint %d's housing (the link's far end) and "
                     + "measure it with the link horizontal and near vertical, with and without payload: a link that bends moves "
                     + "there across itself, a joint's spring turns it about joint %d.", f.probe.joint + 2, f.probe.joint + 1);
+            case GRAVITY_PLAY -> String.format(Locale.ROOT, "measure poses where the gravity torque on joint %d is small, each "
+                    + "approached from both directions, and a few with two payloads: a gear's backlash follows the last motion "
+                    + "there, a clearance held by the weight does not.", f.probe.joint + 1);
             case LINK_TWIST -> "put two targets on joint 3's housing, either side of the upper arm's plane, and measure them with "
                     + "the wrist turned so the tool's weight hangs to one side and then to the other, with and without payload: an "
                     + "upper arm that twists lifts one and lowers the other.";
@@ -4666,6 +4748,7 @@ public final class Diagnoser {
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
                 case DIRECTION, SETTLING -> { if (f.probe.settling != null) out.add(f.probe.settling); }
+                case GRAVITY_PLAY -> out.add(f.probe.play);
                 case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
@@ -6102,6 +6185,13 @@ public final class Diagnoser {
                 double max = e.usesTimeProxy() ? MAX_DRIFT_PER_H : MAX_DRIFT_PER_K;
                 c.plausible = overlaps(n, sn, 0, max);
                 c.plausibility = String.format(Locale.ROOT, "drift %.3g mm per %s < %.2g", n * 1e3, e.usesTimeProxy() ? "hour" : "K", max * 1e3);
+            }
+            case GRAVITY_PLAY -> {
+                // a shape of no known family: no larger than a play can be, either way (against the torque the words say it is no
+                // clearance held by gravity)
+                c.plausible = Math.abs(v[0]) < MAX_BACKLASH_RAD;
+                c.plausibility = String.format(Locale.ROOT, "play %.4f deg < %.1f deg", Math.toDegrees(Math.abs(v[0])),
+                        Math.toDegrees(MAX_BACKLASH_RAD));
             }
             case LOAD_PERIODIC -> {
                 // without load and at the reference torque, each order within a smooth error's bound

@@ -64,6 +64,8 @@ public final class Effect {
         SCALE("joint-scale", "Joint scale error (gear ratio or encoder)"),
         COUPLING("joint-coupling", "Joint coupling"),
         SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family"),
+        GRAVITY_PLAY("joint-gravity-play", "A joint's play taken up by gravity: its output rests on the side the gravity torque "
+                + "pushes it to, whatever the last motion (a clearance in the joint's bearing, gear or linkage), of no known family"),
         LOAD_PERIODIC("joint-load-periodic", "A joint's periodic error whose size follows the gravity torque on the joint (a gear mesh "
                 + "deflecting more under load), of no known family"),
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
@@ -212,6 +214,7 @@ public final class Effect {
     private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
     private int tiltEdges = 1;               // base tilt: 1, one edge; 4, a square foot's edges at the axis azimuth + k·90°
     private double loadRefNm = Double.NaN;   // load-periodic: the torque its load columns are scaled by (N·m)
+    private double sideNm, sideWidthNm;      // gravity play: the torque where the side changes, the hand-over's half-width (0: sharp), N·m
     private boolean loadMagnitude;           // load-periodic: the size follows |τ| (true) or τ with its sign
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
@@ -329,6 +332,38 @@ public final class Effect {
         e.loadMagnitude = magnitude;
         return e;
     }
+
+    /**
+     * A play of joint {@code joint} taken up by gravity: Δq = (b/2)·s(τ), τ the gravity torque on the
+     * drive ({@code g}'s masses, the pose's payload), s = sign(τ − c) or, with a hand-over half-width
+     * w &gt; 0, clamp((τ − c)/w, −1, 1). A clearance held against one side by a load gives way in the
+     * load's direction, as a spring does (b &gt; 0 with the torque's sign of a joint compliance,
+     * Δq = τ/k), and changes side where the load reverses; it does not follow the last motion, so no
+     * motion's direction tells it (a backlash held by gravity with no free zone: Nordin &amp; Gutman,
+     * Automatica 38 (2002) 1633, §2). c stands for where the file's masses put the torque's zero
+     * against where it is. Of no known family: located, not named.
+     */
+    public static Effect gravityPlay(int joint, GravityTorques g, double centreNm, double widthNm) {
+        if (g == null || g.massesUnknown()) throw new IllegalArgumentException("a gravity play needs the arm's masses");
+        if (!Double.isFinite(centreNm) || !(widthNm >= 0) || Double.isInfinite(widthNm))
+            throw new IllegalArgumentException("side change at " + centreNm + " N·m, width " + widthNm);
+        Effect e = new Effect(Kind.GRAVITY_PLAY, joint, -1, g, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+        e.sideNm = centreNm;
+        e.sideWidthNm = widthNm;
+        return e;
+    }
+
+    /** A gravity play's side, −1..1, at gravity torque {@code tauNm} on its drive. */
+    public double playSide(double tauNm) {
+        double x = tauNm - sideNm;
+        return sideWidthNm > 0 ? Math.max(-1, Math.min(1, x / sideWidthNm)) : Math.signum(x);
+    }
+
+    /** A gravity play's torque where the side changes, N·m. */
+    public double sideNm() { return sideNm; }
+
+    /** A gravity play's hand-over half-width, N·m (0: sharp). */
+    public double sideWidthNm() { return sideWidthNm; }
 
     /** A load-periodic error's load at controller values q with payload {@code payloadKg}: τ/τ_ref or |τ|/τ_ref. */
     double loadShare(double[] q, double payloadKg) {
@@ -1566,7 +1601,7 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
@@ -1843,6 +1878,7 @@ public final class Effect {
                 for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); }
                 for (double h : orders()) { out.add("la" + orderText(h)); out.add("lb" + orderText(h)); }
             }
+            case GRAVITY_PLAY -> out.add("b");
             case BACKLASH -> {
                 out.add("b");
                 for (double f : runout) {
@@ -1933,7 +1969,7 @@ public final class Effect {
     public List<String> units() {
         String u = switch (kind) {
             case COMPLIANCE -> "rad/(N·m)";
-            case PERIODIC, LOAD_PERIODIC, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
+            case PERIODIC, LOAD_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
             case POINT_SMOOTH, TARGET_STEP, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
@@ -1993,6 +2029,8 @@ public final class Effect {
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + " per turn)"
                     : kind.json + " j" + (joint + 1) + (lowHarmonics() ? "" : " (h " + String.join(",",
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
+            case GRAVITY_PLAY -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (side changing at %.1f N·m%s)", sideNm,
+                    sideWidthNm > 0 ? String.format(Locale.ROOT, " ± %.1f", sideWidthNm) : "");
             case LOAD_PERIODIC -> kind.json + " j" + (joint + 1) + " (h " + String.join(",", Arrays.stream(orders()).mapToObj(Effect::orderText).toList())
                     + (loadMagnitude ? ", with the torque's size)" : ", with the torque)");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
@@ -2114,6 +2152,7 @@ public final class Effect {
                     g[o + 2 * i + 1] = Math.cos(stages[i] * q[joint]);
                 }
             }
+            case GRAVITY_PLAY -> g[0] = 0.5 * playSide(gravity.driveTorques(q, Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[joint]);
             case LOAD_PERIODIC -> {
                 double[] hs = orders();
                 double x = loadShare(q, c.payloadKg());
@@ -2577,6 +2616,11 @@ public final class Effect {
                 putInstrument(p, instrument);
             }
             case ANGLE_STEP -> { p.put("q_step", lo); if (isWindow()) p.put("q_step_back", hi); }
+            case GRAVITY_PLAY -> {
+                p.put("side_nm", sideNm);
+                p.put("side_width_nm", sideWidthNm);
+                if (gravity.fromLengths()) p.put("play_masses_from_lengths", 1.0);
+            }
             case LOAD_PERIODIC -> {
                 p.put("load_ref_nm", loadRefNm);
                 if (loadMagnitude) p.put("load_magnitude", 1.0);
@@ -2641,6 +2685,13 @@ public final class Effect {
                         : ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
             case PERIODIC -> periodicOf(d, js.get(0) - 1, file);
+            case GRAVITY_PLAY -> {
+                GravityTorques g = ps.containsKey("play_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
+                if (g == null || g.massesUnknown()) throw needsMassModel(d, file, "joint-gravity-play");
+                double wd = ps.containsKey("side_width_nm") ? require(d, "side_width_nm", file) : 0;
+                if (!(wd >= 0) || Double.isInfinite(wd)) throw d.error(file, "parameters_si.side_width_nm", "must be >= 0, got " + wd);
+                yield gravityPlay(js.get(0) - 1, g, require(d, "side_nm", file), wd);
+            }
             case LOAD_PERIODIC -> {
                 GravityTorques g = ps.containsKey("load_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
                 if (g == null || g.massesUnknown()) throw needsMassModel(d, file, "joint-load-periodic");

@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.robopro.calibration.PoseConditions;
+import org.robopro.calibration.measurement.Measurement;
 import org.robopro.kinematics.KinematicModel;
 import org.robopro.kinematics.Pose;
 import org.robopro.models.Vec3;
@@ -40,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -108,6 +109,7 @@ final class Locator {
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
         Effect bend;                             // LINK_BEND, LINK_TWIST: the link's sag or twist
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
+        Effect play;                             // GRAVITY_PLAY: the joint's play taken up by gravity
         String xLabel;
     }
 
@@ -342,6 +344,7 @@ final class Locator {
         }
         if (varies(height, 0.05)) out.add(scalar(t, Var.HEIGHT, height, "height of the measured point", "height (m)", true));
         out.addAll(baseMoment(t));
+        out.addAll(gravityPlays(t));
         out.addAll(axisWobbles(t));
         out.addAll(axialRunouts(t));
         out.add(toolGravity(t));
@@ -403,6 +406,47 @@ final class Locator {
         p.x = x;
         p.xLabel = "angle of the line of sight from its mean direction in the tool's frame (deg)";
         return p;
+    }
+
+    /** The least number of poses on each side of a joint's gravity torque for its play taken up by gravity to be probed. */
+    static final int MIN_PLAY_SIDE = 3;
+
+    /**
+     * Each joint's play taken up by gravity ({@link Effect#gravityPlay}): its reading steps where the
+     * gravity torque on its drive changes sign, whatever the last motion, one column. The torque is
+     * the robot file's masses', or without them an estimate from the link lengths; probed where at
+     * least {@link #MIN_PLAY_SIDE} poses lie on each side of it (one measured point per pose).
+     */
+    static List<Probe> gravityPlays(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        GravityTorques g0 = t.w.gravity;
+        if (g0 == null || t.ends != 1) return out;
+        GravityTorques g = g0.massesUnknown() ? GravityTorques.fromLengths(t.w.model) : g0;
+        List<Measurement> rows = t.endRows.get(0);
+        int poses = rows.size();
+        for (int j = 0; j < t.dof; j++) {
+            if (t.w.model.isPrismatic(j)) continue;
+            double[][] tau = new double[1][poses];
+            int pos = 0, neg = 0;
+            for (int i = 0; i < poses; i++) {
+                Measurement r = rows.get(i);
+                tau[0][i] = g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
+                if (tau[0][i] > 0) pos++;
+                else if (tau[0][i] < 0) neg++;
+            }
+            if (Math.min(pos, neg) < MIN_PLAY_SIDE) continue;
+            Probe p = drive(t, j, 1, (e, i, gg) -> gg[0] = 0.5 * Math.signum(tau[e][i]));
+            p.var = Var.GRAVITY_PLAY;
+            p.joint = j;
+            p.play = Effect.gravityPlay(j, g, 0, 0);
+            p.variable = "gravity torque on drive " + (j + 1);
+            p.shape = "joint " + (j + 1) + "'s reading steps where the gravity torque on it changes sign, whatever the last motion "
+                    + "(a play taken up by the arm's weight)";
+            p.x = tau;
+            p.xLabel = "gravity torque on drive " + (j + 1) + " (N·m)";
+            out.add(p);
+        }
+        return out;
     }
 
     /**

@@ -123,6 +123,7 @@ final class Plots {
             case THERMAL -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case COUPLING -> "joint " + (e.source() + 1) + " angle q" + (e.source() + 1) + " (deg)";
             case SETTLING -> "speed of joint " + (e.joint() + 1) + " in the move before the reading, synchronised (deg/s)";
+            case GRAVITY_PLAY -> "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
         };
     }
 
@@ -153,6 +154,7 @@ final class Plots {
             case THERMAL -> e.usesTimeProxy() ? c.timeS() : c.tempC();
             case COUPLING -> Math.toDegrees(row.q(e.source()));
             case SETTLING -> Math.toDegrees(e.settlingSpeed(row));
+            case GRAVITY_PLAY -> e.gravity().driveTorques(row.q(), Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[e.joint()];
         };
     }
 
@@ -194,6 +196,7 @@ final class Plots {
                     : -0.5 * v[0] * x; // output lags: θ − q = −(b/2)·dir
             case THERMAL -> e.usesTimeProxy() ? v[0] * (1 - Math.exp(-x / e.tauS())) : v[0] * (x - e.t0C());
             case SCALE, COUPLING, SETTLING -> v[0] * Math.toRadians(x);
+            case GRAVITY_PLAY -> 0.5 * v[0] * e.playSide(x);
         };
     }
 

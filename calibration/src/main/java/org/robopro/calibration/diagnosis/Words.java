@@ -113,6 +113,21 @@ final class Words {
                     + "cubic spline over %.0f..%.0f deg) so compensation can use it, but its cause is unknown.", e.joint() + 1,
                     Math.toDegrees(rmsSmooth(e, v)), e.basisCount(), Math.toDegrees(e.rangeLo()), Math.toDegrees(e.rangeHi()))
                     + shortRange(e);
+            case GRAVITY_PLAY -> v[0] >= 0 ? String.format(Locale.ROOT, "Joint %d has a play of %.4f ± %.4f deg taken up by gravity: "
+                    + "its output rests on the side the gravity torque on it pushes it to, changing side where that torque crosses "
+                    + "%.1f N·m%s, whatever way the joint last moved, so no motion's direction shows it. A clearance in the joint's "
+                    + "bearing, gear or linkage held by the arm's weight does so; none of the known effects explains it (a backlash "
+                    + "would follow the last motion where the torque is small). It is modelled as such so compensation can use it. To "
+                    + "tell a gear's backlash from a bearing's clearance, measure poses where the torque on joint %d is small, "
+                    + "approached from both directions.", e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(s[0]), e.sideNm(),
+                    e.sideWidthNm() > 0 ? String.format(Locale.ROOT, " (over ± %.1f N·m)", e.sideWidthNm()) : "", e.joint() + 1)
+                    : String.format(Locale.ROOT, "Joint %d's reading steps by %.4f ± %.4f deg where the gravity torque on it changes "
+                    + "sign (at %.1f N·m%s, by the robot file's masses), whatever way the joint last moved, but against the torque: "
+                    + "a clearance held by the arm's weight gives way with the torque, as a spring does, so this is no play taken up "
+                    + "by gravity as the file's masses put it, and none of the known effects explains it. Check the mass model's "
+                    + "centres of mass for joint %d (a mass on the wrong side of the axis turns the torque's sign). It is modelled as "
+                    + "such so compensation can use it.", e.joint() + 1, Math.toDegrees(-v[0]), Math.toDegrees(s[0]), e.sideNm(),
+                    e.sideWidthNm() > 0 ? String.format(Locale.ROOT, " ± %.1f", e.sideWidthNm()) : "", e.joint() + 1);
             case LOAD_PERIODIC -> {
                 double[] hs = e.orders();
                 int n = hs.length;
