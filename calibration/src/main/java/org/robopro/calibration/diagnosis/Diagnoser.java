@@ -3395,6 +3395,7 @@ public final class Diagnoser {
             k = -1;
             if (++refinements > 2 * MAX_LOCATED) break;
         }
+        fit = driftForSteps(w, fit, selected, absorbedCols, steps);
         fit = tuneCycles(w, fit, selected, absorbedCols, steps, rows);
         // A jump of the instrument's distances taken while a smooth change of them with the same time was held back (outside
         // its bounds then, taken later) must still hold beside the final model: at the threshold it was taken at, and with a
@@ -3949,6 +3950,10 @@ public final class Diagnoser {
             for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentScale(e.along(), e.instrumentPose(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.TARGET_DRIFT) {
+            for (int nb : Effect.DRIFT_RESOLUTIONS)
+                if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
+                    out.add(Effect.targetDrift(w.model, e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.INSTRUMENT) {
             for (int nb : e.sight() == Effect.Sight.RANGE ? Locator.RANGE_RESOLUTIONS : Locator.ANGLE_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
@@ -4001,6 +4006,48 @@ public final class Diagnoser {
         List<Effect> out = new ArrayList<>();
         for (double c : shifts) for (double wd : widths) out.add(Effect.gravityPlay(j, g, c * max, wd * max));
         return out;
+    }
+
+    /**
+     * Several moves of the measured point on the flange at different times (target steps, with a
+     * drift of it or not) are one drift of it with time when a smooth curve of the time predicts
+     * left-out poses better than they do together: a tool that grows and shrinks as its spindle runs
+     * and rests moves the point back and forth, which steps follow one at a time. Each resolution of
+     * {@link Effect#DRIFT_RESOLUTIONS} the poses support is tried in their place; the best stays when
+     * its leave-one-pose-out error is lower and it predicts the validation poses no worse.
+     */
+    private static Fit driftForSteps(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps) {
+        List<Effect> moves = selected.stream().filter(e -> e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.TARGET_DRIFT).toList();
+        if (moves.size() < 2) return fit;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (PoseConditions c : w.conditions) if (Double.isFinite(c.timeS())) { lo = Math.min(lo, c.timeS()); hi = Math.max(hi, c.timeS()); }
+        if (!(hi > lo)) return fit;
+        Selection saved = Selection.of(selected, absorbedCols, steps);
+        double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
+        Fit best = null;
+        int bestNb = 0;
+        double bestPress = own;
+        for (int nb : Effect.DRIFT_RESOLUTIONS) {
+            if (!Effect.supported(nb, Effect.POINT_BASIS, w.rows.size())) continue;
+            Effect drift = Effect.targetDrift(w.model, lo, hi, nb);
+            Fit f = fit;
+            for (int k = selected.size() - 1; k >= 0; k--)
+                if (moves.contains(selected.get(k)) && selected.get(k) != moves.get(0)) f = dropAndRefit(w, f, selected, absorbedCols, steps, k);
+            f = replaceEffect(w, f, selected, absorbedCols, steps, selected.indexOf(moves.get(0)), drift, true);
+            double pf = w.tester(f).pressFull();
+            boolean valWorse = w.hasValidation() && !(w.validateError(f) < ownVal * (1 + ALIAS_MARGIN));
+            LOG.debug("{} in place of {}: PRESS {} against {}, validation {} against {}", drift.label(), moves.stream().map(Effect::label).toList(),
+                    pf, own, w.validateError(f), ownVal);
+            if (selected.contains(drift) && pf < bestPress && !valWorse) { best = f; bestNb = nb; bestPress = pf; }
+            saved.restore(selected, absorbedCols, steps);
+        }
+        if (best == null) return fit;
+        // made again at the best resolution (the attempts' selections were put back)
+        Effect drift = Effect.targetDrift(w.model, lo, hi, bestNb);
+        Fit f = fit;
+        for (int k = selected.size() - 1; k >= 0; k--)
+            if (moves.contains(selected.get(k)) && selected.get(k) != moves.get(0)) f = dropAndRefit(w, f, selected, absorbedCols, steps, k);
+        return replaceEffect(w, f, selected, absorbedCols, steps, selected.indexOf(moves.get(0)), drift, true);
     }
 
     /** Where a gravity play's side changes, tried when it is refined: a share of the largest torque on its drive either side of zero. */
@@ -4219,7 +4266,8 @@ public final class Diagnoser {
                 case TIME_STEP -> {
                     if ((k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == f.probe.joint) return e;
                 }
-                case TARGET_STEP -> { if (k == Effect.Kind.TARGET_STEP) return e; }
+                // the target moved on the flange: at one time, or drifting
+                case TARGET_STEP, TARGET_DRIFT -> { if (k == Effect.Kind.TARGET_STEP || k == Effect.Kind.TARGET_DRIFT) return e; }
                 // the instrument's pose changed: a drift of it, or a turn of the base, with time follows part of a step
                 case BASE_STEP -> { if (k == Effect.Kind.BASE_STEP || k == Effect.Kind.DRIFT || k == Effect.Kind.BASE_TURN) return e; }
                 case RANGE_STEP -> { if (k == Effect.Kind.DRIFT || k == Effect.Kind.INSTRUMENT_SCALE) return e; }
@@ -4437,6 +4485,9 @@ public final class Diagnoser {
             case RANGE_STEP -> String.format(Locale.ROOT, "check the instrument's log for a broken beam near %.0f s (the arm or "
                     + "a person crossing it); keep the line of sight clear, or measure a fixed reference point after every break "
                     + "to carry the distance over.", f.probe.lo);
+            case TARGET_DRIFT -> "re-measure one pose every few minutes through the campaign, with the tool (a spindle) run as in "
+                    + "production and then at rest: a tool that grows as it warms moves the point along its axis, a holder that creeps "
+                    + "does not come back.";
             case TARGET_STEP -> String.format(Locale.ROOT, "check the measured target's mounting on the flange (knocked, "
                     + "slipped in its nest) and re-measure a few poses from before %.0f s; mark the target's nest and check it "
                     + "between sessions.", f.probe.lo);
@@ -4749,6 +4800,7 @@ public final class Diagnoser {
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
                 case DIRECTION, SETTLING -> { if (f.probe.settling != null) out.add(f.probe.settling); }
                 case GRAVITY_PLAY -> out.add(f.probe.play);
+                case TARGET_DRIFT -> out.add(Effect.targetDrift(model, f.probe.lo, f.probe.hi, f.probe.basis));
                 case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
@@ -6314,6 +6366,15 @@ public final class Diagnoser {
                 c.plausible = d < MAX_TARGET_STEP_M && turn < MAX_BASE_TURN_RAD;
                 c.plausibility = String.format(Locale.ROOT, "the move %.4f mm < %.0f mm, the turn %.1f µrad < %.0f µrad", d * 1e3,
                         MAX_TARGET_STEP_M * 1e3, turn * 1e6, MAX_BASE_TURN_RAD * 1e6);
+            }
+            case TARGET_DRIFT -> {
+                // a B-spline's curve lies within its coefficients' range: the largest change along a flange axis bounds the drift
+                int n = e.basisCount();
+                double d = 0;
+                for (int a = 0; a < 3; a++) d = Math.max(d, spread(Arrays.copyOfRange(v, a * n, (a + 1) * n)));
+                c.plausible = d < MAX_TARGET_STEP_M;
+                c.plausibility = String.format(Locale.ROOT, "the target's drift along a flange axis within %.4f mm < %.0f mm", d * 1e3,
+                        MAX_TARGET_STEP_M * 1e3);
             }
             case TARGET_STEP -> {
                 double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

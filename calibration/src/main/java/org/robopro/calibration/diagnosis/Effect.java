@@ -76,6 +76,8 @@ public final class Effect {
         SETTLING("joint-settling", "A joint's deflection that follows the move made just before the reading (the arm read before "
                 + "it settled: a residual vibration after the stop, a servo's following error), of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
+        TARGET_DRIFT("target-drift", "Measured point that moves on the flange with time (a tool or holder that grows or creeps as a "
+                + "spindle or the tool warms), of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
         BASE_STEP("base-step", "The measuring instrument and the robot's base that moved against each other at one time during the "
                 + "campaign (the instrument knocked, the base slipped), of no known family"),
@@ -819,6 +821,26 @@ public final class Effect {
     public static Effect targetStep(KinematicModel model, double tauS) {
         if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
         return new Effect(Kind.TARGET_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, model, null, 1);
+    }
+
+    /** Basis functions per axis of a target's drift on the flange with time ({@link #targetDrift}), tried coarsest first. */
+    public static final int[] DRIFT_RESOLUTIONS = {POINT_BASIS, 7, 13, 25};
+
+    /**
+     * The measured point moving on the flange with time (a tool that grows as a spindle or the tool
+     * itself warms and cools, a holder that creeps): Δp = R_flange(q)·d(t), d a cubic B-spline of the
+     * time ({@code nBasis} functions per flange axis) over [lo, hi], s. At an unknown time (a
+     * compensated program) it is where the campaign ended. {@code model} gives the flange's
+     * orientation. A tool's length grows with its temperature (α·L·ΔT: 11.5 µm/m/K for steel) and its
+     * temperature follows the spindle's duty with its own time constant, which no sensor in the file
+     * records.
+     */
+    public static Effect targetDrift(KinematicModel model, double lo, double hi, int nBasis) {
+        if (!(hi > lo)) throw new IllegalArgumentException("target drift over " + lo + ".." + hi + " s");
+        if (nBasis < POINT_BASIS) throw new IllegalArgumentException("target drift with " + nBasis + " functions");
+        Effect e = new Effect(Kind.TARGET_DRIFT, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, model, null, nBasis);
+        e.along = Along.TIME;
+        return e;
     }
 
     /**
@@ -1601,7 +1623,7 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
@@ -1804,7 +1826,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
@@ -1855,7 +1877,7 @@ public final class Effect {
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case LINK_TWIST -> TWIST_ARM_TERMS + (sagPayload ? HAND_TERMS : 0);
-            case POINT_SMOOTH -> 3 * nBasis;
+            case POINT_SMOOTH, TARGET_DRIFT -> 3 * nBasis;
             case BASE_TURN -> 3 * nBasis + 3;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
@@ -1899,7 +1921,7 @@ public final class Effect {
             case PAIR -> {
                 for (String n : new String[] {"ss", "sc", "cs", "cc", "lin_j", "lin_k", "lin_jk", "lin_j_ck", "lin_j_sk", "ck", "sk"}) out.add(n);
             }
-            case POINT_SMOOTH -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
+            case POINT_SMOOTH, TARGET_DRIFT -> { for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("d" + a + k); }
             case BASE_TURN -> {
                 for (String a : new String[] {"x", "y", "z"}) for (int k = 1; k <= nBasis; k++) out.add("r" + a + k);
                 out.add("dx"); out.add("dy"); out.add("dz");
@@ -1971,7 +1993,7 @@ public final class Effect {
             case COMPLIANCE -> "rad/(N·m)";
             case PERIODIC, LOAD_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
-            case POINT_SMOOTH, TARGET_STEP, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
+            case POINT_SMOOTH, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
@@ -2052,6 +2074,7 @@ public final class Effect {
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP, BASE_STEP, RANGE_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case TARGET_DRIFT -> kind.json + " (time" + (nBasis == DRIFT_RESOLUTIONS[0] ? "" : ", " + nBasis + " functions") + ")";
             case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
                     : squareFoot() ? String.format(Locale.ROOT, " (square foot, edges at %.0f deg, above %.0f N·m)",
                     (Math.toDegrees(tiltAzimuth) % 90 + 90) % 90, tiltHold)
@@ -2195,7 +2218,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
@@ -2264,6 +2287,17 @@ public final class Effect {
                     double ra = instrument.rot(0, a) * pi[0] + instrument.rot(1, a) * pi[1] + instrument.rot(2, a) * pi[2];
                     for (int i = 0; i < nBasis; i++) g3[a * k + i] = ra * b[i];
                 }
+            }
+            case TARGET_DRIFT -> {
+                // d(t) in the flange's axes, turned into the base's
+                double[] b = new double[nBasis];
+                bspline(reading(c), lo, hi, b);
+                Pose f = model.flange(q);
+                for (int a = 0; a < 3; a++)
+                    for (int axis = 0; axis < 3; axis++) {
+                        double r = f.rot(a, axis);
+                        for (int i = 0; i < nBasis; i++) g3[a * k + axis * nBasis + i] = r * b[i];
+                    }
             }
             case TARGET_STEP -> {
                 // before the move the point sat −d (flange frame) from where it ended; an unknown time: where it ended
@@ -2589,7 +2623,7 @@ public final class Effect {
                 p.put("q_max", hi);
                 if (model != null) p.put("model_angle", 1.0);
             }
-            case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
+            case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN, TARGET_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP, BASE_STEP -> p.put("time_s_step", tauS);
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
@@ -2660,7 +2694,7 @@ public final class Effect {
         if (kind == null) throw d.error(file, "effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT,
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT,
                  TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
@@ -2668,7 +2702,8 @@ public final class Effect {
         };
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
-        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN || kind == Kind.INSTRUMENT_SCALE) && along == null)
+        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN || kind == Kind.INSTRUMENT_SCALE || kind == Kind.TARGET_DRIFT)
+                && along == null)
             throw d.error(file, "parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
         if (js.size() != need)
             throw d.error(file, "joints", d.effect() + " needs " + need + " joints, got " + js);
@@ -2770,6 +2805,12 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case TARGET_DRIFT -> {
+                if (along != Along.TIME) throw d.error(file, "parameters_si", "needs time_s_min and time_s_max");
+                int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("dx\\d+")).count();
+                if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs dx1..dxN, N >= " + POINT_BASIS);
+                yield targetDrift(model, require(d, "time_s_min", file), require(d, "time_s_max", file), n);
+            }
             case BASE_STEP -> baseStep(require(d, "time_s_step", file));
             case RANGE_STEP -> rangeStep(instrumentOf(d, file), require(d, "time_s_step", file));
             case LINK_SAG -> {

@@ -41,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -291,6 +291,7 @@ final class Locator {
             double[][][] rf = steps ? new double[ends][poses][] : null;
             if (steps)
                 for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
+            if (steps) out.add(targetDrift(t, time, rf));
             for (double tau : stepPlaces(time[0], STEP_PLACES)) {
                 if (steps) out.add(targetStep(t, tau, time, rf));
                 if (steps && ends == 1) out.add(baseStep(t, tau, time));
@@ -982,6 +983,33 @@ final class Locator {
         tp.xLabel = "time since the start (s)";
         tp.rf = rf;
         return tp;
+    }
+
+    /**
+     * The measured point moving on the flange with time ({@link Effect#targetDrift}): a cubic B-spline
+     * of the time per flange axis ({@link Effect#POINT_BASIS} functions each), {@code rf} each pose's
+     * flange rotation.
+     */
+    private static Probe targetDrift(Diagnoser.Tester t, double[][] time, double[][][] rf) {
+        int rpp = t.rpp, nb = Effect.POINT_BASIS;
+        double lo = min(time), hi = max(time);
+        Probe p = columns(t, 3 * nb, (e, row, g, col) -> {
+            double[] r = rf[e][row / rpp];
+            int axis = col / nb;
+            double v = 0;
+            for (int a = 0; a < 3; a++) v += t.endDTrans[e][row * 3 + a] * r[3 * a + axis];
+            return v * g[col % nb];
+        }, nb, (e, pi, g) -> Effect.bspline(time[e][pi], lo, hi, g));
+        p.var = Var.TARGET_DRIFT;
+        p.lo = lo;
+        p.hi = hi;
+        p.basis = nb;
+        p.variable = "time";
+        p.shape = "the measured point moves on the flange with time (a tool that grows as it warms, a holder that creeps)";
+        p.x = time;
+        p.xLabel = "time since the start (s)";
+        p.rf = rf;
+        return p;
     }
 
     /**

@@ -254,6 +254,22 @@ final class Words {
                     + "the turn, a damaged scale); it is modelled as such so compensation can use it, but its cause is unknown: "
                     + "move the joint slowly across that angle in both directions and compare with an independent measure.",
                     e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(e.rangeLo()));
+            case TARGET_DRIFT -> {
+                // the drift's range along each flange axis over the campaign (a B-spline's curve lies within its coefficients)
+                int n = e.basisCount();
+                double[] span = new double[3];
+                for (int a = 0; a < 3; a++) {
+                    double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                    for (int i = 0; i < n; i++) { lo = Math.min(lo, v[a * n + i]); hi = Math.max(hi, v[a * n + i]); }
+                    span[a] = hi - lo;
+                }
+                yield String.format(Locale.ROOT, "The measured point moves on the flange with time, by up to %.4f, %.4f and %.4f mm along "
+                        + "the flange's x, y and z axes over %.0f..%.0f s, and none of the known effects explains it: a tool that grows "
+                        + "and shrinks as a spindle or the tool warms and cools (along its axis, the flange's z), a holder that creeps. "
+                        + "It is modelled as a smooth curve of time in the flange's axes (%d functions each) so the poses are compared "
+                        + "with the point where it was; re-measure one pose every few minutes through a campaign to see it, and warm "
+                        + "the tool up before measuring.", span[0] * 1e3, span[1] * 1e3, span[2] * 1e3, e.rangeLo(), e.rangeHi(), n);
+            }
             case TARGET_STEP -> String.format(Locale.ROOT, "The measured point moved on the flange by %.4f mm (%.4f, %.4f, %.4f mm "
                     + "along the flange's axes) at about %.0f s into the campaign, and none of the known effects explains it (a "
                     + "target knocked in its nest, a holder that slipped); the poses before it are modelled with the point where it "
