@@ -735,6 +735,28 @@ public record Scenario(String name, String family, String robot, Expected expect
                             Math.toRadians(signed(r, 0.01, 0.02)), 200, 2 * Math.PI * r.nextDouble());
                     return w -> add(te).apply(w.withCompliance(m));
                 }, same()));
+        // a play the arm's weight always takes up: no free zone, so no motion's direction shows it
+        c.add(s("outside: joint 2's play taken up by gravity whatever the last motion, masses off 30 %", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+                    var b = new JointError.GravityHeldLostMotion(1, Math.toRadians(uniform(r, 0.02, 0.04)), 0);
+                    return w -> add(b).apply(w.withCompliance(m));
+                }, same()));
+        // a spindle run in blocks of 10-25 minutes with rests as long: the tool grows 100-200 µm along its axis and shrinks back,
+        // measured at 10 µm
+        c.add(s("outside: the tool grows along its axis as its spindle runs and rests", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    List<Double> on = new ArrayList<>(), off = new ArrayList<>();
+                    for (double t = uniform(r, 0, 900); t < 30000; ) {
+                        on.add(t);
+                        t += uniform(r, 600, 1500);
+                        off.add(t);
+                        t += uniform(r, 600, 1500);
+                    }
+                    var sp = new WorldRobot.Spindle(on.stream().mapToDouble(Double::doubleValue).toArray(),
+                            off.stream().mapToDouble(Double::doubleValue).toArray(), uniform(r, 0.1e-3, 0.2e-3), uniform(r, 500, 1200));
+                    return w -> w.withToolBump(WorldRobot.ToolBump.growing(sp));
+                }, p -> p.withSigma(0.01e-3)));
         c.add(s("lost motion j2 held on one flank by gravity + cross-coupling j5<-j4", "pair", "irb2000",
                 Expected.named(claim(LOST_MOTION, 2), claim(CROSS_COUPLING, 5, 4)),
                 (n, r) -> {

@@ -195,9 +195,15 @@ final class Truth {
         }
         if (w.sag() != null)
             root.put("sag", Map.of("size_mm", w.sag().sizeM() * 1e3, "per_kg_mm", w.sag().perKgM() * 1e3, "ref_reach_m", w.sag().refReachM()));
-        if (w.toolBump() != null)
+        if (w.toolBump() != null && Double.isFinite(w.toolBump().atS()))
             root.put("tool_bump", Map.of("at_s", w.toolBump().atS(), "shift_mm", mm(w.toolBump().shiftM()),
                     "turn_deg", Arrays.stream(w.toolBump().turnRad()).map(Math::toDegrees).boxed().toList()));
+        if (w.toolBump() != null && w.toolBump().spindle() != null) {
+            var sp = w.toolBump().spindle();
+            root.put("spindle", Map.of("type", "tool growing along the flange's axis as its spindle runs (outside)",
+                    "on_s", Arrays.stream(sp.onS()).boxed().toList(), "off_s", Arrays.stream(sp.offS()).boxed().toList(),
+                    "peak_mm", sp.peakM() * 1e3, "tau_s", sp.tauS()));
+        }
         try {
             return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(root);
         } catch (JsonProcessingException e) {

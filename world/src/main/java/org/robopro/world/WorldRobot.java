@@ -294,10 +294,28 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         }
     }
 
-    public record ToolBump(double atS, double[] shiftM, double[] turnRad) {
+    /**
+     * The measured target moving on the flange during the campaign: knocked to another place at
+     * {@code atS} (shift and turn, flange frame), and, where {@code spindle} is given, pushed along the
+     * flange's axis by a tool that grows as its spindle runs and shrinks as it rests.
+     */
+    public record ToolBump(double atS, double[] shiftM, double[] turnRad, Spindle spindle) {
         public ToolBump {
             shiftM = shiftM.clone();
             turnRad = turnRad.clone();
+        }
+
+        /** A knock alone. */
+        public ToolBump(double atS, double[] shiftM, double[] turnRad) { this(atS, shiftM, turnRad, null); }
+
+        /** A spindle's growth alone (no knock). */
+        public static ToolBump growing(Spindle spindle) { return new ToolBump(Double.POSITIVE_INFINITY, new double[3], new double[3], spindle); }
+
+        /** The flange-to-target transform at {@code timeS} (NaN: the campaign's end state is not known, the tool cold and unknocked). */
+        Rigid at(Rigid tool, double timeS) {
+            Rigid t = Double.isFinite(timeS) && timeS >= atS ? apply(tool) : tool;
+            if (spindle == null || !Double.isFinite(timeS)) return t;
+            return Rigid.translation(0, 0, spindle.growthM(timeS)).times(t);
         }
 
         @Override public double[] shiftM() { return shiftM.clone(); }
@@ -309,6 +327,37 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             Rigid turn = a > 0 ? Rigid.rotation(Rigid.unit(turnRad), a, new double[3]) : Rigid.IDENTITY;
             return Rigid.translation(shiftM[0], shiftM[1], shiftM[2]).times(tool).times(turn);
         }
+    }
+
+    /**
+     * A spindle on the tool that runs from each {@code onS[i]} to {@code offS[i]} (s, in order): the
+     * tool's length grows toward {@code peakM} while it runs and shrinks back while it rests, a body
+     * heated at a constant rate and cooled to the air (Newton's law of cooling, lumped capacitance:
+     * F. P. Incropera, D. P. DeWitt, "Fundamentals of Heat and Mass Transfer", §5.1–5.2), with time
+     * constant {@code tauS}. A steel tool 200 mm long grows 2.3 µm per kelvin (11.5·10⁻⁶/K), so tens
+     * of kelvin of spindle heat are tens of micrometres. The file records no spindle.
+     */
+    public record Spindle(double[] onS, double[] offS, double peakM, double tauS) {
+        public Spindle {
+            onS = onS.clone();
+            offS = offS.clone();
+        }
+
+        /** The tool's growth at {@code timeS}, m: the exact first-order response to the on-off schedule from cold at 0 s. */
+        public double growthM(double timeS) {
+            double g = 0, t = 0;
+            for (int i = 0; i < onS.length && t < timeS; i++) {
+                double rest = Math.min(onS[i], timeS) - t;
+                if (rest > 0) { g *= Math.exp(-rest / tauS); t += rest; }
+                double run = Math.min(offS[i], timeS) - t;
+                if (run > 0) { g = peakM + (g - peakM) * Math.exp(-run / tauS); t += run; }
+            }
+            if (timeS > t) g *= Math.exp(-(timeS - t) / tauS);
+            return g;
+        }
+
+        @Override public double[] onS() { return onS.clone(); }
+        @Override public double[] offS() { return offS.clone(); }
     }
 
     /**
@@ -684,7 +733,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             double[] dTheta = times(coupling, dq);
             for (int i = 0; i < n; i++) theta[i] += dTheta[i];
         }
-        Rigid onFlange = toolBump != null && Double.isFinite(timeS) && timeS >= toolBump.atS() ? toolBump.apply(flangeToTool) : flangeToTool;
+        Rigid onFlange = toolBump != null ? toolBump.at(flangeToTool, timeS) : flangeToTool;
         if (thermal != null && thermal.holderAlpha != 0 && Double.isFinite(tempC))
             onFlange = new Rigid(onFlange.r(), Rigid.scale(onFlange.p(), 1 + thermal.holderAlpha * (tempC - thermal.refC)));
         Rigid flangeNow;

@@ -3366,6 +3366,8 @@ public final class Diagnoser {
             for (boolean own : new boolean[] {true, false}) {
                 for (Effect f : variants) {
                     if ((f.kind() == e.kind()) != own) continue;
+                    // another shape the model holds already (a drift of the target beside one of its steps) is not made twice
+                    if (!own && selected.stream().anyMatch(x -> x.kind() == f.kind() && x.joint() == f.joint())) continue;
                     double pf = at.pressReplacing(k, f, w.conditions);
                     if (pf < bestPress) { bestPress = pf; best = f; }
                 }
@@ -3950,6 +3952,14 @@ public final class Diagnoser {
             for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentScale(e.along(), e.instrumentPose(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.BASE_CREEP) {
+            // the least move that slips the base (the bolts' hold against the reaction of the move)
+            List<Measurement> all = new ArrayList<>(w.rows);
+            if (w.validate != null) all.addAll(w.validate.rows());
+            double[][] moves = Directions.movesInTime(all, 0);
+            if (moves != null)
+                for (double deg : CREEP_MOVES_DEG)
+                    if (Math.toRadians(deg) != e.creepMoveRad()) out.add(Effect.baseCreep(moves, Math.toRadians(deg)));
         } else if (e.kind() == Effect.Kind.TARGET_DRIFT) {
             for (int nb : Effect.DRIFT_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
@@ -3964,7 +3974,7 @@ public final class Diagnoser {
                 if (f.sideNm() != e.sideNm() || f.sideWidthNm() != e.sideWidthNm()) out.add(f);
         } else if (e.kind() == Effect.Kind.SMOOTH) {
             // a curve of the joint's angle may stand for its play taken up by gravity (the torque's sign follows the angle closely)
-            if (e.angleJoint() == e.joint()) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, new double[] {0}, PLAY_SIDE_WIDTHS));
+            if (e.angleJoint() == e.joint()) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, PLAY_SIDE_SHIFTS, PLAY_SIDE_WIDTHS));
             for (int nb : Effect.SMOOTH_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.SMOOTH_BASIS, rows.size()))
                     out.add(e.followsModelAngle() ? Effect.smoothFollowingModelAngle(e.joint(), e.angleJoint(), w.model, e.rangeLo(), e.rangeHi(), nb)
@@ -3972,7 +3982,14 @@ public final class Diagnoser {
         } else if (e.stepInTime() || e.kind() == Effect.Kind.ANGLE_STEP && !e.isWindow()) {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
             // a step of the reading at one angle may stand for a play taken up by gravity, whose side changes with the torque
-            if (angle) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, new double[] {0}, PLAY_SIDE_WIDTHS));
+            if (angle) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, PLAY_SIDE_SHIFTS, PLAY_SIDE_WIDTHS));
+            // a move of the target on the flange at one time may stand for a drift of it (a tool that grows and shrinks)
+            if (e.kind() == Effect.Kind.TARGET_STEP) {
+                double[] span = timeSpan(w.conditions);
+                if (span != null)
+                    for (int nb : Effect.DRIFT_RESOLUTIONS)
+                        if (Effect.supported(nb, Effect.POINT_BASIS, rows.size())) out.add(Effect.targetDrift(w.model, span[0], span[1], nb));
+            }
             Locator.Var var = angle ? Locator.Var.ANGLE_STEP : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP
                     : e.kind() == Effect.Kind.BASE_STEP ? Locator.Var.BASE_STEP : Locator.Var.TIME_STEP;
             double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
@@ -4018,10 +4035,9 @@ public final class Diagnoser {
      */
     private static Fit driftForSteps(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps) {
         List<Effect> moves = selected.stream().filter(e -> e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.TARGET_DRIFT).toList();
-        if (moves.size() < 2) return fit;
-        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-        for (PoseConditions c : w.conditions) if (Double.isFinite(c.timeS())) { lo = Math.min(lo, c.timeS()); hi = Math.max(hi, c.timeS()); }
-        if (!(hi > lo)) return fit;
+        double[] span = timeSpan(w.conditions);
+        if (moves.size() < 2 || span == null) return fit;
+        double lo = span[0], hi = span[1];
         Selection saved = Selection.of(selected, absorbedCols, steps);
         double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
         Fit best = null;
@@ -4048,6 +4064,16 @@ public final class Diagnoser {
         for (int k = selected.size() - 1; k >= 0; k--)
             if (moves.contains(selected.get(k)) && selected.get(k) != moves.get(0)) f = dropAndRefit(w, f, selected, absorbedCols, steps, k);
         return replaceEffect(w, f, selected, absorbedCols, steps, selected.indexOf(moves.get(0)), drift, true);
+    }
+
+    /** The least moves of joint 1 (deg) tried for a base creep once it is found. */
+    static final double[] CREEP_MOVES_DEG = {5, 10, 15, 20, 30, 45, 60, 90};
+
+    /** The first and last time (s) of the poses' conditions, or null unless they span some time. */
+    static double[] timeSpan(List<PoseConditions> conditions) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (PoseConditions c : conditions) if (Double.isFinite(c.timeS())) { lo = Math.min(lo, c.timeS()); hi = Math.max(hi, c.timeS()); }
+        return hi > lo ? new double[] {lo, hi} : null;
     }
 
     /** Where a gravity play's side changes, tried when it is refined: a share of the largest torque on its drive either side of zero. */
@@ -4268,6 +4294,11 @@ public final class Diagnoser {
                 }
                 // the target moved on the flange: at one time, or drifting
                 case TARGET_STEP, TARGET_DRIFT -> { if (k == Effect.Kind.TARGET_STEP || k == Effect.Kind.TARGET_DRIFT) return e; }
+                // the base turning: in steps with joint 1's moves, at one time, with time; or joint 1's zero moving with time
+                case BASE_CREEP -> {
+                    if (k == Effect.Kind.BASE_CREEP || k == Effect.Kind.BASE_STEP || k == Effect.Kind.BASE_TURN
+                            || (k == Effect.Kind.ZERO_DRIFT || k == Effect.Kind.ZERO_STEP) && e.joint() == 0) return e;
+                }
                 // the instrument's pose changed: a drift of it, or a turn of the base, with time follows part of a step
                 case BASE_STEP -> { if (k == Effect.Kind.BASE_STEP || k == Effect.Kind.DRIFT || k == Effect.Kind.BASE_TURN) return e; }
                 case RANGE_STEP -> { if (k == Effect.Kind.DRIFT || k == Effect.Kind.INSTRUMENT_SCALE) return e; }
@@ -4485,6 +4516,8 @@ public final class Diagnoser {
             case RANGE_STEP -> String.format(Locale.ROOT, "check the instrument's log for a broken beam near %.0f s (the arm or "
                     + "a person crossing it); keep the line of sight clear, or measure a fixed reference point after every break "
                     + "to carry the distance over.", f.probe.lo);
+            case BASE_CREEP -> "check the base's anchor bolts and their torque, and measure a fixed reference point on the base and one "
+                    + "on the floor before and after a few fast moves of joint 1 in each direction: a base that slips turns with them.";
             case TARGET_DRIFT -> "re-measure one pose every few minutes through the campaign, with the tool (a spindle) run as in "
                     + "production and then at rest: a tool that grows as it warms moves the point along its axis, a holder that creeps "
                     + "does not come back.";
@@ -4799,8 +4832,16 @@ public final class Diagnoser {
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
                 case DIRECTION, SETTLING -> { if (f.probe.settling != null) out.add(f.probe.settling); }
-                case GRAVITY_PLAY -> out.add(f.probe.play);
+                case GRAVITY_PLAY -> {
+                    // the torque's sign follows the joint's angle closely: the structure is a curve of that angle too, the rival a
+                    // family of the joint (its spring under the same torque) must beat as before
+                    out.add(f.probe.play);
+                    int j = f.probe.joint;
+                    double lo = rows.stream().mapToDouble(r -> r.q(j)).min().orElse(0), hi = rows.stream().mapToDouble(r -> r.q(j)).max().orElse(0);
+                    if (hi > lo) out.add(Effect.smooth(j, lo, hi, Effect.SMOOTH_BASIS));
+                }
                 case TARGET_DRIFT -> out.add(Effect.targetDrift(model, f.probe.lo, f.probe.hi, f.probe.basis));
+                case BASE_CREEP -> out.add(f.probe.creep);
                 case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
@@ -6366,6 +6407,11 @@ public final class Diagnoser {
                 c.plausible = d < MAX_TARGET_STEP_M && turn < MAX_BASE_TURN_RAD;
                 c.plausibility = String.format(Locale.ROOT, "the move %.4f mm < %.0f mm, the turn %.1f µrad < %.0f µrad", d * 1e3,
                         MAX_TARGET_STEP_M * 1e3, turn * 1e6, MAX_BASE_TURN_RAD * 1e6);
+            }
+            case BASE_CREEP -> {
+                c.plausible = Math.abs(v[0]) < MAX_BASE_TURN_RAD && Math.hypot(v[1], v[2]) < MAX_TARGET_STEP_M;
+                c.plausibility = String.format(Locale.ROOT, "the turn per slip %.1f µrad < %.0f µrad, the shift %.4f mm < %.0f mm",
+                        Math.abs(v[0]) * 1e6, MAX_BASE_TURN_RAD * 1e6, Math.hypot(v[1], v[2]) * 1e3, MAX_TARGET_STEP_M * 1e3);
             }
             case TARGET_DRIFT -> {
                 // a B-spline's curve lies within its coefficients' range: the largest change along a flange axis bounds the drift

@@ -327,6 +327,23 @@ public final class Directions {
         public boolean isEmpty() { return byRow.isEmpty(); }
     }
 
+    /**
+     * Joint {@code j}'s moves in measuring order: the time of each pose (s) and the signed move of the
+     * joint from the pose before (rad; the first from where the first pose stands, none), over the
+     * {@code rows} given (training and validation of one campaign), by time. Null unless every row
+     * has a time and there are at least two.
+     */
+    public static double[][] movesInTime(List<Measurement> rows, int j) {
+        if (rows.size() < 2 || !rows.stream().allMatch(m -> Double.isFinite(m.timeS()))) return null;
+        List<Measurement> inOrder = ordered(rows);
+        double[] t = new double[inOrder.size()], d = new double[inOrder.size()];
+        for (int i = 0; i < t.length; i++) {
+            t[i] = inOrder.get(i).timeS();
+            d[i] = i == 0 ? 0 : inOrder.get(i).q(j) - inOrder.get(i - 1).q(j);
+        }
+        return new double[][] {t, d};
+    }
+
     private static MeasurementSet apply(MeasurementSet s, Map<String, int[]> dirs) {
         return s.map(m -> m.withConditions(m.directions() != null ? m.directions() : dirs.get(m.poseId()), m.timeS(), m.tempC(),
                 m.payloadKg()));

@@ -76,6 +76,8 @@ public final class Effect {
         SETTLING("joint-settling", "A joint's deflection that follows the move made just before the reading (the arm read before "
                 + "it settled: a residual vibration after the stop, a servo's following error), of no known family"),
         ANGLE_STEP("joint-angle-step", "Joint reading that jumps where the joint passes one angle, of no known family"),
+        BASE_CREEP("base-creep", "The robot's base turning on its floor a little with each large move of joint 1 (its anchor "
+                + "bolts slipping under the move's reaction), of no known family"),
         TARGET_DRIFT("target-drift", "Measured point that moves on the flange with time (a tool or holder that grows or creeps as a "
                 + "spindle or the tool warms), of no known family"),
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
@@ -216,6 +218,7 @@ public final class Effect {
     private double tiltAzimuth, tiltHold;    // base tilt: the azimuth of its axis (rad; NaN: the moment's own), the moment held before it tilts (N·m; −∞: none)
     private int tiltEdges = 1;               // base tilt: 1, one edge; 4, a square foot's edges at the axis azimuth + k·90°
     private double loadRefNm = Double.NaN;   // load-periodic: the torque its load columns are scaled by (N·m)
+    private double[] creepTimes, creepSlips;   // base creep: each move's time (s) and its slip's sign (0: a move too small)
     private double sideNm, sideWidthNm;      // gravity play: the torque where the side changes, the hand-over's half-width (0: sharp), N·m
     private boolean loadMagnitude;           // load-periodic: the size follows |τ| (true) or τ with its sign
 
@@ -822,6 +825,47 @@ public final class Effect {
         if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
         return new Effect(Kind.TARGET_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, model, null, 1);
     }
+
+    /** The number of base creep's columns: a turn about the base's z axis and a shift in x and y per slip. */
+    public static final int CREEP_TERMS = 3;
+
+    /**
+     * The robot's base creeping on its floor: each move of joint 1 larger than {@code minMoveRad}
+     * turns the base a little about a vertical axis, in the move's direction (the reaction of the
+     * arm's acceleration on bolts that slip), and the turns add up over the campaign. Δp = n(t)·(ψ ẑ
+     * × p + (dx, dy, 0)), n(t) the signed count of such moves up to time t, ψ the turn per slip and
+     * (dx, dy) the shift of a pivot off joint 1's axis; the measured frame turns by n(t)·ψ about ẑ.
+     * {@code moves}: {@link Directions#movesInTime} of joint 1. At an unknown time, where the
+     * campaign ended.
+     */
+    public static Effect baseCreep(double[][] moves, double minMoveRad) {
+        if (moves == null || !(minMoveRad > 0)) throw new IllegalArgumentException("base creep needs joint 1's moves in time and a least move");
+        Effect e = new Effect(Kind.BASE_CREEP, -1, -1, null, false, Double.NaN, minMoveRad, null, Double.NaN, Double.NaN, null, null, 1);
+        e.creepTimes = moves[0].clone();
+        e.creepSlips = new double[moves[1].length];
+        for (int i = 0; i < moves[1].length; i++) e.creepSlips[i] = Math.abs(moves[1][i]) > minMoveRad ? Math.signum(moves[1][i]) : 0;
+        return e;
+    }
+
+    /**
+     * A base creep read back from a robot file: where the campaign ended ({@code count} slips), which
+     * is all a program run after it needs.
+     */
+    static Effect baseCreepAtEnd(double minMoveRad, double count) {
+        Effect e = baseCreep(new double[][] {{Double.NEGATIVE_INFINITY}, {0}}, minMoveRad);
+        e.creepSlips[0] = count;
+        return e;
+    }
+
+    /** Base creep's signed count of slips up to time {@code timeS} (all of them at an unknown time). */
+    double creepCount(double timeS) {
+        double n = 0;
+        for (int i = 0; i < creepTimes.length; i++) if (!(creepTimes[i] > timeS)) n += creepSlips[i];
+        return n;
+    }
+
+    /** Base creep's least move of joint 1 that slips, rad. */
+    public double creepMoveRad() { return tauS; }
 
     /** Basis functions per axis of a target's drift on the flange with time ({@link #targetDrift}), tried coarsest first. */
     public static final int[] DRIFT_RESOLUTIONS = {POINT_BASIS, 7, 13, 25};
@@ -1623,7 +1667,7 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
@@ -1826,7 +1870,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
@@ -1881,6 +1925,7 @@ public final class Effect {
             case BASE_TURN -> 3 * nBasis + 3;
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
+            case BASE_CREEP -> CREEP_TERMS;
             case BASE_STEP -> BASE_STEP_TERMS;
             default -> 1;
         };
@@ -1931,6 +1976,7 @@ public final class Effect {
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case SETTLING -> out.add("per_speed");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
+            case BASE_CREEP -> { out.add("turn"); out.add("dx"); out.add("dy"); }
             case BASE_STEP -> out.addAll(List.of("dx", "dy", "dz", "wx", "wy", "wz"));
             case RANGE_STEP -> out.add("d");
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); out.add("slide"); }
@@ -1994,7 +2040,7 @@ public final class Effect {
             case PERIODIC, LOAD_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
             case POINT_SMOOTH, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
-            case BASE_TURN -> "rad";
+            case BASE_TURN, BASE_CREEP -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
             case BASE_TILT -> "rad/(N·m)";
@@ -2015,6 +2061,7 @@ public final class Effect {
         if (stiffens) return List.of(u, "rad/(N·m)^3");
         if (kind == Kind.BASE_TILT) return List.of(u, "m/(N·m)", "m/(N·m)"); // the lift and the slide: the tilt times a distance
         if (kind == Kind.BASE_STEP) return List.of(u, u, u, "rad", "rad", "rad");
+        if (kind == Kind.BASE_CREEP) return List.of("rad", "m", "m");
         if (kind == Kind.TOOL_PLAY && playTurns) { // the point's shifts, then the flange's tips
             List<String> out = new ArrayList<>(java.util.Collections.nCopies(PLAY_SHIFTS, u));
             out.addAll(java.util.Collections.nCopies(PLAY_TIPS, "rad"));
@@ -2074,6 +2121,7 @@ public final class Effect {
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP, BASE_STEP, RANGE_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case BASE_CREEP -> kind.json + String.format(Locale.ROOT, " (moves of joint 1 over %.0f deg)", Math.toDegrees(tauS));
             case TARGET_DRIFT -> kind.json + " (time" + (nBasis == DRIFT_RESOLUTIONS[0] ? "" : ", " + nBasis + " functions") + ")";
             case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
                     : squareFoot() ? String.format(Locale.ROOT, " (square foot, edges at %.0f deg, above %.0f N·m)",
@@ -2218,7 +2266,7 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
@@ -2287,6 +2335,13 @@ public final class Effect {
                     double ra = instrument.rot(0, a) * pi[0] + instrument.rot(1, a) * pi[1] + instrument.rot(2, a) * pi[2];
                     for (int i = 0; i < nBasis; i++) g3[a * k + i] = ra * b[i];
                 }
+            }
+            case BASE_CREEP -> {
+                double n = creepCount(Double.isFinite(c.timeS()) ? c.timeS() : Double.POSITIVE_INFINITY);
+                g3[0] = -n * pointBase[1];
+                g3[k] = n * pointBase[0];
+                g3[1] = n;
+                g3[k + 2] = n;
             }
             case TARGET_DRIFT -> {
                 // d(t) in the flange's axes, turned into the base's
@@ -2443,6 +2498,7 @@ public final class Effect {
         if (kind == Kind.LINK_TWIST) { linkTwistColumns(q, c, null, null, g3); return; }
         if (kind == Kind.TOOL_PLAY) { if (playTurns) toolPlayRegressor(model.flange(q), down, true, g3, size(), PLAY_SHIFTS); return; }
         if (kind == Kind.BASE_STEP) { if (c.timeS() <= tauS) baseStepRegressor(null, null, g3); return; }
+        if (kind == Kind.BASE_CREEP) { g3[2 * size()] = creepCount(Double.isFinite(c.timeS()) ? c.timeS() : Double.POSITIVE_INFINITY); return; }
         if (kind == Kind.BASE_TURN) {
             double[] b = readingBasis(c);
             if (b == null) return;
@@ -2626,6 +2682,7 @@ public final class Effect {
             case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN, TARGET_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
             case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP, BASE_STEP -> p.put("time_s_step", tauS);
+            case BASE_CREEP -> { p.put("creep_move_rad", tauS); p.put("creep_count_end", creepCount(Double.POSITIVE_INFINITY)); }
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
             case AXIS_WOBBLE, AXIAL_RUNOUT -> { }
             case TOOL_SAG, TOOL_PLAY -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
@@ -2694,7 +2751,7 @@ public final class Effect {
         if (kind == null) throw d.error(file, "effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT,
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT,
                  TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
@@ -2805,6 +2862,11 @@ public final class Effect {
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
                     require(d, "q_step_back", file)) : angleStep(js.get(0) - 1, require(d, "q_step", file));
             case TARGET_STEP -> targetStep(model, require(d, "time_s_step", file));
+            case BASE_CREEP -> {
+                double move = require(d, "creep_move_rad", file), n = require(d, "creep_count_end", file);
+                if (!(move > 0)) throw d.error(file, "parameters_si.creep_move_rad", "must be > 0, got " + move);
+                yield baseCreepAtEnd(move, n);
+            }
             case TARGET_DRIFT -> {
                 if (along != Along.TIME) throw d.error(file, "parameters_si", "needs time_s_min and time_s_max");
                 int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("dx\\d+")).count();

@@ -41,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -110,6 +110,7 @@ final class Locator {
         Effect bend;                             // LINK_BEND, LINK_TWIST: the link's sag or twist
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
         Effect play;                             // GRAVITY_PLAY: the joint's play taken up by gravity
+        Effect creep;                            // BASE_CREEP: the base's turns with joint 1's large moves
         String xLabel;
     }
 
@@ -292,6 +293,7 @@ final class Locator {
             if (steps)
                 for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) rf[e][i] = w.model.flange(t.endRows.get(e).get(i).q()).rotationRowMajor();
             if (steps) out.add(targetDrift(t, time, rf));
+            if (steps && ends == 1) out.addAll(baseCreeps(t));
             for (double tau : stepPlaces(time[0], STEP_PLACES)) {
                 if (steps) out.add(targetStep(t, tau, time, rf));
                 if (steps && ends == 1) out.add(baseStep(t, tau, time));
@@ -983,6 +985,56 @@ final class Locator {
         tp.xLabel = "time since the start (s)";
         tp.rf = rf;
         return tp;
+    }
+
+    /** The least moves of joint 1 (deg) whose slips of the base are probed ({@link Effect#baseCreep}). */
+    static final double[] CREEP_MOVES_DEG = {15, 30, 60};
+
+    /**
+     * The robot's base turning a little with each move of joint 1 larger than each of {@link
+     * #CREEP_MOVES_DEG} ({@link Effect#baseCreep}), three columns; joint 1's moves from the training
+     * and validation poses in time order. None without times, or where no move is that large.
+     */
+    static List<Probe> baseCreeps(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        List<Measurement> all = new ArrayList<>(t.w.rows);
+        if (t.w.validate != null) all.addAll(t.w.validate.rows());
+        double[][] moves = t.dof > 0 && !t.w.model.isPrismatic(0) ? Directions.movesInTime(all, 0) : null;
+        if (moves == null) return out;
+        int k = Effect.CREEP_TERMS, poses = t.m / t.rpp;
+        double[][] time = column(t, c -> c.timeS());
+        for (double deg : CREEP_MOVES_DEG) {
+            Effect creep = Effect.baseCreep(moves, Math.toRadians(deg));
+            double[] s = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
+            double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+            boolean any = false;
+            for (int i = 0; i < poses; i++) {
+                PoseConditions c = t.endConditions.get(0).get(i);
+                for (int a = 0; a < t.rpp; a++) {
+                    int row = i * t.rpp + a;
+                    boolean turn = a >= t.posRows;
+                    double[] q = t.endRows.get(0).get(i).q();
+                    if (turn) creep.rotationRegressor(q, c, w3);
+                    else creep.positionRegressor(q, c, t.pointsBase[i][t.pointOfRow(a)], g3);
+                    double[] d = turn ? dr : dt, g = turn ? w3 : g3;
+                    for (int col = 0; col < k; col++) {
+                        s[row * k + col] = d[row * 3] * g[col] + d[row * 3 + 1] * g[k + col] + d[row * 3 + 2] * g[2 * k + col];
+                        any |= s[row * k + col] != 0;
+                    }
+                }
+            }
+            if (!any) continue;
+            Probe p = finish(t, s, k);
+            p.var = Var.BASE_CREEP;
+            p.creep = creep;
+            p.variable = "joint 1's moves over the campaign";
+            p.shape = String.format(Locale.ROOT, "the robot's base turns a little with each move of joint 1 over %.0f deg, adding up (its "
+                    + "bolts slip)", deg);
+            p.x = time;
+            p.xLabel = "time since the start (s)";
+            out.add(p);
+        }
+        return out;
     }
 
     /**

@@ -102,7 +102,7 @@ final class Plots {
                 case TEMPERATURE -> "temperature (°C)";
                 case PAYLOAD_REACH -> "reach of the measured point (m), times the payload";
             };
-            case ZERO_STEP, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP -> "time since start (s)";
+            case ZERO_STEP, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> "time since start (s)";
             case BASE_TILT -> "moment of the arm's weight about the base's tipping axis (N·m)";
             case AXIS_WOBBLE, AXIAL_RUNOUT -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case TOOL_SAG, TOOL_PLAY -> "angle of the flange's axis from straight down (deg)";
@@ -135,7 +135,7 @@ final class Plots {
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
             case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
-            case ZERO_STEP, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP -> c.timeS();
+            case ZERO_STEP, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> c.timeS();
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
             case ANGLE_STEP, AXIS_WOBBLE, AXIAL_RUNOUT -> Math.toDegrees(row.q(e.joint()));
@@ -179,7 +179,7 @@ final class Plots {
             case LOAD_PERIODIC, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
-            case TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP -> Double.NaN;
+            case TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> Double.NaN;
             case ZERO_DRIFT -> {
                 double[] g = new double[e.basisCount()];
                 Effect.bspline(x, e.rangeLo(), e.rangeHi(), g);

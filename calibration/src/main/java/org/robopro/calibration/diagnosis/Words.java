@@ -254,6 +254,13 @@ final class Words {
                     + "the turn, a damaged scale); it is modelled as such so compensation can use it, but its cause is unknown: "
                     + "move the joint slowly across that angle in both directions and compare with an independent measure.",
                     e.joint() + 1, Math.toDegrees(v[0]), Math.toDegrees(e.rangeLo()));
+            case BASE_CREEP -> String.format(Locale.ROOT, "The robot's base turns on its floor a little with each move of joint 1 over "
+                    + "%.0f deg, in the move's direction: %.1f ± %.1f µrad per move (and %.4f, %.4f mm across, a pivot off joint 1's axis), "
+                    + "adding up over the campaign, and none of the known effects explains it. Anchor bolts that slip under the reaction "
+                    + "of the arm's acceleration do so. It is modelled as such for these poses; a program run later meets the base "
+                    + "where the campaign left it, and every large move turns it further. Check the base's bolts and their torque, and "
+                    + "measure a fixed reference point on the base or the floor between moves.", Math.toDegrees(e.creepMoveRad()),
+                    v[0] * 1e6, s[0] * 1e6, v[1] * 1e3, v[2] * 1e3);
             case TARGET_DRIFT -> {
                 // the drift's range along each flange axis over the campaign (a B-spline's curve lies within its coefficients)
                 int n = e.basisCount();

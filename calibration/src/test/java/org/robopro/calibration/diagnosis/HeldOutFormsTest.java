@@ -343,6 +343,61 @@ class HeldOutFormsTest {
     }
 
     /**
+     * A play of joint 2 that the arm's weight always takes up (the world's lost motion held by
+     * gravity with no free zone, its own masses 30 % off the robot file's): no motion's direction
+     * shows it, so nothing is named; it is modelled as a play taken up by gravity, of the world's
+     * width to 10 %, and on the side the torque pushes the output to (the world's flank: the output
+     * ahead of the motor where the torque is positive, Nordin &amp; Gutman 2002), so the validation
+     * error comes within 1.15 x the floor.
+     */
+    @Test
+    void playTakenUpByGravity_isLocatedWithTheTorquesSide() {
+        var n = RobotLibrary.shipped("irb2000");
+        double width = Math.toRadians(0.03);
+        for (long seed : new long[] {1, 2}) {
+            Scenario s = scenario("gravity play", "irb2000", Expected.outside(), w -> {
+                var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, new java.util.Random(seed));
+                return withErrors(List.of(new JointError.GravityHeldLostMotion(1, width, 0))).apply(w.withCompliance(m));
+            }, p -> p);
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(n, c.train(), c.validation());
+            System.out.printf("gravity play seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label() + " " + java.util.Arrays.toString(f.values())).toList());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            Diagnosis.Finding play = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.GRAVITY_PLAY).findFirst()
+                    .orElseThrow(() -> new AssertionError("seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList()));
+            assertEquals(width, play.values()[0], 0.1 * width, "seed " + seed + ": the play, with the torque's side");
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * A tool that grows along its axis as its spindle runs in blocks and rests between them (the
+     * world's first-order heating, 0.15 mm when warmed through, never recorded in the file): the
+     * measured point drifts on the flange with time. Nothing is named; a drift of the target on the
+     * flange with time models it: the validation error falls below 0.6 x the geometric fit's and
+     * within 1.2 x the floor (a spline of the time follows a growth that turns every 20 minutes only
+     * so closely).
+     */
+    @Test
+    void toolGrowingWithItsSpindle_isATargetDrift() {
+        var sp = new WorldRobot.Spindle(new double[] {300, 2700, 5100, 7500}, new double[] {1500, 3900, 6300, 8700}, 0.15e-3, 800);
+        for (long seed : new long[] {1, 2}) {
+            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("spindle", "irb2000", Expected.outside(),
+                    w -> w.withToolBump(WorldRobot.ToolBump.growing(sp)), p -> p.withSigma(0.01e-3)).trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+            System.out.printf("spindle seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.TARGET_DRIFT),
+                    "seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
+            assertTrue(d.geometricValidateRmsM() > 1.4 * c.floorM(), "the growth matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 0.6 * d.geometricValidateRmsM() && d.finalValidateRmsM() < 1.2 * c.floorM(),
+                    "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
      * Two validation readings gone grossly wrong (a beam broken and caught again on the wrong
      * reflector, 2 mm) beside a backlash of joint 2: they are reported as outliers, said with their
      * miss, and left out of the validation error and of every decision taken on the validation
