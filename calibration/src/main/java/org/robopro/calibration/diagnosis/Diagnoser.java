@@ -3983,13 +3983,6 @@ public final class Diagnoser {
             boolean angle = e.kind() == Effect.Kind.ANGLE_STEP;
             // a step of the reading at one angle may stand for a play taken up by gravity, whose side changes with the torque
             if (angle) out.addAll(gravityPlays(e.joint(), w.gravity, rows, w.model, PLAY_SIDE_SHIFTS, PLAY_SIDE_WIDTHS));
-            // a move of the target on the flange at one time may stand for a drift of it (a tool that grows and shrinks)
-            if (e.kind() == Effect.Kind.TARGET_STEP) {
-                double[] span = timeSpan(w.conditions);
-                if (span != null)
-                    for (int nb : Effect.DRIFT_RESOLUTIONS)
-                        if (Effect.supported(nb, Effect.POINT_BASIS, rows.size())) out.add(Effect.targetDrift(w.model, span[0], span[1], nb));
-            }
             Locator.Var var = angle ? Locator.Var.ANGLE_STEP : e.kind() == Effect.Kind.TARGET_STEP ? Locator.Var.TARGET_STEP
                     : e.kind() == Effect.Kind.BASE_STEP ? Locator.Var.BASE_STEP : Locator.Var.TIME_STEP;
             double[] t = angle ? rows.stream().mapToDouble(r -> r.q(e.joint())).toArray()
@@ -4026,44 +4019,46 @@ public final class Diagnoser {
     }
 
     /**
-     * Several moves of the measured point on the flange at different times (target steps, with a
-     * drift of it or not) are one drift of it with time when a smooth curve of the time predicts
-     * left-out poses better than they do together: a tool that grows and shrinks as its spindle runs
-     * and rests moves the point back and forth, which steps follow one at a time. Each resolution of
+     * Moves of the measured point on the flange at one time or several (target steps, with a drift of
+     * it or not) are one drift of it with time when a smooth curve of the time predicts left-out
+     * poses better than they do together: a tool that grows and shrinks as its spindle runs and rests
+     * moves the point back and forth, which steps follow one at a time. Each resolution of
      * {@link Effect#DRIFT_RESOLUTIONS} the poses support is tried in their place; the best stays when
      * its leave-one-pose-out error is lower and it predicts the validation poses no worse.
      */
     private static Fit driftForSteps(Work w, Fit fit, List<Effect> selected, Map<Effect, boolean[]> absorbedCols, List<Step> steps) {
         List<Effect> moves = selected.stream().filter(e -> e.kind() == Effect.Kind.TARGET_STEP || e.kind() == Effect.Kind.TARGET_DRIFT).toList();
         double[] span = timeSpan(w.conditions);
-        if (moves.size() < 2 || span == null) return fit;
-        double lo = span[0], hi = span[1];
+        if (span == null || moves.stream().noneMatch(e -> e.kind() == Effect.Kind.TARGET_STEP)) return fit;
         Selection saved = Selection.of(selected, absorbedCols, steps);
         double own = w.tester(fit).pressFull(), ownVal = w.validateError(fit);
-        Fit best = null;
-        int bestNb = 0;
+        // the model without the moves, and each resolution's leave-one-pose-out error beside it
+        Fit base = fit;
+        for (int k = selected.size() - 1; k >= 0; k--)
+            if (moves.contains(selected.get(k)) && selected.get(k) != moves.get(0)) base = dropAndRefit(w, base, selected, absorbedCols, steps, k);
+        base = dropAndRefit(w, base, selected, absorbedCols, steps, selected.indexOf(moves.get(0)));
+        Tester bt = w.tester(base);
+        Effect best = null;
         double bestPress = own;
         for (int nb : Effect.DRIFT_RESOLUTIONS) {
             if (!Effect.supported(nb, Effect.POINT_BASIS, w.rows.size())) continue;
-            Effect drift = Effect.targetDrift(w.model, lo, hi, nb);
-            Fit f = fit;
-            for (int k = selected.size() - 1; k >= 0; k--)
-                if (moves.contains(selected.get(k)) && selected.get(k) != moves.get(0)) f = dropAndRefit(w, f, selected, absorbedCols, steps, k);
-            f = replaceEffect(w, f, selected, absorbedCols, steps, selected.indexOf(moves.get(0)), drift, true);
-            double pf = w.tester(f).pressFull();
-            boolean valWorse = w.hasValidation() && !(w.validateError(f) < ownVal * (1 + ALIAS_MARGIN));
-            LOG.debug("{} in place of {}: PRESS {} against {}, validation {} against {}", drift.label(), moves.stream().map(Effect::label).toList(),
-                    pf, own, w.validateError(f), ownVal);
-            if (selected.contains(drift) && pf < bestPress && !valWorse) { best = f; bestNb = nb; bestPress = pf; }
-            saved.restore(selected, absorbedCols, steps);
+            Effect drift = Effect.targetDrift(w.model, span[0], span[1], nb);
+            Candidate c = bt.test(drift, w.conditions);
+            LOG.debug("{} in place of {}: PRESS {} against {}", drift.label(), moves.stream().map(Effect::label).toList(), c.pressAfter, own);
+            if (c.keptColumns > 0 && c.pressAfter < bestPress) { bestPress = c.pressAfter; best = drift; }
         }
+        saved.restore(selected, absorbedCols, steps);
         if (best == null) return fit;
-        // made again at the best resolution (the attempts' selections were put back)
-        Effect drift = Effect.targetDrift(w.model, lo, hi, bestNb);
         Fit f = fit;
         for (int k = selected.size() - 1; k >= 0; k--)
             if (moves.contains(selected.get(k)) && selected.get(k) != moves.get(0)) f = dropAndRefit(w, f, selected, absorbedCols, steps, k);
-        return replaceEffect(w, f, selected, absorbedCols, steps, selected.indexOf(moves.get(0)), drift, true);
+        f = replaceEffect(w, f, selected, absorbedCols, steps, selected.indexOf(moves.get(0)), best, true);
+        boolean valWorse = w.hasValidation() && !(w.validateError(f) < ownVal * (1 + ALIAS_MARGIN));
+        if (!selected.contains(best) || valWorse || !(w.tester(f).pressFull() < own)) {
+            saved.restore(selected, absorbedCols, steps);
+            return fit;
+        }
+        return f;
     }
 
     /** The least moves of joint 1 (deg) tried for a base creep once it is found. */
