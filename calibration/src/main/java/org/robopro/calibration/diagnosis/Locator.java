@@ -1001,29 +1001,12 @@ final class Locator {
         if (t.w.validate != null) all.addAll(t.w.validate.rows());
         double[][] moves = t.dof > 0 && !t.w.model.isPrismatic(0) ? Directions.movesInTime(all, 0) : null;
         if (moves == null) return out;
-        int k = Effect.CREEP_TERMS, poses = t.m / t.rpp;
+        int k = Effect.CREEP_TERMS;
         double[][] time = column(t, c -> c.timeS());
         for (double deg : CREEP_MOVES_DEG) {
             Effect creep = Effect.baseCreep(moves, Math.toRadians(deg));
-            double[] s = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
-            double[] dt = t.endDTrans[0], dr = t.endDRot[0];
-            boolean any = false;
-            for (int i = 0; i < poses; i++) {
-                PoseConditions c = t.endConditions.get(0).get(i);
-                for (int a = 0; a < t.rpp; a++) {
-                    int row = i * t.rpp + a;
-                    boolean turn = a >= t.posRows;
-                    double[] q = t.endRows.get(0).get(i).q();
-                    if (turn) creep.rotationRegressor(q, c, w3);
-                    else creep.positionRegressor(q, c, t.pointsBase[i][t.pointOfRow(a)], g3);
-                    double[] d = turn ? dr : dt, g = turn ? w3 : g3;
-                    for (int col = 0; col < k; col++) {
-                        s[row * k + col] = d[row * 3] * g[col] + d[row * 3 + 1] * g[k + col] + d[row * 3 + 2] * g[2 * k + col];
-                        any |= s[row * k + col] != 0;
-                    }
-                }
-            }
-            if (!any) continue;
+            double[] s = pointColumns(t, creep);
+            if (Arrays.stream(s).allMatch(x -> x == 0)) continue;
             Probe p = finish(t, s, k);
             p.var = Var.BASE_CREEP;
             p.creep = creep;
@@ -1035,6 +1018,30 @@ final class Locator {
             out.add(p);
         }
         return out;
+    }
+
+    /**
+     * The columns (m x size, row-major) of effect {@code e} on the measured point at the scanned
+     * fit's poses (one pose per row): its move of each point and its turn of the measured frame,
+     * through the residual's sensitivity to them.
+     */
+    private static double[] pointColumns(Diagnoser.Tester t, Effect e) {
+        int k = e.size(), poses = t.m / t.rpp;
+        double[] s = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
+        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+        for (int i = 0; i < poses; i++) {
+            PoseConditions c = t.endConditions.get(0).get(i);
+            double[] q = t.endRows.get(0).get(i).q();
+            for (int a = 0; a < t.rpp; a++) {
+                int row = i * t.rpp + a;
+                boolean turn = a >= t.posRows;
+                if (turn) e.rotationRegressor(q, c, w3);
+                else e.positionRegressor(q, c, t.pointsBase[i][t.pointOfRow(a)], g3);
+                double[] d = turn ? dr : dt, g = turn ? w3 : g3;
+                for (int col = 0; col < k; col++) s[row * k + col] = d[row * 3] * g[col] + d[row * 3 + 1] * g[k + col] + d[row * 3 + 2] * g[2 * k + col];
+            }
+        }
+        return s;
     }
 
     /**
@@ -1069,19 +1076,8 @@ final class Locator {
      * a translation and a turn in base axes before it, six columns (one pose per row).
      */
     private static Probe baseStep(Diagnoser.Tester t, double tau, double[][] time) {
-        int k = Effect.BASE_STEP_TERMS, poses = t.m / t.rpp;
-        double[] s = new double[t.m * k], g3 = new double[3 * k], w3 = new double[3 * k];
-        double[] dt = t.endDTrans[0], dr = t.endDRot[0];
-        for (int i = 0; i < poses; i++) {
-            if (!(time[0][i] <= tau)) continue;
-            for (int a = 0; a < t.rpp; a++) {
-                int row = i * t.rpp + a;
-                boolean turn = a >= t.posRows;
-                Effect.baseStepRegressor(turn ? null : t.pointsBase[i][t.pointOfRow(a)], turn ? null : g3, turn ? w3 : null);
-                double[] d = turn ? dr : dt, g = turn ? w3 : g3;
-                for (int c = 0; c < k; c++) s[row * k + c] = d[row * 3] * g[c] + d[row * 3 + 1] * g[k + c] + d[row * 3 + 2] * g[2 * k + c];
-            }
-        }
+        double[] s = pointColumns(t, Effect.baseStep(tau));
+        int k = Effect.BASE_STEP_TERMS;
         Probe p = finish(t, s, k);
         p.var = Var.BASE_STEP;
         p.lo = tau;
