@@ -256,6 +256,38 @@ public sealed interface JointError {
     }
 
     /**
+     * Outside every catalogue family: a joint whose stiffness falls as it warms. A reducer's
+     * lubricant thins and its elastomer seals and bearings soften with temperature, so the joint
+     * gives way more under the same torque: k(T) = k0 / (1 + perK (T − refC)). With the robot's own
+     * spring (its compliance, k0) already in the world, this is the rest of the give:
+     * τ/k(T) − τ/k0 = τ · perK (T − refC) / k0, in the sense gravity pulls (τ the drive's gravity
+     * torque). T is the temperature the campaign reads.
+     */
+    record WarmSoftening(int joint, double stiffness, double perK, double refC) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            if (m.driveTorque() == null) throw new IllegalStateException("a softening joint needs the drive's gravity torque");
+            if (!Double.isFinite(m.tempC())) return 0;
+            return m.driveTorque()[joint] * perK * (m.tempC() - refC) / stiffness;
+        }
+
+        @Override public boolean needsTorque() { return true; }
+    }
+
+    /**
+     * Outside every catalogue family: an error of drive {@code joint} that repeats with the angle
+     * between its link and another's, ψ = q_joint + sign · q_other over the controller values, not
+     * with the drive's own turn: a parallel arm's rod and lever, whose bearings turn with the
+     * forearm's angle to the upper arm (q3 − q2 on a controller that reads the forearm against the
+     * ground), or a serial arm's counterweight or cable that turns with the forearm's angle to the
+     * ground (q2 + q3). amplitude · sin(k ψ + phase).
+     */
+    record LinkHarmonic(int joint, int other, double sign, int k, double amplitude, double phase) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            return amplitude * Math.sin(k * (q[joint] + sign * q[other]) + phase);
+        }
+    }
+
+    /**
      * Lost motion that builds up over the move: the play plus the transmission's friction
      * wind-up, which reaches its full size only after the joint has travelled a distance of the
      * order of {@code buildUp} (Dahl's solid-friction model: the friction force follows

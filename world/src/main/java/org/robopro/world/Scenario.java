@@ -757,6 +757,43 @@ public record Scenario(String name, String family, String robot, Expected expect
                             off.stream().mapToDouble(Double::doubleValue).toArray(), uniform(r, 0.1e-3, 0.2e-3), uniform(r, 500, 1200));
                     return w -> w.withToolBump(WorldRobot.ToolBump.growing(sp));
                 }, p -> p.withSigma(0.01e-3)));
+        // a joint whose reducer softens as the robot warms up: 3-8 % per kelvin of the campaign's warm-up
+        c.add(s("outside: joint 2 softening as it warms, masses off 30 %", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    double k = uniform(r, 2e5, 4e5);
+                    var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r).withStiffness(1, k);
+                    var soft = new JointError.WarmSoftening(1, k, uniform(r, 0.03, 0.08), 20);
+                    return w -> add(soft).apply(w.withCompliance(m));
+                }, same()));
+        // a dispensing tool recorded at its full 10 kg that empties to 1-3 kg over the campaign, steadily or in two steps; the
+        // arm's own weight balanced, the payload's centre at the flange as the file (without masses) puts it
+        c.add(s("outside: a dispensing tool empties while the file records it full", "outside", "irb2400", Expected.outside(),
+                (n, r) -> {
+                    double inf = Double.POSITIVE_INFINITY, end = uniform(r, 1, 3);
+                    var cmp = new WorldRobot.Compliance(new double[] {inf, uniform(r, 1.5e5, 3e5), uniform(r, 0.8e5, 1.5e5), inf, inf, inf},
+                            List.of(), new double[3], new double[] {0, 0, -9.80665});
+                    double t1 = uniform(r, 800, 1400), t2 = uniform(r, 1800, 2600), mid = uniform(r, end + 2, 8);
+                    var d = r.nextBoolean() ? new WorldRobot.Dispensing(new double[] {0, 3000}, new double[] {10, end})
+                            : new WorldRobot.Dispensing(new double[] {t1, t1 + 1, t2, t2 + 1}, new double[] {10, mid, mid, end});
+                    return w -> w.withCompliance(cmp).withDispensing(d);
+                }, p -> p.withPayloads(10)));
+        // joint 3's error repeating 3-9 times per turn of the forearm's angle to the upper arm (a parallel arm's rod and lever), and
+        // on the PUMA 560 with the forearm's angle to the ground (a serial arm's counterweight)
+        c.add(s("outside: j3 error repeating with the forearm's angle to the upper arm", "outside", "irb2400", Expected.outside(),
+                (n, r) -> add(new JointError.LinkHarmonic(2, 1, -1, 3 + r.nextInt(7), Math.toRadians(uniform(r, 0.01, 0.02)),
+                        2 * Math.PI * r.nextDouble())), same()));
+        c.add(s("outside: j3 error repeating with the forearm's angle to the ground, puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> add(new JointError.LinkHarmonic(2, 1, 1, 3 + r.nextInt(7), Math.toRadians(uniform(r, 0.015, 0.025)),
+                        2 * Math.PI * r.nextDouble())), same()));
+        // the tracker 9-12 m away in a hall whose air stratifies as it warms: the vertical gradient grows from 0.2-0.5 to 1.5-3 K/m
+        c.add(s("outside: the tracker's beam bent by the hall's stratifying air, 10 m away", "outside", "irb2000", Expected.outside(),
+                (n, r) -> {
+                    double heading = 2 * Math.PI * r.nextDouble(), dist = uniform(r, 9, 12);
+                    Rigid far = Rigid.translation(dist * Math.cos(heading), dist * Math.sin(heading), uniform(r, 0, 1))
+                            .times(Rigid.rotation(new double[] {0, 0, 1}, 2 * Math.PI * r.nextDouble(), new double[3]));
+                    var air = new WorldRobot.Refraction(new double[] {0, uniform(r, 2000, 4000)}, new double[] {uniform(r, 0.2, 0.5), uniform(r, 1.5, 3)});
+                    return w -> w.withInstrument(far.inverse()).withRefraction(air);
+                }, p -> p.withSigma(0.005e-3)));
         c.add(s("lost motion j2 held on one flank by gravity + cross-coupling j5<-j4", "pair", "irb2000",
                 Expected.named(claim(LOST_MOTION, 2), claim(CROSS_COUPLING, 5, 4)),
                 (n, r) -> {

@@ -131,6 +131,13 @@ final class Truth {
             m.put("tau_s", f.tauS());
             root.put("floor_tilt", m);
         }
+        if (w.dispensing() != null)
+            root.put("dispensing", Map.of("form", "the flange carries kg(t), piecewise linear in time, whatever payload_kg records (outside)",
+                    "times_s", Arrays.stream(w.dispensing().timesS()).boxed().toList(), "kg", Arrays.stream(w.dispensing().kg()).boxed().toList()));
+        if (w.refraction() != null)
+            root.put("refraction", Map.of("form", "the line of sight turned up by kappa L / 2 in its vertical plane, kappa = (n - 1) / T dT/dz / n, "
+                    + "n - 1 = 2.7e-4 (outside)", "times_s", Arrays.stream(w.refraction().timesS()).boxed().toList(),
+                    "gradient_k_per_m", Arrays.stream(w.refraction().kPerM()).boxed().toList()));
         if (w.twist() != null) {
             WorldRobot.Twist t = w.twist();
             Map<String, Object> m = new LinkedHashMap<>();
@@ -289,6 +296,18 @@ final class Truth {
             m.put("c", h.c());
             m.put("neutral_deg", Math.toDegrees(h.neutral()));
             m.put("beta", h.beta());
+        } else if (e instanceof JointError.WarmSoftening ws) {
+            m.put("type", "joint softening as it warms (outside): output += tau_q per_k (T - ref) / k0");
+            m.put("stiffness_nm_per_rad", ws.stiffness());
+            m.put("per_k", ws.perK());
+            m.put("ref_c", ws.refC());
+        } else if (e instanceof JointError.LinkHarmonic lh) {
+            m.put("type", "error repeating with a link angle (outside): output += a sin(k (q_joint + sign q_other) + phase)");
+            m.put("other", lh.other() + 1);
+            m.put("sign", lh.sign());
+            m.put("cycles_per_turn", lh.k());
+            m.put("amplitude_deg", Math.toDegrees(lh.amplitude()));
+            m.put("phase_rad", lh.phase());
         } else if (e instanceof JointError.MotorWarm mw) {
             m.put("type", "drive zero moving as its motor warms (outside)");
             m.put("shift_deg", Math.toDegrees(mw.shift()));

@@ -53,7 +53,17 @@ import org.robopro.models.RobotDescription;
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                         FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock) {
+                         FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
+                         Refraction refraction) {
+    /** A world robot whose carried mass is as recorded and whose instrument sees through still air. */
+    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
+                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
+                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
+                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock) {
+        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, null, null);
+    }
+
     /** A world robot whose instrument is never knocked. */
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
@@ -698,8 +708,10 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * {@link #target(double[], int[], double[], double, double, double)} knowing where each drive's
      * output rests within its play ({@link JointError.Moment#side}; null: on the flank of dir).
      */
-    public Rigid target(double[] q, int[] dir, double[] side, double[] lastMove, double tempC, double timeS, double payload) {
+    public Rigid target(double[] q, int[] dir, double[] side, double[] lastMove, double tempC, double timeS, double recordedPayload) {
         int n = dof();
+        // what the flange really carries: the recorded mass, or a dispensing tool's at this time
+        double payload = dispensing != null && Double.isFinite(timeS) ? dispensing.at(timeS) : recordedPayload;
         double[] qo = q.clone();
         for (int i = 0; i < n; i++) qo[i] += zeroOffsets[i];
         Arm a = arm;
@@ -776,6 +788,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         }
         // knocked: the instrument's pose in base coordinates moved by K, so it maps base points by inst · K⁻¹
         if (knock != null && Double.isFinite(timeS) && timeS >= knock.atS()) inst = inst.times(knock.motion(inst.inverse().p()).inverse());
+        if (refraction != null) tool = new Rigid(tool.r(), refraction.seen(tool.p(), inst.inverse().p(), timeS, tempC));
         Rigid seen = inst.times(tool);
         return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p(), timeS));
     }
@@ -931,68 +944,151 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withKnock(Knock k) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction);
     }
 
     public WorldRobot withTargetPlay(TargetPlay p) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction);
+    }
+
+    /** The same robot carrying a mass that changes with time as {@code d} says, whatever the campaign records. */
+    public WorldRobot withDispensing(Dispensing d) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction);
+    }
+
+    /** The same robot seen through air whose vertical temperature gradient is {@code r}'s. */
+    public WorldRobot withRefraction(Refraction r) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r);
+    }
+
+    /**
+     * Outside every catalogue family: a tool that dispenses what it carries (glue, sealant, a part
+     * set down), so the mass at the flange falls with time while the campaign records the full tool's
+     * mass. The carried mass is piecewise linear between ({@code timesS}, {@code kg}) and constant
+     * beyond them; a step is two points a moment apart.
+     */
+    public record Dispensing(double[] timesS, double[] kg) {
+        public Dispensing {
+            if (timesS.length != kg.length || timesS.length == 0) throw new IllegalArgumentException("times and masses in pairs");
+            timesS = timesS.clone();
+            kg = kg.clone();
+            for (int i = 1; i < timesS.length; i++) if (!(timesS[i] >= timesS[i - 1])) throw new IllegalArgumentException("times in order");
+        }
+
+        /** The mass carried at time t (s). */
+        public double at(double t) { return piecewise(timesS, kg, t); }
+    }
+
+    /** The piecewise linear function through (x[i], y[i]) at u, constant beyond its ends (x ascending; equal x: a step). */
+    static double piecewise(double[] x, double[] y, double u) {
+        if (u <= x[0]) return y[0];
+        for (int i = 1; i < x.length; i++)
+            if (u <= x[i]) {
+                double span = x[i] - x[i - 1];
+                return span > 0 ? y[i - 1] + (y[i] - y[i - 1]) * (u - x[i - 1]) / span : y[i];
+            }
+        return y[y.length - 1];
+    }
+
+    /**
+     * Outside every catalogue family: the instrument's line of sight bent by the air. A vertical
+     * temperature gradient dT/dz makes the air's refractive index change with height,
+     * dn/dz = −(n − 1)/T · dT/dz (the refractivity of air scales with its density, which at constant
+     * pressure goes as 1/T; n − 1 = 2.7e-4 near 20 °C, Edlén), and a ray bends toward the higher
+     * index with curvature κ = −(dn/dz)/n. Over a chord of length L the ray leaves the instrument
+     * at κL/2 above the chord (a circular arc's tangent–chord angle), and the instrument places the
+     * point along its line of departure: the point is seen with its line of sight turned up by κL/2
+     * in the vertical plane through it, at the same distance (warm air over cool: κ &gt; 0, seen
+     * higher; the refraction coefficient of trigonometric levelling). The gradient is piecewise
+     * linear between ({@code timesS}, {@code kPerM}), constant beyond.
+     */
+    public record Refraction(double[] timesS, double[] kPerM) {
+        static final double REFRACTIVITY = 2.7e-4;
+
+        public Refraction {
+            if (timesS.length != kPerM.length || timesS.length == 0) throw new IllegalArgumentException("times and gradients in pairs");
+            timesS = timesS.clone();
+            kPerM = kPerM.clone();
+            for (int i = 1; i < timesS.length; i++) if (!(timesS[i] >= timesS[i - 1])) throw new IllegalArgumentException("times in order");
+        }
+
+        /** The vertical temperature gradient at time t, K/m. */
+        public double gradient(double t) { return piecewise(timesS, kPerM, t); }
+
+        /**
+         * The point {@code pBase} as an instrument at {@code originBase} sees it at time t with the air at
+         * {@code tempC} (20 °C when unknown), base coordinates (z up).
+         */
+        double[] seen(double[] pBase, double[] originBase, double t, double tempC) {
+            double kelvin = (Double.isFinite(tempC) ? tempC : 20) + 273.15;
+            double dndz = -REFRACTIVITY / kelvin * gradient(Double.isFinite(t) ? t : timesS[timesS.length - 1]);
+            double kappa = -dndz / (1 + REFRACTIVITY);
+            double[] los = Rigid.minus(pBase, originBase);
+            double len = Rigid.norm(los);
+            double[] across = Rigid.cross(los, new double[] {0, 0, 1});
+            if (!(Rigid.norm(across) > 1e-9 * len)) return pBase.clone(); // looking straight up or down: no bend across the sight
+            // turning the sight up by κL/2 in its vertical plane: about the horizontal axis ẑ × los (right-handed, up for κ > 0)
+            double[] axis = Rigid.unit(Rigid.cross(new double[] {0, 0, 1}, los));
+            double[] turned = Rigid.rotation(axis, -kappa * len / 2, new double[3]).rotate(los);
+            return Rigid.plus(originBase, turned);
+        }
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -67,6 +67,32 @@ class PhysicsTest {
         assertEquals(((35 + 6 + 10) * 0.710 + 45 * 0.355) * G * Math.sin(q2), tau[1] - tau[2], 1e-9);
     }
 
+    /**
+     * Warm air over cool bends a tracker's beam down (concave toward the ground), so the point is seen
+     * higher, by the tangent–chord offset of the arc: κL²/2 with κ = (n − 1)/T·dT/dz/n (the refraction
+     * coefficient of trigonometric levelling). The instrument 10 m along the base's x, level with the
+     * flange; 2 K/m at 20 °C: κ = 2.7e-4 / 293.15 · 2 / 1.00027 = 1.8417e-6 /m, so 9.2 µm higher at
+     * 10 m, four times that at 20 m, and a cool layer over warm air the other way.
+     */
+    @Test
+    void warmAirOverCoolShowsThePointHigher() {
+        double z = 1.615;
+        for (double far : new double[] {10, 20})
+            for (double grad : new double[] {2, -2}) {
+                WorldRobot still = WorldRobot.nominal(IRB2000, new double[3])
+                        .withInstrument(Rigid.translation(1 + far, 0, z).inverse());
+                WorldRobot bent = still.withRefraction(new WorldRobot.Refraction(new double[] {0}, new double[] {grad}));
+                int[] dir = {1, 1, 1, 1, 1, 1};
+                double[] p0 = still.target(new double[6], dir, 20, 100, 0).p(), p1 = bent.target(new double[6], dir, 20, 100, 0).p();
+                double kappa = 2.7e-4 / 293.15 * grad / (1 + 2.7e-4);
+                // seen from the instrument, the shift is along the instrument's z (its frame here is the base's, moved)
+                assertEquals(kappa * far * far / 2, p1[2] - p0[2], 1e-3 * Math.abs(kappa * far * far / 2));
+                assertEquals(p0[1], p1[1], 1e-12);
+                // the distance the instrument reads is the sight's length, unchanged
+                assertEquals(Math.hypot(p0[0], p0[2]), Math.hypot(p1[0], p1[2]), 1e-12);
+            }
+    }
+
     @Test
     void thermalGrowthLengthensTheArmWithTemperature() {
         double[] alpha = new double[7];

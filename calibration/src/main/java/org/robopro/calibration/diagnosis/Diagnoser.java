@@ -121,6 +121,13 @@ public final class Diagnoser {
      * is the air's index after a 50 K or a 180 hPa change (Edlén; see {@link Effect#instrumentScale}).
      */
     static final double MAX_INSTRUMENT_SCALE = 50e-6;
+
+    /**
+     * Largest change of the air's vertical temperature gradient a campaign's refraction may imply,
+     * K/m: a hall stratified by 10 K between floor and a 3 m ceiling, against one mixed, is 3 K/m,
+     * near a heater or a sunlit wall more.
+     */
+    static final double MAX_GRADIENT_CHANGE = 10;
     static final double MAX_ALPHA = 5e-5;                                 // 1/K: steel 12e-6, aluminium 23e-6
     /**
      * Bound of one link's growth per kelvin of the reading, 1/K: a link near its drives warms more
@@ -1324,8 +1331,7 @@ public final class Diagnoser {
         PoseConditions c = PoseConditions.of(pose);
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
-            if (!e.heldByGravity()) continue;
-            if (!nearHandOver(e, pose)) continue;
+            if (!sidedByGravity(e) || !nearHandOver(e, pose, w.rows)) continue;
             double[] g = new double[1];
             e.regressor(pose, c, g);
             double b = fit.full[fit.problem.effectOffset(k)];
@@ -1346,16 +1352,35 @@ public final class Diagnoser {
     /** A lost motion's flank terms at the two ends of its play. */
     private static final double[] FLANKS = {0.5, -0.5};
 
-    /** Whether the gravity torque on held backlash {@code e}'s drive at {@code pose} is within half its holding torque of it (or the hand-over's width, if wider). */
-    private static boolean nearHandOver(Effect e, Measurement pose) {
-        double tau = Math.abs(e.holdingTorque(pose.q(), pose.payloadKg()));
-        return Math.abs(tau - e.heldAboveNm()) <= Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
+    /** Whether effect {@code e} puts its drive's output on one side of a play by the gravity torque: a backlash held by gravity, a gravity play. */
+    private static boolean sidedByGravity(Effect e) {
+        return e.heldByGravity() || e.kind() == Effect.Kind.GRAVITY_PLAY;
     }
 
     /**
-     * The poses among {@code flagged} that a named backlash held by gravity's other flank explains:
-     * at a pose whose gravity torque is near the holding torque (within half of it, or the
-     * hand-over's width if wider), with the output at one end of the play where the model put it
+     * Whether the gravity torque on {@code e}'s drive at {@code pose} lies where the side of its play
+     * is uncertain. For a backlash held by gravity, within half its holding torque of it (or the
+     * hand-over's width, if wider). For a gravity play, within the hand-over's half-width of where the
+     * side changes, or within the share of the largest torque on the drive over the training poses
+     * {@code rows} that the change's place was searched over ({@link #PLAY_SIDE_SHIFTS}): the file's
+     * masses put the torque's zero only roughly.
+     */
+    private static boolean nearHandOver(Effect e, Measurement pose, List<Measurement> rows) {
+        if (e.heldByGravity()) {
+            double tau = Math.abs(e.holdingTorque(pose.q(), pose.payloadKg()));
+            return Math.abs(tau - e.heldAboveNm()) <= Math.max(0.5, e.heldWidth()) * e.heldAboveNm();
+        }
+        double max = 0;
+        for (Measurement r : rows) max = Math.max(max, Math.abs(e.holdingTorque(r.q(), r.payloadKg())));
+        double band = Math.max(e.sideWidthNm(), Arrays.stream(PLAY_SIDE_SHIFTS).map(Math::abs).max().orElse(0) * max);
+        return Math.abs(e.holdingTorque(pose.q(), pose.payloadKg()) - e.sideNm()) <= band;
+    }
+
+    /**
+     * The poses among {@code flagged} that a named backlash held by gravity's other flank explains,
+     * or a gravity play's other side: at a pose whose gravity torque is near the holding torque
+     * (within half of it, or the hand-over's width if wider) or where the play's side changes
+     * ({@link #nearHandOver}), with the output at one end of the play where the model put it
      * elsewhere (its flank term ±1/2 in place of g, a change of (±1/2 − g)·b of the drive's output:
      * the hand-over's share, too, is the model's estimate), the pose's residual falls to the noise
      * (weighted sum of squares under 4 per residual row). Which flank a gear sits on where gravity
@@ -1366,7 +1391,7 @@ public final class Diagnoser {
      */
     static List<String> otherFlankExplains(Work w, Fit fit, List<Effect> selected, List<String> flagged) {
         List<Integer> lost = new ArrayList<>();
-        for (int k = 0; k < selected.size(); k++) if (selected.get(k).heldByGravity()) lost.add(k);
+        for (int k = 0; k < selected.size(); k++) if (sidedByGravity(selected.get(k))) lost.add(k);
         if (lost.isEmpty()) return flagged;
         Tester t = w.tester(fit);
         if (t.ends > 1) return flagged;
@@ -1379,7 +1404,7 @@ public final class Diagnoser {
             for (int k : lost) {
                 if (i == null) break;
                 Effect e = selected.get(k);
-                if (!nearHandOver(e, w.rows.get(i))) continue;
+                if (!nearHandOver(e, w.rows.get(i), w.rows)) continue;
                 double b = fit.full[fit.problem.effectOffset(k)];
                 double[] g = new double[1];
                 e.regressor(w.rows.get(i), w.conditions.get(i), g);
@@ -2786,6 +2811,67 @@ public final class Diagnoser {
     }
 
     /**
+     * The rivals of a named compliance {@code e}, or of a growth or a drift with temperature or time
+     * beside a named compliance, that let the joint's give change through the campaign
+     * ({@link Effect#complianceVarying}): with temperature (where it varies by 0.5 K or more), with
+     * time, and the payload's share of the torque alone with time where a payload is recorded (a
+     * carried mass that changes, at the resolutions of a drift in time the poses support). For a
+     * compliance, its own joint; for the others, each joint with a compliance in {@code selected},
+     * or with none, each joint the arm's weight loads.
+     */
+    static List<Effect> varyingCompliances(Effect e, List<Effect> selected, Work w) {
+        Map<Integer, GravityTorques> joints = new java.util.TreeMap<>();
+        switch (e.kind()) {
+            case COMPLIANCE -> joints.put(e.joint(), e.gravity());
+            case THERMAL, THERMAL_LINK, DRIFT -> {
+                for (Effect x : selected) if (x.kind() == Effect.Kind.COMPLIANCE) joints.put(x.joint(), x.gravity());
+                // with no compliance named, each joint the arm's weight loads (a curve of its angle may hold its static give)
+                if (joints.isEmpty() && w.gravity != null)
+                    for (int j = 0; j < w.model.dof(); j++) if (loaded(w.gravity, j, w.rows)) joints.put(j, w.gravity);
+            }
+            default -> { }
+        }
+        if (joints.isEmpty()) return List.of();
+        double[] time = timeSpan(w.conditions), temp = tempSpan(w.conditions);
+        boolean payload = w.conditions.stream().anyMatch(c -> c.payloadKg() > 0);
+        List<Effect> out = new ArrayList<>();
+        joints.forEach((j, g) -> {
+            int nb = g.massesUnknown() ? 2 : Effect.POINT_BASIS;
+            if (temp != null) out.add(Effect.complianceVarying(j, g, Effect.Along.TEMPERATURE, temp[0], temp[1], nb, false));
+            if (time == null) return;
+            out.add(Effect.complianceVarying(j, g, Effect.Along.TIME, time[0], time[1], nb, false));
+            if (payload)
+                for (int r : Effect.DRIFT_RESOLUTIONS)
+                    if (r < Effect.DRIFT_RESOLUTIONS[Effect.DRIFT_RESOLUTIONS.length - 1] && Effect.supported(r, Effect.POINT_BASIS, w.rows.size()))
+                        out.add(Effect.complianceVarying(j, g, Effect.Along.TIME, time[0], time[1], r, true));
+        });
+        return out;
+    }
+
+    /** Gravity torque (N·m) below which a joint counts as not loaded by the arm's weight over the poses. */
+    static final double LOADED_NM = 1;
+
+    /** Whether the arm's weight loads drive {@code j} at some pose of {@code rows} by more than {@link #LOADED_NM}. */
+    static boolean loaded(GravityTorques g, int j, List<Measurement> rows) {
+        double[] t = new double[g.massCount()];
+        for (Measurement r : rows) {
+            double p = Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0;
+            if (g.massesUnknown()) {
+                g.driveTorquesByMass(r.q(), p, j, t);
+                for (double x : t) if (Math.abs(x) > LOADED_NM) return true;
+            } else if (Math.abs(g.driveTorques(r.q(), p)[j]) > LOADED_NM) return true;
+        }
+        return false;
+    }
+
+    /** The lowest and highest temperature of the poses' conditions, or null unless they span 0.5 K or more. */
+    static double[] tempSpan(List<PoseConditions> conditions) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (PoseConditions c : conditions) if (Double.isFinite(c.tempC())) { lo = Math.min(lo, c.tempC()); hi = Math.max(hi, c.tempC()); }
+        return hi - lo >= 0.5 ? new double[] {lo, hi} : null;
+    }
+
+    /**
      * The rivals of a named transmission error {@code e} whose size follows the gravity torque on its
      * joint ({@link Effect#loadPeriodic}): with the torque's sign and with its size. The torque is the
      * robot file's masses', or without them an estimate from the link lengths; its reference the
@@ -3232,6 +3318,7 @@ public final class Diagnoser {
                 Tester at = w.tester(fit);
                 List<Effect> own = ownFallbacks(e, rows, w.model);
                 own.addAll(loadPeriodics(e, gravity, rows, w.model));
+                own.addAll(varyingCompliances(e, selected, w));
                 Map<String, Effect> rivals = new LinkedHashMap<>();
                 for (Effect f : own) rivals.put(f.label(), f);
                 for (Effect f : located) rivals.putIfAbsent(f.label(), f);
@@ -3952,6 +4039,11 @@ public final class Diagnoser {
             for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentScale(e.along(), e.instrumentPose(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.REFRACTION) {
+            // the hall's stratification builds up and changes with its ventilation: a finer curve of the same reading
+            for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
+                if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
+                    out.add(Effect.refraction(e.along(), e.instrumentPose(), e.rangeLo(), e.rangeHi(), nb));
         } else if (e.kind() == Effect.Kind.BASE_CREEP) {
             // the least move that slips the base (the bolts' hold against the reaction of the move)
             List<Measurement> all = new ArrayList<>(w.rows);
@@ -3968,6 +4060,15 @@ public final class Diagnoser {
             for (int nb : e.sight() == Effect.Sight.RANGE ? Locator.RANGE_RESOLUTIONS : Locator.ANGLE_RESOLUTIONS)
                 if (nb != e.basisCount() && Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                     out.add(Effect.instrumentReading(e.sight(), e.instrumentPose(), e.azimuthRef(), e.rangeLo(), e.rangeHi(), nb));
+        } else if (e.kind() == Effect.Kind.ZERO_DRIFT && w.gravity != null && loaded(w.gravity, e.joint(), rows)) {
+            // a zero that moves with time or temperature may be the joint's give under gravity changing: a joint that softens as
+            // it warms, a carried mass that changes while the file records one
+            out.add(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(),
+                    w.gravity.massesUnknown() ? 2 : Effect.POINT_BASIS, false));
+            if (e.along() == Effect.Along.TIME && rows.stream().anyMatch(r -> r.payloadKg() > 0))
+                for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
+                    if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
+                        out.add(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(), nb, true));
         } else if (e.kind() == Effect.Kind.GRAVITY_PLAY) {
             // where the side changes (the file's masses put the torque's zero only roughly) and how sharply
             for (Effect f : gravityPlays(e.joint(), e.gravity(), rows, w.model, PLAY_SIDE_SHIFTS, PLAY_SIDE_WIDTHS))
@@ -4267,7 +4368,7 @@ public final class Diagnoser {
             Effect.Kind k = e.kind();
             boolean thermal = k == Effect.Kind.THERMAL || k == Effect.Kind.THERMAL_LINK || k == Effect.Kind.DRIFT;
             switch (f.probe.var) {
-                case ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP -> {
+                case ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, LINK_PERIODIC -> {
                     if (e.target() == Effect.Target.DRIVE && k != Effect.Kind.BACKLASH
                             && (e.joint() == f.probe.joint || (k == Effect.Kind.COUPLING && e.source() == f.probe.joint))) return e;
                 }
@@ -4480,6 +4581,10 @@ public final class Diagnoser {
             case ANGLE_PERIODIC -> String.format(Locale.ROOT, "measure joint %d over its whole range in small steps with the "
                     + "other joints still (at least %d poses per cycle of the %d-cycle error); a periodic error that stays is in "
                     + "the joint's transmission.", f.probe.joint + 1, Locator.POSES_PER_HARMONIC, f.probe.harmonic);
+            case LINK_PERIODIC -> String.format(Locale.ROOT, "measure joint %d's error over the link angle %s in small steps, "
+                    + "once turning joint %d with the link angle held, once the other way round: an error that follows the link "
+                    + "angle is in the linkage (its rod, lever or bearings), not the drive.", f.probe.joint + 1,
+                    Effect.linkAngleText(f.probe.linkAngle), f.probe.joint + 1);
             case ANGLE_SMOOTH -> String.format(Locale.ROOT, "sweep joint %d slowly through its range with the other joints still, "
                     + "in both directions, and look for a place-bound error (a damaged gear stretch, a cable or hose pulling).",
                     f.probe.joint + 1);
@@ -4775,6 +4880,13 @@ public final class Diagnoser {
             out.add(Effect.driftWithTemperature(t0C));
         }
         if (hasTime) out.add(Effect.driftWithTime());
+        // a joint's zero that moves with time under a recorded payload may be the carried mass changing while the file records
+        // one (a dispensing tool emptying): the payload's torque on the joint following the time (the whole torque's change, a
+        // joint softening as it warms, is tried in a located zero drift's place and against a named compliance)
+        if (gravity != null && rows.stream().anyMatch(r -> r.payloadKg() > 0))
+            for (Locator.Found f : found)
+                if (f.probe.var == Locator.Var.TIME && f.probe.joint >= 0 && f.probe.hi > f.probe.lo && loaded(gravity, f.probe.joint, rows))
+                    out.add(Effect.complianceVarying(f.probe.joint, gravity, Effect.Along.TIME, f.probe.lo, f.probe.hi, Effect.POINT_BASIS, true));
         for (Locator.Found f : found) {
             if (f.probe.var == Locator.Var.TARGET_STEP || f.probe.var == Locator.Var.BASE_STEP)
                 out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
@@ -4867,6 +4979,9 @@ public final class Diagnoser {
     static List<Effect> bodyShapes(List<Locator.Found> found, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         for (int j = 0; j < model.dof(); j++) {
+            int[] links = ordersFound(found, Locator.Var.LINK_PERIODIC, j);
+            double[] angle = Effect.linkAngle(model, j);
+            if (links.length > 0 && angle != null) out.add(Effect.linkPeriodic(j, angle, links));
             int[] tilts = ordersFound(found, Locator.Var.AXIS_WOBBLE, j), shifts = ordersFound(found, Locator.Var.AXIAL_RUNOUT, j);
             if (tilts.length > 0) out.add(Effect.axisWobble(model, j, tilts));
             if (shifts.length > 0) out.add(Effect.axialRunout(model, j, shifts));
@@ -5067,6 +5182,16 @@ public final class Diagnoser {
             }
             periods.sort((a, b) -> Double.compare(p0.get(a), p0.get(b)));
             periods = periods.subList(0, INSTRUMENT_CYCLES_TRIED);
+        }
+        // the beam bent by the air's temperature gradient as it changes through the campaign
+        if (t.w.instrument && t.ends == 1) {
+            org.robopro.kinematics.Pose inst = t.fit.problem.instrumentOf(t.fit.full);
+            double[] time = timeSpan(conds), temp = tempSpan(conds);
+            for (int nb : INSTRUMENT_SCALE_RESOLUTIONS) {
+                if (!Effect.supported(nb, Effect.POINT_BASIS, t.w.rows.size())) continue;
+                if (time != null) out.add(Effect.refraction(Effect.Along.TIME, inst, time[0], time[1], nb));
+                if (temp != null) out.add(Effect.refraction(Effect.Along.TEMPERATURE, inst, temp[0], temp[1], nb));
+            }
         }
         List<Effect> cycles = new ArrayList<>();
         for (Locator.Probe p : periods) cycles.add(sightEffect(p));
@@ -6186,6 +6311,15 @@ public final class Diagnoser {
         double[] sd = c.sd == null ? new double[v.length] : c.sd;
         Effect e = c.effect;
         switch (e.kind()) {
+            case COMPLIANCE_VARYING -> {
+                // a compliance at every time or temperature: each coefficient of its spline positive, below a soft joint's
+                boolean ok = true;
+                for (int i = 0; i < v.length; i++)
+                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, 1 / MIN_STIFFNESS)) ok = false;
+                c.plausible = ok;
+                c.plausibility = String.format(Locale.ROOT, "the compliance positive and below %.0e rad/(N·m) over the %s", 1 / MIN_STIFFNESS,
+                        e.along().words);
+            }
             case COMPLIANCE -> {
                 if (e.gravity().massesUnknown()) {
                     // only the payload's coefficient is a compliance; the others are it times unknown masses and centres
@@ -6280,6 +6414,14 @@ public final class Diagnoser {
                 c.plausible = Math.abs(v[0]) < MAX_BACKLASH_RAD;
                 c.plausibility = String.format(Locale.ROOT, "play %.4f deg < %.1f deg", Math.toDegrees(Math.abs(v[0])),
                         Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case LINK_PERIODIC -> {
+                // a shape of no known family: each harmonic within a smooth error's bound
+                double max = 0;
+                for (int h = 0; h < v.length / 2; h++) max = Math.max(max, Math.hypot(v[2 * h], v[2 * h + 1]));
+                c.plausible = max < 2 * MAX_PERIODIC_RAD;
+                c.plausibility = String.format(Locale.ROOT, "largest harmonic amplitude %.4f deg < %.2f deg", Math.toDegrees(max),
+                        Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
             case LOAD_PERIODIC -> {
                 // without load and at the reference torque, each order within a smooth error's bound
@@ -6421,6 +6563,13 @@ public final class Diagnoser {
                 double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
                 c.plausible = d < MAX_TARGET_STEP_M;
                 c.plausibility = String.format(Locale.ROOT, "the target's move %.4f mm < %.0f mm", d * 1e3, MAX_TARGET_STEP_M * 1e3);
+            }
+            case REFRACTION -> {
+                // (the constant is partly the geometry's) k = κ/2 = (n − 1)/(2T) · dT/dz: the gradient's change within a hall's
+                double d = spread(v) * 2 * 293.15 / 2.7e-4;
+                c.plausible = d < MAX_GRADIENT_CHANGE;
+                c.plausibility = String.format(Locale.ROOT, "the air's vertical temperature gradient changing by %.2f K/m < %.0f K/m", d,
+                        MAX_GRADIENT_CHANGE);
             }
             case INSTRUMENT_SCALE -> {
                 // the scale's change over the readings (its constant part is the geometry's)

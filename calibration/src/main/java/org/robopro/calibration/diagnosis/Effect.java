@@ -66,6 +66,11 @@ public final class Effect {
         SMOOTH("joint-smooth-error", "Angle-dependent joint error of no known family"),
         GRAVITY_PLAY("joint-gravity-play", "A joint's play taken up by gravity: its output rests on the side the gravity torque "
                 + "pushes it to, whatever the last motion (a clearance in the joint's bearing, gear or linkage), of no known family"),
+        COMPLIANCE_VARYING("joint-compliance-varying", "A joint's give under gravity that changes through the campaign: with "
+                + "temperature (a stiffness that softens as the joint warms) or with time (a carried mass that changes, a dispensing "
+                + "tool emptying, while the recorded payload stays), of no known family"),
+        LINK_PERIODIC("link-angle-periodic", "A joint's error that repeats with the angle of its link against the link before it "
+                + "(or against the ground), not with its drive's own turn: a parallel linkage's rod, lever or bearing, of no known family"),
         LOAD_PERIODIC("joint-load-periodic", "A joint's periodic error whose size follows the gravity torque on the joint (a gear mesh "
                 + "deflecting more under load), of no known family"),
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
@@ -86,6 +91,9 @@ public final class Effect {
         RANGE_STEP("range-step", "The measuring instrument's distances that jumped at one time during the campaign (its distance "
                 + "taken again after the beam was broken), not the robot, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
+        REFRACTION("beam-refraction", "The measured points seen higher or lower by the square of their horizontal distance from the "
+                + "instrument, changing with time or temperature: the instrument's beam bent by a vertical temperature gradient in the "
+                + "air (refraction), not the robot, of no known family"),
         INSTRUMENT_SCALE("instrument-scale", "The measuring instrument's distances scaling with time or temperature (its air "
                 + "compensation), not the robot, of no known family"),
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
@@ -221,6 +229,8 @@ public final class Effect {
     private double[] creepTimes, creepSlips;   // base creep: each move's time (s) and its slip's sign (0: a move too small)
     private double sideNm, sideWidthNm;      // gravity play: the torque where the side changes, the hand-over's half-width (0: sharp), N·m
     private boolean loadMagnitude;           // load-periodic: the size follows |τ| (true) or τ with its sign
+    private boolean payloadShare;            // varying compliance: the payload's share of the torque alone
+    private double[] linkAngle;              // link-angle periodic: the angle it repeats with, Σ linkAngle[l]·q_l
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -278,6 +288,40 @@ public final class Effect {
     public static Effect withoutStiffening(Effect e) { return e.stiffens ? compliance(e.joint, e.gravity) : e; }
 
     /**
+     * A joint's give under gravity that changes through the campaign: Δq = τ·s(x), τ the gravity
+     * torque on drive {@code joint} ({@code g}'s masses with the pose's payload) or, with
+     * {@code payloadShare}, the payload's share of it alone, and s a cubic B-spline of x (temperature
+     * or time, {@code along}) over lo..hi with {@code nBasis} functions. The splines sum to one, so a
+     * constant compliance is the case s = c. Two causes give it: a stiffness that falls as the joint
+     * warms (a reducer's lubricant thins and its elastomer seals soften: k(T) = k0/(1 + c·(T − T0))
+     * makes s linear in T), and a carried mass that changes while the file's payload stays as
+     * recorded (a dispensing or gluing tool emptying, a part dropped), whose torque follows the mass.
+     * Of no known family: the catalogue's compliance has one stiffness. Without the arm's masses
+     * ({@link GravityTorques#massesUnknown}) each mass's torque has its own coefficient at either end
+     * of the range, straight between ({@code nBasis} 2), as the compliance has one per mass.
+     */
+    public static Effect complianceVarying(int joint, GravityTorques g, Along along, double lo, double hi, int nBasis, boolean payloadShare) {
+        if (g == null) throw new IllegalArgumentException("a varying compliance needs the arm's masses");
+        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a compliance varies with time or temperature");
+        if (!(hi > lo)) throw new IllegalArgumentException("varying compliance range " + lo + ".." + hi);
+        if (g.massesUnknown() && !payloadShare && nBasis != 2)
+            throw new IllegalArgumentException("without the masses a varying compliance is one per mass, straight between the range's ends (2 functions)");
+        Effect e = new Effect(Kind.COMPLIANCE_VARYING, joint, -1, g, false, Double.NaN, Double.NaN, null, lo, hi, null, null, nBasis);
+        e.along = along;
+        e.payloadShare = payloadShare;
+        return e;
+    }
+
+    /**
+     * Whether a varying compliance is one per mass, straight between the ends of its range: on a robot
+     * file without masses ({@link GravityTorques#massesUnknown}), each mass's torque at each end.
+     */
+    boolean perMassVarying() { return kind == Kind.COMPLIANCE_VARYING && !payloadShare && gravity.massesUnknown(); }
+
+    /** Whether a varying compliance follows the payload's share of the torque alone (a carried mass that changes). */
+    public boolean payloadShare() { return payloadShare; }
+
+    /**
      * The torque (N·m) at which a stiffening compliance with values {@code v} (c, c₃) is twice as stiff as
      * unloaded: the tangent compliance c + 3c₃τ² is half of c where τ² = −c/(6c₃); NaN unless c &gt; 0 &gt; c₃.
      */
@@ -294,6 +338,70 @@ public final class Effect {
         if (h.length == 0 || h[0] < 1) throw new IllegalArgumentException("harmonics " + Arrays.toString(harmonics));
         return new Effect(Kind.PERIODIC, joint, -1, null, false, Double.NaN, Double.NaN, h, Double.NaN, Double.NaN, null, null);
     }
+
+    /**
+     * The other angle of joint {@code j}'s link where the joint before it turns about a parallel axis
+     * (a planar pair: the upper arm and forearm of an articulated arm): the link's angle against the
+     * link before it where the controller reads its angle against the ground (a parallel-arm linkage,
+     * θ3 = q3 − q2), or against the ground where the controller reads it against the link before it
+     * (q2 + q3 on a serial arm). As Σ_l c_l·q_l over the controller values; null where the axes are
+     * not parallel. The drive of a parallel arm turns the forearm through a rod and a lever whose own
+     * bearings turn with the relative angle; a serial arm's counterweight or cable turns with the
+     * forearm's angle to the ground.
+     */
+    public static double[] linkAngle(KinematicModel model, int j) {
+        if (j < 1 || model.isPrismatic(j) || model.isPrismatic(j - 1)) return null;
+        var joints = model.description().joints();
+        if (joints.get(j).axis().cross(joints.get(j - 1).axis()).norm() > 1e-6) return null;
+        double[][] c = model.couplingMatrix();
+        double[] rel = c[j].clone(), out = rel.clone();
+        boolean unit = true;
+        for (int l = 0; l < rel.length; l++) if (Math.abs(rel[l] - (l == j ? 1 : 0)) > 1e-12) unit = false;
+        if (unit) {
+            // the controller reads the angle against the link before: the link's angle against the ground, θ_{j−1} + θ_j
+            double s = joints.get(j).axis().dot(joints.get(j - 1).axis()) > 0 ? 1 : -1;
+            for (int l = 0; l < rel.length; l++) out[l] = rel[l] + s * c[j - 1][l];
+        }
+        return out;
+    }
+
+    /**
+     * Error of drive {@code joint} periodic in the angle ψ = Σ_l angle[l]·q_l ({@link #linkAngle}):
+     * Σ_h a_h sin(hψ) + b_h cos(hψ) at the given harmonics. Of no known family: a transmission
+     * error repeats with its drive's own turn.
+     */
+    public static Effect linkPeriodic(int joint, double[] angle, int[] harmonics) {
+        int[] h = new TreeSet<>(Arrays.stream(harmonics).boxed().toList()).stream().mapToInt(Integer::intValue).toArray();
+        if (h.length == 0 || h[0] < 1) throw new IllegalArgumentException("harmonics " + Arrays.toString(harmonics));
+        Effect e = new Effect(Kind.LINK_PERIODIC, joint, -1, null, false, Double.NaN, Double.NaN, h, Double.NaN, Double.NaN, null, null);
+        e.linkAngle = angle.clone();
+        return e;
+    }
+
+    /** A link-angle periodic error's angle, Σ linkAngle[l]·q_l at controller values q (rad). */
+    public double linkAngleAt(double[] q) {
+        double s = 0;
+        for (int l = 0; l < linkAngle.length; l++) s += linkAngle[l] * q[l];
+        return s;
+    }
+
+    /** A link angle as text: "q3 − q2", "q2 + q3". */
+    public static String linkAngleText(double[] c) {
+        StringBuilder b = new StringBuilder();
+        for (int l = 0; l < c.length; l++) {
+            if (c[l] == 0) continue;
+            String coef = Math.abs(Math.abs(c[l]) - 1) < 1e-12 ? "" : orderText(Math.abs(c[l])) + "·";
+            if (b.length() == 0) b.append(c[l] < 0 ? "−" : "").append(coef).append("q").append(l + 1);
+            else b.append(c[l] < 0 ? " − " : " + ").append(coef).append("q").append(l + 1);
+        }
+        return b.toString();
+    }
+
+    /** A link-angle periodic error's angle as text. */
+    public String linkAngleText() { return linkAngleText(linkAngle); }
+
+    /** A link-angle periodic error's angle coefficients per controller joint. */
+    public double[] linkAngleCoefficients() { return linkAngle.clone(); }
 
     /**
      * The given whole harmonics and, besides them, stage orders that are not whole (cycles per turn of
@@ -489,7 +597,7 @@ public final class Effect {
     /** The half-width of a backlash held by gravity's hand-over, a share of {@link #heldAboveNm()} (0: sharp). */
     public double heldWidth() { return preloadWidth; }
 
-    /** The gravity torque on a backlash held by gravity's drive at {@code q} with {@code payloadKg} (NaN: none), N·m. */
+    /** The gravity torque on the drive of a backlash held by gravity or of a gravity play at {@code q} with {@code payloadKg} (NaN: none), N·m. */
     public double holdingTorque(double[] q, double payloadKg) {
         return gravity.driveTorques(q, Double.isFinite(payloadKg) ? payloadKg : 0)[joint];
     }
@@ -997,6 +1105,32 @@ public final class Effect {
     }
 
     /**
+     * The instrument's line of sight bent by the air: every measured point is seen moved vertically
+     * (along the base's z, the robot and the instrument levelled alike) by k(u)·d², d its horizontal
+     * distance from the instrument's origin and k a cubic B-spline of u (time or temperature) over
+     * [lo, hi] with {@code n} functions. Light bends toward the denser air: a vertical temperature
+     * gradient dT/dz gives the index a gradient dn/dz = −(n − 1)/T·dT/dz (n − 1 ≈ 2.7·10⁻⁴ in room air),
+     * the ray's curvature is κ = −dn/dz, and over a chord d the ray leaves the instrument at κd/2 to
+     * the chord, so the point is placed κd²/2 off it: higher with warm air above cool (the ray
+     * concave down), lower with cool air above (the refraction coefficient of trigonometric heighting;
+     * Muralikrishnan et al., Precision Engineering 44 (2016) 13, on a tracker's environment). k = κ/2,
+     * 1/m; a gradient of 1 K/m gives about 0.5 µm at 1 m and 0.05 mm at 10 m. A hall's stratification
+     * builds up as it warms and changes when the ventilation does, so k follows time. Its constant
+     * part the geometry holds only in part (d² is no rigid motion). Computed through
+     * {@code instrumentTbase} (the geometric fit's); an unknown time is taken as the end of the
+     * campaign, an unknown temperature contributes nothing. Not the robot's: left out of compensation.
+     */
+    public static Effect refraction(Along along, Pose instrumentTbase, double lo, double hi, int n) {
+        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("refraction follows time or temperature");
+        if (!(hi > lo)) throw new IllegalArgumentException("refraction range " + lo + ".." + hi);
+        if (n < POINT_BASIS) throw new IllegalArgumentException("refraction with " + n + " functions");
+        Effect e = new Effect(Kind.REFRACTION, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
+        e.along = along;
+        e.instrument = instrumentTbase;
+        return e;
+    }
+
+    /**
      * A cyclic error of the instrument's {@code sight} reading, a·sin(2πu/period) + b·cos(2πu/period)
      * of the reading u (a distance meter that measures a phase repeats its error with the distance:
      * the cyclic, or periodic, error of phase-measuring distance meters; Muralikrishnan et al. 2016,
@@ -1422,7 +1556,7 @@ public final class Effect {
     public boolean holdsPartOf(Effect e) {
         if (kind == Kind.BASE_TURN && e.kind == Kind.DRIFT) return e.usesTimeProxy() == (along == Along.TIME);
         if (nests(e)) return true;
-        return kind == Kind.LINK_SAG && e.kind == Kind.COMPLIANCE && e.joint == joint;
+        return (kind == Kind.LINK_SAG || kind == Kind.COMPLIANCE_VARYING) && e.kind == Kind.COMPLIANCE && e.joint == joint;
     }
 
     /**
@@ -1431,6 +1565,10 @@ public final class Effect {
      * then {@code e}'s own shape changing (its size with the load), not another structure.
      */
     public boolean nests(Effect e) {
+        // a varying compliance on the whole torque holds its joint's linear compliance (the splines sum to one), one per mass
+        // where the masses are unknown
+        if (kind == Kind.COMPLIANCE_VARYING && !payloadShare && e.kind == Kind.COMPLIANCE && e.joint == joint && !e.stiffens
+                && e.gravity == gravity && e.perMass == gravity.massesUnknown()) return true;
         return kind == Kind.LOAD_PERIODIC && e.kind == Kind.PERIODIC && e.joint == joint && Arrays.equals(e.orders(), orders());
     }
 
@@ -1667,8 +1805,8 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
-                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
 
@@ -1712,7 +1850,8 @@ public final class Effect {
 
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
     public boolean ofInstrument() {
-        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.RANGE_STEP || kind == Kind.BASE_STEP || kind == Kind.TARGET_INCIDENCE;
+        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION || kind == Kind.RANGE_STEP || kind == Kind.BASE_STEP
+                || kind == Kind.TARGET_INCIDENCE;
     }
 
     /** Spline functions of a smooth or point-smooth effect (per axis), 0 otherwise. */
@@ -1870,7 +2009,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
             default -> Target.DRIVE;
         };
@@ -1910,10 +2049,12 @@ public final class Effect {
     public int size() {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
+            case LINK_PERIODIC -> 2 * harmonics.length;
             case LOAD_PERIODIC -> 4 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
             case BACKLASH -> 1 + 2 * runout.length;
-            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT -> nBasis;
+            case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT -> nBasis;
+            case COMPLIANCE_VARYING -> perMassVarying() ? gravity.massCount() * nBasis : nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case AXIAL_RUNOUT -> 2 * harmonics.length;
             case TOOL_SAG -> 9;
@@ -1941,6 +2082,7 @@ public final class Effect {
                 } else for (int k = 0; k < gravity.massCount(); k++) out.add("c_" + gravity.massName(k));
             }
             case PERIODIC -> { for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); } }
+            case LINK_PERIODIC -> { for (int h : harmonics) { out.add("a" + h); out.add("b" + h); } }
             case LOAD_PERIODIC -> {
                 for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); }
                 for (double h : orders()) { out.add("la" + orderText(h)); out.add("lb" + orderText(h)); }
@@ -1972,7 +2114,9 @@ public final class Effect {
                 out.add("dx"); out.add("dy"); out.add("dz");
             }
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
+            case COMPLIANCE_VARYING -> { for (int k = 1; k <= size(); k++) out.add("c" + k); }
             case INSTRUMENT_SCALE -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
+            case REFRACTION -> { for (int k = 1; k <= nBasis; k++) out.add("k" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case SETTLING -> out.add("per_speed");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
@@ -2036,13 +2180,14 @@ public final class Effect {
 
     public List<String> units() {
         String u = switch (kind) {
-            case COMPLIANCE -> "rad/(N·m)";
-            case PERIODIC, LOAD_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
+            case COMPLIANCE, COMPLIANCE_VARYING -> "rad/(N·m)";
+            case PERIODIC, LOAD_PERIODIC, LINK_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
             case POINT_SMOOTH, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN, BASE_CREEP -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
+            case REFRACTION -> "1/m";
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE -> "rad";
             case AXIAL_RUNOUT -> "m";
@@ -2113,8 +2258,12 @@ public final class Effect {
                     + (massScales != null ? ", re-estimated" : "") : massScales != null ? ", masses re-estimated" : "") : "");
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
             case POINT_SMOOTH, BASE_TURN -> kind.json + " (" + along.words + ")";
-            case INSTRUMENT_SCALE -> kind.json + " (" + along.words + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
+            case INSTRUMENT_SCALE, REFRACTION -> kind.json + " (" + along.words + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
+            case LINK_PERIODIC -> kind.json + " j" + (joint + 1) + " (" + linkAngleText() + ", h " + String.join(",",
+                    Arrays.stream(harmonics).mapToObj(String::valueOf).toList()) + ")";
+            case COMPLIANCE_VARYING -> kind.json + " j" + (joint + 1) + " (" + (payloadShare ? "payload, " : "") + "with " + along.words
+                    + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + (gravity.massesUnknown() ? ", masses estimated" : "") + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case SETTLING -> kind.json + " j" + (joint + 1);
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
@@ -2223,6 +2372,13 @@ public final class Effect {
                     g[o + 2 * i + 1] = Math.cos(stages[i] * q[joint]);
                 }
             }
+            case LINK_PERIODIC -> {
+                double psi = linkAngleAt(q);
+                for (int i = 0; i < harmonics.length; i++) {
+                    g[2 * i] = Math.sin(harmonics[i] * psi);
+                    g[2 * i + 1] = Math.cos(harmonics[i] * psi);
+                }
+            }
             case GRAVITY_PLAY -> g[0] = 0.5 * playSide(gravity.driveTorques(q, Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[joint]);
             case LOAD_PERIODIC -> {
                 double[] hs = orders();
@@ -2266,7 +2422,23 @@ public final class Effect {
                 if (Double.isFinite(x)) bspline(x, lo, hi, g);
                 else Arrays.fill(g, 0);
             }
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case COMPLIANCE_VARYING -> {
+                double x = reading(c), p = Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
+                if (!Double.isFinite(x)) {
+                    Arrays.fill(g, 0);
+                } else if (perMassVarying()) {
+                    // each mass's torque (their sizes unknown) at either end of the range, straight between
+                    double[] t = new double[gravity.massCount()];
+                    gravity.driveTorquesByMass(q, p, joint, t);
+                    double u = Math.max(0, Math.min(1, (x - lo) / (hi - lo)));
+                    for (int k = 0; k < t.length; k++) { g[2 * k] = t[k] * (1 - u); g[2 * k + 1] = t[k] * u; }
+                } else {
+                    double tau = gravity.driveTorques(q, p)[joint] - (payloadShare ? gravity.driveTorques(q, 0)[joint] : 0);
+                    bspline(x, lo, hi, g);
+                    for (int i = 0; i < g.length; i++) g[i] *= tau;
+                }
+            }
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
@@ -2325,6 +2497,14 @@ public final class Effect {
                     double da = instrument.rot(0, a) * d[0] + instrument.rot(1, a) * d[1] + instrument.rot(2, a) * d[2];
                     for (int i = 0; i < nBasis; i++) g3[a * k + i] = da * b[i];
                 }
+            }
+            case REFRACTION -> {
+                // Δp = k(u) d² along the base's z, d the point's horizontal distance from the instrument's origin o = −R_ibᵀ t_ib
+                double[] b = readingBasis(c);
+                if (b == null) break; // an unknown temperature contributes nothing
+                Vec3 o = instrument.inverse().position();
+                double dx = pointBase[0] - o.x(), dy = pointBase[1] - o.y(), d2 = dx * dx + dy * dy;
+                for (int i = 0; i < nBasis; i++) g3[2 * k + i] = d2 * b[i];
             }
             case INSTRUMENT_SCALE -> {
                 // Δp = s(u) (p − o), o the instrument's origin: in base axes R_ibᵀ (s p_i) with p_i = R_ib p + t_ib
@@ -2680,7 +2860,13 @@ public final class Effect {
                 if (model != null) p.put("model_angle", 1.0);
             }
             case POINT_SMOOTH, ZERO_DRIFT, BASE_TURN, TARGET_DRIFT -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); }
-            case INSTRUMENT_SCALE -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
+            case COMPLIANCE_VARYING -> {
+                p.put(along.key + "_min", lo);
+                p.put(along.key + "_max", hi);
+                if (payloadShare) p.put("payload_share", 1.0);
+                if (gravity.fromLengths()) p.put("varying_masses_from_lengths", 1.0);
+            }
+            case INSTRUMENT_SCALE, REFRACTION -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP, BASE_STEP -> p.put("time_s_step", tauS);
             case BASE_CREEP -> { p.put("creep_move_rad", tauS); p.put("creep_count_end", creepCount(Double.POSITIVE_INFINITY)); }
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
@@ -2712,6 +2898,7 @@ public final class Effect {
                 p.put("side_width_nm", sideWidthNm);
                 if (gravity.fromLengths()) p.put("play_masses_from_lengths", 1.0);
             }
+            case LINK_PERIODIC -> { for (int l = 0; l < linkAngle.length; l++) p.put("angle_q" + (l + 1), linkAngle[l]); }
             case LOAD_PERIODIC -> {
                 p.put("load_ref_nm", loadRefNm);
                 if (loadMagnitude) p.put("load_magnitude", 1.0);
@@ -2751,7 +2938,7 @@ public final class Effect {
         if (kind == null) throw d.error(file, "effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT,
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT,
                  TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
@@ -2759,7 +2946,9 @@ public final class Effect {
         };
         Along along = null;
         for (Along a : Along.values()) if (d.parameters().containsKey(a.key + "_min")) along = a;
-        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN || kind == Kind.INSTRUMENT_SCALE || kind == Kind.TARGET_DRIFT)
+        if ((kind == Kind.POINT_SMOOTH || kind == Kind.ZERO_DRIFT || kind == Kind.BASE_TURN || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
+                || kind == Kind.TARGET_DRIFT
+                || kind == Kind.COMPLIANCE_VARYING)
                 && along == null)
             throw d.error(file, "parameters_si", "needs the variable's range, e.g. time_s_min and time_s_max");
         if (js.size() != need)
@@ -2777,6 +2966,18 @@ public final class Effect {
                         : ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
             case PERIODIC -> periodicOf(d, js.get(0) - 1, file);
+            case LINK_PERIODIC -> {
+                double[] c = new double[model.dof()];
+                boolean any = false;
+                for (int l = 0; l < c.length; l++) {
+                    Double v = ps.get("angle_q" + (l + 1));
+                    if (v != null) { c[l] = v; any |= v != 0; }
+                }
+                if (!any) throw d.error(file, "parameters_si", "needs the angle's coefficients angle_q1..angle_q" + model.dof());
+                int[] hs = ps.keySet().stream().filter(key -> key.matches("a\\d+")).mapToInt(key -> Integer.parseInt(key.substring(1))).toArray();
+                if (hs.length == 0) throw d.error(file, "parameters_si", "no harmonic a1, a2, ...");
+                yield linkPeriodic(js.get(0) - 1, c, hs);
+            }
             case GRAVITY_PLAY -> {
                 GravityTorques g = ps.containsKey("play_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
                 if (g == null || g.massesUnknown()) throw needsMassModel(d, file, "joint-gravity-play");
@@ -2857,6 +3058,13 @@ public final class Effect {
                 if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs s1..sN, N >= " + POINT_BASIS);
                 yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
             }
+            case REFRACTION -> {
+                if (along != Along.TIME && along != Along.TEMPERATURE)
+                    throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
+                int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("k\\d+")).count();
+                if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs k1..kN, N >= " + POINT_BASIS);
+                yield refraction(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
+            }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
             case SETTLING -> settling(js.get(0) - 1, Directions.Moves.NONE, null);
             case ANGLE_STEP -> d.parameters().containsKey("q_step_back") ? angleWindow(js.get(0) - 1, require(d, "q_step", file),
@@ -2932,6 +3140,19 @@ public final class Effect {
                 }
                 if (n < 4) throw d.error(file, "parameters_si", "needs e1..eN, N >= 4");
                 yield instrumentReading(sg, inst0, ref, require(d, sg.key + "_min", file), require(d, sg.key + "_max", file), n);
+            }
+            case COMPLIANCE_VARYING -> {
+                if (along != Along.TIME && along != Along.TEMPERATURE)
+                    throw d.error(file, "parameters_si", "a compliance varies with time_s or temp_c");
+                GravityTorques g = ps.containsKey("varying_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
+                boolean share = ps.containsKey("payload_share");
+                if (g == null) throw needsMassModel(d, file, "joint-compliance-varying");
+                int n = (int) ps.keySet().stream().filter(key -> key.matches("c\\d+")).count();
+                if (g.massesUnknown() && !share) {
+                    if (n != 2 * g.massCount()) throw d.error(file, "parameters_si", "needs c1..c" + 2 * g.massCount() + " (two per mass)");
+                    n = 2;
+                } else if (n < 4) throw d.error(file, "parameters_si", "needs c1..cN, N >= 4");
+                yield complianceVarying(js.get(0) - 1, g, along, require(d, along.key + "_min", file), require(d, along.key + "_max", file), n, share);
             }
             case ZERO_DRIFT -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)

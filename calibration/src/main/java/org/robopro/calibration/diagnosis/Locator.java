@@ -41,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -71,6 +71,7 @@ final class Locator {
         boolean stage;              // from the stage scan (placed there, above the harmonic probes)
         double lo, hi;              // range of the variable (smooth, reach, height, time, temperature)
         boolean lengths;            // a length change (not a point translation or a drive)
+        double[] linkAngle;         // the link angle a LINK_PERIODIC harmonic repeats with (Effect#linkAngle)
         String variable, shape, detail;
         private double[] s; // m x k, projected out of the model's span (made from raw when first asked for)
         double[] raw;       // m x k before that projection, or null when the projected columns were given
@@ -283,6 +284,7 @@ final class Locator {
                 out.add(sp);
             }
         }
+        out.addAll(linkPeriodics(t, hMax));
         double[][] time = column(t, c -> c.timeS()), temp = column(t, c -> c.tempC()), pay = column(t, c -> c.payloadKg());
         if (varies(time, 1)) {
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", true));
@@ -1158,6 +1160,55 @@ final class Locator {
             double mid = 0.5 * (v[i - 1] + v[i]);
             if (mid == place || !(v[i] > v[i - 1])) continue;
             out.add(mid);
+        }
+        return out;
+    }
+
+    /**
+     * Each joint's error repeating with its link's other angle ({@link Effect#linkAngle}: against the
+     * link before it where the controller reads it against the ground, or the other way round), at
+     * harmonics 1..{@code hMax} of that angle, each its own 2-column test like a joint's own harmonics.
+     */
+    private static List<Probe> linkPeriodics(Diagnoser.Tester t, int hMax) {
+        List<Probe> out = new ArrayList<>();
+        int poses = t.w.rows.size(), ends = t.ends;
+        for (int j = 0; j < t.dof; j++) {
+            double[] c = Effect.linkAngle(t.w.model, j);
+            if (c == null) continue;
+            double[][] psi = new double[ends][poses], x = new double[ends][poses];
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (int e = 0; e < ends; e++)
+                for (int i = 0; i < poses; i++) {
+                    double[] q = t.endRows.get(e).get(i).q();
+                    double a = 0;
+                    for (int l = 0; l < c.length; l++) a += c[l] * q[l];
+                    psi[e][i] = a;
+                    x[e][i] = Math.toDegrees(a);
+                    lo = Math.min(lo, a);
+                    hi = Math.max(hi, a);
+                }
+            if (!(hi - lo > 1e-6)) continue;
+            List<Reg> regs = new ArrayList<>();
+            List<Integer> ks = new ArrayList<>();
+            for (int h = 1; h <= hMax; h++) {
+                final int hh = h;
+                regs.add((e, i, g) -> { g[0] = Math.sin(hh * psi[e][i]); g[1] = Math.cos(hh * psi[e][i]); });
+                ks.add(2);
+            }
+            List<Probe> batch = drives(t, j, ks, regs);
+            String text = Effect.linkAngleText(c);
+            for (int h = 1; h <= hMax; h++) {
+                Probe p = batch.get(h - 1);
+                p.var = Var.LINK_PERIODIC;
+                p.joint = j;
+                p.harmonic = h;
+                p.linkAngle = c;
+                p.variable = "link angle " + text;
+                p.shape = h + (h == 1 ? " cycle" : " cycles") + " per turn of the link angle " + text + " on joint " + (j + 1);
+                p.x = x;
+                p.xLabel = "link angle " + text + " (deg)";
+                out.add(p);
+            }
         }
         return out;
     }

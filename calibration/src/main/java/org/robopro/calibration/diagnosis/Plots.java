@@ -71,7 +71,7 @@ final class Plots {
         double[] x = new double[pts.size()], y = new double[pts.size()];
         for (int i = 0; i < x.length; i++) { x[i] = pts.get(i)[0]; y[i] = pts.get(i)[1]; }
         double lo = Arrays.stream(x).min().orElse(0), hi = Arrays.stream(x).max().orElse(1);
-        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() || e.stiffens()
+        int nc = e.kind() == Effect.Kind.PERIODIC || e.kind() == Effect.Kind.LINK_PERIODIC || e.kind() == Effect.Kind.SMOOTH || e.buildsUp() || e.heldByGravity() || e.stiffens()
                 || e.runout() ? 400 : 2;
         // a high stage order: enough curve points for about 16 per cycle over the range
         if (e.kind() == Effect.Kind.PERIODIC) nc = (int) Math.max(nc, Math.min(20000, 16 * maxOrder(e) * (hi - lo) / 360));
@@ -111,7 +111,7 @@ final class Plots {
             case LINK_TWIST -> "the flange's lever across the upper arm's plane, times gravity across the arm (m)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
-            case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
+            case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE, REFRACTION -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
             case DRIFT -> e.usesTimeProxy() ? "time since start (s)" : "temperature (°C)";
             case BACKLASH -> e.runout() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
@@ -124,6 +124,9 @@ final class Plots {
             case COUPLING -> "joint " + (e.source() + 1) + " angle q" + (e.source() + 1) + " (deg)";
             case SETTLING -> "speed of joint " + (e.joint() + 1) + " in the move before the reading, synchronised (deg/s)";
             case GRAVITY_PLAY -> "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
+            case LINK_PERIODIC -> "link angle " + e.linkAngleText() + " (deg)";
+            case COMPLIANCE_VARYING -> (e.payloadShare() ? "the payload's gravity torque on drive " : "gravity torque on drive ") + (e.joint() + 1)
+                    + " (N·m; the compliance changes with " + e.along().words + ")";
         };
     }
 
@@ -134,7 +137,7 @@ final class Plots {
             case SMOOTH -> Math.toDegrees(e.smoothVariable(row.q()));
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
-            case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
+            case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE, REFRACTION -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
             case ZERO_STEP, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> c.timeS();
             case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
@@ -155,6 +158,11 @@ final class Plots {
             case COUPLING -> Math.toDegrees(row.q(e.source()));
             case SETTLING -> Math.toDegrees(e.settlingSpeed(row));
             case GRAVITY_PLAY -> e.gravity().driveTorques(row.q(), Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[e.joint()];
+            case LINK_PERIODIC -> Math.toDegrees(e.linkAngleAt(row.q()));
+            case COMPLIANCE_VARYING -> {
+                double p = Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0;
+                yield e.gravity().driveTorques(row.q(), p)[e.joint()] - (e.payloadShare() ? e.gravity().driveTorques(row.q(), 0)[e.joint()] : 0);
+            }
         };
     }
 
@@ -168,6 +176,12 @@ final class Plots {
                 for (int i = 0; i < hs.length; i++) s += v[2 * i] * Math.sin(hs[i] * q) + v[2 * i + 1] * Math.cos(hs[i] * q);
                 yield s;
             }
+            case LINK_PERIODIC -> {
+                double psi = Math.toRadians(x), s = 0;
+                int[] hs = e.harmonics();
+                for (int i = 0; i < hs.length; i++) s += v[2 * i] * Math.sin(hs[i] * psi) + v[2 * i + 1] * Math.cos(hs[i] * psi);
+                yield s;
+            }
             case SMOOTH -> {
                 double[] g = new double[e.basisCount()];
                 Effect.bspline(Math.toRadians(x), e.rangeLo(), e.rangeHi(), g);
@@ -176,7 +190,7 @@ final class Plots {
                 yield s;
             }
             // a load-periodic error is no function of the angle alone: its size follows the load
-            case LOAD_PERIODIC, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
+            case LOAD_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> Double.NaN;

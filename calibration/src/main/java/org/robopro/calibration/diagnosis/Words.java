@@ -145,12 +145,45 @@ final class Words {
                         e.loadMagnitude() ? "its size, whichever way it turns the joint" : "with its sign", Math.toDegrees(Math.sqrt(at0)),
                         Math.toDegrees(Math.sqrt(per)), e.loadRefNm(), e.joint() + 1);
             }
+            case LINK_PERIODIC -> {
+                int[] hs = e.harmonics();
+                double rss = 0;
+                for (double x : v) rss += x * x;
+                yield String.format(Locale.ROOT, "Joint %d's error repeats %s times per turn of the link angle %s (%.4f deg, amplitudes "
+                        + "root-sum-square), not with joint %d's own angle: the angle of its link against the link before it, or against "
+                        + "the ground, which a linkage's rod, lever or bearing, or a counterweight's, turns with. No transmission error of "
+                        + "the drive repeats so, so no known family is named. It is modelled as such so compensation can use it. To confirm, "
+                        + "measure poses that hold %s fixed while joint %d turns, and the other way round.", e.joint() + 1,
+                        String.join(", ", java.util.Arrays.stream(hs).mapToObj(String::valueOf).toList()), e.linkAngleText(),
+                        Math.toDegrees(Math.sqrt(rss)), e.joint() + 1, e.linkAngleText(), e.joint() + 1);
+            }
+            case COMPLIANCE_VARYING -> {
+                // a clamped B-spline starts at its first coefficient and ends at its last; per mass, the payload's pair
+                int pay = e.gravity().payloadIndex();
+                boolean perMass = e.gravity().massesUnknown() && !e.payloadShare();
+                double c0 = perMass ? v[2 * pay] : v[0], c1 = perMass ? v[2 * pay + 1] : v[v.length - 1];
+                boolean time = e.along() == Effect.Along.TIME;
+                yield String.format(Locale.ROOT, "Joint %d gives way under %s, and by an amount that changes with %s: a compliance "
+                        + "of %.3g rad per kN·m at %.4g %s and %.3g at %.4g %s (a stiffness of %s and %s kN·m/rad), not the one "
+                        + "stiffness of a joint compliance, so no known family is named. %s It is modelled as such for these poses. %s",
+                        e.joint() + 1, e.payloadShare() ? "the payload's weight" : "the arm's weight", e.along().words, c0 * 1e3, e.rangeLo(),
+                        e.along().unit, c1 * 1e3, e.rangeHi(), e.along().unit, stiffnessText(c0), stiffnessText(c1),
+                        e.payloadShare() ? "A carried mass that changes while payload_kg stays as recorded does so (a dispensing or gluing "
+                                + "tool emptying, a part dropped): the torque follows the mass, the compliance stays."
+                                : time ? "A stiffness that falls as the joint warms with work does so, or a carried mass that changes."
+                                : "A stiffness that falls as the joint warms does so (a reducer's lubricant thins, its seals soften).",
+                        e.payloadShare() || time ? "Record the carried mass as it changes (payload_kg per pose), or weigh the tool before "
+                                + "and after, and measure a few poses again at the campaign's end."
+                                : "Measure the same poses cold and warmed through, with the joint's temperature recorded, to see the "
+                                + "stiffness change; compensate at the temperature the robot works at.");
+            }
             case PAIR -> String.format(Locale.ROOT, "Joint %d's error depends on joints %d and %d together (%.4f deg RMS over the "
                     + "poses, in products of their sines and cosines, beside terms linear in each angle and in their product) and none of the known effects explains it; it is modelled "
                     + "as such so compensation can use it, but its cause is unknown.", e.joint() + 1, e.joint() + 1, e.source() + 1,
                     Math.toDegrees(Math.sqrt((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) / 4)));
             case BASE_TURN -> baseTurn(e, v);
             case INSTRUMENT_SCALE -> instrumentScale(e, v, at);
+            case REFRACTION -> refraction(e, v);
             case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with %s (a smooth displacement in the "
                     + "base frame over %.4g..%.4g %s) and none of the known effects explains it; it is modelled as such so "
                     + "compensation can use it, but its cause is unknown (%s).", e.along() == Effect.Along.REACH
@@ -524,6 +557,24 @@ final class Words {
                 1e6 * grown, at);
     }
 
+    /** Refractivity of room air, n − 1 (about 20 °C, 1013 hPa; Edlén). */
+    private static final double AIR_REFRACTIVITY = 2.7e-4;
+
+    /** The instrument's beam bent by the air's temperature gradient: the change of the gradient it implies over the range. */
+    private static String refraction(Effect e, double[] v) {
+        double dk = e.splineAt(v, 0, e.rangeHi()) - e.splineAt(v, 0, e.rangeLo());
+        // k = κ/2 and κ = (n − 1)/T · dT/dz: the gradient's change at 293 K
+        double dGrad = 2 * dk * 293.15 / AIR_REFRACTIVITY;
+        return String.format(Locale.ROOT, "The measured points are seen moved up or down by the square of their horizontal distance "
+                + "from the instrument, by an amount that changes with %s: from %.4g to %.4g %s it changes by %+.3g µm at 10 m (a "
+                + "constant part the geometry holds). No error of the robot moves points so: the instrument's beam bent by the air, "
+                + "whose vertical temperature gradient changed by about %+.2f K/m (warm air above cool bends the beam down and the "
+                + "points are seen higher). It is modelled so that it does not bend the robot's fit, and left out of compensation: "
+                + "measure the air's temperature at two heights along the beam, keep the hall's air mixed and the instrument closer "
+                + "to the robot, or let the hall settle before measuring.", e.along().words, e.rangeLo(), e.rangeHi(), e.along().unit,
+                dk * 100 * 1e6, dGrad);
+    }
+
     /** A base or instrument turning with time or temperature: its turn and move from one end of the range to the other. */
     private static String baseTurn(Effect e, double[] v) {
         int nb = e.basisCount();
@@ -575,5 +626,10 @@ final class Words {
                 + "To confirm it, approach the joint from both sides at angles %.1f deg apart, half a cycle of the fastest, and compare "
                 + "the lag, and check the stage's tooth counts.", jn, Math.toDegrees(lo), Math.toDegrees(hi), String.join(", and ", parts),
                 180 / top);
+    }
+
+    /** A stiffness 1/c in kN·m/rad as text; "none" where the compliance is not positive. */
+    private static String stiffnessText(double c) {
+        return c > 0 ? String.format(Locale.ROOT, "%.0f", 1e-3 / c) : "none (the fit's compliance is not positive)";
     }
 }

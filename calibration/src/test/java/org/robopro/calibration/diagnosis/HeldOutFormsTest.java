@@ -372,6 +372,27 @@ class HeldOutFormsTest {
     }
 
     /**
+     * The benchmark's play of joint 2 taken up by gravity, its masses 30 % off the robot file's, on
+     * the draw where one validation pose's torque lies close to the torque's zero: by the file's
+     * masses on one side, by the world's on the other. It misses by about the play (0.5 mm, some 20
+     * robust sigmas); which side it sits on the model cannot tell there, so it is no bad reading: the
+     * notes say so and it stays in the validation error. Away from the side change a pose keeps its
+     * verdict (the benchmark's gross readings elsewhere are still reported).
+     */
+    @Test
+    void poseWhereAGravityPlaysSideChanges_isNoBadReading() {
+        Scenario s = Scenario.catalogue().stream().filter(x -> x.name().startsWith("outside: joint 2's play taken up by gravity"))
+                .findFirst().orElseThrow();
+        WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(20261125));
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.GRAVITY_PLAY),
+                d.effects().stream().map(f -> f.effect().label()).toList().toString());
+        assertEquals(List.of(), d.outliers(), "notes " + d.notes());
+        assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("validation pose") && n.contains("hands the gear")), "notes " + d.notes());
+    }
+
+    /**
      * A tool that grows along its axis as its spindle runs in blocks and rests between them (the
      * world's first-order heating, 0.15 mm when warmed through, never recorded in the file): the
      * measured point drifts on the flange with time. Nothing is named; a drift of the target on the
@@ -870,5 +891,116 @@ class HeldOutFormsTest {
         assertEquals(List.of(), families(d), "notes " + d.notes());
         assertTrue(d.notes().stream().anyMatch(n -> n.startsWith("joint-compliance j2") && n.contains("is not claimed")
                 && n.contains("measure with two or three payloads")), d.notes().toString());
+    }
+
+    /** The effects of {@code kind} the diagnosis modelled, as labels. */
+    static List<String> modelled(Diagnosis d, Effect.Kind kind) {
+        return d.effects().stream().filter(f -> f.effect().kind() == kind).map(f -> f.effect().label()).toList();
+    }
+
+    /**
+     * Joint 2 of the IRB 2000 softening as it warms (the world's spring of 300 kN·m/rad on masses
+     * 30 % off the file's, 5 % softer per kelvin of the campaign's warm-up, the temperature the
+     * campaign reads): the catalogue's compliance has one stiffness, so none is named; a compliance
+     * that changes through the campaign models it, and the validation error comes within 1.15 x the
+     * floor.
+     */
+    @Test
+    void jointSofteningAsItWarms_isAVaryingCompliance() {
+        var n = RobotLibrary.shipped("irb2000");
+        double k = 3e5;
+        for (long seed : new long[] {1, 2}) {
+            Scenario s = scenario("softening joint", "irb2000", Expected.outside(), w -> {
+                var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, new java.util.Random(seed)).withStiffness(1, k);
+                return withErrors(List.of(new JointError.WarmSoftening(1, k, 0.05, 20))).apply(w.withCompliance(m));
+            }, p -> p);
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(n, c.train(), c.validation());
+            System.out.printf("softening seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(modelled(d, Effect.Kind.COMPLIANCE_VARYING).stream().anyMatch(l -> l.contains(" j2 ")),
+                    "seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
+            assertTrue(d.geometricValidateRmsM() > 3 * c.floorM(), "the softening matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * A dispensing tool on the IRB 2400 (the world's springs of joints 2 and 3 under the payload alone,
+     * the arm's own weight balanced, the payload's centre where the robot file puts it): it carries 10 kg
+     * at the start and 2 kg after an hour, while the file records 10 kg throughout. The payload's torque changes with time, which no stiffness does:
+     * nothing is named, a compliance under the payload that changes with time models it.
+     */
+    @Test
+    void dispensingTool_isAPayloadComplianceChangingWithTime() {
+        double inf = Double.POSITIVE_INFINITY;
+        // the payload's centre where the robot file puts it (the flange, for a file without masses): the tool's data gives it
+        var cmp = new WorldRobot.Compliance(new double[] {inf, 2e5, 1e5, inf, inf, inf}, List.of(), new double[] {0, 0, 0},
+                new double[] {0, 0, -9.80665});
+        for (long seed : new long[] {1, 2}) {
+            Scenario s = scenario("dispensing tool", "irb2400", Expected.outside(),
+                    w -> w.withCompliance(cmp).withDispensing(new WorldRobot.Dispensing(new double[] {0, 3600}, new double[] {10, 2})),
+                    p -> p.withPayloads(10));
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), c.validation());
+            System.out.printf("dispensing seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(modelled(d, Effect.Kind.COMPLIANCE_VARYING).stream().anyMatch(l -> l.contains("payload")),
+                    "seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the dispensing matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * Joint 3's error repeating five times per turn of the forearm's angle to the upper arm (q3 − q2
+     * on the IRB 2400's parallel arm, 0.015°) and four times per turn of its angle to the ground on the
+     * PUMA 560 (q2 + q3, 0.02°): no function of joint 3's own angle holds it, and a transmission error
+     * repeats with its drive's turn, so nothing is named; the link angle's harmonic models it at the
+     * world's order.
+     */
+    @Test
+    void errorRepeatingWithALinkAngle_isLocatedAtItsOrder() {
+        record Case(String robot, double sign, int k, double deg) { }
+        for (Case cs : List.of(new Case("irb2400", -1, 5, 0.015), new Case("puma560", 1, 4, 0.02))) {
+            WorldCampaigns.Sim c = world(cs.robot(), Expected.outside(),
+                    List.of(new JointError.LinkHarmonic(2, 1, cs.sign(), cs.k(), Math.toRadians(cs.deg()), 0.7)), p -> p, 3);
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped(cs.robot()), c.train(), c.validation());
+            System.out.printf("link harmonic %s: %.2f -> %.2f x the floor %s%n", cs.robot(), d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), cs.robot() + ": notes " + d.notes());
+            String angle = cs.sign() < 0 ? "−q2 + q3" : "q2 + q3";
+            assertEquals(List.of("link-angle-periodic j3 (" + angle + ", h " + cs.k() + ")"), modelled(d, Effect.Kind.LINK_PERIODIC),
+                    d.effects().stream().map(f -> f.effect().label()).toList().toString());
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the error matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), cs.robot() + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * The IRB 2000 measured from 10 m through air whose vertical temperature gradient grows from 0.3
+     * to 2.5 K/m over the campaign (the world bends the line of sight in its vertical plane): no
+     * error of the robot, and no drift of the instrument, is named; the beam's refraction changing
+     * with time models it, and the validation error comes within 1.15 x the floor.
+     */
+    @Test
+    void beamBentByTheAirsGradient_isRefractionNotADrift() {
+        for (long seed : new long[] {1, 2}) {
+            Scenario s = scenario("refraction", "irb2000", Expected.outside(), w -> {
+                org.robopro.world.Rigid far = org.robopro.world.Rigid.translation(10, 2, 0.5)
+                        .times(org.robopro.world.Rigid.rotation(new double[] {0, 0, 1}, 0.4, new double[3]));
+                return w.withInstrument(far.inverse()).withRefraction(new WorldRobot.Refraction(new double[] {0, 3600}, new double[] {0.3, 2.5}));
+            }, p -> p.withSigma(0.005e-3));
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2000"), c.train(), c.validation());
+            System.out.printf("refraction seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(!modelled(d, Effect.Kind.REFRACTION).isEmpty(), "seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the refraction matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
     }
 }
