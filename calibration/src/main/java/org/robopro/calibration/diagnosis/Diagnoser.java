@@ -4069,6 +4069,13 @@ public final class Diagnoser {
                 for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
                     if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
                         out.add(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(), nb, true));
+        } else if (e.kind() == Effect.Kind.COMPLIANCE_VARYING && !e.payloadShare()) {
+            // the same change of the joint as its zero's drift with the same variable (a motor warming shifts its zero the way a
+            // softening joint gives way where the torque changes little), and the give following the other variable
+            out.add(Effect.zeroDrift(e.joint(), e.along(), e.rangeLo(), e.rangeHi()));
+            Effect.Along other = e.along() == Effect.Along.TIME ? Effect.Along.TEMPERATURE : Effect.Along.TIME;
+            double[] span = other == Effect.Along.TIME ? timeSpan(w.conditions) : tempSpan(w.conditions);
+            if (span != null) out.add(Effect.complianceVarying(e.joint(), e.gravity(), other, span[0], span[1], e.basisCount(), false));
         } else if (e.kind() == Effect.Kind.GRAVITY_PLAY) {
             // where the side changes (the file's masses put the torque's zero only roughly) and how sharply
             for (Effect f : gravityPlays(e.joint(), e.gravity(), rows, w.model, PLAY_SIDE_SHIFTS, PLAY_SIDE_WIDTHS))
