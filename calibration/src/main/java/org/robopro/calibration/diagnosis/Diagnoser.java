@@ -2817,22 +2817,28 @@ public final class Diagnoser {
      * time, and the payload's share of the torque alone with time where a payload is recorded (a
      * carried mass that changes, at the resolutions of a drift in time the poses support). For a
      * compliance, its own joint; for the others, each joint with a compliance in {@code selected},
-     * or with none, each joint the arm's weight loads.
+     * or with none, each joint the arm's weight loads, with temperature only.
      */
     static List<Effect> varyingCompliances(Effect e, List<Effect> selected, Work w) {
         Map<Integer, GravityTorques> joints = new java.util.TreeMap<>();
+        double[] temp = tempSpan(w.conditions), span = timeSpan(w.conditions);
+        boolean withTime = true;
         switch (e.kind()) {
             case COMPLIANCE -> joints.put(e.joint(), e.gravity());
             case THERMAL, THERMAL_LINK, DRIFT -> {
                 for (Effect x : selected) if (x.kind() == Effect.Kind.COMPLIANCE) joints.put(x.joint(), x.gravity());
-                // with no compliance named, each joint the arm's weight loads (a curve of its angle may hold its static give)
-                if (joints.isEmpty() && w.gravity != null)
+                // with no compliance named, each joint the arm's weight loads (a curve of its angle may hold its static give), with
+                // the temperature read only: with time alone a growth's warm-up and a joint's give that changes with time are too
+                // alike to take one for the other on a claim's held-out error
+                if (joints.isEmpty() && w.gravity != null && temp != null) {
                     for (int j = 0; j < w.model.dof(); j++) if (loaded(w.gravity, j, w.rows)) joints.put(j, w.gravity);
+                    withTime = false;
+                }
             }
             default -> { }
         }
         if (joints.isEmpty()) return List.of();
-        double[] time = timeSpan(w.conditions), temp = tempSpan(w.conditions);
+        double[] time = withTime ? span : null;
         boolean payload = w.conditions.stream().anyMatch(c -> c.payloadKg() > 0);
         List<Effect> out = new ArrayList<>();
         joints.forEach((j, g) -> {

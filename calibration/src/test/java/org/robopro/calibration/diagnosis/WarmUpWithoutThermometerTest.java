@@ -92,7 +92,7 @@ class WarmUpWithoutThermometerTest {
         double floor = Math.sqrt(3) * sigma;
         assertTrue(d.geometricValidateRmsM() > 2 * floor, "the growth matters: " + d.geometricValidateRmsM() / floor);
         // one uniform strain with one time constant for two bodies and links of steel and aluminium: near the floor, not at it
-        assertTrue(d.finalValidateRmsM() < 1.3 * floor, "validation " + d.finalValidateRmsM() / floor + " x floor");
+        assertTrue(d.finalValidateRmsM() < 1.3 * floor, "validation " + d.finalValidateRmsM() / floor + " x floor; " + named + "; notes " + d.notes());
         assertEquals(1, named.size(), "named " + named + "; notes " + d.notes());
         assertTrue(named.get(0).startsWith("thermal-expansion (time proxy") && named.get(0).endsWith("cooling in pauses)"), "named " + named);
         String words = d.effects().get(0).words();
