@@ -2817,20 +2817,21 @@ public final class Diagnoser {
      * time, and the payload's share of the torque alone with time where a payload is recorded (a
      * carried mass that changes, at the resolutions of a drift in time the poses support). For a
      * compliance, its own joint; for the others, each joint with a compliance in {@code selected},
-     * or with none, each joint the arm's weight loads, with temperature only.
+     * or with none, each joint the arm's weight loads (the whole torque's give with temperature only,
+     * the payload's share with time).
      */
     static List<Effect> varyingCompliances(Effect e, List<Effect> selected, Work w) {
         Map<Integer, GravityTorques> joints = new java.util.TreeMap<>();
         double[] temp = tempSpan(w.conditions), span = timeSpan(w.conditions);
-        boolean withTime = true;
+        boolean withTime = true, payload = w.conditions.stream().anyMatch(c -> c.payloadKg() > 0);
         switch (e.kind()) {
             case COMPLIANCE -> joints.put(e.joint(), e.gravity());
             case THERMAL, THERMAL_LINK, DRIFT -> {
                 for (Effect x : selected) if (x.kind() == Effect.Kind.COMPLIANCE) joints.put(x.joint(), x.gravity());
-                // with no compliance named, each joint the arm's weight loads (a curve of its angle may hold its static give), with
-                // the temperature read only: with time alone a growth's warm-up and a joint's give that changes with time are too
-                // alike to take one for the other on a claim's held-out error
-                if (joints.isEmpty() && w.gravity != null && temp != null) {
+                // with no compliance named, each joint the arm's weight loads (a curve of its angle may hold its static give), its
+                // whole give with the temperature read only (with time a growth's warm-up and a joint's give that changes with time
+                // are too alike to take one for the other on a claim's held-out error), and a recorded payload's share with time
+                if (joints.isEmpty() && w.gravity != null && (temp != null || payload && span != null)) {
                     for (int j = 0; j < w.model.dof(); j++) if (loaded(w.gravity, j, w.rows)) joints.put(j, w.gravity);
                     withTime = false;
                 }
@@ -2838,14 +2839,15 @@ public final class Diagnoser {
             default -> { }
         }
         if (joints.isEmpty()) return List.of();
-        double[] time = withTime ? span : null;
-        boolean payload = w.conditions.stream().anyMatch(c -> c.payloadKg() > 0);
+        boolean wholeWithTime = withTime;
+        double[] time = span;
         List<Effect> out = new ArrayList<>();
         joints.forEach((j, g) -> {
             int nb = g.massesUnknown() ? 2 : Effect.POINT_BASIS;
             if (temp != null) out.add(Effect.complianceVarying(j, g, Effect.Along.TEMPERATURE, temp[0], temp[1], nb, false));
             if (time == null) return;
-            out.add(Effect.complianceVarying(j, g, Effect.Along.TIME, time[0], time[1], nb, false));
+            if (wholeWithTime) out.add(Effect.complianceVarying(j, g, Effect.Along.TIME, time[0], time[1], nb, false));
+            // a recorded payload whose carried mass changes: its share of the torque following the time
             if (payload)
                 for (int r : Effect.DRIFT_RESOLUTIONS)
                     if (r < Effect.DRIFT_RESOLUTIONS[Effect.DRIFT_RESOLUTIONS.length - 1] && Effect.supported(r, Effect.POINT_BASIS, w.rows.size()))
