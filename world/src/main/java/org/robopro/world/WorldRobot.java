@@ -1022,14 +1022,19 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      */
     public record Dispensing(double[] timesS, double[] kg) {
         public Dispensing {
-            if (timesS.length != kg.length || timesS.length == 0) throw new IllegalArgumentException("times and masses in pairs");
+            requireSeries(timesS, kg);
             timesS = timesS.clone();
             kg = kg.clone();
-            for (int i = 1; i < timesS.length; i++) if (!(timesS[i] >= timesS[i - 1])) throw new IllegalArgumentException("times in order");
         }
 
         /** The mass carried at time t (s). */
         public double at(double t) { return piecewise(timesS, kg, t); }
+    }
+
+    /** A series of values at times for {@link #piecewise}: as many of each, at least one, the times in order. */
+    static void requireSeries(double[] timesS, double[] values) {
+        if (timesS.length != values.length || timesS.length == 0) throw new IllegalArgumentException("times and values in pairs");
+        for (int i = 1; i < timesS.length; i++) if (!(timesS[i] >= timesS[i - 1])) throw new IllegalArgumentException("times in order");
     }
 
     /** The piecewise linear function through (x[i], y[i]) at u, constant beyond its ends (x ascending; equal x: a step). */
@@ -1059,10 +1064,9 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         static final double REFRACTIVITY = 2.7e-4;
 
         public Refraction {
-            if (timesS.length != kPerM.length || timesS.length == 0) throw new IllegalArgumentException("times and gradients in pairs");
+            requireSeries(timesS, kPerM);
             timesS = timesS.clone();
             kPerM = kPerM.clone();
-            for (int i = 1; i < timesS.length; i++) if (!(timesS[i] >= timesS[i - 1])) throw new IllegalArgumentException("times in order");
         }
 
         /** The vertical temperature gradient at time t, K/m. */

@@ -1095,10 +1095,15 @@ public final class Effect {
 
     /** {@link #instrumentScale(Along, Pose, double, double)} with {@code n} functions of the reading (a campaign long enough to follow the air's changes). */
     public static Effect instrumentScale(Along along, Pose instrumentTbase, double lo, double hi, int n) {
-        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("a distance scale drifts with time or temperature");
-        if (!(hi > lo)) throw new IllegalArgumentException("instrument scale range " + lo + ".." + hi);
-        if (n < POINT_BASIS) throw new IllegalArgumentException("instrument scale with " + n + " functions");
-        Effect e = new Effect(Kind.INSTRUMENT_SCALE, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
+        return instrumentAlong(Kind.INSTRUMENT_SCALE, along, instrumentTbase, lo, hi, n);
+    }
+
+    /** An error of the instrument's as a spline of time or temperature over [lo, hi] with {@code n} functions, seen through {@code instrumentTbase}. */
+    private static Effect instrumentAlong(Kind kind, Along along, Pose instrumentTbase, double lo, double hi, int n) {
+        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException(kind.json + " follows time or temperature");
+        if (!(hi > lo)) throw new IllegalArgumentException(kind.json + " range " + lo + ".." + hi);
+        if (n < POINT_BASIS) throw new IllegalArgumentException(kind.json + " with " + n + " functions");
+        Effect e = new Effect(kind, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
         e.along = along;
         e.instrument = instrumentTbase;
         return e;
@@ -1121,13 +1126,7 @@ public final class Effect {
      * campaign, an unknown temperature contributes nothing. Not the robot's: left out of compensation.
      */
     public static Effect refraction(Along along, Pose instrumentTbase, double lo, double hi, int n) {
-        if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException("refraction follows time or temperature");
-        if (!(hi > lo)) throw new IllegalArgumentException("refraction range " + lo + ".." + hi);
-        if (n < POINT_BASIS) throw new IllegalArgumentException("refraction with " + n + " functions");
-        Effect e = new Effect(Kind.REFRACTION, -1, -1, null, false, Double.NaN, Double.NaN, null, lo, hi, null, null, n);
-        e.along = along;
-        e.instrument = instrumentTbase;
-        return e;
+        return instrumentAlong(Kind.REFRACTION, along, instrumentTbase, lo, hi, n);
     }
 
     /**
