@@ -3050,19 +3050,13 @@ public final class Effect {
                     throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
                 yield baseTurn(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             }
-            case INSTRUMENT_SCALE -> {
+            case INSTRUMENT_SCALE, REFRACTION -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
                     throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
-                int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("s\\d+")).count();
-                if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs s1..sN, N >= " + POINT_BASIS);
-                yield instrumentScale(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
-            }
-            case REFRACTION -> {
-                if (along != Along.TIME && along != Along.TEMPERATURE)
-                    throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
-                int n = (int) d.parameters().keySet().stream().filter(key -> key.matches("k\\d+")).count();
-                if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs k1..kN, N >= " + POINT_BASIS);
-                yield refraction(along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
+                String c = kind == Kind.INSTRUMENT_SCALE ? "s" : "k"; // the coefficients' letter (parameterNames)
+                int n = (int) d.parameters().keySet().stream().filter(key -> key.matches(c + "\\d+")).count();
+                if (n < POINT_BASIS) throw d.error(file, "parameters_si", "needs " + c + "1.." + c + "N, N >= " + POINT_BASIS);
+                yield instrumentAlong(kind, along, instrumentOf(d, file), require(d, along.key + "_min", file), require(d, along.key + "_max", file), n);
             }
             case ZERO_STEP -> zeroStep(js.get(0) - 1, require(d, "time_s_step", file));
             case SETTLING -> settling(js.get(0) - 1, Directions.Moves.NONE, null);

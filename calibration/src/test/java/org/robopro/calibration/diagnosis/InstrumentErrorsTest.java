@@ -157,4 +157,30 @@ class InstrumentErrorsTest {
         assertEquals(e.label(), e2.label());
         assertEquals(0, e2.displacement(back.terms().get(0).values(), q, late, far).minus(dLate).norm(), 1e-15);
     }
+
+    /**
+     * The beam bent by the air moves a point straight up by k·d², d its horizontal distance from the
+     * instrument: at the instrument nothing, twice as far four times as much, whatever the point's
+     * height; the robot file keeps it, read back through the same reader as the instrument's scale.
+     */
+    @Test
+    void refractionMovesAPointUpByItsHorizontalDistanceSquaredAndSurvivesTheRobotFile() {
+        var model = org.robopro.kinematics.KinematicModel.build(RobotLibrary.shipped("irb2000"));
+        var inst = org.robopro.kinematics.Pose.translation(3, 0.2, -0.5);   // the instrument's origin at (-3, -0.2, 0.5) in the base
+        Effect e = Effect.refraction(Effect.Along.TIME, inst, 0, 3600, 4);
+        double[] flat = {1e-6, 1e-6, 1e-6, 1e-6};
+        double[] q = {0.3, 0.2, -0.1, 0.5, 0.4, 0.2};
+        var late = new org.robopro.calibration.PoseConditions(null, 3600, Double.NaN, Double.NaN);
+        assertEquals(0, e.displacement(flat, q, late, new Vec3(-3, -0.2, 2)).norm(), 1e-18);
+        Vec3 near = e.displacement(flat, q, late, new Vec3(-1, -0.2, 0)), far = e.displacement(flat, q, late, new Vec3(1, -0.2, 1.5));
+        assertEquals(1e-6 * 4, near.z(), 1e-18);
+        assertEquals(0, Math.hypot(near.x(), near.y()), 1e-18);
+        assertEquals(4 * near.z(), far.z(), 1e-18);
+        ExtendedModel ext = new ExtendedModel(model, List.of(new Effect.Term(e, flat)));
+        ExtendedModel back = ExtendedModel.of(org.robopro.models.RobotFile.parse("extended.robot.json",
+                org.robopro.models.RobotFile.format(ext.toDescription())), "extended.robot.json");
+        Effect e2 = back.terms().get(0).effect();
+        assertEquals(e.label(), e2.label());
+        assertEquals(0, e2.displacement(back.terms().get(0).values(), q, late, new Vec3(1, -0.2, 1.5)).minus(far).norm(), 1e-18);
+    }
 }
