@@ -288,6 +288,24 @@ public sealed interface JointError {
     }
 
     /**
+     * Outside every catalogue family: drive {@code joint}'s last gear stage seated in a bearing bore of
+     * the housing that joint {@code housing} turns (the wrist: joint 5's drive runs from its motor in
+     * the forearm through joint 4's housing), the bore out of round by {@code ovality} (m, radial,
+     * half the difference of its diameters: an uneven bolt-up of a thin section). The seat turns with
+     * the housing while the mesh stays with the gear, so the mesh's depth changes by ovality ·
+     * cos 2(q_housing − {@code major}); a preloaded mesh at pressure angle α turns the output by the
+     * depth · tan α over the pitch radius {@code radius} (m) (involute gearing: a radial shift e of
+     * the centre moves the contact along the line of action by e·sin α, the pitch circle by e·tan α;
+     * Dudley, Handbook of Practical Gear Design, ch. 2).
+     */
+    record OvalSeat(int joint, int housing, double ovality, double pressureAngle, double radius, double major) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            double depth = ovality * Math.cos(2 * (q[housing] - major));
+            return depth * Math.tan(pressureAngle) / radius;
+        }
+    }
+
+    /**
      * Lost motion that builds up over the move: the play plus the transmission's friction
      * wind-up, which reaches its full size only after the joint has travelled a distance of the
      * order of {@code buildUp} (Dahl's solid-friction model: the friction force follows
@@ -323,6 +341,26 @@ public sealed interface JointError {
      */
     record DriveThermal(int joint, double perK, double refC) implements JointError {
         @Override public double delta(double[] q, Moment m) { return Double.isFinite(m.tempC()) ? perK * (m.tempC() - refC) : 0; }
+    }
+
+    /**
+     * Outside every catalogue family: the joint's angle read by an encoder on its output (a magnetic
+     * ring, or an optical one read by two heads) from two channels in quadrature, sin θ and cos θ,
+     * whose gains drift apart with the temperature: the sine channel's gain is 1 + g relative to the
+     * cosine's, g = {@code gainPerK}·(T − {@code refC}), the two matched at refC. The controller takes
+     * q = atan2((1 + g) sin θ, cos θ), so the output is θ = atan2(sin q, (1 + g) cos q); to first order
+     * q − θ = (g/2) sin 2θ, an error twice a turn whose size follows the temperature (Hoseinnezhad,
+     * Bab-Hadiashar &amp; Harding, "Calibration of resolver sensors in electromechanical braking
+     * systems", IEEE Trans. Ind. Electron. 53 (2006) 1052: amplitude imbalance gives the second
+     * harmonic).
+     */
+    record QuadratureGain(int joint, double gainPerK, double refC) implements JointError {
+        @Override public double delta(double[] q, Moment m) {
+            if (!Double.isFinite(m.tempC())) return 0;
+            double g = gainPerK * (m.tempC() - refC), qj = q[joint];
+            double theta = Math.atan2(Math.sin(qj), (1 + g) * Math.cos(qj));
+            return Math.IEEEremainder(theta - qj, 2 * Math.PI);
+        }
     }
 
     /**

@@ -777,6 +777,31 @@ public record Scenario(String name, String family, String robot, Expected expect
                             : new WorldRobot.Dispensing(new double[] {t1, t1 + 1, t2, t2 + 1}, new double[] {10, mid, mid, end});
                     return w -> w.withCompliance(cmp).withDispensing(d);
                 }, p -> p.withPayloads(10)));
+        // the same tool with its reservoir hanging off the flange (its centre 40-100 mm out along the tool and up to 40 mm across
+        // it, where the file without masses puts it at the flange), emptying steadily
+        c.add(s("outside: a dispensing tool off the flange empties while the file records it full", "outside", "irb2400", Expected.outside(),
+                (n, r) -> {
+                    double inf = Double.POSITIVE_INFINITY, across = uniform(r, 0, 0.04), turn = 2 * Math.PI * r.nextDouble();
+                    var cmp = new WorldRobot.Compliance(new double[] {inf, uniform(r, 1.5e5, 3e5), uniform(r, 0.8e5, 1.5e5), inf, inf, inf},
+                            List.of(), new double[] {across * Math.cos(turn), across * Math.sin(turn), uniform(r, 0.04, 0.1)},
+                            new double[] {0, 0, -9.80665});
+                    var d = new WorldRobot.Dispensing(new double[] {0, 3000}, new double[] {10, uniform(r, 1, 3)});
+                    return w -> w.withCompliance(cmp).withDispensing(d);
+                }, p -> p.withPayloads(10)));
+        // joint 1 (and joint 2 of the PUMA 560, 6-15e-5) read by an encoder whose channels' gains drift apart by 2-5e-5 per kelvin, matched
+        // at 20-24 °C: an error twice a turn growing through the warm-up (up to 0.005-0.02 deg)
+        c.add(s("outside: j1's encoder channels drifting apart as it warms", "outside", "irb2000", Expected.outside(),
+                (n, r) -> add(new JointError.QuadratureGain(0, uniform(r, 2e-5, 5e-5), uniform(r, 20, 24))), same()));
+        c.add(s("outside: j2's encoder channels drifting apart as it warms, puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> add(new JointError.QuadratureGain(1, uniform(r, 6e-5, 1.5e-4), uniform(r, 20, 24))), same()));
+        // joint 5's drive through an oval bearing seat in joint 4's housing (20-50 um radial, a 25 mm pitch radius, 20 deg
+        // pressure angle: 0.017-0.042 deg twice per turn of joint 4), on the IRB 2400 and the PUMA 560
+        c.add(s("outside: j5's drive through an oval seat in joint 4's housing", "outside", "irb2400", Expected.outside(),
+                (n, r) -> add(new JointError.OvalSeat(4, 3, uniform(r, 20e-6, 50e-6), Math.toRadians(20), 0.025, 2 * Math.PI * r.nextDouble())),
+                same()));
+        c.add(s("outside: j5's drive through an oval seat in joint 4's housing, puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> add(new JointError.OvalSeat(4, 3, uniform(r, 20e-6, 50e-6), Math.toRadians(20), 0.025, 2 * Math.PI * r.nextDouble())),
+                same()));
         // joint 3's error repeating 3-9 times per turn of the forearm's angle to the upper arm (a parallel arm's rod and lever), and
         // on the PUMA 560 with the forearm's angle to the ground (a serial arm's counterweight)
         c.add(s("outside: j3 error repeating with the forearm's angle to the upper arm", "outside", "irb2400", Expected.outside(),

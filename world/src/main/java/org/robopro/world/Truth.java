@@ -308,6 +308,17 @@ final class Truth {
             m.put("cycles_per_turn", lh.k());
             m.put("amplitude_deg", Math.toDegrees(lh.amplitude()));
             m.put("phase_rad", lh.phase());
+        } else if (e instanceof JointError.QuadratureGain qg) {
+            m.put("type", "encoder channels' gains drifting apart with temperature (outside): q = atan2((1 + g) sin theta, cos theta), g = per_k (T - ref)");
+            m.put("gain_per_k", qg.gainPerK());
+            m.put("ref_c", qg.refC());
+        } else if (e instanceof JointError.OvalSeat os) {
+            m.put("type", "drive through an oval bearing seat in another joint's housing (outside): output += e cos 2(q_housing - major) tan(alpha) / r");
+            m.put("housing", os.housing() + 1);
+            m.put("ovality_um", os.ovality() * 1e6);
+            m.put("pressure_angle_deg", Math.toDegrees(os.pressureAngle()));
+            m.put("radius_mm", os.radius() * 1e3);
+            m.put("major_deg", Math.toDegrees(os.major()));
         } else if (e instanceof JointError.MotorWarm mw) {
             m.put("type", "drive zero moving as its motor warms (outside)");
             m.put("shift_deg", Math.toDegrees(mw.shift()));

@@ -19,6 +19,40 @@ class NewFormsTest {
 
     static JointError.Moment at(int[] dir, double[] lastMove, double t, double temp) { return new JointError.Moment(dir, lastMove, t, temp); }
 
+    /**
+     * An encoder whose sine channel reads 1 + g of the cosine's: the controller's q satisfies
+     * tan q = (1 + g) tan θ, so at q = 0° and 90° the output is where it is read, and at 45° it lags the
+     * reading by about (g/2)·sin 90°; at the matching temperature nothing.
+     */
+    /**
+     * Joint 5's drive through a seat 40 µm out of round in joint 4's housing, a 25 mm pitch radius at 20°:
+     * with the housing at the bore's long axis the mesh is 40 µm deeper and the output turns by
+     * 40 µm·tan 20°/25 mm; a quarter turn of the housing later (the short axis) as much the other way;
+     * an eighth of a turn off, nothing; joint 5's own angle does not change it.
+     */
+    @Test
+    void ovalSeatTurnsTheDriveTwiceAPerTurnOfItsHousing() {
+        double major = Math.toRadians(30), full = 40e-6 * Math.tan(Math.toRadians(20)) / 0.025;
+        var e = new JointError.OvalSeat(4, 3, 40e-6, Math.toRadians(20), 0.025, major);
+        var m = at(new int[6], null, 0, 20);
+        assertEquals(full, e.delta(new double[] {0, 0, 0, major, 0.3, 0}, m), 1e-15);
+        assertEquals(full, e.delta(new double[] {0, 0, 0, major + Math.PI, -1.1, 0}, m), 1e-15);
+        assertEquals(-full, e.delta(new double[] {0, 0, 0, major + Math.PI / 2, 0.3, 0}, m), 1e-15);
+        assertEquals(0, e.delta(new double[] {0, 0, 0, major + Math.PI / 4, 0.3, 0}, m), 1e-15);
+    }
+
+    @Test
+    void encoderChannelsOutOfBalanceReadTwiceATurnWrong() {
+        var e = new JointError.QuadratureGain(0, 1e-4, 20);
+        double g = 1e-4 * (30 - 20);
+        var warm = at(new int[6], null, 0, 30);
+        for (double deg : new double[] {0, 90, 180, -90}) assertEquals(0, e.delta(new double[] {Math.toRadians(deg), 0, 0, 0, 0, 0}, warm), 1e-15);
+        double q = Math.toRadians(45), theta = q + e.delta(new double[] {q, 0, 0, 0, 0, 0}, warm);
+        assertEquals(Math.tan(q), (1 + g) * Math.tan(theta), 1e-12);
+        assertEquals(-g / 2, theta - q, 1e-6);
+        assertEquals(0, e.delta(new double[] {q, 0, 0, 0, 0, 0}, at(new int[6], null, 0, 20)), 1e-15);
+    }
+
     @Test
     void unequalFlanks_lagFullyOneWayAndLessTheOther() {
         var e = new JointError.AsymmetricLostMotion(1, Math.toRadians(0.04), Math.toRadians(0.02));

@@ -1730,7 +1730,7 @@ public final class Diagnoser {
                 for (Candidate c : cs) {
                     c.threshold = threshold;
                     if (!(c.p < threshold) || !(c.pressAfter < c.pressBefore)) continue;
-                    if (inPlaceOnly(c.effect)) continue;
+                    if (inPlaceOnly(c.effect) || secondForm(c.effect, selected, null)) continue;
                     if (!c.plausible) { implausible.put(c.effect.label(), c); continue; }
                     if (best == null || lowerBic(c.bic, best.bic)) best = c;
                 }
@@ -2492,7 +2492,8 @@ public final class Diagnoser {
         Effect e = selected.get(k);
         Step old = steps.get(k);
         Fit without = dropAndRefit(w, fit, selected, absorbedCols, steps, k);
-        if (by == null) return without;
+        // a second form of what the model holds already: that form stands for it
+        if (by == null || secondForm(by, selected, e)) return without;
         Tester wt = w.tester(without);
         Candidate bc = wt.test(by, w.conditions);
         if (bc.keptColumns == 0 || heldOut && !(bc.pressAfter < bc.pressBefore)) return without;
@@ -2856,6 +2857,9 @@ public final class Diagnoser {
         return out;
     }
 
+    /** The farthest a payload's centre estimated with its varying compliance may lie from where the file puts it, m. */
+    static final double MAX_PAYLOAD_SHIFT_M = 0.5;
+
     /** Gravity torque (N·m) below which a joint counts as not loaded by the arm's weight over the poses. */
     static final double LOADED_NM = 1;
 
@@ -2893,6 +2897,17 @@ public final class Diagnoser {
             ref = Math.max(ref, Math.abs(g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[e.joint()]));
         if (!(ref > 0) || Double.isInfinite(ref)) return List.of();
         return List.of(Effect.loadPeriodic(e, g, ref, false), Effect.loadPeriodic(e, g, ref, true));
+    }
+
+    /**
+     * The rival of a named transmission error {@code e} whose size changes with the temperature
+     * ({@link Effect#periodicWarming}) at its whole orders, over the poses' temperatures; none without
+     * a temperature that changes, or for a shaft's orders.
+     */
+    static List<Effect> warmPeriodics(Effect e, List<PoseConditions> conditions) {
+        double[] span = tempSpan(conditions);
+        if (e.kind() != Effect.Kind.PERIODIC || e.shaftOrders() || e.harmonics().length == 0 || span == null) return List.of();
+        return List.of(Effect.periodicWarming(e.joint(), e.harmonics(), span[0], span[1]));
     }
 
     /** Whether a coupling matrix row is joint k's own value alone (θ_k = q_k). */
@@ -3326,6 +3341,7 @@ public final class Diagnoser {
                 Tester at = w.tester(fit);
                 List<Effect> own = ownFallbacks(e, rows, w.model);
                 own.addAll(loadPeriodics(e, gravity, rows, w.model));
+                own.addAll(warmPeriodics(e, w.conditions));
                 own.addAll(varyingCompliances(e, selected, w));
                 Map<String, Effect> rivals = new LinkedHashMap<>();
                 for (Effect f : own) rivals.put(f.label(), f);
@@ -3451,7 +3467,7 @@ public final class Diagnoser {
         // a zero step the time between two poses that does, a joint's curve or step the play taken up by gravity that does.
         for (int k = 0; k < selected.size(); k++) {
             Effect e = selected.get(k);
-            List<Effect> variants = refinements(e, w, rows);
+            List<Effect> variants = refinements(e, w, rows, selected);
             if (variants.isEmpty()) continue;
             Tester at = w.tester(fit);
             double pressOwn = at.pressFull();
@@ -3463,6 +3479,7 @@ public final class Diagnoser {
                     if ((f.kind() == e.kind()) != own) continue;
                     // another shape the model holds already (a drift of the target beside one of its steps) is not made twice
                     if (!own && selected.stream().anyMatch(x -> x.kind() == f.kind() && x.joint() == f.joint())) continue;
+                    if (secondForm(f, selected, e)) continue;
                     double pf = at.pressReplacing(k, f, w.conditions);
                     if (pf < bestPress) { bestPress = pf; best = f; }
                 }
@@ -3907,6 +3924,34 @@ public final class Diagnoser {
     }
 
     /**
+     * Whether {@code e} would be a second form of a structure the selected effects (but {@code replaced},
+     * the one {@code e} would stand in place of; null: none) hold already, so that it is not a second
+     * effect and the forms stand against each other in the selected one's place:
+     * <ul>
+     * <li>a payload's varying compliance of a joint that has one: one carried mass changes one way (steps
+     * beside a spline, another centre);</li>
+     * <li>a joint's give under gravity (a compliance, fixed or varying) and its error growing with the
+     * temperature at its own angle's orders ({@link Effect#periodicWarming}), either way round: on a
+     * joint the weight loads, the give changing through a warm-up is the compliance's own rival (a
+     * varying compliance), and a warming error beside the compliance would hold that change so that the
+     * rival finds nothing beside the claim.</li>
+     * </ul>
+     */
+    static boolean secondForm(Effect e, List<Effect> selected, Effect replaced) {
+        boolean mass = e.kind() == Effect.Kind.COMPLIANCE_VARYING && e.payloadShare();
+        boolean give = e.kind() == Effect.Kind.COMPLIANCE || e.kind() == Effect.Kind.COMPLIANCE_VARYING;
+        boolean warm = e.kind() == Effect.Kind.WARM_PERIODIC;
+        if (!mass && !give && !warm) return false;
+        for (Effect x : selected) {
+            if (x == e || x == replaced || x.joint() != e.joint()) continue;
+            if (mass && x.kind() == Effect.Kind.COMPLIANCE_VARYING && x.payloadShare()) return true;
+            if (give && x.kind() == Effect.Kind.WARM_PERIODIC) return true;
+            if (warm && (x.kind() == Effect.Kind.COMPLIANCE || x.kind() == Effect.Kind.COMPLIANCE_VARYING)) return true;
+        }
+        return false;
+    }
+
+    /**
      * Whether a transmission error shares its drive with another named family (a lost motion, a
      * compliance, a scale error of the same joint). What such a family's form leaves of the true
      * physics (a lag that winds up in a way the model does not hold, a stiffness that is not
@@ -3944,7 +3989,7 @@ public final class Diagnoser {
             double press = t.pressFull();
             List<Candidate> cs = new ArrayList<>();
             for (Effect f : candidates) {
-                if (!f.isFallback() || selected.stream().anyMatch(x -> x.label().equals(f.label()))) continue;
+                if (!f.isFallback() || secondForm(f, selected, null) || selected.stream().anyMatch(x -> x.label().equals(f.label()))) continue;
                 Candidate c = t.test(f, w.conditions);
                 if (c.keptColumns > 0) cs.add(c);
             }
@@ -4027,7 +4072,7 @@ public final class Diagnoser {
     }
 
     /** The variants of a fallback to try: a smooth error's other resolutions, a zero step's neighbouring times. */
-    private static List<Effect> refinements(Effect e, Work w, List<Measurement> rows) {
+    private static List<Effect> refinements(Effect e, Work w, List<Measurement> rows, List<Effect> selected) {
         List<Effect> out = new ArrayList<>();
         if (e.kind() == Effect.Kind.INSTRUMENT && Double.isFinite(e.cycle())) {
             // the period between the scan's grid points (a quarter and a half of its step either side): the phase
@@ -4076,7 +4121,57 @@ public final class Diagnoser {
             if (e.along() == Effect.Along.TIME && rows.stream().anyMatch(r -> r.payloadKg() > 0))
                 for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
                     if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
-                        out.add(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(), nb, true));
+                        withPayloadCentre(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(), nb, true), rows, out);
+        }
+        if (e.kind() == Effect.Kind.WARM_PERIODIC && w.gravity != null && loaded(w.gravity, e.joint(), rows)) {
+            // on a joint the arm's weight loads, an error of its angle changing through the warm-up may be its give under gravity
+            // changing: the joint softening as it warms, a carried mass changing while the file records one
+            double[] temp = tempSpan(w.conditions), time = timeSpan(w.conditions);
+            if (temp != null)
+                out.add(Effect.complianceVarying(e.joint(), w.gravity, Effect.Along.TEMPERATURE, temp[0], temp[1],
+                        w.gravity.massesUnknown() ? 2 : Effect.POINT_BASIS, false));
+            if (time != null && rows.stream().anyMatch(r -> r.payloadKg() > 0))
+                for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
+                    if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
+                        withPayloadCentre(Effect.complianceVarying(e.joint(), w.gravity, Effect.Along.TIME, time[0], time[1], nb, true), rows, out);
+        }
+        if (e.kind() == Effect.Kind.COMPLIANCE_VARYING && e.payloadShare()) {
+            // one carried mass: its shape in time and its centre, each varied with the other kept
+            List<Effect> shapes = new ArrayList<>();
+            boolean free = e.payloadCentreFree();
+            if (e.stepTimes() != null) {
+                // each step moved to the places near it (the others kept)
+                double[] t = w.conditions.stream().mapToDouble(PoseConditions::timeS).filter(Double::isFinite).toArray();
+                double[] steps = e.stepTimes();
+                for (int i = 0; i < steps.length; i++)
+                    for (double tau : Locator.placesNear(t, steps[i])) {
+                        double[] moved = steps.clone();
+                        moved[i] = tau;
+                        Arrays.sort(moved);
+                        if (java.util.stream.IntStream.range(1, moved.length).allMatch(k -> moved[k] > moved[k - 1]))
+                            shapes.add(Effect.complianceInSteps(e.joint(), e.gravity(), moved));
+                    }
+                // one carried mass changes at the same moments for every joint it loads: another joint's steps
+                for (Effect x : selected)
+                    if (x != e && x.kind() == Effect.Kind.COMPLIANCE_VARYING && x.stepTimes() != null && !Arrays.equals(x.stepTimes(), steps))
+                        shapes.add(Effect.complianceInSteps(e.joint(), e.gravity(), x.stepTimes()));
+                // and the mass changing steadily instead (a spline of the time over the campaign)
+                double[] span = timeSpan(w.conditions);
+                if (span != null)
+                    for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
+                        if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
+                            shapes.add(Effect.complianceVarying(e.joint(), e.gravity(), Effect.Along.TIME, span[0], span[1], nb, true));
+            }
+            for (Effect f : shapes) {
+                Effect g = free ? Effect.withPayloadCentreFree(f) : f;
+                if (Effect.supported(g.size(), 1, rows.size())) out.add(g);
+            }
+            // the payload's centre off the file's (a tool's reservoir hanging off the flange) estimated with the compliance, or
+            // where the file puts it
+            Effect same = e.stepTimes() != null ? Effect.complianceInSteps(e.joint(), e.gravity(), e.stepTimes())
+                    : Effect.complianceVarying(e.joint(), e.gravity(), e.along(), e.rangeLo(), e.rangeHi(), e.basisCount(), true);
+            Effect other = free ? same : Effect.withPayloadCentreFree(same);
+            if (Effect.supported(other.size(), 1, rows.size())) out.add(other);
         } else if (e.kind() == Effect.Kind.COMPLIANCE_VARYING && !e.payloadShare()) {
             // the same change of the joint as its zero's drift with the same variable (a motor warming shifts its zero the way a
             // softening joint gives way where the torque changes little), and the give following the other variable
@@ -4596,10 +4691,18 @@ public final class Diagnoser {
             case ANGLE_PERIODIC -> String.format(Locale.ROOT, "measure joint %d over its whole range in small steps with the "
                     + "other joints still (at least %d poses per cycle of the %d-cycle error); a periodic error that stays is in "
                     + "the joint's transmission.", f.probe.joint + 1, Locator.POSES_PER_HARMONIC, f.probe.harmonic);
-            case LINK_PERIODIC -> String.format(Locale.ROOT, "measure joint %d's error over the link angle %s in small steps, "
+            case LINK_PERIODIC -> f.probe.linkAngle[f.probe.joint] == 0
+                    ? String.format(Locale.ROOT, "measure joint %d's error at a few of its angles while %s turns through a whole "
+                    + "turn in small steps: an error that follows %s is in the housing joint %d's drive passes through (a bearing "
+                    + "seat or a gear out of round), not in joint %d's own gear.", f.probe.joint + 1, Effect.linkAngleText(f.probe.linkAngle),
+                    Effect.linkAngleText(f.probe.linkAngle), f.probe.joint + 1, f.probe.joint + 1)
+                    : String.format(Locale.ROOT, "measure joint %d's error over the link angle %s in small steps, "
                     + "once turning joint %d with the link angle held, once the other way round: an error that follows the link "
                     + "angle is in the linkage (its rod, lever or bearings), not the drive.", f.probe.joint + 1,
                     Effect.linkAngleText(f.probe.linkAngle), f.probe.joint + 1);
+            case WARM_PERIODIC -> String.format(Locale.ROOT, "measure joint %d over its whole range in small steps cold and again "
+                    + "warmed through, with the temperature at the joint recorded: an error that repeats %d times a turn and grows as it "
+                    + "warms is in its encoder (its channels' gains drifting apart), not its gear.", f.probe.joint + 1, f.probe.harmonic);
             case ANGLE_SMOOTH -> String.format(Locale.ROOT, "sweep joint %d slowly through its range with the other joints still, "
                     + "in both directions, and look for a place-bound error (a damaged gear stretch, a cable or hose pulling).",
                     f.probe.joint + 1);
@@ -4901,7 +5004,16 @@ public final class Diagnoser {
         if (gravity != null && rows.stream().anyMatch(r -> r.payloadKg() > 0))
             for (Locator.Found f : found)
                 if (f.probe.var == Locator.Var.TIME && f.probe.joint >= 0 && f.probe.hi > f.probe.lo && loaded(gravity, f.probe.joint, rows))
-                    out.add(Effect.complianceVarying(f.probe.joint, gravity, Effect.Along.TIME, f.probe.lo, f.probe.hi, Effect.POINT_BASIS, true));
+                    withPayloadCentre(Effect.complianceVarying(f.probe.joint, gravity, Effect.Along.TIME, f.probe.lo, f.probe.hi,
+                            Effect.POINT_BASIS, true), rows, out);
+        // a zero, the target or the base stepping at moments under a recorded payload may be the carried mass changing at those
+        // moments (a dispensing tool's shots, a part dropped): the payload's torque on each loaded joint, its compliance stepping there
+        if (gravity != null && rows.stream().anyMatch(r -> r.payloadKg() > 0)) {
+            double[] times = stepPlaces(found.stream().filter(f -> f.probe.var == Locator.Var.TIME_STEP || f.probe.var == Locator.Var.TARGET_STEP
+                    || f.probe.var == Locator.Var.BASE_STEP).mapToDouble(f -> f.probe.lo), rows);
+            if (times.length > 0)
+                for (int j = 0; j < dof; j++) if (loaded(gravity, j, rows)) withPayloadCentre(Effect.complianceInSteps(j, gravity, times), rows, out);
+        }
         for (Locator.Found f : found) {
             if (f.probe.var == Locator.Var.TARGET_STEP || f.probe.var == Locator.Var.BASE_STEP)
                 out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
@@ -4917,6 +5029,33 @@ public final class Diagnoser {
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
         return out;
     }
+
+    /**
+     * A payload's varying compliance {@code e} into {@code out}, and beside it the same with the payload's
+     * centre estimated ({@link Effect#withPayloadCentreFree}) where the poses support its columns.
+     */
+    static void withPayloadCentre(Effect e, List<Measurement> rows, List<Effect> out) {
+        out.add(e);
+        Effect free = Effect.withPayloadCentreFree(e);
+        if (Effect.supported(free.size(), 1, rows.size())) out.add(free);
+    }
+
+    /**
+     * The moments (s, rising) of steps located at {@code places}, those within {@link #STEP_MERGE_SHARE}
+     * of the campaign's time span of an earlier one taken as the same step.
+     */
+    static double[] stepPlaces(java.util.stream.DoubleStream places, List<Measurement> rows) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Measurement r : rows) if (Double.isFinite(r.timeS())) { lo = Math.min(lo, r.timeS()); hi = Math.max(hi, r.timeS()); }
+        double gap = STEP_MERGE_SHARE * (hi - lo);
+        double[] sorted = places.filter(Double::isFinite).sorted().toArray();
+        List<Double> out = new ArrayList<>();
+        for (double t : sorted) if (out.isEmpty() || t - out.get(out.size() - 1) > gap) out.add(t);
+        return out.stream().mapToDouble(Double::doubleValue).toArray();
+    }
+
+    /** Share of the campaign's time span within which two located steps are taken as one. */
+    static final double STEP_MERGE_SHARE = 0.01;
 
     /**
      * The effect of a step located in {@code var} at {@code place}: a reading's step in joint
@@ -4994,9 +5133,22 @@ public final class Diagnoser {
     static List<Effect> bodyShapes(List<Locator.Found> found, KinematicModel model) {
         List<Effect> out = new ArrayList<>();
         for (int j = 0; j < model.dof(); j++) {
-            int[] links = ordersFound(found, Locator.Var.LINK_PERIODIC, j);
-            double[] angle = Effect.linkAngle(model, j);
-            if (links.length > 0 && angle != null) out.add(Effect.linkPeriodic(j, angle, links));
+            // each angle the joint's error was located to repeat with, at every order located for it
+            final int jj = j;
+            List<double[]> angles = new ArrayList<>();
+            for (Locator.Found f : found)
+                if (f.probe.var == Locator.Var.LINK_PERIODIC && f.probe.joint == j && angles.stream().noneMatch(a -> Arrays.equals(a, f.probe.linkAngle)))
+                    angles.add(f.probe.linkAngle);
+            for (double[] angle : angles) {
+                int[] links = found.stream().filter(f -> f.probe.var == Locator.Var.LINK_PERIODIC && f.probe.joint == jj
+                        && Arrays.equals(f.probe.linkAngle, angle)).mapToInt(f -> f.probe.harmonic).distinct().sorted().toArray();
+                out.add(Effect.linkPeriodic(j, angle, links));
+            }
+            int[] warm = ordersFound(found, Locator.Var.WARM_PERIODIC, j);
+            if (warm.length > 0) {
+                Locator.Found f = found.stream().filter(x -> x.probe.var == Locator.Var.WARM_PERIODIC && x.probe.joint == jj).findFirst().orElseThrow();
+                out.add(Effect.periodicWarming(j, warm, f.probe.lo, f.probe.hi));
+            }
             int[] tilts = ordersFound(found, Locator.Var.AXIS_WOBBLE, j), shifts = ordersFound(found, Locator.Var.AXIAL_RUNOUT, j);
             if (tilts.length > 0) out.add(Effect.axisWobble(model, j, tilts));
             if (shifts.length > 0) out.add(Effect.axialRunout(model, j, shifts));
@@ -5275,6 +5427,8 @@ public final class Diagnoser {
             // one lost motion per joint: its other form is the alias, not a second play beside a selected one
             if (a.kind() == Effect.Kind.BACKLASH && selected.stream().anyMatch(x -> x != e && x.kind() == Effect.Kind.BACKLASH && x.joint() == a.joint()))
                 continue;
+            // one carried mass per joint likewise
+            if (secondForm(a, selected, e)) continue;
             boolean thermalE = e.kind() == Effect.Kind.THERMAL || e.kind() == Effect.Kind.THERMAL_LINK || e.kind() == Effect.Kind.DRIFT;
             boolean thermalA = a.kind() == Effect.Kind.THERMAL || a.kind() == Effect.Kind.THERMAL_LINK || a.kind() == Effect.Kind.DRIFT;
             if (thermalE && thermalA) out.add(a);
@@ -6328,9 +6482,14 @@ public final class Diagnoser {
         switch (e.kind()) {
             case COMPLIANCE_VARYING -> {
                 // a compliance at every time or temperature: each coefficient of its spline positive, below a soft joint's
+                // (with the payload's centre estimated, each function's other three are the compliance times the centre's shift
+                // over 0.1 m, of either sign: within a centre no more than MAX_PAYLOAD_SHIFT_M off the file's)
                 boolean ok = true;
+                int per = e.payloadCentreFree() ? 4 : 1;
+                double shift = MAX_PAYLOAD_SHIFT_M / GravityTorques.PAYLOAD_SHIFT_M / MIN_STIFFNESS;
                 for (int i = 0; i < v.length; i++)
-                    if ((c.absorbedMask == null || !c.absorbedMask[i]) && !overlaps(v[i], sd[i], 0, 1 / MIN_STIFFNESS)) ok = false;
+                    if ((c.absorbedMask == null || !c.absorbedMask[i])
+                            && !(i % per == 0 ? overlaps(v[i], sd[i], 0, 1 / MIN_STIFFNESS) : overlaps(v[i], sd[i], -shift, shift))) ok = false;
                 c.plausible = ok;
                 c.plausibility = String.format(Locale.ROOT, "the compliance positive and below %.0e rad/(N·m) over the %s", 1 / MIN_STIFFNESS,
                         e.along().words);
@@ -6438,15 +6597,18 @@ public final class Diagnoser {
                 c.plausibility = String.format(Locale.ROOT, "largest harmonic amplitude %.4f deg < %.2f deg", Math.toDegrees(max),
                         Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
-            case LOAD_PERIODIC -> {
-                // without load and at the reference torque, each order within a smooth error's bound
+            case LOAD_PERIODIC, WARM_PERIODIC -> {
+                // without load and at the reference torque (at either end of the temperatures), each order within a smooth error's bound
                 double max = 0;
                 for (int h = 0, n = v.length / 4; h < n; h++) {
                     double amp = Math.hypot(v[2 * h], v[2 * h + 1]), per = Math.hypot(v[2 * n + 2 * h], v[2 * n + 2 * h + 1]);
                     max = Math.max(max, Math.max(amp, amp + per));
                 }
                 c.plausible = max < 2 * MAX_PERIODIC_RAD;
-                c.plausibility = String.format(Locale.ROOT, "largest amplitude at no load or at %.0f N·m %.4f deg < %.2f deg",
+                c.plausibility = e.kind() == Effect.Kind.WARM_PERIODIC
+                        ? String.format(Locale.ROOT, "largest amplitude at %.1f or %.1f °C %.4f deg < %.2f deg", e.rangeLo(), e.rangeHi(),
+                        Math.toDegrees(max), Math.toDegrees(2 * MAX_PERIODIC_RAD))
+                        : String.format(Locale.ROOT, "largest amplitude at no load or at %.0f N·m %.4f deg < %.2f deg",
                         e.loadRefNm(), Math.toDegrees(max), Math.toDegrees(2 * MAX_PERIODIC_RAD));
             }
             case SMOOTH -> {

@@ -70,7 +70,11 @@ public final class Effect {
                 + "temperature (a stiffness that softens as the joint warms) or with time (a carried mass that changes, a dispensing "
                 + "tool emptying, while the recorded payload stays), of no known family"),
         LINK_PERIODIC("link-angle-periodic", "A joint's error that repeats with the angle of its link against the link before it "
-                + "(or against the ground), not with its drive's own turn: a parallel linkage's rod, lever or bearing, of no known family"),
+                + "(or against the ground), or with the angle of a wrist housing its drive passes through, not with its drive's own turn: "
+                + "a parallel linkage's rod, lever or bearing, an oval bearing seat or a bevel pair in the wrist, of no known family"),
+        WARM_PERIODIC("joint-periodic-warming", "A joint's periodic error whose size changes with the temperature (a magnetic or "
+                + "optical encoder whose sine and cosine channels drift apart as it warms, so its error twice per turn grows with the "
+                + "temperature), of no known family"),
         LOAD_PERIODIC("joint-load-periodic", "A joint's periodic error whose size follows the gravity torque on the joint (a gear mesh "
                 + "deflecting more under load), of no known family"),
         PAIR("joint-pair-error", "Joint error depending on two joints at once, of no known family"),
@@ -230,6 +234,8 @@ public final class Effect {
     private double sideNm, sideWidthNm;      // gravity play: the torque where the side changes, the hand-over's half-width (0: sharp), N·m
     private boolean loadMagnitude;           // load-periodic: the size follows |τ| (true) or τ with its sign
     private boolean payloadShare;            // varying compliance: the payload's share of the torque alone
+    private double[] stepTimes;              // varying compliance in steps: the times (s) its compliance steps at (null: a spline)
+    private boolean payloadCentreFree;       // varying payload compliance: the payload's centre estimated with it (four columns a function)
     private double[] linkAngle;              // link-angle periodic: the angle it repeats with, Σ linkAngle[l]·q_l
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
@@ -313,6 +319,50 @@ public final class Effect {
     }
 
     /**
+     * The payload's share of drive {@code joint}'s gravity torque times a compliance that steps at
+     * each of {@code times} (s, rising) and stays between them: Δq = τ_payload·c_i over the i-th
+     * interval. A carried mass that changes at moments while the file records it unchanged (a
+     * dispensing tool's shots, a part dropped or added between poses) gives it: the torque follows
+     * the mass, which a spline of the time follows only so sharply. Of no known family, as
+     * {@link #complianceVarying}.
+     */
+    public static Effect complianceInSteps(int joint, GravityTorques g, double[] times) {
+        if (g == null) throw new IllegalArgumentException("a varying compliance needs the arm's masses");
+        if (times.length == 0) throw new IllegalArgumentException("a compliance in steps needs a step");
+        for (int i = 0; i < times.length; i++)
+            if (!Double.isFinite(times[i]) || i > 0 && !(times[i] > times[i - 1]))
+                throw new IllegalArgumentException("step times must be finite and rising: " + Arrays.toString(times));
+        Effect e = new Effect(Kind.COMPLIANCE_VARYING, joint, -1, g, false, Double.NaN, Double.NaN, null, times[0],
+                times[times.length - 1], null, null, times.length + 1);
+        e.along = Along.TIME;
+        e.payloadShare = true;
+        e.stepTimes = times.clone();
+        return e;
+    }
+
+    /**
+     * The same payload's varying compliance with the payload's centre estimated with it: each time
+     * function multiplies the payload's torque at the file's centre and its change with the centre
+     * moved along each flange axis ({@link GravityTorques#payloadDriveTorques}), four columns a
+     * function. A tool's centre of mass is rarely where the file puts it (a dispensing tool's
+     * reservoir hangs off the flange), and a torque of the wrong phase is left where the joint it
+     * turns with (joint 5 under a long tool) moves.
+     */
+    public static Effect withPayloadCentreFree(Effect e) {
+        if (e.kind != Kind.COMPLIANCE_VARYING || !e.payloadShare) throw new IllegalArgumentException("not a payload's varying compliance: " + e.label());
+        Effect f = e.stepTimes != null ? complianceInSteps(e.joint, e.gravity, e.stepTimes)
+                : complianceVarying(e.joint, e.gravity, e.along, e.lo, e.hi, e.nBasis, true);
+        f.payloadCentreFree = true;
+        return f;
+    }
+
+    /** Whether a payload's varying compliance estimates the payload's centre with it ({@link #withPayloadCentreFree}). */
+    public boolean payloadCentreFree() { return payloadCentreFree; }
+
+    /** A varying compliance's step times (s), or null where it follows a spline. */
+    public double[] stepTimes() { return stepTimes == null ? null : stepTimes.clone(); }
+
+    /**
      * Whether a varying compliance is one per mass, straight between the ends of its range: on a robot
      * file without masses ({@link GravityTorques#massesUnknown}), each mass's torque at each end.
      */
@@ -363,6 +413,36 @@ public final class Effect {
             for (int l = 0; l < rel.length; l++) out[l] = rel[l] + s * c[j - 1][l];
         }
         return out;
+    }
+
+    /**
+     * The joints whose housings drive {@code j}'s transmission passes through, turning with them: in a
+     * six-axis arm's wrist the drives of joints 5 and 6 run from motors in the forearm through joint
+     * 4's housing (and joint 6's through joint 5's), so a bearing seat or a bevel pair in that housing,
+     * out of round or eccentric, changes joint {@code j}'s transmission as the housing turns (an oval
+     * seat by twice its angle). Revolute joints from the wrist's first to the one before {@code j}
+     * whose axes are not parallel to {@code j}'s; empty for the arm's joints.
+     */
+    public static int[] housingsOf(KinematicModel model, int j) {
+        int n = model.dof();
+        if (n < 6 || j < n - 2 || model.isPrismatic(j)) return new int[0];
+        var joints = model.description().joints();
+        return java.util.stream.IntStream.range(n - 3, j).filter(k -> !model.isPrismatic(k)
+                && joints.get(k).axis().cross(joints.get(j).axis()).norm() > 1e-6).toArray();
+    }
+
+    /** The angle of joint {@code k} alone as a link-angle periodic error's angle (Σ_l c_l·q_l with c = e_k). */
+    public static double[] jointAngle(int dof, int k) {
+        double[] c = new double[dof];
+        c[k] = 1;
+        return c;
+    }
+
+    /** Whether a link-angle periodic error repeats with one other joint's angle alone (a housing its drive passes through). */
+    public boolean followsAnotherJoint() {
+        int nonzero = 0;
+        for (double c : linkAngle) if (c != 0) nonzero++;
+        return nonzero == 1 && linkAngle[joint] == 0;
     }
 
     /**
@@ -447,6 +527,26 @@ public final class Effect {
     }
 
     /**
+     * A periodic error of joint {@code joint} at {@code harmonics} of its own angle whose size changes
+     * with the temperature: Δq = Σ_h (a_h + a'_h u) sin h q + (b_h + b'_h u) cos h q, u = (T − lo)/(hi − lo)
+     * over the campaign's temperatures lo..hi. An encoder read by two channels in quadrature whose gains
+     * drift apart with temperature (g = γ(T − T_c), its amplitude matched at T_c) reads atan2((1 + g) sin q,
+     * cos q) = q + (g/2) sin 2q to first order (a gain mismatch's error is twice per turn; an offset's
+     * once: Kavanagh, "Shaft encoder characterization via theoretical model of differentiator with
+     * both differential and integral nonlinearities", IEEE Trans. Instrum. Meas. 49 (2000) 795; Hoseinnezhad,
+     * IEEE Trans. Instrum. Meas. 55 (2006) 1263 on sinusoidal-encoder errors). Of no known family: a
+     * transmission error keeps its size.
+     */
+    public static Effect periodicWarming(int joint, int[] harmonics, double lo, double hi) {
+        int[] h = new TreeSet<>(Arrays.stream(harmonics).boxed().toList()).stream().mapToInt(Integer::intValue).toArray();
+        if (h.length == 0 || h[0] < 1) throw new IllegalArgumentException("harmonics " + Arrays.toString(harmonics));
+        if (!(hi > lo)) throw new IllegalArgumentException("temperature range " + lo + ".." + hi);
+        Effect e = new Effect(Kind.WARM_PERIODIC, joint, -1, null, false, Double.NaN, Double.NaN, h, lo, hi, null, null);
+        e.along = Along.TEMPERATURE;
+        return e;
+    }
+
+    /**
      * A play of joint {@code joint} taken up by gravity: Δq = (b/2)·s(τ), τ the gravity torque on the
      * drive ({@code g}'s masses, the pose's payload), s = sign(τ − c) or, with a hand-over half-width
      * w &gt; 0, clamp((τ − c)/w, −1, 1). A clearance held against one side by a load gives way in the
@@ -479,6 +579,11 @@ public final class Effect {
     public double sideWidthNm() { return sideWidthNm; }
 
     /** A load-periodic error's load at controller values q with payload {@code payloadKg}: τ/τ_ref or |τ|/τ_ref. */
+    /** A warming periodic error's temperature share u = (T − lo)/(hi − lo) under c (0 where no temperature is read). */
+    double warmShare(PoseConditions c) {
+        return Double.isFinite(c.tempC()) ? (c.tempC() - lo) / (hi - lo) : 0;
+    }
+
     double loadShare(double[] q, double payloadKg) {
         double t = gravity.driveTorques(q, Double.isFinite(payloadKg) ? payloadKg : 0)[joint] / loadRefNm;
         return loadMagnitude ? Math.abs(t) : t;
@@ -1568,7 +1673,8 @@ public final class Effect {
         // where the masses are unknown
         if (kind == Kind.COMPLIANCE_VARYING && !payloadShare && e.kind == Kind.COMPLIANCE && e.joint == joint && !e.stiffens
                 && e.gravity == gravity && e.perMass == gravity.massesUnknown()) return true;
-        return kind == Kind.LOAD_PERIODIC && e.kind == Kind.PERIODIC && e.joint == joint && Arrays.equals(e.orders(), orders());
+        return (kind == Kind.LOAD_PERIODIC || kind == Kind.WARM_PERIODIC) && e.kind == Kind.PERIODIC && e.joint == joint
+                && Arrays.equals(e.orders(), orders());
     }
 
     /** Whether a link sag has the columns of the payload's weight at its far end. */
@@ -1804,7 +1910,7 @@ public final class Effect {
 
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
-        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
+        return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.WARM_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
     }
@@ -2049,11 +2155,11 @@ public final class Effect {
         return switch (kind) {
             case PERIODIC -> 2 * (harmonics.length + stages.length);
             case LINK_PERIODIC -> 2 * harmonics.length;
-            case LOAD_PERIODIC -> 4 * (harmonics.length + stages.length);
+            case LOAD_PERIODIC, WARM_PERIODIC -> 4 * (harmonics.length + stages.length);
             case COMPLIANCE -> perMass ? gravity.massCount() : stiffens ? 2 : 1;
             case BACKLASH -> 1 + 2 * runout.length;
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT -> nBasis;
-            case COMPLIANCE_VARYING -> perMassVarying() ? gravity.massCount() * nBasis : nBasis;
+            case COMPLIANCE_VARYING -> perMassVarying() ? gravity.massCount() * nBasis : payloadCentreFree ? 4 * nBasis : nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case AXIAL_RUNOUT -> 2 * harmonics.length;
             case TOOL_SAG -> 9;
@@ -2085,6 +2191,10 @@ public final class Effect {
             case LOAD_PERIODIC -> {
                 for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); }
                 for (double h : orders()) { out.add("la" + orderText(h)); out.add("lb" + orderText(h)); }
+            }
+            case WARM_PERIODIC -> {
+                for (double h : orders()) { out.add("a" + orderText(h)); out.add("b" + orderText(h)); }
+                for (double h : orders()) { out.add("ta" + orderText(h)); out.add("tb" + orderText(h)); }
             }
             case GRAVITY_PLAY -> out.add("b");
             case BACKLASH -> {
@@ -2180,7 +2290,7 @@ public final class Effect {
     public List<String> units() {
         String u = switch (kind) {
             case COMPLIANCE, COMPLIANCE_VARYING -> "rad/(N·m)";
-            case PERIODIC, LOAD_PERIODIC, LINK_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
+            case PERIODIC, LOAD_PERIODIC, WARM_PERIODIC, LINK_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
             case POINT_SMOOTH, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
             case BASE_TURN, BASE_CREEP -> "rad";
@@ -2244,6 +2354,7 @@ public final class Effect {
                     Arrays.stream(orders()).mapToObj(Effect::orderText).toList()) + ")");
             case GRAVITY_PLAY -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (side changing at %.1f N·m%s)", sideNm,
                     sideWidthNm > 0 ? String.format(Locale.ROOT, " ± %.1f", sideWidthNm) : "");
+            case WARM_PERIODIC -> kind.json + " j" + (joint + 1) + " (h " + String.join(",", Arrays.stream(harmonics).mapToObj(String::valueOf).toList()) + ")";
             case LOAD_PERIODIC -> kind.json + " j" + (joint + 1) + " (h " + String.join(",", Arrays.stream(orders()).mapToObj(Effect::orderText).toList())
                     + (loadMagnitude ? ", with the torque's size)" : ", with the torque)");
             case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
@@ -2261,8 +2372,11 @@ public final class Effect {
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case LINK_PERIODIC -> kind.json + " j" + (joint + 1) + " (" + linkAngleText() + ", h " + String.join(",",
                     Arrays.stream(harmonics).mapToObj(String::valueOf).toList()) + ")";
-            case COMPLIANCE_VARYING -> kind.json + " j" + (joint + 1) + " (" + (payloadShare ? "payload, " : "") + "with " + along.words
-                    + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + (gravity.massesUnknown() ? ", masses estimated" : "") + ")";
+            case COMPLIANCE_VARYING -> kind.json + " j" + (joint + 1) + " (" + (payloadShare ? "payload, " : "")
+                    + (stepTimes != null ? "in steps at " + String.join(", ", Arrays.stream(stepTimes)
+                            .mapToObj(t -> String.format(Locale.ROOT, "%.0f s", t)).toList())
+                    : "with " + along.words + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions"))
+                    + (payloadCentreFree ? ", its centre estimated" : "") + (gravity.massesUnknown() ? ", masses estimated" : "") + ")";
             case ZERO_STEP -> kind.json + " j" + (joint + 1) + String.format(Locale.ROOT, " (at %.0f s)", tauS);
             case SETTLING -> kind.json + " j" + (joint + 1);
             case ANGLE_STEP -> kind.json + " j" + (joint + 1) + (isWindow()
@@ -2379,9 +2493,9 @@ public final class Effect {
                 }
             }
             case GRAVITY_PLAY -> g[0] = 0.5 * playSide(gravity.driveTorques(q, Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[joint]);
-            case LOAD_PERIODIC -> {
+            case LOAD_PERIODIC, WARM_PERIODIC -> {
                 double[] hs = orders();
-                double x = loadShare(q, c.payloadKg());
+                double x = kind == Kind.WARM_PERIODIC ? warmShare(c) : loadShare(q, c.payloadKg());
                 for (int i = 0, n = hs.length; i < n; i++) {
                     g[2 * i] = Math.sin(hs[i] * q[joint]);
                     g[2 * i + 1] = Math.cos(hs[i] * q[joint]);
@@ -2432,9 +2546,21 @@ public final class Effect {
                     double u = Math.max(0, Math.min(1, (x - lo) / (hi - lo)));
                     for (int k = 0; k < t.length; k++) { g[2 * k] = t[k] * (1 - u); g[2 * k + 1] = t[k] * u; }
                 } else {
-                    double tau = gravity.driveTorques(q, p)[joint] - (payloadShare ? gravity.driveTorques(q, 0)[joint] : 0);
-                    bspline(x, lo, hi, g);
-                    for (int i = 0; i < g.length; i++) g[i] *= tau;
+                    double[] b = payloadCentreFree ? new double[nBasis] : g;
+                    if (stepTimes != null) {
+                        Arrays.fill(b, 0);
+                        int i = 0;
+                        while (i < stepTimes.length && x >= stepTimes[i]) i++;
+                        b[i] = 1;
+                    } else bspline(x, lo, hi, b);
+                    if (payloadCentreFree) {
+                        double[] t = new double[4];
+                        gravity.payloadDriveTorques(q, p, joint, t);
+                        for (int i = 0; i < nBasis; i++) for (int k = 0; k < 4; k++) g[4 * i + k] = b[i] * t[k];
+                    } else {
+                        double tau = gravity.driveTorques(q, p)[joint] - (payloadShare ? gravity.driveTorques(q, 0)[joint] : 0);
+                        for (int i = 0; i < g.length; i++) g[i] *= tau;
+                    }
                 }
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
@@ -2863,6 +2989,8 @@ public final class Effect {
                 p.put(along.key + "_min", lo);
                 p.put(along.key + "_max", hi);
                 if (payloadShare) p.put("payload_share", 1.0);
+                if (stepTimes != null) for (int i = 0; i < stepTimes.length; i++) p.put("time_s_step_" + (i + 1), stepTimes[i]);
+                if (payloadCentreFree) p.put("payload_centre_free", 1.0);
                 if (gravity.fromLengths()) p.put("varying_masses_from_lengths", 1.0);
             }
             case INSTRUMENT_SCALE, REFRACTION -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
@@ -2898,6 +3026,7 @@ public final class Effect {
                 if (gravity.fromLengths()) p.put("play_masses_from_lengths", 1.0);
             }
             case LINK_PERIODIC -> { for (int l = 0; l < linkAngle.length; l++) p.put("angle_q" + (l + 1), linkAngle[l]); }
+            case WARM_PERIODIC -> { p.put("temp_c_min", lo); p.put("temp_c_max", hi); }
             case LOAD_PERIODIC -> {
                 p.put("load_ref_nm", loadRefNm);
                 if (loadMagnitude) p.put("load_magnitude", 1.0);
@@ -2983,6 +3112,13 @@ public final class Effect {
                 double wd = ps.containsKey("side_width_nm") ? require(d, "side_width_nm", file) : 0;
                 if (!(wd >= 0) || Double.isInfinite(wd)) throw d.error(file, "parameters_si.side_width_nm", "must be >= 0, got " + wd);
                 yield gravityPlay(js.get(0) - 1, g, require(d, "side_nm", file), wd);
+            }
+            case WARM_PERIODIC -> {
+                int[] hs = ps.keySet().stream().filter(key -> key.matches("a\\d+")).mapToInt(key -> Integer.parseInt(key.substring(1))).toArray();
+                if (hs.length == 0) throw d.error(file, "parameters_si", "no harmonic a1, a2, ...");
+                double lo = require(d, "temp_c_min", file), hi = require(d, "temp_c_max", file);
+                if (!(hi > lo)) throw d.error(file, "parameters_si.temp_c_max", "must be above temp_c_min, got " + hi);
+                yield periodicWarming(js.get(0) - 1, hs, lo, hi);
             }
             case LOAD_PERIODIC -> {
                 GravityTorques g = ps.containsKey("load_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
@@ -3141,6 +3277,28 @@ public final class Effect {
                 boolean share = ps.containsKey("payload_share");
                 if (g == null) throw needsMassModel(d, file, "joint-compliance-varying");
                 int n = (int) ps.keySet().stream().filter(key -> key.matches("c\\d+")).count();
+                int steps = (int) ps.keySet().stream().filter(key -> key.matches("time_s_step_\\d+")).count();
+                boolean centre = ps.containsKey("payload_centre_free");
+                if (centre) {
+                    if (!share) throw d.error(file, "parameters_si.payload_centre_free", "only a payload's varying compliance estimates its centre");
+                    if (n % 4 != 0) throw d.error(file, "parameters_si", "needs four of c1..cN a function with the payload's centre estimated");
+                    n /= 4;
+                }
+                if (steps > 0) {
+                    if (!share || along != Along.TIME) throw d.error(file, "parameters_si", "steps of a compliance are the payload's, in time_s");
+                    if (n != steps + 1) throw d.error(file, "parameters_si", "needs " + (steps + 1) + " functions (one more than its steps)");
+                    double[] times = new double[steps];
+                    for (int i = 0; i < steps; i++) times[i] = require(d, "time_s_step_" + (i + 1), file);
+                    for (int i = 1; i < steps; i++)
+                        if (!(times[i] > times[i - 1])) throw d.error(file, "parameters_si.time_s_step_" + (i + 1), "must be after time_s_step_" + i);
+                    Effect stepped = complianceInSteps(js.get(0) - 1, g, times);
+                    yield centre ? withPayloadCentreFree(stepped) : stepped;
+                }
+                if (centre) {
+                    if (n < 4) throw d.error(file, "parameters_si", "needs c1..cN, N >= 16");
+                    yield withPayloadCentreFree(complianceVarying(js.get(0) - 1, g, along, require(d, along.key + "_min", file),
+                            require(d, along.key + "_max", file), n, true));
+                }
                 if (g.massesUnknown() && !share) {
                     if (n != 2 * g.massCount()) throw d.error(file, "parameters_si", "needs c1..c" + 2 * g.massCount() + " (two per mass)");
                     n = 2;

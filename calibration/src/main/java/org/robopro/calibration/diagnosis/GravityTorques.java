@@ -242,23 +242,47 @@ public final class GravityTorques {
 
     /** Drive {@code joint}'s gravity torque split by mass: out[k] = the torque of mass k alone (file mass, payload as given). */
     public void driveTorquesByMass(double[] q, double payloadKg, int joint, double[] out) {
-        int n = model.dof();
         Pose[] f = model.linkFrames(q);
         double[] m = mass.clone();
         m[payloadSlot] = Double.isNaN(payloadKg) ? 0 : payloadKg;
-        double[][] cm = model.couplingMatrix();
-        for (int k = 0; k < mass.length; k++) {
-            Vec3 ck = f[frameIndex[k]].apply(local[k]);
-            Vec3 force = gravity.times(m[k]);
-            double s = 0;
-            for (int i = 0; i < n; i++) {
-                if (cm[i][joint] == 0 || frameIndex[k] < i + 1 || m[k] == 0) continue;
-                Vec3 o = f[i + 1].position(), z = f[i + 1].zAxis();
-                boolean prismatic = model.description().joints().get(i).type() == JointType.PRISMATIC;
-                s += cm[i][joint] * (prismatic ? force.dot(z) : ck.minus(o).cross(force).dot(z));
-            }
-            out[k] = s;
+        for (int k = 0; k < mass.length; k++) out[k] = pointDriveTorque(f, f[frameIndex[k]].apply(local[k]), m[k], frameIndex[k], joint);
+    }
+
+    /** Lever (m) of the payload's centre shifts in {@link #payloadDriveTorques}: a centre 0.1 m off along a flange axis is one unit. */
+    static final double PAYLOAD_SHIFT_M = 0.1;
+
+    /**
+     * Drive {@code joint}'s torque of the payload ({@code payloadKg}) at its centre, out[0], and how it
+     * changes with that centre moved by {@link #PAYLOAD_SHIFT_M} along the x, y and z axes of the frame
+     * it rides on (the flange), out[1..3]. The torque is linear in the centre's place, so out[0] + Σ
+     * (d_k / PAYLOAD_SHIFT_M)·out[k] is the torque of the payload at its centre moved by d: the
+     * payload's centre can be estimated with the compliance that multiplies it.
+     */
+    public void payloadDriveTorques(double[] q, double payloadKg, int joint, double[] out) {
+        double m = Double.isNaN(payloadKg) ? 0 : payloadKg;
+        Pose[] f = model.linkFrames(q);
+        Pose at = f[frameIndex[payloadSlot]];
+        Vec3 c0 = local[payloadSlot];
+        Vec3[] shifts = {Vec3.ZERO, new Vec3(PAYLOAD_SHIFT_M, 0, 0), new Vec3(0, PAYLOAD_SHIFT_M, 0), new Vec3(0, 0, PAYLOAD_SHIFT_M)};
+        for (int s = 0; s < 4; s++) {
+            double t = pointDriveTorque(f, at.apply(c0.plus(shifts[s])), m, frameIndex[payloadSlot], joint);
+            out[s] = s == 0 ? t : t - out[0];
         }
+    }
+
+    /** Drive {@code joint}'s torque of a point mass m (kg) at {@code point} (base frame) riding on frame {@code frame}. */
+    private double pointDriveTorque(Pose[] f, Vec3 point, double m, int frame, int joint) {
+        int n = model.dof();
+        double[][] cm = model.couplingMatrix();
+        Vec3 force = gravity.times(m);
+        double s = 0;
+        for (int i = 0; i < n; i++) {
+            if (cm[i][joint] == 0 || frame < i + 1 || m == 0) continue;
+            Vec3 o = f[i + 1].position(), z = f[i + 1].zAxis();
+            boolean prismatic = model.description().joints().get(i).type() == JointType.PRISMATIC;
+            s += cm[i][joint] * (prismatic ? force.dot(z) : point.minus(o).cross(force).dot(z));
+        }
+        return s;
     }
 
     /**

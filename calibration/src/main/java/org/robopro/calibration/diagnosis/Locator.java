@@ -41,7 +41,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -159,7 +159,8 @@ final class Locator {
 
     /**
      * As above; without {@code steps} the steps of a joint's reading at one angle and of the target
-     * on the flange at one time, and the reflector's error with the line of sight, are left out (the
+     * on the flange at one time, the reflector's error with the line of sight, a wrist joint's error with
+     * its housing's angle and a joint's error growing with the temperature are left out (the
      * stepwise search's re-scans: such a structure shows in the geometric fit's residuals already, and
      * its probes are a good share of the scan's cost).
      */
@@ -284,8 +285,9 @@ final class Locator {
                 out.add(sp);
             }
         }
-        out.addAll(linkPeriodics(t, hMax));
+        out.addAll(linkPeriodics(t, hMax, steps));
         double[][] time = column(t, c -> c.timeS()), temp = column(t, c -> c.tempC()), pay = column(t, c -> c.payloadKg());
+        if (steps && varies(temp, 0.5)) out.addAll(warmPeriodics(t, temp));
         if (varies(time, 1)) {
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", true));
             out.add(scalar(t, Var.TIME, time, "time", "time since the start (s)", false));
@@ -1167,48 +1169,111 @@ final class Locator {
     /**
      * Each joint's error repeating with its link's other angle ({@link Effect#linkAngle}: against the
      * link before it where the controller reads it against the ground, or the other way round), at
-     * harmonics 1..{@code hMax} of that angle, each its own 2-column test like a joint's own harmonics.
+     * harmonics 1..{@code hMax} of that angle, each its own 2-column test like a joint's own harmonics;
+     * with {@code housings}, also with the angle of each wrist housing its drive passes through.
      */
-    private static List<Probe> linkPeriodics(Diagnoser.Tester t, int hMax) {
+    private static List<Probe> linkPeriodics(Diagnoser.Tester t, int hMax, boolean housings) {
         List<Probe> out = new ArrayList<>();
-        int poses = t.w.rows.size(), ends = t.ends;
         for (int j = 0; j < t.dof; j++) {
             double[] c = Effect.linkAngle(t.w.model, j);
-            if (c == null) continue;
-            double[][] psi = new double[ends][poses], x = new double[ends][poses];
-            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (int e = 0; e < ends; e++)
-                for (int i = 0; i < poses; i++) {
-                    double[] q = t.endRows.get(e).get(i).q();
-                    double a = 0;
-                    for (int l = 0; l < c.length; l++) a += c[l] * q[l];
-                    psi[e][i] = a;
-                    x[e][i] = Math.toDegrees(a);
-                    lo = Math.min(lo, a);
-                    hi = Math.max(hi, a);
-                }
-            if (!(hi - lo > 1e-6)) continue;
+            if (c != null) out.addAll(angleHarmonics(t, j, c, hMax));
+            // the wrist housings the joint's drive passes through, at the low orders of a seat or gear out of round
+            if (housings) for (int k : Effect.housingsOf(t.w.model, j)) out.addAll(angleHarmonics(t, j, Effect.jointAngle(t.dof, k), Math.min(hMax, HOUSING_ORDERS)));
+        }
+        return out;
+    }
+
+    /**
+     * Each joint's error at its own angle's low orders 1..{@link #WARM_ORDERS} growing with the temperature
+     * ({@link Effect#periodicWarming}): u·sin h q and u·cos h q, u the temperature about its mean over
+     * its span, each order its own 2-column test. On a joint the arm's weight loads, from order 2: the
+     * gravity torque is nearly a first order of the joint's angle, and its give changing through a
+     * warm-up (a joint softening, a carried mass emptying) has the forms of its own physics.
+     */
+    private static List<Probe> warmPeriodics(Diagnoser.Tester t, double[][] temp) {
+        List<Probe> out = new ArrayList<>();
+        int poses = t.w.rows.size(), ends = t.ends;
+        double lo = min(temp), hi = max(temp), mean = Arrays.stream(temp).flatMapToDouble(Arrays::stream).average().orElse(0);
+        for (int j = 0; j < t.dof; j++) {
+            if (t.w.model.isPrismatic(j)) continue;
+            final int jj = j;
+            int first = t.w.gravity != null && Diagnoser.loaded(t.w.gravity, j, t.w.rows) ? 2 : 1;
+            double[][] qx = new double[ends][poses];
+            for (int e = 0; e < ends; e++) for (int i = 0; i < poses; i++) qx[e][i] = Math.toDegrees(t.endRows.get(e).get(i).q(j));
             List<Reg> regs = new ArrayList<>();
             List<Integer> ks = new ArrayList<>();
-            for (int h = 1; h <= hMax; h++) {
+            for (int h = first; h <= WARM_ORDERS; h++) {
                 final int hh = h;
-                regs.add((e, i, g) -> { g[0] = Math.sin(hh * psi[e][i]); g[1] = Math.cos(hh * psi[e][i]); });
+                regs.add((e, i, g) -> {
+                    double u = (temp[e][i] - mean) / (hi - lo), q = t.endRows.get(e).get(i).q(jj);
+                    g[0] = u * Math.sin(hh * q);
+                    g[1] = u * Math.cos(hh * q);
+                });
                 ks.add(2);
             }
             List<Probe> batch = drives(t, j, ks, regs);
-            String text = Effect.linkAngleText(c);
-            for (int h = 1; h <= hMax; h++) {
-                Probe p = batch.get(h - 1);
-                p.var = Var.LINK_PERIODIC;
+            for (int h = first; h <= WARM_ORDERS; h++) {
+                Probe p = batch.get(h - first);
+                p.var = Var.WARM_PERIODIC;
                 p.joint = j;
                 p.harmonic = h;
-                p.linkAngle = c;
-                p.variable = "link angle " + text;
-                p.shape = h + (h == 1 ? " cycle" : " cycles") + " per turn of the link angle " + text + " on joint " + (j + 1);
-                p.x = x;
-                p.xLabel = "link angle " + text + " (deg)";
+                p.lo = lo;
+                p.hi = hi;
+                p.variable = "joint " + (j + 1) + " angle and temperature";
+                p.shape = h + (h == 1 ? " cycle" : " cycles") + " per turn of joint " + (j + 1) + ", growing with the temperature";
+                p.x = qx;
+                p.xLabel = "joint " + (j + 1) + " angle q" + (j + 1) + " (deg)";
                 out.add(p);
             }
+        }
+        return out;
+    }
+
+    /** Orders of a joint's own angle probed for an error growing with the temperature (an encoder's channels once and twice a turn, and two above). */
+    static final int WARM_ORDERS = 4;
+
+    /** Orders of a wrist housing's angle probed on the joints whose drives pass through it. */
+    static final int HOUSING_ORDERS = 6;
+
+    /** Joint j's error at harmonics 1..hMax of the angle Σ_l c_l·q_l, each its own 2-column test. */
+    private static List<Probe> angleHarmonics(Diagnoser.Tester t, int j, double[] c, int hMax) {
+        List<Probe> out = new ArrayList<>();
+        int poses = t.w.rows.size(), ends = t.ends;
+        double[][] psi = new double[ends][poses], x = new double[ends][poses];
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (int e = 0; e < ends; e++)
+            for (int i = 0; i < poses; i++) {
+                double[] q = t.endRows.get(e).get(i).q();
+                double a = 0;
+                for (int l = 0; l < c.length; l++) a += c[l] * q[l];
+                psi[e][i] = a;
+                x[e][i] = Math.toDegrees(a);
+                lo = Math.min(lo, a);
+                hi = Math.max(hi, a);
+            }
+        if (!(hi - lo > 1e-6)) return out;
+        List<Reg> regs = new ArrayList<>();
+        List<Integer> ks = new ArrayList<>();
+        for (int h = 1; h <= hMax; h++) {
+            final int hh = h;
+            regs.add((e, i, g) -> { g[0] = Math.sin(hh * psi[e][i]); g[1] = Math.cos(hh * psi[e][i]); });
+            ks.add(2);
+        }
+        List<Probe> batch = drives(t, j, ks, regs);
+        String text = Effect.linkAngleText(c);
+        boolean housing = c[j] == 0 && java.util.Arrays.stream(c).filter(v -> v != 0).count() == 1;
+        String angle = housing ? "joint " + text.substring(1) + "'s angle" : "the link angle " + text;
+        for (int h = 1; h <= hMax; h++) {
+            Probe p = batch.get(h - 1);
+            p.var = Var.LINK_PERIODIC;
+            p.joint = j;
+            p.harmonic = h;
+            p.linkAngle = c;
+            p.variable = housing ? "joint " + text.substring(1) + " angle" : "link angle " + text;
+            p.shape = h + (h == 1 ? " cycle" : " cycles") + " per turn of " + angle + " on joint " + (j + 1);
+            p.x = x;
+            p.xLabel = housing ? "joint " + text.substring(1) + " angle " + text + " (deg)" : "link angle " + text + " (deg)";
+            out.add(p);
         }
         return out;
     }

@@ -94,7 +94,7 @@ final class Plots {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
                     : "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
-            case PERIODIC, LOAD_PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.angleJoint() + 1) + " angle " + (e.followsModelAngle() ? "θ" : "q") + (e.angleJoint() + 1) + " (deg)";
+            case PERIODIC, LOAD_PERIODIC, WARM_PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.angleJoint() + 1) + " angle " + (e.followsModelAngle() ? "θ" : "q") + (e.angleJoint() + 1) + " (deg)";
             case POINT_SMOOTH -> switch (e.along()) {
                 case REACH -> "reach of the measured point (m)";
                 case HEIGHT -> "height of the measured point (m)";
@@ -133,7 +133,7 @@ final class Plots {
     private static double xOf(Effect e, Measurement row, PoseConditions c) {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()];
-            case PERIODIC, LOAD_PERIODIC, SCALE, PAIR -> Math.toDegrees(row.q(e.angleJoint()));
+            case PERIODIC, LOAD_PERIODIC, WARM_PERIODIC, SCALE, PAIR -> Math.toDegrees(row.q(e.angleJoint()));
             case SMOOTH -> Math.toDegrees(e.smoothVariable(row.q()));
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
@@ -190,7 +190,7 @@ final class Plots {
                 yield s;
             }
             // a load-periodic error is no function of the angle alone: its size follows the load
-            case LOAD_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
+            case LOAD_PERIODIC, WARM_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> Double.NaN;

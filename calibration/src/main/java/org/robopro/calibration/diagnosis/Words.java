@@ -130,12 +130,8 @@ final class Words {
                     e.sideWidthNm() > 0 ? String.format(Locale.ROOT, " ± %.1f", e.sideWidthNm()) : "", e.joint() + 1);
             case LOAD_PERIODIC -> {
                 double[] hs = e.orders();
-                int n = hs.length;
-                double at0 = 0, per = 0;
-                for (int i = 0; i < n; i++) {
-                    at0 += v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1];
-                    per += v[2 * n + 2 * i] * v[2 * n + 2 * i] + v[2 * n + 2 * i + 1] * v[2 * n + 2 * i + 1];
-                }
+                double[] amp = sizeAndChange(v, hs.length);
+                double at0 = amp[0], per = amp[1];
                 yield String.format(Locale.ROOT, "Joint %d's error repeats %s times per turn of its angle, and its size follows the "
                         + "gravity torque on the joint (%s): %.4f deg without load, changing by %.4f deg per %.0f N·m (amplitudes "
                         + "over the orders, root-sum-square). A gear mesh that deflects more under load does so (the loaded "
@@ -145,10 +141,33 @@ final class Words {
                         e.loadMagnitude() ? "its size, whichever way it turns the joint" : "with its sign", Math.toDegrees(Math.sqrt(at0)),
                         Math.toDegrees(Math.sqrt(per)), e.loadRefNm(), e.joint() + 1);
             }
+            case WARM_PERIODIC -> {
+                int[] hs = e.harmonics();
+                double[] amp = sizeAndChange(v, hs.length);
+                double at0 = amp[0], per = amp[1];
+                yield String.format(Locale.ROOT, "Joint %d's error repeats %s times per turn of its angle, and its size changes with "
+                        + "the temperature: %.4f deg at %.1f °C, changing by %.4f deg up to %.1f °C (amplitudes over the orders, "
+                        + "root-sum-square). An encoder whose sine and cosine channels drift apart as it warms does so (a gain "
+                        + "mismatch reads twice per turn wrong, an offset once); a transmission error keeps its size, so no known family "
+                        + "is named. It is modelled as such so compensation can use it at the temperature read. To confirm, measure the "
+                        + "same angles of joint %d cold and warmed through, with the temperature at the joint recorded.", e.joint() + 1,
+                        String.join(", ", java.util.Arrays.stream(hs).mapToObj(String::valueOf).toList()), Math.toDegrees(Math.sqrt(at0)),
+                        e.rangeLo(), Math.toDegrees(Math.sqrt(per)), e.rangeHi(), e.joint() + 1);
+            }
             case LINK_PERIODIC -> {
                 int[] hs = e.harmonics();
                 double rss = 0;
                 for (double x : v) rss += x * x;
+                if (e.followsAnotherJoint())
+                    yield String.format(Locale.ROOT, "Joint %d's error repeats %s times per turn of joint %s's angle (%.4f deg, amplitudes "
+                            + "root-sum-square), not with joint %d's own angle: joint %d's drive passes through the housing that joint %s "
+                            + "turns, and a bearing seat or a gear there out of round (an oval seat repeats twice a turn) changes its "
+                            + "transmission as the housing turns. No transmission error of the drive repeats so, so no known family is "
+                            + "named. It is modelled as such so compensation can use it. To confirm, hold joint %d and turn joint %s "
+                            + "through a whole turn in small steps.", e.joint() + 1,
+                            String.join(", ", java.util.Arrays.stream(hs).mapToObj(String::valueOf).toList()), e.linkAngleText().substring(1),
+                            Math.toDegrees(Math.sqrt(rss)), e.joint() + 1, e.joint() + 1, e.linkAngleText().substring(1), e.joint() + 1,
+                            e.linkAngleText().substring(1));
                 yield String.format(Locale.ROOT, "Joint %d's error repeats %s times per turn of the link angle %s (%.4f deg, amplitudes "
                         + "root-sum-square), not with joint %d's own angle: the angle of its link against the link before it, or against "
                         + "the ground, which a linkage's rod, lever or bearing, or a counterweight's, turns with. No transmission error of "
@@ -161,9 +180,20 @@ final class Words {
                 // a clamped B-spline starts at its first coefficient and ends at its last; per mass, the payload's pair
                 int pay = e.gravity().payloadIndex();
                 boolean perMass = e.gravity().massesUnknown() && !e.payloadShare();
-                double c0 = perMass ? v[2 * pay] : v[0], c1 = perMass ? v[2 * pay + 1] : v[v.length - 1];
+                int per = e.payloadCentreFree() ? 4 : 1;   // with the payload's centre estimated, each function's first column is the file's centre
+                double c0 = perMass ? v[2 * pay] : v[0], c1 = perMass ? v[2 * pay + 1] : v[v.length - per];
                 boolean time = e.along() == Effect.Along.TIME;
-                yield String.format(Locale.ROOT, "Joint %d gives way under %s, and by an amount that changes with %s: a compliance "
+                String centre = e.payloadCentreFree() ? payloadCentreText(v) : "";
+                if (e.stepTimes() != null)
+                    yield centre + String.format(Locale.ROOT, "Joint %d gives way under the payload's weight by an amount that steps at %s: "
+                            + "a compliance of %.3g rad per kN·m before the first step and %.3g after the last (a stiffness of %s and %s "
+                            + "kN·m/rad), not the one stiffness of a joint compliance, so no known family is named. A carried mass that "
+                            + "changes at moments while payload_kg stays as recorded does so (a dispensing tool's shots, a part dropped or "
+                            + "added): the torque follows the mass, the compliance stays. It is modelled as such for these poses. Record the "
+                            + "carried mass as it changes (payload_kg per pose).", e.joint() + 1,
+                            String.join(", ", java.util.Arrays.stream(e.stepTimes()).mapToObj(t -> String.format(Locale.ROOT, "%.0f s", t)).toList()),
+                            c0 * 1e3, c1 * 1e3, stiffnessText(c0), stiffnessText(c1));
+                yield centre + String.format(Locale.ROOT, "Joint %d gives way under %s, and by an amount that changes with %s: a compliance "
                         + "of %.3g rad per kN·m at %.4g %s and %.3g at %.4g %s (a stiffness of %s and %s kN·m/rad), not the one "
                         + "stiffness of a joint compliance, so no known family is named. %s It is modelled as such for these poses. %s",
                         e.joint() + 1, e.payloadShare() ? "the payload's weight" : "the arm's weight", e.along().words, c0 * 1e3, e.rangeLo(),
@@ -629,6 +659,35 @@ final class Words {
     }
 
     /** A stiffness 1/c in kN·m/rad as text; "none" where the compliance is not positive. */
+    /**
+     * A periodic error whose size follows a share (the load's, the temperature's) with its values
+     * {@code v}: n sine and cosine pairs at no share, then n pairs of their change; the squared sums of
+     * each half (root them for the amplitudes over the orders, root-sum-square).
+     */
+    static double[] sizeAndChange(double[] v, int n) {
+        double at0 = 0, per = 0;
+        for (int i = 0; i < n; i++) {
+            at0 += v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1];
+            per += v[2 * n + 2 * i] * v[2 * n + 2 * i] + v[2 * n + 2 * i + 1] * v[2 * n + 2 * i + 1];
+        }
+        return new double[] {at0, per};
+    }
+
+    /**
+     * The payload's centre as a varying compliance with it estimated puts it: each time function's
+     * columns are the torque at the file's centre and its change per {@link GravityTorques#PAYLOAD_SHIFT_M}
+     * along the flange's axes, so the shift is the ratio of their sums over the functions.
+     */
+    static String payloadCentreText(double[] v) {
+        double c = 0;
+        double[] d = new double[3];
+        for (int i = 0; i + 3 < v.length; i += 4) { c += v[i]; for (int k = 0; k < 3; k++) d[k] += v[i + k + 1]; }
+        if (c == 0) return "";
+        return String.format(Locale.ROOT, "The payload's centre of mass was estimated with it: (%.0f, %.0f, %.0f) mm from where the robot "
+                + "file puts it, along the flange's x, y and z. ", d[0] / c * GravityTorques.PAYLOAD_SHIFT_M * 1e3,
+                d[1] / c * GravityTorques.PAYLOAD_SHIFT_M * 1e3, d[2] / c * GravityTorques.PAYLOAD_SHIFT_M * 1e3);
+    }
+
     private static String stiffnessText(double c) {
         return c > 0 ? String.format(Locale.ROOT, "%.0f", 1e-3 / c) : "none (the fit's compliance is not positive)";
     }

@@ -2,6 +2,7 @@ package org.robopro.calibration.diagnosis;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -64,6 +65,52 @@ class EffectTest {
             out.add(new Measurement("p" + i, qs[i], p, null, dir, c.timeS(), c.tempC(), c.payloadKg(), null, 0));
         }
         return out;
+    }
+
+    /**
+     * A payload's compliance in steps: before the first step its first coefficient times the payload's
+     * own torque (the whole torque less the arm's, worked out here from the masses at that pose), between
+     * the steps the second, after them the last; the arm's own weight no part of it; the robot file keeps
+     * it.
+     */
+    @Test
+    void payloadComplianceInStepsTakesThePayloadsTorqueByInterval() {
+        Effect e = Effect.complianceInSteps(2, g, new double[] {1000, 2000});
+        assertEquals(3, e.size());
+        double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0.2};
+        double payloadTorque = g.driveTorques(q, 10)[2] - g.driveTorques(q, 0)[2];
+        assertTrue(Math.abs(payloadTorque) > 1, "the payload loads joint 3 here: " + payloadTorque);
+        double[] times = {0, 999, 1000, 1500, 2000, 3000}, g1 = new double[3];
+        int[] interval = {0, 0, 1, 1, 2, 2};
+        for (int k = 0; k < times.length; k++) {
+            e.regressor(q, new PoseConditions(null, times[k], Double.NaN, 10), g1);
+            for (int i = 0; i < 3; i++) assertEquals(i == interval[k] ? payloadTorque : 0, g1[i], 1e-9, "t " + times[k] + " column " + i);
+        }
+        e.regressor(q, new PoseConditions(null, 1500, Double.NaN, 0), g1);
+        assertArrayEquals(new double[3], g1, 1e-12);
+        double[] v = {1e-7, 2e-7, 3e-7};
+        Effect.Term back = Effect.fromDescription(e.describe(v), model, g, "x.robot.json");
+        assertEquals(e.label(), back.effect().label());
+        assertArrayEquals(v, back.values(), 0);
+        double[] g2 = new double[3];
+        for (double t : times) {
+            var c = new PoseConditions(null, t, Double.NaN, 10);
+            e.regressor(q, c, g1);
+            back.effect().regressor(q, c, g2);
+            assertArrayEquals(g1, g2, 1e-15, "t " + t);
+        }
+        // with the payload's centre estimated: four columns an interval, the first the file's centre, and the file keeps it
+        Effect free = Effect.withPayloadCentreFree(e);
+        assertEquals(12, free.size());
+        double[] g4 = new double[12], t4 = new double[4];
+        g.payloadDriveTorques(q, 10, 2, t4);
+        free.regressor(q, new PoseConditions(null, 1500, Double.NaN, 10), g4);
+        for (int i = 0; i < 12; i++) assertEquals(i / 4 == 1 ? t4[i % 4] : 0, g4[i], 1e-12, "column " + i);
+        double[] v4 = new double[12];
+        for (int i = 0; i < 12; i++) v4[i] = (i + 1) * 1e-8;
+        Effect.Term back4 = Effect.fromDescription(free.describe(v4), model, g, "x.robot.json");
+        assertEquals(free.label(), back4.effect().label());
+        assertArrayEquals(v4, back4.values(), 0);
     }
 
     @Test

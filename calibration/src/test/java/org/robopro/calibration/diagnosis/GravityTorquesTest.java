@@ -39,4 +39,28 @@ class GravityTorquesTest {
         assertEquals(0, t0[0], 1e-9);
         assertTrue(Math.abs(t10[1]) > Math.abs(t0[1]) + 10, t0[1] + " vs " + t10[1]);
     }
+    /**
+     * The payload's centre moved along the flange's axes, at the IRB 2000's zero pose (flange at
+     * (1000, 0, 1615) mm, its z along the base's +x, its x along −z; docs robots.md), 10 kg. Moved
+     * 0.1 m out along the tool (flange z), its lever about each horizontal axis along y grows by 0.1 m:
+     * τ = r × F · y = x·m·g, 9.80665 N·m more about joints 3 and 5; moved along the flange's x (down)
+     * nothing. Drive 2 of the parallel arm carries none of it: θ3 = q3 − q2, so τ_q2 = τ_θ2 − τ_θ3
+     * (virtual work), and both grow alike.
+     */
+    @Test
+    void payloadCentreMovedAlongTheToolAddsItsLeverTimesTheWeight() {
+        double[] q = new double[6], t = new double[4];
+        double mg = 10 * 9.80665;
+        g.payloadDriveTorques(q, 10, 4, t);
+        assertEquals(0, t[1], 1e-9, "down the flange's x: no lever about joint 5");
+        assertEquals(0, t[2], 1e-9, "along the flange's y (joint 5's own axis): no lever");
+        assertEquals(0.1 * mg, t[3], 1e-6, "out along the tool");
+        g.payloadDriveTorques(q, 10, 2, t);
+        assertEquals(0.1 * mg, t[3], 1e-6, "drive 3 carries the forearm's side");
+        g.payloadDriveTorques(q, 10, 1, t);
+        assertEquals(0, t[3], 1e-6, "drive 2 of the parallel arm carries none of it");
+        // the payload at the file's centre, as the whole torque less the arm's
+        g.payloadDriveTorques(q, 10, 4, t);
+        assertEquals(g.driveTorques(q, 10)[4] - g.driveTorques(q, 0)[4], t[0], 1e-9);
+    }
 }

@@ -1,9 +1,11 @@
 package org.robopro.calibration.diagnosis;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.Test;
@@ -960,6 +962,116 @@ class HeldOutFormsTest {
                     "seed " + seed + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
             assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the dispensing matters: " + d.geometricValidateRmsM() / c.floorM());
             assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * The dispensing tool with its reservoir off the flange (its centre 30 mm across and 70 mm along the
+     * tool, where the file puts it at the flange): the payload's torque has another phase in joint 5's
+     * angle, which the file's centre cannot follow. Nothing is named; the payload's compliance with the
+     * centre estimated models it, and the validation error ends within 1.25 x the floor (from 5 x).
+     */
+    @Test
+    void dispensingToolOffTheFlange_estimatesThePayloadsCentre() {
+        double inf = Double.POSITIVE_INFINITY;
+        var cmp = new WorldRobot.Compliance(new double[] {inf, 2e5, 1e5, inf, inf, inf}, List.of(), new double[] {0.0, 0.03, 0.07},
+                new double[] {0, 0, -9.80665});
+        for (long seed : new long[] {1, 2, 3}) {
+            Scenario s = scenario("dispensing tool off the flange", "irb2400", Expected.outside(),
+                    w -> w.withCompliance(cmp).withDispensing(new WorldRobot.Dispensing(new double[] {0, 3600}, new double[] {10, 2})),
+                    p -> p.withPayloads(10));
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), c.validation());
+            List<String> labels = d.effects().stream().map(f -> f.effect().label()).toList();
+            System.out.printf("dispensing off the flange seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), labels);
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            assertTrue(d.effects().stream().anyMatch(f -> f.effect().kind() == Effect.Kind.COMPLIANCE_VARYING && f.effect().payloadCentreFree()),
+                    "seed " + seed + ": " + labels);
+            assertTrue(d.geometricValidateRmsM() > 3 * c.floorM(), "the dispensing matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.25 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * The same tool emptied in two shots (10 kg, then 5 kg from 1100 s, then 2 kg from 2300 s) while the
+     * file records 10 kg: a spline of the time follows a step only so sharply; the payload's compliance
+     * stepping near the world's moments models it, nothing is named, and no clean pose is reported as
+     * a bad reading.
+     */
+    @Test
+    void dispensingToolInShots_isAPayloadComplianceSteppingAtTheShots() {
+        double inf = Double.POSITIVE_INFINITY;
+        var cmp = new WorldRobot.Compliance(new double[] {inf, 2e5, 1e5, inf, inf, inf}, List.of(), new double[] {0, 0, 0},
+                new double[] {0, 0, -9.80665});
+        var shots = new WorldRobot.Dispensing(new double[] {1100, 1101, 2300, 2301}, new double[] {10, 5, 5, 2});
+        for (long seed : new long[] {1, 2}) {
+            Scenario s = scenario("dispensing tool in shots", "irb2400", Expected.outside(), w -> w.withCompliance(cmp).withDispensing(shots),
+                    p -> p.withPayloads(10));
+            WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(seed));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), c.validation());
+            List<String> labels = d.effects().stream().map(f -> f.effect().label()).toList();
+            System.out.printf("dispensing in shots seed %d: %.2f -> %.2f x the floor %s%n", seed, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), labels);
+            assertEquals(List.of(), families(d), "seed " + seed + ": notes " + d.notes());
+            List<double[]> steps = d.effects().stream().map(f -> f.effect())
+                    .filter(e -> e.kind() == Effect.Kind.COMPLIANCE_VARYING && e.stepTimes() != null).map(Effect::stepTimes).toList();
+            assertFalse(steps.isEmpty(), "seed " + seed + ": " + labels);
+            // a joint's steps within 60 s of both shots (poses are 10-20 s apart; a joint that the payload loads little over the
+            // poses near a shot may put its step some poses off)
+            assertTrue(steps.stream().anyMatch(t -> Arrays.stream(new double[] {1100, 2300})
+                            .allMatch(shot -> Arrays.stream(t).anyMatch(x -> Math.abs(x - shot) < 60))),
+                    "seed " + seed + ": steps " + steps.stream().map(Arrays::toString).toList());
+            assertEquals(List.of(), d.outliers(), "seed " + seed);
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the dispensing matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * Joint 1 of the IRB 2000 and joint 2 of the PUMA 560 read by an encoder whose sine channel's gain
+     * drifts from the cosine's by 4·10⁻⁵ per kelvin (1.2·10⁻⁴ on the PUMA's shorter arm), matched at 22 °C (the world inverts q = atan2((1 + g)
+     * sin θ, cos θ) exactly): an error twice a turn whose size follows the warm-up. No transmission
+     * error keeps that size, so nothing is named; the second order growing with the temperature models
+     * it.
+     */
+    @Test
+    void encoderChannelsDriftingApart_isAPeriodicErrorGrowingWithTemperature() {
+        record Case(String robot, int joint, double perK) { }
+        for (Case cs : List.of(new Case("irb2000", 0, 4e-5), new Case("puma560", 1, 1.2e-4))) {
+            WorldCampaigns.Sim c = world(cs.robot(), Expected.outside(), List.of(new JointError.QuadratureGain(cs.joint(), cs.perK(), 22)), p -> p, 3);
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped(cs.robot()), c.train(), c.validation());
+            System.out.printf("encoder gains %s: %.2f -> %.2f x the floor %s%n", cs.robot(), d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), cs.robot() + ": notes " + d.notes());
+            assertTrue(modelled(d, Effect.Kind.WARM_PERIODIC).contains("joint-periodic-warming j" + (cs.joint() + 1) + " (h 2)"),
+                    d.effects().stream().map(f -> f.effect().label()).toList().toString());
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the error matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), cs.robot() + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
+
+    /**
+     * Joint 5's drive through a bearing seat in joint 4's housing out of round (the world's gear mesh:
+     * e cos 2(q4 − β) tan 20° / 25 mm; 35 µm, about 0.03°, on the IRB 2400, 90 µm on the PUMA 560,
+     * whose short wrist shows less of it at the target): the error repeats twice per turn of the housing's joint, not with the drive's
+     * own angle, so nothing is named; the housing angle's second harmonic models it. (Joint 6 turns the
+     * world's target about its own axis, where an error of joint 6 does not move it.)
+     */
+    @Test
+    void driveThroughAnOvalSeat_repeatsWithTheHousingsAngle() {
+        record Case(String robot, int joint, int housing, double ovality) { }
+        for (Case cs : List.of(new Case("irb2400", 4, 3, 35e-6), new Case("puma560", 4, 3, 90e-6))) {
+            WorldCampaigns.Sim c = world(cs.robot(), Expected.outside(),
+                    List.of(new JointError.OvalSeat(cs.joint(), cs.housing(), cs.ovality(), Math.toRadians(20), 0.025, 0.4)), p -> p, 3);
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped(cs.robot()), c.train(), c.validation());
+            System.out.printf("oval seat %s: %.2f -> %.2f x the floor %s%n", cs.robot(), d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), cs.robot() + ": notes " + d.notes());
+            assertEquals(List.of("link-angle-periodic j" + (cs.joint() + 1) + " (q" + (cs.housing() + 1) + ", h 2)"),
+                    modelled(d, Effect.Kind.LINK_PERIODIC), d.effects().stream().map(f -> f.effect().label()).toList().toString());
+            assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the error matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), cs.robot() + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
         }
     }
 
