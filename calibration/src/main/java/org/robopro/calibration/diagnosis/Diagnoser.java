@@ -4119,9 +4119,7 @@ public final class Diagnoser {
             out.add(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(),
                     w.gravity.massesUnknown() ? 2 : Effect.POINT_BASIS, false));
             if (e.along() == Effect.Along.TIME && rows.stream().anyMatch(r -> r.payloadKg() > 0))
-                for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
-                    if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
-                        withPayloadCentre(Effect.complianceVarying(e.joint(), w.gravity, e.along(), e.rangeLo(), e.rangeHi(), nb, true), rows, out);
+                for (Effect f : payloadSplines(e.joint(), w.gravity, e.rangeLo(), e.rangeHi(), rows)) withPayloadCentre(f, rows, out);
         }
         if (e.kind() == Effect.Kind.WARM_PERIODIC && w.gravity != null && loaded(w.gravity, e.joint(), rows)) {
             // on a joint the arm's weight loads, an error of its angle changing through the warm-up may be its give under gravity
@@ -4131,9 +4129,7 @@ public final class Diagnoser {
                 out.add(Effect.complianceVarying(e.joint(), w.gravity, Effect.Along.TEMPERATURE, temp[0], temp[1],
                         w.gravity.massesUnknown() ? 2 : Effect.POINT_BASIS, false));
             if (time != null && rows.stream().anyMatch(r -> r.payloadKg() > 0))
-                for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
-                    if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
-                        withPayloadCentre(Effect.complianceVarying(e.joint(), w.gravity, Effect.Along.TIME, time[0], time[1], nb, true), rows, out);
+                for (Effect f : payloadSplines(e.joint(), w.gravity, time[0], time[1], rows)) withPayloadCentre(f, rows, out);
         }
         if (e.kind() == Effect.Kind.COMPLIANCE_VARYING && e.payloadShare()) {
             // one carried mass: its shape in time and its centre, each varied with the other kept
@@ -4157,10 +4153,7 @@ public final class Diagnoser {
                         shapes.add(Effect.complianceInSteps(e.joint(), e.gravity(), x.stepTimes()));
                 // and the mass changing steadily instead (a spline of the time over the campaign)
                 double[] span = timeSpan(w.conditions);
-                if (span != null)
-                    for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
-                        if (Effect.supported(nb, Effect.POINT_BASIS, rows.size()))
-                            shapes.add(Effect.complianceVarying(e.joint(), e.gravity(), Effect.Along.TIME, span[0], span[1], nb, true));
+                if (span != null) shapes.addAll(payloadSplines(e.joint(), e.gravity(), span[0], span[1], rows));
             }
             for (Effect f : shapes) {
                 Effect g = free ? Effect.withPayloadCentreFree(f) : f;
@@ -5027,6 +5020,17 @@ public final class Diagnoser {
         for (Locator.Found f : found)
             if (f.probe.var == Locator.Var.REACH || f.probe.var == Locator.Var.HEIGHT)
                 out.add(Effect.pointSmooth(f.probe.var == Locator.Var.HEIGHT ? Effect.Along.HEIGHT : Effect.Along.REACH, f.probe.lo, f.probe.hi));
+        return out;
+    }
+
+    /**
+     * The payload's varying compliance of drive {@code joint} with time over lo..hi (s), at each
+     * resolution the poses support (4 and 7 functions).
+     */
+    static List<Effect> payloadSplines(int joint, GravityTorques g, double lo, double hi, List<Measurement> rows) {
+        List<Effect> out = new ArrayList<>();
+        for (int nb : INSTRUMENT_SCALE_RESOLUTIONS)
+            if (Effect.supported(nb, Effect.POINT_BASIS, rows.size())) out.add(Effect.complianceVarying(joint, g, Effect.Along.TIME, lo, hi, nb, true));
         return out;
     }
 
