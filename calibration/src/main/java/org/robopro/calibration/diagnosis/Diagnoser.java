@@ -4684,7 +4684,7 @@ public final class Diagnoser {
             case ANGLE_PERIODIC -> String.format(Locale.ROOT, "measure joint %d over its whole range in small steps with the "
                     + "other joints still (at least %d poses per cycle of the %d-cycle error); a periodic error that stays is in "
                     + "the joint's transmission.", f.probe.joint + 1, Locator.POSES_PER_HARMONIC, f.probe.harmonic);
-            case LINK_PERIODIC -> f.probe.linkAngle[f.probe.joint] == 0
+            case LINK_PERIODIC -> Effect.isAnotherJointsAngle(f.probe.linkAngle, f.probe.joint)
                     ? String.format(Locale.ROOT, "measure joint %d's error at a few of its angles while %s turns through a whole "
                     + "turn in small steps: an error that follows %s is in the housing joint %d's drive passes through (a bearing "
                     + "seat or a gear out of round), not in joint %d's own gear.", f.probe.joint + 1, Effect.linkAngleText(f.probe.linkAngle),

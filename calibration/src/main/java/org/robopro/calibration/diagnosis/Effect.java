@@ -439,10 +439,13 @@ public final class Effect {
     }
 
     /** Whether a link-angle periodic error repeats with one other joint's angle alone (a housing its drive passes through). */
-    public boolean followsAnotherJoint() {
+    public boolean followsAnotherJoint() { return isAnotherJointsAngle(linkAngle, joint); }
+
+    /** Whether the angle Σ_l c_l·q_l is one joint's alone, not joint {@code j}'s ({@link #jointAngle}). */
+    static boolean isAnotherJointsAngle(double[] c, int j) {
         int nonzero = 0;
-        for (double c : linkAngle) if (c != 0) nonzero++;
-        return nonzero == 1 && linkAngle[joint] == 0;
+        for (double x : c) if (x != 0) nonzero++;
+        return nonzero == 1 && c[j] == 0;
     }
 
     /**
@@ -3048,6 +3051,13 @@ public final class Effect {
         return new EffectDescription(json(), joints1(), p);
     }
 
+    /** The whole harmonics a1, a2, ... an effect's parameters name (their b's beside them); refused when there is none. */
+    private static int[] wholeHarmonics(EffectDescription d, String file) {
+        int[] hs = d.parameters().keySet().stream().filter(key -> key.matches("a\\d+")).mapToInt(key -> Integer.parseInt(key.substring(1))).toArray();
+        if (hs.length == 0) throw d.error(file, "parameters_si", "no harmonic a1, a2, ...");
+        return hs;
+    }
+
     /** The periodic error of drive {@code joint} at the orders its description's a-parameters name (a7: whole, a7.1: a stage). */
     private static Effect periodicOf(EffectDescription d, int joint, String file) {
         List<Integer> hs = new ArrayList<>();
@@ -3102,8 +3112,7 @@ public final class Effect {
                     if (v != null) { c[l] = v; any |= v != 0; }
                 }
                 if (!any) throw d.error(file, "parameters_si", "needs the angle's coefficients angle_q1..angle_q" + model.dof());
-                int[] hs = ps.keySet().stream().filter(key -> key.matches("a\\d+")).mapToInt(key -> Integer.parseInt(key.substring(1))).toArray();
-                if (hs.length == 0) throw d.error(file, "parameters_si", "no harmonic a1, a2, ...");
+                int[] hs = wholeHarmonics(d, file);
                 yield linkPeriodic(js.get(0) - 1, c, hs);
             }
             case GRAVITY_PLAY -> {
@@ -3114,8 +3123,7 @@ public final class Effect {
                 yield gravityPlay(js.get(0) - 1, g, require(d, "side_nm", file), wd);
             }
             case WARM_PERIODIC -> {
-                int[] hs = ps.keySet().stream().filter(key -> key.matches("a\\d+")).mapToInt(key -> Integer.parseInt(key.substring(1))).toArray();
-                if (hs.length == 0) throw d.error(file, "parameters_si", "no harmonic a1, a2, ...");
+                int[] hs = wholeHarmonics(d, file);
                 double lo = require(d, "temp_c_min", file), hi = require(d, "temp_c_max", file);
                 if (!(hi > lo)) throw d.error(file, "parameters_si.temp_c_max", "must be above temp_c_min, got " + hi);
                 yield periodicWarming(js.get(0) - 1, hs, lo, hi);

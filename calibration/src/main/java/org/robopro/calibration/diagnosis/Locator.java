@@ -1261,7 +1261,7 @@ final class Locator {
         }
         List<Probe> batch = drives(t, j, ks, regs);
         String text = Effect.linkAngleText(c);
-        boolean housing = c[j] == 0 && java.util.Arrays.stream(c).filter(v -> v != 0).count() == 1;
+        boolean housing = Effect.isAnotherJointsAngle(c, j);
         String angle = housing ? "joint " + text.substring(1) + "'s angle" : "the link angle " + text;
         for (int h = 1; h <= hMax; h++) {
             Probe p = batch.get(h - 1);
