@@ -164,6 +164,14 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     static double uniform(Random r, double lo, double hi) { return lo + (hi - lo) * r.nextDouble(); }
 
+    /** A cable retractor on a boom beside the cell ({@link WorldRobot.Retractor}): its anchor, pull and the drives' stiffnesses drawn. */
+    static WorldRobot.Retractor retractor(Random r, int dof) {
+        double az = 2 * Math.PI * r.nextDouble(), d = uniform(r, 1.9, 2.5);
+        double[] k = new double[dof];
+        for (int j = 0; j < dof; j++) k[j] = j < 3 ? uniform(r, 2e5, 6e5) : uniform(r, 2e4, 6e4);
+        return new WorldRobot.Retractor(new double[] {d * Math.cos(az), d * Math.sin(az), uniform(r, 1, 2)}, uniform(r, 30, 50), k);
+    }
+
     static double signed(Random r, double lo, double hi) { return (r.nextBoolean() ? 1 : -1) * uniform(r, lo, hi); }
 
     /** Adds drive errors to a robot. */
@@ -788,6 +796,14 @@ public record Scenario(String name, String family, String robot, Expected expect
                     var d = new WorldRobot.Dispensing(new double[] {0, 3000}, new double[] {10, uniform(r, 1, 3)});
                     return w -> w.withCompliance(cmp).withDispensing(d);
                 }, p -> p.withPayloads(10)));
+        // a cable retractor on a boom 1.9-2.5 m from axis 1, 1-2 m above the base, pulling the tool with 30-50 N; each drive
+        // yields through its own stiffness (N·m/rad: the main axes' reducers 2-6e5, the wrist's 2-6e4)
+        c.add(s("outside: a cable retractor on a side boom pulls the tool", "outside", "irb2400", Expected.outside(),
+                (n, r) -> { var x = retractor(r, n.dof()); return w -> w.withRetractor(x); }, same()));
+        c.add(s("outside: a cable retractor on a side boom pulls the tool, puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> { var x = retractor(r, n.dof()); return w -> w.withRetractor(x); }, same()));
+        c.add(s("lost motion j2 beside a cable retractor pulling the tool", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
+                (n, r) -> { var x = retractor(r, n.dof()); var lm = lostMotion(1, r); return w -> add(lm).apply(w.withRetractor(x)); }, same()));
         // joint 1 (and joint 2 of the PUMA 560, 6-15e-5) read by an encoder whose channels' gains drift apart by 2-5e-5 per kelvin, matched
         // at 20-24 °C: an error twice a turn growing through the warm-up (up to 0.005-0.02 deg)
         c.add(s("outside: j1's encoder channels drifting apart as it warms", "outside", "irb2000", Expected.outside(),

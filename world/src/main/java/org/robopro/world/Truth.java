@@ -134,6 +134,10 @@ final class Truth {
         if (w.dispensing() != null)
             root.put("dispensing", Map.of("form", "the flange carries kg(t), piecewise linear in time, whatever payload_kg records (outside)",
                     "times_s", Arrays.stream(w.dispensing().timesS()).boxed().toList(), "kg", Arrays.stream(w.dispensing().kg()).boxed().toList()));
+        if (w.retractor() != null)
+            root.put("retractor", Map.of("form", "a steady pull of force_n on the measured target toward the anchor, each drive yielding "
+                    + "by its torque over its stiffness (outside)", "anchor_m", Arrays.stream(w.retractor().anchor()).boxed().toList(),
+                    "force_n", w.retractor().forceN(), "stiffness_nm_per_rad", Arrays.stream(w.retractor().stiffness()).boxed().toList()));
         if (w.refraction() != null)
             root.put("refraction", Map.of("form", "the line of sight turned up by kappa L / 2 in its vertical plane, kappa = (n - 1) / T dT/dz / n, "
                     + "n - 1 = 2.7e-4 (outside)", "times_s", Arrays.stream(w.refraction().timesS()).boxed().toList(),

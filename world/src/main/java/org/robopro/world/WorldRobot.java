@@ -49,12 +49,25 @@ import org.robopro.models.RobotDescription;
  * @param twist              the upper arm twisting under the weights beyond it, or null
  * @param targetPlay         the measured target shifting within its nest's clearance toward gravity, or null
  * @param knock              the instrument knocked (or the base slipping) once during the campaign, or null
+ * @param dispensing         what the flange really carries over the campaign, whatever the file records, or null
+ * @param refraction         the air's temperature gradient bending the instrument's beam, or null
+ * @param retractor          a cable retractor pulling the tool toward a fixed anchor, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                          FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                         Refraction refraction) {
+                         Refraction refraction, Retractor retractor) {
+    /** A world robot with nothing pulling on its tool. */
+    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
+                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
+                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
+                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
+                      Refraction refraction) {
+        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, null);
+    }
+
     /** A world robot whose carried mass is as recorded and whose instrument sees through still air. */
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
@@ -586,6 +599,43 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     /**
+     * A cable retractor (a spring balancer or hose reel) hung from a boom beside the cell, its cable
+     * hooked to the tool: it pulls the measured target with a steady force {@code forceN} toward the
+     * fixed {@code anchor} (base frame, m), a spring reel's tension nearly the same over its travel.
+     * Each model joint i feels the force's moment about its current axis line, τ_i = w_i · ((p − p_i)
+     * × F) (a force at a point through the Jacobian transpose: Siciliano et al., "Robotics: Modelling,
+     * Planning and Control", 2009, §3.8.2, written as moments about the axes), carried to the drives
+     * by virtual work, τ_q = Cᵀ τ_θ, and drive j yields by τ_q,j / {@code stiffness[j]} (N·m/rad;
+     * infinite: rigid), θ += C Δq.
+     */
+    public record Retractor(double[] anchor, double forceN, double[] stiffness) {
+        public Retractor { anchor = anchor.clone(); stiffness = stiffness.clone(); }
+
+        @Override public double[] anchor() { return anchor.clone(); }
+
+        @Override public double[] stiffness() { return stiffness.clone(); }
+
+        /** The pull's moment about each model joint's axis line (N·m; N along the axis for a prismatic joint), bodies at {@code body}, pulled at {@code at}. */
+        double[] torques(Arm a, Rigid[] body, double[] at) {
+            double[] d = Rigid.minus(anchor, at);
+            double[] f = Rigid.scale(d, forceN / Rigid.norm(d));
+            int n = a.dof();
+            double[][] pts = a.points(), axes = a.axes();
+            boolean[] prismatic = a.prismatic();
+            double[] tau = new double[n];
+            for (int i = 0; i < n; i++) {
+                Rigid before = i == 0 ? Rigid.IDENTITY : body[i - 1];
+                double[] w = before.rotate(axes[i]), p = before.apply(pts[i]);
+                tau[i] = prismatic[i] ? Rigid.dot(w, f) : Rigid.dot(w, Rigid.cross(Rigid.minus(at, p), f));
+            }
+            return tau;
+        }
+
+        /** Drive j's yield under torque tau (rad). */
+        double yieldOf(int j, double tau) { return Double.isInfinite(stiffness[j]) ? 0 : tau / stiffness[j]; }
+    }
+
+    /**
      * A dress pack (cable and hose package) on the wrist, held by a spring retractor on the forearm:
      * between its clamps on the forearm and on the tool the hose runs around the wrist at radius
      * {@code radiusM}; winding the wrist (u = theta4 + theta6: with joint 5 straight, joints 4 and 6
@@ -742,6 +792,18 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             double[] tauQ = driveSide(tau);
             double[] dq = new double[n];
             for (int j = 0; j < 3; j++) dq[3 + j] = tauQ[3 + j] / dressPack.wristStiffness[j];
+            double[] dTheta = times(coupling, dq);
+            for (int i = 0; i < n; i++) theta[i] += dTheta[i];
+        }
+        if (retractor != null) {
+            // the cable pulls at the measured target, at its place before the joints yield (a deflection of a few tenths of a
+            // millimetre turns a pull from an anchor metres away by well under a milliradian)
+            Rigid[] body = a.bodies(theta);
+            double[] at = a.flange(theta).apply(flangeToTool.p());
+            double[] tau = retractor.torques(a, body, at);
+            double[] tauQ = driveSide(tau);
+            double[] dq = new double[n];
+            for (int j = 0; j < n; j++) dq[j] = retractor.yieldOf(j, tauQ[j]);
             double[] dTheta = times(coupling, dq);
             for (int i = 0; i < n; i++) theta[i] += dTheta[i];
         }
@@ -944,74 +1006,78 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withKnock(Knock k) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction, retractor);
     }
 
     public WorldRobot withTargetPlay(TargetPlay p) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     /** The same robot carrying a mass that changes with time as {@code d} says, whatever the campaign records. */
     public WorldRobot withDispensing(Dispensing d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction, retractor);
     }
 
     /** The same robot seen through air whose vertical temperature gradient is {@code r}'s. */
+    public WorldRobot withRetractor(Retractor r) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, r);
+    }
+
     public WorldRobot withRefraction(Refraction r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r, retractor);
     }
 
     /**
@@ -1092,7 +1158,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
     }
 
     static double[] times(double[][] m, double[] v) {

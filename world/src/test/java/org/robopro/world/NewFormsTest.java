@@ -30,6 +30,39 @@ class NewFormsTest {
      * 40 µm·tan 20°/25 mm; a quarter turn of the housing later (the short axis) as much the other way;
      * an eighth of a turn off, nothing; joint 5's own angle does not change it.
      */
+    /**
+     * A cable retractor's pull loads each joint by the work it does through the joint's turn
+     * (virtual work: τ_i = F·∂p/∂θ_i, here by finite differences of the arm's own chain, not by the
+     * moment the retractor computes), and the arm yields toward the anchor: the target moves with the
+     * force (F·Δp > 0), by about Σ τ_i² / k_i / |F| along it.
+     */
+    @Test
+    void retractorLoadsEachJointByTheWorkOfItsPull_andTheArmYieldsTowardIt() {
+        // the PUMA 560: no linkage between drives and joints, so q = θ
+        WorldRobot w = WorldRobot.nominal(org.robopro.models.RobotLibrary.shipped("puma560"), new double[] {0, 0, 0.15});
+        Arm a = w.arm();
+        double[] theta = {0.4, -0.3, 0.5, 0.7, 0.8, -0.2}, anchor = {1.5, -1.4, 1.8};
+        var x = new WorldRobot.Retractor(anchor, 40, new double[] {4e5, 3e5, 2e5, 3e4, 3e4, 3e4});
+        double[] at = a.flange(theta).apply(new double[] {0, 0, 0.15});
+        double[] d = Rigid.minus(anchor, at), f = Rigid.scale(d, 40 / Rigid.norm(d));
+        double[] tau = x.torques(a, a.bodies(theta), at);
+        for (int i = 0; i < 6; i++) {
+            double h = 1e-7;
+            double[] up = theta.clone(), dn = theta.clone();
+            up[i] += h;
+            dn[i] -= h;
+            double[] dp = Rigid.scale(Rigid.minus(a.flange(up).apply(new double[] {0, 0, 0.15}), a.flange(dn).apply(new double[] {0, 0, 0.15})), 0.5 / h);
+            assertEquals(Rigid.dot(f, dp), tau[i], 1e-6 * 40, "joint " + (i + 1));
+        }
+        double[] q = theta;
+        double[] still = w.target(q, new int[6], 20, 0, 0).p(), pulled = w.withRetractor(x).target(q, new int[6], 20, 0, 0).p();
+        double[] moved = Rigid.minus(pulled, still);
+        double work = 0;
+        for (int i = 0; i < 6; i++) work += tau[i] * tau[i] / x.stiffness()[i];
+        assertTrue(Rigid.dot(moved, f) > 0, "the target moves toward the anchor");
+        assertEquals(work / 40, Rigid.dot(moved, f) / 40, 0.02 * work / 40, "the pull's work");
+    }
+
     @Test
     void ovalSeatTurnsTheDriveTwiceAPerTurnOfItsHousing() {
         double major = Math.toRadians(30), full = 40e-6 * Math.tan(Math.toRadians(20)) / 0.025;

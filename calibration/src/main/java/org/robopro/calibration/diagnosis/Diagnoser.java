@@ -110,6 +110,8 @@ public final class Diagnoser {
      * 1.5 δ/L: 2 mm on a 0.6 m link), rad.
      */
     static final double MAX_LINK_TURN_RAD = 5e-3;
+    /** A joint's largest turn per metre of lever across a pull on the tool, rad/m: 200 N on a wrist drive of 5000 N·m/rad. */
+    static final double MAX_PULL_TURN_PER_M = 0.04;
     /**
      * Largest plausible RMS error of an instrument's distance reading (m) and of its angle readings
      * (rad, 50 arc-seconds): a laser tracker's specified distance error is tens of micrometres and its
@@ -1711,6 +1713,16 @@ public final class Diagnoser {
                 scanned = t;
                 scannedFit = fit;
             }
+            // a pull's anchor placed again on what the effects chosen so far leave (placed on the geometric fit's residual, it
+            // bent toward what they hold)
+            if (step > 0)
+                for (int i = 0; i < remaining.size(); i++) {
+                    Effect e = remaining.get(i);
+                    if (e.kind() != Effect.Kind.TOOL_PULL || e.pullAnchor() == null) continue;
+                    Effect moved = Locator.bestPull(t, e.pullAttach(), e.pullAnchor());
+                    remaining.set(i, moved);
+                    family.replaceAll(f -> f == e ? moved : f);
+                }
             List<Candidate> cs = new ArrayList<>();
             for (Effect e : remaining) {
                 Candidate c = t.test(e, w.conditions);
@@ -4516,6 +4528,11 @@ public final class Diagnoser {
                 // the link's bending, or its joint's spring (a beam's special case)
                 case LINK_BEND -> { if ((k == Effect.Kind.LINK_SAG || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint) return e; }
                 case LINK_TWIST -> { if (k == Effect.Kind.LINK_TWIST) return e; }
+                // a pull on the tool, or the joints' springs under a weight (one that pulls straight down)
+                case TOOL_PULL -> {
+                    if (k == Effect.Kind.TOOL_PULL || k == Effect.Kind.COMPLIANCE || k == Effect.Kind.COMPLIANCE_VARYING
+                            || k == Effect.Kind.TOOL_SAG || k == Effect.Kind.LINK_SAG || k == Effect.Kind.LINK_TWIST) return e;
+                }
                 // the joint's play taken up by gravity, a lost motion held by it, or its spring under the same torque
                 case GRAVITY_PLAY -> {
                     if ((k == Effect.Kind.GRAVITY_PLAY || k == Effect.Kind.BACKLASH || k == Effect.Kind.COMPLIANCE) && e.joint() == f.probe.joint)
@@ -4755,6 +4772,9 @@ public final class Diagnoser {
             case GRAVITY_PLAY -> String.format(Locale.ROOT, "measure poses where the gravity torque on joint %d is small, each "
                     + "approached from both directions, and a few with two payloads: a gear's backlash follows the last motion "
                     + "there, a clearance held by the weight does not.", f.probe.joint + 1);
+            case TOOL_PULL -> "measure a few poses twice, with whatever hangs on the tool (a hose, a cable, a retractor or a "
+                    + "balancer) unhooked and then hooked: a pull from outside moves the point between the two, the joints' springs "
+                    + "under the arm's own weight do not.";
             case LINK_TWIST -> "put two targets on joint 3's housing, either side of the upper arm's plane, and measure them with "
                     + "the wrist turned so the tool's weight hangs to one side and then to the other, with and without payload: an "
                     + "upper arm that twists lifts one and lowers the other.";
@@ -5107,7 +5127,7 @@ public final class Diagnoser {
                 }
                 case TARGET_DRIFT -> out.add(Effect.targetDrift(model, f.probe.lo, f.probe.hi, f.probe.basis));
                 case BASE_CREEP -> out.add(f.probe.creep);
-                case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT -> { }
+                case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, TOOL_PULL -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -5161,6 +5181,7 @@ public final class Diagnoser {
         if (found.stream().anyMatch(f -> f.probe.var == Locator.Var.TOOL_PLAY)) out.add(Effect.toolPlay(model, Effect.DOWN, playTips(found)));
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND || f.probe.var == Locator.Var.LINK_TWIST) out.add(f.probe.bend);
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.TARGET_SIGHT) out.add(f.probe.incidence);
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.TOOL_PULL && f.probe.pull != null) out.add(f.probe.pull);
         return out;
     }
 
@@ -6648,6 +6669,21 @@ public final class Diagnoser {
                 double d = spread(v);
                 c.plausible = d < MAX_BACKLASH_RAD;
                 c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(d), Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case TOOL_PULL -> {
+                // each joint yields toward the pull (its compliance times the force is positive) and by less than a few degrees per
+                // metre of lever: a 200 N pull on a 5000 N·m/rad wrist drive; a joint the pull hardly loads has a coefficient too
+                // uncertain to condemn
+                boolean toward = e.pullAnchor() != null, ok = true;
+                double most = 0;
+                for (int i = 0; i < v.length; i++) {
+                    if (c.absorbedMask != null && c.absorbedMask[i]) continue;
+                    most = Math.max(most, Math.abs(v[i]));
+                    if (!overlaps(v[i], sd[i], toward ? 0 : -MAX_PULL_TURN_PER_M, MAX_PULL_TURN_PER_M)) ok = false;
+                }
+                c.plausible = ok;
+                c.plausibility = String.format(Locale.ROOT, "every joint yields %sby less than %.1f deg per metre of lever across the "
+                        + "pull (largest %.4f deg)", toward ? "toward the pull and " : "", Math.toDegrees(MAX_PULL_TURN_PER_M), Math.toDegrees(most));
             }
             case LINK_TWIST -> {
                 // each lever's twist at a metre of lever and at a rated payload of 20 kg

@@ -109,7 +109,9 @@ public final class Effect {
         TARGET_INCIDENCE("target-incidence", "Error of the measured point that follows the direction the instrument sees it from, "
                 + "in the tool's frame: a reflector seen off its axis, of no known family"),
         LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family"),
-        LINK_TWIST("link-twist", "The upper arm twisting about its long axis under the weights beyond it, of no known family");
+        LINK_TWIST("link-twist", "The upper arm twisting about its long axis under the weights beyond it, of no known family"),
+        TOOL_PULL("tool-pull", "A steady pull on the tool from outside the robot (a hose or cable retractor, a balancer, a dress pack "
+                + "hung from a boom), each joint yielding to it through its stiffness, of no known family");
 
         public final String json;
         public final String title;
@@ -237,6 +239,8 @@ public final class Effect {
     private double[] stepTimes;              // varying compliance in steps: the times (s) its compliance steps at (null: a spline)
     private boolean payloadCentreFree;       // varying payload compliance: the payload's centre estimated with it (four columns a function)
     private double[] linkAngle;              // link-angle periodic: the angle it repeats with, Σ linkAngle[l]·q_l
+    private Vec3 attach;                     // tool pull: where the pull acts, flange frame
+    private double[] anchor;                 // tool pull: the fixed point it pulls toward, base frame (null: a pull of one direction)
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -1906,6 +1910,111 @@ public final class Effect {
         };
     }
 
+    /**
+     * A steady pull on the tool from outside the robot, the joints yielding to it ({@code tool-pull}):
+     * a force F acting at {@code attach} (flange frame) loads each drive j with τ_j = J_jᵀ F, J_j the
+     * point's linear Jacobian column of drive j (virtual work, e.g. Siciliano et al., "Robotics:
+     * Modelling, Planning and Control", 2009, §3.8.2), and the drive yields by Δq_j = c_j τ_j, which
+     * moves the measured point by its own column times Δq_j and turns the measured frame about the
+     * joint's axis. With {@code anchor} null the force keeps one direction over the campaign (a
+     * weight on a pulley, a balancer far overhead): three columns per revolute joint, the products
+     * c_j F_x, c_j F_y, c_j F_z (rad/m). With an anchor (base frame), a pull of steady size toward
+     * that point (a cable retractor on a boom): one column per revolute joint, c_j |F|, the force
+     * along the unit vector from the attach point to the anchor at each pose. A compliance's payload
+     * column is this form's vertical pull with the payload's weight as the force.
+     */
+    public static Effect toolPull(KinematicModel model, Vec3 attachInFlange, double[] anchorBase) {
+        if (java.util.stream.IntStream.range(0, model.dof()).allMatch(model::isPrismatic))
+            throw new IllegalArgumentException("a tool pull needs a revolute joint to yield");
+        Effect e = new Effect(Kind.TOOL_PULL, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.attach = attachInFlange;
+        e.anchor = anchorBase == null ? null : anchorBase.clone();
+        return e;
+    }
+
+    /** A tool pull's yielding joints (0-based): the model's revolute ones. */
+    int[] pullJoints() {
+        return java.util.stream.IntStream.range(0, model.dof()).filter(j -> !model.isPrismatic(j)).toArray();
+    }
+
+    /** A tool pull's point of action, flange frame (null for other kinds). */
+    public Vec3 pullAttach() { return attach; }
+
+    /** A tool pull's anchor, base frame (null: a pull of one direction, or another kind). */
+    public double[] pullAnchor() { return anchor == null ? null : anchor.clone(); }
+
+    /**
+     * A tool pull's drive torque per unit of each column at the pose with Jacobian {@code jac}
+     * ({@link KinematicModel#geometricJacobian}) and flange {@code f}: the attach point's velocity per unit
+     * of the column's drive, v + ω × (a − o_flange), dotted with the column's force direction.
+     */
+    private double[] pullTorques(double[][] jac, Pose f) {
+        Vec3 fo = f.position(), a = f.apply(attach);
+        double ax = a.x() - fo.x(), ay = a.y() - fo.y(), az = a.z() - fo.z();
+        double[] u = null;
+        if (anchor != null) {
+            double dx = anchor[0] - a.x(), dy = anchor[1] - a.y(), dz = anchor[2] - a.z(), d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            u = d > 0 ? new double[] {dx / d, dy / d, dz / d} : new double[3];
+        }
+        double[] out = new double[size()];
+        int col = 0;
+        for (int j : pullJoints()) {
+            double wx = jac[3][j], wy = jac[4][j], wz = jac[5][j];
+            double[] lever = {jac[0][j] + wy * az - wz * ay, jac[1][j] + wz * ax - wx * az, jac[2][j] + wx * ay - wy * ax};
+            if (u == null) for (int c = 0; c < 3; c++) out[col++] = lever[c];
+            else out[col++] = lever[0] * u[0] + lever[1] * u[1] + lever[2] * u[2];
+        }
+        return out;
+    }
+
+    /**
+     * A tool pull's columns at q: the move of a point at {@code pointBase} (3 x size, row-major) and the
+     * measured frame's turn, for a unit coefficient of each column ({@link #toolPull}).
+     */
+    private void toolPullColumns(double[] q, double[] pointBase, double[] g3, double[] w3) {
+        int k = size();
+        if (g3 != null) Arrays.fill(g3, 0);
+        if (w3 != null) Arrays.fill(w3, 0);
+        double[][] jac = model.geometricJacobian(q);
+        Pose f = model.flange(q);
+        Vec3 fo = f.position();
+        double[] tau = pullTorques(jac, f);
+        int[] js = pullJoints();
+        int per = k / js.length;
+        for (int i = 0; i < js.length; i++) {
+            int j = js[i];
+            double vx = jac[0][j], vy = jac[1][j], vz = jac[2][j], wx = jac[3][j], wy = jac[4][j], wz = jac[5][j];
+            double[] move = null;
+            if (g3 != null && pointBase != null) {
+                double px = pointBase[0] - fo.x(), py = pointBase[1] - fo.y(), pz = pointBase[2] - fo.z();
+                move = new double[] {vx + wy * pz - wz * py, vy + wz * px - wx * pz, vz + wx * py - wy * px};
+            }
+            for (int c = 0; c < per; c++) {
+                int col = i * per + c;
+                double dq = tau[col];
+                if (move != null) for (int r = 0; r < 3; r++) g3[r * k + col] = move[r] * dq;
+                if (w3 != null) { w3[col] = wx * dq; w3[k + col] = wy * dq; w3[2 * k + col] = wz * dq; }
+            }
+        }
+    }
+
+    /** A tool pull's plotting variable at q: the attach point's distance from the anchor, or the flange's reach (m). */
+    public double pullDistance(double[] q) {
+        Pose f = model.flange(q);
+        if (anchor == null) return Math.hypot(f.position().x(), f.position().y());
+        Vec3 a = f.apply(attach);
+        return Math.sqrt(Math.pow(anchor[0] - a.x(), 2) + Math.pow(anchor[1] - a.y(), 2) + Math.pow(anchor[2] - a.z(), 2));
+    }
+
+    /** A tool pull's drive deflections (rad) at q for coefficients v; zero on prismatic joints. */
+    public double[] pullDeflections(double[] q, double[] v) {
+        double[] out = new double[model.dof()], tau = pullTorques(model.geometricJacobian(q), model.flange(q));
+        int[] js = pullJoints();
+        int per = tau.length / js.length;
+        for (int i = 0; i < js.length; i++) for (int c = 0; c < per; c++) out[js[i]] += v[i * per + c] * tau[i * per + c];
+        return out;
+    }
+
     /** Whether this effect is a step at one time (s): of a joint's zero, the target on the flange, the instrument against the base, the distances. */
     public boolean stepInTime() {
         return kind == Kind.ZERO_STEP || kind == Kind.TARGET_STEP || kind == Kind.BASE_STEP || kind == Kind.RANGE_STEP;
@@ -1915,7 +2024,7 @@ public final class Effect {
     public boolean isFallback() {
         return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.WARM_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
-                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE;
+                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE || kind == Kind.TOOL_PULL;
     }
 
     /**
@@ -2118,7 +2227,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
-                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> Target.POSITION;
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -2168,6 +2277,7 @@ public final class Effect {
             case TOOL_SAG -> 9;
             case TOOL_PLAY -> PLAY_SHIFTS + (playTurns ? PLAY_TIPS : 0);
             case TARGET_INCIDENCE -> INCIDENCE_TERMS;
+            case TOOL_PULL -> pullJoints().length * (anchor == null ? 3 : 1);
             case LINK_SAG -> 2 + (sagPayload ? 1 : 0);
             case LINK_TWIST -> TWIST_ARM_TERMS + (sagPayload ? HAND_TERMS : 0);
             case POINT_SMOOTH, TARGET_DRIFT -> 3 * nBasis;
@@ -2251,6 +2361,12 @@ public final class Effect {
                 if (sagPayload) out.addAll(List.of("t_payload_o", "t_payload_x", "t_payload_y", "t_payload_z"));
             }
             case TOOL_SAG -> { for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y", "z"}) out.add("a" + a + b); }
+            case TOOL_PULL -> {
+                for (int j : pullJoints()) {
+                    if (anchor != null) out.add("c_j" + (j + 1));
+                    else for (String a : new String[] {"x", "y", "z"}) out.add("c_j" + (j + 1) + "_f" + a);
+                }
+            }
             case TOOL_PLAY -> {
                 for (String a : new String[] {"x", "y", "z"}) for (String b : new String[] {"x", "y"}) out.add("p" + a + b);
                 if (playTurns) for (String a : new String[] {"x", "y"}) for (String b : new String[] {"x", "y"}) out.add("r" + a + b);
@@ -2305,6 +2421,7 @@ public final class Effect {
             case AXIAL_RUNOUT -> "m";
             case LINK_SAG -> "m";
             case LINK_TWIST -> "rad";
+            case TOOL_PULL -> "rad/m";
             case THERMAL -> usesTimeProxy() ? "1" : "1/K";
             case THERMAL_LINK -> "1/K";
             case DRIFT -> usesTimeProxy() ? "m/h" : "m/K";
@@ -2395,6 +2512,8 @@ public final class Effect {
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
             case TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> kind.json;
+            case TOOL_PULL -> kind.json + (anchor == null ? " (one direction)"
+                    : String.format(Locale.ROOT, " (toward %.2f, %.2f, %.2f m)", anchor[0], anchor[1], anchor[2]));
             case LINK_TWIST -> kind.json + " j2 (upper arm)";
             case LINK_SAG -> kind.json + " j" + (joint + 1) + (joint == 1 ? " (upper arm)" : joint == 2 ? " (forearm)" : "");
             case AXIS_WOBBLE, AXIAL_RUNOUT -> kind.json + " j" + (joint + 1) + " (" + (harmonics.length > 1 ? "orders "
@@ -2567,7 +2686,7 @@ public final class Effect {
                 }
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
-                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE -> throw new IllegalStateException(label() + " acts on the measured point");
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -2590,6 +2709,7 @@ public final class Effect {
             case TARGET_INCIDENCE -> incidenceRegressor(model.flange(q), sightOrigin, sightAxis, sightAcross, pointBase, g3);
             case LINK_SAG -> linkSagColumns(q, c, pointBase, g3, null);
             case LINK_TWIST -> linkTwistColumns(q, c, pointBase, g3, null);
+            case TOOL_PULL -> toolPullColumns(q, pointBase, g3, null);
             case AXIAL_RUNOUT -> {
                 // the distal bodies move along the joint's axis: Δp = δ(θ) ẑ, whatever the point
                 double[] z = new double[3];
@@ -2791,7 +2911,7 @@ public final class Effect {
     }
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
-    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST
+    public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TOOL_PULL
             || kind == Kind.BASE_TURN || kind == Kind.BASE_STEP || kind == Kind.TOOL_PLAY && playTurns; }
 
     /**
@@ -2804,6 +2924,7 @@ public final class Effect {
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
         if (kind == Kind.LINK_TWIST) { linkTwistColumns(q, c, null, null, g3); return; }
+        if (kind == Kind.TOOL_PULL) { toolPullColumns(q, null, null, g3); return; }
         if (kind == Kind.TOOL_PLAY) { if (playTurns) toolPlayRegressor(model.flange(q), down, true, g3, size(), PLAY_SHIFTS); return; }
         if (kind == Kind.BASE_STEP) { if (c.timeS() <= tauS) baseStepRegressor(null, null, g3); return; }
         if (kind == Kind.BASE_CREEP) { g3[2 * size()] = creepCount(Double.isFinite(c.timeS()) ? c.timeS() : Double.POSITIVE_INFINITY); return; }
@@ -3009,6 +3130,12 @@ public final class Effect {
                 putInstrument(p, instrument);
             }
             case LINK_SAG, LINK_TWIST -> { }
+            case TOOL_PULL -> {
+                p.put("attach_x", attach.x());
+                p.put("attach_y", attach.y());
+                p.put("attach_z", attach.z());
+                if (anchor != null) { p.put("anchor_x", anchor[0]); p.put("anchor_y", anchor[1]); p.put("anchor_z", anchor[2]); }
+            }
             case BASE_TILT -> {
                 if (!towardLean()) p.put("axis_azimuth_rad", tiltAzimuth);
                 if (squareFoot()) p.put("foot_edges", 4.0);
@@ -3077,7 +3204,7 @@ public final class Effect {
         List<Integer> js = d.joints();
         int need = switch (kind) {
             case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT,
-                 TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> 0;
+                 TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE, TOOL_PULL -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -3238,6 +3365,14 @@ public final class Effect {
                 yield linkTwist(model, ps.containsKey("t_payload_o"));
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
+            case TOOL_PULL -> {
+                if (java.util.stream.IntStream.range(0, model.dof()).allMatch(model::isPrismatic))
+                    throw d.error(file, "", "tool-pull needs a revolute joint to yield; this robot has none");
+                Vec3 at = new Vec3(require(d, "attach_x", file), require(d, "attach_y", file), require(d, "attach_z", file));
+                double[] a = ps.containsKey("anchor_x") ? new double[] {require(d, "anchor_x", file), require(d, "anchor_y", file),
+                        require(d, "anchor_z", file)} : null;
+                yield toolPull(model, at, a);
+            }
             case TOOL_PLAY -> toolPlay(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)),
                     ps.containsKey("rxx"));
             case TARGET_INCIDENCE -> {

@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import org.ejml.data.DMatrixRMaj;
+import org.ejml.dense.row.CommonOps_DDRM;
 import org.robopro.calibration.PoseConditions;
 import org.robopro.calibration.measurement.Measurement;
 import org.robopro.kinematics.KinematicModel;
@@ -41,7 +43,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC, TOOL_PULL }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -112,6 +114,8 @@ final class Locator {
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
         Effect play;                             // GRAVITY_PLAY: the joint's play taken up by gravity
         Effect creep;                            // BASE_CREEP: the base's turns with joint 1's large moves
+        Effect pull;                             // TOOL_PULL, once found: the pull toward the anchor that fits best
+        Vec3 pullAttach;                         // TOOL_PULL: where the pull acts, flange frame
         String xLabel;
     }
 
@@ -358,6 +362,9 @@ final class Locator {
         out.add(toolPlay(t));
         out.addAll(linkBends(t));
         out.addAll(linkTwist(t));
+        // a pull on the tool: eighteen columns on a six-axis arm, in the geometric fit's and the final scans only
+        Probe pull = steps ? toolPull(t) : null;
+        if (pull != null) out.add(pull);
         out.addAll(sightProbes(t, steps, steps));
         // the reflector's error shows in the geometric fit's residuals already; its 32 columns are left out of the stepwise re-scans
         Probe incidence = steps ? targetSight(t) : null;
@@ -643,6 +650,116 @@ final class Locator {
         p.xLabel = "the flange's lever across the upper arm's plane, times gravity across the arm (m)";
         return List.of(p);
     }
+
+    /**
+     * A steady pull on the tool from outside the robot ({@link Effect#toolPull}), acting at the
+     * measured point: its columns for a force of one direction (three per revolute joint, each
+     * joint's coefficients free: what a pull from an anchor metres away mostly is, whatever the
+     * anchor). Once found, {@link #bestPull} places its anchor. One pose per row.
+     */
+    static Probe toolPull(Diagnoser.Tester t) {
+        KinematicModel model = t.w.model;
+        int poses = t.m / t.rpp;
+        if (t.ends != 1 || model.dof() < 2 || poses < 2) return null;
+        // the measured point on the flange (the first point where a pose holds several)
+        double[] q0 = t.endRows.get(0).get(0).q();
+        Pose f0 = model.flange(q0);
+        Vec3 attach = f0.inverse().apply(new Vec3(t.pointBase[0][0], t.pointBase[0][1], t.pointBase[0][2]));
+        Effect free;
+        try {
+            free = Effect.toolPull(model, attach, null);
+        } catch (IllegalArgumentException e) {
+            return null; // no revolute joint to yield
+        }
+        Probe p = finish(t, t.signature(free, t.w.conditions), free.size());
+        p.var = Var.TOOL_PULL;
+        p.variable = "a steady force on the tool";
+        p.shape = "the measured point moves as the joints yield to a steady pull on the tool from outside the robot (a hose, "
+                + "cable or balancer hung from a boom)";
+        double[][] x = new double[1][poses];
+        for (int i = 0; i < poses; i++) x[0][i] = free.pullDistance(t.endRows.get(0).get(i).q());
+        p.x = x;
+        p.xLabel = "reach of the flange (m)";
+        p.pullAttach = attach;
+        return p;
+    }
+
+    /**
+     * The pull toward a fixed point ({@link Effect#toolPull} with an anchor) that explains most of what
+     * the geometric fit left, once a pull was located: anchors every 30° about axis 1 at
+     * {@link #PULL_ANCHOR_M} from it and three heights, and far off in every direction (a pull of one
+     * direction), then refined by a pattern search, each with one coefficient per yielding joint.
+     */
+    static Effect bestPull(Diagnoser.Tester t, Probe p) { return bestPull(t, p.pullAttach, null); }
+
+    /**
+     * The pull acting at {@code attach} (flange frame) whose anchor explains most of the tester's
+     * residual, the grid's best or {@code from} (an anchor found before), refined.
+     */
+    static Effect bestPull(Diagnoser.Tester t, Vec3 attach, double[] from) {
+        KinematicModel model = t.w.model;
+        List<double[]> grid = new ArrayList<>();
+        for (int a = 0; a < 12; a++) {
+            double az = Math.toRadians(30 * a), c = Math.cos(az), s = Math.sin(az);
+            for (double d : PULL_ANCHOR_M) for (double h : PULL_ANCHOR_HEIGHT_M) grid.add(new double[] {d * c, d * s, h});
+            for (double el : new double[] {-45, 0, 45}) {
+                double e = Math.toRadians(el);
+                grid.add(new double[] {PULL_FAR_M * Math.cos(e) * c, PULL_FAR_M * Math.cos(e) * s, PULL_FAR_M * Math.sin(e)});
+            }
+        }
+        grid.add(new double[] {0, 0, PULL_FAR_M});
+        grid.add(new double[] {0, 0, -PULL_FAR_M});
+        if (from != null) grid.add(from.clone());
+        double[] best = null;
+        double bestGain = Double.NEGATIVE_INFINITY;
+        for (double[] a : grid) {
+            double g = pullGain(t, model, attach, a);
+            if (g > bestGain) { bestGain = g; best = a; }
+        }
+        if (best == null) return null;
+        // pattern search about the best, its steps a share of the anchor's distance from axis 1
+        double step = 0.25 * Math.max(0.5, Math.hypot(best[0], best[1]));
+        for (int it = 0; it < 60 && step > 0.02; it++) {
+            boolean moved = false;
+            for (int axis = 0; axis < 3 && !moved; axis++)
+                for (int sign = -1; sign <= 1 && !moved; sign += 2) {
+                    double[] a = best.clone();
+                    a[axis] += sign * step;
+                    double g = pullGain(t, model, attach, a);
+                    if (g > bestGain) { bestGain = g; best = a; moved = true; }
+                }
+            if (!moved) step /= 2;
+        }
+        return Effect.toolPull(model, attach, best);
+    }
+
+    /** The sum of squares of the residual a pull toward {@code anchor} explains (its columns out of the model's span). */
+    private static double pullGain(Diagnoser.Tester t, KinematicModel model, Vec3 attach, double[] anchor) {
+        Effect e = Effect.toolPull(model, attach, anchor);
+        int k = e.size();
+        double[] s = Diagnoser.projectOut(t.u, t.rank, t.m, t.signature(e, t.w.conditions), k);
+        DMatrixRMaj a = new DMatrixRMaj(k, k), b = new DMatrixRMaj(k, 1);
+        for (int i = 0; i < t.m; i++) {
+            double r = t.rPerp[i];
+            for (int c = 0; c < k; c++) {
+                double x = s[i * k + c];
+                if (x == 0) continue;
+                b.data[c] += x * r;
+                for (int d = 0; d < k; d++) a.data[c * k + d] += x * s[i * k + d];
+            }
+        }
+        DMatrixRMaj inv = new DMatrixRMaj(k, k), x = new DMatrixRMaj(k, 1);
+        CommonOps_DDRM.pinv(a, inv);
+        CommonOps_DDRM.mult(inv, b, x);
+        double g = 0;
+        for (int c = 0; c < k; c++) g += x.data[c] * b.data[c];
+        return Double.isFinite(g) ? g : Double.NEGATIVE_INFINITY;
+    }
+
+    /** A pull's anchors tried: their distances from axis 1 (m) and heights above the base (m), a boom or a balancer beside the cell. */
+    static final double[] PULL_ANCHOR_M = {1, 2, 3.5}, PULL_ANCHOR_HEIGHT_M = {-0.5, 1, 2.5};
+    /** An anchor this far off (m) pulls the tool in one direction over the whole workspace. */
+    static final double PULL_FAR_M = 100;
 
     /** Least change over the poses of the flange's lever across the upper arm's plane for its twist to be probed, m. */
     static final double MIN_TWIST_LEVER_M = 0.05;
@@ -1660,9 +1777,11 @@ final class Locator {
         }
         for (Found f : found) f.sizeM = size(t, f);
         placeHarmonics(t, probes, found, alpha);
-        for (Found f : found)
+        for (Found f : found) {
             if (f.probe.var == Var.BASE_MOMENT)
                 f.probe.tilt = Diagnoser.bestBaseTilt(t, -1, null, t.w.gravity, t.w.rows, t.w.conditions);
+            if (f.probe.var == Var.TOOL_PULL) f.probe.pull = bestPull(t, f.probe);
+        }
         return found;
     }
 

@@ -265,6 +265,12 @@ final class Words {
                     + "flange's bearing), not a holder that bends (that moves in proportion to the pull). It is modelled as such so "
                     + "compensation can use it, but check the mount: measure one place with the tool leaning one way and then the "
                     + "other; tighten the nest or the mount, or check the flange bearing's preload.", 1e3 * rmsOverCircle(v));
+            case TOOL_PULL -> String.format(Locale.ROOT, "The measured point moves as if the tool were pulled by a steady force from "
+                    + "outside the robot, %s, each joint yielding to it through its stiffness%s, and none of the known effects "
+                    + "explains it (a joint's spring under the arm's weight pulls straight down, and with the weights the file "
+                    + "gives): a hose or cable retractor, a balancer or a dress pack hung from a boom pulling the tool. It is "
+                    + "modelled as such so compensation can use it, but check what hangs on the tool: measure a few poses with it "
+                    + "unhooked and again hooked.", pullWhere(e, v), at);
             case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "
                     + "flange (it drops %.4f mm more with its holder turned to its softest direction than to its stiffest: a bar held "
                     + "across gravity against along it), and none of the "
@@ -533,6 +539,43 @@ final class Words {
      * (x² + y²) / 2), an axial runout's shift along it (m), a tool play's move across the tool's axis
      * over the directions it is pulled to (m; B·u with u on the unit circle).
      */
+    /**
+     * Where a tool pull's fit says the force points: toward its anchor, or, for a pull of one direction,
+     * the direction (base frame) of the largest singular vector of its joints' coefficients c_j F (a
+     * single force seen by every joint), signed so the joints' compliances come out positive.
+     */
+    static String pullWhere(Effect e, double[] v) {
+        double[] a = e.pullAnchor();
+        if (a != null) return String.format(Locale.ROOT, "toward a fixed point at (%.2f, %.2f, %.2f) m in the base frame", a[0], a[1], a[2]);
+        double[] u = pullAxis(v);
+        if (u == null) return "in no one direction";
+        return String.format(Locale.ROOT, "along (%.2f, %.2f, %.2f) in the base frame (%.0f deg from straight up, toward azimuth %.0f deg)",
+                u[0], u[1], u[2], Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, u[2])))), Math.toDegrees(Math.atan2(u[1], u[0])));
+    }
+
+    /**
+     * The direction (unit, base frame) of the one force a tool pull's coefficients c_j F (three per
+     * joint) share best: their largest singular vector, signed so the compliances come out positive;
+     * null when they are all zero.
+     */
+    static double[] pullAxis(double[] v) {
+        int n = v.length / 3;
+        double[] m = new double[9];
+        for (int j = 0; j < n; j++) for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) m[3 * r + c] += v[3 * j + r] * v[3 * j + c];
+        double[] u = {1, 1, 1};
+        for (int it = 0; it < 100; it++) {
+            double[] w = new double[3];
+            for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++) w[r] += m[3 * r + c] * u[c];
+            double nn = Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+            if (!(nn > 0)) return null;
+            for (int r = 0; r < 3; r++) u[r] = w[r] / nn;
+        }
+        double sum = 0;
+        for (int j = 0; j < n; j++) sum += v[3 * j] * u[0] + v[3 * j + 1] * u[1] + v[3 * j + 2] * u[2];
+        if (sum < 0) for (int r = 0; r < 3; r++) u[r] = -u[r];
+        return u;
+    }
+
     static double rmsOverCircle(double[] v) {
         double s = 0;
         for (double x : v) s += x * x;

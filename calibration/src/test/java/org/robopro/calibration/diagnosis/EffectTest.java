@@ -204,7 +204,58 @@ class EffectTest {
                 new Effect.Term(Effect.zeroDrift(2, Effect.Along.TEMPERATURE, 20, 32), new double[] {1e-4, -2e-4, 3e-4, 1e-4}),
                 new Effect.Term(Effect.zeroStep(1, 1500), new double[] {3e-4}),
                 new Effect.Term(Effect.axialRunout(model, 0, new int[] {2, 3}), new double[] {5e-5, -3e-5, 2e-5, 4e-5}),
-                new Effect.Term(Effect.toolPlay(model, Effect.DOWN, false), new double[] {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5}));
+                new Effect.Term(Effect.toolPlay(model, Effect.DOWN, false), new double[] {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5}),
+                new Effect.Term(Effect.toolPull(model, new Vec3(0, 0, 0.1), new double[] {1.8, -1.2, 2.1}),
+                        new double[] {1e-4, 2e-4, 1.5e-4, 2e-3, 1e-3, 3e-3}));
+    }
+
+    /**
+     * A pull on the tool, checked against the forward kinematics alone (not the model's Jacobian): each
+     * drive's torque is the work the pull does through that drive's turn, F·∂p/∂q_j by central
+     * differences of the attach point (virtual work), and the measured point's move is the forward
+     * kinematics at q + Δq, Δq_j = c_j τ_j, less that at q; the pull toward the anchor turns the measured
+     * frame about the yielding joints' axes by as much.
+     */
+    @Test
+    void toolPull_isTheJointsYieldingToTheWorkOfTheForce() {
+        RobotDescription r2400 = RobotLibrary.shipped("irb2400");
+        KinematicModel m = KinematicModel.build(r2400);
+        Vec3 attach = new Vec3(0.02, -0.01, 0.15);
+        double[] anchor = {1.8, -1.2, 2.1}, q = {0.3, 0.4, -0.2, 0.6, 0.7, -0.4}, c = {2e-6, 3e-6, 4e-6, 3e-5, 2e-5, 4e-5};
+        double f = 40;
+        Effect pull = Effect.toolPull(m, attach, anchor);
+        assertEquals(6, pull.size());
+        Vec3 a = m.flange(q).apply(attach);
+        Vec3 dir = new Vec3(anchor[0] - a.x(), anchor[1] - a.y(), anchor[2] - a.z());
+        dir = dir.times(1 / dir.norm());
+        double[] v = new double[6], dq = new double[6];
+        for (int j = 0; j < 6; j++) {
+            double h = 1e-6;
+            double[] up = q.clone(), dn = q.clone();
+            up[j] += h;
+            dn[j] -= h;
+            Vec3 dp = m.flange(up).apply(attach).minus(m.flange(dn).apply(attach)).times(0.5 / h);
+            double tau = f * dir.dot(dp);
+            v[j] = c[j] * f;
+            dq[j] = c[j] * tau;
+        }
+        assertArrayEquals(dq, pull.pullDeflections(q, v), 1e-12);
+        double[] q2 = q.clone();
+        for (int j = 0; j < 6; j++) q2[j] += dq[j];
+        Vec3 point = new Vec3(0.0, 0.05, 0.2), p0 = m.flange(q).apply(point), p1 = m.flange(q2).apply(point);
+        double[] g3 = new double[18];
+        pull.positionRegressor(q, PoseConditions.NONE, p0.toArray(), g3);
+        for (int r = 0; r < 3; r++) {
+            double moved = 0;
+            for (int col = 0; col < 6; col++) moved += g3[r * 6 + col] * v[col];
+            assertEquals(p1.toArray()[r] - p0.toArray()[r], moved, 1e-3 * p1.minus(p0).norm(), "axis " + r);
+        }
+        assertTrue(p1.minus(p0).norm() > 1e-5, "the pull moves the point: " + p1.minus(p0).norm());
+        // a robot file holds the pull and reads it back
+        Effect.Term back = Effect.fromDescription(pull.describe(v), m, null, "test");
+        assertEquals(pull.label(), back.effect().label());
+        assertArrayEquals(v, back.values(), 0);
+        assertArrayEquals(pull.pullDeflections(q, v), back.effect().pullDeflections(q, v), 1e-15);
     }
 
     /**

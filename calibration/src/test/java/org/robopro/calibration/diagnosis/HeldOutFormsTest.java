@@ -1124,4 +1124,34 @@ class HeldOutFormsTest {
             assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), "seed " + seed + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
         }
     }
+
+    /**
+     * A cable retractor on a boom beside the cell pulling the tool with 40 N toward its anchor, every
+     * drive yielding through its own stiffness (the world's moments of the pull about its own joint
+     * axes): no family is named (a joint's spring under the arm's weight pulls straight down), the
+     * pull is modelled with its anchor found within a few decimetres, and the validation poses come
+     * to the floor. On the PUMA 560 too.
+     */
+    @Test
+    void cableRetractorPullingTheTool_isAPullTowardItsAnchor() {
+        double[] anchor = {1.6, -1.4, 1.7};
+        var x = new WorldRobot.Retractor(anchor, 40, new double[] {4e5, 3e5, 3e5, 3e4, 3e4, 3e4});
+        for (String robot : List.of("irb2400", "puma560")) {
+            WorldCampaigns.Sim c = WorldCampaigns.of(scenario("cable retractor", robot, Expected.outside(), w -> w.withRetractor(x), p -> p).trial(5));
+            Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped(robot), c.train(), c.validation());
+            List<String> pulls = modelled(d, Effect.Kind.TOOL_PULL);
+            System.out.printf("retractor %s: %.2f -> %.2f x the floor %s%n", robot, d.geometricValidateRmsM() / c.floorM(),
+                    d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+            assertEquals(List.of(), families(d), robot + ": notes " + d.notes());
+            assertEquals(1, pulls.size(), robot + ": " + d.effects().stream().map(f -> f.effect().label()).toList());
+            double[] found = d.effects().stream().filter(f -> f.effect().kind() == Effect.Kind.TOOL_PULL).findFirst().orElseThrow().effect().pullAnchor();
+            // the anchor seen from the tool: its direction within 10 deg
+            double[] toTrue = {anchor[0] - 0.8, anchor[1], anchor[2] - 0.8}, toFound = {found[0] - 0.8, found[1], found[2] - 0.8};
+            double cos = (toTrue[0] * toFound[0] + toTrue[1] * toFound[1] + toTrue[2] * toFound[2])
+                    / Math.sqrt((toTrue[0] * toTrue[0] + toTrue[1] * toTrue[1] + toTrue[2] * toTrue[2]) * (toFound[0] * toFound[0] + toFound[1] * toFound[1] + toFound[2] * toFound[2]));
+            assertTrue(cos > Math.cos(Math.toRadians(10)), robot + ": anchor " + Arrays.toString(found));
+            assertTrue(d.geometricValidateRmsM() > 1.3 * c.floorM(), "the pull matters: " + d.geometricValidateRmsM() / c.floorM());
+            assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), robot + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
+        }
+    }
 }
