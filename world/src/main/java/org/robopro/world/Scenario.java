@@ -164,6 +164,13 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     static double uniform(Random r, double lo, double hi) { return lo + (hi - lo) * r.nextDouble(); }
 
+    /** Drive {@code joint}'s shaft tilting under its mesh's forces ({@link WorldRobot.ShaftTilt}, 20° pressure angle) on masses 30 % off the file's. */
+    static UnaryOperator<WorldRobot> shaftTilt(RobotDescription n, Random r, int joint, double radPerNm) {
+        var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+        var t = new WorldRobot.ShaftTilt(joint, radPerNm, Math.toRadians(20), 2 * Math.PI * r.nextDouble(), uniform(r, -0.05, 0.05));
+        return w -> w.withCompliance(m).withShaftTilt(t);
+    }
+
     /** A cable retractor on a boom beside the cell ({@link WorldRobot.Retractor}): its anchor, pull and the drives' stiffnesses drawn. */
     static WorldRobot.Retractor retractor(Random r, int dof) {
         double az = 2 * Math.PI * r.nextDouble(), d = uniform(r, 1.9, 2.5);
@@ -804,6 +811,19 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var x = retractor(r, n.dof()); return w -> w.withRetractor(x); }, same()));
         c.add(s("lost motion j2 beside a cable retractor pulling the tool", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
                 (n, r) -> { var x = retractor(r, n.dof()); var lm = lostMotion(1, r); return w -> add(lm).apply(w.withRetractor(x)); }, same()));
+        // the PUMA 560's light gear shafts: joint 2's or 3's output shaft tilting under its mesh's forces, 2.5-4e-6 rad per N·m on
+        // joint 2 (0.3-0.45 mrad at its largest gravity torque, about 110 N·m), 0.8-1.4e-5 on joint 3 (about 30 N·m), the masses 30 %
+        // off the file's
+        c.add(s("outside: j2's output shaft tilting under its gear mesh's forces, puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> shaftTilt(n, r, 1, uniform(r, 2.5e-6, 4e-6)), same()));
+        c.add(s("outside: j3's output shaft tilting under its gear mesh's forces, puma560", "outside", "puma560", Expected.outside(),
+                (n, r) -> shaftTilt(n, r, 2, uniform(r, 8e-6, 1.4e-5)), same()));
+        c.add(s("lost motion j1 beside j2's shaft tilting under its gear mesh's forces, puma560", "lost-motion", "puma560",
+                Expected.named(claim(LOST_MOTION, 1)), (n, r) -> {
+                    var lm = lostMotion(0, r);
+                    var tilt = shaftTilt(n, r, 1, uniform(r, 2.5e-6, 4e-6));
+                    return w -> add(lm).apply(tilt.apply(w));
+                }, same()));
         // joint 1 (and joint 2 of the PUMA 560, 6-15e-5) read by an encoder whose channels' gains drift apart by 2-5e-5 per kelvin, matched
         // at 20-24 °C: an error twice a turn growing through the warm-up (up to 0.005-0.02 deg)
         c.add(s("outside: j1's encoder channels drifting apart as it warms", "outside", "irb2000", Expected.outside(),

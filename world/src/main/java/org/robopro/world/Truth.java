@@ -138,6 +138,11 @@ final class Truth {
             root.put("retractor", Map.of("form", "a steady pull of force_n on the measured target toward the anchor, each drive yielding "
                     + "by its torque over its stiffness (outside)", "anchor_m", Arrays.stream(w.retractor().anchor()).boxed().toList(),
                     "force_n", w.retractor().forceN(), "stiffness_nm_per_rad", Arrays.stream(w.retractor().stiffness()).boxed().toList()));
+        if (w.shaftTilt() != null)
+            root.put("shaft_tilt", Map.of("form", "drive joint's output shaft turned by rad_per_nm (tau d + |tau| tan(pressure angle) n) about its "
+                    + "bearing's centre, tau the drive's gravity torque (outside)", "joint", w.shaftTilt().joint() + 1,
+                    "rad_per_nm", w.shaftTilt().radPerNm(), "pressure_angle_deg", Math.toDegrees(w.shaftTilt().pressureAngle()),
+                    "phase_deg", Math.toDegrees(w.shaftTilt().phase()), "offset_mm", w.shaftTilt().offsetM() * 1e3));
         if (w.refraction() != null)
             root.put("refraction", Map.of("form", "the line of sight turned up by kappa L / 2 in its vertical plane, kappa = (n - 1) / T dT/dz / n, "
                     + "n - 1 = 2.7e-4 (outside)", "times_s", Arrays.stream(w.refraction().timesS()).boxed().toList(),

@@ -52,12 +52,23 @@ import org.robopro.models.RobotDescription;
  * @param dispensing         what the flange really carries over the campaign, whatever the file records, or null
  * @param refraction         the air's temperature gradient bending the instrument's beam, or null
  * @param retractor          a cable retractor pulling the tool toward a fixed anchor, or null
+ * @param shaftTilt          a drive's output shaft tilting under its gear mesh's forces, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                          FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                         Refraction refraction, Retractor retractor) {
+                         Refraction refraction, Retractor retractor, ShaftTilt shaftTilt) {
+    /** A world robot whose drives' shafts stay straight under load. */
+    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
+                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
+                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
+                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
+                      Refraction refraction, Retractor retractor) {
+        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, null);
+    }
+
     /** A world robot with nothing pulling on its tool. */
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
@@ -599,6 +610,31 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     /**
+     * A drive whose output shaft tilts under its gear mesh's forces: the last stage's tooth force τ/r
+     * (τ the drive's torque, here its gravity torque; r the output gear's pitch radius) and the separating
+     * force |τ| tan α / r (α the pressure angle) push the overhung gear across the axis, and the shaft turns
+     * on its bearings by an angle proportional to each, about axes across the joint fixed in the housing
+     * that holds the pinion (Budynas &amp; Nisbett, Shigley's Mechanical Engineering Design, §13-14 for the
+     * forces, ch. 4 for the shaft's slope under them): ω = κ (τ d̂ + |τ| tan α n̂), d̂ and n̂ across the axis,
+     * d̂ at {@code phase} in the zero position's frame, the turn about the bearing's centre, {@code offsetM}
+     * along the axis from the arm's axis point.
+     *
+     * @param radPerNm the shaft's slope per N·m of the drive's torque, κ (rad/(N·m))
+     */
+    public record ShaftTilt(int joint, double radPerNm, double pressureAngle, double phase, double offsetM) {
+        /** The tilt at drive torque tau (N·m) of the joint whose zero-position axis and point are given. */
+        public Rigid tilt(double[] axis, double[] point, double tau) {
+            double[] u = Wobble.perpendicular(axis), v = Rigid.cross(axis, u);
+            double[] d = Rigid.plus(Rigid.scale(u, Math.cos(phase)), Rigid.scale(v, Math.sin(phase)));
+            double[] nn = Rigid.cross(axis, d);
+            double[] w = Rigid.plus(Rigid.scale(d, radPerNm * tau), Rigid.scale(nn, radPerNm * Math.abs(tau) * Math.tan(pressureAngle)));
+            double angle = Rigid.norm(w);
+            if (!(angle > 0)) return Rigid.IDENTITY;
+            return Rigid.rotation(Rigid.unit(w), angle, Rigid.plus(point, Rigid.scale(axis, offsetM)));
+        }
+    }
+
+    /**
      * A cable retractor (a spring balancer or hose reel) hung from a boom beside the cell, its cable
      * hooked to the tool: it pulls the measured target with a steady force {@code forceN} toward the
      * fixed {@code anchor} (base frame, m), a spring reel's tension nearly the same over its travel.
@@ -811,7 +847,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         if (thermal != null && thermal.holderAlpha != 0 && Double.isFinite(tempC))
             onFlange = new Rigid(onFlange.r(), Rigid.scale(onFlange.p(), 1 + thermal.holderAlpha * (tempC - thermal.refC)));
         Rigid flangeNow;
-        if (wobbles.isEmpty()) {
+        if (wobbles.isEmpty() && shaftTilt == null) {
             flangeNow = a.flange(theta);
         } else {
             Rigid[] pre = new Rigid[n];
@@ -819,6 +855,13 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             for (Wobble wb : wobbles) {
                 Rigid t = wb.tilt(axes[wb.joint()], pts[wb.joint()], theta[wb.joint()]);
                 pre[wb.joint()] = pre[wb.joint()] == null ? t : pre[wb.joint()].times(t);
+            }
+            if (shaftTilt != null) {
+                if (compliance == null) throw new IllegalStateException("a shaft tilting under its drive's torque needs the masses (a compliance)");
+                int j = shaftTilt.joint();
+                double tau = driveSide(gravityTorques(a, theta, payload))[j];
+                Rigid t = shaftTilt.tilt(axes[j], pts[j], tau);
+                pre[j] = pre[j] == null ? t : pre[j].times(t);
             }
             flangeNow = a.flange(theta, pre);
         }
@@ -1006,78 +1049,82 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withKnock(Knock k) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withTargetPlay(TargetPlay p) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     /** The same robot carrying a mass that changes with time as {@code d} says, whatever the campaign records. */
     public WorldRobot withDispensing(Dispensing d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction, retractor, shaftTilt);
     }
 
     /** The same robot seen through air whose vertical temperature gradient is {@code r}'s. */
     public WorldRobot withRetractor(Retractor r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, r);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, r, shaftTilt);
+    }
+
+    public WorldRobot withShaftTilt(ShaftTilt t) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, t);
     }
 
     public WorldRobot withRefraction(Refraction r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r, retractor);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r, retractor, shaftTilt);
     }
 
     /**
@@ -1158,7 +1205,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -31,6 +31,38 @@ class NewFormsTest {
      * an eighth of a turn off, nothing; joint 5's own angle does not change it.
      */
     /**
+     * A shaft tilting under its mesh's forces turns everything beyond about a line across the joint's
+     * axis through the bearing's centre (that centre stays put), by κ·√(τ² + (|τ| tan α)²); the tooth
+     * force's part changes side with the torque's sign, the separating force's does not; no torque, no turn.
+     */
+    @Test
+    void shaftTilt_turnsAboutTheBearingsCentre_byTheMeshForces() {
+        double[] axis = {0, 1, 0}, point = {0.1, 0, 0.7};
+        var t = new WorldRobot.ShaftTilt(1, 3e-6, Math.toRadians(20), 0.4, 0.03);
+        double[] centre = Rigid.plus(point, Rigid.scale(axis, 0.03));
+        for (double tau : new double[] {80, -80}) {
+            Rigid r = t.tilt(axis, point, tau);
+            assertEquals(0, Rigid.norm(Rigid.minus(r.apply(centre), centre)), 1e-15);
+            // a point 0.5 m out along x moves by the turn times its lever, across it
+            double[] far = {0.6, 0.03, 0.7};
+            double moved = Rigid.norm(Rigid.minus(r.apply(far), far));
+            double angle = 3e-6 * Math.hypot(80, 80 * Math.tan(Math.toRadians(20)));
+            assertTrue(moved <= 0.5 * angle * (1 + 1e-9) && moved > 0, "moved " + moved);
+            // the turn's axis lies across the joint's axis
+            double[] w = {r.r()[7] - r.r()[5], r.r()[2] - r.r()[6], r.r()[3] - r.r()[1]};
+            assertEquals(0, Rigid.dot(w, axis), 1e-12);
+            assertEquals(2 * Math.sin(angle), Rigid.norm(w), 1e-12);
+        }
+        // the tooth force's part changes side with the torque, the separating force's does not
+        Rigid up = t.tilt(axis, point, 80), down = t.tilt(axis, point, -80);
+        double[] wu = {up.r()[7] - up.r()[5], up.r()[2] - up.r()[6], up.r()[3] - up.r()[1]};
+        double[] wd = {down.r()[7] - down.r()[5], down.r()[2] - down.r()[6], down.r()[3] - down.r()[1]};
+        double[] sum = Rigid.plus(wu, wd), diff = Rigid.minus(wu, wd);
+        assertEquals(Math.tan(Math.toRadians(20)), Rigid.norm(sum) / Rigid.norm(diff), 1e-6);
+        assertEquals(0, Rigid.norm(Rigid.minus(t.tilt(axis, point, 0).apply(new double[] {1, 2, 3}), new double[] {1, 2, 3})), 0);
+    }
+
+    /**
      * A cable retractor's pull loads each joint by the work it does through the joint's turn
      * (virtual work: τ_i = F·∂p/∂θ_i, here by finite differences of the arm's own chain, not by the
      * moment the retractor computes), and the arm yields toward the anchor: the target moves with the

@@ -1713,13 +1713,15 @@ public final class Diagnoser {
                 scanned = t;
                 scannedFit = fit;
             }
-            // a pull's anchor placed again on what the effects chosen so far leave (placed on the geometric fit's residual, it
-            // bent toward what they hold)
+            // a pull's anchor placed again, and a load tilt's masses estimated again, on what the effects chosen so far leave
+            // (placed on the geometric fit's residual, they bent toward what those hold)
             if (step > 0)
                 for (int i = 0; i < remaining.size(); i++) {
                     Effect e = remaining.get(i);
-                    if (e.kind() != Effect.Kind.TOOL_PULL || e.pullAnchor() == null) continue;
-                    Effect moved = Locator.bestPull(t, e.pullAttach(), e.pullAnchor());
+                    Effect moved;
+                    if (e.kind() == Effect.Kind.TOOL_PULL && e.pullAnchor() != null) moved = Locator.bestPull(t, e.pullAttach(), e.pullAnchor());
+                    else if (e.kind() == Effect.Kind.LOAD_TILT) moved = Locator.remassedLoadTilt(t, e.withFileMasses());
+                    else continue;
                     remaining.set(i, moved);
                     family.replaceAll(f -> f == e ? moved : f);
                 }
@@ -3946,13 +3948,16 @@ public final class Diagnoser {
      * temperature at its own angle's orders ({@link Effect#periodicWarming}), either way round: on a
      * joint the weight loads, the give changing through a warm-up is the compliance's own rival (a
      * varying compliance), and a warming error beside the compliance would hold that change so that the
-     * rival finds nothing beside the claim.</li>
+     * rival finds nothing beside the claim;</li>
+     * <li>a second pull on the tool (another anchor is the same pull placed elsewhere).</li>
      * </ul>
      */
     static boolean secondForm(Effect e, List<Effect> selected, Effect replaced) {
         boolean mass = e.kind() == Effect.Kind.COMPLIANCE_VARYING && e.payloadShare();
         boolean give = e.kind() == Effect.Kind.COMPLIANCE || e.kind() == Effect.Kind.COMPLIANCE_VARYING;
         boolean warm = e.kind() == Effect.Kind.WARM_PERIODIC;
+        if (e.kind() == Effect.Kind.TOOL_PULL)
+            return selected.stream().anyMatch(x -> x != e && x != replaced && x.kind() == Effect.Kind.TOOL_PULL);
         if (!mass && !give && !warm) return false;
         for (Effect x : selected) {
             if (x == e || x == replaced || x.joint() != e.joint()) continue;
@@ -4520,6 +4525,10 @@ public final class Diagnoser {
                 // the base's tilt, or a drive of the arm's first joints giving way under the same weight
                 case BASE_MOMENT -> { if (k == Effect.Kind.BASE_TILT || k == Effect.Kind.COMPLIANCE && e.joint() <= 2) return e; }
                 case AXIS_WOBBLE -> { if (k == Effect.Kind.AXIS_WOBBLE && e.joint() == f.probe.joint) return e; }
+                // the axis tilting with its drive's torque, or the joint's spring or its link's bending under the same weight
+                case LOAD_TILT -> {
+                    if ((k == Effect.Kind.LOAD_TILT || k == Effect.Kind.COMPLIANCE || k == Effect.Kind.LINK_SAG) && e.joint() == f.probe.joint) return e;
+                }
                 case AXIAL_RUNOUT -> { if (k == Effect.Kind.AXIAL_RUNOUT && e.joint() == f.probe.joint) return e; }
                 // the holder's sag, or a wrist drive giving way under the tool's weight
                 case TOOL_GRAVITY -> { if (k == Effect.Kind.TOOL_SAG || k == Effect.Kind.COMPLIANCE && e.joint() >= 3) return e; }
@@ -4772,6 +4781,9 @@ public final class Diagnoser {
             case GRAVITY_PLAY -> String.format(Locale.ROOT, "measure poses where the gravity torque on joint %d is small, each "
                     + "approached from both directions, and a few with two payloads: a gear's backlash follows the last motion "
                     + "there, a clearance held by the weight does not.", f.probe.joint + 1);
+            case LOAD_TILT -> String.format(Locale.ROOT, "put an electronic level or a dial indicator on the link beyond joint %d and "
+                    + "read its tilt across the axis with the arm held out (the drive loaded) and folded in (unloaded), and again with "
+                    + "a payload: a shaft that bends under the mesh's forces tilts with the load.", f.probe.joint + 1);
             case TOOL_PULL -> "measure a few poses twice, with whatever hangs on the tool (a hose, a cable, a retractor or a "
                     + "balancer) unhooked and then hooked: a pull from outside moves the point between the two, the joints' springs "
                     + "under the arm's own weight do not.";
@@ -5127,7 +5139,7 @@ public final class Diagnoser {
                 }
                 case TARGET_DRIFT -> out.add(Effect.targetDrift(model, f.probe.lo, f.probe.hi, f.probe.basis));
                 case BASE_CREEP -> out.add(f.probe.creep);
-                case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, TOOL_PULL -> { }
+                case AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, TOOL_PULL, LOAD_TILT -> { }
                 case TIME, TEMPERATURE -> {
                     Effect.Along a = f.probe.var == Locator.Var.TIME ? Effect.Along.TIME : Effect.Along.TEMPERATURE;
                     if (f.probe.joint >= 0) out.add(Effect.zeroDrift(f.probe.joint, a, f.probe.lo, f.probe.hi));
@@ -5182,6 +5194,7 @@ public final class Diagnoser {
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.LINK_BEND || f.probe.var == Locator.Var.LINK_TWIST) out.add(f.probe.bend);
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.TARGET_SIGHT) out.add(f.probe.incidence);
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.TOOL_PULL && f.probe.pull != null) out.add(f.probe.pull);
+        for (Locator.Found f : found) if (f.probe.var == Locator.Var.LOAD_TILT) out.add(f.probe.bend);
         return out;
     }
 
@@ -6669,6 +6682,14 @@ public final class Diagnoser {
                 double d = spread(v);
                 c.plausible = d < MAX_BACKLASH_RAD;
                 c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(d), Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case LOAD_TILT -> {
+                // the tilt at the largest torque on the poses, a bearing's tilt error motion's bound
+                double r = Math.hypot(Math.abs(v[0]) + Math.abs(v[1]), Math.abs(v[2]) + Math.abs(v[3]));
+                double d = Math.hypot(Math.abs(v[4]) + Math.abs(v[5]), Math.abs(v[6]) + Math.abs(v[7]));
+                c.plausible = r < MAX_WOBBLE_RAD && d < MAX_RUNOUT_M;
+                c.plausibility = String.format(Locale.ROOT, "tilt at the largest torque %.4f deg < %.2f deg, shift %.4f mm < %.1f mm",
+                        Math.toDegrees(r), Math.toDegrees(MAX_WOBBLE_RAD), d * 1e3, MAX_RUNOUT_M * 1e3);
             }
             case TOOL_PULL -> {
                 // each joint yields toward the pull (its compliance times the force is positive) and by less than a few degrees per

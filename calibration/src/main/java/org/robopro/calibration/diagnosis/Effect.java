@@ -110,6 +110,8 @@ public final class Effect {
                 + "in the tool's frame: a reflector seen off its axis, of no known family"),
         LINK_SAG("link-sag", "An arm link bending under gravity as a beam, of no known family"),
         LINK_TWIST("link-twist", "The upper arm twisting about its long axis under the weights beyond it, of no known family"),
+        LOAD_TILT("axis-load-tilt", "A joint's axis tilting across itself with the torque its drive carries (the gear mesh's "
+                + "tooth and separating forces bending the output shaft on its bearings), of no known family"),
         TOOL_PULL("tool-pull", "A steady pull on the tool from outside the robot (a hose or cable retractor, a balancer, a dress pack "
                 + "hung from a boom), each joint yielding to it through its stiffness, of no known family");
 
@@ -241,6 +243,7 @@ public final class Effect {
     private double[] linkAngle;              // link-angle periodic: the angle it repeats with, Σ linkAngle[l]·q_l
     private Vec3 attach;                     // tool pull: where the pull acts, flange frame
     private double[] anchor;                 // tool pull: the fixed point it pulls toward, base frame (null: a pull of one direction)
+    private GravityTorques fileGravity;      // load tilt: the masses before their scales
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -1417,6 +1420,55 @@ public final class Effect {
     }
 
     /**
+     * A joint's axis tilting across itself with the torque its drive carries (outside every family): the
+     * final stage's tooth force τ/r and its separating force |τ|·tan α/r (α the pressure angle), acting on
+     * an overhung output gear, bend the output shaft on its bearings, so everything beyond the joint turns
+     * about a point of the axis by ω = (x_t τ + x_s |τ|) x̂ + (y_t τ + y_s |τ|) ŷ, τ/τ_ref the drive's gravity
+     * torque over its largest on the poses, x̂, ŷ the stator frame's axes across the joint (fixed to the
+     * housing that holds the mesh; Budynas &amp; Nisbett, Shigley's Mechanical Engineering Design, 10th ed.,
+     * §13-14, the forces on a spur gear's teeth, and ch. 4, a shaft's deflection under them). The measured
+     * point moves by ω × (p − o), o the model's point of the axis; the measured frame turns by ω. Four
+     * parameters, rad at the reference torque: the tilt that follows the torque's sign (the tooth force)
+     * and the one that follows its size (the separating force). A joint's angle error under the same torque
+     * is its compliance; a tilt under it, no error of the angle.
+     */
+    public static Effect loadTilt(KinematicModel model, int joint, GravityTorques g, double refNm) { return loadTilt(model, joint, g, refNm, null); }
+
+    /** {@link #loadTilt} with the masses of {@code g} each scaled by {@code massScales} (null: as they are). */
+    public static Effect loadTilt(KinematicModel model, int joint, GravityTorques g, double refNm, double[] massScales) {
+        if (model.isPrismatic(joint)) throw new IllegalArgumentException("joint " + (joint + 1) + " is prismatic: no shaft to tilt");
+        if (!(refNm > 0) || Double.isInfinite(refNm)) throw new IllegalArgumentException("reference torque " + refNm);
+        GravityTorques scaled = massScales == null ? g : g.withMassScales(massScales);
+        Effect e = new Effect(Kind.LOAD_TILT, joint, -1, scaled, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
+        e.loadRefNm = refNm;
+        e.massScales = massScales == null ? null : massScales.clone();
+        e.fileGravity = g;
+        return e;
+    }
+
+    /** A load tilt with the masses as they were before any scales (itself when it has none). */
+    public Effect withFileMasses() { return massScales == null ? this : loadTilt(model, joint, fileGravity, loadRefNm, null); }
+
+    /** A load tilt's four tilt columns (3 x 4, row-major, base axes) at q under c, and the model's point of the axis o. */
+    private void loadTilt(double[] q, PoseConditions c, double[] w, double[] o) {
+        int k = size();
+        Pose rotor = model.linkFrames(q)[joint + 1];
+        double th = model.theta(q)[joint], ct = Math.cos(th), st = Math.sin(th);
+        double tau = gravity.driveTorques(q, Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[joint] / loadRefNm;
+        for (int a = 0; a < 3; a++) {
+            double xr = rotor.rot(a, 0), yr = rotor.rot(a, 1);
+            double xs = ct * xr - st * yr, ys = st * xr + ct * yr;
+            w[a * k] = tau * xs;
+            w[a * k + 1] = Math.abs(tau) * xs;
+            w[a * k + 2] = tau * ys;
+            w[a * k + 3] = Math.abs(tau) * ys;
+        }
+        o[0] = rotor.x();
+        o[1] = rotor.y();
+        o[2] = rotor.z();
+    }
+
+    /**
      * The measured point's holder (an extension bar, a nest, a tool) bending under its own weight:
      * a cantilever's tip deflects in proportion to the part of its weight across it (Euler-Bernoulli,
      * δ = wL⁴/8EI + PL³/3EI; Gere &amp; Goodno, Mechanics of Materials, table G-1), so in the flange's
@@ -1998,12 +2050,10 @@ public final class Effect {
         }
     }
 
-    /** A tool pull's plotting variable at q: the attach point's distance from the anchor, or the flange's reach (m). */
-    public double pullDistance(double[] q) {
-        Pose f = model.flange(q);
-        if (anchor == null) return Math.hypot(f.position().x(), f.position().y());
-        Vec3 a = f.apply(attach);
-        return Math.sqrt(Math.pow(anchor[0] - a.x(), 2) + Math.pow(anchor[1] - a.y(), 2) + Math.pow(anchor[2] - a.z(), 2));
+    /** A tool pull's plotting variable at q: the azimuth of its point of action about axis 1 (deg). */
+    public double pullAzimuthDeg(double[] q) {
+        Vec3 a = model.flange(q).apply(attach);
+        return Math.toDegrees(Math.atan2(a.y(), a.x()));
     }
 
     /** A tool pull's drive deflections (rad) at q for coefficients v; zero on prismatic joints. */
@@ -2024,7 +2074,7 @@ public final class Effect {
     public boolean isFallback() {
         return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.WARM_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
-                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE || kind == Kind.TOOL_PULL;
+                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE || kind == Kind.TOOL_PULL || kind == Kind.LOAD_TILT;
     }
 
     /**
@@ -2227,7 +2277,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
-                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL -> Target.POSITION;
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -2273,6 +2323,7 @@ public final class Effect {
             case SMOOTH, PAIR, ZERO_DRIFT, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT -> nBasis;
             case COMPLIANCE_VARYING -> perMassVarying() ? gravity.massCount() * nBasis : payloadCentreFree ? 4 * nBasis : nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
+            case LOAD_TILT -> 8;
             case AXIAL_RUNOUT -> 2 * harmonics.length;
             case TOOL_SAG -> 9;
             case TOOL_PLAY -> PLAY_SHIFTS + (playTurns ? PLAY_TIPS : 0);
@@ -2350,6 +2401,7 @@ public final class Effect {
                 for (int h : harmonics) { out.add("xc" + h); out.add("xs" + h); out.add("yc" + h); out.add("ys" + h); }
             }
             case AXIAL_RUNOUT -> { for (int h : harmonics) { out.add("zc" + h); out.add("zs" + h); } }
+            case LOAD_TILT -> out.addAll(List.of("x_torque", "x_size", "y_torque", "y_size", "sx_torque", "sx_size", "sy_torque", "sy_size"));
             case LINK_SAG -> {
                 out.add("d_weight");
                 out.add("t_weight");
@@ -2417,7 +2469,7 @@ public final class Effect {
             case INSTRUMENT_SCALE -> "1";
             case REFRACTION -> "1/m";
             case BASE_TILT -> "rad/(N·m)";
-            case AXIS_WOBBLE -> "rad";
+            case AXIS_WOBBLE, LOAD_TILT -> "rad";
             case AXIAL_RUNOUT -> "m";
             case LINK_SAG -> "m";
             case LINK_TWIST -> "rad";
@@ -2450,6 +2502,11 @@ public final class Effect {
             List<String> out = new ArrayList<>(java.util.Collections.nCopies(TWIST_ARM_TERMS, "rad"));
             out.set(TWIST_ARM_TERMS - HAND_TERMS, "rad/m");
             if (sagPayload) out.addAll(List.of("rad/(kg·m)", "rad/kg", "rad/kg", "rad/kg"));
+            return out;
+        }
+        if (kind == Kind.LOAD_TILT) { // the tilts, then the shifts across the axis (each at the reference torque)
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(4, "rad"));
+            out.addAll(java.util.Collections.nCopies(4, "m"));
             return out;
         }
         if (kind == Kind.LINK_SAG) {
@@ -2512,6 +2569,8 @@ public final class Effect {
                     Double.isInfinite(tiltHold) ? "" : String.format(Locale.ROOT, " above %.0f N·m", tiltHold)))
                     + (massScales != null ? " (masses re-estimated)" : "");
             case TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> kind.json;
+            case LOAD_TILT -> kind.json + " j" + (joint + 1) + (gravity.fromLengths() ? " (masses from the link lengths" + (massScales != null ? ", re-estimated)" : ")")
+                    : massScales != null ? " (masses re-estimated)" : "");
             case TOOL_PULL -> kind.json + (anchor == null ? " (one direction)"
                     : String.format(Locale.ROOT, " (toward %.2f, %.2f, %.2f m)", anchor[0], anchor[1], anchor[2]));
             case LINK_TWIST -> kind.json + " j2 (upper arm)";
@@ -2686,7 +2745,7 @@ public final class Effect {
                 }
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
-                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL -> throw new IllegalStateException(label() + " acts on the measured point");
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -2722,17 +2781,21 @@ public final class Effect {
                     }
                 }
             }
-            case AXIS_WOBBLE -> {
+            case AXIS_WOBBLE, LOAD_TILT -> {
                 // the distal bodies turn by ω about the model's point of the axis: Δp = ω × (p − o)
                 double[] w = new double[3 * k], o = new double[3];
-                wobble(q, w, o);
+                if (kind == Kind.LOAD_TILT) loadTilt(q, c, w, o);
+                else wobble(q, w, o);
                 double rx = pointBase[0] - o[0], ry = pointBase[1] - o[1], rz = pointBase[2] - o[2];
-                for (int col = 0; col < k; col++) {
+                int turns = kind == Kind.LOAD_TILT ? 4 : k;
+                for (int col = 0; col < turns; col++) {
                     double wx = w[col], wy = w[k + col], wz = w[2 * k + col];
                     g3[col] = wy * rz - wz * ry;
                     g3[k + col] = wz * rx - wx * rz;
                     g3[2 * k + col] = wx * ry - wy * rx;
                 }
+                // a load tilt's shifts across the axis (its turn about another point of the axis): the tilt's directions
+                for (int col = turns; col < k; col++) for (int a = 0; a < 3; a++) g3[a * k + col] = w[a * k + col - 4];
             }
             case INSTRUMENT -> {
                 // the instrument's reading of the predicted point, and the point's move per unit error of it, back in base axes
@@ -2912,7 +2975,7 @@ public final class Effect {
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
     public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TOOL_PULL
-            || kind == Kind.BASE_TURN || kind == Kind.BASE_STEP || kind == Kind.TOOL_PLAY && playTurns; }
+            || kind == Kind.LOAD_TILT || kind == Kind.BASE_TURN || kind == Kind.BASE_STEP || kind == Kind.TOOL_PLAY && playTurns; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -2922,6 +2985,7 @@ public final class Effect {
     public void rotationRegressor(double[] q, PoseConditions c, double[] g3) {
         Arrays.fill(g3, 0);
         if (kind == Kind.AXIS_WOBBLE) { wobble(q, g3, new double[3]); return; }
+        if (kind == Kind.LOAD_TILT) { loadTilt(q, c, g3, new double[3]); return; }
         if (kind == Kind.LINK_SAG) { linkSagColumns(q, c, null, null, g3); return; }
         if (kind == Kind.LINK_TWIST) { linkTwistColumns(q, c, null, null, g3); return; }
         if (kind == Kind.TOOL_PULL) { toolPullColumns(q, null, null, g3); return; }
@@ -3122,6 +3186,11 @@ public final class Effect {
             case BASE_CREEP -> { p.put("creep_move_rad", tauS); p.put("creep_count_end", creepCount(Double.POSITIVE_INFINITY)); }
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
             case AXIS_WOBBLE, AXIAL_RUNOUT -> { }
+            case LOAD_TILT -> {
+                p.put("load_ref_nm", loadRefNm);
+                if (gravity.fromLengths()) p.put("load_masses_from_lengths", 1.0);
+                if (massScales != null) putMassScales(p, "load_mass_scale_");
+            }
             case TOOL_SAG, TOOL_PLAY -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
             case TARGET_INCIDENCE -> {
                 p.put("axis_x", sightAxis.x());
@@ -3382,6 +3451,13 @@ public final class Effect {
                 yield targetIncidence(model, instrumentOf(d, file), axis);
             }
             case AXIAL_RUNOUT -> axialRunout(model, revolute(d, model, file), bearingOrders(d, "zc", "zc1, zs1", file));
+            case LOAD_TILT -> {
+                GravityTorques g = ps.containsKey("load_masses_from_lengths") ? GravityTorques.fromLengths(model) : gravity;
+                if (g == null || g.massesUnknown()) throw needsMassModel(d, file, "axis-load-tilt");
+                double ref = require(d, "load_ref_nm", file);
+                if (!(ref > 0) || Double.isInfinite(ref)) throw d.error(file, "parameters_si.load_ref_nm", "must be > 0, got " + ref);
+                yield loadTilt(model, revolute(d, model, file), g, ref, massScales(d, g, "load_mass_scale_", file));
+            }
             case AXIS_WOBBLE -> axisWobble(model, revolute(d, model, file), bearingOrders(d, "xc", "xc1, xs1, yc1, ys1", file));
             case BASE_TILT -> {
                 if (gravity == null || gravity.massesUnknown())

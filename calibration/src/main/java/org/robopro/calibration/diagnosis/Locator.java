@@ -43,7 +43,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC, TOOL_PULL }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC, TOOL_PULL, LOAD_TILT }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -110,7 +110,7 @@ final class Locator {
         Directions.Source dirs;                  // DIRECTION: where the directions came from
         Effect settling;                         // DIRECTION, SETTLING: the joint's settling after the move, where the moves are known
         Effect tilt;                             // BASE_MOMENT, once found: the base tilt that predicts left-out poses best
-        Effect bend;                             // LINK_BEND, LINK_TWIST: the link's sag or twist
+        Effect bend;                             // LINK_BEND, LINK_TWIST, LOAD_TILT: the link's sag or twist, the axis's tilt
         Effect incidence;                        // TARGET_SIGHT: the reflector's error with the direction it is seen from
         Effect play;                             // GRAVITY_PLAY: the joint's play taken up by gravity
         Effect creep;                            // BASE_CREEP: the base's turns with joint 1's large moves
@@ -358,6 +358,7 @@ final class Locator {
         out.addAll(gravityPlays(t));
         out.addAll(axisWobbles(t));
         out.addAll(axialRunouts(t));
+        if (steps) out.addAll(loadTilts(t));
         out.add(toolGravity(t));
         out.add(toolPlay(t));
         out.addAll(linkBends(t));
@@ -676,10 +677,11 @@ final class Locator {
         p.variable = "a steady force on the tool";
         p.shape = "the measured point moves as the joints yield to a steady pull on the tool from outside the robot (a hose, "
                 + "cable or balancer hung from a boom)";
+        // a pull from one side shows as the point's direction about axis 1 turns toward it and away
         double[][] x = new double[1][poses];
-        for (int i = 0; i < poses; i++) x[0][i] = free.pullDistance(t.endRows.get(0).get(i).q());
+        for (int i = 0; i < poses; i++) x[0][i] = Math.toDegrees(Math.atan2(t.pointBase[i][1], t.pointBase[i][0]));
         p.x = x;
-        p.xLabel = "reach of the flange (m)";
+        p.xLabel = "azimuth of the measured point about axis 1 (deg)";
         p.pullAttach = attach;
         return p;
     }
@@ -790,6 +792,75 @@ final class Locator {
 
     /** "once" or "h times". */
     private static String times(int h) { return h == 1 ? "once" : h + " times"; }
+
+    /**
+     * A joint's axis tilting with its drive's torque ({@link Effect#loadTilt}): for each revolute joint
+     * the arm's weight loads (the robot file's masses, or the links' from their lengths), its four
+     * columns. Positions and orientations, one pose per row.
+     */
+    static List<Probe> loadTilts(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        GravityTorques g = t.w.gravity == null || t.w.gravity.massesUnknown() ? GravityTorques.fromLengths(t.w.model) : t.w.gravity;
+        if (t.ends != 1 || g == null) return out;
+        int poses = t.m / t.rpp;
+        for (int j = 0; j < t.dof; j++) {
+            if (t.w.model.isPrismatic(j) || !Diagnoser.loaded(g, j, t.w.rows)) continue;
+            double ref = 0;
+            double[][] x = new double[1][poses];
+            for (int i = 0; i < poses; i++) {
+                Measurement r = t.endRows.get(0).get(i);
+                x[0][i] = g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
+                ref = Math.max(ref, Math.abs(x[0][i]));
+            }
+            if (!(ref > 0) || Double.isInfinite(ref)) continue;
+            Effect e = Effect.loadTilt(t.w.model, j, g, ref);
+            Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
+            p.var = Var.LOAD_TILT;
+            p.joint = j;
+            p.bend = e;
+            p.variable = "the gravity torque on drive " + (j + 1);
+            p.shape = "the axis of joint " + (j + 1) + " tilts across itself with the torque its drive carries (the gear mesh's forces "
+                    + "bending the output shaft)";
+            p.x = x;
+            p.xLabel = "gravity torque on drive " + (j + 1) + " (N·m)";
+            out.add(p);
+        }
+        return out;
+    }
+
+    /** Mass scales a load tilt's search tries for each mass in turn (a data sheet's masses are rarely better than ±30 %). */
+    static final double[] LOAD_MASS_SCALES = {0.7, 0.85, 1.15, 1.3};
+
+    /**
+     * A located load tilt with the masses that shape its drive's torque re-estimated: each mass scaled in
+     * turn, twice round, kept where the leave-one-pose-out error with the tilt added falls; the tilt as it
+     * was when none does.
+     */
+    static Effect remassedLoadTilt(Diagnoser.Tester t, Effect e) {
+        GravityTorques g = e.gravity();
+        int n = g.massCount();
+        double[] sc = new double[n];
+        Arrays.fill(sc, 1);
+        double best = t.pressAddingColumns(t.signature(e, t.w.conditions), e.size());
+        Effect kept = e;
+        for (int round = 0; round < 2; round++)
+            for (int m = 0; m < n; m++) {
+                if (m == g.payloadIndex()) continue;
+                double keep = sc[m];
+                for (double f : LOAD_MASS_SCALES) {
+                    double[] trial = sc.clone();
+                    trial[m] = keep * f;
+                    Effect x = Effect.loadTilt(t.w.model, e.joint(), g, e.loadRefNm(), trial);
+                    double press = t.pressAddingColumns(t.signature(x, t.w.conditions), x.size());
+                    // kept only when clearly better: a few per cent of the left-out error
+                    if (press < best * (1 - LOAD_MASS_GAIN)) { best = press; kept = x; sc = trial; }
+                }
+            }
+        return kept;
+    }
+
+    /** The share by which a mass scale must lower a load tilt's leave-one-pose-out error to be kept. */
+    static final double LOAD_MASS_GAIN = 0.01;
 
     /** A bearing's error motion at orders of its joint's angle. */
     private interface BearingEffect { Effect of(KinematicModel model, int joint, int[] orders); }
@@ -1781,6 +1852,7 @@ final class Locator {
             if (f.probe.var == Var.BASE_MOMENT)
                 f.probe.tilt = Diagnoser.bestBaseTilt(t, -1, null, t.w.gravity, t.w.rows, t.w.conditions);
             if (f.probe.var == Var.TOOL_PULL) f.probe.pull = bestPull(t, f.probe);
+            if (f.probe.var == Var.LOAD_TILT) f.probe.bend = remassedLoadTilt(t, f.probe.bend);
         }
         return found;
     }

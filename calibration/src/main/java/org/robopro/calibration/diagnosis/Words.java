@@ -265,10 +265,18 @@ final class Words {
                     + "flange's bearing), not a holder that bends (that moves in proportion to the pull). It is modelled as such so "
                     + "compensation can use it, but check the mount: measure one place with the tool leaning one way and then the "
                     + "other; tighten the nest or the mount, or check the flange bearing's preload.", 1e3 * rmsOverCircle(v));
+            case LOAD_TILT -> String.format(Locale.ROOT, "The axis of joint %d tilts across itself with the torque its drive "
+                    + "carries, %.4f deg at the largest on these poses (%.1f N·m), and none of the known effects explains it: the "
+                    + "gear mesh's tooth and separating forces bend the drive's output shaft on its bearings (a joint's spring under "
+                    + "the same torque turns it about its axis; this tilts the axis). It is modelled as such so compensation can use "
+                    + "it, but check the drive's output bearings and the shaft: put an electronic level or a dial indicator on the "
+                    + "link beyond joint %d and read its tilt across the axis with the arm held out and then folded in.",
+                    e.joint() + 1, Math.toDegrees(Math.hypot(Math.abs(v[0]) + Math.abs(v[1]), Math.abs(v[2]) + Math.abs(v[3]))), e.loadRefNm(),
+                    e.joint() + 1);
             case TOOL_PULL -> String.format(Locale.ROOT, "The measured point moves as if the tool were pulled by a steady force from "
                     + "outside the robot, %s, each joint yielding to it through its stiffness%s, and none of the known effects "
-                    + "explains it (a joint's spring under the arm's weight pulls straight down, and with the weights the file "
-                    + "gives): a hose or cable retractor, a balancer or a dress pack hung from a boom pulling the tool. It is "
+                    + "explains it (a joint's spring yields to the weights, which pull straight down, "
+                    + "and to a payload as the file records it): a hose or cable retractor, a balancer or a dress pack hung from a boom pulling the tool. It is "
                     + "modelled as such so compensation can use it, but check what hangs on the tool: measure a few poses with it "
                     + "unhooked and again hooked.", pullWhere(e, v), at);
             case TOOL_SAG -> String.format(Locale.ROOT, "The measured point moves with the direction of gravity seen from the "

@@ -191,6 +191,14 @@ class EffectTest {
     }
 
     /** The fallbacks of located structures (no physical family), with values of their size. */
+    /** n mass scales of 1 but mass k's, {@code f}. */
+    private static double[] scaled(int n, int k, double f) {
+        double[] s = new double[n];
+        Arrays.fill(s, 1);
+        s[k] = f;
+        return s;
+    }
+
     private List<Effect.Term> fallbacks() {
         double[] s13 = new double[13];
         for (int i = 0; i < s13.length; i++) s13[i] = 1e-4 * Math.sin(i);
@@ -206,7 +214,9 @@ class EffectTest {
                 new Effect.Term(Effect.axialRunout(model, 0, new int[] {2, 3}), new double[] {5e-5, -3e-5, 2e-5, 4e-5}),
                 new Effect.Term(Effect.toolPlay(model, Effect.DOWN, false), new double[] {1e-4, -5e-5, 3e-5, 8e-5, -2e-5, 1e-5}),
                 new Effect.Term(Effect.toolPull(model, new Vec3(0, 0, 0.1), new double[] {1.8, -1.2, 2.1}),
-                        new double[] {1e-4, 2e-4, 1.5e-4, 2e-3, 1e-3, 3e-3}));
+                        new double[] {1e-4, 2e-4, 1.5e-4, 2e-3, 1e-3, 3e-3}),
+                new Effect.Term(Effect.loadTilt(model, 1, g, 400, scaled(g.massCount(), 1, 1.2)),
+                        new double[] {2e-4, -1e-4, 5e-5, 1.5e-4, 3e-5, -2e-5, 1e-5, 4e-5}));
     }
 
     /**

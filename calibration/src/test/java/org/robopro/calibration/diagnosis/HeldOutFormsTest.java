@@ -1154,4 +1154,27 @@ class HeldOutFormsTest {
             assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), robot + ": " + d.finalValidateRmsM() / c.floorM() + " x the floor");
         }
     }
+
+    /**
+     * The PUMA 560's joint 3 shaft tilting under its gear mesh's forces (the world's turn of the distal
+     * chain about its bearing's centre by its own gravity torque, masses 30 % off the file's; 1.2·10⁻⁵
+     * rad per N·m, about 0.4 mrad at the largest torque), measured finely (σ 5 µm): the coupling of joint
+     * 3 from joint 2 that such a campaign of set AD was named is not named, nor anything else, and the axis's
+     * tilt with the torque models it to the floor.
+     */
+    @Test
+    void shaftTiltingUnderItsMeshForces_isNotACoupling() {
+        Scenario s = new Scenario("shaft tilt", "outside", "puma560", Expected.outside(), (n, r) -> {
+            var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
+            var t = new WorldRobot.ShaftTilt(2, 1.2e-5, Math.toRadians(20), 1.1, 0.02);
+            return w -> w.withCompliance(m).withShaftTilt(t);
+        }, p -> p.withSigma(0.005e-3));
+        WorldCampaigns.Sim c = WorldCampaigns.of(s.trial(7));
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("puma560"), c.train(), c.validation());
+        System.out.printf("shaft tilt puma560 j3: %.2f -> %.2f x the floor %s%n", d.geometricValidateRmsM() / c.floorM(),
+                d.finalValidateRmsM() / c.floorM(), d.effects().stream().map(f -> f.effect().label()).toList());
+        assertEquals(List.of(), families(d), "notes " + d.notes());
+        assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the tilt matters: " + d.geometricValidateRmsM() / c.floorM());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() / c.floorM() + " x the floor");
+    }
 }
