@@ -164,6 +164,15 @@ public record Scenario(String name, String family, String robot, Expected expect
 
     static double uniform(Random r, double lo, double hi) { return lo + (hi - lo) * r.nextDouble(); }
 
+    /** A second tracker beside the cell ({@link WorldRobot.Network}): its place and its registration's error drawn. */
+    static WorldRobot.Network network(Random r) {
+        double az = 2 * Math.PI * r.nextDouble(), d = uniform(r, 2, 3), w = uniform(r, 40e-6, 90e-6), s = uniform(r, 30e-6, 60e-6);
+        double[] u = Arm.gauss(r, 1), v = Arm.gauss(r, 1);
+        double nu = Math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), nv = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        return new WorldRobot.Network(new double[] {d * Math.cos(az), d * Math.sin(az), uniform(r, 0, 1)},
+                new double[] {w * u[0] / nu, w * u[1] / nu, w * u[2] / nu}, new double[] {s * v[0] / nv, s * v[1] / nv, s * v[2] / nv});
+    }
+
     /** Drive {@code joint}'s shaft tilting under its mesh's forces ({@link WorldRobot.ShaftTilt}, 20° pressure angle) on masses 30 % off the file's. */
     static UnaryOperator<WorldRobot> shaftTilt(RobotDescription n, Random r, int joint, double radPerNm) {
         var m = WorldRobot.Compliance.fromFile(n.massModel().orElseThrow(), n.dof(), 0.3, r);
@@ -811,6 +820,12 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var x = retractor(r, n.dof()); return w -> w.withRetractor(x); }, same()));
         c.add(s("lost motion j2 beside a cable retractor pulling the tool", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
                 (n, r) -> { var x = retractor(r, n.dof()); var lm = lostMotion(1, r); return w -> add(lm).apply(w.withRetractor(x)); }, same()));
+        // two laser trackers in one network, each pose read by the one its target faces better: the second 2-3 m from axis 1,
+        // registered into the first's frame within 40-90 µrad and 30-60 µm
+        c.add(s("outside: a second tracker reads the poses facing it, its registration off", "outside", "irb2000", Expected.outside(),
+                (n, r) -> { var x = network(r); return w -> w.withNetwork(x); }, same()));
+        c.add(s("outside: a second tracker reads the poses facing it, its registration off, irb2400", "outside", "irb2400", Expected.outside(),
+                (n, r) -> { var x = network(r); return w -> w.withNetwork(x); }, same()));
         // the PUMA 560's light gear shafts: joint 2's or 3's output shaft tilting under its mesh's forces, 2.5-4e-6 rad per N·m on
         // joint 2 (0.3-0.45 mrad at its largest gravity torque, about 110 N·m), 0.8-1.4e-5 on joint 3 (about 30 N·m), the masses 30 %
         // off the file's

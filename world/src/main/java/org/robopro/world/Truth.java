@@ -138,6 +138,11 @@ final class Truth {
             root.put("retractor", Map.of("form", "a steady pull of force_n on the measured target toward the anchor, each drive yielding "
                     + "by its torque over its stiffness (outside)", "anchor_m", Arrays.stream(w.retractor().anchor()).boxed().toList(),
                     "force_n", w.retractor().forceN(), "stiffness_nm_per_rad", Arrays.stream(w.retractor().stiffness()).boxed().toList()));
+        if (w.network() != null)
+            root.put("network", Map.of("form", "poses whose target faces the second station better read from it, misregistered by a turn "
+                    + "about it and a shift (outside)", "second_station_m", Arrays.stream(w.network().secondBase()).boxed().toList(),
+                    "omega_urad", Arrays.stream(w.network().omegaRad()).map(x -> x * 1e6).boxed().toList(),
+                    "shift_um", Arrays.stream(w.network().shiftM()).map(x -> x * 1e6).boxed().toList()));
         if (w.shaftTilt() != null)
             root.put("shaft_tilt", Map.of("form", "drive joint's output shaft turned by rad_per_nm (tau d + |tau| tan(pressure angle) n) about its "
                     + "bearing's centre, tau the drive's gravity torque (outside)", "joint", w.shaftTilt().joint() + 1,

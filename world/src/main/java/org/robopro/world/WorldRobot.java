@@ -53,12 +53,23 @@ import org.robopro.models.RobotDescription;
  * @param refraction         the air's temperature gradient bending the instrument's beam, or null
  * @param retractor          a cable retractor pulling the tool toward a fixed anchor, or null
  * @param shaftTilt          a drive's output shaft tilting under its gear mesh's forces, or null
+ * @param network            a second instrument station reading the poses whose target faces it better, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                          FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                         Refraction refraction, Retractor retractor, ShaftTilt shaftTilt) {
+                         Refraction refraction, Retractor retractor, ShaftTilt shaftTilt, Network network) {
+    /** A world robot read from one instrument station. */
+    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
+                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
+                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
+                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
+                      Refraction refraction, Retractor retractor, ShaftTilt shaftTilt) {
+        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, null);
+    }
+
     /** A world robot whose drives' shafts stay straight under load. */
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
@@ -66,7 +77,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
                       FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
                       Refraction refraction, Retractor retractor) {
         this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
-                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, null);
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, null, null);
     }
 
     /** A world robot with nothing pulling on its tool. */
@@ -635,6 +646,41 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     /**
+     * Two instrument stations (two laser trackers, or one moved) in one network: a tracker reads a
+     * reflector only within its acceptance angle, so each pose is read by the station its target faces
+     * better, the one whose direction from the target makes the smaller angle with the target's axis (the
+     * tool frame's z). The first station is the instrument; the second stands at {@code secondBase} (base
+     * frame, m) and its registration into the first's frame is off by a small turn {@code omegaRad} about
+     * the second station and a shift {@code shiftM} (both in the first's frame): its points land at
+     * p + ω × (p − s₂) + δ and their frames turn by ω (a network's registration off by its residual;
+     * Muralikrishnan et al., "Laser trackers for large-scale dimensional metrology: a review", Precision
+     * Engineering 44 (2016) 13, on networks of trackers).
+     */
+    public record Network(double[] secondBase, double[] omegaRad, double[] shiftM) {
+        public Network { secondBase = secondBase.clone(); omegaRad = omegaRad.clone(); shiftM = shiftM.clone(); }
+
+        @Override public double[] secondBase() { return secondBase.clone(); }
+
+        @Override public double[] omegaRad() { return omegaRad.clone(); }
+
+        @Override public double[] shiftM() { return shiftM.clone(); }
+
+        /** Whether the target at {@code tool} (base frame) is read from the second station, {@code inst} the first's instrumentFromBase. */
+        boolean readsSecond(Rigid tool, Rigid inst) {
+            double[] r = tool.r(), p = tool.p(), z = {r[2], r[5], r[8]};
+            double[] to1 = Rigid.unit(Rigid.minus(inst.inverse().p(), p)), to2 = Rigid.unit(Rigid.minus(secondBase, p));
+            return Rigid.dot(z, to2) > Rigid.dot(z, to1);
+        }
+
+        /** The reading {@code seen} (the first station's frame) as the misregistered second station gives it. */
+        Rigid misregistered(Rigid seen, Rigid inst) {
+            double angle = Rigid.norm(omegaRad);
+            Rigid turn = angle > 0 ? Rigid.rotation(Rigid.unit(omegaRad), angle, inst.apply(secondBase)) : Rigid.IDENTITY;
+            return Rigid.translation(shiftM[0], shiftM[1], shiftM[2]).times(turn).times(seen);
+        }
+    }
+
+    /**
      * A cable retractor (a spring balancer or hose reel) hung from a boom beside the cell, its cable
      * hooked to the tool: it pulls the measured target with a steady force {@code forceN} toward the
      * fixed {@code anchor} (base frame, m), a spring reel's tension nearly the same over its travel.
@@ -895,6 +941,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         if (knock != null && Double.isFinite(timeS) && timeS >= knock.atS()) inst = inst.times(knock.motion(inst.inverse().p()).inverse());
         if (refraction != null) tool = new Rigid(tool.r(), refraction.seen(tool.p(), inst.inverse().p(), timeS, tempC));
         Rigid seen = inst.times(tool);
+        if (network != null && network.readsSecond(tool, inst)) seen = network.misregistered(seen, inst);
         return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p(), timeS));
     }
 
@@ -1049,82 +1096,86 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withKnock(Knock k) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withTargetPlay(TargetPlay p) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     /** The same robot carrying a mass that changes with time as {@code d} says, whatever the campaign records. */
     public WorldRobot withDispensing(Dispensing d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction, retractor, shaftTilt, network);
     }
 
     /** The same robot seen through air whose vertical temperature gradient is {@code r}'s. */
     public WorldRobot withRetractor(Retractor r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, r, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, r, shaftTilt, network);
     }
 
     public WorldRobot withShaftTilt(ShaftTilt t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, t);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, t, network);
+    }
+
+    public WorldRobot withNetwork(Network x) {
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, x);
     }
 
     public WorldRobot withRefraction(Refraction r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r, retractor, shaftTilt, network);
     }
 
     /**
@@ -1205,7 +1256,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt);
+        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
     }
 
     static double[] times(double[][] m, double[] v) {

@@ -110,6 +110,8 @@ public final class Diagnoser {
      * 1.5 δ/L: 2 mm on a 0.6 m link), rad.
      */
     static final double MAX_LINK_TURN_RAD = 5e-3;
+    /** A second instrument station's registration error at most, m and rad. */
+    static final double MAX_STATION_SHIFT_M = 2e-3, MAX_STATION_TURN_RAD = 2e-3;
     /** A joint's largest turn per metre of lever across a pull on the tool, rad/m: 200 N on a wrist drive of 5000 N·m/rad. */
     static final double MAX_PULL_TURN_PER_M = 0.04;
     /**
@@ -3949,15 +3951,16 @@ public final class Diagnoser {
      * joint the weight loads, the give changing through a warm-up is the compliance's own rival (a
      * varying compliance), and a warming error beside the compliance would hold that change so that the
      * rival finds nothing beside the claim;</li>
-     * <li>a second pull on the tool (another anchor is the same pull placed elsewhere).</li>
+     * <li>a second pull on the tool (another anchor is the same pull placed elsewhere), a second station's split
+     * beside one (another side is the same station's poses split elsewhere).</li>
      * </ul>
      */
     static boolean secondForm(Effect e, List<Effect> selected, Effect replaced) {
         boolean mass = e.kind() == Effect.Kind.COMPLIANCE_VARYING && e.payloadShare();
         boolean give = e.kind() == Effect.Kind.COMPLIANCE || e.kind() == Effect.Kind.COMPLIANCE_VARYING;
         boolean warm = e.kind() == Effect.Kind.WARM_PERIODIC;
-        if (e.kind() == Effect.Kind.TOOL_PULL)
-            return selected.stream().anyMatch(x -> x != e && x != replaced && x.kind() == Effect.Kind.TOOL_PULL);
+        if (e.kind() == Effect.Kind.TOOL_PULL || e.kind() == Effect.Kind.SECOND_STATION)
+            return selected.stream().anyMatch(x -> x != e && x != replaced && x.kind() == e.kind());
         if (!mass && !give && !warm) return false;
         for (Effect x : selected) {
             if (x == e || x == replaced || x.joint() != e.joint()) continue;
@@ -4518,6 +4521,7 @@ public final class Diagnoser {
                 // the instrument's pose changed: a drift of it, or a turn of the base, with time follows part of a step
                 case BASE_STEP -> { if (k == Effect.Kind.BASE_STEP || k == Effect.Kind.DRIFT || k == Effect.Kind.BASE_TURN) return e; }
                 case RANGE_STEP -> { if (k == Effect.Kind.DRIFT || k == Effect.Kind.INSTRUMENT_SCALE) return e; }
+                case STATION -> { if (k == Effect.Kind.SECOND_STATION) return e; }
                 case PAYLOAD_REACH -> { if (k == Effect.Kind.COMPLIANCE || k == Effect.Kind.POINT_SMOOTH) return e; }
                 case PAYLOAD -> { if (k == Effect.Kind.COMPLIANCE && e.joint() == f.probe.joint) return e; }
                 case REACH, HEIGHT -> { return e; }
@@ -4750,6 +4754,9 @@ public final class Diagnoser {
                     + "directions, with the other joints still, and compare its reading with an independent measure: a jump there "
                     + "is in the encoder (an absolute encoder's code track, a misread bit) or a damaged scale.", f.probe.joint + 1,
                     Math.toDegrees(f.probe.lo));
+            case STATION -> "check which instrument station read each pose (record it, or measure the poses again from one): "
+                    + "the poses whose target faces one side moved together as one body, as a second station's registration error does; "
+                    + "register the stations again on common targets.";
             case RANGE_STEP -> String.format(Locale.ROOT, "check the instrument's log for a broken beam near %.0f s (the arm or "
                     + "a person crossing it); keep the line of sight clear, or measure a fixed reference point after every break "
                     + "to carry the distance over.", f.probe.lo);
@@ -5043,6 +5050,7 @@ public final class Diagnoser {
             if (f.probe.var == Locator.Var.TARGET_STEP || f.probe.var == Locator.Var.BASE_STEP)
                 out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
             if (f.probe.var == Locator.Var.RANGE_STEP) out.add(Effect.rangeStep(f.probe.instrument, f.probe.lo));
+            if (f.probe.var == Locator.Var.STATION) out.add(f.probe.station != null ? f.probe.station : Effect.secondStation(model, f.probe.facing));
         }
         // an error of the instrument's readings: modelled where it is located, so that it does not bend the robot's fit
         for (Locator.Found f : found) if (f.probe.var == Locator.Var.SIGHT) out.add(sightEffect(f.probe));
@@ -5125,6 +5133,7 @@ public final class Diagnoser {
                         f.probe.lo, f.probe.hi));
                 case TIME_STEP, ANGLE_STEP, TARGET_STEP, BASE_STEP -> out.add(stepEffect(f.probe.var, f.probe.joint, f.probe.lo, model));
                 case RANGE_STEP -> out.add(Effect.rangeStep(f.probe.instrument, f.probe.lo));
+                case STATION -> out.add(f.probe.station != null ? f.probe.station : Effect.secondStation(model, f.probe.facing));
                 case PAYLOAD_REACH -> out.add(Effect.pointSmooth(Effect.Along.PAYLOAD_REACH, f.probe.lo, f.probe.hi));
                 case SIGHT -> out.add(sightEffect(f.probe));
                 case BASE_MOMENT -> { if (f.probe.tilt != null) out.add(f.probe.tilt); }
@@ -6682,6 +6691,13 @@ public final class Diagnoser {
                 double d = spread(v);
                 c.plausible = d < MAX_BACKLASH_RAD;
                 c.plausibility = String.format(Locale.ROOT, "the zero's drift within %.4f deg < %.1f deg", Math.toDegrees(d), Math.toDegrees(MAX_BACKLASH_RAD));
+            }
+            case SECOND_STATION -> {
+                // a registration off by more than a few millimetres or milliradians would have been seen when the stations were set up
+                double d = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), w = Math.sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+                c.plausible = d < MAX_STATION_SHIFT_M && w < MAX_STATION_TURN_RAD;
+                c.plausibility = String.format(Locale.ROOT, "shift %.3f mm < %.0f mm, turn %.1f µrad < %.0f µrad", d * 1e3, MAX_STATION_SHIFT_M * 1e3,
+                        w * 1e6, MAX_STATION_TURN_RAD * 1e6);
             }
             case LOAD_TILT -> {
                 // the tilt at the largest torque on the poses, a bearing's tilt error motion's bound

@@ -92,6 +92,9 @@ public final class Effect {
         TARGET_STEP("target-step", "Measured point that moved on the flange at one time during the campaign, of no known family"),
         BASE_STEP("base-step", "The measuring instrument and the robot's base that moved against each other at one time during the "
                 + "campaign (the instrument knocked, the base slipped), of no known family"),
+        SECOND_STATION("second-station", "The poses whose target faces one side, measured from a second instrument station (a second "
+                + "tracker, or the one moved), turned and shifted against the rest: the stations' registration into one frame is off, not "
+                + "the robot, of no known family"),
         RANGE_STEP("range-step", "The measuring instrument's distances that jumped at one time during the campaign (its distance "
                 + "taken again after the beam was broken), not the robot, of no known family"),
         INSTRUMENT("instrument-reading-error", "Error of the measuring instrument's distance or angle readings, not of the robot"),
@@ -244,6 +247,8 @@ public final class Effect {
     private Vec3 attach;                     // tool pull: where the pull acts, flange frame
     private double[] anchor;                 // tool pull: the fixed point it pulls toward, base frame (null: a pull of one direction)
     private GravityTorques fileGravity;      // load tilt: the masses before their scales
+    private Vec3 facing;                     // second station: the poses whose flange axis has a positive part along it (base frame, unit)
+    private double[] stations;               // second station, by where the stations stand: the first's and the second's origins (base frame), or null
 
     private Effect(Kind kind, int joint, int source, GravityTorques gravity, boolean perMass, double t0C, double tauS,
                    int[] harmonics, double lo, double hi, KinematicModel model, int[] links) {
@@ -1124,6 +1129,61 @@ public final class Effect {
         if (!Double.isFinite(tauS)) throw new IllegalArgumentException("step time " + tauS);
         return new Effect(Kind.BASE_STEP, -1, -1, null, false, Double.NaN, tauS, null, Double.NaN, Double.NaN, null, null, 1);
     }
+
+    /**
+     * The poses whose target faces one side measured from a second instrument station, whose
+     * registration into the first's frame is off by a small rigid motion: a tracker sees a reflector
+     * only within its acceptance angle, so with two stations (two trackers, or one moved) each pose is
+     * read by the one its target faces, and the second's points carry the error of its registration.
+     * The second station's poses are those whose flange axis has a positive part along {@code facing}
+     * (base frame): Δp = −(d + ω × p) there, as a base step's before its time ({@link #baseStep}), and
+     * their measured frames turn by −ω; 0 at the others, whose station the geometry's instrument pose
+     * holds. Six parameters: d (m), then ω (rad). An error of the measurement, never applied to the
+     * robot.
+     */
+    public static Effect secondStation(KinematicModel model, Vec3 facing) {
+        if (!(facing.norm() > 0)) throw new IllegalArgumentException("no facing direction");
+        Effect e = new Effect(Kind.SECOND_STATION, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null, 1);
+        e.facing = facing.times(1 / facing.norm());
+        return e;
+    }
+
+    /**
+     * The poses read from the station the target faces better, of two standing at {@code first} and
+     * {@code second} (base frame): a pose is the second's where its flange axis points more toward the
+     * second than toward the first (the unit vectors from the target, at {@code targetInFlange} in the
+     * flange's frame, to each), so the split
+     * follows the target's place as well as its facing. Otherwise as {@link #secondStation(KinematicModel, Vec3)}.
+     */
+    public static Effect secondStation(KinematicModel model, Vec3 first, Vec3 second, Vec3 targetInFlange) {
+        Effect e = new Effect(Kind.SECOND_STATION, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null, 1);
+        e.stations = new double[] {first.x(), first.y(), first.z(), second.x(), second.y(), second.z()};
+        e.attach = targetInFlange;
+        Vec3 d = second.minus(first);
+        e.facing = d.norm() > 0 ? d.times(1 / d.norm()) : new Vec3(0, 0, 1);
+        return e;
+    }
+
+    /** A second station's split: whether the pose at q was read from the second station (its flange axis along the facing). */
+    public boolean seenFromSecond(double[] q) { return facingPart(q) > 0; }
+
+    /**
+     * A second station's split variable at q: the flange axis's part along the facing direction, or, with
+     * the stations' places, along the unit vector to the second less that along the unit vector to the first.
+     */
+    public double facingPart(double[] q) {
+        Pose f = model.flange(q);
+        if (stations == null) return f.zAxis().dot(facing);
+        Vec3 o = f.apply(attach), z = f.zAxis();
+        Vec3 a = new Vec3(stations[0], stations[1], stations[2]).minus(o), b = new Vec3(stations[3], stations[4], stations[5]).minus(o);
+        return z.dot(b) / b.norm() - z.dot(a) / a.norm();
+    }
+
+    /** A second station split by where the stations stand: their origins (base frame), the first's then the second's; null otherwise. */
+    public double[] stations() { return stations == null ? null : stations.clone(); }
+
+    /** A second station's facing direction (base frame, unit); null for other kinds. */
+    public Vec3 facing() { return facing; }
 
     /** The parameters of a base step: the translation's three, then the turn's three. */
     static final int BASE_STEP_TERMS = 6;
@@ -2074,7 +2134,7 @@ public final class Effect {
     public boolean isFallback() {
         return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.WARM_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
                 || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
-                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE || kind == Kind.TOOL_PULL || kind == Kind.LOAD_TILT;
+                || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE || kind == Kind.TOOL_PULL || kind == Kind.LOAD_TILT || kind == Kind.SECOND_STATION;
     }
 
     /**
@@ -2118,6 +2178,7 @@ public final class Effect {
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
     public boolean ofInstrument() {
         return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION || kind == Kind.RANGE_STEP || kind == Kind.BASE_STEP
+                || kind == Kind.SECOND_STATION
                 || kind == Kind.TARGET_INCIDENCE;
     }
 
@@ -2277,7 +2338,7 @@ public final class Effect {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
-                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT -> Target.POSITION;
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT, SECOND_STATION -> Target.POSITION;
             default -> Target.DRIVE;
         };
     }
@@ -2336,7 +2397,7 @@ public final class Effect {
             case THERMAL_LINK -> links.length * (warms() ? 2 : 1);
             case DRIFT, TARGET_STEP -> 3;
             case BASE_CREEP -> CREEP_TERMS;
-            case BASE_STEP -> BASE_STEP_TERMS;
+            case BASE_STEP, SECOND_STATION -> BASE_STEP_TERMS;
             default -> 1;
         };
     }
@@ -2394,7 +2455,7 @@ public final class Effect {
             case SETTLING -> out.add("per_speed");
             case TARGET_STEP -> { out.add("dx"); out.add("dy"); out.add("dz"); }
             case BASE_CREEP -> { out.add("turn"); out.add("dx"); out.add("dy"); }
-            case BASE_STEP -> out.addAll(List.of("dx", "dy", "dz", "wx", "wy", "wz"));
+            case BASE_STEP, SECOND_STATION -> out.addAll(List.of("dx", "dy", "dz", "wx", "wy", "wz"));
             case RANGE_STEP -> out.add("d");
             case BASE_TILT -> { out.add("tilt"); out.add("lift"); out.add("slide"); }
             case AXIS_WOBBLE -> {
@@ -2463,7 +2524,7 @@ public final class Effect {
             case COMPLIANCE, COMPLIANCE_VARYING -> "rad/(N·m)";
             case PERIODIC, LOAD_PERIODIC, WARM_PERIODIC, LINK_PERIODIC, GRAVITY_PLAY, BACKLASH, SMOOTH, PAIR, ZERO_DRIFT, ZERO_STEP, ANGLE_STEP -> "rad";
             case SETTLING -> "s";
-            case POINT_SMOOTH, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE -> "m";
+            case POINT_SMOOTH, TARGET_STEP, TARGET_DRIFT, BASE_STEP, RANGE_STEP, TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE, SECOND_STATION -> "m";
             case BASE_TURN, BASE_CREEP -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
@@ -2486,7 +2547,7 @@ public final class Effect {
         }
         if (stiffens) return List.of(u, "rad/(N·m)^3");
         if (kind == Kind.BASE_TILT) return List.of(u, "m/(N·m)", "m/(N·m)"); // the lift and the slide: the tilt times a distance
-        if (kind == Kind.BASE_STEP) return List.of(u, u, u, "rad", "rad", "rad");
+        if (kind == Kind.BASE_STEP || kind == Kind.SECOND_STATION) return List.of("m", "m", "m", "rad", "rad", "rad");
         if (kind == Kind.BASE_CREEP) return List.of("rad", "m", "m");
         if (kind == Kind.TOOL_PLAY && playTurns) { // the point's shifts, then the flange's tips
             List<String> out = new ArrayList<>(java.util.Collections.nCopies(PLAY_SHIFTS, u));
@@ -2560,6 +2621,8 @@ public final class Effect {
                     ? String.format(Locale.ROOT, " (from %.1f to %.1f deg)", Math.toDegrees(lo), Math.toDegrees(hi))
                     : String.format(Locale.ROOT, " (at %.1f deg)", Math.toDegrees(lo)));
             case TARGET_STEP, BASE_STEP, RANGE_STEP -> kind.json + String.format(Locale.ROOT, " (at %.0f s)", tauS);
+            case SECOND_STATION -> kind.json + (stations != null ? String.format(Locale.ROOT, " (at %.2f, %.2f, %.2f m)", stations[3], stations[4], stations[5])
+                    : String.format(Locale.ROOT, " (target facing %.2f, %.2f, %.2f)", facing.x(), facing.y(), facing.z()));
             case BASE_CREEP -> kind.json + String.format(Locale.ROOT, " (moves of joint 1 over %.0f deg)", Math.toDegrees(tauS));
             case TARGET_DRIFT -> kind.json + " (time" + (nBasis == DRIFT_RESOLUTIONS[0] ? "" : ", " + nBasis + " functions") + ")";
             case BASE_TILT -> kind.json + (towardLean() ? " (toward the lean" + (tiltHold > 0 ? String.format(Locale.ROOT, " above %.0f N·m", tiltHold) : "") + ")"
@@ -2745,7 +2808,7 @@ public final class Effect {
                 }
             }
             case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
-                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT -> throw new IllegalStateException(label() + " acts on the measured point");
+                 TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT, SECOND_STATION -> throw new IllegalStateException(label() + " acts on the measured point");
         }
     }
 
@@ -2852,6 +2915,7 @@ public final class Effect {
                 for (int a = 0; a < 3; a++) for (int col = 0; col < 3; col++) g3[a * k + col] = -f.rot(a, col);
             }
             case BASE_STEP -> { if (c.timeS() <= tauS) baseStepRegressor(pointBase, g3, null); }
+            case SECOND_STATION -> { if (seenFromSecond(q)) baseStepRegressor(pointBase, g3, null); }
             case RANGE_STEP -> {
                 // before the jump every distance read d less than at the end: −d along the line of sight, in base axes
                 // R_ibᵀ p_i/|p_i| with p_i = R_ib p + t_ib (its change with the point itself, d/|p_i|, is left out: 10⁻⁵ of d)
@@ -2975,7 +3039,7 @@ public final class Effect {
 
     /** Whether this effect also turns the measured frame (a base tilt turns everything the robot carries). */
     public boolean turnsFrame() { return kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TOOL_PULL
-            || kind == Kind.LOAD_TILT || kind == Kind.BASE_TURN || kind == Kind.BASE_STEP || kind == Kind.TOOL_PLAY && playTurns; }
+            || kind == Kind.LOAD_TILT || kind == Kind.BASE_TURN || kind == Kind.BASE_STEP || kind == Kind.SECOND_STATION || kind == Kind.TOOL_PLAY && playTurns; }
 
     /**
      * The rotation of the measured frame (base coordinates, rad): Δω = G v with G 3 x size,
@@ -2991,6 +3055,7 @@ public final class Effect {
         if (kind == Kind.TOOL_PULL) { toolPullColumns(q, null, null, g3); return; }
         if (kind == Kind.TOOL_PLAY) { if (playTurns) toolPlayRegressor(model.flange(q), down, true, g3, size(), PLAY_SHIFTS); return; }
         if (kind == Kind.BASE_STEP) { if (c.timeS() <= tauS) baseStepRegressor(null, null, g3); return; }
+        if (kind == Kind.SECOND_STATION) { if (seenFromSecond(q)) baseStepRegressor(null, null, g3); return; }
         if (kind == Kind.BASE_CREEP) { g3[2 * size()] = creepCount(Double.isFinite(c.timeS()) ? c.timeS() : Double.POSITIVE_INFINITY); return; }
         if (kind == Kind.BASE_TURN) {
             double[] b = readingBasis(c);
@@ -3183,6 +3248,15 @@ public final class Effect {
             }
             case INSTRUMENT_SCALE, REFRACTION -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
             case ZERO_STEP, TARGET_STEP, BASE_STEP -> p.put("time_s_step", tauS);
+            case SECOND_STATION -> {
+                if (stations == null) { p.put("facing_x", facing.x()); p.put("facing_y", facing.y()); p.put("facing_z", facing.z()); }
+                else {
+                    for (int i = 0; i < 6; i++) p.put((i < 3 ? "first_" : "second_") + "xyz".charAt(i % 3), stations[i]);
+                    p.put("target_x", attach.x());
+                    p.put("target_y", attach.y());
+                    p.put("target_z", attach.z());
+                }
+            }
             case BASE_CREEP -> { p.put("creep_move_rad", tauS); p.put("creep_count_end", creepCount(Double.POSITIVE_INFINITY)); }
             case RANGE_STEP -> { p.put("time_s_step", tauS); putInstrument(p, instrument); }
             case AXIS_WOBBLE, AXIAL_RUNOUT -> { }
@@ -3273,7 +3347,7 @@ public final class Effect {
         List<Integer> js = d.joints();
         int need = switch (kind) {
             case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT,
-                 TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE, TOOL_PULL -> 0;
+                 TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE, TOOL_PULL, SECOND_STATION -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
             default -> 1;
@@ -3415,6 +3489,15 @@ public final class Effect {
                 yield targetDrift(model, require(d, "time_s_min", file), require(d, "time_s_max", file), n);
             }
             case BASE_STEP -> baseStep(require(d, "time_s_step", file));
+            case SECOND_STATION -> {
+                if (ps.containsKey("second_x"))
+                    yield secondStation(model, new Vec3(require(d, "first_x", file), require(d, "first_y", file), require(d, "first_z", file)),
+                            new Vec3(require(d, "second_x", file), require(d, "second_y", file), require(d, "second_z", file)),
+                            new Vec3(require(d, "target_x", file), require(d, "target_y", file), require(d, "target_z", file)));
+                Vec3 f = new Vec3(require(d, "facing_x", file), require(d, "facing_y", file), require(d, "facing_z", file));
+                if (!(f.norm() > 0)) throw d.error(file, "parameters_si.facing_x", "the facing direction must not be zero");
+                yield secondStation(model, f);
+            }
             case RANGE_STEP -> rangeStep(instrumentOf(d, file), require(d, "time_s_step", file));
             case LINK_SAG -> {
                 if (js.get(0) < 2 || js.get(0) > 3)

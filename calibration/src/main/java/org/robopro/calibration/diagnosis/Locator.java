@@ -43,7 +43,7 @@ final class Locator {
     /** Harmonics the scan should reach to cover gear stages. */
     static final int WANTED_HARMONIC = 40;
 
-    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC, TOOL_PULL, LOAD_TILT }
+    enum Var { ANGLE_PERIODIC, ANGLE_SMOOTH, ANGLE_STEP, JOINT_PAIR, DIRECTION, SETTLING, TIME, TIME_STEP, TARGET_STEP, BASE_STEP, RANGE_STEP, TEMPERATURE, PAYLOAD, PAYLOAD_REACH, REACH, HEIGHT, SIGHT, BASE_MOMENT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_GRAVITY, TOOL_PLAY, LINK_BEND, LINK_TWIST, TARGET_SIGHT, GRAVITY_PLAY, TARGET_DRIFT, BASE_CREEP, LINK_PERIODIC, WARM_PERIODIC, TOOL_PULL, LOAD_TILT, STATION }
 
     /** Spline functions of an instrument's distance reading tried: a scale-like trend, then a cyclic error of a few hundred mm. */
     static final int[] RANGE_RESOLUTIONS = {4, 13, 25};
@@ -116,6 +116,8 @@ final class Locator {
         Effect creep;                            // BASE_CREEP: the base's turns with joint 1's large moves
         Effect pull;                             // TOOL_PULL, once found: the pull toward the anchor that fits best
         Vec3 pullAttach;                         // TOOL_PULL: where the pull acts, flange frame
+        Vec3 facing;                             // STATION: the side the second station's poses face
+        Effect station;                          // STATION, once found: the split that explains most
         String xLabel;
     }
 
@@ -359,6 +361,7 @@ final class Locator {
         out.addAll(axisWobbles(t));
         out.addAll(axialRunouts(t));
         if (steps) out.addAll(loadTilts(t));
+        if (steps) out.addAll(stations(t));
         out.add(toolGravity(t));
         out.add(toolPlay(t));
         out.addAll(linkBends(t));
@@ -737,7 +740,11 @@ final class Locator {
 
     /** The sum of squares of the residual a pull toward {@code anchor} explains (its columns out of the model's span). */
     private static double pullGain(Diagnoser.Tester t, KinematicModel model, Vec3 attach, double[] anchor) {
-        Effect e = Effect.toolPull(model, attach, anchor);
+        return explained(t, Effect.toolPull(model, attach, anchor));
+    }
+
+    /** The sum of squares of the tester's residual that effect {@code e} explains (its columns out of the model's span). */
+    private static double explained(Diagnoser.Tester t, Effect e) {
         int k = e.size();
         double[] s = Diagnoser.projectOut(t.u, t.rank, t.m, t.signature(e, t.w.conditions), k);
         DMatrixRMaj a = new DMatrixRMaj(k, k), b = new DMatrixRMaj(k, 1);
@@ -827,6 +834,194 @@ final class Locator {
         }
         return out;
     }
+
+    /**
+     * The poses read from a second instrument station ({@link Effect#secondStation}): for each facing
+     * direction of a half sphere (every 30° of azimuth at 45° up, every 30° over half a turn level, and
+     * straight up; the other half splits the poses alike), the rigid motion of the poses whose flange
+     * axis faces that side, where between a tenth and nine tenths of the poses do. Positions and
+     * orientations, one pose per row.
+     */
+    static List<Probe> stations(Diagnoser.Tester t) {
+        List<Probe> out = new ArrayList<>();
+        if (t.ends != 1 || t.perPose != 1) return out;
+        int poses = t.m / t.rpp;
+        List<Vec3> sides = new ArrayList<>();
+        for (int a = 0; a < 12; a++) sides.add(new Vec3(Math.cos(Math.toRadians(30 * a)), Math.sin(Math.toRadians(30 * a)), 1));
+        for (int a = 0; a < 6; a++) sides.add(new Vec3(Math.cos(Math.toRadians(30 * a)), Math.sin(Math.toRadians(30 * a)), 0));
+        sides.add(new Vec3(0, 0, 1));
+        for (Vec3 side : sides) {
+            Effect e = Effect.secondStation(t.w.model, side);
+            double[][] x = new double[1][poses];
+            int seen = 0;
+            for (int i = 0; i < poses; i++) {
+                x[0][i] = e.facingPart(t.endRows.get(0).get(i).q());
+                if (x[0][i] > 0) seen++;
+            }
+            if (seen < MIN_STATION_SHARE * poses || seen > (1 - MIN_STATION_SHARE) * poses) continue;
+            Probe p = finish(t, pointColumns(t, e), e.size());
+            p.var = Var.STATION;
+            p.facing = e.facing();
+            p.variable = "the side the target faces";
+            p.shape = String.format(Locale.ROOT, "the poses whose target faces (%.2f, %.2f, %.2f) moved together by one rigid motion, "
+                    + "whatever the arm's pose (read from a second instrument station)", p.facing.x(), p.facing.y(), p.facing.z());
+            p.x = x;
+            p.xLabel = "the flange axis's part along that side";
+            out.add(p);
+        }
+        return out;
+    }
+
+    /**
+     * The side a second station's poses face that explains most of the residual, refined from {@code from}
+     * by a pattern search over its azimuth and elevation (steps of 8° down to 1°): the split between two
+     * stations follows the line between them, not the probes' grid.
+     */
+    static Vec3 bestFacing(Diagnoser.Tester t, Vec3 from) {
+        double az = Math.atan2(from.y(), from.x()), el = Math.asin(Math.max(-1, Math.min(1, from.z() / from.norm())));
+        double best = explained(t, Effect.secondStation(t.w.model, from));
+        for (double step = Math.toRadians(8); step > Math.toRadians(0.9); ) {
+            boolean moved = false;
+            for (double[] d : new double[][] {{step, 0}, {-step, 0}, {0, step}, {0, -step}}) {
+                double a = az + d[0], e = Math.max(-Math.PI / 2, Math.min(Math.PI / 2, el + d[1]));
+                double g = explained(t, Effect.secondStation(t.w.model, new Vec3(Math.cos(e) * Math.cos(a), Math.cos(e) * Math.sin(a), Math.sin(e))));
+                if (g > best) { best = g; az = a; el = e; moved = true; break; }
+            }
+            if (!moved) step /= 2;
+        }
+        return new Vec3(Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el));
+    }
+
+    /**
+     * The second station's split that explains most of the residual: by the side the target faces
+     * ({@link #bestFacing}), or, where the positions are the instrument's own, by where the second
+     * station stands beside the first (the instrument the geometric fit placed): every 15° about axis 1 at
+     * 1.5 to 4.5 m and three heights, then from each of the best few a search on the poses' membership
+     * softened and hardened again.
+     */
+    static Effect bestStation(Diagnoser.Tester t, Vec3 facing) {
+        KinematicModel model = t.w.model;
+        Effect best = Effect.secondStation(model, bestFacing(t, facing));
+        double gain = explained(t, best);
+        if (!t.w.instrument) return best;
+        Vec3 first = Effect.instrumentOrigin(t.fit.problem.instrumentOf(t.fit.full));
+        Vec3 target = model.flange(t.endRows.get(0).get(0).q()).inverse().apply(new Vec3(t.pointBase[0][0], t.pointBase[0][1], t.pointBase[0][2]));
+        Split split = new Split(t, first, target);
+        // the grid's places, best first
+        List<double[]> places = new ArrayList<>();
+        for (int a = 0; a < 24; a++)
+            for (double d : new double[] {1.5, 2.25, 3, 4.5})
+                for (double h : new double[] {-0.25, 0.5, 1.5}) {
+                    double[] s = {d * Math.cos(Math.toRadians(15 * a)), d * Math.sin(Math.toRadians(15 * a)), h, 0};
+                    s[3] = split.explained(s, 0);
+                    places.add(s);
+                }
+        places.sort((x, y) -> Double.compare(y[3], x[3]));
+        // The split changes in steps as the place moves, so no gradient leads to the best: from each of the grid's best few, the
+        // poses' membership is softened (a logistic of how much better the target faces the second station, its width shrinking),
+        // and places are drawn about the best so far in balls that shrink with it (a fixed seed: the same file gives the same answer).
+        java.util.Random draw = new java.util.Random(1);
+        double[] at = places.get(0);
+        double[][] anneal = {{0.05, 0.4}, {0.02, 0.2}, {0.008, 0.1}, {0.003, 0.05}, {0, 0.025}}; // width, ball radius (m)
+        for (double[] start : places.subList(0, Math.min(STATION_STARTS, places.size()))) {
+            double[] here = start.clone();
+            for (double[] stage : anneal) {
+                double soft = split.explained(here, stage[0]);
+                for (int i = 0; i < STATION_DRAWS; i++) {
+                    double[] s = {here[0] + stage[1] * draw.nextGaussian(), here[1] + stage[1] * draw.nextGaussian(), here[2] + stage[1] * draw.nextGaussian(), 0};
+                    double g = split.explained(s, stage[0]);
+                    if (g > soft) { soft = g; here = s; }
+                }
+            }
+            here[3] = split.explained(here, 0);
+            if (here[3] > at[3]) at = here;
+        }
+        Effect found = Effect.secondStation(model, first, new Vec3(at[0], at[1], at[2]), target);
+        return explained(t, found) > gain ? found : best;
+    }
+
+    /**
+     * A second station's split by where it stands, scored fast: each pose's six columns (every pose read
+     * from the second station) through the residual's sensitivities, their products with themselves,
+     * with the model's span and with the residual summed over the poses the place assigns to the second
+     * station. The explained sum of squares is bᵀA⁺b with A = Σ SᵢᵀSᵢ − (Σ SᵢᵀUᵢ)(Σ UᵢᵀSᵢ) and b = Σ Sᵢᵀrᵢ
+     * (the residual is already out of the span), as the projected columns of {@link #explained} give it.
+     */
+    private static final class Split {
+        final int poses, k = Effect.BASE_STEP_TERMS, rank;
+        final double[][] ss, su, sr; // per pose: SᵢᵀSᵢ (k x k), SᵢᵀUᵢ (k x rank), Sᵢᵀrᵢ (k)
+        final double[][] o, z, to1;  // per pose: the target's place and the flange's axis (base frame), the unit vector to the first station
+
+        Split(Diagnoser.Tester t, Vec3 first, Vec3 target) {
+            poses = t.m / t.rpp;
+            rank = t.rank;
+            ss = new double[poses][k * k];
+            su = new double[poses][k * rank];
+            sr = new double[poses][k];
+            o = new double[poses][];
+            z = new double[poses][];
+            to1 = new double[poses][];
+            double[] g3 = new double[3 * k], w3 = new double[3 * k], row = new double[k];
+            double[] dt = t.endDTrans[0], dr = t.endDRot[0];
+            for (int i = 0; i < poses; i++) {
+                Pose f = t.w.model.flange(t.endRows.get(0).get(i).q());
+                Vec3 oi = f.apply(target), zi = f.zAxis(), u1 = first.minus(oi);
+                o[i] = oi.toArray();
+                z[i] = zi.toArray();
+                to1[i] = u1.times(1 / u1.norm()).toArray();
+                for (int a = 0; a < t.rpp; a++) {
+                    int r = i * t.rpp + a;
+                    boolean turn = a >= t.posRows;
+                    Effect.baseStepRegressor(turn ? null : t.pointsBase[i][t.pointOfRow(a)], turn ? null : g3, turn ? w3 : null);
+                    double[] d = turn ? dr : dt, g = turn ? w3 : g3;
+                    for (int c = 0; c < k; c++) row[c] = d[r * 3] * g[c] + d[r * 3 + 1] * g[k + c] + d[r * 3 + 2] * g[2 * k + c];
+                    for (int c = 0; c < k; c++) {
+                        sr[i][c] += row[c] * t.rPerp[r];
+                        for (int e = 0; e < k; e++) ss[i][c * k + e] += row[c] * row[e];
+                        for (int e = 0; e < rank; e++) su[i][c * rank + e] += row[c] * t.u[r * rank + e];
+                    }
+                }
+            }
+        }
+
+        /**
+         * The sum of squares explained with the second station at {@code s} (its first three), each pose
+         * counted by its membership: 0 or 1 ({@code width} 0), or softened, 1/(1 + exp(−(c₂ − c₁)/width)).
+         */
+        double explained(double[] s, double width) {
+            double[] a = new double[k * k], m = new double[k * rank], b = new double[k];
+            double n = 0;
+            for (int i = 0; i < poses; i++) {
+                double[] oi = o[i], zi = z[i];
+                double dx = s[0] - oi[0], dy = s[1] - oi[1], dz = s[2] - oi[2], dn = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                double c2 = (zi[0] * dx + zi[1] * dy + zi[2] * dz) / dn, c1 = zi[0] * to1[i][0] + zi[1] * to1[i][1] + zi[2] * to1[i][2];
+                double w = width > 0 ? 1 / (1 + Math.exp(-(c2 - c1) / width)) : c2 > c1 ? 1 : 0;
+                if (w == 0) continue;
+                n += w;
+                for (int c = 0; c < a.length; c++) a[c] += w * w * ss[i][c];
+                for (int c = 0; c < m.length; c++) m[c] += w * su[i][c];
+                for (int c = 0; c < k; c++) b[c] += w * sr[i][c];
+            }
+            if (n < 0.5 || n > poses - 0.5) return 0;
+            for (int c = 0; c < k; c++)
+                for (int e = 0; e < k; e++) {
+                    double x = 0;
+                    for (int r = 0; r < rank; r++) x += m[c * rank + r] * m[e * rank + r];
+                    a[c * k + e] -= x;
+                }
+            DMatrixRMaj am = new DMatrixRMaj(k, k, true, a), inv = new DMatrixRMaj(k, k);
+            CommonOps_DDRM.pinv(am, inv);
+            double g = 0;
+            for (int c = 0; c < k; c++) for (int e = 0; e < k; e++) g += b[c] * inv.data[c * k + e] * b[e];
+            return Double.isFinite(g) ? g : 0;
+        }
+    }
+
+    /** Places drawn for a second station at each stage of its search, from each of the grid's best {@link #STATION_STARTS}. */
+    static final int STATION_DRAWS = 40, STATION_STARTS = 12;
+
+    /** The least share of the poses on either side of a second station's split for it to be probed. */
+    static final double MIN_STATION_SHARE = 0.1;
 
     /** Mass scales a load tilt's search tries for each mass in turn (a data sheet's masses are rarely better than ±30 %). */
     static final double[] LOAD_MASS_SCALES = {0.7, 0.85, 1.15, 1.3};
@@ -1853,6 +2048,7 @@ final class Locator {
                 f.probe.tilt = Diagnoser.bestBaseTilt(t, -1, null, t.w.gravity, t.w.rows, t.w.conditions);
             if (f.probe.var == Var.TOOL_PULL) f.probe.pull = bestPull(t, f.probe);
             if (f.probe.var == Var.LOAD_TILT) f.probe.bend = remassedLoadTilt(t, f.probe.bend);
+            if (f.probe.var == Var.STATION) f.probe.station = bestStation(t, f.probe.facing);
         }
         return found;
     }

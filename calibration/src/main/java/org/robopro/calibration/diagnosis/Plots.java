@@ -111,6 +111,7 @@ final class Plots {
             case LINK_TWIST -> "the flange's lever across the upper arm's plane, times gravity across the arm (m)";
             case TOOL_PULL -> "azimuth of the pull's point on the tool about axis 1 (deg)";
             case LOAD_TILT -> "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
+            case SECOND_STATION -> "the flange axis's part along the second station's side (positive: read from it)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE, REFRACTION -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
@@ -147,6 +148,7 @@ final class Plots {
             case LINK_SAG -> e.sagAcross(row.q());
             case LINK_TWIST -> e.twistLever(row.q());
             case TOOL_PULL -> e.pullAzimuthDeg(row.q());
+            case SECOND_STATION -> e.facingPart(row.q());
             case LOAD_TILT -> e.gravity().driveTorques(row.q(), Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[e.joint()];
             case TOOL_SAG, TOOL_PLAY -> Effect.angleFromDown(e.model().flange(row.q()), e.down());
             case TARGET_INCIDENCE -> Double.NaN; // from the predicted point (alongDisplacement)
@@ -194,7 +196,7 @@ final class Plots {
                 yield s;
             }
             // a load-periodic error is no function of the angle alone: its size follows the load
-            case LOAD_PERIODIC, WARM_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT -> Double.NaN;
+            case LOAD_PERIODIC, WARM_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT, SECOND_STATION -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> Double.NaN;

@@ -265,6 +265,13 @@ final class Words {
                     + "flange's bearing), not a holder that bends (that moves in proportion to the pull). It is modelled as such so "
                     + "compensation can use it, but check the mount: measure one place with the tool leaning one way and then the "
                     + "other; tighten the nest or the mount, or check the flange bearing's preload.", 1e3 * rmsOverCircle(v));
+            case SECOND_STATION -> String.format(Locale.ROOT, "The poses whose target faces (%.2f, %.2f, %.2f) in the base frame are moved "
+                    + "against the rest by one rigid motion, %.4f mm and %.1f µrad, whatever the arm's pose, and none of the known effects "
+                    + "explains it: they were read from a second instrument station (a second tracker, or the one moved, seeing the "
+                    + "reflector the first could not) whose registration into the first's frame is off, not the robot. It is modelled so "
+                    + "that it does not bend the robot's fit, and left out of compensation: register the stations again on common "
+                    + "targets, or record which station read each pose.", e.facing().x(), e.facing().y(), e.facing().z(),
+                    1e3 * Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), 1e6 * Math.sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]));
             case LOAD_TILT -> String.format(Locale.ROOT, "The axis of joint %d tilts across itself with the torque its drive "
                     + "carries, %.4f deg at the largest on these poses (%.1f N·m), and none of the known effects explains it: the "
                     + "gear mesh's tooth and separating forces bend the drive's output shaft on its bearings (a joint's spring under "

@@ -216,7 +216,10 @@ class EffectTest {
                 new Effect.Term(Effect.toolPull(model, new Vec3(0, 0, 0.1), new double[] {1.8, -1.2, 2.1}),
                         new double[] {1e-4, 2e-4, 1.5e-4, 2e-3, 1e-3, 3e-3}),
                 new Effect.Term(Effect.loadTilt(model, 1, g, 400, scaled(g.massCount(), 1, 1.2)),
-                        new double[] {2e-4, -1e-4, 5e-5, 1.5e-4, 3e-5, -2e-5, 1e-5, 4e-5}));
+                        new double[] {2e-4, -1e-4, 5e-5, 1.5e-4, 3e-5, -2e-5, 1e-5, 4e-5}),
+                new Effect.Term(Effect.secondStation(model, new Vec3(0.3, 0.8, 0.1)), new double[] {5e-5, -3e-5, 2e-5, 8e-5, -6e-5, 4e-5}),
+                new Effect.Term(Effect.secondStation(model, new Vec3(2.5, 0.4, 1.2), new Vec3(-0.2, 2.6, 0.5), new Vec3(0, 0, 0.1)),
+                        new double[] {5e-5, -3e-5, 2e-5, 8e-5, -6e-5, 4e-5}));
     }
 
     /**
