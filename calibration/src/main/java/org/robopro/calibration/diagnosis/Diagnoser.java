@@ -110,6 +110,11 @@ public final class Diagnoser {
      * 1.5 δ/L: 2 mm on a 0.6 m link), rad.
      */
     static final double MAX_LINK_TURN_RAD = 5e-3;
+    /**
+     * A pose whose flange axis points toward two instrument stations within this much alike (the difference of
+     * the cosines, {@link Effect#facingPart}) may have been read by either.
+     */
+    static final double STATION_AMBIGUOUS = 0.05;
     /** A second instrument station's registration error at most, m and rad. */
     static final double MAX_STATION_SHIFT_M = 2e-3, MAX_STATION_TURN_RAD = 2e-3;
     /** A joint's largest turn per metre of lever across a pull on the tool, rad/m: 200 N on a wrist drive of 5000 N·m/rad. */
@@ -1121,6 +1126,8 @@ public final class Diagnoser {
         List<String> unexplainedRun = List.of();
         /** The validation poses set aside from the start as gross readings under the geometric fit ({@link #grossValidation}). */
         List<String> screened = List.of();
+        /** Training poses that face a second instrument station's split nearly alike ({@link #STATION_AMBIGUOUS}). */
+        final Set<String> ambiguous = new HashSet<>();
 
         Run(java.util.function.Supplier<Finished> finish, boolean named, Fold fold, boolean validationFlagged, boolean missesFloor,
             List<String> approximated, List<String> outliersUnder, List<String> gross, java.util.function.Supplier<List<String>> underEveryPose,
@@ -1153,11 +1160,18 @@ public final class Diagnoser {
         Diagnosis reported() {
             Diagnosis d = d();
             if (!missesFloor && approximated.isEmpty()) return d;
-            List<String> far = new ArrayList<>(), near = new ArrayList<>();
+            List<String> far = new ArrayList<>(), near = new ArrayList<>(), split = new ArrayList<>();
             // a pose the final model does not put beyond the rule at all is within it: near
-            for (String id : d.outliers()) (sigmasUnder.getOrDefault(id, 0.0) > SHORT_MODEL_SIGMAS ? far : near).add(id);
-            if (near.isEmpty()) return d;
+            for (String id : d.outliers())
+                (ambiguous.contains(id) ? split : sigmasUnder.getOrDefault(id, 0.0) > SHORT_MODEL_SIGMAS ? far : near).add(id);
+            if (near.isEmpty() && split.isEmpty()) return d;
             List<String> notes = new ArrayList<>(d.notes());
+            if (!split.isEmpty())
+                notes.add(String.format(Locale.ROOT, "%s %s %s the two instrument stations nearly alike, so which station read %s is "
+                        + "uncertain: left out of the fit but not reported as bad readings; record which station reads each pose",
+                        split.size() == 1 ? "pose" : "poses", String.join(", ", split), split.size() == 1 ? "faces" : "face",
+                        split.size() == 1 ? "it" : "them"));
+            if (near.isEmpty()) return with(d, far, notes);
             String why = missesFloor ? "the model misses the instrument's stated floor (it does not follow every pose)"
                     : "the model follows " + String.join(", ", approximated) + " only as far as a shape fitted to "
                     + (approximated.size() == 1 ? "it" : "them") + " does, not by its physics";
@@ -1715,14 +1729,15 @@ public final class Diagnoser {
                 scanned = t;
                 scannedFit = fit;
             }
-            // a pull's anchor placed again, and a load tilt's masses estimated again, on what the effects chosen so far leave
-            // (placed on the geometric fit's residual, they bent toward what those hold)
+            // a pull's anchor placed again, a load tilt's masses estimated again and a second station's place searched again, on
+            // what the effects chosen so far leave (placed on the geometric fit's residual, they bent toward what those hold)
             if (step > 0)
                 for (int i = 0; i < remaining.size(); i++) {
                     Effect e = remaining.get(i);
                     Effect moved;
                     if (e.kind() == Effect.Kind.TOOL_PULL && e.pullAnchor() != null) moved = Locator.bestPull(t, e.pullAttach(), e.pullAnchor());
                     else if (e.kind() == Effect.Kind.LOAD_TILT) moved = Locator.remassedLoadTilt(t, e.withFileMasses());
+                    else if (e.kind() == Effect.Kind.SECOND_STATION) moved = Locator.bestStation(t, e.facing());
                     else continue;
                     remaining.set(i, moved);
                     family.replaceAll(f -> f == e ? moved : f);
@@ -2315,6 +2330,16 @@ public final class Diagnoser {
                     if (e != null) extrapolated.put(ol, e);
                 }
                 valOut.removeIf(ol -> extrapolated.containsKey(ol) || inStepGap(selected, byId.get(ol.poseId()), rows));
+                // nor one facing two instrument stations nearly alike: which of them read it is uncertain
+                List<String> twoStations = valOut.stream().map(CalibrationResult.Outlier::poseId).filter(id -> selected.stream()
+                        .anyMatch(e -> e.kind() == Effect.Kind.SECOND_STATION && Math.abs(e.facingPart(byId.get(id).q())) < STATION_AMBIGUOUS)).toList();
+                if (!twoStations.isEmpty()) {
+                    valOut.removeIf(ol -> twoStations.contains(ol.poseId()));
+                    notes.add(String.format(Locale.ROOT, "validation %s %s %s the two instrument stations nearly alike, so which station "
+                            + "read %s is uncertain: not reported as %s; record which station reads each pose",
+                            twoStations.size() == 1 ? "pose" : "poses", String.join(", ", twoStations), twoStations.size() == 1 ? "faces" : "face",
+                            twoStations.size() == 1 ? "it" : "them", twoStations.size() == 1 ? "an outlier" : "outliers"));
+                }
                 extrapolated.forEach((ol, e) -> notes.add(String.format(Locale.ROOT, "validation pose %s lies beyond the range %s was "
                         + "fitted over on the training poses and misses by %.4f mm, %.0f robust sigmas: the model's extrapolation there, not a "
                         + "bad reading, so it is not reported as an outlier and stays in the validation error; measure training poses over "
@@ -2356,6 +2381,11 @@ public final class Diagnoser {
         Run made = new Run(finish, !selected.isEmpty(), fold, !valBeyond.isEmpty(), missesFloor, approximated, under, List.copyOf(gross),
                 underEveryPose, beyond);
         made.screened = screened;
+        // the poses that face two instrument stations nearly alike: which of them read such a pose is uncertain
+        for (Effect e : selected)
+            if (e.kind() == Effect.Kind.SECOND_STATION)
+                for (Measurement m : trainAll.rows())
+                    if (Math.abs(e.facingPart(m.q())) < STATION_AMBIGUOUS) made.ambiguous.add(m.poseId());
         // a run of poses kept in as a change at one time must be what a step at that time explains; else they are bad readings
         made.unexplainedRun = timeRun.isEmpty() || stepAtRun(selected, timeRun, trainAll.rows()) ? List.of() : timeRun;
         return made;
