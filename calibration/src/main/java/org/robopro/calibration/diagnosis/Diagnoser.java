@@ -1729,15 +1729,14 @@ public final class Diagnoser {
                 scanned = t;
                 scannedFit = fit;
             }
-            // a pull's anchor placed again, a load tilt's masses estimated again and a second station's place searched again, on
-            // what the effects chosen so far leave (placed on the geometric fit's residual, they bent toward what those hold)
+            // a pull's anchor placed again, and a load tilt's masses estimated again, on what the effects chosen so far leave
+            // (placed on the geometric fit's residual, they bent toward what those hold)
             if (step > 0)
                 for (int i = 0; i < remaining.size(); i++) {
                     Effect e = remaining.get(i);
                     Effect moved;
                     if (e.kind() == Effect.Kind.TOOL_PULL && e.pullAnchor() != null) moved = Locator.bestPull(t, e.pullAttach(), e.pullAnchor());
                     else if (e.kind() == Effect.Kind.LOAD_TILT) moved = Locator.remassedLoadTilt(t, e.withFileMasses());
-                    else if (e.kind() == Effect.Kind.SECOND_STATION) moved = Locator.bestStation(t, e.facing());
                     else continue;
                     remaining.set(i, moved);
                     family.replaceAll(f -> f == e ? moved : f);
