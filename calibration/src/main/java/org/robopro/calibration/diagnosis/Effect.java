@@ -1200,7 +1200,7 @@ public final class Effect {
             // −(e_c × p) for the turn about base axis c
             g3[k + 3] = p[2];
             g3[2 * k + 3] = -p[1];
-            g3[3] = -p[2];
+            g3[4] = -p[2];
             g3[2 * k + 4] = p[0];
             g3[5] = p[1];
             g3[k + 5] = -p[0];

@@ -223,6 +223,31 @@ class EffectTest {
     }
 
     /**
+     * A rigid motion of the measured points (a base step before its time, a second station's poses):
+     * its turn columns against a point turned by a small angle about each base axis (Rodrigues'
+     * rotation, not the cross product the columns are written with), its shifts the unit moves; every
+     * column moves the point by minus that (the instrument's pose holds the state after).
+     */
+    @Test
+    void rigidMotionColumns_turnThePointAboutEachAxis() {
+        double[] p = {0.7, -1.3, 0.45};
+        double[] g3 = new double[18];
+        Effect.baseStepRegressor(p, g3, null);
+        double eps = 1e-7;
+        for (int c = 0; c < 3; c++) {
+            double[] axis = new double[3];
+            axis[c] = 1;
+            Pose turn = Pose.rotAxis(new Vec3(axis[0], axis[1], axis[2]), eps);
+            Vec3 moved = turn.apply(new Vec3(p[0], p[1], p[2]));
+            double[] d = {(moved.x() - p[0]) / eps, (moved.y() - p[1]) / eps, (moved.z() - p[2]) / eps};
+            for (int a = 0; a < 3; a++) {
+                assertEquals(-d[a], g3[a * 6 + 3 + c], 1e-6, "turn about axis " + c + ", row " + a);
+                assertEquals(a == c ? -1 : 0, g3[a * 6 + c], 0, "shift along axis " + c + ", row " + a);
+            }
+        }
+    }
+
+    /**
      * A pull on the tool, checked against the forward kinematics alone (not the model's Jacobian): each
      * drive's torque is the work the pull does through that drive's turn, F·∂p/∂q_j by central
      * differences of the attach point (virtual work), and the measured point's move is the forward
