@@ -1181,8 +1181,8 @@ class HeldOutFormsTest {
     /**
      * Two laser trackers in one network, each pose read by the one its target faces better, the second's
      * registration off by 80 µrad and 50 µm: nothing is named, the second station's split is modelled with
-     * the second station placed within half a metre of where it stands, and most of the validation error
-     * goes.
+     * the second station placed within half a metre of where it stands, and the validation poses come to
+     * the floor.
      */
     @Test
     void secondTrackerReadingThePosesFacingIt_isTheStationsRegistration() {
@@ -1198,9 +1198,6 @@ class HeldOutFormsTest {
         assertTrue(at != null && Math.hypot(Math.hypot(at[3] - second[0], at[4] - second[1]), at[5] - second[2]) < 0.5,
                 "the second station placed " + (at == null ? "by its side only" : Arrays.toString(Arrays.copyOfRange(at, 3, 6))));
         assertTrue(d.geometricValidateRmsM() > 2 * c.floorM(), "the registration matters: " + d.geometricValidateRmsM() / c.floorM());
-        // the split near its boundary is where the fit still misses (a pose facing both stations nearly alike stays in the
-        // validation error, not reported as a bad reading): most of the error goes, not all
-        assertTrue(d.finalValidateRmsM() < 0.6 * d.geometricValidateRmsM(), d.finalValidateRmsM() / d.geometricValidateRmsM() + " of the geometric fit's");
-        assertTrue(d.finalValidateRmsM() < 1.7 * c.floorM(), d.finalValidateRmsM() / c.floorM() + " x the floor");
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() / c.floorM() + " x the floor");
     }
 }
