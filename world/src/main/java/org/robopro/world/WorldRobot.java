@@ -60,43 +60,13 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                          FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
                          Refraction refraction, Retractor retractor, ShaftTilt shaftTilt, Network network) {
-    /** A world robot read from one instrument station. */
-    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
-                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
-                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                      Refraction refraction, Retractor retractor, ShaftTilt shaftTilt) {
-        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
-                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, null);
-    }
-
-    /** A world robot whose drives' shafts stay straight under load. */
-    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
-                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
-                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                      Refraction refraction, Retractor retractor) {
-        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
-                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, null, null);
-    }
-
-    /** A world robot with nothing pulling on its tool. */
-    public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
-                      Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
-                      ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
-                      FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                      Refraction refraction) {
-        this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
-                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, null);
-    }
-
     /** A world robot whose carried mass is as recorded and whose instrument sees through still air. */
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                       ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                       FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock) {
         this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
-                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, null, null);
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, null, null, null, null, null);
     }
 
     /** A world robot whose instrument is never knocked. */

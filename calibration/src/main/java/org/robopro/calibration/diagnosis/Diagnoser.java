@@ -115,6 +115,11 @@ public final class Diagnoser {
      * the cosines, {@link Effect#facingPart}) may have been read by either.
      */
     static final double STATION_AMBIGUOUS = 0.05;
+
+    /** Whether the pose at q faces the two stations of a selected second station nearly alike ({@link #STATION_AMBIGUOUS}). */
+    static boolean atStationSplit(List<Effect> selected, double[] q) {
+        return selected.stream().anyMatch(e -> e.kind() == Effect.Kind.SECOND_STATION && Math.abs(e.facingPart(q)) < STATION_AMBIGUOUS);
+    }
     /** A second instrument station's registration error at most, m and rad. */
     static final double MAX_STATION_SHIFT_M = 2e-3, MAX_STATION_TURN_RAD = 2e-3;
     /** A joint's largest turn per metre of lever across a pull on the tool, rad/m: 200 N on a wrist drive of 5000 N·m/rad. */
@@ -2330,8 +2335,8 @@ public final class Diagnoser {
                 }
                 valOut.removeIf(ol -> extrapolated.containsKey(ol) || inStepGap(selected, byId.get(ol.poseId()), rows));
                 // nor one facing two instrument stations nearly alike: which of them read it is uncertain
-                List<String> twoStations = valOut.stream().map(CalibrationResult.Outlier::poseId).filter(id -> selected.stream()
-                        .anyMatch(e -> e.kind() == Effect.Kind.SECOND_STATION && Math.abs(e.facingPart(byId.get(id).q())) < STATION_AMBIGUOUS)).toList();
+                List<String> twoStations = valOut.stream().map(CalibrationResult.Outlier::poseId)
+                        .filter(id -> atStationSplit(selected, byId.get(id).q())).toList();
                 if (!twoStations.isEmpty()) {
                     valOut.removeIf(ol -> twoStations.contains(ol.poseId()));
                     notes.add(String.format(Locale.ROOT, "validation %s %s %s the two instrument stations nearly alike, so which station "
@@ -2381,10 +2386,7 @@ public final class Diagnoser {
                 underEveryPose, beyond);
         made.screened = screened;
         // the poses that face two instrument stations nearly alike: which of them read such a pose is uncertain
-        for (Effect e : selected)
-            if (e.kind() == Effect.Kind.SECOND_STATION)
-                for (Measurement m : trainAll.rows())
-                    if (Math.abs(e.facingPart(m.q())) < STATION_AMBIGUOUS) made.ambiguous.add(m.poseId());
+        for (Measurement m : trainAll.rows()) if (atStationSplit(selected, m.q())) made.ambiguous.add(m.poseId());
         // a run of poses kept in as a change at one time must be what a step at that time explains; else they are bad readings
         made.unexplainedRun = timeRun.isEmpty() || stepAtRun(selected, timeRun, trainAll.rows()) ? List.of() : timeRun;
         return made;

@@ -1454,16 +1454,9 @@ public final class Effect {
      */
     private void wobble(double[] q, double[] w, double[] o) {
         int k = size();
-        Pose rotor = model.linkFrames(q)[joint + 1]; // z on the joint's axis, origin on it, turned by the joint
         double th = model.theta(q)[joint];
-        double ct = Math.cos(th), st = Math.sin(th);
-        // the stator's axes across the joint: the rotor's turned back by the joint angle
         double[] xs = new double[3], ys = new double[3];
-        for (int a = 0; a < 3; a++) {
-            double xr = rotor.rot(a, 0), yr = rotor.rot(a, 1);
-            xs[a] = ct * xr - st * yr;
-            ys[a] = st * xr + ct * yr;
-        }
+        statorAxes(q, xs, ys, o);
         // the pattern follows the joint's own turn, its model angle (a drive coupled to another joint reads more than its turn)
         for (int i = 0; i < harmonics.length; i++) {
             double c = Math.cos(harmonics[i] * th), s = Math.sin(harmonics[i] * th);
@@ -1473,6 +1466,20 @@ public final class Effect {
                 w[a * k + 4 * i + 2] = c * ys[a];
                 w[a * k + 4 * i + 3] = s * ys[a];
             }
+        }
+    }
+
+    /**
+     * The stator's axes across this effect's joint at q (base frame): the rotor frame's x and y turned back
+     * by the joint's model angle; and {@code o}, the model's point of the axis (the rotor frame's origin).
+     */
+    private void statorAxes(double[] q, double[] xs, double[] ys, double[] o) {
+        Pose rotor = model.linkFrames(q)[joint + 1]; // z on the joint's axis, origin on it, turned by the joint
+        double th = model.theta(q)[joint], ct = Math.cos(th), st = Math.sin(th);
+        for (int a = 0; a < 3; a++) {
+            double xr = rotor.rot(a, 0), yr = rotor.rot(a, 1);
+            xs[a] = ct * xr - st * yr;
+            ys[a] = st * xr + ct * yr;
         }
         o[0] = rotor.x();
         o[1] = rotor.y();
@@ -1512,20 +1519,15 @@ public final class Effect {
     /** A load tilt's four tilt columns (3 x 4, row-major, base axes) at q under c, and the model's point of the axis o. */
     private void loadTilt(double[] q, PoseConditions c, double[] w, double[] o) {
         int k = size();
-        Pose rotor = model.linkFrames(q)[joint + 1];
-        double th = model.theta(q)[joint], ct = Math.cos(th), st = Math.sin(th);
+        double[] xs = new double[3], ys = new double[3];
+        statorAxes(q, xs, ys, o);
         double tau = gravity.driveTorques(q, Double.isFinite(c.payloadKg()) ? c.payloadKg() : 0)[joint] / loadRefNm;
         for (int a = 0; a < 3; a++) {
-            double xr = rotor.rot(a, 0), yr = rotor.rot(a, 1);
-            double xs = ct * xr - st * yr, ys = st * xr + ct * yr;
-            w[a * k] = tau * xs;
-            w[a * k + 1] = Math.abs(tau) * xs;
-            w[a * k + 2] = tau * ys;
-            w[a * k + 3] = Math.abs(tau) * ys;
+            w[a * k] = tau * xs[a];
+            w[a * k + 1] = Math.abs(tau) * xs[a];
+            w[a * k + 2] = tau * ys[a];
+            w[a * k + 3] = Math.abs(tau) * ys[a];
         }
-        o[0] = rotor.x();
-        o[1] = rotor.y();
-        o[2] = rotor.z();
     }
 
     /**
@@ -2036,12 +2038,17 @@ public final class Effect {
      * column is this form's vertical pull with the payload's weight as the force.
      */
     public static Effect toolPull(KinematicModel model, Vec3 attachInFlange, double[] anchorBase) {
-        if (java.util.stream.IntStream.range(0, model.dof()).allMatch(model::isPrismatic))
-            throw new IllegalArgumentException("a tool pull needs a revolute joint to yield");
+        if (!hasRevolute(model)) throw new IllegalArgumentException("a tool pull needs a revolute joint to yield");
         Effect e = new Effect(Kind.TOOL_PULL, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, model, null);
         e.attach = attachInFlange;
         e.anchor = anchorBase == null ? null : anchorBase.clone();
         return e;
+    }
+
+    /** Whether the model has a revolute joint (one that can yield to a pull). */
+    static boolean hasRevolute(KinematicModel model) {
+        for (int j = 0; j < model.dof(); j++) if (!model.isPrismatic(j)) return true;
+        return false;
     }
 
     /** A tool pull's yielding joints (0-based): the model's revolute ones. */
@@ -3518,7 +3525,7 @@ public final class Effect {
             }
             case TOOL_SAG -> toolSag(model, new Vec3(require(d, "down_x", file), require(d, "down_y", file), require(d, "down_z", file)));
             case TOOL_PULL -> {
-                if (java.util.stream.IntStream.range(0, model.dof()).allMatch(model::isPrismatic))
+                if (!hasRevolute(model))
                     throw d.error(file, "", "tool-pull needs a revolute joint to yield; this robot has none");
                 Vec3 at = new Vec3(require(d, "attach_x", file), require(d, "attach_y", file), require(d, "attach_z", file));
                 double[] a = ps.containsKey("anchor_x") ? new double[] {require(d, "anchor_x", file), require(d, "anchor_y", file),

@@ -440,15 +440,14 @@ final class Locator {
         GravityTorques g0 = t.w.gravity;
         if (g0 == null || t.ends != 1) return out;
         GravityTorques g = g0.massesUnknown() ? GravityTorques.fromLengths(t.w.model) : g0;
-        List<Measurement> rows = t.endRows.get(0);
-        int poses = rows.size();
+        double[][] torques = driveTorques(t.endRows.get(0), g);
+        int poses = torques.length;
         for (int j = 0; j < t.dof; j++) {
             if (t.w.model.isPrismatic(j)) continue;
             double[][] tau = new double[1][poses];
             int pos = 0, neg = 0;
             for (int i = 0; i < poses; i++) {
-                Measurement r = rows.get(i);
-                tau[0][i] = g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
+                tau[0][i] = torques[i][j];
                 if (tau[0][i] > 0) pos++;
                 else if (tau[0][i] < 0) neg++;
             }
@@ -665,16 +664,9 @@ final class Locator {
         KinematicModel model = t.w.model;
         int poses = t.m / t.rpp;
         if (t.ends != 1 || model.dof() < 2 || poses < 2) return null;
-        // the measured point on the flange (the first point where a pose holds several)
-        double[] q0 = t.endRows.get(0).get(0).q();
-        Pose f0 = model.flange(q0);
-        Vec3 attach = f0.inverse().apply(new Vec3(t.pointBase[0][0], t.pointBase[0][1], t.pointBase[0][2]));
-        Effect free;
-        try {
-            free = Effect.toolPull(model, attach, null);
-        } catch (IllegalArgumentException e) {
-            return null; // no revolute joint to yield
-        }
+        Vec3 attach = targetInFlange(t);
+        if (!Effect.hasRevolute(model)) return null;
+        Effect free = Effect.toolPull(model, attach, null);
         Probe p = finish(t, t.signature(free, t.w.conditions), free.size());
         p.var = Var.TOOL_PULL;
         p.variable = "a steady force on the tool";
@@ -687,6 +679,11 @@ final class Locator {
         p.xLabel = "azimuth of the measured point about axis 1 (deg)";
         p.pullAttach = attach;
         return p;
+    }
+
+    /** The measured point in the flange's frame, as the tester's fit predicts it (the first point where a pose holds several). */
+    private static Vec3 targetInFlange(Diagnoser.Tester t) {
+        return t.w.model.flange(t.endRows.get(0).get(0).q()).inverse().apply(new Vec3(t.pointBase[0][0], t.pointBase[0][1], t.pointBase[0][2]));
     }
 
     /**
@@ -718,7 +715,7 @@ final class Locator {
         double[] best = null;
         double bestGain = Double.NEGATIVE_INFINITY;
         for (double[] a : grid) {
-            double g = pullGain(t, model, attach, a);
+            double g = explained(t, Effect.toolPull(model, attach, a));
             if (g > bestGain) { bestGain = g; best = a; }
         }
         if (best == null) return null;
@@ -730,17 +727,12 @@ final class Locator {
                 for (int sign = -1; sign <= 1 && !moved; sign += 2) {
                     double[] a = best.clone();
                     a[axis] += sign * step;
-                    double g = pullGain(t, model, attach, a);
+                    double g = explained(t, Effect.toolPull(model, attach, a));
                     if (g > bestGain) { bestGain = g; best = a; moved = true; }
                 }
             if (!moved) step /= 2;
         }
         return Effect.toolPull(model, attach, best);
-    }
-
-    /** The sum of squares of the residual a pull toward {@code anchor} explains (its columns out of the model's span). */
-    private static double pullGain(Diagnoser.Tester t, KinematicModel model, Vec3 attach, double[] anchor) {
-        return explained(t, Effect.toolPull(model, attach, anchor));
     }
 
     /** The sum of squares of the tester's residual that effect {@code e} explains (its columns out of the model's span). */
@@ -800,26 +792,37 @@ final class Locator {
     /** "once" or "h times". */
     private static String times(int h) { return h == 1 ? "once" : h + " times"; }
 
+    /** Each row's gravity torque on every drive (N·m) with masses {@code g}, the payload as recorded (none: 0 kg). */
+    private static double[][] driveTorques(List<Measurement> rows, GravityTorques g) {
+        double[][] out = new double[rows.size()][];
+        for (int i = 0; i < out.length; i++) {
+            Measurement r = rows.get(i);
+            out[i] = g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0);
+        }
+        return out;
+    }
+
     /**
      * A joint's axis tilting with its drive's torque ({@link Effect#loadTilt}): for each revolute joint
-     * the arm's weight loads (the robot file's masses, or the links' from their lengths), its four
-     * columns. Positions and orientations, one pose per row.
+     * the arm's weight loads (the robot file's masses, or the links' from their lengths; more than
+     * {@link Diagnoser#LOADED_NM} at some pose), its eight columns. Positions and orientations, one pose
+     * per row.
      */
     static List<Probe> loadTilts(Diagnoser.Tester t) {
         List<Probe> out = new ArrayList<>();
         GravityTorques g = t.w.gravity == null || t.w.gravity.massesUnknown() ? GravityTorques.fromLengths(t.w.model) : t.w.gravity;
         if (t.ends != 1 || g == null) return out;
-        int poses = t.m / t.rpp;
+        double[][] torques = driveTorques(t.endRows.get(0), g);
+        int poses = torques.length;
         for (int j = 0; j < t.dof; j++) {
-            if (t.w.model.isPrismatic(j) || !Diagnoser.loaded(g, j, t.w.rows)) continue;
+            if (t.w.model.isPrismatic(j)) continue;
             double ref = 0;
             double[][] x = new double[1][poses];
             for (int i = 0; i < poses; i++) {
-                Measurement r = t.endRows.get(0).get(i);
-                x[0][i] = g.driveTorques(r.q(), Double.isFinite(r.payloadKg()) ? r.payloadKg() : 0)[j];
+                x[0][i] = torques[i][j];
                 ref = Math.max(ref, Math.abs(x[0][i]));
             }
-            if (!(ref > 0) || Double.isInfinite(ref)) continue;
+            if (!(ref > Diagnoser.LOADED_NM) || Double.isInfinite(ref)) continue;
             Effect e = Effect.loadTilt(t.w.model, j, g, ref);
             Probe p = finish(t, t.signature(e, t.w.conditions), e.size());
             p.var = Var.LOAD_TILT;
@@ -905,7 +908,7 @@ final class Locator {
         double gain = explained(t, best);
         if (!t.w.instrument) return best;
         Vec3 first = Effect.instrumentOrigin(t.fit.problem.instrumentOf(t.fit.full));
-        Vec3 target = model.flange(t.endRows.get(0).get(0).q()).inverse().apply(new Vec3(t.pointBase[0][0], t.pointBase[0][1], t.pointBase[0][2]));
+        Vec3 target = targetInFlange(t);
         Split split = new Split(t, first, target);
         // the grid's places, best first
         List<double[]> places = new ArrayList<>();
