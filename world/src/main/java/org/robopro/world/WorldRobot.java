@@ -1066,86 +1066,87 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withErrors(List<JointError> e) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, e, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.errors = e);
     }
 
     public WorldRobot withThermal(Thermal t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, t, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.thermal = t);
     }
 
     public WorldRobot withCompliance(Compliance c) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, c, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.compliance = c);
     }
 
     public WorldRobot withSag(Sag s) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, s, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.sag = s);
     }
 
     public WorldRobot withToolBump(ToolBump b) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, b, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.toolBump = b);
     }
 
     /** The same robot with the measured target (and its frame) at {@code flangeToTool} in flange coordinates. */
     public WorldRobot withTool(Rigid flangeToTool) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.flangeToTool = flangeToTool);
     }
 
     public WorldRobot withInstrument(Rigid instrumentFromBase) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.instrumentFromBase = instrumentFromBase);
     }
 
     public WorldRobot withTracker(Tracker t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, t, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.tracker = t);
     }
 
     public WorldRobot withRocking(Rocking r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, r, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.rocking = r);
     }
 
     public WorldRobot withDressPack(DressPack d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, d, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.dressPack = d);
     }
 
     public WorldRobot withKnock(Knock k) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, k, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.knock = k);
     }
 
     public WorldRobot withTargetPlay(TargetPlay p) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, p, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.targetPlay = p);
     }
 
     public WorldRobot withWobbles(List<Wobble> w) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, w, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.wobbles = w);
     }
 
     public WorldRobot withFloorTilt(FloorTilt f) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, f, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.floorTilt = f);
     }
 
     public WorldRobot withTwist(Twist t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, t, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.twist = t);
     }
 
     /** The same robot carrying a mass that changes with time as {@code d} says, whatever the campaign records. */
     public WorldRobot withDispensing(Dispensing d) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, d, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.dispensing = d);
     }
 
-    /** The same robot seen through air whose vertical temperature gradient is {@code r}'s. */
+    /** The same robot with a cable retractor pulling its tool toward the retractor's anchor. */
     public WorldRobot withRetractor(Retractor r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, r, shaftTilt, network);
+        return edit(it -> it.retractor = r);
     }
 
     public WorldRobot withShaftTilt(ShaftTilt t) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, t, network);
+        return edit(it -> it.shaftTilt = t);
     }
 
     public WorldRobot withNetwork(Network x) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, x);
+        return edit(it -> it.network = x);
     }
 
+    /** The same robot seen through air whose vertical temperature gradient is {@code r}'s. */
     public WorldRobot withRefraction(Refraction r) {
-        return new WorldRobot(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, r, retractor, shaftTilt, network);
+        return edit(it -> it.refraction = r);
     }
 
     /**
@@ -1226,7 +1227,69 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     }
 
     public WorldRobot withCoupling(double[][] c) {
-        return new WorldRobot(robotName, arm, c, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker, rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, dispensing, refraction, retractor, shaftTilt, network);
+        return edit(it -> it.coupling = c);
+    }
+
+    /** This robot with what {@code change} sets changed: the one place every {@code with...} copies the rest. */
+    private WorldRobot edit(java.util.function.Consumer<Edit> change) {
+        Edit e = new Edit(this);
+        change.accept(e);
+        return new WorldRobot(e.robotName, e.arm, e.coupling, e.zeroOffsets, e.errors, e.flangeToTool, e.instrumentFromBase, e.thermal, e.compliance, e.sag, e.toolBump, e.tracker, e.rocking, e.dressPack, e.wobbles, e.floorTilt, e.twist, e.targetPlay, e.knock, e.dispensing, e.refraction, e.retractor, e.shaftTilt, e.network);
+    }
+
+    /** The components of a robot being copied with one of them changed. */
+    private static final class Edit {
+        String robotName;
+        Arm arm;
+        double[][] coupling;
+        double[] zeroOffsets;
+        List<JointError> errors;
+        Rigid flangeToTool;
+        Rigid instrumentFromBase;
+        Thermal thermal;
+        Compliance compliance;
+        Sag sag;
+        ToolBump toolBump;
+        Tracker tracker;
+        Rocking rocking;
+        DressPack dressPack;
+        List<Wobble> wobbles;
+        FloorTilt floorTilt;
+        Twist twist;
+        TargetPlay targetPlay;
+        Knock knock;
+        Dispensing dispensing;
+        Refraction refraction;
+        Retractor retractor;
+        ShaftTilt shaftTilt;
+        Network network;
+
+        Edit(WorldRobot w) {
+            robotName = w.robotName;
+            arm = w.arm;
+            coupling = w.coupling;
+            zeroOffsets = w.zeroOffsets;
+            errors = w.errors;
+            flangeToTool = w.flangeToTool;
+            instrumentFromBase = w.instrumentFromBase;
+            thermal = w.thermal;
+            compliance = w.compliance;
+            sag = w.sag;
+            toolBump = w.toolBump;
+            tracker = w.tracker;
+            rocking = w.rocking;
+            dressPack = w.dressPack;
+            wobbles = w.wobbles;
+            floorTilt = w.floorTilt;
+            twist = w.twist;
+            targetPlay = w.targetPlay;
+            knock = w.knock;
+            dispensing = w.dispensing;
+            refraction = w.refraction;
+            retractor = w.retractor;
+            shaftTilt = w.shaftTilt;
+            network = w.network;
+        }
     }
 
     static double[] times(double[][] m, double[] v) {
