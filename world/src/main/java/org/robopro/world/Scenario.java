@@ -327,6 +327,11 @@ public record Scenario(String name, String family, String robot, Expected expect
         return w -> w.withCompliance(cc);
     }
 
+    /** The same elasticity with its springs in the joints' own angles ({@link WorldRobot.Compliance#inJoints}). */
+    static UnaryOperator<WorldRobot> inJoints(UnaryOperator<WorldRobot> elastic) {
+        return w -> { WorldRobot e = elastic.apply(w); return e.withCompliance(e.compliance().inJoints()); };
+    }
+
     private static UnaryOperator<Campaign.Plan> same() { return p -> p; }
 
     private static Scenario s(String name, String family, String robot, Expected e,
@@ -393,6 +398,10 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> elastic(n, r, 2), payloads("irb2000")));
         c.add(s("joint elasticity j2 puma560, masses off 30 %", "gravity-elasticity", "puma560", Expected.named(claim(GRAVITY_ELASTICITY, 2)),
                 (n, r) -> elastic(n, r, 1), same()));
+        c.add(s("joint elasticity j2 in the joint's own angle, masses off 30 %", "gravity-elasticity", "irb2000",
+                Expected.named(claim(GRAVITY_ELASTICITY, 2)), (n, r) -> inJoints(elastic(n, r, 1)), payloads("irb2000")));
+        c.add(s("joint elasticity j2 + j3 in the joints' own angles, masses off 30 %", "pair", "irb2000",
+                Expected.named(claim(GRAVITY_ELASTICITY, 2), claim(GRAVITY_ELASTICITY, 3)), (n, r) -> inJoints(elastic(n, r, 1, 2)), payloads("irb2000")));
         c.add(s("joint elasticity j2 + j3, masses off 30 %", "pair", "irb2000",
                 Expected.named(claim(GRAVITY_ELASTICITY, 2), claim(GRAVITY_ELASTICITY, 3)), (n, r) -> elastic(n, r, 1, 2), payloads("irb2000")));
         // gear ratio, coupling

@@ -81,6 +81,8 @@ final class Truth {
             for (double s : co.stiffness()) k.add(Double.isInfinite(s) ? "rigid" : s);
             Map<String, Object> cm = new LinkedHashMap<>();
             cm.put("stiffness_nm_per_rad", k);
+            cm.put("springs", co.springsInJoints() ? "in the joints' own angles: dtheta_i = tau_theta_i / k_i"
+                    : "in the drives: dq_j = (C^T tau_theta)_j / k_j");
             cm.put("masses", masses);
             if (Arrays.stream(co.hardening()).anyMatch(Double::isFinite)) {
                 List<Object> h = new ArrayList<>();

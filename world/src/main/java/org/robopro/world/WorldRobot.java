@@ -152,7 +152,8 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * Robotics and Automation 12 (1996) 368-374, measured a stiffness that grows with the torque;
      * the cubic is a smooth form of those piecewise curves.
      */
-    public record Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity, double[] hardening) {
+    public record Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity, double[] hardening,
+                             boolean springsInJoints) {
         public Compliance {
             stiffness = stiffness.clone();
             masses = List.copyOf(masses);
@@ -169,6 +170,20 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         /** Linear springs. */
         public Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity) {
             this(stiffness, masses, payloadCentre, gravity, null);
+        }
+
+        /** Springs in the drives' gears. */
+        public Compliance(double[] stiffness, List<Mass> masses, double[] payloadCentre, double[] gravity, double[] hardening) {
+            this(stiffness, masses, payloadCentre, gravity, hardening, false);
+        }
+
+        /**
+         * The same springs in the joints themselves: joint i's own angle gives by the gravity torque
+         * about its axis over its stiffness, Δθ_i = τ_θ,i / k_i, whatever drives it (a serial chain's
+         * joint stiffness; on a parallel arm the forearm turns with the upper arm's give).
+         */
+        public Compliance inJoints() {
+            return new Compliance(stiffness, masses, payloadCentre, gravity, hardening, true);
         }
 
         @Override public double[] stiffness() { return stiffness.clone(); }
@@ -197,14 +212,14 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         public Compliance withStiffness(int joint, double k) {
             double[] s = stiffness.clone();
             s[joint] = k;
-            return new Compliance(s, masses, payloadCentre, gravity, hardening);
+            return new Compliance(s, masses, payloadCentre, gravity, hardening, springsInJoints);
         }
 
         /** The same with drive {@code joint} a cubic-hardening spring (its tangent stiffness doubles at dq = dh / sqrt(3)). */
         public Compliance withHardening(int joint, double dhRad) {
             double[] h = hardening.clone();
             h[joint] = dhRad;
-            return new Compliance(stiffness, masses, payloadCentre, gravity, h);
+            return new Compliance(stiffness, masses, payloadCentre, gravity, h, springsInJoints);
         }
 
         /**
@@ -831,7 +846,12 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         for (JointError e : errors) qo[e.joint()] += e.delta(q, moment);
         double[] theta = times(coupling, qo);
         double[] hose = dressPack != null && n >= 6 ? dressPack.torques(theta[3], theta[4], theta[5]) : null;
-        if (compliance != null) {
+        if (compliance != null && compliance.springsInJoints) {
+            double[] tau = gravityTorques(a, theta, payload);
+            double[] dTheta = new double[n];
+            for (int i = 0; i < n; i++) dTheta[i] = compliance.deflection(i, tau[i]);
+            for (int i = 0; i < n; i++) theta[i] += dTheta[i];
+        } else if (compliance != null) {
             double[] tauQ = driveSide(gravityTorques(a, theta, payload));
             double[] dq = new double[n];
             for (int j = 0; j < n; j++) dq[j] = compliance.deflection(j, tauQ[j]);

@@ -5049,11 +5049,15 @@ public final class Diagnoser {
             if (gravity != null) {
                 Effect remassed = Effect.complianceRemassed(j, gravity);
                 if (remassed.testableOn(rows)) out.add(remassed);
+                // where the linkage makes them differ, the joint's own angle giving instead of its drive's gear
+                if (remassed.testableOn(rows) && Effect.atJointDiffers(model, j)) out.add(Effect.complianceAtJoint(j, gravity, true));
             }
             // with payload steps, also the masses and their centres unknown (a centre off the file's moves the torque's phase)
             if (gravity != null && !gravity.massesUnknown()) {
                 Effect free = Effect.complianceRemassed(j, GravityTorques.massesUnknown(model));
                 if (free.testableOn(rows)) out.add(free);
+                if (free.testableOn(rows) && Effect.atJointDiffers(model, j))
+                    out.add(Effect.complianceAtJoint(j, GravityTorques.massesUnknown(model), true));
             }
         }
         if (hasTemp) {
@@ -6263,12 +6267,13 @@ public final class Diagnoser {
                         // An effect on the measured point moves each point by its own regressor (its place in the base frame).
                         if (t == Effect.Target.POSITION && (a == 0 || pointOfRow(a) != pointOfRow(a - 1)))
                             e.positionRegressor(er.get(i).q(), ec.get(i), ends > 1 ? endPoint[end][i] : pointsBase[i][pointOfRow(a)], g);
+                        double d = t == Effect.Target.POSITION ? 0 : t == Effect.Target.STRAIN ? ds[row] : e.driveDerivative(dq, row * dof);
                         for (int col = 0; col < k; col++) {
                             double v;
                             if (t == Effect.Target.POSITION) {
                                 v = dt[row * 3] * g[col] + dt[row * 3 + 1] * g[k + col] + dt[row * 3 + 2] * g[2 * k + col];
                                 if (gr != null) v += dr[row * 3] * gr[col] + dr[row * 3 + 1] * gr[k + col] + dr[row * 3 + 2] * gr[2 * k + col];
-                            } else v = (t == Effect.Target.STRAIN ? ds[row] : dq[row * dof + e.joint()]) * g[col];
+                            } else v = d * g[col];
                             if (Double.isFinite(v)) s[row * k + col] += v;
                         }
                     }

@@ -204,6 +204,8 @@ public final class Effect {
     private final GravityTorques gravity;    // compliance only
     private final boolean perMass;           // compliance: one coefficient per mass
     private boolean stiffens;                // compliance: a spring that stiffens with its load, Δq = c·τ + c3·τ³
+    private boolean atJoint;                 // compliance: the joint's own angle gives under the torque about its axis, not the drive
+    private double[] driveShares;            // the drives a joint's own give moves (C⁻¹ e_j), null for a drive's
     private final double t0C, tauS;          // thermal / drift: reference temperature, or time constant (NaN)
     private final int[] harmonics;           // periodic
     private double[] stages = new double[0]; // periodic: orders that are not whole (an intermediate shaft's turns per output turn)
@@ -301,6 +303,64 @@ public final class Effect {
 
     /** Whether this is a compliance that stiffens with its load ({@link #complianceStiffening}). */
     public boolean stiffens() { return stiffens; }
+
+    /**
+     * A joint whose own angle gives under the gravity torque about its axis: Δθ_j = c·τ_j (τ_j of
+     * everything beyond joint j, {@link GravityTorques#torques}), the spring in the joint (its bearing,
+     * its housing, the structure it turns in) rather than in the drive's gear. On a serial arm the two
+     * are one; on a parallel arm (θ3 = q3 − q2) the gear of drive 2 feels τ2 − τ3 (virtual work,
+     * {@link GravityTorques#driveTorques}) while a give of joint 2's own angle turns the whole arm
+     * beyond it, forearm included, by τ2: drives 2 and 3 both move, Δq = C⁻¹ e_j Δθ_j. Serial-chain
+     * stiffness models take this form (Dumas, Caro, Garnier &amp; Furet, "Joint stiffness
+     * identification of six-revolute industrial serial robots", Robotics and Computer-Integrated
+     * Manufacturing 27 (2011) 881; Abele, Weigold &amp; Rothenbücher, CIRP Annals 56 (2007) 387).
+     * {@code perMass}: one coefficient per mass, as {@link #complianceRemassed}.
+     */
+    public static Effect complianceAtJoint(int joint, GravityTorques g, boolean perMass) {
+        Effect e = new Effect(Kind.COMPLIANCE, joint, -1, g, perMass, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+        e.atJoint = true;
+        double[] unit = new double[g.model().dof()];
+        unit[joint] = 1;
+        e.driveShares = g.model().q(unit);
+        return e;
+    }
+
+    /** Whether a joint's own give ({@link #complianceAtJoint}) moves other drives than its own: the coupling makes it differ from the drive's. */
+    public static boolean atJointDiffers(KinematicModel model, int joint) {
+        double[] unit = new double[model.dof()];
+        unit[joint] = 1;
+        double[] d = model.q(unit);
+        for (int i = 0; i < d.length; i++) if (i != joint && d[i] != 0) return true;
+        return false;
+    }
+
+    /** Whether this compliance is of the joint's own angle ({@link #complianceAtJoint}). */
+    public boolean atJoint() { return atJoint; }
+
+    /**
+     * A drive effect's Δq_joint = s moves drive i by shares[i]·s: null for the effect's own drive
+     * alone, C⁻¹ e_j for a joint's own give ({@link #complianceAtJoint}).
+     */
+    public double[] driveShares() { return driveShares == null ? null : driveShares.clone(); }
+
+    /** d(residual)/ds of a drive effect's s at one row, from the row's derivatives by drive {@code dq[at..at+dof)}. */
+    public double driveDerivative(double[] dq, int at) {
+        if (driveShares == null) return dq[at + joint];
+        double d = 0;
+        for (int i = 0; i < driveShares.length; i++) if (driveShares[i] != 0) d += driveShares[i] * dq[at + i];
+        return d;
+    }
+
+    /** Adds a drive effect's Δ (of drive {@link #joint()}, or shared out by {@link #driveShares()}) to the drives' values. */
+    public void addToDrives(double delta, double[] q) {
+        if (driveShares == null) { q[joint] += delta; return; }
+        for (int i = 0; i < driveShares.length; i++) q[i] += driveShares[i] * delta;
+    }
+
+    /** The gravity torque this compliance's coefficient multiplies at q: the drive's, or the joint's own ({@link #complianceAtJoint}). */
+    public double complianceTorque(double[] q, double payloadKg) {
+        return atJoint ? gravity.torques(q, payloadKg)[joint] : gravity.driveTorques(q, payloadKg)[joint];
+    }
 
     /** A stiffening compliance as a linear spring on the same masses (itself when it is not one). */
     public static Effect withoutStiffening(Effect e) { return e.stiffens ? compliance(e.joint, e.gravity) : e; }
@@ -2602,7 +2662,8 @@ public final class Effect {
             case WARM_PERIODIC -> kind.json + " j" + (joint + 1) + " (h " + String.join(",", Arrays.stream(harmonics).mapToObj(String::valueOf).toList()) + ")";
             case LOAD_PERIODIC -> kind.json + " j" + (joint + 1) + " (h " + String.join(",", Arrays.stream(orders()).mapToObj(Effect::orderText).toList())
                     + (loadMagnitude ? ", with the torque's size)" : ", with the torque)");
-            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
+            case COMPLIANCE -> kind.json + " j" + (joint + 1) + (atJoint ? " (at the joint)" : "")
+                    + (gravity.massesUnknown() ? " (masses estimated)" : perMass ? " (masses re-estimated)" : stiffens ? " (stiffening)" : "");
             case SMOOTH -> kind.json + " j" + (joint + 1) + (source >= 0 || model != null ? " (following " + (model != null ? "theta" : "j")
                     + (angleJoint() + 1) + ")" : "")
                     + (nBasis == SMOOTH_BASIS ? "" : " (" + nBasis + " functions)");
@@ -2722,9 +2783,10 @@ public final class Effect {
         switch (kind) {
             case COMPLIANCE -> {
                 if (!perMass) {
-                    g[0] = gravity.driveTorques(q, c.payloadKg())[joint];
+                    g[0] = complianceTorque(q, c.payloadKg());
                     if (stiffens) g[1] = g[0] * g[0] * g[0];
-                } else gravity.driveTorquesByMass(q, c.payloadKg(), joint, g);
+                } else if (atJoint) gravity.jointTorquesByMass(q, c.payloadKg(), joint, g);
+                else gravity.driveTorquesByMass(q, c.payloadKg(), joint, g);
             }
             case PERIODIC -> {
                 for (int i = 0; i < harmonics.length; i++) {
@@ -3154,7 +3216,8 @@ public final class Effect {
         int k = size();
         int dof = m.dof();
         double[] cCol = new double[dof];
-        if (joint >= 0) { double[][] cm = m.couplingMatrix(); for (int i = 0; i < dof; i++) cCol[i] = cm[i][joint]; }
+        if (atJoint) cCol[joint] = 1; // the joint's own angle: C (C⁻¹ e_j) = e_j
+        else if (joint >= 0) { double[][] cm = m.couplingMatrix(); for (int i = 0; i < dof; i++) cCol[i] = cm[i][joint]; }
         Target t = target();
         return new EffectBlock() {
             @Override public String name() { return id(); }
@@ -3273,6 +3336,7 @@ public final class Effect {
                 if (massScales != null) putMassScales(p, "load_mass_scale_");
             }
             case TOOL_SAG, TOOL_PLAY -> { p.put("down_x", down.x()); p.put("down_y", down.y()); p.put("down_z", down.z()); }
+            case COMPLIANCE -> { if (atJoint) p.put("at_joint", 1.0); }
             case TARGET_INCIDENCE -> {
                 p.put("axis_x", sightAxis.x());
                 p.put("axis_y", sightAxis.y());
@@ -3377,6 +3441,7 @@ public final class Effect {
                 // a compliance "c" is a stiffness on the file's masses; without them only the remassed form means anything
                 if (gravity == null || gravity.massesUnknown() && ps.containsKey("c"))
                     throw needsMassModel(d, file, "joint-compliance");
+                if (ps.containsKey("at_joint")) yield complianceAtJoint(js.get(0) - 1, gravity, !ps.containsKey("c"));
                 yield ps.containsKey("c3") ? complianceStiffening(js.get(0) - 1, gravity)
                         : ps.containsKey("c") ? compliance(js.get(0) - 1, gravity) : complianceRemassed(js.get(0) - 1, gravity);
             }
@@ -3733,6 +3798,7 @@ public final class Effect {
             if (gravity != null && !gravity.massesUnknown()) {
                 out.add(compliance(j, gravity));
                 out.add(complianceStiffening(j, gravity));
+                if (atJointDiffers(model, j)) out.add(complianceAtJoint(j, gravity, false));
             }
             out.add(periodic(j));
             out.add(backlash(j));

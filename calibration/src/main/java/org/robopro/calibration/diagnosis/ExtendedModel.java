@@ -46,7 +46,7 @@ public final class ExtendedModel {
     public double[] effectiveQ(double[] q, PoseConditions c) {
         double[] out = q.clone();
         for (Effect.Term t : terms)
-            if (t.effect().target() == Effect.Target.DRIVE) out[t.effect().joint()] += t.effect().value(t.values(), q, c);
+            if (t.effect().target() == Effect.Target.DRIVE) t.effect().addToDrives(t.effect().value(t.values(), q, c), out);
         return out;
     }
 

@@ -242,10 +242,19 @@ public final class GravityTorques {
 
     /** Drive {@code joint}'s gravity torque split by mass: out[k] = the torque of mass k alone (file mass, payload as given). */
     public void driveTorquesByMass(double[] q, double payloadKg, int joint, double[] out) {
+        torquesByMass(q, payloadKg, joint, false, out);
+    }
+
+    /** Joint {@code joint}'s gravity torque about its own axis ({@link #torques}) split by mass, as {@link #driveTorquesByMass}. */
+    public void jointTorquesByMass(double[] q, double payloadKg, int joint, double[] out) {
+        torquesByMass(q, payloadKg, joint, true, out);
+    }
+
+    private void torquesByMass(double[] q, double payloadKg, int joint, boolean atJoint, double[] out) {
         Pose[] f = model.linkFrames(q);
         double[] m = mass.clone();
         m[payloadSlot] = Double.isNaN(payloadKg) ? 0 : payloadKg;
-        for (int k = 0; k < mass.length; k++) out[k] = pointDriveTorque(f, f[frameIndex[k]].apply(local[k]), m[k], frameIndex[k], joint);
+        for (int k = 0; k < mass.length; k++) out[k] = pointTorque(f, f[frameIndex[k]].apply(local[k]), m[k], frameIndex[k], joint, atJoint);
     }
 
     /** Lever (m) of the payload's centre shifts in {@link #payloadDriveTorques}: a centre 0.1 m off along a flange axis is one unit. */
@@ -265,22 +274,26 @@ public final class GravityTorques {
         Vec3 c0 = local[payloadSlot];
         Vec3[] shifts = {Vec3.ZERO, new Vec3(PAYLOAD_SHIFT_M, 0, 0), new Vec3(0, PAYLOAD_SHIFT_M, 0), new Vec3(0, 0, PAYLOAD_SHIFT_M)};
         for (int s = 0; s < 4; s++) {
-            double t = pointDriveTorque(f, at.apply(c0.plus(shifts[s])), m, frameIndex[payloadSlot], joint);
+            double t = pointTorque(f, at.apply(c0.plus(shifts[s])), m, frameIndex[payloadSlot], joint, false);
             out[s] = s == 0 ? t : t - out[0];
         }
     }
 
-    /** Drive {@code joint}'s torque of a point mass m (kg) at {@code point} (base frame) riding on frame {@code frame}. */
-    private double pointDriveTorque(Pose[] f, Vec3 point, double m, int frame, int joint) {
+    /**
+     * Drive {@code joint}'s torque of a point mass m (kg) at {@code point} (base frame) riding on frame
+     * {@code frame}, or with {@code atJoint} the torque about the joint's own axis (coupling aside).
+     */
+    private double pointTorque(Pose[] f, Vec3 point, double m, int frame, int joint, boolean atJoint) {
         int n = model.dof();
         double[][] cm = model.couplingMatrix();
         Vec3 force = gravity.times(m);
         double s = 0;
         for (int i = 0; i < n; i++) {
-            if (cm[i][joint] == 0 || frame < i + 1 || m == 0) continue;
+            double w = atJoint ? (i == joint ? 1 : 0) : cm[i][joint];
+            if (w == 0 || frame < i + 1 || m == 0) continue;
             Vec3 o = f[i + 1].position(), z = f[i + 1].zAxis();
             boolean prismatic = model.description().joints().get(i).type() == JointType.PRISMATIC;
-            s += cm[i][joint] * (prismatic ? force.dot(z) : point.minus(o).cross(force).dot(z));
+            s += w * (prismatic ? force.dot(z) : point.minus(o).cross(force).dot(z));
         }
         return s;
     }

@@ -28,7 +28,7 @@ final class Plots {
         for (int i = 0; t.ends > 1 && i < poses; i++) {
             double best = -1;
             for (int k = 0; k < t.ends; k++) {
-                double d = e.isStrain() ? t.endDStrain[k][i] : t.endDQ[k][i * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[k][i] : e.driveDerivative(t.endDQ[k], i * dof);
                 double c = Math.abs(d * e.valueAt(v, t.endRows.get(k).get(i), t.endConditions.get(k).get(i)));
                 if (c > best) { best = c; end[i] = k; }
             }
@@ -37,7 +37,7 @@ final class Plots {
         for (int i = 0; i < poses; i++) {
             double s = 0;
             for (int a = 0; a < t.posRows; a++) {
-                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : t.endDQ[end[i]][(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : e.driveDerivative(t.endDQ[end[i]], (i * rpp + a) * dof);
                 s += d * d;
             }
             dn[i] = s;
@@ -53,7 +53,7 @@ final class Plots {
             PoseConditions c = t.endConditions.get(end[i]).get(i);
             double proj = 0;
             for (int a = 0; a < t.posRows; a++) {
-                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : t.endDQ[end[i]][(i * rpp + a) * dof + e.joint()];
+                double d = e.isStrain() ? t.endDStrain[end[i]][i * rpp + a] : e.driveDerivative(t.endDQ[end[i]], (i * rpp + a) * dof);
                 proj += d * t.fit.r[i * rpp + a];
             }
             double y = e.valueAt(v, row, c) - proj / dn[i]; // residual is predicted - measured
@@ -135,7 +135,7 @@ final class Plots {
 
     private static double xOf(Effect e, Measurement row, PoseConditions c) {
         return switch (e.kind()) {
-            case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.gravity().driveTorques(row.q(), c.payloadKg())[e.joint()];
+            case COMPLIANCE -> e.perMass() ? Math.toDegrees(row.q(e.joint())) : e.complianceTorque(row.q(), c.payloadKg());
             case PERIODIC, LOAD_PERIODIC, WARM_PERIODIC, SCALE, PAIR -> Math.toDegrees(row.q(e.angleJoint()));
             case SMOOTH -> Math.toDegrees(e.smoothVariable(row.q()));
             case POINT_SMOOTH -> e.along() == Effect.Along.TIME ? c.timeS() : e.along() == Effect.Along.TEMPERATURE ? c.tempC()

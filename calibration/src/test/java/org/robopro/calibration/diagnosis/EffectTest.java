@@ -248,6 +248,50 @@ class EffectTest {
     }
 
     /**
+     * A joint's own give on a parallel arm (IRB 2000, θ3 = q3 − q2), checked against rigid-body
+     * motion and the potential energy, not the model's Jacobian: the torque about joint 2's axis is
+     * −∂V/∂θ2 (virtual work) by central differences of the arm's potential energy, and joint 2's own
+     * angle giving by φ = c·τ turns the whole arm beyond it about that axis, the forearm with it, so
+     * the flange moves as the rotation by φ about joint 2's axis line (Rodrigues). The drive's form
+     * moves drive 2 alone, which the parallel rod keeps from turning the forearm: not that rotation.
+     */
+    @Test
+    void complianceAtTheJoint_turnsTheWholeArmBeyondItAboutItsAxis() {
+        RobotDescription r2000 = RobotLibrary.shipped("irb2000");
+        KinematicModel m = KinematicModel.build(r2000);
+        GravityTorques g = new GravityTorques(m, r2000.massModel().orElseThrow());
+        assertTrue(Effect.atJointDiffers(m, 1), "joint 2 of a parallel arm");
+        assertTrue(!Effect.atJointDiffers(m, 2), "joint 3's own angle is drive 3's");
+        Effect atJoint = Effect.complianceAtJoint(1, g, false), drive = Effect.compliance(1, g);
+        double c = 4e-6, payload = 6, h = 1e-6;
+        PoseConditions cond = new PoseConditions(null, Double.NaN, Double.NaN, payload);
+        for (double[] q : m.randomConfigurations(5, 17)) {
+            double[] th = m.theta(q), up = th.clone(), dn = th.clone();
+            up[1] += h;
+            dn[1] -= h;
+            double tau = -(g.potentialEnergy(m.q(up), payload) - g.potentialEnergy(m.q(dn), payload)) / (2 * h);
+            double phi = atJoint.value(new double[] {c}, q, cond);
+            assertEquals(c * tau, phi, 1e-6 * Math.abs(c * tau) + 1e-15, "c times the torque about joint 2's own axis");
+            Pose axis = m.linkFrames(q)[2];
+            Pose turn = Pose.rotAxis(axis.zAxis(), phi);
+            Vec3 p = m.flange(q).position(), o = axis.position();
+            Vec3 expected = o.plus(turn.apply(p.minus(o)));
+            double[] given = q.clone();
+            atJoint.addToDrives(phi, given);
+            Vec3 moved = m.flange(given).position();
+            assertEquals(0, moved.minus(expected).norm(), 1e-12, "the flange turned about joint 2's axis");
+            double[] byDrive = q.clone();
+            drive.addToDrives(phi, byDrive);
+            assertTrue(m.flange(byDrive).position().minus(expected).norm() > 0.1 * p.minus(o).norm() * Math.abs(phi),
+                    "drive 2 alone leaves the forearm's angle to the ground");
+        }
+        // the robot file keeps which form it is
+        Effect back = Effect.fromDescription(atJoint.describe(new double[] {c}), m, g, "x.robot.json").effect();
+        assertTrue(back.atJoint());
+        assertEquals(atJoint.label(), back.label());
+    }
+
+    /**
      * A pull on the tool, checked against the forward kinematics alone (not the model's Jacobian): each
      * drive's torque is the work the pull does through that drive's turn, F·∂p/∂q_j by central
      * differences of the attach point (virtual work), and the measured point's move is the forward

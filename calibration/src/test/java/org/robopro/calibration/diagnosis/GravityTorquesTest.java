@@ -32,6 +32,22 @@ class GravityTorquesTest {
         }
     }
 
+    /** Split by mass, the joint's own torques add up to {@link GravityTorques#torques} and the drive's to the drive's; joint 2 of the parallel arm differs by joint 3's. */
+    @Test
+    void torquesByMass_addUpToTheWholeTorque_jointsAndDrives() {
+        double[] byMass = new double[g.massCount()];
+        for (double[] q : model.randomConfigurations(5, 23)) {
+            double[] tau = g.torques(q, 7), drive = g.driveTorques(q, 7);
+            for (int j = 0; j < model.dof(); j++) {
+                g.jointTorquesByMass(q, 7, j, byMass);
+                assertEquals(tau[j], java.util.Arrays.stream(byMass).sum(), 1e-9 * (1 + Math.abs(tau[j])), "joint " + (j + 1));
+                g.driveTorquesByMass(q, 7, j, byMass);
+                assertEquals(drive[j], java.util.Arrays.stream(byMass).sum(), 1e-9 * (1 + Math.abs(drive[j])), "drive " + (j + 1));
+            }
+            assertEquals(tau[1] - tau[2], drive[1], 1e-9 * (1 + Math.abs(tau[1])), "θ3 = q3 − q2: drive 2 feels τ2 − τ3");
+        }
+    }
+
     @Test
     void torques_verticalFirstAxis_zeroAndPayloadRaisesShoulderTorque() {
         double[] q = {0.3, 0.4, -0.2, 0.1, 0.5, 0};

@@ -559,6 +559,32 @@ class HeldOutFormsTest {
     }
 
     /**
+     * Joints 2 and 3 of the IRB 2400 each giving in its own angle by the torque about its axis (a
+     * serial chain's joint stiffness, the world's springs in the joints): on the parallel arm joint
+     * 2's give turns the forearm with it, which drive 2's gear, feeling τ2 − τ3, cannot. Both are
+     * named, joint 2 in its own angle, and the extended robot file, read back, predicts the same.
+     */
+    @Test
+    void complianceInTheJointsOwnAngles_parallelArm_isNamedAtTheJoint() {
+        WorldCampaigns.Sim c = compliant(irb2400Compliance(4e5, 3e5).inJoints(), p -> p.withPayloads(0, 7.5, 15), 9);
+        Diagnosis d = Diagnoser.diagnose(RobotLibrary.shipped("irb2400"), c.train(), c.validation());
+        assertEquals(java.util.Set.of("joint-compliance j2 (at the joint) (masses estimated)", "joint-compliance j3 (masses estimated)"),
+                java.util.Set.copyOf(families(d)), "notes " + d.notes());
+        assertTrue(d.finalValidateRmsM() < 1.15 * c.floorM(), d.finalValidateRmsM() / c.floorM() + " x the floor");
+        // read back, to a few hundredths of what the springs move (the estimated masses ride on the identified link frames, as above)
+        ExtendedModel ext = d.model();
+        ExtendedModel back = ExtendedModel.of(RobotFile.parse("extended.robot.json", RobotFile.format(ext.toDescription())), "extended.robot.json");
+        ExtendedModel rigid = new ExtendedModel(ext.geometry(), List.of());
+        double largest = 0, apart = 0;
+        for (var m : c.validation().rows()) {
+            PoseConditions pc = PoseConditions.of(m);
+            apart = Math.max(apart, ext.flange(m.q(), pc).distanceTo(back.flange(m.q(), pc)));
+            largest = Math.max(largest, ext.flange(m.q(), pc).distanceTo(rigid.flange(m.q(), pc)));
+        }
+        assertTrue(apart < 0.05 * largest, "read back " + apart + " m apart, the springs move the flange " + largest + " m");
+    }
+
+    /**
      * Drives 2 and 3 giving way under the arm's own weight with one payload throughout: on the
      * parallel arm that is a one-cycle-per-turn shape of each drive's angle, the same as a
      * transmission error's. Neither may be named; the report says to measure with payload steps.
