@@ -332,6 +332,17 @@ public record Scenario(String name, String family, String robot, Expected expect
         return w -> { WorldRobot e = elastic.apply(w); return e.withCompliance(e.compliance().inJoints()); };
     }
 
+    /**
+     * A measuring machine out of square ({@link WorldRobot.Machine}): each squareness 50-150 µrad and
+     * the x and y scales 20-60 ppm off z's, random signs, the x-way bowed 20-60 µm in y and z over a
+     * travel of ±1.5 m about the robot's base.
+     */
+    static UnaryOperator<WorldRobot> machine(Random r) {
+        double gxy = signed(r, 50e-6, 150e-6), gxz = signed(r, 50e-6, 150e-6), gyz = signed(r, 50e-6, 150e-6);
+        double sx = signed(r, 20e-6, 60e-6), sy = signed(r, 20e-6, 60e-6), by = signed(r, 20e-6, 60e-6), bz = signed(r, 20e-6, 60e-6);
+        return w -> w.withMachine(new WorldRobot.Machine(gxy, gxz, gyz, sx, sy, by, bz, w.instrumentFromBase().p()[0], 1.5));
+    }
+
     private static UnaryOperator<Campaign.Plan> same() { return p -> p; }
 
     private static Scenario s(String name, String family, String robot, Expected e,
@@ -835,6 +846,11 @@ public record Scenario(String name, String family, String robot, Expected expect
                 (n, r) -> { var x = network(r); return w -> w.withNetwork(x); }, same()));
         c.add(s("outside: a second tracker reads the poses facing it, its registration off, irb2400", "outside", "irb2400", Expected.outside(),
                 (n, r) -> { var x = network(r); return w -> w.withNetwork(x); }, same()));
+        // a measuring machine's axes out of square by 50-150 µrad, its x and y scales 20-60 ppm off z's, its x-way bowed 20-60 µm
+        c.add(s("outside: the instrument a measuring machine out of square, its x-way bowed", "outside", "irb2400", Expected.outside(),
+                (n, r) -> machine(r), same()));
+        c.add(s("lost motion j2 measured by a machine out of square", "lost-motion", "irb2000", Expected.named(claim(LOST_MOTION, 2)),
+                (n, r) -> { var m = machine(r); var lm = lostMotion(1, r); return w -> add(lm).apply(m.apply(w)); }, same()));
         // the PUMA 560's light gear shafts: joint 2's or 3's output shaft tilting under its mesh's forces, 2.5-4e-6 rad per N·m on
         // joint 2 (0.3-0.45 mrad at its largest gravity torque, about 110 N·m), 0.8-1.4e-5 on joint 3 (about 30 N·m), the masses 30 %
         // off the file's

@@ -145,6 +145,13 @@ final class Truth {
                     + "about it and a shift (outside)", "second_station_m", Arrays.stream(w.network().secondBase()).boxed().toList(),
                     "omega_urad", Arrays.stream(w.network().omegaRad()).map(x -> x * 1e6).boxed().toList(),
                     "shift_um", Arrays.stream(w.network().shiftM()).map(x -> x * 1e6).boxed().toList()));
+        if (w.machine() != null) {
+            WorldRobot.Machine m = w.machine();
+            root.put("machine", Map.of("form", "the instrument a measuring machine reporting its scales' readings: p = (1+sx) u x + (1+sy) v y' "
+                    + "+ w z' + (0, bow_y, bow_z) xi^2, y' = unit(-gxy, 1, 0), z' = unit(-gxz, -gyz, 1) (outside)",
+                    "squareness_urad", List.of(m.gxy() * 1e6, m.gxz() * 1e6, m.gyz() * 1e6), "scale_ppm", List.of(m.sx() * 1e6, m.sy() * 1e6),
+                    "bow_um", List.of(m.bowY() * 1e6, m.bowZ() * 1e6), "x_centre_m", m.centreM(), "x_half_travel_m", m.halfM()));
+        }
         if (w.shaftTilt() != null)
             root.put("shaft_tilt", Map.of("form", "drive joint's output shaft turned by rad_per_nm (tau d + |tau| tan(pressure angle) n) about its "
                     + "bearing's centre, tau the drive's gravity torque (outside)", "joint", w.shaftTilt().joint() + 1,

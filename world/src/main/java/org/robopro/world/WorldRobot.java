@@ -54,19 +54,20 @@ import org.robopro.models.RobotDescription;
  * @param retractor          a cable retractor pulling the tool toward a fixed anchor, or null
  * @param shaftTilt          a drive's output shaft tilting under its gear mesh's forces, or null
  * @param network            a second instrument station reading the poses whose target faces it better, or null
+ * @param machine            the instrument a measuring machine whose axes are out of square and whose x-way is bowed, or null
  */
 public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                          Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                          ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                          FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock, Dispensing dispensing,
-                         Refraction refraction, Retractor retractor, ShaftTilt shaftTilt, Network network) {
+                         Refraction refraction, Retractor retractor, ShaftTilt shaftTilt, Network network, Machine machine) {
     /** A world robot whose carried mass is as recorded and whose instrument sees through still air. */
     public WorldRobot(String robotName, Arm arm, double[][] coupling, double[] zeroOffsets, List<JointError> errors,
                       Rigid flangeToTool, Rigid instrumentFromBase, Thermal thermal, Compliance compliance, Sag sag,
                       ToolBump toolBump, Tracker tracker, Rocking rocking, DressPack dressPack, List<Wobble> wobbles,
                       FloorTilt floorTilt, Twist twist, TargetPlay targetPlay, Knock knock) {
         this(robotName, arm, coupling, zeroOffsets, errors, flangeToTool, instrumentFromBase, thermal, compliance, sag, toolBump, tracker,
-                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, null, null, null, null, null);
+                rocking, dressPack, wobbles, floorTilt, twist, targetPlay, knock, null, null, null, null, null, null);
     }
 
     /** A world robot whose instrument is never knocked. */
@@ -932,7 +933,53 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         if (refraction != null) tool = new Rigid(tool.r(), refraction.seen(tool.p(), inst.inverse().p(), timeS, tempC));
         Rigid seen = inst.times(tool);
         if (network != null && network.readsSecond(tool, inst)) seen = network.misregistered(seen, inst);
+        if (machine != null) seen = new Rigid(seen.r(), machine.read(seen.p()));
         return tracker == null ? seen : new Rigid(seen.r(), tracker.read(seen.p(), timeS));
+    }
+
+    /**
+     * The instrument is a coordinate measuring machine whose three scales' readings (u, v, w) it
+     * reports as the point's coordinates, while its axes are not square and its x carriage runs on a
+     * bowed way: the point the readings reach is p = (1 + sx) u x̂ + (1 + sy) v ŷ' + w ẑ' + b(u), with
+     * ŷ' = unit(−gxy, 1, 0) and ẑ' = unit(−gxz, −gyz, 1) (y out of square with x by gxy, z with x and y
+     * by gxz, gyz, rad; x and y scales off z's by sx, sy), and the carriage's straightness deviation
+     * b(u) = (0, bowY ξ², bowZ ξ²), ξ = (u − centre)/half, along the x travel. Squareness and
+     * straightness are among a machine's 21 geometric errors (ISO 230-1; Schwenke et al., CIRP
+     * Annals 57 (2008) 660). Lengths m.
+     */
+    public record Machine(double gxy, double gxz, double gyz, double sx, double sy, double bowY, double bowZ, double centreM, double halfM) {
+        /** The readings the machine reports for the point p (its own frame): the reading (u, v, w) whose chain reaches p. */
+        public double[] read(double[] p) {
+            double[] y = Rigid.unit(new double[] {-gxy, 1, 0}), z = Rigid.unit(new double[] {-gxz, -gyz, 1});
+            double[][] b = {{1 + sx, (1 + sy) * y[0], z[0]}, {0, (1 + sy) * y[1], z[1]}, {0, (1 + sy) * y[2], z[2]}};
+            double[] r = p.clone();
+            for (int it = 0; it < 8; it++) {
+                double xi = (r[0] - centreM) / halfM;
+                r = solve(b, new double[] {p[0], p[1] - bowY * xi * xi, p[2] - bowZ * xi * xi});
+            }
+            return r;
+        }
+
+        /** x with a x = rhs, Cramer's rule (3 x 3). */
+        private static double[] solve(double[][] a, double[] rhs) {
+            double d = det(a[0], a[1], a[2]);
+            double[] out = new double[3];
+            for (int c = 0; c < 3; c++) {
+                double[][] m = new double[3][];
+                for (int i = 0; i < 3; i++) { m[i] = a[i].clone(); m[i][c] = rhs[i]; }
+                out[c] = det(m[0], m[1], m[2]) / d;
+            }
+            return out;
+        }
+
+        private static double det(double[] r0, double[] r1, double[] r2) {
+            return r0[0] * (r1[1] * r2[2] - r1[2] * r2[1]) - r0[1] * (r1[0] * r2[2] - r1[2] * r2[0]) + r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]);
+        }
+    }
+
+    /** The same robot measured by a machine whose axes are out of square ({@link Machine}). */
+    public WorldRobot withMachine(Machine m) {
+        return edit(it -> it.machine = m);
     }
 
     /**
@@ -1254,7 +1301,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
     private WorldRobot edit(java.util.function.Consumer<Edit> change) {
         Edit e = new Edit(this);
         change.accept(e);
-        return new WorldRobot(e.robotName, e.arm, e.coupling, e.zeroOffsets, e.errors, e.flangeToTool, e.instrumentFromBase, e.thermal, e.compliance, e.sag, e.toolBump, e.tracker, e.rocking, e.dressPack, e.wobbles, e.floorTilt, e.twist, e.targetPlay, e.knock, e.dispensing, e.refraction, e.retractor, e.shaftTilt, e.network);
+        return new WorldRobot(e.robotName, e.arm, e.coupling, e.zeroOffsets, e.errors, e.flangeToTool, e.instrumentFromBase, e.thermal, e.compliance, e.sag, e.toolBump, e.tracker, e.rocking, e.dressPack, e.wobbles, e.floorTilt, e.twist, e.targetPlay, e.knock, e.dispensing, e.refraction, e.retractor, e.shaftTilt, e.network, e.machine);
     }
 
     /** The components of a robot being copied with one of them changed. */
@@ -1283,6 +1330,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         Retractor retractor;
         ShaftTilt shaftTilt;
         Network network;
+        Machine machine;
 
         Edit(WorldRobot w) {
             robotName = w.robotName;
@@ -1309,6 +1357,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
             retractor = w.retractor;
             shaftTilt = w.shaftTilt;
             network = w.network;
+            machine = w.machine;
         }
     }
 

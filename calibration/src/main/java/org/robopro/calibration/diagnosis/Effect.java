@@ -103,6 +103,8 @@ public final class Effect {
                 + "air (refraction), not the robot, of no known family"),
         INSTRUMENT_SCALE("instrument-scale", "The measuring instrument's distances scaling with time or temperature (its air "
                 + "compensation), not the robot, of no known family"),
+        INSTRUMENT_AXES("instrument-axes", "The measuring instrument's axes out of square or scaled one against another (a "
+                + "coordinate measuring machine's squareness, a camera system's depth scale), not the robot, of no known family"),
         BASE_TILT("base-tilt", "The robot's base tilting on its foundation under the arm's weight, of no known family"),
         AXIS_WOBBLE("axis-wobble", "A joint's axis tilting as the joint turns (its bearing wobbles), of no known family"),
         AXIAL_RUNOUT("axial-runout", "The arm beyond a joint moving along the joint's axis as it turns (its bearing runs out "
@@ -205,6 +207,7 @@ public final class Effect {
     private final boolean perMass;           // compliance: one coefficient per mass
     private boolean stiffens;                // compliance: a spring that stiffens with its load, Δq = c·τ + c3·τ³
     private boolean atJoint;                 // compliance: the joint's own angle gives under the torque about its axis, not the drive
+    private boolean bowed;                   // instrument axes: its ways bowed as well
     private double[] driveShares;            // the drives a joint's own give moves (C⁻¹ e_j), null for a drive's
     private final double t0C, tauS;          // thermal / drift: reference temperature, or time constant (NaN)
     private final int[] harmonics;           // periodic
@@ -1333,6 +1336,46 @@ public final class Effect {
         return instrumentAlong(Kind.INSTRUMENT_SCALE, along, instrumentTbase, lo, hi, n);
     }
 
+    /** Columns of {@link #instrumentAxes}: two scales against the third axis's, three shears. */
+    static final int AXES_COLUMNS = 5;
+
+    /**
+     * The instrument's axes out of square and scaled one against another: the positions it reports,
+     * p_i in its own frame, are off by a constant linear map, Δp_i = S p_i with S symmetric (its
+     * antisymmetric part is a turn, the registration's; its trace a uniform scale, the geometry's):
+     * S = [[a, g, h], [g, b, k], [h, k, 0]] less neither, five columns, a and b the x and y axes'
+     * scales against z's, g, h, k half the angles by which x and y, x and z, y and z are out of
+     * square. A coordinate measuring machine's squareness errors are among the largest of its 21
+     * geometric errors (ISO 10360-2; Schwenke et al., CIRP Annals 57 (2008) 660); a photogrammetric
+     * or stereo camera system's depth scale differs from its lateral scale where its baseline or
+     * focal length is off. Computed through {@code instrumentTbase} (the geometric fit's).
+     */
+    public static Effect instrumentAxes(Pose instrumentTbase) {
+        Effect e = new Effect(Kind.INSTRUMENT_AXES, -1, -1, null, false, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
+        e.instrument = instrumentTbase;
+        return e;
+    }
+
+    /** Columns a machine's bowed ways add to {@link #instrumentAxes}: each axis's square moving the point along the other two. */
+    static final int BOW_COLUMNS = 6;
+
+    /**
+     * {@link #instrumentAxes} with its ways bowed: a carriage that runs on a way bent in a parabola
+     * over its travel moves the point across that axis by c·u², u its reading (the parabola's
+     * centre and slope are the registration's and the axes' share), along each of the other two
+     * axes, six columns more. Straightness is, with squareness, among a measuring machine's 21
+     * geometric errors (ISO 230-1; Schwenke et al. 2008); which of its axes travels farthest the
+     * positions do not say, so all three are tried.
+     */
+    public static Effect instrumentAxesBowed(Pose instrumentTbase) {
+        Effect e = instrumentAxes(instrumentTbase);
+        e.bowed = true;
+        return e;
+    }
+
+    /** Whether an instrument's axes' error has its ways bowed ({@link #instrumentAxesBowed}). */
+    public boolean bowed() { return bowed; }
+
     /** An error of the instrument's as a spline of time or temperature over [lo, hi] with {@code n} functions, seen through {@code instrumentTbase}. */
     private static Effect instrumentAlong(Kind kind, Along along, Pose instrumentTbase, double lo, double hi, int n) {
         if (along != Along.TIME && along != Along.TEMPERATURE) throw new IllegalArgumentException(kind.json + " follows time or temperature");
@@ -2200,7 +2243,7 @@ public final class Effect {
     /** Whether this effect is a fallback (a located structure modelled without a physical family). */
     public boolean isFallback() {
         return shaftOrders() || stepInTime() || kind == Kind.SMOOTH || kind == Kind.LOAD_PERIODIC || kind == Kind.WARM_PERIODIC || kind == Kind.COMPLIANCE_VARYING || kind == Kind.LINK_PERIODIC || kind == Kind.GRAVITY_PLAY || kind == Kind.TARGET_DRIFT || kind == Kind.BASE_CREEP || kind == Kind.PAIR || kind == Kind.POINT_SMOOTH || kind == Kind.BASE_TURN
-                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION
+                || kind == Kind.ZERO_DRIFT || kind == Kind.ANGLE_STEP || kind == Kind.SETTLING || kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.INSTRUMENT_AXES || kind == Kind.REFRACTION
                 || kind == Kind.BASE_TILT || kind == Kind.AXIS_WOBBLE || kind == Kind.AXIAL_RUNOUT || kind == Kind.TOOL_SAG || kind == Kind.TOOL_PLAY || kind == Kind.LINK_SAG || kind == Kind.LINK_TWIST || kind == Kind.TARGET_INCIDENCE || kind == Kind.TOOL_PULL || kind == Kind.LOAD_TILT || kind == Kind.SECOND_STATION;
     }
 
@@ -2242,9 +2285,15 @@ public final class Effect {
         return sightReading(sight, azimuthRef, instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray());
     }
 
+    /** The measured point's distance from the instrument's origin (m), for an effect seen through the instrument's frame. */
+    public double instrumentDistanceOf(double[] pointBase) {
+        return instrument == null ? Double.NaN : instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).norm();
+    }
+
     /** Whether this effect is an error of the measuring instrument, not of the robot (compensation leaves it out). */
     public boolean ofInstrument() {
-        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.REFRACTION || kind == Kind.RANGE_STEP || kind == Kind.BASE_STEP
+        return kind == Kind.INSTRUMENT || kind == Kind.INSTRUMENT_SCALE || kind == Kind.INSTRUMENT_AXES || kind == Kind.REFRACTION
+                || kind == Kind.RANGE_STEP || kind == Kind.BASE_STEP
                 || kind == Kind.SECOND_STATION
                 || kind == Kind.TARGET_INCIDENCE;
     }
@@ -2404,7 +2453,7 @@ public final class Effect {
     public Target target() {
         return switch (kind) {
             case THERMAL -> Target.STRAIN;
-            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
+            case THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, INSTRUMENT_AXES, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT,
                  TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT, SECOND_STATION -> Target.POSITION;
             default -> Target.DRIVE;
         };
@@ -2452,6 +2501,7 @@ public final class Effect {
             case COMPLIANCE_VARYING -> perMassVarying() ? gravity.massCount() * nBasis : payloadCentreFree ? 4 * nBasis : nBasis;
             case AXIS_WOBBLE -> 4 * harmonics.length;
             case LOAD_TILT -> 8;
+            case INSTRUMENT_AXES -> AXES_COLUMNS + (bowed ? BOW_COLUMNS : 0);
             case AXIAL_RUNOUT -> 2 * harmonics.length;
             case TOOL_SAG -> 9;
             case TOOL_PLAY -> PLAY_SHIFTS + (playTurns ? PLAY_TIPS : 0);
@@ -2517,6 +2567,10 @@ public final class Effect {
             case ZERO_DRIFT -> { for (int k = 1; k <= nBasis; k++) out.add("z" + k); }
             case COMPLIANCE_VARYING -> { for (int k = 1; k <= size(); k++) out.add("c" + k); }
             case INSTRUMENT_SCALE -> { for (int k = 1; k <= nBasis; k++) out.add("s" + k); }
+            case INSTRUMENT_AXES -> {
+                out.addAll(List.of("scale_x", "scale_y", "square_xy", "square_xz", "square_yz"));
+                if (bowed) out.addAll(List.of("bow_x_y", "bow_x_z", "bow_y_x", "bow_y_z", "bow_z_x", "bow_z_y"));
+            }
             case REFRACTION -> { for (int k = 1; k <= nBasis; k++) out.add("k" + k); }
             case ZERO_STEP, ANGLE_STEP -> out.add("step");
             case SETTLING -> out.add("per_speed");
@@ -2595,6 +2649,7 @@ public final class Effect {
             case BASE_TURN, BASE_CREEP -> "rad";
             case INSTRUMENT -> sight.unit;
             case INSTRUMENT_SCALE -> "1";
+            case INSTRUMENT_AXES -> "1";
             case REFRACTION -> "1/m";
             case BASE_TILT -> "rad/(N·m)";
             case AXIS_WOBBLE, LOAD_TILT -> "rad";
@@ -2616,6 +2671,11 @@ public final class Effect {
         if (kind == Kind.BASE_TILT) return List.of(u, "m/(N·m)", "m/(N·m)"); // the lift and the slide: the tilt times a distance
         if (kind == Kind.BASE_STEP || kind == Kind.SECOND_STATION) return List.of("m", "m", "m", "rad", "rad", "rad");
         if (kind == Kind.BASE_CREEP) return List.of("rad", "m", "m");
+        if (kind == Kind.INSTRUMENT_AXES && bowed) { // the scales and squareness, then the ways' bows per metre squared
+            List<String> out = new ArrayList<>(java.util.Collections.nCopies(AXES_COLUMNS, u));
+            out.addAll(java.util.Collections.nCopies(BOW_COLUMNS, "1/m"));
+            return out;
+        }
         if (kind == Kind.TOOL_PLAY && playTurns) { // the point's shifts, then the flange's tips
             List<String> out = new ArrayList<>(java.util.Collections.nCopies(PLAY_SHIFTS, u));
             out.addAll(java.util.Collections.nCopies(PLAY_TIPS, "rad"));
@@ -2675,6 +2735,7 @@ public final class Effect {
             case PAIR -> kind.json + " j" + (joint + 1) + " (with j" + (source + 1) + ")";
             case POINT_SMOOTH, BASE_TURN -> kind.json + " (" + along.words + ")";
             case INSTRUMENT_SCALE, REFRACTION -> kind.json + " (" + along.words + (nBasis == POINT_BASIS ? "" : ", " + nBasis + " functions") + ")";
+            case INSTRUMENT_AXES -> kind.json + (bowed ? " (out of square, ways bowed)" : " (out of square)");
             case ZERO_DRIFT -> kind.json + " j" + (joint + 1) + " (" + along.words + ")";
             case LINK_PERIODIC -> kind.json + " j" + (joint + 1) + " (" + linkAngleText() + ", h " + String.join(",",
                     Arrays.stream(harmonics).mapToObj(String::valueOf).toList()) + ")";
@@ -2948,6 +3009,16 @@ public final class Effect {
                 Vec3 o = instrument.inverse().position();
                 double dx = pointBase[0] - o.x(), dy = pointBase[1] - o.y(), d2 = dx * dx + dy * dy;
                 for (int i = 0; i < nBasis; i++) g3[2 * k + i] = d2 * b[i];
+            }
+            case INSTRUMENT_AXES -> {
+                // Δp_i = S p_i in the instrument's axes, turned into the base's: R_ibᵀ (E_k p_i) per column
+                double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
+                double x2 = pi[0] * pi[0], y2 = pi[1] * pi[1], z2 = pi[2] * pi[2];
+                double[][] cols = {{pi[0], 0, 0}, {0, pi[1], 0}, {pi[1], pi[0], 0}, {pi[2], 0, pi[0]}, {0, pi[2], pi[1]},
+                        {0, x2, 0}, {0, 0, x2}, {y2, 0, 0}, {0, 0, y2}, {z2, 0, 0}, {0, z2, 0}};
+                for (int col = 0; col < k; col++)
+                    for (int a = 0; a < 3; a++)
+                        g3[a * k + col] = instrument.rot(0, a) * cols[col][0] + instrument.rot(1, a) * cols[col][1] + instrument.rot(2, a) * cols[col][2];
             }
             case INSTRUMENT_SCALE -> {
                 // Δp = s(u) (p − o), o the instrument's origin: in base axes R_ibᵀ (s p_i) with p_i = R_ib p + t_ib
@@ -3317,6 +3388,7 @@ public final class Effect {
                 if (gravity.fromLengths()) p.put("varying_masses_from_lengths", 1.0);
             }
             case INSTRUMENT_SCALE, REFRACTION -> { p.put(along.key + "_min", lo); p.put(along.key + "_max", hi); putInstrument(p, instrument); }
+            case INSTRUMENT_AXES -> putInstrument(p, instrument); // (the bows' keys tell the bowed form)
             case ZERO_STEP, TARGET_STEP, BASE_STEP -> p.put("time_s_step", tauS);
             case SECOND_STATION -> {
                 if (stations == null) { p.put("facing_x", facing.x()); p.put("facing_y", facing.y()); p.put("facing_z", facing.z()); }
@@ -3417,7 +3489,7 @@ public final class Effect {
         if (kind == null) throw d.error(file, "effect", "unknown effect '" + d.effect() + "'");
         List<Integer> js = d.joints();
         int need = switch (kind) {
-            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT,
+            case THERMAL, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP, INSTRUMENT, INSTRUMENT_SCALE, INSTRUMENT_AXES, REFRACTION, BASE_TILT,
                  TOOL_SAG, TOOL_PLAY, TARGET_INCIDENCE, TOOL_PULL, SECOND_STATION -> 0;
             case COUPLING, PAIR -> 2;
             case SMOOTH -> js.size() == 2 ? 2 : 1; // its own angle, or another joint's (target, then source)
@@ -3536,6 +3608,7 @@ public final class Effect {
                     throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");
                 yield baseTurn(along, require(d, along.key + "_min", file), require(d, along.key + "_max", file));
             }
+            case INSTRUMENT_AXES -> d.parameters().containsKey("bow_x_y") ? instrumentAxesBowed(instrumentOf(d, file)) : instrumentAxes(instrumentOf(d, file));
             case INSTRUMENT_SCALE, REFRACTION -> {
                 if (along != Along.TIME && along != Along.TEMPERATURE)
                     throw d.error(file, "parameters_si", "needs time_s_min and time_s_max or temp_c_min and temp_c_max");

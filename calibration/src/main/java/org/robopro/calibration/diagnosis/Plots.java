@@ -93,6 +93,7 @@ final class Plots {
     static String xLabel(Effect e) {
         return switch (e.kind()) {
             case COMPLIANCE -> e.perMass() ? "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)"
+                    : e.atJoint() ? "gravity torque about joint " + (e.joint() + 1) + "'s own axis (N·m)"
                     : "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
             case PERIODIC, LOAD_PERIODIC, WARM_PERIODIC, SCALE, SMOOTH, PAIR -> "joint " + (e.angleJoint() + 1) + " angle " + (e.followsModelAngle() ? "θ" : "q") + (e.angleJoint() + 1) + " (deg)";
             case POINT_SMOOTH -> switch (e.along()) {
@@ -113,6 +114,7 @@ final class Plots {
             case LOAD_TILT -> "gravity torque on drive " + (e.joint() + 1) + " (N·m)";
             case SECOND_STATION -> "the flange axis's part along the second station's side (positive: read from it)";
             case INSTRUMENT -> "the instrument's " + e.sight().words + " reading" + (e.sight() == Effect.Sight.RANGE ? " (m)" : " (deg)");
+            case INSTRUMENT_AXES -> "distance of the measured point from the instrument's origin (m)";
             case ANGLE_STEP -> "joint " + (e.joint() + 1) + " angle q" + (e.joint() + 1) + " (deg)";
             case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE, REFRACTION -> e.along() == Effect.Along.TIME ? "time since start (s)" : "temperature (°C)";
             case THERMAL_LINK -> "temperature (°C)";
@@ -142,7 +144,7 @@ final class Plots {
                     : Double.NaN; // reach, height: from the predicted point (alongDisplacement)
             case ZERO_DRIFT, BASE_TURN, INSTRUMENT_SCALE, REFRACTION -> e.along() == Effect.Along.TIME ? c.timeS() : c.tempC();
             case ZERO_STEP, TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> c.timeS();
-            case INSTRUMENT -> Double.NaN; // from the predicted point (alongDisplacement)
+            case INSTRUMENT, INSTRUMENT_AXES -> Double.NaN; // from the predicted point (alongDisplacement)
             case BASE_TILT -> e.tiltExcess(row.q(), c.payloadKg()) + (Double.isInfinite(e.tiltHold()) ? 0 : e.tiltHold());
             case ANGLE_STEP, AXIS_WOBBLE, AXIAL_RUNOUT -> Math.toDegrees(row.q(e.joint()));
             case LINK_SAG -> e.sagAcross(row.q());
@@ -196,7 +198,7 @@ final class Plots {
                 yield s;
             }
             // a load-periodic error is no function of the angle alone: its size follows the load
-            case LOAD_PERIODIC, WARM_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT, SECOND_STATION -> Double.NaN;
+            case LOAD_PERIODIC, WARM_PERIODIC, COMPLIANCE_VARYING, THERMAL_LINK, DRIFT, POINT_SMOOTH, BASE_TURN, PAIR, INSTRUMENT, INSTRUMENT_SCALE, INSTRUMENT_AXES, REFRACTION, BASE_TILT, AXIS_WOBBLE, AXIAL_RUNOUT, TOOL_SAG, TOOL_PLAY, LINK_SAG, LINK_TWIST, TARGET_INCIDENCE, TOOL_PULL, LOAD_TILT, SECOND_STATION -> Double.NaN;
             case ZERO_STEP -> x <= e.tauS() ? -v[0] : 0;
             case ANGLE_STEP -> Math.toRadians(x) > e.rangeLo() && !(Math.toRadians(x) > e.rangeHi()) ? v[0] : 0;
             case TARGET_STEP, TARGET_DRIFT, BASE_CREEP, BASE_STEP, RANGE_STEP -> Double.NaN;
@@ -250,7 +252,8 @@ final class Plots {
             double[] pb = t.pointsBase[i][d == 3 ? (r0 - i * t.rpp) / 3 : 0];
             double pv = e.kind() == Effect.Kind.POINT_SMOOTH ? e.pointVariable(pb)
                     : e.kind() == Effect.Kind.INSTRUMENT ? e.sightReadingOf(pb) * (e.sight() == Effect.Sight.RANGE ? 1 : 180 / Math.PI)
-                    : e.kind() == Effect.Kind.TARGET_INCIDENCE ? e.incidenceAngle(t.w.rows.get(i).q(), pb) : Double.NaN;
+                    : e.kind() == Effect.Kind.TARGET_INCIDENCE ? e.incidenceAngle(t.w.rows.get(i).q(), pb)
+                    : e.kind() == Effect.Kind.INSTRUMENT_AXES ? e.instrumentDistanceOf(pb) : Double.NaN;
             x[mi] = Double.isFinite(pv) ? pv : xOf(e, t.w.rows.get(i), t.w.conditions.get(i));
             y[mi] = (nc - along) * unit;
             fx[mi] = x[mi];

@@ -213,6 +213,17 @@ final class Words {
                     Math.toDegrees(Math.sqrt((v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) / 4)));
             case BASE_TURN -> baseTurn(e, v);
             case INSTRUMENT_SCALE -> instrumentScale(e, v, at);
+            case INSTRUMENT_AXES -> String.format(Locale.ROOT, "The measured positions are off by a constant linear map of the "
+                    + "instrument's own coordinates that no placement of it explains: its x and y axes scaled by %+.1f and %+.1f ppm "
+                    + "against its z axis, and out of square by %+.1f µrad (x, y), %+.1f µrad (x, z) and %+.1f µrad (y, z)%s%s. No error of "
+                    + "the robot moves points so: the instrument's axes are not square and of one scale (a coordinate measuring "
+                    + "machine's squareness, a camera system's depth scale against its lateral scale). It is modelled so that it "
+                    + "does not bend the robot's fit, and left out of compensation: measure a calibrated artefact (a ball bar or a "
+                    + "scale bar in several directions across the volume) with the instrument.", 1e6 * v[0], 1e6 * v[1],
+                    2e6 * v[2], 2e6 * v[3], 2e6 * v[4], e.bowed() ? String.format(Locale.ROOT, "; its ways bowed: the x travel moves the "
+                    + "point by %+.1f and %+.1f µm/m² along y and z, the y travel by %+.1f and %+.1f along x and z, the z travel by %+.1f "
+                    + "and %+.1f along x and y (a straightness error of its ways)", 1e6 * v[5], 1e6 * v[6], 1e6 * v[7], 1e6 * v[8], 1e6 * v[9],
+                    1e6 * v[10]) : "", at);
             case REFRACTION -> refraction(e, v);
             case POINT_SMOOTH -> String.format(Locale.ROOT, "The measured point moves with %s (a smooth displacement in the "
                     + "base frame over %.4g..%.4g %s) and none of the known effects explains it; it is modelled as such so "
@@ -457,6 +468,10 @@ final class Words {
             case COUPLING -> String.format(Locale.ROOT, "Joint %d moves a little with joint %d (coupling error between the axes): "
                     + "%.3g ± %.2g rad per rad.", e.joint() + 1, e.source() + 1, v[0], s[0]);
         };
+        if (e.kind() == Effect.Kind.COMPLIANCE && e.atJoint()) what += String.format(Locale.ROOT, " The give is of joint %d's own angle, by the torque "
+                + "about its axis of everything beyond it, not of drive %d's gear: through the linkage it turns the arm beyond "
+                + "the joint, the parts other drives hold included (the joint's bearing or its housing, or a serial model of the "
+                + "joint's stiffness); it fits these poses better than a spring in the drive's gear.", e.joint() + 1, e.joint() + 1);
         if (e.kind() == Effect.Kind.BASE_TILT) what += pivotWords(v, s);
         String fit = String.format(Locale.ROOT, " Modelling it lowers the training RMS from %.4f to %.4f mm", trainBefore * 1e3,
                 trainAfter * 1e3);

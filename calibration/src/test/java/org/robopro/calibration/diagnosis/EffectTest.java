@@ -292,6 +292,35 @@ class EffectTest {
     }
 
     /**
+     * The instrument's axes out of square, seen in the base's frame: a shear of the instrument's x
+     * and y moves a point on its x axis along its y axis by the shear times its x (turned into the
+     * base's axes by the registration), and a bowed x-way moves it along y by the bow times x²; the
+     * robot file keeps the bowed form.
+     */
+    @Test
+    void instrumentAxes_shearAndBowInTheInstrumentsFrame_andBackFromTheRobotFile() {
+        Pose inst = Pose.translation(-2.5, 0.4, -0.3).times(Pose.rotAxis(new Vec3(0, 0, 1), 0.7));
+        Effect bowed = Effect.instrumentAxesBowed(inst);
+        assertEquals(11, bowed.size());
+        double xi = 1.8;
+        Vec3 pb = inst.inverse().apply(new Vec3(xi, 0, 0)); // on the instrument's x axis
+        double[] g3 = new double[3 * 11];
+        bowed.positionRegressor(null, new PoseConditions(null, Double.NaN, Double.NaN, Double.NaN), pb.toArray(), g3);
+        Vec3 yBase = inst.inverse().apply(new Vec3(0, 1, 0)).minus(inst.inverse().apply(Vec3.ZERO));
+        for (int a = 0; a < 3; a++) {
+            double ya = a == 0 ? yBase.x() : a == 1 ? yBase.y() : yBase.z();
+            assertEquals(xi * ya, g3[a * 11 + 2], 1e-12, "square_xy, axis " + a);
+            assertEquals(xi * xi * ya, g3[a * 11 + 5], 1e-12, "bow_x_y, axis " + a);
+            assertEquals(0, g3[a * 11 + 1], 1e-12, "scale_y: nothing on the x axis");
+        }
+        double[] v = new double[11];
+        v[5] = 2e-5;
+        Effect back = Effect.fromDescription(bowed.describe(v), KinematicModel.build(RobotLibrary.shipped("irb2000")), null, "x.robot.json").effect();
+        assertEquals(bowed.label(), back.label());
+        assertTrue(back.bowed());
+    }
+
+    /**
      * A pull on the tool, checked against the forward kinematics alone (not the model's Jacobian): each
      * drive's torque is the work the pull does through that drive's turn, F·∂p/∂q_j by central
      * differences of the attach point (virtual work), and the measured point's move is the forward
