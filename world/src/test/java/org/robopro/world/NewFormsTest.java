@@ -214,4 +214,27 @@ class NewFormsTest {
             assertTrue(kb > 0.2 * 300 && kb < 0.8 * 300, "knock at " + kat + " s: " + kb + " poses before it");
         }
     }
+
+    /**
+     * The measuring machine's readings, put back through its own axis chain written out here (the
+     * scales along x̂, ŷ' and ẑ' tilted by the squareness angles, the x carriage's bow as a parabola),
+     * reach the point read, and a machine without errors reads the point itself.
+     */
+    @Test
+    void machineReadings_reachThePointThroughTheMachinesAxisChain() {
+        WorldRobot.Machine m = new WorldRobot.Machine(150e-6, -90e-6, 120e-6, 60e-6, -40e-6, 50e-6, -60e-6, 2.1, 1.5);
+        double[] p = {2.9, -0.7, 0.45};
+        double[] r = m.read(p);
+        double ny = Math.sqrt(150e-6 * 150e-6 + 1), nz = Math.sqrt(90e-6 * 90e-6 + 120e-6 * 120e-6 + 1);
+        double xi = (r[0] - 2.1) / 1.5;
+        double[] back = {
+                (1 + 60e-6) * r[0] + (1 - 40e-6) * r[1] * (-150e-6 / ny) + r[2] * (90e-6 / nz),
+                (1 - 40e-6) * r[1] / ny + r[2] * (-120e-6 / nz) + 50e-6 * xi * xi,
+                r[2] / nz - 60e-6 * xi * xi};
+        for (int a = 0; a < 3; a++) assertEquals(p[a], back[a], 1e-12, "axis " + a);
+        double off = Math.sqrt(Math.pow(r[0] - p[0], 2) + Math.pow(r[1] - p[1], 2) + Math.pow(r[2] - p[2], 2));
+        assertTrue(off > 1e-5, "the machine reads the point elsewhere: " + off + " m");
+        double[] clean = new WorldRobot.Machine(0, 0, 0, 0, 0, 0, 0, 2.1, 1.5).read(p);
+        for (int a = 0; a < 3; a++) assertEquals(p[a], clean[a], 1e-15);
+    }
 }

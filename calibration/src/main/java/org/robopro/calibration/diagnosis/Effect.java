@@ -340,12 +340,6 @@ public final class Effect {
     /** Whether this compliance is of the joint's own angle ({@link #complianceAtJoint}). */
     public boolean atJoint() { return atJoint; }
 
-    /**
-     * A drive effect's Δq_joint = s moves drive i by shares[i]·s: null for the effect's own drive
-     * alone, C⁻¹ e_j for a joint's own give ({@link #complianceAtJoint}).
-     */
-    public double[] driveShares() { return driveShares == null ? null : driveShares.clone(); }
-
     /** d(residual)/ds of a drive effect's s at one row, from the row's derivatives by drive {@code dq[at..at+dof)}. */
     public double driveDerivative(double[] dq, int at) {
         if (driveShares == null) return dq[at + joint];
@@ -354,7 +348,7 @@ public final class Effect {
         return d;
     }
 
-    /** Adds a drive effect's Δ (of drive {@link #joint()}, or shared out by {@link #driveShares()}) to the drives' values. */
+    /** Adds a drive effect's Δ to the drives' values: to drive {@link #joint()}, or for a joint's own give C⁻¹ e_j times it. */
     public void addToDrives(double delta, double[] q) {
         if (driveShares == null) { q[joint] += delta; return; }
         for (int i = 0; i < driveShares.length; i++) q[i] += driveShares[i] * delta;
@@ -1343,10 +1337,11 @@ public final class Effect {
      * The instrument's axes out of square and scaled one against another: the positions it reports,
      * p_i in its own frame, are off by a constant linear map, Δp_i = S p_i with S symmetric (its
      * antisymmetric part is a turn, the registration's; its trace a uniform scale, the geometry's):
-     * S = [[a, g, h], [g, b, k], [h, k, 0]] less neither, five columns, a and b the x and y axes'
-     * scales against z's, g, h, k half the angles by which x and y, x and z, y and z are out of
-     * square. A coordinate measuring machine's squareness errors are among the largest of its 21
-     * geometric errors (ISO 10360-2; Schwenke et al., CIRP Annals 57 (2008) 660); a photogrammetric
+     * S = [[a, g, h], [g, b, k], [h, k, 0]], five columns, a and b the x and y axes' scales against
+     * z's, g, h, k half the angles by which x and y, x and z, y and z are out of square. A coordinate
+     * measuring machine's squareness errors are among the largest of its 21 geometric errors (ISO
+     * 230-1 names them for machine tools; Schwenke et al., CIRP Annals 57 (2008) 660, review their
+     * measurement on measuring machines); a photogrammetric
      * or stereo camera system's depth scale differs from its lateral scale where its baseline or
      * focal length is off. Computed through {@code instrumentTbase} (the geometric fit's).
      */
@@ -1364,7 +1359,7 @@ public final class Effect {
      * over its travel moves the point across that axis by c·u², u its reading (the parabola's
      * centre and slope are the registration's and the axes' share), along each of the other two
      * axes, six columns more. Straightness is, with squareness, among a measuring machine's 21
-     * geometric errors (ISO 230-1; Schwenke et al. 2008); which of its axes travels farthest the
+     * geometric errors (Schwenke et al. 2008, above); which of its axes travels farthest the
      * positions do not say, so all three are tried.
      */
     public static Effect instrumentAxesBowed(Pose instrumentTbase) {
