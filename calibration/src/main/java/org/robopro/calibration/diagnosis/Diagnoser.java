@@ -3463,6 +3463,13 @@ public final class Diagnoser {
                             bestPress, pressOwn) + (e.kind() == Effect.Kind.COMPLIANCE && !payloadVaries(rows)
                             ? "; with one payload a deflection under the arm's own weight and an error of the joint's angle cannot "
                             + "be told apart on these poses: measure with two or three payloads to tell" : "");
+                else if (best != null && e.kind() == Effect.Kind.DRIFT && best.kind() == Effect.Kind.REFRACTION
+                        && pressOwn >= bestPress * (1 - ALIAS_MARGIN))
+                    why = String.format(Locale.ROOT, "%s is not claimed: %s predicts left-out poses nearly as well (leave-one-pose-out "
+                            + "error %.1f against %.1f: to be told apart, %.0f %% lower): seen from far, the instrument drifting and its "
+                            + "beam bent by the air's changing temperature gradient move the points alike; record the air's temperature "
+                            + "at two heights along the beam, or measure a fixed reference target now and then to tell",
+                            e.label(), best.label(), pressOwn, bestPress, 100 * ALIAS_MARGIN);
                 else if (best != null && best.isFallback() && periodicityUntested(e, rows)
                         && !turnsOften(e, fit.effectValues(k), rows)
                         && (pressOwn > bestPress * (1 - ALIAS_MARGIN) || tellsApart(at, k, best, w) < TELL_Z))

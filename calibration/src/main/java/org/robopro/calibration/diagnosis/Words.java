@@ -217,7 +217,8 @@ final class Words {
                     + "instrument's own coordinates that no placement of it explains: its x and y axes scaled by %+.1f and %+.1f ppm "
                     + "against its z axis, and out of square by %+.1f µrad (x, y), %+.1f µrad (x, z) and %+.1f µrad (y, z)%s%s. No error of "
                     + "the robot moves points so: the instrument's axes are not square and of one scale (a coordinate measuring "
-                    + "machine's squareness, a camera system's depth scale against its lateral scale). It is modelled so that it "
+                    + "machine's squareness, a camera system's depth scale against its lateral scale), or another error of the "
+                    + "measurement grows across the measured volume (the air bending the beam). It is modelled so that it "
                     + "does not bend the robot's fit, and left out of compensation: measure a calibrated artefact (a ball bar or a "
                     + "scale bar in several directions across the volume) with the instrument.", 1e6 * v[0], 1e6 * v[1],
                     2e6 * v[2], 2e6 * v[3], 2e6 * v[4], e.bowed() ? String.format(Locale.ROOT, "; its ways bowed: the x travel moves the "
