@@ -124,6 +124,18 @@ class DemoTest {
             assertEquals("named", expected.get("verdict").asText(), expected.toString());
             List<String> named = new ArrayList<>();
             j.get("named_effects").forEach(n -> named.add(n.asText()));
+            if (named.isEmpty() && group.equals("gravity-elasticity")) {
+                // the demo measures with one payload: a joint's give under the arm's own weight may then follow a curve of its
+                // angle as closely, and the diagnosis must say so and what to measure rather than name either
+                String joint = "j" + expected.get("claims").get(0).get("joints").get(0).asInt();
+                JsonNode notes = Json.read(Files.readString(out.resolve("diagnosis").resolve("diagnosis.json"))).get("notes");
+                boolean said = false;
+                for (JsonNode n : notes)
+                    said |= n.asText().startsWith("joint-compliance " + joint) && n.asText().contains("measure with two or three payloads");
+                assertTrue(said, "nothing named for the concealed " + expected + " and no word of why: " + notes);
+                assertTrue(j.get("diagnosed_mean_mm").asDouble() < j.get("calibrated_mean_mm").asDouble(), j.toString());
+                continue;
+            }
             assertEquals(expected.get("claims").size(), named.size(), "named " + named + ", concealed " + expected);
             for (JsonNode claim : expected.get("claims")) {
                 List<String> names = new ArrayList<>();
