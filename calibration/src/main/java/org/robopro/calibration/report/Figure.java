@@ -53,6 +53,81 @@ public final class Figure {
         return new Area(left, top, w - 15, bottom);
     }
 
+    /** A category's name under its slot: its lines and their size. */
+    record CategoryLabel(List<String> lines, double size) { }
+
+    /** Room below a bar chart's axis for its category names: the first line's baseline, and the last's at the most. */
+    static final double CATEGORY_FIRST = 15, CATEGORY_LAST = 35;
+
+    /** How many lines of category names at {@code size} fit below the axis ({@link #CATEGORY_FIRST}..{@link #CATEGORY_LAST}). */
+    static int categoryLines(double size) { return (int) Math.floor((CATEGORY_LAST - CATEGORY_FIRST) / (size + 2)) + 1; }
+
+    /**
+     * A category's name in {@code width}: one line, shrunk down to 9 where that fits; else broken at
+     * spaces and after hyphens into the lines that fit below the axis ({@link #categoryLines}),
+     * shrunk down to 8 (a leading "+" stays with its word); a name that still does not fit keeps its
+     * first lines and ends in an ellipsis, so names never run into their neighbours'.
+     */
+    static CategoryLabel categoryLabel(String s, double width, Canvas c) {
+        for (double size = FONT; size >= 9; size -= 0.5)
+            if (c.textWidth(s, size) <= width) return new CategoryLabel(List.of(s), size);
+        for (double size = FONT; size >= 8; size -= 0.5) {
+            List<String> lines = wrap(s, width, size, c);
+            double at = size;
+            if (lines.size() <= categoryLines(size) && lines.stream().allMatch(l -> c.textWidth(l, at) <= width))
+                return new CategoryLabel(lines, size);
+        }
+        int most = categoryLines(8);
+        List<String> all = wrap(s, width, 8, c), lines = new ArrayList<>();
+        for (int k = 0; k < Math.min(most, all.size()); k++) {
+            String l = all.get(k);
+            if (k == most - 1 && all.size() > most || c.textWidth(l, 8) > width) {
+                while (l.length() > 1 && c.textWidth(l + "…", 8) > width) l = l.substring(0, l.length() - 1);
+                l += "…";
+            }
+            lines.add(l);
+        }
+        return new CategoryLabel(lines, 8);
+    }
+
+    /**
+     * {@code s} put greedily on lines no wider than {@code width} at {@code size}, broken at spaces
+     * (dropped) and after hyphens (kept); a piece wider than that stands alone on its line.
+     */
+    private static List<String> wrap(String s, double width, double size, Canvas c) {
+        List<String> pieces = new ArrayList<>();
+        List<Boolean> spaced = new ArrayList<>(); // whether a space stood before the piece
+        StringBuilder b = new StringBuilder();
+        boolean space = false;
+        for (int i = 0; i < s.length(); i++) {
+            char ch = s.charAt(i);
+            if (ch == ' ') {
+                if (b.length() > 0) { pieces.add(b.toString()); spaced.add(space); b.setLength(0); }
+                space = true;
+                continue;
+            }
+            b.append(ch);
+            if (ch == '-' && i + 1 < s.length() && s.charAt(i + 1) != ' ' && b.length() > 1) {
+                pieces.add(b.toString()); spaced.add(space); b.setLength(0); space = false;
+            }
+        }
+        if (b.length() > 0) { pieces.add(b.toString()); spaced.add(space); }
+        if (pieces.size() > 1 && pieces.get(0).equals("+")) { // the "+" of an added effect stays with its name
+            pieces.set(1, "+ " + pieces.get(1));
+            pieces.remove(0);
+            spaced.remove(0);
+        }
+        List<String> out = new ArrayList<>();
+        String line = "";
+        for (int k = 0; k < pieces.size(); k++) {
+            String next = line.isEmpty() ? pieces.get(k) : line + (spaced.get(k) ? " " : "") + pieces.get(k);
+            if (!line.isEmpty() && c.textWidth(next, size) > width) { out.add(line); line = pieces.get(k); }
+            else line = next;
+        }
+        if (!line.isEmpty()) out.add(line);
+        return out;
+    }
+
     /** The rotated y title: one line, or two split at a space, at a size (at least 8) that fits the plot's height. */
     record YTitle(List<String> lines, double size) { }
 
@@ -220,10 +295,9 @@ public final class Figure {
         if (categories != null) {
             double slot = (a.r() - a.l()) / Math.max(1, categories.size());
             for (int i = 0; i < categories.size(); i++) {
-                String s = categories.get(i);
-                double size = FONT;
-                while (size > 8 && c.textWidth(s, size) > slot - 4) size -= 0.5;
-                c.text(a.l() + slot * (i + 0.5), a.b() + 15, s, 0, size, false, false);
+                CategoryLabel l = categoryLabel(categories.get(i), slot - 4, c);
+                for (int k = 0; k < l.lines().size(); k++)
+                    c.text(a.l() + slot * (i + 0.5), a.b() + CATEGORY_FIRST + k * (l.size() + 2), l.lines().get(k), 0, l.size(), false, false);
             }
         }
         c.line(a.l(), a.b(), a.r(), a.b(), "#333333", 1, false);

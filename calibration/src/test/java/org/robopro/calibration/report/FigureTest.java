@@ -90,10 +90,19 @@ class FigureTest {
         for (Recorder.Box b : bars) assertEquals(bottom, b.y() + b.h(), 1e-6, "bar not standing on the axis");
         assertTrue(c.texts.stream().anyMatch(t -> t.s().equals("0.120")), "value labels with the format given");
         double slot = (a[0] >= 0 ? (600 - 15 - a[0]) / 3 : 0);
-        for (String cat : cats) {
-            Recorder.Text t = c.texts.stream().filter(x -> x.s().equals(cat)).findFirst().orElseThrow();
-            assertTrue(c.textWidth(t.s(), t.size()) <= slot - 4 || t.size() <= 8, "category label wider than its slot: " + cat);
+        for (int i = 0; i < cats.size(); i++) {
+            // the name's lines under its slot: each within the slot, none below the picture, the words all there
+            double cx = a[0] + slot * (i + 0.5);
+            List<Recorder.Text> lines = c.texts.stream().filter(x -> Math.abs(x.x() - cx) < 1e-6 && x.y() > bottom).toList();
+            assertTrue(!lines.isEmpty(), "no name under slot " + i);
+            for (Recorder.Text t : lines) {
+                assertTrue(c.textWidth(t.s(), t.size()) <= slot - 4 + 1e-9, "category line wider than its slot: " + t.s());
+                assertTrue(t.y() <= 200 - 4, "category line below the picture: " + t.s());
+            }
+            String joined = String.join(" ", lines.stream().map(Recorder.Text::s).toList()).replace("- ", "-");
+            assertEquals(cats.get(i), joined, "the name, its lines joined");
         }
+        assertTrue(c.texts.stream().noneMatch(x -> x.s().equals(cats.get(2))), "the long name is broken into lines");
         assertTrue(c.lines.stream().anyMatch(Recorder.Seg::dashed), "noise floor drawn");
     }
 
