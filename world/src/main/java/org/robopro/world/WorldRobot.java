@@ -849,9 +849,7 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
         double[] hose = dressPack != null && n >= 6 ? dressPack.torques(theta[3], theta[4], theta[5]) : null;
         if (compliance != null && compliance.springsInJoints) {
             double[] tau = gravityTorques(a, theta, payload);
-            double[] dTheta = new double[n];
-            for (int i = 0; i < n; i++) dTheta[i] = compliance.deflection(i, tau[i]);
-            for (int i = 0; i < n; i++) theta[i] += dTheta[i];
+            for (int i = 0; i < n; i++) theta[i] += compliance.deflection(i, tau[i]);
         } else if (compliance != null) {
             double[] tauQ = driveSide(gravityTorques(a, theta, payload));
             double[] dq = new double[n];
@@ -948,32 +946,21 @@ public record WorldRobot(String robotName, Arm arm, double[][] coupling, double[
      * Annals 57 (2008) 660). Lengths m.
      */
     public record Machine(double gxy, double gxz, double gyz, double sx, double sy, double bowY, double bowZ, double centreM, double halfM) {
-        /** The readings the machine reports for the point p (its own frame): the reading (u, v, w) whose chain reaches p. */
+        /**
+         * The readings the machine reports for the point p (its own frame): the reading (u, v, w) whose
+         * chain reaches p. The chain is triangular (ẑ' alone has a z part, ŷ' none along z): w from z,
+         * then v from y, then u from x; the bow, a function of u, by a few rounds of that.
+         */
         public double[] read(double[] p) {
             double[] y = Rigid.unit(new double[] {-gxy, 1, 0}), z = Rigid.unit(new double[] {-gxz, -gyz, 1});
-            double[][] b = {{1 + sx, (1 + sy) * y[0], z[0]}, {0, (1 + sy) * y[1], z[1]}, {0, (1 + sy) * y[2], z[2]}};
-            double[] r = p.clone();
+            double u = p[0], v = 0, w = 0;
             for (int it = 0; it < 8; it++) {
-                double xi = (r[0] - centreM) / halfM;
-                r = solve(b, new double[] {p[0], p[1] - bowY * xi * xi, p[2] - bowZ * xi * xi});
+                double xi = (u - centreM) / halfM;
+                w = (p[2] - bowZ * xi * xi) / z[2];
+                v = (p[1] - bowY * xi * xi - w * z[1]) / ((1 + sy) * y[1]);
+                u = (p[0] - (1 + sy) * v * y[0] - w * z[0]) / (1 + sx);
             }
-            return r;
-        }
-
-        /** x with a x = rhs, Cramer's rule (3 x 3). */
-        private static double[] solve(double[][] a, double[] rhs) {
-            double d = det(a[0], a[1], a[2]);
-            double[] out = new double[3];
-            for (int c = 0; c < 3; c++) {
-                double[][] m = new double[3][];
-                for (int i = 0; i < 3; i++) { m[i] = a[i].clone(); m[i][c] = rhs[i]; }
-                out[c] = det(m[0], m[1], m[2]) / d;
-            }
-            return out;
-        }
-
-        private static double det(double[] r0, double[] r1, double[] r2) {
-            return r0[0] * (r1[1] * r2[2] - r1[2] * r2[1]) - r0[1] * (r1[0] * r2[2] - r1[2] * r2[0]) + r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]);
+            return new double[] {u, v, w};
         }
     }
 

@@ -1613,11 +1613,7 @@ public final class Diagnoser {
         w.speeds = topSpeeds(robot);
         for (Effect e : Effect.candidates(model, gravity, t0C, hasTime && !hasTemp ? o.timeTaus() : null, w.pauses))
             if (e.testableOn(rows) && !excluded.contains(claimKey(e))) family.add(e);
-        family.addAll(instrumentScales(geo, history, hasTime, hasTemp));
-        if (geo.instrumentTbase() != null && !geo.pairs() && !geo.distance()) {
-            family.add(Effect.instrumentAxes(geo.instrumentTbase()));
-            family.add(Effect.instrumentAxesBowed(geo.instrumentTbase()));
-        }
+        family.addAll(instrumentForms(geo, history, hasTime, hasTemp));
         // A joint taken by an approach move from one side at every pose: a constant lost motion lags alike everywhere
         // (the zero takes it), but a wind-up still differs with the travel before the approach.
         boolean[] approached = hasDirs && dirSource == Directions.Source.RECORDED ? approachedJoints(rows, moves, model.dof())
@@ -2834,11 +2830,13 @@ public final class Diagnoser {
     }
 
     /**
-     * The instrument's distances scaling with time and with temperature ({@link Effect#instrumentScale}),
-     * over the readings of the whole file: where the positions are measured in the instrument's frame
-     * (points, not distances), and the reading is known on every pose.
+     * The instrument's errors of the stepwise search, where the positions are measured in its frame
+     * (points, not distances): its distances scaling with time and with temperature
+     * ({@link Effect#instrumentScale}, over the readings of the whole file, where the reading is known
+     * on every pose), and its axes out of square, with and without its ways bowed
+     * ({@link Effect#instrumentAxes}, {@link Effect#instrumentAxesBowed}).
      */
-    static List<Effect> instrumentScales(CalibrationResult geo, List<Measurement> history, boolean hasTime, boolean hasTemp) {
+    static List<Effect> instrumentForms(CalibrationResult geo, List<Measurement> history, boolean hasTime, boolean hasTemp) {
         List<Effect> out = new ArrayList<>();
         if (geo.instrumentTbase() == null || geo.pairs() || geo.distance()) return out;
         for (Effect.Along a : new Effect.Along[] {Effect.Along.TIME, Effect.Along.TEMPERATURE}) {
@@ -2846,6 +2844,8 @@ public final class Diagnoser {
             double[] r = readingRange(history, a);
             if (r[1] > r[0]) out.add(Effect.instrumentScale(a, geo.instrumentTbase(), r[0], r[1]));
         }
+        out.add(Effect.instrumentAxes(geo.instrumentTbase()));
+        out.add(Effect.instrumentAxesBowed(geo.instrumentTbase()));
         return out;
     }
 
@@ -5086,19 +5086,16 @@ public final class Diagnoser {
                 for (Measurement r : rows) { lo = Math.min(lo, r.q(j)); hi = Math.max(hi, r.q(j)); }
                 if (hi > lo) out.add(Effect.smooth(j, lo, hi));
             }
-            if (gravity != null) {
-                Effect remassed = Effect.complianceRemassed(j, gravity);
-                if (remassed.testableOn(rows)) out.add(remassed);
-                // where the linkage makes them differ, the joint's own angle giving instead of its drive's gear
-                if (remassed.testableOn(rows) && Effect.atJointDiffers(model, j)) out.add(Effect.complianceAtJoint(j, gravity, true));
-            }
-            // with payload steps, also the masses and their centres unknown (a centre off the file's moves the torque's phase)
-            if (gravity != null && !gravity.massesUnknown()) {
-                Effect free = Effect.complianceRemassed(j, GravityTorques.massesUnknown(model));
-                if (free.testableOn(rows)) out.add(free);
-                if (free.testableOn(rows) && Effect.atJointDiffers(model, j))
-                    out.add(Effect.complianceAtJoint(j, GravityTorques.massesUnknown(model), true));
-            }
+            // the masses re-estimated and, with payload steps, also the masses and their centres unknown (a centre off the
+            // file's moves the torque's phase); where the linkage makes them differ, the joint's own angle giving beside its
+            // drive's gear
+            if (gravity != null)
+                for (GravityTorques g : gravity.massesUnknown() ? List.of(gravity) : List.of(gravity, GravityTorques.massesUnknown(model))) {
+                    Effect remassed = Effect.complianceRemassed(j, g);
+                    if (!remassed.testableOn(rows)) continue;
+                    out.add(remassed);
+                    if (Effect.atJointDiffers(model, j)) out.add(Effect.complianceAtJoint(j, g, true));
+                }
         }
         if (hasTemp) {
             out.add(Effect.thermalLinks(model, t0C));

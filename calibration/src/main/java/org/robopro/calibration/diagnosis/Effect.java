@@ -322,17 +322,20 @@ public final class Effect {
     public static Effect complianceAtJoint(int joint, GravityTorques g, boolean perMass) {
         Effect e = new Effect(Kind.COMPLIANCE, joint, -1, g, perMass, Double.NaN, Double.NaN, null, Double.NaN, Double.NaN, null, null);
         e.atJoint = true;
-        double[] unit = new double[g.model().dof()];
-        unit[joint] = 1;
-        e.driveShares = g.model().q(unit);
+        e.driveShares = jointsDrives(g.model(), joint);
         return e;
+    }
+
+    /** The drives' values that turn joint {@code joint}'s own angle by one and no other joint's: C⁻¹ e_j. */
+    private static double[] jointsDrives(KinematicModel model, int joint) {
+        double[] unit = new double[model.dof()];
+        unit[joint] = 1;
+        return model.q(unit);
     }
 
     /** Whether a joint's own give ({@link #complianceAtJoint}) moves other drives than its own: the coupling makes it differ from the drive's. */
     public static boolean atJointDiffers(KinematicModel model, int joint) {
-        double[] unit = new double[model.dof()];
-        unit[joint] = 1;
-        double[] d = model.q(unit);
+        double[] d = jointsDrives(model, joint);
         for (int i = 0; i < d.length; i++) if (i != joint && d[i] != 0) return true;
         return false;
     }
@@ -3008,12 +3011,14 @@ public final class Effect {
             case INSTRUMENT_AXES -> {
                 // Δp_i = S p_i in the instrument's axes, turned into the base's: R_ibᵀ (E_k p_i) per column
                 double[] pi = instrument.apply(new Vec3(pointBase[0], pointBase[1], pointBase[2])).toArray();
-                double x2 = pi[0] * pi[0], y2 = pi[1] * pi[1], z2 = pi[2] * pi[2];
-                double[][] cols = {{pi[0], 0, 0}, {0, pi[1], 0}, {pi[1], pi[0], 0}, {pi[2], 0, pi[0]}, {0, pi[2], pi[1]},
-                        {0, x2, 0}, {0, 0, x2}, {y2, 0, 0}, {0, 0, y2}, {z2, 0, 0}, {0, z2, 0}};
+                double xi = pi[0], yi = pi[1], zi = pi[2];
+                // column c moves the point by (cx[c], cy[c], cz[c]) in the instrument's axes: the scales, shears, then the bows
+                double[] cx = {xi, 0, yi, zi, 0, 0, 0, yi * yi, 0, zi * zi, 0};
+                double[] cy = {0, yi, xi, 0, zi, xi * xi, 0, 0, 0, 0, zi * zi};
+                double[] cz = {0, 0, 0, xi, yi, 0, xi * xi, 0, yi * yi, 0, 0};
                 for (int col = 0; col < k; col++)
                     for (int a = 0; a < 3; a++)
-                        g3[a * k + col] = instrument.rot(0, a) * cols[col][0] + instrument.rot(1, a) * cols[col][1] + instrument.rot(2, a) * cols[col][2];
+                        g3[a * k + col] = instrument.rot(0, a) * cx[col] + instrument.rot(1, a) * cy[col] + instrument.rot(2, a) * cz[col];
             }
             case INSTRUMENT_SCALE -> {
                 // Δp = s(u) (p − o), o the instrument's origin: in base axes R_ibᵀ (s p_i) with p_i = R_ib p + t_ib
